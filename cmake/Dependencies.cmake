@@ -1,0 +1,34 @@
+# Every dependency is a Debian package installed by scripts/install-deps.sh.
+find_package(PkgConfig REQUIRED)
+find_package(Threads REQUIRED)
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+find_package(fmt REQUIRED)
+find_package(spdlog REQUIRED)
+find_package(nlohmann_json 3.10 REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(tomlplusplus REQUIRED)
+
+# SuiteSparse 5 on Debian 12 ships no CMake package: locate CHOLMOD by hand.
+find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
+find_library(CHOLMOD_LIBRARY cholmod REQUIRED)
+find_library(SUITESPARSECONFIG_LIBRARY suitesparseconfig REQUIRED)
+add_library(hydrodda_cholmod INTERFACE)
+target_include_directories(hydrodda_cholmod SYSTEM INTERFACE ${CHOLMOD_INCLUDE_DIR})
+target_link_libraries(hydrodda_cholmod INTERFACE ${CHOLMOD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY})
+
+# Gmsh's C++ API (libgmsh-dev): a header and a shared library.
+find_path(GMSH_INCLUDE_DIR gmsh.h REQUIRED)
+find_library(GMSH_LIBRARY gmsh REQUIRED)
+add_library(hydrodda_gmsh INTERFACE)
+target_include_directories(hydrodda_gmsh SYSTEM INTERFACE ${GMSH_INCLUDE_DIR})
+target_link_libraries(hydrodda_gmsh INTERFACE ${GMSH_LIBRARY})
+
+pkg_check_modules(CAIRO REQUIRED IMPORTED_TARGET cairo)
+
+if(HYDRODDA_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+  find_package(Boost 1.74 REQUIRED)   # Boost.Geometry, the clipping oracle in tests
+endif()
+if(HYDRODDA_BUILD_BENCHMARKS)
+  find_package(benchmark REQUIRED)
+endif()

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Installs the Debian packages hydrodda needs to build, test and run.
+# Does nothing when every package is already present. Debian 12 (bookworm), run as root.
+set -euo pipefail
+
+build_packages=(
+  build-essential cmake pkg-config
+  libeigen3-dev            # dense and sparse linear algebra
+  libsuitesparse-dev       # CHOLMOD sparse Cholesky
+  libmetis-dev             # graph ordering for CHOLMOD
+  libgmsh-dev gmsh         # meshing (C++ API)
+  libtomlplusplus-dev      # scenario files
+  libcli11-dev             # command line
+  libfmt-dev libspdlog-dev # text and logs
+  nlohmann-json3-dev       # summary.json
+  libcairo2-dev            # figures
+  libgtest-dev libgmock-dev libbenchmark-dev
+  libboost-dev             # Boost.Geometry: test oracle for clipping
+  python3 python3-vtk9     # reading our VTU/PVD back in tests
+)
+
+missing=()
+for pkg in "${build_packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$pkg")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+
+if [ "$(id -u)" -ne 0 ]; then
+  echo "install-deps: missing packages: ${missing[*]}" >&2
+  echo "install-deps: run as root (or install them with apt-get) and try again" >&2
+  exit 1
+fi
+
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,124 @@
+#include "geometry/polygon.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hydrodda::geometry {
+
+double signed_area(std::span<const Point> polygon) {
+  const std::size_t n = polygon.size();
+  if (n < 3) return 0.0;
+  // Shift to the first vertex: the shoelace sum then loses no digits far from the origin.
+  const Point o = polygon[0];
+  double twice = 0.0;
+  for (std::size_t i = 1; i + 1 < n; ++i) twice += cross(polygon[i] - o, polygon[i + 1] - o);
+  return 0.5 * twice;
+}
+
+double area(std::span<const Point> polygon) { return std::abs(signed_area(polygon)); }
+
+Point centroid(std::span<const Point> polygon) {
+  const std::size_t n = polygon.size();
+  if (n == 0) return {};
+  const Point o = polygon[0];
+  double twice_area = 0.0;
+  Point moment{};
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    const Point a = polygon[i] - o;
+    const Point b = polygon[i + 1] - o;
+    const double w = cross(a, b);  // twice the area of the fan triangle (o, a, b)
+    twice_area += w;
+    moment += w * (a + b);         // fan triangle centroid (0 + a + b)/3, weighted
+  }
+  if (twice_area == 0.0) {
+    Point mean{};
+    for (Point p : polygon) mean += p;
+    return mean / static_cast<double>(n);
+  }
+  return o + moment / (3.0 * twice_area);
+}
+
+Box bounding_box(std::span<const Point> polygon) {
+  Box box;
+  for (Point p : polygon) box.add(p);
+  return box;
+}
+
+namespace {
+bool on_segment(Point a, Point b, Point p) {
+  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+         p.y <= std::max(a.y, b.y);
+}
+int sign(double v) { return (v > 0.0) - (v < 0.0); }
+}  // namespace
+
+bool segments_intersect(Point a, Point b, Point c, Point d) {
+  const int d1 = sign(orient(c, d, a));
+  const int d2 = sign(orient(c, d, b));
+  const int d3 = sign(orient(a, b, c));
+  const int d4 = sign(orient(a, b, d));
+  if (d1 * d2 < 0 && d3 * d4 < 0) return true;
+  if (d1 == 0 && on_segment(c, d, a)) return true;
+  if (d2 == 0 && on_segment(c, d, b)) return true;
+  if (d3 == 0 && on_segment(a, b, c)) return true;
+  if (d4 == 0 && on_segment(a, b, d)) return true;
+  return false;
+}
+
+std::optional<double> line_intersection_parameter(Point a, Point b, Point c, Point d) {
+  const Point r = b - a;
+  const Point s = d - c;
+  const double denom = cross(r, s);
+  if (denom == 0.0) return std::nullopt;
+  return cross(c - a, s) / denom;
+}
+
+std::optional<std::pair<int, int>> find_self_intersection(std::span<const Point> polygon) {
+  const int n = static_cast<int>(polygon.size());
+  for (int i = 0; i < n; ++i) {
+    const Point a = polygon[i];
+    const Point b = polygon[(i + 1) % n];
+    for (int j = i + 1; j < n; ++j) {
+      const bool adjacent = (j == i + 1) || (i == 0 && j == n - 1);
+      const Point c = polygon[j];
+      const Point d = polygon[(j + 1) % n];
+      if (adjacent) {
+        // Adjacent edges share a vertex; they intersect improperly only when they fold back
+        // onto each other (collinear and overlapping beyond the shared vertex).
+        const Point shared = (j == i + 1) ? b : a;
+        const Point other_i = (j == i + 1) ? a : b;
+        const Point other_j = (j == i + 1) ? d : c;
+        if (orient(other_i, shared, other_j) == 0.0 &&
+            dot(other_i - shared, other_j - shared) > 0.0)
+          return std::pair{i, j};
+        continue;
+      }
+      if (segments_intersect(a, b, c, d)) return std::pair{i, j};
+    }
+  }
+  return std::nullopt;
+}
+
+bool contains(std::span<const Point> polygon, Point p) {
+  bool inside = false;
+  const std::size_t n = polygon.size();
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+    const Point a = polygon[i];
+    const Point b = polygon[j];
+    if ((a.y > p.y) != (b.y > p.y)) {
+      const double x_cross = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
+      if (p.x < x_cross) inside = !inside;
+    }
+  }
+  return inside;
+}
+
+double distance_to_segment(Point p, Point a, Point b) {
+  const Point ab = b - a;
+  const double len2 = dot(ab, ab);
+  if (len2 == 0.0) return distance(p, a);
+  const double t = std::clamp(dot(p - a, ab) / len2, 0.0, 1.0);
+  return distance(p, a + t * ab);
+}
+
+}  // namespace hydrodda::geometry

@@ -1,0 +1,37 @@
+#pragma once
+// Simple polygons as vertex lists (no repeated closing vertex) and the measures on them.
+
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "geometry/point.hpp"
+
+namespace hydrodda::geometry {
+
+using Polygon = std::vector<Point>;
+
+// Shoelace formula: A = ½ Σ (x_i y_{i+1} − x_{i+1} y_i); > 0 for counter-clockwise.
+double signed_area(std::span<const Point> polygon);
+double area(std::span<const Point> polygon);
+// Area centroid: c = 1/(6A) Σ (p_i + p_{i+1}) (x_i y_{i+1} − x_{i+1} y_i).
+Point centroid(std::span<const Point> polygon);
+Box bounding_box(std::span<const Point> polygon);
+
+// Do closed segments ab and cd share a point (touching and collinear overlap included)?
+bool segments_intersect(Point a, Point b, Point c, Point d);
+// The intersection point of the lines through ab and cd, parameterised along ab
+// (a + t (b − a)); empty when the lines are parallel.
+std::optional<double> line_intersection_parameter(Point a, Point b, Point c, Point d);
+
+// First pair of non-adjacent edges that intersect, as edge indices (i, j), i < j; the edge i
+// runs from vertex i to vertex i+1. O(n²): for input validation, not for hot loops.
+std::optional<std::pair<int, int>> find_self_intersection(std::span<const Point> polygon);
+
+// Point in polygon by the crossing-number rule; points on the boundary may go either way.
+bool contains(std::span<const Point> polygon, Point p);
+
+// Distance from p to the closed segment ab.
+double distance_to_segment(Point p, Point a, Point b);
+
+}  // namespace hydrodda::geometry
