@@ -1,15 +1,64 @@
 #include "cli/app.hpp"
 
 #include <CLI/CLI.hpp>
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include "cli/commands.hpp"
+#include "cli/version.hpp"
 
 namespace hydrodda::cli {
 
+namespace {
+void configure_logging(Verbosity verbosity) {
+  auto logger = spdlog::stderr_color_mt("hydrodda");
+  logger->set_pattern("%^%l%$: %v");
+  logger->set_level(verbosity == Verbosity::Quiet     ? spdlog::level::warn
+                    : verbosity == Verbosity::Verbose ? spdlog::level::debug
+                                                      : spdlog::level::info);
+  spdlog::set_default_logger(logger);
+}
+}  // namespace
+
 int run_app(int argc, char** argv) {
-  CLI::App app{"hydrodda: fluid flow through deforming, fractured, blocky rock"};
-  app.set_version_flag("--version", "hydrodda 0.1.0");
+  CLI::App app{"hydrodda: fluid flow through deforming, fractured, blocky rock (HYDRO-DDA)"};
+  app.set_version_flag("--version", std::string("hydrodda ") + kVersion);
   app.require_subcommand(1);
-  CLI11_PARSE(app, argc, argv);
-  return kSuccess;
+  bool quiet = false;
+  bool verbose = false;
+  app.add_flag("-q,--quiet", quiet, "Print warnings and errors only");
+  app.add_flag("-v,--verbose", verbose, "Print every step and every default used");
+
+  RunOptions run;
+  std::string output;
+  CLI::App* run_cmd = app.add_subcommand("run", "Run a scenario and write its run folder");
+  run_cmd->add_option("scenario", run.scenario, "Scenario file (TOML)")->required();
+  run_cmd->add_option("-o,--output", output, "Run folder (default: output.directory)");
+  run_cmd->add_flag("--overwrite", run.overwrite,
+                    "Replace results in a run folder that already holds files");
+
+  std::filesystem::path check_file;
+  CLI::App* check_cmd = app.add_subcommand("check", "Validate a scenario without running it");
+  check_cmd->add_option("scenario", check_file, "Scenario file (TOML)")->required();
+
+  for (CLI::App* sub : {run_cmd, check_cmd}) {
+    sub->add_flag("-q,--quiet", quiet, "Print warnings and errors only");
+    sub->add_flag("-v,--verbose", verbose, "Print every step and every default used");
+  }
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kSuccess : kBadInput;
+  }
+
+  run.verbosity = quiet ? Verbosity::Quiet : verbose ? Verbosity::Verbose : Verbosity::Normal;
+  configure_logging(run.verbosity);
+  if (!output.empty()) run.output = output;
+
+  if (*check_cmd) return check_command(check_file);
+  return run_command(run);
 }
 
 }  // namespace hydrodda::cli

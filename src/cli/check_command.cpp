@@ -1,0 +1,19 @@
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <cstdio>
+
+#include "cli/app.hpp"
+#include "cli/commands.hpp"
+#include "cli/scenario_loading.hpp"
+
+namespace hydrodda::cli {
+
+int check_command(const std::filesystem::path& file) {
+  const auto scenario = load_scenario(file);
+  if (!scenario) return kBadInput;
+  std::fputs(fmt::format("{}: OK ({})\n", file.string(), describe(*scenario)).c_str(), stdout);
+  return kSuccess;
+}
+
+}  // namespace hydrodda::cli

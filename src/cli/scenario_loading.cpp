@@ -1,0 +1,42 @@
+#include "cli/scenario_loading.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <cstdio>
+
+#include "scenario/diagnostics.hpp"
+#include "scenario/reader.hpp"
+
+namespace hydrodda::cli {
+
+std::optional<scenario::Scenario> load_scenario(const std::filesystem::path& file) {
+  try {
+    scenario::Scenario s = scenario::read_scenario(file);
+    for (const scenario::DefaultUsed& d : s.defaults_used)
+      spdlog::debug("default: {} = {}", d.key, d.value);
+    if (!s.defaults_used.empty())
+      spdlog::info("{} default value(s) used (-v lists them)", s.defaults_used.size());
+    return s;
+  } catch (const scenario::ScenarioError& e) {
+    for (const scenario::Diagnostic& d : e.diagnostics())
+      std::fputs(fmt::format("error: {}\n", d.format()).c_str(), stderr);
+    std::fputs(fmt::format("{}: {} error(s)\n", file.string(), e.diagnostics().size()).c_str(),
+               stderr);
+    return std::nullopt;
+  }
+}
+
+std::string describe(const scenario::Scenario& s) {
+  const char* kind = s.mechanics && s.flow ? "coupled run" : s.mechanics ? "mechanics only" : "flow only";
+  std::string text = kind;
+  if (s.geometry) {
+    if (!s.geometry->blocks.empty()) text += fmt::format(", {} blocks", s.geometry->blocks.size());
+    if (!s.geometry->fractures.empty())
+      text += fmt::format(", {} fractures", s.geometry->fractures.size());
+  }
+  if (s.flow) text += fmt::format(", {} flow boundaries", s.flow->boundaries.size());
+  return text;
+}
+
+}  // namespace hydrodda::cli

@@ -1,0 +1,18 @@
+#pragma once
+// Reading a scenario for a subcommand: errors printed all together, defaults logged.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "scenario/scenario.hpp"
+
+namespace hydrodda::cli {
+
+// The scenario, or nothing after every error has been printed to stderr.
+std::optional<scenario::Scenario> load_scenario(const std::filesystem::path& file);
+
+// One line on what the scenario asks for: "coupled run, 6 blocks, 2 flow boundaries".
+std::string describe(const scenario::Scenario& scenario);
+
+}  // namespace hydrodda::cli

@@ -1,0 +1,37 @@
+#pragma once
+// The run folder: where a run writes everything, and nowhere else.
+
+#include <filesystem>
+#include <string_view>
+
+namespace hydrodda::output {
+
+// What to do when the run folder already holds files.
+enum class ExistingFolder { Refuse, Overwrite };
+
+class RunFolder {
+ public:
+  // Creates the folder (and its parents) on demand. A folder that already holds files is
+  // refused with ExistingFolder::Refuse, so that no earlier result is lost; with Overwrite,
+  // files of the same name are replaced and other files are left alone.
+  RunFolder(std::filesystem::path directory, ExistingFolder policy);
+
+  const std::filesystem::path& path() const { return directory_; }
+  std::filesystem::path file(std::string_view name) const { return directory_ / name; }
+  // The figures/ subfolder, created on first use.
+  std::filesystem::path figures() const;
+
+  // Writes a file in the folder atomically (temporary name, then rename).
+  void write(std::string_view name, std::string_view content) const;
+
+ private:
+  std::filesystem::path directory_;
+};
+
+// Thrown when the folder exists and holds files, or cannot be created.
+class RunFolderError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace hydrodda::output

@@ -1,0 +1,43 @@
+#include "output/summary.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace hydrodda::output {
+
+std::string format_summary(const RunSummary& s) {
+  using nlohmann::json;
+  json blocks = json::array();
+  for (const BlockSummary& b : s.blocks)
+    blocks.push_back({{"id", b.id},
+                      {"centroid", b.centroid},
+                      {"displacement", b.displacement},
+                      {"rotation", b.rotation},
+                      {"stress", b.stress},
+                      {"area", b.area}});
+  json measure = json::object();
+  for (const MeasureSummary& m : s.measures)
+    measure[m.name] = {{"position", m.position}, {"displacement", m.displacement}};
+  json timings = json::object();
+  for (const NamedValue& t : s.timings) timings[t.name] = t.value;
+
+  json out = {{"title", s.title},
+              {"scenario", s.scenario},
+              {"converged", s.converged},
+              {"iterations", s.iterations},
+              {"status", s.status},
+              {"message", s.message},
+              {"blocks", blocks},
+              {"measure", measure},
+              {"timings", timings}};
+  if (s.flow) {
+    json boundaries = json::object();
+    for (const NamedValue& b : s.flow->boundaries) boundaries[b.name] = b.value;
+    json regions = json::object();
+    for (const RegionSummary& r : s.flow->regions)
+      regions[r.name] = {{"flow", r.flow}, {"effective_conductivity", r.effective_conductivity}};
+    out["flow"] = {{"boundaries", boundaries}, {"balance", s.flow->balance}, {"regions", regions}};
+  }
+  return out.dump(2) + "\n";
+}
+
+}  // namespace hydrodda::output

@@ -1,0 +1,59 @@
+#pragma once
+// summary.json: the run's results in one machine-readable file (SCENARIO.md, "Run folder").
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hydrodda::output {
+
+struct BlockSummary {
+  int id = 0;
+  std::array<double, 2> centroid{};
+  std::array<double, 2> displacement{};
+  double rotation = 0.0;
+  std::array<double, 3> stress{};  // sxx, syy, sxy
+  double area = 0.0;
+};
+
+struct MeasureSummary {
+  std::string name;
+  std::array<double, 2> position{};
+  std::array<double, 2> displacement{};
+};
+
+struct NamedValue {
+  std::string name;
+  double value = 0.0;
+};
+
+struct RegionSummary {
+  std::string name;
+  double flow = 0.0;
+  double effective_conductivity = 0.0;
+};
+
+struct FlowSummary {
+  std::vector<NamedValue> boundaries;  // outward flow per metre of thickness, m2/s
+  double balance = 0.0;                // relative mass-balance error
+  std::vector<RegionSummary> regions;
+};
+
+struct RunSummary {
+  std::string title;
+  std::string scenario;          // the scenario file as given
+  bool converged = false;
+  int iterations = 0;
+  std::string status = "ok";     // "ok", or what failed
+  std::string message;
+  std::vector<BlockSummary> blocks;
+  std::vector<MeasureSummary> measures;
+  std::optional<FlowSummary> flow;
+  std::vector<NamedValue> timings;  // seconds per phase
+};
+
+// The summary as JSON text, pretty-printed, full double precision.
+std::string format_summary(const RunSummary& summary);
+
+}  // namespace hydrodda::output

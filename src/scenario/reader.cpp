@@ -1,0 +1,486 @@
+#include "scenario/reader.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "scenario/table_view.hpp"
+#include "scenario/validation.hpp"
+
+namespace hydrodda::scenario {
+
+const BoundarySegment* Scenario::find_boundary(std::string_view name) const {
+  for (const BoundarySegment& b : boundaries)
+    if (b.name == name) return &b;
+  return nullptr;
+}
+
+const MaterialDefinition* Scenario::find_material(std::string_view name) const {
+  for (const MaterialDefinition& m : materials)
+    if (m.name == name) return &m;
+  return nullptr;
+}
+
+namespace {
+
+bool segment_meets_polygon(Point a, Point b, const Polygon& polygon) {
+  if (polygon.size() < 3) return true;  // no domain to test against: reported elsewhere
+  if (geometry::contains(polygon, a) || geometry::contains(polygon, b)) return true;
+  for (std::size_t i = 0; i < polygon.size(); ++i)
+    if (geometry::segments_intersect(a, b, polygon[i], polygon[(i + 1) % polygon.size()])) return true;
+  return false;
+}
+
+void read_geometry(ReadContext& ctx, const TableView& root, Scenario& s) {
+  const toml::table* t = root.table("geometry");
+  if (!t) return;
+  const TableView g(ctx, *t, "geometry",
+                    {"domain", "fractures", "welded", "initial_aperture", "block"});
+  GeometryDefinition geometry;
+  if (auto domain = g.points("domain")) {
+    geometry.domain = std::move(*domain);
+    check_polygon(ctx, g.line_of_key("domain"), "geometry.domain", geometry.domain);
+  }
+  for (auto& [line_points, line] : g.point_lists("fractures")) {
+    const std::string key = "geometry.fractures";
+    if (line_points.size() != 2) {
+      ctx.error(line, key, "a fracture is a straight cut: two points [[x1, y1], [x2, y2]]");
+      continue;
+    }
+    if (line_points[0] == line_points[1]) {
+      ctx.error(line, key, "a fracture's two end points coincide");
+      continue;
+    }
+    if (!segment_meets_polygon(line_points[0], line_points[1], geometry.domain)) {
+      ctx.error(line, key, "the fracture lies wholly outside the domain");
+      continue;
+    }
+    geometry.fractures.push_back({line_points[0], line_points[1]});
+  }
+  for (auto& [polygon, line] : g.point_lists("welded")) {
+    check_polygon(ctx, line, "geometry.welded", polygon);
+    geometry.welded.push_back(std::move(polygon));
+  }
+  if (g.has("initial_aperture")) {
+    geometry.initial_aperture = g.number("initial_aperture").value_or(0.0);
+    g.require("initial_aperture", geometry.initial_aperture >= 0.0, "must be >= 0");
+  } else if (!geometry.fractures.empty()) {
+    geometry.initial_aperture = g.number_or("initial_aperture", 0.0);
+  }
+  for (const toml::table* bt : g.tables("block")) {
+    const TableView b(ctx, *bt, "geometry.block", {"vertices", "material", "fixed"});
+    BlockDefinition block;
+    block.line = b.line();
+    if (auto v = b.points("vertices")) block.vertices = std::move(*v);
+    else if (!b.has("vertices")) ctx.error(b.line(), "geometry.block.vertices", "required key is missing");
+    check_polygon(ctx, b.line_of_key("vertices"), "geometry.block.vertices", block.vertices);
+    block.material = b.string("material").value_or("");
+    block.fixed = b.boolean("fixed").value_or(false);
+    geometry.blocks.push_back(std::move(block));
+  }
+  if (geometry.domain.empty() && geometry.blocks.empty())
+    ctx.error(g.line(), "geometry", "give a domain (cut by fractures) or blocks ([[geometry.block]])");
+  if (!geometry.domain.empty() && !geometry.blocks.empty())
+    ctx.error(g.line(), "geometry.block",
+              "give either a domain cut by fractures or blocks one by one, not both");
+  if (geometry.domain.empty() && (!geometry.fractures.empty() || !geometry.welded.empty()))
+    ctx.error(g.line(), "geometry.domain", "fractures and welded regions need a domain to cut");
+  s.geometry = std::move(geometry);
+}
+
+void add_default_boundaries(Scenario& s) {
+  geometry::Box box;
+  if (s.geometry) {
+    for (Point p : s.geometry->domain) box.add(p);
+    for (const BlockDefinition& b : s.geometry->blocks)
+      for (Point p : b.vertices) box.add(p);
+  }
+  if (box.empty()) return;
+  const Point ll = box.lo, ur = box.hi;
+  const Point lr{ur.x, ll.y}, ul{ll.x, ur.y};
+  // Each runs in the direction of increasing coordinate: a traction's `normal` applies at
+  // `from`, `normal_end` at `to`.
+  s.boundaries.push_back({"left", {ll, ul}, true});
+  s.boundaries.push_back({"right", {lr, ur}, true});
+  s.boundaries.push_back({"bottom", {ll, lr}, true});
+  s.boundaries.push_back({"top", {ul, ur}, true});
+}
+
+void read_boundaries(ReadContext& ctx, const TableView& root, Scenario& s) {
+  add_default_boundaries(s);
+  const toml::table* t = root.table("boundaries");
+  if (!t) return;
+  for (auto&& [key, value] : *t) {
+    const std::string name{key.str()};
+    const std::string path = "boundaries." + name;
+    const toml::table* segment = value.as_table();
+    if (!segment) {
+      ctx.error(line_of(value), path, "expected { from = [x, y], to = [x, y] }");
+      continue;
+    }
+    const TableView b(ctx, *segment, path, {"from", "to"});
+    const auto from = b.point("from");
+    const auto to = b.point("to");
+    if (!b.has("from")) ctx.error(b.line(), path + ".from", "required key is missing");
+    if (!b.has("to")) ctx.error(b.line(), path + ".to", "required key is missing");
+    if (!from || !to) continue;
+    if (*from == *to) {
+      ctx.error(b.line(), path, "'from' and 'to' coincide: a boundary segment needs length");
+      continue;
+    }
+    BoundarySegment boundary{name, {*from, *to}, false};
+    auto existing = std::find_if(s.boundaries.begin(), s.boundaries.end(),
+                                 [&](const BoundarySegment& x) { return x.name == name; });
+    if (existing != s.boundaries.end()) *existing = boundary;  // a user may redefine a default
+    else s.boundaries.push_back(boundary);
+  }
+}
+
+void read_materials(ReadContext& ctx, const TableView& root, Scenario& s) {
+  const toml::table* t = root.table("material");
+  if (!t) return;
+  for (auto&& [key, value] : *t) {
+    const std::string name{key.str()};
+    const std::string path = "material." + name;
+    const toml::table* mt = value.as_table();
+    if (!mt) {
+      ctx.error(line_of(value), path, "expected a table [material." + name + "]");
+      continue;
+    }
+    const TableView m(ctx, *mt, path,
+                      {"density", "young", "poisson", "matrix_porosity", "grain_diameter"});
+    MaterialDefinition material;
+    material.name = name;
+    material.density = m.number("density");
+    material.young = m.number("young");
+    material.poisson = m.number("poisson");
+    material.grain_diameter = m.number("grain_diameter");
+    if (material.density) m.require("density", *material.density > 0.0, "must be > 0");
+    if (material.young) m.require("young", *material.young > 0.0, "must be > 0");
+    if (material.poisson)
+      m.require("poisson", *material.poisson > -1.0 && *material.poisson < 0.5,
+                "must lie in (-1, 0.5)");
+    if (material.grain_diameter)
+      m.require("grain_diameter", *material.grain_diameter > 0.0, "must be > 0");
+    if (m.has("matrix_porosity")) {
+      material.matrix_porosity = m.number("matrix_porosity").value_or(0.0);
+      m.require("matrix_porosity",
+                material.matrix_porosity >= 0.0 && material.matrix_porosity < 1.0,
+                "must lie in [0, 1)");
+    }
+    s.materials.push_back(std::move(material));
+  }
+}
+
+void read_joint(ReadContext& ctx, const TableView& root, Scenario& s) {
+  const toml::table* t = root.table("joint");
+  if (!t) return;
+  const TableView j(ctx, *t, "joint", {"friction_angle", "cohesion", "tensile_strength"});
+  s.joint.friction_angle = j.number_or("friction_angle", s.joint.friction_angle);
+  s.joint.cohesion = j.number_or("cohesion", s.joint.cohesion);
+  s.joint.tensile_strength = j.number_or("tensile_strength", s.joint.tensile_strength);
+  j.require("friction_angle", s.joint.friction_angle >= 0.0 && s.joint.friction_angle < 90.0,
+            "must lie in [0, 90) degrees");
+  j.require("cohesion", s.joint.cohesion >= 0.0, "must be >= 0");
+  j.require("tensile_strength", s.joint.tensile_strength >= 0.0, "must be >= 0");
+}
+
+void read_mechanics(ReadContext& ctx, const TableView& root, Scenario& s) {
+  const toml::table* t = root.table("mechanics");
+  if (!t) return;
+  const TableView m(ctx, *t, "mechanics",
+                    {"analysis", "plane", "gravity", "time_step", "steps", "end_time",
+                     "max_displacement_ratio", "contact", "penalty", "fixed", "load",
+                     "displacement", "traction", "measure"});
+  MechanicsDefinition mech;
+  mech.analysis = m.choice("analysis", {"static", "dynamic"}, "static") == 1 ? Analysis::Dynamic
+                                                                             : Analysis::Static;
+  mech.plane = m.choice("plane", {"strain", "stress"}, "strain") == 1 ? Plane::Stress : Plane::Strain;
+  if (auto g = m.point("gravity")) mech.gravity = *g;
+  else if (!m.has("gravity")) ctx.defaults.push_back({"mechanics.gravity", "[0, -9.81]"});
+  mech.time_step = m.number_or("time_step", mech.time_step);
+  m.require("time_step", mech.time_step > 0.0, "must be > 0");
+  if (auto steps = m.integer("steps")) {
+    mech.steps = static_cast<int>(*steps);
+    m.require("steps", *steps >= 1 && *steps <= 100'000'000, "must be a whole number >= 1");
+  }
+  if (auto end = m.number("end_time")) {
+    mech.end_time = *end;
+    m.require("end_time", *end > 0.0, "must be > 0");
+  }
+  if (mech.steps && mech.end_time)
+    ctx.error(m.line_of_key("end_time"), "mechanics.end_time", "give 'steps' or 'end_time', not both");
+  if (!mech.steps && !mech.end_time) {
+    mech.steps = 100;
+    ctx.defaults.push_back({"mechanics.steps", "100"});
+  }
+  mech.max_displacement_ratio = m.number_or("max_displacement_ratio", mech.max_displacement_ratio);
+  m.require("max_displacement_ratio",
+            mech.max_displacement_ratio > 0.0 && mech.max_displacement_ratio <= 1.0,
+            "must lie in (0, 1]");
+  mech.contact = m.choice("contact", {"augmented-lagrangian", "penalty"}, "augmented-lagrangian") == 1
+                     ? ContactMethod::Penalty
+                     : ContactMethod::AugmentedLagrangian;
+  if (auto p = m.number("penalty")) {
+    mech.penalty = *p;
+    m.require("penalty", *p > 0.0, "must be > 0");
+  }
+
+  for (const toml::table* ft : m.tables("fixed")) {
+    const TableView f(ctx, *ft, "mechanics.fixed", {"point"});
+    if (auto p = f.point("point")) mech.fixed.push_back({*p, f.line()});
+    else if (!f.has("point")) ctx.error(f.line(), "mechanics.fixed.point", "required key is missing");
+  }
+  for (const toml::table* lt : m.tables("load")) {
+    const TableView l(ctx, *lt, "mechanics.load", {"point", "force"});
+    const auto p = l.point("point");
+    const auto f = l.point("force");
+    if (!l.has("point")) ctx.error(l.line(), "mechanics.load.point", "required key is missing");
+    if (!l.has("force")) ctx.error(l.line(), "mechanics.load.force", "required key is missing");
+    if (p && f) mech.loads.push_back({*p, *f, l.line()});
+  }
+  for (const toml::table* dt : m.tables("displacement")) {
+    const TableView d(ctx, *dt, "mechanics.displacement", {"boundary", "point", "value"});
+    PrescribedDisplacement disp;
+    disp.line = d.line();
+    disp.boundary = d.string("boundary").value_or("");
+    disp.point = d.point("point");
+    if (d.has("boundary") == d.has("point"))
+      ctx.error(d.line(), "mechanics.displacement", "give exactly one of 'boundary' or 'point'");
+    if (auto v = d.point("value")) disp.value = *v;
+    else if (!d.has("value")) ctx.error(d.line(), "mechanics.displacement.value", "required key is missing");
+    mech.displacements.push_back(std::move(disp));
+  }
+  for (const toml::table* tt : m.tables("traction")) {
+    const TableView r(ctx, *tt, "mechanics.traction",
+                      {"boundary", "normal", "normal_end", "shear", "shear_end"});
+    Traction traction;
+    traction.line = r.line();
+    traction.boundary = r.string("boundary").value_or("");
+    if (!r.has("boundary")) ctx.error(r.line(), "mechanics.traction.boundary", "required key is missing");
+    traction.normal = r.number("normal").value_or(0.0);
+    traction.shear = r.number("shear").value_or(0.0);
+    traction.normal_end = r.number("normal_end").value_or(traction.normal);
+    traction.shear_end = r.number("shear_end").value_or(traction.shear);
+    if (!r.has("normal") && !r.has("shear"))
+      ctx.error(r.line(), "mechanics.traction", "give 'normal' and/or 'shear'");
+    mech.tractions.push_back(std::move(traction));
+  }
+  for (const toml::table* mt : m.tables("measure")) {
+    const TableView p(ctx, *mt, "mechanics.measure", {"name", "point"});
+    MeasurePoint measure;
+    measure.line = p.line();
+    measure.name = p.string("name").value_or("");
+    if (!p.has("name")) ctx.error(p.line(), "mechanics.measure.name", "required key is missing");
+    if (auto pt = p.point("point")) measure.point = *pt;
+    else if (!p.has("point")) ctx.error(p.line(), "mechanics.measure.point", "required key is missing");
+    for (const MeasurePoint& other : mech.measures)
+      if (!measure.name.empty() && other.name == measure.name)
+        ctx.error(p.line(), "mechanics.measure.name",
+                  fmt::format("\"{}\" is already used (line {})", measure.name, other.line));
+    mech.measures.push_back(std::move(measure));
+  }
+  s.mechanics = std::move(mech);
+}
+
+void read_flow(ReadContext& ctx, const TableView& root, Scenario& s) {
+  const toml::table* t = root.table("flow");
+  if (!t) return;
+  const TableView f(ctx, *t, "flow",
+                    {"fluid", "pressure", "permeability_law", "permeability_cap", "boundary",
+                     "region"});
+  FlowDefinition flow;
+  if (const toml::table* ft = f.table("fluid")) {
+    const TableView fluid(ctx, *ft, "flow.fluid", {"density", "viscosity"});
+    flow.fluid_density = fluid.number_or("density", flow.fluid_density);
+    flow.fluid_viscosity = fluid.number_or("viscosity", flow.fluid_viscosity);
+    fluid.require("density", flow.fluid_density > 0.0, "must be > 0");
+    fluid.require("viscosity", flow.fluid_viscosity > 0.0, "must be > 0");
+  } else if (!f.has("fluid")) {
+    ctx.defaults.push_back({"flow.fluid", "{ density = 1000, viscosity = 0.001 }"});
+  }
+  flow.pressure = f.choice("pressure", {"overpressure", "hydrostatic"}, "overpressure") == 1
+                      ? PressureConvention::Hydrostatic
+                      : PressureConvention::Overpressure;
+  flow.permeability_law =
+      f.choice("permeability_law", {"kozeny-carman", "cubic"}, "kozeny-carman") == 1
+          ? PermeabilityLaw::Cubic
+          : PermeabilityLaw::KozenyCarman;
+  flow.permeability_cap = f.number_or("permeability_cap", flow.permeability_cap);
+  f.require("permeability_cap", flow.permeability_cap > 0.0, "must be > 0");
+
+  for (const toml::table* bt : f.tables("boundary")) {
+    const TableView b(ctx, *bt, "flow.boundary", {"name", "head", "pressure", "flux"});
+    FlowBoundaryCondition bc;
+    bc.line = b.line();
+    bc.name = b.string("name").value_or("");
+    if (!b.has("name")) ctx.error(b.line(), "flow.boundary.name", "required key is missing");
+    const int given = b.has("head") + b.has("pressure") + b.has("flux");
+    if (given != 1) {
+      ctx.error(b.line(), "flow.boundary", "give exactly one of 'head', 'pressure' or 'flux'");
+    } else if (b.has("head")) {
+      bc.kind = FlowConditionKind::Head;
+      bc.value = b.number("head").value_or(0.0);
+    } else if (b.has("pressure")) {
+      bc.kind = FlowConditionKind::Pressure;
+      bc.value = b.number("pressure").value_or(0.0);
+    } else {
+      bc.kind = FlowConditionKind::Flux;
+      bc.value = b.number("flux").value_or(0.0);
+    }
+    for (const FlowBoundaryCondition& other : flow.boundaries)
+      if (!bc.name.empty() && other.name == bc.name)
+        ctx.error(b.line(), "flow.boundary.name",
+                  fmt::format("\"{}\" already has a condition (line {})", bc.name, other.line));
+    flow.boundaries.push_back(std::move(bc));
+  }
+  for (const toml::table* rt : f.tables("region")) {
+    const TableView r(ctx, *rt, "flow.region", {"name", "polygon", "permeability"});
+    FlowRegion region;
+    region.line = r.line();
+    region.name = r.string("name").value_or("");
+    if (!r.has("name")) ctx.error(r.line(), "flow.region.name", "required key is missing");
+    if (auto p = r.points("polygon")) region.polygon = std::move(*p);
+    else if (!r.has("polygon")) ctx.error(r.line(), "flow.region.polygon", "required key is missing");
+    check_polygon(ctx, r.line_of_key("polygon"), "flow.region.polygon", region.polygon);
+    if (auto k = r.number("permeability")) {
+      region.permeability = *k;
+      r.require("permeability", *k > 0.0, "must be > 0");
+    }
+    flow.regions.push_back(std::move(region));
+  }
+  s.flow = std::move(flow);
+}
+
+void read_mesh(ReadContext& ctx, const TableView& root, Scenario& s) {
+  const toml::table* t = root.table("mesh");
+  const bool wanted = t || s.flow;
+  if (!wanted) return;
+  MeshDefinition mesh;
+  // Defaults scale with the domain: 1/40 of its larger side far from fractures.
+  double extent = 1.0;
+  if (s.geometry && !s.geometry->domain.empty()) {
+    const geometry::Box box = geometry::bounding_box(s.geometry->domain);
+    extent = std::max(box.width(), box.height());
+  }
+  static const toml::table empty;
+  const TableView m(ctx, t ? *t : empty, "mesh", {"size", "fracture_size", "refine_distance", "file"});
+  mesh.size = m.number_or("size", extent / 40.0);
+  mesh.fracture_size = m.number_or("fracture_size", mesh.size / 10.0);
+  mesh.refine_distance = m.number_or("refine_distance", 2.0 * mesh.size);
+  m.require("size", mesh.size > 0.0, "must be > 0");
+  m.require("fracture_size", mesh.fracture_size > 0.0, "must be > 0");
+  m.require("fracture_size", mesh.fracture_size <= mesh.size, "must be <= mesh.size");
+  m.require("refine_distance", mesh.refine_distance > 0.0, "must be > 0");
+  if (auto file = m.string("file")) {
+    std::filesystem::path path(*file);
+    if (path.is_relative()) path = s.file.parent_path() / path;
+    if (!std::filesystem::exists(path))
+      ctx.error(m.line_of_key("file"), "mesh.file", fmt::format("no such file: {}", path.string()));
+    mesh.file = path;
+  }
+  s.mesh = std::move(mesh);
+}
+
+void read_coupling(ReadContext& ctx, const TableView& root, Scenario& s) {
+  const toml::table* t = root.table("coupling");
+  if (!t) {
+    if (s.flow && s.mechanics)
+      ctx.defaults.push_back({"coupling", "{ tolerance = 1e-4, max_iterations = 50, relaxation = 1 }"});
+    return;
+  }
+  const TableView c(ctx, *t, "coupling", {"tolerance", "max_iterations", "relaxation"});
+  s.coupling.tolerance = c.number_or("tolerance", s.coupling.tolerance);
+  c.require("tolerance", s.coupling.tolerance > 0.0, "must be > 0");
+  if (auto n = c.integer("max_iterations")) {
+    s.coupling.max_iterations = static_cast<int>(*n);
+    c.require("max_iterations", *n >= 1 && *n <= 1'000'000, "must be a whole number >= 1");
+  } else if (!c.has("max_iterations")) {
+    ctx.defaults.push_back({"coupling.max_iterations", "50"});
+  }
+  s.coupling.relaxation = c.number_or("relaxation", s.coupling.relaxation);
+  c.require("relaxation", s.coupling.relaxation > 0.0 && s.coupling.relaxation <= 1.0,
+            "must lie in (0, 1]");
+}
+
+void read_output(ReadContext& ctx, const TableView& root, Scenario& s) {
+  const toml::table* t = root.table("output");
+  static const toml::table empty;
+  const TableView o(ctx, t ? *t : empty, "output", {"directory", "every", "figures"});
+  if (auto dir = o.string("directory")) {
+    s.output.directory = *dir;
+    o.require("directory", !dir->empty(), "must not be empty");
+  } else {
+    s.output.directory = std::filesystem::path("out") / s.file.stem();
+    ctx.defaults.push_back({"output.directory", fmt::format("\"{}\"", s.output.directory.string())});
+  }
+  if (auto every = o.integer("every")) {
+    s.output.every = static_cast<int>(*every);
+    o.require("every", *every >= 1, "must be a whole number >= 1");
+  }
+  if (const toml::node* figures = o.node("figures")) {
+    s.output.figures.clear();
+    const toml::array* a = figures->as_array();
+    if (!a) {
+      ctx.error(line_of(*figures), "output.figures", "expected an array such as [\"png\", \"svg\"]");
+    } else {
+      for (const toml::node& item : *a) {
+        const auto format = item.value<std::string>();
+        if (!format || (*format != "png" && *format != "svg" && *format != "pdf"))
+          ctx.error(line_of(item), "output.figures", "each format must be \"png\", \"svg\" or \"pdf\"");
+        else s.output.figures.push_back(*format);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+Scenario parse_scenario(std::string_view text, const std::filesystem::path& file) {
+  ReadContext ctx;
+  ctx.file = file.string();
+  toml::table document;
+  try {
+    document = toml::parse(text, file.string());
+  } catch (const toml::parse_error& e) {
+    ctx.error(static_cast<int>(e.source().begin.line), "",
+              "malformed TOML: " + std::string(e.description()));
+    throw ScenarioError(std::move(ctx.errors));
+  }
+
+  Scenario s;
+  s.file = file;
+  const TableView root(ctx, document, "",
+                       {"title", "geometry", "boundaries", "material", "joint", "mechanics",
+                        "flow", "mesh", "coupling", "output"});
+  s.title = root.string("title").value_or(file.stem().string());
+  read_geometry(ctx, root, s);
+  read_boundaries(ctx, root, s);
+  read_materials(ctx, root, s);
+  read_joint(ctx, root, s);
+  read_mechanics(ctx, root, s);
+  read_flow(ctx, root, s);
+  read_mesh(ctx, root, s);
+  read_coupling(ctx, root, s);
+  read_output(ctx, root, s);
+  validate_scenario(ctx, root, s);
+
+  if (!ctx.errors.empty()) {
+    std::stable_sort(ctx.errors.begin(), ctx.errors.end(),
+                     [](const Diagnostic& a, const Diagnostic& b) { return a.line < b.line; });
+    throw ScenarioError(std::move(ctx.errors));
+  }
+  s.defaults_used = std::move(ctx.defaults);
+  return s;
+}
+
+Scenario read_scenario(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw ScenarioError({{file.string(), 0, "", "cannot open the scenario file"}});
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_scenario(text.str(), file);
+}
+
+}  // namespace hydrodda::scenario

@@ -1,0 +1,19 @@
+#pragma once
+// Reading a scenario file (TOML) into a validated Scenario.
+
+#include <filesystem>
+#include <string_view>
+
+#include "scenario/scenario.hpp"
+
+namespace hydrodda::scenario {
+
+// Reads and validates a scenario file. Every problem found is collected; if there is any, a
+// ScenarioError listing them all (file:line: key: message) is thrown. Nothing is written.
+Scenario read_scenario(const std::filesystem::path& file);
+
+// The same from text, for tests and tools; `file` names the source in messages and is the
+// base for relative paths.
+Scenario parse_scenario(std::string_view text, const std::filesystem::path& file);
+
+}  // namespace hydrodda::scenario

@@ -1,0 +1,187 @@
+#pragma once
+// The scenario as plain definition structs: what the user asked for, validated, in SI units.
+// Nothing here knows the engines; the run command turns these into engine inputs.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/point.hpp"
+#include "geometry/polygon.hpp"
+
+namespace hydrodda::scenario {
+
+using geometry::Point;
+using geometry::Polygon;
+
+struct Segment {
+  Point from;
+  Point to;
+};
+
+struct BlockDefinition {
+  Polygon vertices;           // counter-clockwise
+  std::string material;       // resolved: never empty after reading
+  bool fixed = false;
+  int line = 0;               // where it was defined, for messages
+};
+
+struct GeometryDefinition {
+  Polygon domain;                    // empty when blocks are given one by one
+  std::vector<Segment> fractures;
+  std::vector<Polygon> welded;
+  double initial_aperture = 0.0;     // m
+  std::vector<BlockDefinition> blocks;
+};
+
+// A named boundary segment; left/right/bottom/top exist by default.
+struct BoundarySegment {
+  std::string name;
+  Segment segment;
+  bool is_default = false;
+};
+
+struct MaterialDefinition {
+  std::string name;
+  std::optional<double> density;          // kg/m3 (mechanics)
+  std::optional<double> young;            // Pa (mechanics)
+  std::optional<double> poisson;          // (mechanics)
+  double matrix_porosity = 0.0;
+  std::optional<double> grain_diameter;   // m (Kozeny–Carman)
+};
+
+struct JointDefinition {
+  double friction_angle = 30.0;   // degrees
+  double cohesion = 0.0;          // Pa
+  double tensile_strength = 0.0;  // Pa
+};
+
+enum class Analysis { Static, Dynamic };
+enum class Plane { Strain, Stress };
+enum class ContactMethod { AugmentedLagrangian, Penalty };
+
+struct FixedPoint {
+  Point point;
+  int line = 0;
+};
+
+struct PointLoad {
+  Point point;
+  Point force;  // N per metre of thickness
+  int line = 0;
+};
+
+// A displacement prescribed on every block vertex of a boundary, or on one point.
+struct PrescribedDisplacement {
+  std::string boundary;          // empty when `point` is given
+  std::optional<Point> point;
+  Point value;                   // m, reached at the end of the run (ramped)
+  int line = 0;
+};
+
+// A distributed edge load on the block edges lying on a boundary, linear along it.
+struct Traction {
+  std::string boundary;
+  double normal = 0.0;      // Pa at the boundary's `from` end; compression negative
+  double normal_end = 0.0;  // Pa at its `to` end
+  double shear = 0.0;
+  double shear_end = 0.0;
+  int line = 0;
+};
+
+struct MeasurePoint {
+  std::string name;
+  Point point;
+  int line = 0;
+};
+
+struct MechanicsDefinition {
+  Analysis analysis = Analysis::Static;
+  Plane plane = Plane::Strain;
+  Point gravity{0.0, -9.81};
+  double time_step = 1.0e-3;
+  std::optional<int> steps;
+  std::optional<double> end_time;
+  double max_displacement_ratio = 0.01;
+  ContactMethod contact = ContactMethod::AugmentedLagrangian;
+  std::optional<double> penalty;  // N/m; derived from the stiffest material when absent
+  std::vector<FixedPoint> fixed;
+  std::vector<PointLoad> loads;
+  std::vector<PrescribedDisplacement> displacements;
+  std::vector<Traction> tractions;
+  std::vector<MeasurePoint> measures;
+};
+
+enum class PressureConvention { Overpressure, Hydrostatic };
+enum class PermeabilityLaw { KozenyCarman, Cubic };
+enum class FlowConditionKind { Head, Pressure, Flux };
+
+struct FlowBoundaryCondition {
+  std::string name;
+  FlowConditionKind kind = FlowConditionKind::Head;
+  double value = 0.0;  // m, Pa or m/s (outward normal)
+  int line = 0;
+};
+
+struct FlowRegion {
+  std::string name;
+  Polygon polygon;
+  std::optional<double> permeability;  // m2: fixes k inside
+  int line = 0;
+};
+
+struct FlowDefinition {
+  double fluid_density = 1000.0;   // kg/m3
+  double fluid_viscosity = 1.0e-3; // Pa s
+  PressureConvention pressure = PressureConvention::Overpressure;
+  PermeabilityLaw permeability_law = PermeabilityLaw::KozenyCarman;
+  double permeability_cap = 9.869e-11;  // m2 (1e5 mD)
+  std::vector<FlowBoundaryCondition> boundaries;
+  std::vector<FlowRegion> regions;
+};
+
+struct MeshDefinition {
+  double size = 0.0;              // m
+  double fracture_size = 0.0;     // m
+  double refine_distance = 0.0;   // m
+  std::optional<std::filesystem::path> file;  // resolved against the scenario's folder
+};
+
+struct CouplingDefinition {
+  double tolerance = 1.0e-4;
+  int max_iterations = 50;
+  double relaxation = 1.0;
+};
+
+struct OutputDefinition {
+  std::filesystem::path directory;  // resolved: never empty after reading
+  int every = 1;
+  std::vector<std::string> figures{"png"};
+};
+
+// A default the reader filled in, for the log.
+struct DefaultUsed {
+  std::string key;
+  std::string value;
+};
+
+struct Scenario {
+  std::filesystem::path file;
+  std::string title;
+  std::optional<GeometryDefinition> geometry;
+  std::vector<BoundarySegment> boundaries;
+  std::vector<MaterialDefinition> materials;  // in file order
+  JointDefinition joint;
+  std::optional<MechanicsDefinition> mechanics;
+  std::optional<FlowDefinition> flow;
+  std::optional<MeshDefinition> mesh;
+  CouplingDefinition coupling;
+  OutputDefinition output;
+  std::vector<DefaultUsed> defaults_used;
+
+  const BoundarySegment* find_boundary(std::string_view name) const;
+  const MaterialDefinition* find_material(std::string_view name) const;
+};
+
+}  // namespace hydrodda::scenario

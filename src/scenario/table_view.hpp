@@ -1,0 +1,77 @@
+#pragma once
+// Typed, checked access to one TOML table: every read records the key as known, every wrong
+// type or missing required key becomes a Diagnostic with the file, line and dotted key path.
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "scenario/diagnostics.hpp"
+#include "scenario/scenario.hpp"
+
+namespace hydrodda::scenario {
+
+// Collects diagnostics and defaults for one file.
+struct ReadContext {
+  std::string file;
+  std::vector<Diagnostic> errors;
+  std::vector<DefaultUsed> defaults;
+
+  void error(int line, std::string key, std::string message) {
+    errors.push_back({file, line, std::move(key), std::move(message)});
+  }
+};
+
+int line_of(const toml::node& node);
+
+class TableView {
+ public:
+  // Reports every key of `table` not in `allowed`, suggesting the nearest allowed one.
+  TableView(ReadContext& context, const toml::table& table, std::string path,
+            const std::vector<std::string>& allowed);
+
+  const std::string& path() const { return path_; }
+  std::string key_path(std::string_view key) const;
+  int line() const { return line_; }
+  int line_of_key(std::string_view key) const;  // the value's line, or the table's
+  bool has(std::string_view key) const { return table_.contains(key); }
+  const toml::node* node(std::string_view key) const { return table_.get(key); }
+
+  std::optional<double> number(std::string_view key) const;
+  std::optional<long long> integer(std::string_view key) const;
+  std::optional<bool> boolean(std::string_view key) const;
+  std::optional<std::string> string(std::string_view key) const;
+  std::optional<Point> point(std::string_view key) const;
+  std::optional<Polygon> points(std::string_view key) const;
+  const toml::table* table(std::string_view key) const;
+  // An array of tables ([[key]] or an array of inline tables).
+  std::vector<const toml::table*> tables(std::string_view key) const;
+  // An array of arrays of points, e.g. fractures or welded polygons.
+  std::vector<std::pair<Polygon, int>> point_lists(std::string_view key) const;
+
+  double required_number(std::string_view key) const;
+  // The value, or `fallback` recorded as a default used.
+  double number_or(std::string_view key, double fallback) const;
+  // One of `choices` (index), or the index of `fallback` recorded as a default used.
+  int choice(std::string_view key, const std::vector<std::string>& choices,
+             const std::string& fallback) const;
+
+  // Range checks: add an error naming the key when `valid` is false.
+  void require(std::string_view key, bool valid, const std::string& message) const;
+
+ private:
+  ReadContext& context_;
+  const toml::table& table_;
+  std::string path_;
+  int line_;
+};
+
+// Point from a TOML node: an array of exactly two numbers.
+std::optional<Point> to_point(ReadContext& context, const toml::node& node, const std::string& key);
+
+std::string format_number(double value);
+
+}  // namespace hydrodda::scenario

@@ -1,0 +1,185 @@
+#include "scenario/validation.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <numeric>
+
+namespace hydrodda::scenario {
+
+void check_polygon(ReadContext& ctx, int line, const std::string& key, const Polygon& polygon) {
+  if (polygon.empty()) return;  // a missing polygon is reported where it is read
+  if (polygon.size() < 3) {
+    ctx.error(line, key, fmt::format("a polygon needs at least 3 vertices, got {}", polygon.size()));
+    return;
+  }
+  const geometry::Box box = geometry::bounding_box(polygon);
+  const double scale = std::max(box.width(), box.height());
+  const double a = geometry::signed_area(polygon);
+  // Degenerate: area negligible against the square of its extent (collinear or repeated points).
+  if (!(std::abs(a) > 1e-12 * scale * scale)) {
+    ctx.error(line, key, "degenerate polygon: its area is zero");
+    return;
+  }
+  if (auto crossing = geometry::find_self_intersection(polygon)) {
+    ctx.error(line, key,
+              fmt::format("self-intersecting polygon: edge {} (vertices {}-{}) meets edge {} "
+                          "(vertices {}-{})",
+                          crossing->first + 1, crossing->first + 1,
+                          crossing->first + 1 == static_cast<int>(polygon.size()) ? 1 : crossing->first + 2,
+                          crossing->second + 1, crossing->second + 1,
+                          crossing->second + 1 == static_cast<int>(polygon.size()) ? 1 : crossing->second + 2));
+    return;
+  }
+  if (a < 0.0) ctx.error(line, key, "vertices run clockwise: list them counter-clockwise");
+}
+
+namespace {
+
+std::vector<std::string> boundary_names(const Scenario& s) {
+  std::vector<std::string> names;
+  for (const BoundarySegment& b : s.boundaries) names.push_back(b.name);
+  return names;
+}
+
+void check_boundary_reference(ReadContext& ctx, const Scenario& s, int line, const std::string& key,
+                              const std::string& name) {
+  if (name.empty() || s.find_boundary(name)) return;
+  const auto names = boundary_names(s);
+  std::string message = fmt::format("no boundary named \"{}\"", name);
+  const std::string nearest = suggest_nearest(name, names);
+  if (!nearest.empty()) message += fmt::format(" (did you mean \"{}\"?)", nearest);
+  else message += fmt::format("; boundaries are: {}", fmt::join(names, ", "));
+  ctx.error(line, key, message);
+}
+
+// Two blocks overlap when an edge of one properly crosses an edge of the other, or a vertex or
+// the centroid of one lies strictly inside the other; touching along edges is allowed.
+bool blocks_overlap(const Polygon& a, const Polygon& b) {
+  const auto strictly_inside = [](const Polygon& poly, Point p) {
+    if (!geometry::contains(poly, p)) return false;
+    const double scale = std::max(geometry::bounding_box(poly).width(), geometry::bounding_box(poly).height());
+    for (std::size_t i = 0; i < poly.size(); ++i)
+      if (geometry::distance_to_segment(p, poly[i], poly[(i + 1) % poly.size()]) <= 1e-12 * scale)
+        return false;
+    return true;
+  };
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const Point p = a[i], q = a[(i + 1) % a.size()];
+    for (std::size_t j = 0; j < b.size(); ++j) {
+      const Point r = b[j], t = b[(j + 1) % b.size()];
+      const double d1 = geometry::orient(r, t, p), d2 = geometry::orient(r, t, q);
+      const double d3 = geometry::orient(p, q, r), d4 = geometry::orient(p, q, t);
+      if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+        return true;
+    }
+  }
+  for (Point p : a)
+    if (strictly_inside(b, p)) return true;
+  for (Point p : b)
+    if (strictly_inside(a, p)) return true;
+  return strictly_inside(b, geometry::centroid(a)) || strictly_inside(a, geometry::centroid(b));
+}
+
+void check_block_overlaps(ReadContext& ctx, const std::vector<BlockDefinition>& blocks) {
+  // Sweep along x over bounding boxes so that only neighbours are compared.
+  std::vector<geometry::Box> boxes;
+  for (const BlockDefinition& b : blocks) boxes.push_back(geometry::bounding_box(b.vertices));
+  std::vector<std::size_t> order(blocks.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
+    return boxes[i].lo.x < boxes[j].lo.x || (boxes[i].lo.x == boxes[j].lo.x && i < j);
+  });
+  for (std::size_t oi = 0; oi < order.size(); ++oi) {
+    const std::size_t i = order[oi];
+    if (blocks[i].vertices.size() < 3) continue;
+    for (std::size_t oj = oi + 1; oj < order.size(); ++oj) {
+      const std::size_t j = order[oj];
+      if (boxes[j].lo.x > boxes[i].hi.x) break;
+      if (blocks[j].vertices.size() < 3 || !boxes[i].overlaps(boxes[j])) continue;
+      if (blocks_overlap(blocks[i].vertices, blocks[j].vertices)) {
+        const auto [first, second] = std::minmax(blocks[i].line, blocks[j].line);
+        ctx.error(second, "geometry.block",
+                  fmt::format("this block overlaps the block defined at line {}", first));
+      }
+    }
+  }
+}
+
+void resolve_materials(ReadContext& ctx, const TableView& root, Scenario& s) {
+  if (!s.geometry) return;
+  std::vector<std::string> names;
+  for (const MaterialDefinition& m : s.materials) names.push_back(m.name);
+  for (BlockDefinition& b : s.geometry->blocks) {
+    if (b.material.empty()) {
+      if (s.materials.size() == 1) b.material = s.materials[0].name;
+      else if (s.materials.size() > 1)
+        ctx.error(b.line, "geometry.block.material",
+                  fmt::format("several materials are defined ({}): name one", fmt::join(names, ", ")));
+    } else if (!s.find_material(b.material)) {
+      std::string message = fmt::format("no material named \"{}\"", b.material);
+      const std::string nearest = suggest_nearest(b.material, names);
+      if (!nearest.empty()) message += fmt::format(" (did you mean \"{}\"?)", nearest);
+      ctx.error(b.line, "geometry.block.material", message);
+    }
+  }
+  const bool needs_material = s.mechanics || s.flow;
+  if (needs_material && s.materials.empty())
+    ctx.error(root.line(), "material", "no material is defined: add a [material.NAME] table");
+  if (!s.geometry->domain.empty() && s.materials.size() > 1)
+    ctx.error(root.line_of_key("material"), "material",
+              "blocks cut from a domain take the only material: define exactly one");
+}
+
+void check_material_fields(ReadContext& ctx, const TableView& root, const Scenario& s) {
+  for (const MaterialDefinition& m : s.materials) {
+    const int line = root.line_of_key("material");
+    if (s.mechanics) {
+      if (!m.density) ctx.error(line, "material." + m.name + ".density", "required by [mechanics]");
+      if (!m.young) ctx.error(line, "material." + m.name + ".young", "required by [mechanics]");
+      if (!m.poisson) ctx.error(line, "material." + m.name + ".poisson", "required by [mechanics]");
+    }
+    if (s.flow && s.flow->permeability_law == PermeabilityLaw::KozenyCarman && !m.grain_diameter)
+      ctx.error(line, "material." + m.name + ".grain_diameter",
+                "required by flow.permeability_law = \"kozeny-carman\"");
+  }
+}
+
+}  // namespace
+
+void validate_scenario(ReadContext& ctx, const TableView& root, Scenario& s) {
+  if (!s.mechanics && !s.flow)
+    ctx.error(root.line(), "", "nothing to run: give a [mechanics] and/or a [flow] section");
+  if ((s.mechanics || s.flow) && !s.geometry && !(s.mesh && s.mesh->file))
+    ctx.error(root.line(), "geometry", "a [geometry] section is required");
+  if (s.mechanics && !s.geometry)
+    ctx.error(root.line_of_key("mechanics"), "geometry", "[mechanics] needs a [geometry] section");
+  if (s.flow && s.geometry && s.geometry->domain.empty() && !(s.mesh && s.mesh->file))
+    ctx.error(root.line_of_key("flow"), "geometry.domain",
+              "[flow] needs the fluid domain: give geometry.domain or mesh.file");
+
+  resolve_materials(ctx, root, s);
+  check_material_fields(ctx, root, s);
+  if (s.geometry) {
+    check_block_overlaps(ctx, s.geometry->blocks);
+  }
+
+  if (s.mechanics) {
+    for (const PrescribedDisplacement& d : s.mechanics->displacements)
+      check_boundary_reference(ctx, s, d.line, "mechanics.displacement.boundary", d.boundary);
+    for (const Traction& t : s.mechanics->tractions)
+      check_boundary_reference(ctx, s, t.line, "mechanics.traction.boundary", t.boundary);
+  }
+  if (s.flow) {
+    bool head_fixed = false;
+    for (const FlowBoundaryCondition& bc : s.flow->boundaries) {
+      check_boundary_reference(ctx, s, bc.line, "flow.boundary.name", bc.name);
+      head_fixed = head_fixed || bc.kind != FlowConditionKind::Flux;
+    }
+    if (!head_fixed)
+      ctx.error(root.line_of_key("flow"), "flow.boundary",
+                "nothing fixes the head: give at least one boundary a 'head' or a 'pressure'");
+  }
+}
+
+}  // namespace hydrodda::scenario
