@@ -23,14 +23,20 @@ std::optional<std::string> missing_engine(const scenario::Scenario& s) {
 int run_command(const RunOptions& options) {
   const auto scenario = load_scenario(options.scenario);
   if (!scenario) return kBadInput;
+  const std::filesystem::path directory = options.output.value_or(scenario->output.directory);
+  const auto policy = options.overwrite ? output::ExistingFolder::Overwrite : output::ExistingFolder::Refuse;
+  try {
+    output::RunFolder::check_available(directory, policy);
+  } catch (const output::RunFolderError& e) {
+    spdlog::error("{}", e.what());
+    return kBadInput;
+  }
   if (auto missing = missing_engine(*scenario)) {
     spdlog::error("{}: {}", options.scenario.string(), *missing);
     return kRunFailed;
   }
-  const std::filesystem::path directory = options.output.value_or(scenario->output.directory);
   try {
-    output::RunFolder folder(directory, options.overwrite ? output::ExistingFolder::Overwrite
-                                                          : output::ExistingFolder::Refuse);
+    output::RunFolder folder(directory, policy);
     Progress progress(options.verbosity, ::isatty(STDERR_FILENO) == 1);
     (void)progress;
     spdlog::error("no engine can run {}", options.scenario.string());

@@ -10,18 +10,22 @@ namespace hydrodda::output {
 
 namespace fs = std::filesystem;
 
-RunFolder::RunFolder(fs::path directory, ExistingFolder policy) : directory_(std::move(directory)) {
+void RunFolder::check_available(const fs::path& directory, ExistingFolder policy) {
   std::error_code ec;
-  if (fs::exists(directory_, ec)) {
-    if (!fs::is_directory(directory_, ec))
-      throw RunFolderError(fmt::format("{} exists and is not a folder", directory_.string()));
-    if (policy == ExistingFolder::Refuse && !fs::is_empty(directory_, ec))
-      throw RunFolderError(fmt::format(
-          "{} already holds files; choose another folder with -o, or pass --overwrite to "
-          "replace the results in it",
-          directory_.string()));
-    return;
-  }
+  if (!fs::exists(directory, ec)) return;
+  if (!fs::is_directory(directory, ec))
+    throw RunFolderError(fmt::format("{} exists and is not a folder", directory.string()));
+  if (policy == ExistingFolder::Refuse && !fs::is_empty(directory, ec))
+    throw RunFolderError(fmt::format(
+        "{} already holds files; choose another folder with -o, or pass --overwrite to "
+        "replace the results in it",
+        directory.string()));
+}
+
+RunFolder::RunFolder(fs::path directory, ExistingFolder policy) : directory_(std::move(directory)) {
+  check_available(directory_, policy);
+  std::error_code ec;
+  if (fs::is_directory(directory_, ec)) return;
   fs::create_directories(directory_, ec);
   if (ec)
     throw RunFolderError(fmt::format("cannot create {}: {}", directory_.string(), ec.message()));

@@ -2,6 +2,7 @@
 // The run folder: where a run writes everything, and nowhere else.
 
 #include <filesystem>
+#include <stdexcept>
 #include <string_view>
 
 namespace hydrodda::output {
@@ -15,6 +16,9 @@ class RunFolder {
   // refused with ExistingFolder::Refuse, so that no earlier result is lost; with Overwrite,
   // files of the same name are replaced and other files are left alone.
   RunFolder(std::filesystem::path directory, ExistingFolder policy);
+
+  // Throws RunFolderError when the folder could not be used under `policy`; creates nothing.
+  static void check_available(const std::filesystem::path& directory, ExistingFolder policy);
 
   const std::filesystem::path& path() const { return directory_; }
   std::filesystem::path file(std::string_view name) const { return directory_ / name; }

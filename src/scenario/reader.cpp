@@ -125,10 +125,8 @@ void read_boundaries(ReadContext& ctx, const TableView& root, Scenario& s) {
     if (!b.has("from")) ctx.error(b.line(), path + ".from", "required key is missing");
     if (!b.has("to")) ctx.error(b.line(), path + ".to", "required key is missing");
     if (!from || !to) continue;
-    if (*from == *to) {
+    if (*from == *to)  // still declared, so that references to it raise no second error
       ctx.error(b.line(), path, "'from' and 'to' coincide: a boundary segment needs length");
-      continue;
-    }
     BoundarySegment boundary{name, {*from, *to}, false};
     auto existing = std::find_if(s.boundaries.begin(), s.boundaries.end(),
                                  [&](const BoundarySegment& x) { return x.name == name; });
@@ -367,11 +365,14 @@ void read_mesh(ReadContext& ctx, const TableView& root, Scenario& s) {
   static const toml::table empty;
   const TableView m(ctx, t ? *t : empty, "mesh", {"size", "fracture_size", "refine_distance", "file"});
   mesh.size = m.number_or("size", extent / 40.0);
-  mesh.fracture_size = m.number_or("fracture_size", mesh.size / 10.0);
-  mesh.refine_distance = m.number_or("refine_distance", 2.0 * mesh.size);
+  // Derived defaults follow a valid size only, so that one bad value gives one error.
+  const double base = mesh.size > 0.0 ? mesh.size : extent / 40.0;
+  mesh.fracture_size = m.number_or("fracture_size", base / 10.0);
+  mesh.refine_distance = m.number_or("refine_distance", 2.0 * base);
   m.require("size", mesh.size > 0.0, "must be > 0");
   m.require("fracture_size", mesh.fracture_size > 0.0, "must be > 0");
-  m.require("fracture_size", mesh.fracture_size <= mesh.size, "must be <= mesh.size");
+  if (mesh.size > 0.0)
+    m.require("fracture_size", mesh.fracture_size <= mesh.size, "must be <= mesh.size");
   m.require("refine_distance", mesh.refine_distance > 0.0, "must be > 0");
   if (auto file = m.string("file")) {
     std::filesystem::path path(*file);

@@ -15,10 +15,20 @@ void check_polygon(ReadContext& ctx, int line, const std::string& key, const Pol
   }
   const geometry::Box box = geometry::bounding_box(polygon);
   const double scale = std::max(box.width(), box.height());
-  const double a = geometry::signed_area(polygon);
-  // Degenerate: area negligible against the square of its extent (collinear or repeated points).
-  if (!(std::abs(a) > 1e-12 * scale * scale)) {
-    ctx.error(line, key, "degenerate polygon: its area is zero");
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    if (polygon[i] == polygon[(i + 1) % polygon.size()]) {
+      ctx.error(line, key, fmt::format("vertex {} repeats the vertex before it", (i + 1) % polygon.size() + 1));
+      return;
+    }
+  }
+  // Degenerate: every vertex on one line through the first vertex and the one farthest from it.
+  std::size_t far = 0;
+  for (std::size_t i = 1; i < polygon.size(); ++i)
+    if (geometry::distance(polygon[0], polygon[i]) > geometry::distance(polygon[0], polygon[far])) far = i;
+  double spread = 0.0;
+  for (Point p : polygon) spread = std::max(spread, std::abs(geometry::orient(polygon[0], polygon[far], p)));
+  if (!(spread > 1e-12 * scale * scale)) {
+    ctx.error(line, key, "degenerate polygon: its vertices lie on one line, so its area is zero");
     return;
   }
   if (auto crossing = geometry::find_self_intersection(polygon)) {
@@ -31,7 +41,7 @@ void check_polygon(ReadContext& ctx, int line, const std::string& key, const Pol
                           crossing->second + 1 == static_cast<int>(polygon.size()) ? 1 : crossing->second + 2));
     return;
   }
-  if (a < 0.0) ctx.error(line, key, "vertices run clockwise: list them counter-clockwise");
+  if (geometry::signed_area(polygon) < 0.0) ctx.error(line, key, "vertices run clockwise: list them counter-clockwise");
 }
 
 namespace {

@@ -1,0 +1,196 @@
+#include "scenario/reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include "scenario/diagnostics.hpp"
+
+namespace hydrodda::scenario {
+namespace {
+
+const std::filesystem::path kSource = std::filesystem::path(HYDRODDA_SOURCE_DIR);
+
+std::vector<Diagnostic> errors_of(const std::string& text) {
+  try {
+    parse_scenario(text, "case.toml");
+  } catch (const ScenarioError& e) {
+    return e.diagnostics();
+  }
+  return {};
+}
+
+TEST(ScenarioReader, ReadsEveryKeyOfTheContract) {
+  const Scenario s = read_scenario(kSource / "scenarios/examples/contract.toml");
+  EXPECT_EQ(s.title, "Six-block asymmetric model: left-right shortening, flow right to left");
+  ASSERT_TRUE(s.geometry);
+  EXPECT_EQ(s.geometry->domain.size(), 4u);
+  ASSERT_EQ(s.geometry->fractures.size(), 2u);
+  EXPECT_EQ(s.geometry->fractures[0].from, (Point{0.0, 2.1}));
+  EXPECT_EQ(s.geometry->fractures[1].to, (Point{2.0, 5.0}));
+  EXPECT_EQ(s.geometry->welded.size(), 1u);
+  EXPECT_DOUBLE_EQ(s.geometry->initial_aperture, 0.01);
+
+  const BoundarySegment* incline = s.find_boundary("incline");
+  ASSERT_NE(incline, nullptr);
+  EXPECT_EQ(incline->segment.to, (Point{4.0, 2.0}));
+  const BoundarySegment* top = s.find_boundary("top");
+  ASSERT_NE(top, nullptr);
+  EXPECT_TRUE(top->is_default);
+  EXPECT_EQ(top->segment.from, (Point{0.0, 5.0}));
+  EXPECT_EQ(top->segment.to, (Point{5.0, 5.0}));
+
+  const MaterialDefinition* rock = s.find_material("rock");
+  ASSERT_NE(rock, nullptr);
+  EXPECT_DOUBLE_EQ(*rock->young, 1.0e10);
+  EXPECT_DOUBLE_EQ(*rock->poisson, 0.35);
+  EXPECT_DOUBLE_EQ(rock->matrix_porosity, 0.1);
+  EXPECT_DOUBLE_EQ(s.joint.cohesion, 3.0e5);
+
+  ASSERT_TRUE(s.mechanics);
+  EXPECT_EQ(s.mechanics->analysis, Analysis::Static);
+  EXPECT_EQ(s.mechanics->plane, Plane::Strain);
+  EXPECT_EQ(*s.mechanics->steps, 500);
+  EXPECT_EQ(s.mechanics->contact, ContactMethod::AugmentedLagrangian);
+  ASSERT_EQ(s.mechanics->displacements.size(), 1u);
+  EXPECT_EQ(s.mechanics->displacements[0].boundary, "right");
+  EXPECT_EQ(s.mechanics->displacements[0].value, (Point{-0.005, 0.0}));
+  ASSERT_EQ(s.mechanics->tractions.size(), 1u);
+  EXPECT_DOUBLE_EQ(s.mechanics->tractions[0].normal, -5.0e6);
+  EXPECT_DOUBLE_EQ(s.mechanics->tractions[0].normal_end, -5.0e6);  // defaults to `normal`
+  ASSERT_EQ(s.mechanics->measures.size(), 1u);
+  EXPECT_EQ(s.mechanics->measures[0].name, "A");
+
+  ASSERT_TRUE(s.flow);
+  EXPECT_EQ(s.flow->pressure, PressureConvention::Overpressure);
+  EXPECT_EQ(s.flow->permeability_law, PermeabilityLaw::KozenyCarman);
+  ASSERT_EQ(s.flow->boundaries.size(), 2u);
+  EXPECT_EQ(s.flow->boundaries[0].kind, FlowConditionKind::Head);
+  EXPECT_DOUBLE_EQ(s.flow->boundaries[0].value, 20.0);
+  ASSERT_EQ(s.flow->regions.size(), 1u);
+  EXPECT_FALSE(s.flow->regions[0].permeability.has_value());
+
+  ASSERT_TRUE(s.mesh);
+  EXPECT_DOUBLE_EQ(s.mesh->fracture_size, 0.01);
+  EXPECT_EQ(s.coupling.max_iterations, 50);
+  EXPECT_EQ(s.output.directory, "out/six-block");
+  EXPECT_EQ(s.output.figures, std::vector<std::string>{"png"});
+}
+
+TEST(ScenarioReader, RecordsEveryDefaultItFillsIn) {
+  const Scenario s = parse_scenario(R"(
+[geometry]
+domain = [[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]]
+[material.rock]
+matrix_porosity = 0.2
+grain_diameter = 1e-5
+[flow]
+[[flow.boundary]]
+name = "left"
+head = 1.0
+)", "flow.toml");
+  const auto has_default = [&](const std::string& key) {
+    for (const auto& d : s.defaults_used)
+      if (d.key == key) return true;
+    return false;
+  };
+  EXPECT_TRUE(has_default("flow.pressure"));
+  EXPECT_TRUE(has_default("flow.permeability_law"));
+  EXPECT_TRUE(has_default("mesh.size"));
+  EXPECT_TRUE(has_default("output.directory"));
+  // Mesh size defaults to 1/40 of the domain's larger side.
+  EXPECT_DOUBLE_EQ(s.mesh->size, 0.1);
+  EXPECT_DOUBLE_EQ(s.mesh->fracture_size, 0.01);
+  EXPECT_EQ(s.output.directory, std::filesystem::path("out/flow"));
+  EXPECT_FALSE(s.mechanics.has_value());
+}
+
+TEST(ScenarioReader, MalformedTomlNamesTheLine) {
+  const auto errors = errors_of("title = \"ok\"\n[geometry\n");
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].line, 2);
+  EXPECT_NE(errors[0].message.find("malformed TOML"), std::string::npos);
+}
+
+TEST(ScenarioReader, ErrorsAreSortedByLine) {
+  const auto errors = errors_of(R"([geometry]
+[[geometry.block]]
+vertices = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
+[material.rock]
+density = -2.0
+young = 0.0
+poisson = 0.7
+[mechanics]
+steps = 0
+)");
+  ASSERT_EQ(errors.size(), 4u);
+  for (std::size_t i = 1; i < errors.size(); ++i) EXPECT_LE(errors[i - 1].line, errors[i].line);
+  EXPECT_EQ(errors[0].key, "material.rock.density");
+  EXPECT_EQ(errors[3].key, "mechanics.steps");
+  EXPECT_EQ(errors[3].format(), "case.toml:9: mechanics.steps: must be a whole number >= 1");
+}
+
+TEST(ScenarioReader, BlocksTakeTheOnlyMaterial) {
+  const Scenario s = parse_scenario(R"([geometry]
+[[geometry.block]]
+vertices = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
+fixed = true
+[[geometry.block]]
+vertices = [[0.0, 1.0], [1.0, 1.0], [0.5, 2.0]]
+[material.granite]
+density = 2700.0
+young = 5.0e10
+poisson = 0.2
+[mechanics]
+steps = 3
+)", "two.toml");
+  ASSERT_EQ(s.geometry->blocks.size(), 2u);
+  EXPECT_EQ(s.geometry->blocks[0].material, "granite");
+  EXPECT_TRUE(s.geometry->blocks[0].fixed);
+  EXPECT_FALSE(s.geometry->blocks[1].fixed);
+  EXPECT_EQ(s.geometry->blocks[1].line, 5);
+}
+
+TEST(ScenarioReader, TouchingBlocksAreNotOverlapping) {
+  // Two blocks sharing an edge, and one touching at a corner only: valid.
+  EXPECT_TRUE(errors_of(R"([geometry]
+[[geometry.block]]
+vertices = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
+[[geometry.block]]
+vertices = [[1.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 1.0]]
+[[geometry.block]]
+vertices = [[2.0, 1.0], [3.0, 1.0], [3.0, 2.0]]
+[material.rock]
+density = 2500.0
+young = 1.0e10
+poisson = 0.25
+[mechanics]
+steps = 1
+)").empty());
+}
+
+TEST(ScenarioReader, IdenticalBlocksOverlap) {
+  const auto errors = errors_of(R"([geometry]
+[[geometry.block]]
+vertices = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
+[[geometry.block]]
+vertices = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
+[material.rock]
+density = 2500.0
+young = 1.0e10
+poisson = 0.25
+[mechanics]
+steps = 1
+)");
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_NE(errors[0].message.find("overlaps"), std::string::npos);
+}
+
+TEST(NearestKey, SuggestsTyposOnly) {
+  const std::vector<std::string> keys{"density", "young", "poisson", "matrix_porosity"};
+  EXPECT_EQ(suggest_nearest("poison", keys), "poisson");
+  EXPECT_EQ(suggest_nearest("Young", keys), "young");
+  EXPECT_EQ(suggest_nearest("matrix_porostiy", keys), "matrix_porosity");
+  EXPECT_EQ(suggest_nearest("temperature", keys), "");
+}
+
+}  // namespace
+}  // namespace hydrodda::scenario
