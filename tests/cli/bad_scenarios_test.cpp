@@ -20,6 +20,9 @@ struct BadScenario {
   int line = 0;
 };
 
+// Names the case by its file in test logs rather than dumping its bytes.
+void PrintTo(const BadScenario& bad, std::ostream* os) { *os << bad.file.filename().string(); }
+
 std::vector<BadScenario> load_corpus() {
   std::vector<BadScenario> corpus;
   for (const auto& entry : fs::directory_iterator(fs::path(HYDRODDA_SOURCE_DIR) / "tests/cli/bad_scenarios")) {
