@@ -17,6 +17,7 @@ build_packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libboost-dev             # Boost.Geometry: test oracle for clipping
   python3 python3-vtk9     # reading our VTU/PVD back in tests
+  clang libclang-rt-14-dev # libFuzzer for the scenario reader
 )
 
 missing=()
