@@ -1,6 +1,7 @@
 #include "cli/app.hpp"
 
 #include <CLI/CLI.hpp>
+#include <spdlog/pattern_formatter.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
@@ -10,9 +11,26 @@
 namespace hydrodda::cli {
 
 namespace {
+// "%*": nothing for informational lines, "warning: " or "error: " for the others, so that
+// ordinary output reads as plain text and problems stand out.
+class SeverityPrefix : public spdlog::custom_flag_formatter {
+ public:
+  void format(const spdlog::details::log_msg& msg, const std::tm&, spdlog::memory_buf_t& dest) override {
+    std::string_view prefix;
+    if (msg.level == spdlog::level::warn) prefix = "warning: ";
+    else if (msg.level >= spdlog::level::err) prefix = "error: ";
+    dest.append(prefix.data(), prefix.data() + prefix.size());
+  }
+  std::unique_ptr<custom_flag_formatter> clone() const override {
+    return std::make_unique<SeverityPrefix>();
+  }
+};
+
 void configure_logging(Verbosity verbosity) {
   auto logger = spdlog::stderr_color_mt("hydrodda");
-  logger->set_pattern("%^%l%$: %v");
+  auto formatter = std::make_unique<spdlog::pattern_formatter>();
+  formatter->add_flag<SeverityPrefix>('*').set_pattern("%^%*%$%v");
+  logger->set_formatter(std::move(formatter));
   logger->set_level(verbosity == Verbosity::Quiet     ? spdlog::level::warn
                     : verbosity == Verbosity::Verbose ? spdlog::level::debug
                                                       : spdlog::level::info);

@@ -14,8 +14,8 @@ std::optional<scenario::Scenario> load_scenario(const std::filesystem::path& fil
   try {
     scenario::Scenario s = scenario::read_scenario(file);
     for (const scenario::DefaultUsed& d : s.defaults_used)
-      spdlog::debug("default: {} = {}", d.key, d.value);
-    if (!s.defaults_used.empty())
+      spdlog::debug("default used: {} = {}", d.key, d.value);
+    if (!s.defaults_used.empty() && !spdlog::should_log(spdlog::level::debug))
       spdlog::info("{} default value(s) used (-v lists them)", s.defaults_used.size());
     return s;
   } catch (const scenario::ScenarioError& e) {
