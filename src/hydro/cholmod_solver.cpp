@@ -1,0 +1,46 @@
+// The one file that includes CHOLMOD (through Eigen's CholmodSupport).
+#include <Eigen/CholmodSupport>
+
+#include "hydro/linear_solver.hpp"
+
+namespace hydrodda::hydro {
+namespace {
+
+class CholmodSolver final : public LinearSolver {
+ public:
+  CholmodSolver() {
+    // CHOLMOD's own ordering choice (AMD, with METIS tried when AMD's fill is poor); the
+    // ordering is paid once per mesh, the numeric factorisation every coupling iteration.
+    factor_.cholmod().nmethods = 0;
+  }
+
+  void analyse(const SparseMatrix& lower) override {
+    factor_.analyzePattern(lower);
+    analysed_ = true;
+  }
+
+  void factorize(const SparseMatrix& lower) override {
+    if (!analysed_) throw std::logic_error("CholmodSolver::factorize before analyse");
+    factor_.factorize(lower);
+    if (factor_.info() != Eigen::Success)
+      throw SingularSystem("CHOLMOD: the matrix is singular or not positive definite");
+  }
+
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const override {
+    Eigen::VectorXd x = factor_.solve(b);
+    if (factor_.info() != Eigen::Success) throw SingularSystem("CHOLMOD: the solve failed");
+    return x;
+  }
+
+  std::string name() const override { return "CHOLMOD supernodal LLT"; }
+
+ private:
+  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> factor_;
+  bool analysed_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<LinearSolver> make_cholmod_solver() { return std::make_unique<CholmodSolver>(); }
+
+}  // namespace hydrodda::hydro
