@@ -137,6 +137,7 @@ void DarcySolver::setup_boundary_conditions() {
         "flow: nothing fixes the head (give a head or pressure condition on at least one "
         "named boundary); the problem has no unique solution");
 
+  check_every_part_is_fixed();
   unknown_of_node_.assign(node_count, -1);
   free_nodes_.clear();
   for (int v = 0; v < node_count; ++v)
@@ -144,6 +145,33 @@ void DarcySolver::setup_boundary_conditions() {
       unknown_of_node_[v] = static_cast<int>(free_nodes_.size());
       free_nodes_.push_back(v);
     }
+}
+
+// A part of the mesh that touches no fixed node has no unique head (the matrix is singular
+// there, though a factorisation may only see a tiny pivot): find the parts with a
+// union–find over the triangles' nodes and refuse any part without a fixed node.
+void DarcySolver::check_every_part_is_fixed() const {
+  std::vector<int> parent(mesh_.nodes.size());
+  for (std::size_t v = 0; v < parent.size(); ++v) parent[v] = static_cast<int>(v);
+  auto find = [&](int v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const auto& tri : mesh_.triangles)
+    for (int k = 1; k < 3; ++k) {
+      const int a = find(tri[0]), b = find(tri[k]);
+      if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    }
+  std::vector<char> fixed_part(mesh_.nodes.size(), 0), used(mesh_.nodes.size(), 0);
+  for (int v = 0; v < mesh_.node_count(); ++v)
+    if (!std::isnan(fixed_head_[v])) fixed_part[find(v)] = 1;
+  for (const auto& tri : mesh_.triangles)
+    for (int v : tri) used[v] = 1;
+  for (int v = 0; v < mesh_.node_count(); ++v)
+    if (used[v] && !fixed_part[find(v)])
+      throw SingularSystem("flow: the part of the mesh around node " + std::to_string(v) + " (" +
+                           std::to_string(mesh_.nodes[v].x) + ", " + std::to_string(mesh_.nodes[v].y) +
+                           ") touches no fixed-head boundary, so its head is undetermined");
 }
 
 void DarcySolver::setup_pattern() {

@@ -28,7 +28,8 @@ struct DarcyProblem {
 class DarcySolver {
  public:
   // Keeps a reference to `mesh`, which must outlive the solver. Throws std::runtime_error
-  // when a condition names an unknown or empty boundary, or when nothing fixes the head.
+  // when a condition names an unknown or empty boundary, or when nothing fixes the head
+  // (SingularSystem when some connected part of the mesh has no fixed head).
   DarcySolver(const mesh::TriangleMesh& mesh, DarcyProblem problem,
               std::unique_ptr<LinearSolver> solver = make_cholmod_solver());
 
@@ -46,6 +47,7 @@ class DarcySolver {
 
  private:
   void setup_boundary_conditions();
+  void check_every_part_is_fixed() const;
   void setup_pattern();
   void assemble_system(std::span<const Conductivity> conductivity);
   Eigen::VectorXd compute_residual(const Eigen::VectorXd& x) const;
