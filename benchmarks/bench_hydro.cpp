@@ -118,7 +118,7 @@ void BM_Solve(benchmark::State& state, const mesh::TriangleMesh& m) {
 
 void register_own_meshes() {
   // Far-field sizes (µm) giving about 1e4, 1e5 and 1e6 triangles.
-  for (long size_um : {45000L, 13000L, 4000L}) {
+  for (long size_um : {45000L, 8200L, 1650L}) {
     benchmark::RegisterBenchmark("BM_GenerateMesh", BM_GenerateMesh)
         ->Arg(size_um)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(size_um < 10000 ? 1 : 3);
     const std::string size = std::to_string(size_um);

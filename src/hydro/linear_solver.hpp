@@ -33,7 +33,11 @@ class LinearSolver {
   virtual std::string name() const = 0;
 };
 
+// Fill-reducing ordering of the symbolic analysis: METIS (nested dissection; slower to
+// analyse, faster to refactor) or CHOLMOD's automatic choice (AMD first).
+enum class FillOrdering { metis, automatic };
+
 // CHOLMOD supernodal Cholesky (LLᵀ) through Eigen's CholmodSupport.
-std::unique_ptr<LinearSolver> make_cholmod_solver();
+std::unique_ptr<LinearSolver> make_cholmod_solver(FillOrdering ordering = FillOrdering::metis);
 
 }  // namespace hydrodda::hydro
