@@ -1,0 +1,159 @@
+// Flow model speed: mesh generation, set-up (pattern + symbolic analysis), and the per-
+// iteration solve (re-assembly into the fixed pattern, numeric refactorisation, solve with
+// iterative refinement, fluxes and boundary flows) on the "three fractures" problem: the unit
+// square, h = 1 left, 0 right, three full-length strips of width 0.004 at y = 0.25, 0.5,
+// 0.75 with k = 1e-9 m² in a matrix of 1e-15 m² (contrast 1e6).
+//
+//   build/bin/bench_hydro                         # our own meshes, 1e4 to 1e6 triangles
+//   HYDRODDA_PEER_MESH=case/mesh.msh build/bin/bench_hydro --benchmark_filter=PeerMesh
+//                                                 # the peer benchmark's own mesh file
+// Run with OMP_THREAD_LIMIT=1 OPENBLAS_NUM_THREADS=1 to compare with one-thread peers.
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "hydro/darcy_solver.hpp"
+#include "mesh/mesh_request.hpp"
+
+namespace {
+
+using namespace hydrodda;
+
+constexpr double kMatrixK = 1e-15, kStripK = 1e-9, kStripWidth = 0.004;
+
+// The far-field size in micrometres is the benchmark argument; the strips are meshed at
+// size/8, growing back over 3.5 × size (the peer's grading of 0.25).
+mesh::MeshRequest make_three_fractures(double size) {
+  mesh::MeshRequest r;
+  r.domain = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  r.size = size;
+  r.fracture_size = size / 8;
+  r.refine_distance = kStripWidth / 2 + (size - size / 8) / 0.25;
+  for (double y : {0.25, 0.5, 0.75}) {
+    r.refinement_lines.push_back({{0, y}, {1, y}});
+    r.regions.push_back({"strip", {{0, y - kStripWidth / 2}, {1, y - kStripWidth / 2},
+                                   {1, y + kStripWidth / 2}, {0, y + kStripWidth / 2}}});
+  }
+  return r;
+}
+
+const mesh::TriangleMesh& get_mesh(long size_um) {
+  static std::map<long, mesh::TriangleMesh> cache;
+  auto it = cache.find(size_um);
+  if (it == cache.end()) it = cache.emplace(size_um, mesh::generate_mesh(make_three_fractures(size_um * 1e-6))).first;
+  return it->second;
+}
+
+hydro::DarcyProblem make_problem() {
+  hydro::DarcyProblem p;
+  p.boundaries = {{"left", hydro::BoundaryKind::head, 1.0}, {"right", hydro::BoundaryKind::head, 0.0}};
+  return p;
+}
+
+std::vector<double> make_permeability(const mesh::TriangleMesh& m, double strip_k) {
+  std::vector<double> k(m.triangles.size(), kMatrixK);
+  for (int t = 0; t < m.triangle_count(); ++t) {
+    const std::string& name = m.region_names[m.region[t]];
+    if (name == "strip" || name == "f1" || name == "f2" || name == "f3") k[t] = strip_k;
+  }
+  return k;
+}
+
+void set_mesh_counters(benchmark::State& state, const mesh::TriangleMesh& m) {
+  state.counters["triangles"] = m.triangle_count();
+  state.counters["nodes"] = m.node_count();
+}
+
+void BM_GenerateMesh(benchmark::State& state) {
+  const auto request = make_three_fractures(state.range(0) * 1e-6);
+  mesh::TriangleMesh m;
+  for (auto _ : state) m = mesh::generate_mesh(request);
+  set_mesh_counters(state, m);
+}
+
+void BM_SetupSolver(benchmark::State& state, const mesh::TriangleMesh& m) {
+  for (auto _ : state) {
+    hydro::DarcySolver solver(m, make_problem());
+    benchmark::DoNotOptimize(solver.unknown_count());
+  }
+  set_mesh_counters(state, m);
+}
+
+// One coupling iteration's flow solve: new permeabilities (alternating k_f and 2 k_f so
+// that every pass really refactors), everything after the set-up.
+void BM_Solve(benchmark::State& state, const mesh::TriangleMesh& m) {
+  hydro::DarcySolver solver(m, make_problem());
+  const std::vector<double> k1 = make_permeability(m, kStripK), k2 = make_permeability(m, 2 * kStripK);
+  hydro::SolveTimings sum;
+  double balance = 0.0, refinements = 0.0, flow = 0.0;
+  long passes = 0;
+  for (auto _ : state) {
+    const auto s = solver.solve(passes % 2 == 0 ? k1 : k2);
+    sum.assemble += s.timings.assemble;
+    sum.factorize += s.timings.factorize;
+    sum.solve += s.timings.solve;
+    sum.postprocess += s.timings.postprocess;
+    balance = std::max(balance, s.balance_error);
+    refinements += s.refinement_steps;
+    if (passes == 0) flow = -s.boundary_flow("left");
+    ++passes;
+  }
+  set_mesh_counters(state, m);
+  state.counters["setup_s"] = solver.setup_seconds();
+  state.counters["assemble_s"] = sum.assemble / passes;
+  state.counters["factorize_s"] = sum.factorize / passes;
+  state.counters["solve_s"] = sum.solve / passes;
+  state.counters["post_s"] = sum.postprocess / passes;
+  state.counters["refine_steps"] = refinements / passes;
+  state.counters["balance"] = balance;
+  state.counters["flow_rel_err"] = flow / ((3 * kStripWidth * kStripK + (1 - 3 * kStripWidth) * kMatrixK) *
+                                           hydro::Fluid{}.conductivity_per_permeability()) - 1.0;
+}
+
+void register_own_meshes() {
+  // Far-field sizes (µm) giving about 1e4, 1e5 and 1e6 triangles.
+  for (long size_um : {45000L, 8200L, 1650L}) {
+    benchmark::RegisterBenchmark("BM_GenerateMesh", BM_GenerateMesh)
+        ->Arg(size_um)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(size_um < 10000 ? 1 : 3);
+    const std::string size = std::to_string(size_um);
+    benchmark::RegisterBenchmark(std::string("BM_SetupSolver/").append(size).c_str(),
+                                 [size_um](benchmark::State& s) { BM_SetupSolver(s, get_mesh(size_um)); })
+        ->Unit(benchmark::kSecond)->UseRealTime()->Iterations(size_um < 10000 ? 1 : 5);
+    benchmark::RegisterBenchmark(std::string("BM_Solve/").append(size).c_str(),
+                                 [size_um](benchmark::State& s) { BM_Solve(s, get_mesh(size_um)); })
+        ->Unit(benchmark::kSecond)->UseRealTime()->Iterations(size_um < 10000 ? 4 : 10);
+  }
+}
+
+void register_peer_mesh() {
+  const char* path = std::getenv("HYDRODDA_PEER_MESH");
+  if (!path) return;
+  static mesh::TriangleMesh peer;
+  static double read_seconds = 0.0;
+  const auto start = std::chrono::steady_clock::now();
+  peer = mesh::read_msh(path);
+  read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  benchmark::RegisterBenchmark("BM_SetupSolver/PeerMesh", [](benchmark::State& s) {
+    BM_SetupSolver(s, peer);
+    s.counters["read_s"] = read_seconds;
+  })->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
+  benchmark::RegisterBenchmark("BM_Solve/PeerMesh", [](benchmark::State& s) { BM_Solve(s, peer); })
+      ->Unit(benchmark::kSecond)->UseRealTime()->Iterations(6);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  register_peer_mesh();
+  register_own_meshes();
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

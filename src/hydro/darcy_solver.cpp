@@ -1,0 +1,405 @@
+#include "hydro/darcy_solver.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace hydrodda::hydro {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The six (row, column) local pairs with row >= column whose values enter the lower triangle.
+constexpr int kMaxRefinementSteps = 4;
+// The three node pairs of a triangle whose couplings K_e(i, j), i ≠ j, are kept.
+constexpr std::array<std::array<int, 2>, 3> kEdgePairs{{{0, 1}, {0, 2}, {1, 2}}};
+constexpr std::array<std::array<int, 2>, 6> kLocalPairs{{{0, 0}, {1, 1}, {2, 2}, {1, 0}, {2, 0}, {2, 1}}};
+
+// Conductivity tensors from permeabilities, checked: K = k ρ_w g / μ.
+std::vector<Conductivity> to_conductivity(std::span<const PermeabilityTensor> k, double factor) {
+  std::vector<Conductivity> out(k.size());
+  for (std::size_t t = 0; t < k.size(); ++t) {
+    const PermeabilityTensor& p = k[t];
+    if (!std::isfinite(p.xx) || !std::isfinite(p.xy) || !std::isfinite(p.yy))
+      throw std::runtime_error("permeability of triangle " + std::to_string(t) + " is not finite");
+    // Positive definite: k_xx > 0 and det > 0.
+    if (!(p.xx > 0.0) || !(p.xx * p.yy - p.xy * p.xy > 0.0))
+      throw std::runtime_error("permeability of triangle " + std::to_string(t) +
+                               " is not positive (definite)");
+    out[t] = {p.xx * factor, p.xy * factor, p.yy * factor};
+  }
+  return out;
+}
+
+}  // namespace
+
+double FlowSolution::boundary_flow(const std::string& name) const {
+  for (const BoundaryFlow& b : boundary_flows)
+    if (b.name == name) return b.flow;
+  throw std::runtime_error("flow solution has no boundary named '" + name + "'");
+}
+
+double FlowSolution::total_inflow() const {
+  double inflow = 0.0;
+  for (const BoundaryFlow& b : boundary_flows) inflow += std::max(-b.flow, 0.0);
+  return inflow;
+}
+
+DarcySolver::DarcySolver(const mesh::TriangleMesh& mesh, DarcyProblem problem,
+                         std::unique_ptr<LinearSolver> solver)
+    : mesh_(mesh), problem_(std::move(problem)), solver_(std::move(solver)) {
+  const auto start = Clock::now();
+  if (!solver_) throw std::invalid_argument("DarcySolver needs a linear solver");
+  solver_name_ = solver_->name();
+  if (!(problem_.fluid.density > 0.0) || !(problem_.fluid.viscosity > 0.0) ||
+      !(problem_.fluid.gravity > 0.0))
+    throw std::runtime_error("fluid density, viscosity and gravity must be positive");
+  mesh::validate(mesh_);
+  setup_boundary_conditions();
+  setup_pattern();
+  setup_seconds_ = seconds_since(start);
+}
+
+void DarcySolver::setup_boundary_conditions() {
+  const int node_count = mesh_.node_count();
+  const double rho_g = problem_.fluid.unit_weight();
+  std::vector<const BoundaryCondition*> condition_of(mesh_.boundary_names.size(), nullptr);
+  for (const BoundaryCondition& bc : problem_.boundaries) {
+    const int b = mesh::find_boundary(mesh_, bc.boundary);
+    if (b < 0) throw std::runtime_error("flow boundary condition on '" + bc.boundary +
+                                        "', which is not a boundary of the mesh");
+    if (!std::isfinite(bc.value))
+      throw std::runtime_error("flow boundary condition on '" + bc.boundary + "' is not finite");
+    if (condition_of[b]) throw std::runtime_error("two flow boundary conditions on '" + bc.boundary + "'");
+    condition_of[b] = &bc;
+    const bool has_edges = std::any_of(mesh_.boundary_edges.begin(), mesh_.boundary_edges.end(),
+                                       [&](const mesh::BoundaryEdge& e) { return e.boundary == b; });
+    if (!has_edges) throw std::runtime_error("flow boundary '" + bc.boundary + "' has no mesh edges");
+  }
+  // h_ref: the smallest fixed-head value (0 when no head is fixed directly).
+  reference_head_ = 0.0;
+  bool any_head = false;
+  for (const BoundaryCondition& bc : problem_.boundaries)
+    if (bc.kind == BoundaryKind::head) {
+      reference_head_ = any_head ? std::min(reference_head_, bc.value) : bc.value;
+      any_head = true;
+    }
+
+  fixed_head_.assign(node_count, std::numeric_limits<double>::quiet_NaN());
+  neumann_outflow_.assign(node_count, 0.0);
+  prescribed_flow_.assign(mesh_.boundary_names.size(), 0.0);
+  std::vector<FixedShare> shares;
+  for (const mesh::BoundaryEdge& e : mesh_.boundary_edges) {
+    if (e.boundary < 0 || !condition_of[e.boundary]) continue;  // no-flow
+    const BoundaryCondition& bc = *condition_of[e.boundary];
+    const double length = geometry::distance(mesh_.nodes[e.nodes[0]], mesh_.nodes[e.nodes[1]]);
+    if (bc.kind == BoundaryKind::flux) {
+      // ∫_edge φ_i q_N ds = q_N L / 2 for each end node.
+      for (int v : e.nodes) neumann_outflow_[v] += 0.5 * bc.value * length;
+      prescribed_flow_[e.boundary] += bc.value * length;
+      continue;
+    }
+    for (int v : e.nodes) {
+      const double h = bc.kind == BoundaryKind::head ? bc.value
+                       : problem_.pressure == PressureConvention::overpressure
+                           ? reference_head_ + bc.value / rho_g   // p = ρg (h − h_ref)
+                           : mesh_.nodes[v].y + bc.value / rho_g; // p = ρg (h − z)
+      fixed_head_[v] = h;  // where two fixed boundaries meet, the later edge's value stands
+      shares.push_back({v, e.boundary, 0.5 * length});
+    }
+  }
+  // Each fixed node's reaction is shared among its fixed boundaries by edge length.
+  std::sort(shares.begin(), shares.end(), [](const FixedShare& a, const FixedShare& b) {
+    return a.node != b.node ? a.node < b.node : a.boundary < b.boundary;
+  });
+  fixed_shares_.clear();
+  for (std::size_t i = 0; i < shares.size();) {
+    std::size_t j = i;
+    double total = 0.0;
+    while (j < shares.size() && shares[j].node == shares[i].node) total += shares[j++].weight;
+    for (std::size_t k = i; k < j; ++k) {
+      if (!fixed_shares_.empty() && fixed_shares_.back().node == shares[k].node &&
+          fixed_shares_.back().boundary == shares[k].boundary)
+        fixed_shares_.back().weight += shares[k].weight / total;
+      else
+        fixed_shares_.push_back({shares[k].node, shares[k].boundary, shares[k].weight / total});
+    }
+    i = j;
+  }
+  if (fixed_shares_.empty())
+    throw std::runtime_error(
+        "flow: nothing fixes the head (give a head or pressure condition on at least one "
+        "named boundary); the problem has no unique solution");
+
+  check_every_part_is_fixed();
+  unknown_of_node_.assign(node_count, -1);
+  free_nodes_.clear();
+  for (int v = 0; v < node_count; ++v)
+    if (std::isnan(fixed_head_[v])) {
+      unknown_of_node_[v] = static_cast<int>(free_nodes_.size());
+      free_nodes_.push_back(v);
+    }
+}
+
+// A part of the mesh that touches no fixed node has no unique head (the matrix is singular
+// there, though a factorisation may only see a tiny pivot): find the parts with a
+// union–find over the triangles' nodes and refuse any part without a fixed node.
+void DarcySolver::check_every_part_is_fixed() const {
+  std::vector<int> parent(mesh_.nodes.size());
+  for (std::size_t v = 0; v < parent.size(); ++v) parent[v] = static_cast<int>(v);
+  auto find = [&](int v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const auto& tri : mesh_.triangles)
+    for (int k = 1; k < 3; ++k) {
+      const int a = find(tri[0]), b = find(tri[k]);
+      if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    }
+  std::vector<char> fixed_part(mesh_.nodes.size(), 0), used(mesh_.nodes.size(), 0);
+  for (int v = 0; v < mesh_.node_count(); ++v)
+    if (!std::isnan(fixed_head_[v])) fixed_part[find(v)] = 1;
+  for (const auto& tri : mesh_.triangles)
+    for (int v : tri) used[v] = 1;
+  for (int v = 0; v < mesh_.node_count(); ++v)
+    if (used[v] && !fixed_part[find(v)])
+      throw SingularSystem("flow: the part of the mesh around node " + std::to_string(v) + " (" +
+                           std::to_string(mesh_.nodes[v].x) + ", " + std::to_string(mesh_.nodes[v].y) +
+                           ") touches no fixed-head boundary, so its head is undetermined");
+}
+
+void DarcySolver::setup_pattern() {
+  const int n = unknown_count();
+  const int triangles = mesh_.triangle_count();
+  // Lower-triangle (column, row) pairs of every element, sorted and made unique: the CSC
+  // pattern. Hand-written: the pattern is built once, values are refilled in place after.
+  std::vector<long long> keys;
+  keys.reserve(6 * static_cast<std::size_t>(triangles));
+  fixed_elements_.clear();
+  for (int t = 0; t < triangles; ++t) {
+    const auto& tri = mesh_.triangles[t];
+    bool has_fixed = false;
+    for (const auto& [i, j] : kLocalPairs) {
+      const int a = unknown_of_node_[tri[i]], b = unknown_of_node_[tri[j]];
+      if (a < 0 || b < 0) {
+        has_fixed = true;
+        continue;
+      }
+      keys.push_back(static_cast<long long>(std::min(a, b)) * n + std::max(a, b));
+    }
+    if (has_fixed) fixed_elements_.push_back(t);
+  }
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+
+  matrix_.resize(n, n);
+  matrix_.resizeNonZeros(static_cast<Eigen::Index>(keys.size()));
+  int* outer = matrix_.outerIndexPtr();
+  int* inner = matrix_.innerIndexPtr();
+  std::fill(outer, outer + n + 1, 0);
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    ++outer[keys[k] / n + 1];
+    inner[k] = static_cast<int>(keys[k] % n);
+  }
+  for (int c = 0; c < n; ++c) outer[c + 1] += outer[c];
+  std::fill(matrix_.valuePtr(), matrix_.valuePtr() + keys.size(), 0.0);
+
+  entry_.assign(6 * static_cast<std::size_t>(triangles), -1);
+  for (int t = 0; t < triangles; ++t) {
+    const auto& tri = mesh_.triangles[t];
+    for (int p = 0; p < 6; ++p) {
+      const int a = unknown_of_node_[tri[kLocalPairs[p][0]]], b = unknown_of_node_[tri[kLocalPairs[p][1]]];
+      if (a < 0 || b < 0) continue;
+      const int col = std::min(a, b), row = std::max(a, b);
+      const int* first = inner + outer[col];
+      const int* last = inner + outer[col + 1];
+      entry_[6 * static_cast<std::size_t>(t) + p] = static_cast<int>(std::lower_bound(first, last, row) - inner);
+    }
+  }
+  rhs_.resize(n);
+  if (n > 0) solver_->analyse(matrix_);
+}
+
+void DarcySolver::assemble_system(std::span<const Conductivity> conductivity) {
+  std::fill(matrix_.valuePtr(), matrix_.valuePtr() + matrix_.nonZeros(), 0.0);
+  // Right-hand side: f_i = −∫ φ_i q_N ds (a prescribed outflow removes water at i) ...
+  for (int u = 0; u < unknown_count(); ++u) rhs_[u] = -neumann_outflow_[free_nodes_[u]];
+  double* values = matrix_.valuePtr();
+  element_coupling_.resize(3 * mesh_.triangles.size());
+  for (int t = 0; t < mesh_.triangle_count(); ++t) {
+    const auto& tri = mesh_.triangles[t];
+    const auto ke = compute_element_matrix(mesh_.nodes[tri[0]], mesh_.nodes[tri[1]],
+                                           mesh_.nodes[tri[2]], conductivity[t]);
+    double* coupling = &element_coupling_[3 * static_cast<std::size_t>(t)];
+    for (int p = 0; p < 3; ++p) coupling[p] = ke[kEdgePairs[p][0]][kEdgePairs[p][1]];
+    const int* entry = &entry_[6 * static_cast<std::size_t>(t)];
+    for (int p = 0; p < 6; ++p)
+      if (entry[p] >= 0) values[entry[p]] += ke[kLocalPairs[p][0]][kLocalPairs[p][1]];
+  }
+  // ... minus the fixed heads carried over to the unknowns: f_i −= K_ij h_j, j fixed.
+  for (int t : fixed_elements_) {
+    const auto& tri = mesh_.triangles[t];
+    const auto ke = compute_element_matrix(mesh_.nodes[tri[0]], mesh_.nodes[tri[1]],
+                                           mesh_.nodes[tri[2]], conductivity[t]);
+    for (int i = 0; i < 3; ++i) {
+      const int u = unknown_of_node_[tri[i]];
+      if (u < 0) continue;
+      for (int j = 0; j < 3; ++j)
+        if (unknown_of_node_[tri[j]] < 0) rhs_[u] -= ke[i][j] * fixed_head_[tri[j]];
+    }
+  }
+}
+
+// (A h)_i for every node, from the element matrices kept by assemble_system, in the
+// pairwise form (A h)_i = Σ_e Σ_{j≠i} K_e(i, j) (h_j − h_i) (rows of K_e sum to zero). Each
+// pair enters node i and node j with opposite signs, bit for bit, so Σ_i (A h)_i = 0 to the
+// long-double accumulation: the boundary flows then balance to round-off whatever the
+// contrast, and the residual that drives the iterative refinement is the same one.
+std::vector<long double> DarcySolver::compute_a_times_h(const std::vector<double>& h) const {
+  std::vector<long double> ah(h.size(), 0.0L);
+  for (int t = 0; t < mesh_.triangle_count(); ++t) {
+    const auto& tri = mesh_.triangles[t];
+    const double* k = &element_coupling_[3 * static_cast<std::size_t>(t)];
+    for (int p = 0; p < 3; ++p) {
+      const int i = tri[kEdgePairs[p][0]], j = tri[kEdgePairs[p][1]];
+      const long double flow = static_cast<long double>(k[p]) * (h[j] - h[i]);
+      ah[i] += flow;
+      ah[j] -= flow;
+    }
+  }
+  return ah;
+}
+
+std::vector<double> DarcySolver::expand_heads(const Eigen::VectorXd& x) const {
+  std::vector<double> h(fixed_head_);
+  for (int u = 0; u < unknown_count(); ++u) h[free_nodes_[u]] = x[u];
+  return h;
+}
+
+// r = f − A x over the unknowns, f_i = −∫ φ_i q_N ds.
+Eigen::VectorXd DarcySolver::compute_residual(const Eigen::VectorXd& x) const {
+  const std::vector<long double> ah = compute_a_times_h(expand_heads(x));
+  Eigen::VectorXd r(unknown_count());
+  for (int u = 0; u < unknown_count(); ++u) {
+    const int v = free_nodes_[u];
+    r[u] = static_cast<double>(-static_cast<long double>(neumann_outflow_[v]) - ah[v]);
+  }
+  return r;
+}
+
+FlowSolution DarcySolver::solve(std::span<const double> permeability) {
+  if (permeability.size() != mesh_.triangles.size())
+    throw std::runtime_error("flow: " + std::to_string(permeability.size()) +
+                             " permeabilities for " + std::to_string(mesh_.triangles.size()) +
+                             " triangles");
+  const double factor = problem_.fluid.conductivity_per_permeability();
+  std::vector<Conductivity> k(permeability.size());
+  for (std::size_t t = 0; t < k.size(); ++t) {
+    const double p = permeability[t];
+    if (!std::isfinite(p)) throw std::runtime_error("permeability of triangle " + std::to_string(t) + " is not finite");
+    if (!(p > 0.0)) throw std::runtime_error("permeability of triangle " + std::to_string(t) + " is not positive");
+    k[t] = {p * factor, 0.0, p * factor};
+  }
+  return solve_with(k);
+}
+
+FlowSolution DarcySolver::solve(std::span<const PermeabilityTensor> permeability) {
+  if (permeability.size() != mesh_.triangles.size())
+    throw std::runtime_error("flow: " + std::to_string(permeability.size()) +
+                             " permeabilities for " + std::to_string(mesh_.triangles.size()) +
+                             " triangles");
+  return solve_with(to_conductivity(permeability, problem_.fluid.conductivity_per_permeability()));
+}
+
+FlowSolution DarcySolver::solve_with(std::span<const Conductivity> conductivity) {
+  FlowSolution out;
+  auto clock = Clock::now();
+  assemble_system(conductivity);
+  out.timings.assemble = seconds_since(clock);
+
+  Eigen::VectorXd x(unknown_count());
+  if (unknown_count() > 0) {
+    clock = Clock::now();
+    try {
+      solver_->factorize(matrix_);
+    } catch (const SingularSystem& e) {
+      throw SingularSystem(std::string(e.what()) +
+                           " (flow: is every part of the mesh connected to a fixed-head boundary?)");
+    }
+    out.timings.factorize = seconds_since(clock);
+    clock = Clock::now();
+    x = solver_->solve(rhs_);
+    double last_residual = INFINITY;
+    // Iterative refinement with the residual in extended precision, x += A⁻¹(f − A x): the
+    // contrast of fracture-like strips (1e5–1e6) makes the plain solve lose as many digits,
+    // and the mass balance needs them back. One back-substitution and one product a step.
+    for (int step = 0; step < kMaxRefinementSteps; ++step) {
+      const Eigen::VectorXd r = compute_residual(x);
+      const double r_norm = r.lpNorm<Eigen::Infinity>();
+      if (r_norm == 0.0 || (step > 0 && r_norm >= 0.5 * last_residual)) break;
+      last_residual = r_norm;
+      x += solver_->solve(r);
+      ++out.refinement_steps;
+    }
+    out.timings.solve = seconds_since(clock);
+    if (!x.allFinite()) throw SingularSystem("flow: the solution is not finite (singular system?)");
+  }
+
+  clock = Clock::now();
+  const int node_count = mesh_.node_count();
+  out.reference_head = reference_head_;
+  out.head.resize(node_count);
+  for (int v = 0; v < node_count; ++v)
+    out.head[v] = unknown_of_node_[v] < 0 ? fixed_head_[v] : x[unknown_of_node_[v]];
+  const double rho_g = problem_.fluid.unit_weight();
+  out.pressure.resize(node_count);
+  for (int v = 0; v < node_count; ++v)
+    out.pressure[v] = problem_.pressure == PressureConvention::overpressure
+                          ? rho_g * (out.head[v] - reference_head_)   // p = ρg (h − h_ref)
+                          : rho_g * (out.head[v] - mesh_.nodes[v].y); // p = ρg (h − z)
+  out.flux.resize(mesh_.triangles.size());
+  for (int t = 0; t < mesh_.triangle_count(); ++t) {
+    const auto& tri = mesh_.triangles[t];
+    const auto g = compute_shape_gradients(mesh_.nodes[tri[0]], mesh_.nodes[tri[1]], mesh_.nodes[tri[2]]);
+    // ∇h = Σ h_i ∇φ_i;  q = −K ∇h
+    const geometry::Point grad = out.head[tri[0]] * g[0] + out.head[tri[1]] * g[1] + out.head[tri[2]] * g[2];
+    const Conductivity& k = conductivity[t];
+    out.flux[t] = {-(k.xx * grad.x + k.xy * grad.y), -(k.xy * grad.x + k.yy * grad.y)};
+  }
+  compute_boundary_flows(out);
+  out.timings.postprocess = seconds_since(clock);
+  return out;
+}
+
+// Boundary flows from the residual of the assembled (unreduced) system. With the weak form
+//   Σ_j A_ij h_j = −∫_Γ φ_i q·n ds,
+// the total outflow at node i is O_i = −(A h)_i; at a fixed node, the part not prescribed
+// by a flux edge, O_i − ∫ φ_i q_N ds, is its reaction, owed to its fixed boundaries (shared
+// by edge length where two meet). Since Σ_i (A h)_i = 0 exactly (compute_a_times_h), all
+// boundary flows add up to minus the sum of the free rows' residual: the balance error is
+// the solver's, whatever the mesh.
+void DarcySolver::compute_boundary_flows(FlowSolution& out) const {
+  const std::vector<long double> a_times_h = compute_a_times_h(out.head);
+  std::vector<double> flow = prescribed_flow_;
+  for (const FixedShare& s : fixed_shares_)
+    flow[s.boundary] += static_cast<double>(
+        s.weight * (-a_times_h[s.node] - static_cast<long double>(neumann_outflow_[s.node])));
+
+  out.boundary_flows.clear();
+  double sum = 0.0, inflow = 0.0, outflow = 0.0;
+  for (std::size_t b = 0; b < flow.size(); ++b) {
+    out.boundary_flows.push_back({mesh_.boundary_names[b], flow[b]});
+    sum += flow[b];
+    (flow[b] < 0 ? inflow : outflow) += std::abs(flow[b]);
+  }
+  const double scale = std::max(inflow, outflow);
+  out.balance_error = scale > 0.0 ? std::abs(sum) / scale : 0.0;
+}
+
+}  // namespace hydrodda::hydro

@@ -1,0 +1,43 @@
+#pragma once
+// The sparse symmetric positive definite solver behind the flow model: the pattern is
+// analysed once (ordering, symbolic factorisation), then each new set of values is only
+// factorised numerically. Another backend (e.g. PETSc) implements the same three calls.
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+namespace hydrodda::hydro {
+
+// Column-major; only the lower triangle (row >= column) is stored and read.
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+// A factorisation failed: the matrix is singular or not positive definite.
+class SingularSystem : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class LinearSolver {
+ public:
+  virtual ~LinearSolver() = default;
+  // Symbolic analysis of the pattern of `lower`; its values are not read.
+  virtual void analyse(const SparseMatrix& lower) = 0;
+  // Numeric factorisation of a matrix with the analysed pattern; throws SingularSystem.
+  virtual void factorize(const SparseMatrix& lower) = 0;
+  // x = A⁻¹ b with the last factorisation.
+  virtual Eigen::VectorXd solve(const Eigen::VectorXd& b) const = 0;
+  virtual std::string name() const = 0;
+};
+
+// Fill-reducing ordering of the symbolic analysis: METIS (nested dissection; slower to
+// analyse, faster to refactor) or CHOLMOD's automatic choice (AMD first).
+enum class FillOrdering { metis, automatic };
+
+// CHOLMOD supernodal Cholesky (LLᵀ) through Eigen's CholmodSupport.
+std::unique_ptr<LinearSolver> make_cholmod_solver(FillOrdering ordering = FillOrdering::metis);
+
+}  // namespace hydrodda::hydro

@@ -1,0 +1,369 @@
+// The one file of the project that includes Gmsh: generating a mesh from a MeshRequest and
+// reading a user's .msh file, both into a TriangleMesh.
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+
+#include "mesh/mesh_request.hpp"
+
+namespace hydrodda::mesh {
+namespace {
+
+// Gmsh is a process-wide singleton: one session at a time, initialised on entry and
+// finalised on exit (also when an exception leaves), with its terminal output off unless
+// asked. This file is the only user of Gmsh in the program, so no one else holds it.
+class GmshSession {
+ public:
+  explicit GmshSession(bool verbose) : lock_(mutex()) {
+    gmsh::initialize(0, nullptr, false);
+    gmsh::option::setNumber("General.Terminal", verbose ? 1 : 0);
+    gmsh::option::setNumber("General.Verbosity", verbose ? 5 : 1);
+    gmsh::logger::start();
+    gmsh::model::add("hydrodda");
+  }
+  ~GmshSession() {
+    try {
+      gmsh::logger::stop();
+      gmsh::model::mesh::removeSizeCallback();
+      gmsh::model::remove();
+      gmsh::finalize();
+    } catch (...) {  // a destructor must not throw; Gmsh's state is discarded either way
+    }
+  }
+  GmshSession(const GmshSession&) = delete;
+  GmshSession& operator=(const GmshSession&) = delete;
+
+ private:
+  static std::mutex& mutex() {
+    static std::mutex m;
+    return m;
+  }
+  std::lock_guard<std::mutex> lock_;
+};
+
+// Gmsh reports errors by throwing (a std::string in 4.8, or something else in other
+// versions) and by its logger; turn either into one message.
+std::string describe_gmsh_error() {
+  std::string last;
+  try {
+    gmsh::logger::getLastError(last);
+  } catch (...) {
+  }
+  return last.empty() ? std::string("unknown Gmsh error") : last;
+}
+
+template <class F>
+void call_gmsh(const std::string& what, F&& f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    throw std::runtime_error(what + ": " + e.what());
+  } catch (const std::string& e) {
+    throw std::runtime_error(what + ": " + e);
+  } catch (...) {
+    throw std::runtime_error(what + ": " + describe_gmsh_error());
+  }
+}
+
+constexpr int kLinearTriangle = 2;  // Gmsh element type numbers
+constexpr int kLinearLine = 1;
+
+// Node tags of Gmsh → dense indices, keeping only the nodes that triangles use, in ascending
+// tag order (deterministic).
+struct NodeTable {
+  std::vector<Point> nodes;
+  std::vector<int> index_of_tag;  // -1 for unused tags
+};
+
+NodeTable collect_used_nodes(const std::vector<std::size_t>& used_tags) {
+  std::vector<std::size_t> node_tags;
+  std::vector<double> coords, parametric;
+  gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, false, false);
+  std::size_t max_tag = 0;
+  for (std::size_t tag : node_tags) max_tag = std::max(max_tag, tag);
+  std::vector<std::size_t> position(max_tag + 1, SIZE_MAX);
+  for (std::size_t i = 0; i < node_tags.size(); ++i) position[node_tags[i]] = i;
+
+  NodeTable table;
+  table.index_of_tag.assign(max_tag + 1, -1);
+  std::vector<char> used(max_tag + 1, 0);
+  for (std::size_t tag : used_tags) {
+    if (tag > max_tag || position[tag] == SIZE_MAX)
+      throw std::runtime_error("an element refers to node " + std::to_string(tag) +
+                               ", which does not exist");
+    used[tag] = 1;
+  }
+  for (std::size_t tag = 0; tag <= max_tag; ++tag) {
+    if (!used[tag]) continue;
+    table.index_of_tag[tag] = static_cast<int>(table.nodes.size());
+    table.nodes.push_back({coords[3 * position[tag]], coords[3 * position[tag] + 1]});
+  }
+  return table;
+}
+
+// Triangles of the surface entity `tag`, as Gmsh node tags; throws on any other 2D element.
+std::vector<std::size_t> get_surface_triangles(int tag) {
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> element_tags, node_tags;
+  gmsh::model::mesh::getElements(types, element_tags, node_tags, 2, tag);
+  std::vector<std::size_t> triangles;
+  for (std::size_t k = 0; k < types.size(); ++k) {
+    if (types[k] != kLinearTriangle) {
+      std::string name;
+      int dim = 0, order = 0, nodes = 0, primary = 0;
+      std::vector<double> local;
+      gmsh::model::mesh::getElementProperties(types[k], name, dim, order, nodes, local, primary);
+      throw std::runtime_error("surface " + std::to_string(tag) + " has elements of type '" +
+                               name + "'; only 3-node triangles are supported");
+    }
+    triangles.insert(triangles.end(), node_tags[k].begin(), node_tags[k].end());
+  }
+  return triangles;
+}
+
+// Appends the triangles (Gmsh node tags, three per triangle) with a region tag, turned
+// counter-clockwise.
+void append_triangles(TriangleMesh& mesh, const NodeTable& table,
+                      const std::vector<std::size_t>& tags, int region) {
+  for (std::size_t i = 0; i + 2 < tags.size(); i += 3) {
+    std::array<int, 3> tri{table.index_of_tag[tags[i]], table.index_of_tag[tags[i + 1]],
+                           table.index_of_tag[tags[i + 2]]};
+    if (geometry::orient(mesh.nodes[tri[0]], mesh.nodes[tri[1]], mesh.nodes[tri[2]]) < 0)
+      std::swap(tri[1], tri[2]);
+    mesh.triangles.push_back(tri);
+    mesh.region.push_back(region);
+  }
+}
+
+// The domain with each named-segment end point that lies on a domain edge inserted as a
+// vertex, so that mesh edges end exactly where named boundaries end.
+geometry::Polygon insert_segment_ends(const geometry::Polygon& domain,
+                                      const std::vector<NamedSegment>& segments, double tolerance) {
+  geometry::Polygon out;
+  const std::size_t n = domain.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point a = domain[i], b = domain[(i + 1) % n];
+    out.push_back(a);
+    std::vector<std::pair<double, Point>> inserted;
+    for (const NamedSegment& s : segments)
+      for (Point p : {s.from, s.to}) {
+        if (geometry::distance_to_segment(p, a, b) > tolerance) continue;
+        if (geometry::distance(p, a) <= tolerance || geometry::distance(p, b) <= tolerance) continue;
+        inserted.push_back({geometry::dot(p - a, b - a) / geometry::dot(b - a, b - a), p});
+      }
+    std::sort(inserted.begin(), inserted.end(),
+              [](const auto& u, const auto& v) { return u.first < v.first; });
+    for (const auto& [t, p] : inserted)
+      if (geometry::distance(out.back(), p) > tolerance) out.push_back(p);
+  }
+  return out;
+}
+
+int add_occ_polygon(const geometry::Polygon& polygon) {
+  std::vector<int> points, lines;
+  for (Point p : polygon) points.push_back(gmsh::model::occ::addPoint(p.x, p.y, 0.0));
+  for (std::size_t i = 0; i < points.size(); ++i)
+    lines.push_back(gmsh::model::occ::addLine(points[i], points[(i + 1) % points.size()]));
+  const int loop = gmsh::model::occ::addCurveLoop(lines);
+  return gmsh::model::occ::addPlaneSurface({loop});
+}
+
+void check_polygon(const geometry::Polygon& polygon, const std::string& what) {
+  if (polygon.size() < 3) throw std::runtime_error(what + " has fewer than 3 vertices");
+  if (!(geometry::area(polygon) > 0.0)) throw std::runtime_error(what + " has zero area");
+  if (const auto hit = geometry::find_self_intersection(polygon))
+    throw std::runtime_error(what + " intersects itself (edges " + std::to_string(hit->first) +
+                             " and " + std::to_string(hit->second) + ")");
+}
+
+void check_request(const MeshRequest& request) {
+  check_polygon(request.domain, "mesh domain");
+  for (const NamedPolygon& r : request.regions) check_polygon(r.polygon, "region '" + r.name + "'");
+  if (!(request.size > 0.0)) throw std::runtime_error("mesh size must be positive");
+  if (!request.refinement_lines.empty()) {
+    if (!(request.fracture_size > 0.0)) throw std::runtime_error("mesh fracture_size must be positive");
+    if (!(request.refine_distance > 0.0))
+      throw std::runtime_error("mesh refine_distance must be positive");
+  }
+}
+
+}  // namespace
+
+TriangleMesh generate_mesh(const MeshRequest& request) {
+  check_request(request);
+  const geometry::Box box = geometry::bounding_box(request.domain);
+  const double tolerance = 1e-9 * std::max(box.width(), box.height());
+  geometry::Polygon domain = insert_segment_ends(request.domain, request.boundaries, tolerance);
+  if (geometry::signed_area(domain) < 0) std::reverse(domain.begin(), domain.end());
+
+  TriangleMesh mesh;
+  mesh.region_names.push_back("domain");
+  std::vector<int> region_of_input;  // region tag of each region polygon
+  for (const NamedPolygon& r : request.regions) {
+    int tag = find_region(mesh, r.name);
+    if (tag < 0) {
+      tag = static_cast<int>(mesh.region_names.size());
+      mesh.region_names.push_back(r.name);
+    }
+    region_of_input.push_back(tag);
+  }
+
+  GmshSession session(request.verbose);
+  // Surfaces of the meshed domain and the region tag of each.
+  std::vector<std::pair<int, int>> surfaces;
+  call_gmsh("Gmsh could not build the geometry", [&] {
+    const int domain_surface = add_occ_polygon(domain);
+    if (request.regions.empty()) {
+      surfaces.push_back({domain_surface, 0});
+    } else {
+      gmsh::vectorpair tools, out;
+      for (const NamedPolygon& r : request.regions) tools.push_back({2, add_occ_polygon(r.polygon)});
+      std::vector<gmsh::vectorpair> map;
+      // Fragment makes the region boundaries edges of the domain's pieces.
+      gmsh::model::occ::fragment({{2, domain_surface}}, tools, out, map);
+      std::map<int, int> region_of_surface;  // pieces of the domain only
+      for (const auto& [dim, tag] : map[0]) region_of_surface[tag] = 0;
+      for (std::size_t i = 0; i < request.regions.size(); ++i)
+        for (const auto& [dim, tag] : map[i + 1])  // later regions take precedence
+          if (region_of_surface.count(tag)) region_of_surface[tag] = region_of_input[i];
+      gmsh::vectorpair outside;
+      for (const auto& [dim, tag] : out)
+        if (dim == 2 && !region_of_surface.count(tag)) outside.push_back({2, tag});
+      if (!outside.empty()) gmsh::model::occ::remove(outside, true);
+      for (const auto& [tag, region] : region_of_surface) surfaces.push_back({tag, region});
+    }
+    gmsh::model::occ::synchronize();
+  });
+
+  call_gmsh("Gmsh could not mesh the domain", [&] {
+    // Delaunay (5): measured fastest in 2D on this kind of mesh (docs/performance.md).
+    gmsh::option::setNumber("Mesh.Algorithm", 5);
+    gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+    gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+    gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+    gmsh::option::setNumber("Mesh.MeshSizeMax", request.size);
+    gmsh::option::setNumber("General.NumThreads", 1);  // reproducible node numbering
+    if (!request.refinement_lines.empty()) {
+      // Gmsh's Distance + Threshold fields, evaluated with the exact distance to the lines
+      // (a Distance field would sample them; its sample nodes would also join the mesh).
+      const std::vector<Segment> lines = request.refinement_lines;
+      gmsh::model::mesh::setSizeCallback(
+          [lines, request](int, int, double x, double y, double) {
+            double d = INFINITY;
+            for (const Segment& s : lines)
+              d = std::min(d, geometry::distance_to_segment({x, y}, s.from, s.to));
+            return refined_size(request, d);
+          });
+    }
+    gmsh::model::mesh::generate(2);
+  });
+
+  call_gmsh("Gmsh produced an unusable mesh", [&] {
+    std::vector<std::vector<std::size_t>> triangles_of_surface;
+    std::vector<std::size_t> all_tags;
+    for (const auto& [tag, region] : surfaces) {
+      triangles_of_surface.push_back(get_surface_triangles(tag));
+      all_tags.insert(all_tags.end(), triangles_of_surface.back().begin(),
+                      triangles_of_surface.back().end());
+    }
+    const NodeTable table = collect_used_nodes(all_tags);
+    mesh.nodes = table.nodes;
+    for (std::size_t s = 0; s < surfaces.size(); ++s)
+      append_triangles(mesh, table, triangles_of_surface[s], surfaces[s].second);
+  });
+  if (mesh.triangles.empty()) throw std::runtime_error("Gmsh produced no triangles");
+  name_boundary_edges(mesh, request.boundaries, box);
+  validate(mesh);
+  return mesh;
+}
+
+TriangleMesh read_msh(const std::string& path, bool verbose) {
+  if (!std::ifstream(path)) throw std::runtime_error("cannot open mesh file '" + path + "'");
+  const std::string where = "mesh file '" + path + "'";
+  GmshSession session(verbose);
+  TriangleMesh mesh;
+  call_gmsh(where, [&] {
+    gmsh::open(path);
+    std::string error;
+    gmsh::logger::getLastError(error);
+    if (!error.empty()) throw std::runtime_error(error);
+
+    mesh.region_names.push_back("domain");
+    gmsh::vectorpair entities;
+    gmsh::model::getEntities(entities, 2);
+    std::vector<std::pair<std::vector<std::size_t>, int>> blocks;  // triangles, region
+    std::vector<std::size_t> all_tags;
+    for (const auto& [dim, tag] : entities) {
+      std::vector<int> groups;
+      gmsh::model::getPhysicalGroupsForEntity(2, tag, groups);
+      int region = 0;
+      if (!groups.empty()) {
+        std::string name;
+        gmsh::model::getPhysicalName(2, groups.front(), name);
+        if (name.empty()) name = std::to_string(groups.front());
+        region = find_region(mesh, name);
+        if (region < 0) {
+          region = static_cast<int>(mesh.region_names.size());
+          mesh.region_names.push_back(name);
+        }
+      }
+      blocks.push_back({get_surface_triangles(tag), region});
+      all_tags.insert(all_tags.end(), blocks.back().first.begin(), blocks.back().first.end());
+    }
+    if (all_tags.empty()) throw std::runtime_error("no triangles");
+    const NodeTable table = collect_used_nodes(all_tags);
+    mesh.nodes = table.nodes;
+    for (const auto& [tags, region] : blocks) append_triangles(mesh, table, tags, region);
+
+    // 1D physical groups name the boundary edges (the first group, by tag, wins).
+    std::map<std::pair<int, int>, int> group_of_edge;
+    gmsh::vectorpair groups;
+    gmsh::model::getPhysicalGroups(groups, 1);
+    for (const auto& [dim, group] : groups) {
+      std::string name;
+      gmsh::model::getPhysicalName(1, group, name);
+      if (name.empty()) name = std::to_string(group);
+      int index = find_boundary(mesh, name);
+      if (index < 0) {
+        index = static_cast<int>(mesh.boundary_names.size());
+        mesh.boundary_names.push_back(name);
+      }
+      std::vector<int> curves;
+      gmsh::model::getEntitiesForPhysicalGroup(1, group, curves);
+      for (int curve : curves) {
+        std::vector<int> types;
+        std::vector<std::vector<std::size_t>> element_tags, node_tags;
+        gmsh::model::mesh::getElements(types, element_tags, node_tags, 1, curve);
+        for (std::size_t k = 0; k < types.size(); ++k) {
+          if (types[k] != kLinearLine)
+            throw std::runtime_error("physical curve '" + name + "' has elements that are not 2-node lines");
+          for (std::size_t i = 0; i + 1 < node_tags[k].size(); i += 2) {
+            const std::size_t a = node_tags[k][i], b = node_tags[k][i + 1];
+            if (a >= table.index_of_tag.size() || b >= table.index_of_tag.size()) continue;
+            const int u = table.index_of_tag[a], v = table.index_of_tag[b];
+            if (u < 0 || v < 0) continue;
+            group_of_edge.try_emplace({std::min(u, v), std::max(u, v)}, index);
+          }
+        }
+      }
+    }
+    for (const auto& [a, b] : find_boundary_edges(mesh.triangles)) {
+      const auto it = group_of_edge.find({std::min(a, b), std::max(a, b)});
+      mesh.boundary_edges.push_back({{a, b}, it == group_of_edge.end() ? BoundaryEdge::kUnnamed : it->second});
+    }
+  });
+  try {
+    validate(mesh);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(where + ": " + e.what());
+  }
+  return mesh;
+}
+
+}  // namespace hydrodda::mesh

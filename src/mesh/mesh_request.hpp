@@ -1,0 +1,66 @@
+#pragma once
+// What to mesh: a domain polygon with named boundary segments, refinement lines (the
+// fractures) and region polygons that the mesh must honour.
+
+#include <string>
+#include <vector>
+
+#include "geometry/polygon.hpp"
+#include "mesh/triangle_mesh.hpp"
+
+namespace hydrodda::mesh {
+
+struct NamedSegment {
+  std::string name;
+  Point from;
+  Point to;
+};
+
+struct Segment {
+  Point from;
+  Point to;
+};
+
+struct NamedPolygon {
+  std::string name;
+  geometry::Polygon polygon;
+};
+
+struct MeshRequest {
+  geometry::Polygon domain;              // simple polygon, either orientation
+  std::vector<NamedSegment> boundaries;  // added to (and taking precedence over) the defaults
+  std::vector<Segment> refinement_lines; // the mesh is refined along these (fractures)
+  std::vector<NamedPolygon> regions;     // element edges follow their boundaries
+  double size = 0.1;                     // element size far from the refinement lines (m)
+  double fracture_size = 0.01;           // element size on the refinement lines (m)
+  double refine_distance = 0.2;          // distance over which the size grows back (m)
+  bool verbose = false;                  // let Gmsh print to the terminal
+};
+
+// Default boundary names: the sides of the domain's bounding box, restricted to where the
+// domain boundary lies on them.
+inline const std::vector<std::string> kDefaultBoundaryNames{"left", "right", "bottom", "top"};
+
+// Names the boundary edges of `mesh` (which must have its triangles and nodes): an edge
+// takes the first segment of `segments` that contains both its end points (within a relative
+// 1e-9 of the domain size), else the first default side (left, right, bottom, top of `box`)
+// it lies on, else stays unnamed. Sets mesh.boundary_edges and mesh.boundary_names (user
+// segments first, in order, then the four defaults).
+void name_boundary_edges(TriangleMesh& mesh, const std::vector<NamedSegment>& segments,
+                         const geometry::Box& box);
+
+// The element size at distance d from the nearest refinement line: Gmsh's Threshold field
+// with DistMin = 0, i.e. fracture_size at the line, growing linearly to size at
+// refine_distance and constant beyond.
+double refined_size(const MeshRequest& request, double distance);
+
+// Meshes the request with Gmsh. Throws std::runtime_error on invalid input (non-simple
+// domain, non-positive sizes) or when Gmsh fails.
+TriangleMesh generate_mesh(const MeshRequest& request);
+
+// Reads a Gmsh .msh file (any version Gmsh reads). Triangles take the 2D physical group of
+// their entity as region (region 0 "domain" for none); boundary edges the 1D physical group
+// that contains them. Errors name the file.
+TriangleMesh read_msh(const std::string& path, bool verbose = false);
+
+}  // namespace hydrodda::mesh

@@ -1,0 +1,95 @@
+#include "mesh/triangle_mesh.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace hydrodda::mesh {
+
+double triangle_area(const TriangleMesh& mesh, int t) {
+  const auto& [a, b, c] = mesh.triangles[t];
+  return 0.5 * geometry::orient(mesh.nodes[a], mesh.nodes[b], mesh.nodes[c]);
+}
+
+Point triangle_centroid(const TriangleMesh& mesh, int t) {
+  const auto& [a, b, c] = mesh.triangles[t];
+  return (mesh.nodes[a] + mesh.nodes[b] + mesh.nodes[c]) / 3.0;
+}
+
+namespace {
+int find_name(const std::vector<std::string>& names, const std::string& name) {
+  const auto it = std::find(names.begin(), names.end(), name);
+  return it == names.end() ? -1 : static_cast<int>(it - names.begin());
+}
+}  // namespace
+
+int find_boundary(const TriangleMesh& mesh, const std::string& name) {
+  return find_name(mesh.boundary_names, name);
+}
+
+int find_region(const TriangleMesh& mesh, const std::string& name) {
+  return find_name(mesh.region_names, name);
+}
+
+std::vector<int> select_region(const TriangleMesh& mesh, const std::string& name) {
+  const int tag = find_region(mesh, name);
+  if (tag < 0) throw std::runtime_error("mesh has no region named '" + name + "'");
+  std::vector<int> selected;
+  for (int t = 0; t < mesh.triangle_count(); ++t)
+    if (mesh.region[t] == tag) selected.push_back(t);
+  return selected;
+}
+
+std::vector<std::array<int, 2>> find_boundary_edges(
+    const std::vector<std::array<int, 3>>& triangles) {
+  // Sort every edge by its unordered node pair; pairs that occur once are boundary edges.
+  struct Edge {
+    int lo, hi, from, to;
+  };
+  std::vector<Edge> edges;
+  edges.reserve(3 * triangles.size());
+  for (const auto& tri : triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int a = tri[k], b = tri[(k + 1) % 3];
+      edges.push_back({std::min(a, b), std::max(a, b), a, b});
+    }
+  std::sort(edges.begin(), edges.end(), [](const Edge& e, const Edge& f) {
+    return e.lo != f.lo ? e.lo < f.lo : e.hi < f.hi;
+  });
+  std::vector<std::array<int, 2>> boundary;
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i + 1;
+    while (j < edges.size() && edges[j].lo == edges[i].lo && edges[j].hi == edges[i].hi) ++j;
+    if (j - i == 1) boundary.push_back({edges[i].from, edges[i].to});
+    i = j;
+  }
+  return boundary;
+}
+
+void validate(const TriangleMesh& mesh) {
+  const int n = mesh.node_count();
+  if (mesh.region.size() != mesh.triangles.size())
+    throw std::runtime_error("mesh: " + std::to_string(mesh.region.size()) + " region tags for " +
+                             std::to_string(mesh.triangles.size()) + " triangles");
+  for (int t = 0; t < mesh.triangle_count(); ++t) {
+    for (int v : mesh.triangles[t])
+      if (v < 0 || v >= n)
+        throw std::runtime_error("mesh: triangle " + std::to_string(t) + " has node " +
+                                 std::to_string(v) + " out of range");
+    if (!(triangle_area(mesh, t) > 0.0))
+      throw std::runtime_error("mesh: triangle " + std::to_string(t) +
+                               " is clockwise or degenerate");
+    if (mesh.region[t] < 0 || mesh.region[t] >= static_cast<int>(mesh.region_names.size()))
+      throw std::runtime_error("mesh: triangle " + std::to_string(t) + " has region tag " +
+                               std::to_string(mesh.region[t]) + " out of range");
+  }
+  for (const BoundaryEdge& e : mesh.boundary_edges) {
+    for (int v : e.nodes)
+      if (v < 0 || v >= n) throw std::runtime_error("mesh: boundary edge node out of range");
+    if (e.boundary < BoundaryEdge::kUnnamed ||
+        e.boundary >= static_cast<int>(mesh.boundary_names.size()))
+      throw std::runtime_error("mesh: boundary edge tag out of range");
+  }
+}
+
+}  // namespace hydrodda::mesh

@@ -1,0 +1,105 @@
+// Bad input and failed solves are reported as exceptions with a clear message.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "flow_test_meshes.hpp"
+#include "hydro/darcy_solver.hpp"
+#include "hydro/p1_element.hpp"
+
+namespace hydrodda::hydro {
+namespace {
+
+template <class F>
+std::string message_of(F&& f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "(no exception)";
+}
+
+DarcyProblem make_problem(std::vector<BoundaryCondition> conditions) {
+  DarcyProblem p;
+  p.boundaries = std::move(conditions);
+  return p;
+}
+
+const mesh::TriangleMesh& square() {
+  static const auto m = testing::make_rectangle_mesh(1.0, 1.0, 0.2);
+  return m;
+}
+
+TEST(DarcyErrors, NothingFixesTheHead) {
+  const auto message = message_of([] {
+    DarcySolver s(square(), make_problem({{"left", BoundaryKind::flux, -1e-6}}));
+  });
+  EXPECT_NE(message.find("nothing fixes the head"), std::string::npos) << message;
+}
+
+TEST(DarcyErrors, UnknownBoundaryIsNamed) {
+  const auto message = message_of([] {
+    DarcySolver s(square(), make_problem({{"inlet", BoundaryKind::head, 1.0}}));
+  });
+  EXPECT_NE(message.find("'inlet'"), std::string::npos) << message;
+}
+
+TEST(DarcyErrors, NonPositiveOrNanPermeabilityIsNamed) {
+  DarcySolver solver(square(), make_problem({{"left", BoundaryKind::head, 1.0}}));
+  std::vector<double> k(square().triangles.size(), 1e-12);
+  k[3] = 0.0;
+  EXPECT_NE(message_of([&] { solver.solve(k); }).find("triangle 3 is not positive"), std::string::npos);
+  k[3] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(message_of([&] { solver.solve(k); }).find("triangle 3 is not finite"), std::string::npos);
+  k.pop_back();
+  EXPECT_NE(message_of([&] { solver.solve(k); }).find("permeabilities for"), std::string::npos);
+  std::vector<PermeabilityTensor> tensor(square().triangles.size(), {1e-12, 2e-12, 1e-12});
+  EXPECT_NE(message_of([&] { solver.solve(tensor); }).find("not positive (definite)"), std::string::npos);
+}
+
+// Two triangles sharing no node; only the first touches the fixed boundary, so the second
+// floats: its 3×3 block is singular (rows sum to zero) and the solver must say so.
+TEST(DarcyErrors, FloatingPartIsASingularSystem) {
+  mesh::TriangleMesh m;
+  m.nodes = {{0, 0}, {1, 0}, {0, 1}, {2, 0}, {3, 0}, {2, 1}};
+  m.triangles = {{0, 1, 2}, {3, 4, 5}};
+  m.region = {0, 0};
+  m.region_names = {"domain"};
+  m.boundary_names = {"left"};
+  m.boundary_edges = {{{2, 0}, 0}};
+  EXPECT_THROW(DarcySolver(m, make_problem({{"left", BoundaryKind::head, 1.0}})), SingularSystem);
+}
+
+// Hand-computed element matrix of the right triangle (0,0), (1,0), (0,1) with K = I:
+// ∇φ = (−1,−1), (1,0), (0,1), area ½ ⇒ K_e = ½ [[2,−1,−1],[−1,1,0],[−1,0,1]].
+TEST(P1Element, RightTriangleMatrixIsExact) {
+  const auto ke = compute_element_matrix({0, 0}, {1, 0}, {0, 1}, {1.0, 0.0, 1.0});
+  const double expected[3][3] = {{1.0, -0.5, -0.5}, {-0.5, 0.5, 0.0}, {-0.5, 0.0, 0.5}};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) EXPECT_EQ(ke[i][j], expected[i][j]) << i << "," << j;
+  // Anisotropic K = [[2, 1], [1, 3]]: K_e(1,2) = ½ (K∇φ_2)·∇φ_1 = ½ (1, 3)·(1, 0) = ½.
+  const auto ka = compute_element_matrix({0, 0}, {1, 0}, {0, 1}, {2.0, 1.0, 3.0});
+  EXPECT_EQ(ka[1][2], 0.5);
+  EXPECT_EQ(ka[2][1], 0.5);
+  EXPECT_EQ(ka[1][1], 1.0);  // ½ (2, 1)·(1, 0)
+  EXPECT_EQ(ka[2][2], 1.5);  // ½ (1, 3)·(0, 1)
+}
+
+// Determinism: the same input gives bit-identical heads from two solver objects.
+TEST(DarcySolver, RepeatedSolvesAreBitIdentical) {
+  const auto problem = make_problem({{"left", BoundaryKind::head, 1.0}, {"bottom", BoundaryKind::head, 0.0}});
+  std::vector<double> k(square().triangles.size());
+  for (std::size_t t = 0; t < k.size(); ++t) k[t] = 1e-12 * (1.0 + static_cast<double>(t % 7));
+  DarcySolver a(square(), problem), b(square(), problem);
+  const auto sa = a.solve(k), sb = b.solve(k), sa2 = a.solve(k);
+  EXPECT_EQ(sa.head, sb.head);
+  EXPECT_EQ(sa.head, sa2.head);
+  EXPECT_LE(sa.balance_error, 1e-10);
+}
+
+}  // namespace
+}  // namespace hydrodda::hydro
