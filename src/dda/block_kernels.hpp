@@ -1,0 +1,55 @@
+#pragma once
+// Per-block kernels of first-order DDA (Shi 1988, ch. 2): the displacement function T, the
+// 6×6 element matrices and load vectors, and the exact-rotation point update. Pure functions
+// of plain data. Unknowns D = (u0, v0, r0, εx, εy, γxy) about the block centroid (x0, y0):
+//   u = u0 − (y−y0) r0 + (x−x0) εx + (y−y0) γxy/2
+//   v = v0 + (x−x0) r0 + (y−y0) εy + (x−x0) γxy/2
+
+#include <span>
+
+#include <Eigen/Dense>
+
+#include "dda/definitions.hpp"
+
+namespace hydrodda::dda {
+
+using Vector6 = Eigen::Matrix<double, 6, 1>;
+using Matrix6 = Eigen::Matrix<double, 6, 6>;
+using Matrix26 = Eigen::Matrix<double, 2, 6>;
+using Vector3 = Eigen::Vector3d;
+
+// Area, centroid and central second moments ∫X², ∫Y², ∫XY (X = x − x0, Y = y − y0).
+struct Moments {
+  double area = 0.0;
+  Point centroid;
+  double sxx = 0.0;
+  double syy = 0.0;
+  double sxy = 0.0;
+};
+Moments compute_moments(std::span<const Point> polygon);
+
+// T(x, y): the point's displacement is T·D.
+Matrix26 compute_displacement_matrix(Point p, Point centroid);
+
+// 3×3 elasticity matrix: σ = E ε with ε = (εx, εy, γxy).
+Eigen::Matrix3d compute_elasticity(const Material& material, Plane plane);
+
+// Elastic strain energy ½ A εᵀ E ε: stiffness A·E on the strain unknowns (rows 3..5).
+Matrix6 compute_elastic_stiffness(const Moments& m, const Eigen::Matrix3d& elasticity);
+
+// M = ρ ∫ Tᵀ T dA.
+Matrix6 compute_mass_matrix(const Moments& m, double density);
+
+// Load of a traction varying linearly from t_a at a to t_b at b along segment ab:
+// F = ∫ Tᵀ t ds, exact by Simpson's rule since the integrand is quadratic in s.
+Vector6 compute_segment_load(Point a, Point b, Point t_a, Point t_b, Point centroid);
+
+// Traction on the edge a→b of a counter-clockwise polygon, normal positive outward.
+Vector6 compute_edge_traction_load(Point a, Point b, Point centroid, double normal_a,
+                                   double normal_b, double shear_a, double shear_b);
+
+// The point after the block displacement D, the rotation applied exactly (cos r0, sin r0) so
+// that a rigid rotation keeps lengths and areas; strain terms as in T.
+Point displace_point(Point p, Point centroid, const Vector6& d);
+
+}  // namespace hydrodda::dda

@@ -1,0 +1,146 @@
+#include "dda/contact_detection.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace hydrodda::dda {
+
+using geometry::Box;
+using geometry::Point;
+
+std::vector<std::pair<int, int>> find_block_pairs(std::span<const Box> boxes, double distance,
+                                                  std::span<const char> skip) {
+  // Uniform grid: cell = mean box extent; each box is entered in every cell it covers, the
+  // (cell, block) list is sorted and pairs are read off within each cell, then deduplicated.
+  const int n = static_cast<int>(boxes.size());
+  std::vector<std::pair<int, int>> pairs;
+  if (n < 2) return pairs;
+  Box all;
+  double extent = 0.0;
+  for (const Box& b : boxes) {
+    all.add(b.lo);
+    all.add(b.hi);
+    extent += std::max(b.width(), b.height());
+  }
+  double cell = std::max(extent / n + distance, 1e-12);
+  // Keep the cell count near the block count so memory stays linear.
+  while ((all.width() / cell + 1) * (all.height() / cell + 1) > 4.0 * n + 16) cell *= 1.5;
+  const auto nx = static_cast<std::int64_t>(all.width() / cell) + 1;
+  std::vector<std::pair<std::int64_t, int>> entries;
+  entries.reserve(4 * boxes.size());
+  for (int i = 0; i < n; ++i) {
+    const Box b = boxes[i].inflated(distance / 2);
+    const auto x0 = static_cast<std::int64_t>((b.lo.x - all.lo.x) / cell);
+    const auto x1 = static_cast<std::int64_t>((b.hi.x - all.lo.x) / cell);
+    const auto y0 = static_cast<std::int64_t>((b.lo.y - all.lo.y) / cell);
+    const auto y1 = static_cast<std::int64_t>((b.hi.y - all.lo.y) / cell);
+    for (auto y = std::max<std::int64_t>(y0, 0); y <= y1; ++y)
+      for (auto x = std::max<std::int64_t>(x0, 0); x <= std::min(x1, nx); ++x)
+        entries.emplace_back(y * (nx + 1) + x, i);
+  }
+  std::sort(entries.begin(), entries.end());
+  for (std::size_t s = 0; s < entries.size();) {
+    std::size_t e = s;
+    while (e < entries.size() && entries[e].first == entries[s].first) ++e;
+    for (std::size_t p = s; p < e; ++p) {
+      for (std::size_t q = p + 1; q < e; ++q) {
+        const int i = entries[p].second;
+        const int j = entries[q].second;
+        if (skip[i] && skip[j]) continue;
+        if (boxes[i].inflated(distance).overlaps(boxes[j])) pairs.emplace_back(i, j);
+      }
+    }
+    s = e;
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
+namespace {
+
+// Neighbours may dip below the edge line by this sine of angle and still count as outside.
+constexpr double kWedgeTolerance = 0.05;
+// Sine of the angle within which an incident edge counts as lying along the contact edge.
+constexpr double kParallelTolerance = 0.05;
+
+// Signed distance of p outside the line of edge (a, b) of a counter-clockwise polygon.
+double compute_gap(Point p, Point a, Point b) {
+  const double length = geometry::distance(a, b);
+  return -geometry::orient(a, b, p) / length;
+}
+
+// Half the length, along the edge and inside it, of each face incident to the vertex that
+// lies along the edge: the share of the face contact this vertex carries.
+double compute_tributary_length(Point p, Point before, Point after, Point a, Point b,
+                                double distance) {
+  const Point ab = b - a;
+  const double length = geometry::norm(ab);
+  const Point s = ab / length;
+  const double tp = dot(p - a, s);
+  double total = 0.0;
+  for (Point q : {before, after}) {
+    const Point pq = q - p;
+    const double lq = geometry::norm(pq);
+    if (std::abs(cross(s, pq)) > kParallelTolerance * lq) continue;
+    if (std::abs(compute_gap(q, a, b)) > distance) continue;
+    const double tq = dot(q - a, s);
+    const double lo = std::clamp(std::min(tp, tq), 0.0, length);
+    const double hi = std::clamp(std::max(tp, tq), 0.0, length);
+    total += 0.5 * (hi - lo);
+  }
+  return total;
+}
+
+// Vertices of polygon `va` against edges of polygon `eb`.
+void find_one_way(std::span<const Point> va, int a, std::span<const Point> eb, int b,
+                  double distance, std::vector<ContactCandidate>& out) {
+  const int nv = static_cast<int>(va.size());
+  const int ne = static_cast<int>(eb.size());
+  for (int v = 0; v < nv; ++v) {
+    const Point p = va[v];
+    const Point before = va[(v + nv - 1) % nv];
+    const Point after = va[(v + 1) % nv];
+    for (int e = 0; e < ne; ++e) {
+      const Point e0 = eb[e];
+      const Point e1 = eb[(e + 1) % ne];
+      const double length = geometry::distance(e0, e1);
+      const double gap = compute_gap(p, e0, e1);
+      if (gap > distance || gap < -distance) continue;
+      const double t = dot(p - e0, e1 - e0) / (length * length);
+      const double slack = distance / length;
+      if (t < -slack || t > 1 + slack) continue;
+      // The vertex's own block must lie outside the edge near the vertex: both incident
+      // edges point away from block b (a reflex vertex never touches a face).
+      const Point n{(e1.y - e0.y) / length, -(e1.x - e0.x) / length};
+      if (dot(before - p, n) < -kWedgeTolerance * geometry::distance(before, p)) continue;
+      if (dot(after - p, n) < -kWedgeTolerance * geometry::distance(after, p)) continue;
+      // Past an end of the edge (vertex–vertex): keep only the entrance edge, the one of the
+      // two edges meeting there whose line the vertex is farther outside (Shi 1988, §4.3).
+      if (t < 0 || t > 1) {
+        const Point other_a = t < 0 ? eb[(e + ne - 1) % ne] : e1;
+        const Point other_b = t < 0 ? e0 : eb[(e + 2) % ne];
+        if (compute_gap(p, other_a, other_b) > gap) continue;
+        if (geometry::distance(p, t < 0 ? e0 : e1) > distance) continue;
+      }
+      ContactCandidate c;
+      c.key = {a, v, b, e};
+      c.edge_ratio = std::clamp(t, 0.0, 1.0);
+      c.penetration = -gap;
+      c.length = compute_tributary_length(p, before, after, e0, e1, distance);
+      out.push_back(c);
+    }
+  }
+}
+
+}  // namespace
+
+void find_pair_contacts(std::span<const Point> polygon_a, int a,
+                        std::span<const Point> polygon_b, int b, double distance,
+                        std::vector<ContactCandidate>& out) {
+  find_one_way(polygon_a, a, polygon_b, b, distance, out);
+  find_one_way(polygon_b, b, polygon_a, a, distance, out);
+}
+
+}  // namespace hydrodda::dda

@@ -1,0 +1,44 @@
+#pragma once
+// Contact detection: a broad phase on a uniform grid of block bounding boxes (never all pairs)
+// and a narrow phase finding vertex–edge contacts, vertex–vertex ones included through the
+// entrance-edge rule (Shi 1988, §4). Pure functions of polygons.
+
+#include <compare>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "geometry/point.hpp"
+#include "geometry/polygon.hpp"
+
+namespace hydrodda::dda {
+
+// A contact is vertex `vertex` of block `block_i` against edge `edge` (vertex edge → edge+1)
+// of block `block_j`; its state carries from step to step under this key.
+struct ContactKey {
+  int block_i = 0;
+  int vertex = 0;
+  int block_j = 0;
+  int edge = 0;
+  friend auto operator<=>(const ContactKey&, const ContactKey&) = default;
+};
+
+struct ContactCandidate {
+  ContactKey key;
+  double edge_ratio = 0.0;   // projection of the vertex on the edge, 0 at its first vertex
+  double penetration = 0.0;  // > 0 inside block_j, < 0 a gap
+  double length = 0.0;       // tributary length of face contact (for cohesion, tension)
+};
+
+// Pairs (i < j) of blocks whose boxes, grown by `distance`, overlap; pairs of two blocks that
+// both have skip[i] set (fixed blocks) are left out. Sorted.
+std::vector<std::pair<int, int>> find_block_pairs(std::span<const geometry::Box> boxes,
+                                                  double distance,
+                                                  std::span<const char> skip);
+
+// Vertex–edge contacts of the pair (a, b), both ways, within `distance`. Sorted by key.
+void find_pair_contacts(std::span<const geometry::Point> polygon_a, int a,
+                        std::span<const geometry::Point> polygon_b, int b, double distance,
+                        std::vector<ContactCandidate>& out);
+
+}  // namespace hydrodda::dda

@@ -1,0 +1,107 @@
+#pragma once
+// Plain definition structs the DDA engine is built from: blocks, materials, joints, settings,
+// loads. No scenario or output types: the scenario reader and the coupling loop fill these.
+
+#include <array>
+#include <vector>
+
+#include "geometry/point.hpp"
+#include "geometry/polygon.hpp"
+
+namespace hydrodda::dda {
+
+using geometry::Point;
+using geometry::Polygon;
+
+struct Material {
+  double density = 2500.0;  // kg/m3
+  double young = 1.0e10;    // Pa
+  double poisson = 0.25;
+};
+
+// Mohr–Coulomb joint: shear strength c·l + N tan φ; tension up to tensile_strength·l.
+struct Joint {
+  double friction_angle_deg = 30.0;
+  double cohesion = 0.0;          // Pa
+  double tensile_strength = 0.0;  // Pa
+};
+
+struct BlockDefinition {
+  Polygon polygon;  // simple, counter-clockwise, no repeated closing vertex
+  int material = 0;
+  bool fixed = false;
+  std::array<double, 3> initial_stress{0.0, 0.0, 0.0};    // σxx, σyy, τxy (Pa)
+  std::array<double, 3> initial_velocity{0.0, 0.0, 0.0};  // vx, vy (m/s), ω (rad/s)
+};
+
+enum class Analysis { static_, dynamic };
+enum class Plane { strain, stress };
+enum class ContactMethod { augmented_lagrangian, penalty };
+
+struct Settings {
+  Analysis analysis = Analysis::static_;
+  Plane plane = Plane::strain;
+  Point gravity{0.0, -9.81};
+  double time_step = 1.0e-3;              // s, the largest step taken
+  double max_displacement_ratio = 0.01;   // allowed step displacement ÷ half the model height
+  ContactMethod contact = ContactMethod::augmented_lagrangian;
+  double penalty = 0.0;                   // N/m; 0 → 50 × the largest Young's modulus × 1 m
+  double penetration_tolerance = 0.0;     // m; 0 → 1e-4 × allowed step displacement
+  double contact_distance = 0.0;          // m; 0 → 2.5 × allowed step displacement
+  int max_open_close_iterations = 12;     // then the step is cut and retried
+  int max_lagrangian_iterations = 30;
+  double static_tolerance = 1.0e-9;       // run_to_equilibrium: max step displacement ÷ model size
+};
+
+// A material point of a block held in place (a stiff spring to its initial position).
+struct FixedPoint {
+  int block = 0;
+  Point point;
+};
+
+// A force (N per metre of thickness) at a material point, fixed in direction.
+struct PointLoad {
+  int block = 0;
+  Point point;
+  Point force;
+};
+
+// A material point driven to initial position + value, ramped linearly to reach it at
+// ramp_time (the run's end time) and held after.
+struct PrescribedDisplacement {
+  int block = 0;
+  Point point;
+  Point value;
+  double ramp_time = 1.0;
+};
+
+// Traction on edge `edge` (from vertex edge to edge+1) varying linearly from its first to its
+// second vertex. Normal positive = tension (along the outward normal); shear along the edge.
+struct EdgeTraction {
+  int block = 0;
+  int edge = 0;
+  double normal_start = 0.0;  // Pa
+  double normal_end = 0.0;
+  double shear_start = 0.0;
+  double shear_end = 0.0;
+};
+
+struct MeasuredPoint {
+  int block = 0;
+  Point point;
+};
+
+// Everything the engine is built from.
+struct ModelDefinition {
+  std::vector<BlockDefinition> blocks;
+  std::vector<Material> materials;
+  Joint joint;
+  Settings settings;
+  std::vector<FixedPoint> fixed_points;
+  std::vector<PointLoad> point_loads;
+  std::vector<PrescribedDisplacement> displacements;
+  std::vector<EdgeTraction> tractions;
+  std::vector<MeasuredPoint> measured_points;
+};
+
+}  // namespace hydrodda::dda

@@ -1,0 +1,53 @@
+#include "dda/selection.hpp"
+
+namespace hydrodda::dda {
+
+std::vector<VertexRef> select_vertices_on_segment(std::span<const BlockDefinition> blocks,
+                                                  Point a, Point b, double tolerance) {
+  std::vector<VertexRef> out;
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    const Polygon& p = blocks[i].polygon;
+    for (std::size_t v = 0; v < p.size(); ++v)
+      if (geometry::distance_to_segment(p[v], a, b) <= tolerance)
+        out.push_back({static_cast<int>(i), static_cast<int>(v)});
+  }
+  return out;
+}
+
+std::vector<EdgeRef> select_edges_on_segment(std::span<const BlockDefinition> blocks, Point a,
+                                             Point b, double tolerance) {
+  std::vector<EdgeRef> out;
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    const Polygon& p = blocks[i].polygon;
+    const std::size_t n = p.size();
+    for (std::size_t e = 0; e < n; ++e)
+      if (geometry::distance_to_segment(p[e], a, b) <= tolerance &&
+          geometry::distance_to_segment(p[(e + 1) % n], a, b) <= tolerance)
+        out.push_back({static_cast<int>(i), static_cast<int>(e)});
+  }
+  return out;
+}
+
+std::vector<EdgeTraction> make_tractions_on_segment(std::span<const BlockDefinition> blocks,
+                                                    Point a, Point b, double tolerance,
+                                                    double normal_a, double normal_b,
+                                                    double shear_a, double shear_b) {
+  const Point ab = b - a;
+  const double length2 = dot(ab, ab);
+  // Linear interpolation by the projection of an edge end on ab.
+  const auto at = [&](Point p, double va, double vb) {
+    const double t = length2 > 0 ? dot(p - a, ab) / length2 : 0.0;
+    return va + t * (vb - va);
+  };
+  std::vector<EdgeTraction> out;
+  for (EdgeRef e : select_edges_on_segment(blocks, a, b, tolerance)) {
+    const Polygon& p = blocks[e.block].polygon;
+    const Point p0 = p[e.edge];
+    const Point p1 = p[(e.edge + 1) % p.size()];
+    out.push_back({e.block, e.edge, at(p0, normal_a, normal_b), at(p1, normal_a, normal_b),
+                   at(p0, shear_a, shear_b), at(p1, shear_a, shear_b)});
+  }
+  return out;
+}
+
+}  // namespace hydrodda::dda

@@ -1,0 +1,542 @@
+#include "dda/system.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace hydrodda::dda {
+
+namespace {
+
+using Triplets = std::vector<Eigen::Triplet<double>>;
+
+// Adds the 6×6 block m at block row a, block column b of a symmetric matrix kept as its lower
+// triangle (the (b, a) block being mᵀ).
+void add_block(Triplets& t, int a, int b, const Matrix6& m) {
+  if (a == b) {
+    for (int c = 0; c < 6; ++c)
+      for (int r = c; r < 6; ++r) t.emplace_back(6 * a + r, 6 * a + c, m(r, c));
+  } else if (a > b) {
+    for (int c = 0; c < 6; ++c)
+      for (int r = 0; r < 6; ++r) t.emplace_back(6 * a + r, 6 * b + c, m(r, c));
+  } else {
+    for (int c = 0; c < 6; ++c)
+      for (int r = 0; r < 6; ++r) t.emplace_back(6 * b + r, 6 * a + c, m(c, r));
+  }
+}
+
+void add_segment(Eigen::VectorXd& f, int dof, const Vector6& v) {
+  if (dof >= 0) f.segment<6>(6 * dof) += v;
+}
+
+bool is_closed(ContactState s) { return s != ContactState::open; }
+
+}  // namespace
+
+System::System(ModelDefinition def, std::unique_ptr<LinearSolver> solver)
+    : materials_(std::move(def.materials)),
+      joint_(def.joint),
+      settings_(def.settings),
+      point_loads_(std::move(def.point_loads)),
+      displacements_(std::move(def.displacements)),
+      tractions_(std::move(def.tractions)),
+      solver_(std::move(solver)) {
+  if (def.blocks.empty()) throw std::invalid_argument("DDA: no blocks");
+  if (materials_.empty()) throw std::invalid_argument("DDA: no materials");
+  if (settings_.time_step <= 0) throw std::invalid_argument("DDA: time_step must be > 0");
+  geometry::Box all;
+  double young_max = 0.0;
+  for (const Material& m : materials_) {
+    if (m.young <= 0 || m.density <= 0 || m.poisson <= -1 || m.poisson >= 0.5)
+      throw std::invalid_argument("DDA: material needs young > 0, density > 0, -1 < poisson < 0.5");
+    elasticity_.push_back(compute_elasticity(m, settings_.plane));
+    young_max = std::max(young_max, m.young);
+  }
+  for (std::size_t b = 0; b < def.blocks.size(); ++b) {
+    const BlockDefinition& bd = def.blocks[b];
+    const std::string name = "DDA: block " + std::to_string(b) + ": ";
+    if (bd.polygon.size() < 3) throw std::invalid_argument(name + "fewer than 3 vertices");
+    if (geometry::signed_area(bd.polygon) <= 0)
+      throw std::invalid_argument(name + "not counter-clockwise");
+    if (geometry::find_self_intersection(bd.polygon))
+      throw std::invalid_argument(name + "self-intersecting");
+    if (bd.material < 0 || bd.material >= static_cast<int>(materials_.size()))
+      throw std::invalid_argument(name + "material index out of range");
+    Block blk;
+    blk.polygon = bd.polygon;
+    blk.moments = compute_moments(blk.polygon);
+    blk.material = bd.material;
+    blk.dof = bd.fixed ? -1 : unknown_count_++;
+    blk.stress = Vector3(bd.initial_stress[0], bd.initial_stress[1], bd.initial_stress[2]);
+    blk.velocity << bd.initial_velocity[0], bd.initial_velocity[1], bd.initial_velocity[2], 0,
+        0, 0;
+    if (bd.fixed) blk.velocity.setZero();
+    blk.material_centroid = blk.initial_centroid = blk.moments.centroid;
+    for (Point p : blk.polygon) all.add(p);
+    blocks_.push_back(std::move(blk));
+  }
+  const auto check_block = [&](int b) {
+    if (b < 0 || b >= block_count()) throw std::invalid_argument("DDA: load on a missing block");
+  };
+  for (const FixedPoint& f : def.fixed_points) {
+    check_block(f.block);
+    fixed_points_.push_back({f.block, f.point, f.point});
+  }
+  for (const PointLoad& l : point_loads_) {
+    check_block(l.block);
+    load_points_.push_back({l.block, l.point, l.point});
+  }
+  for (const PrescribedDisplacement& p : displacements_) {
+    check_block(p.block);
+    if (p.ramp_time <= 0) throw std::invalid_argument("DDA: ramp_time must be > 0");
+    displacement_points_.push_back({p.block, p.point, p.point});
+  }
+  for (const EdgeTraction& t : tractions_) {
+    check_block(t.block);
+    if (t.edge < 0 || t.edge >= static_cast<int>(blocks_[t.block].polygon.size()))
+      throw std::invalid_argument("DDA: traction on a missing edge");
+  }
+  for (const MeasuredPoint& m : def.measured_points) {
+    check_block(m.block);
+    measured_.push_back({m.block, m.point, m.point});
+  }
+  // Shi's w0: half the model height sets the allowed step displacement.
+  model_size_ = 0.5 * std::max(all.height(), 1e-3 * all.width());
+  allowed_displacement_ = settings_.max_displacement_ratio * model_size_;
+  contact_distance_ = settings_.contact_distance > 0 ? settings_.contact_distance
+                                                     : 2.5 * allowed_displacement_;
+  penetration_tolerance_ = settings_.penetration_tolerance > 0
+                               ? settings_.penetration_tolerance
+                               : 1e-4 * allowed_displacement_;
+  penalty_ = settings_.penalty > 0 ? settings_.penalty : 50.0 * young_max * 1.0;
+  fixed_stiffness_ = 10.0 * penalty_;
+  dt_ = settings_.time_step;
+  vertex_forces_.resize(blocks_.size());
+}
+
+void System::set_vertex_forces(std::vector<std::vector<Point>> forces) {
+  if (forces.size() != blocks_.size())
+    throw std::invalid_argument("DDA: set_vertex_forces needs one list per block");
+  for (std::size_t b = 0; b < forces.size(); ++b)
+    if (!forces[b].empty() && forces[b].size() != blocks_[b].polygon.size())
+      throw std::invalid_argument("DDA: set_vertex_forces needs one force per vertex");
+  vertex_forces_ = std::move(forces);
+}
+
+Point System::displacement(int block) const {
+  return blocks_[block].material_centroid - blocks_[block].initial_centroid;
+}
+
+std::array<double, 3> System::stress(int block) const {
+  const Vector3& s = blocks_[block].stress;
+  return {s[0], s[1], s[2]};
+}
+
+std::array<double, 3> System::strain(int block) const {
+  const Vector3& s = blocks_[block].strain;
+  return {s[0], s[1], s[2]};
+}
+
+std::vector<ContactInfo> System::contacts() const {
+  std::vector<ContactInfo> out;
+  for (const auto& [key, r] : records_) out.push_back({key, r.state, r.penetration, r.normal_force});
+  return out;
+}
+
+std::vector<Point> System::measured_positions() const {
+  std::vector<Point> out;
+  for (const TrackedPoint& m : measured_) out.push_back(m.position);
+  return out;
+}
+
+// ---- detection and linearisation ----
+
+void System::detect_contacts() {
+  std::vector<geometry::Box> boxes;
+  std::vector<char> fixed;
+  for (const Block& b : blocks_) {
+    boxes.push_back(geometry::bounding_box(b.polygon));
+    fixed.push_back(b.dof < 0);
+  }
+  const auto pairs = find_block_pairs(boxes, contact_distance_, fixed);
+  std::vector<ContactCandidate> found;
+  for (auto [a, b] : pairs)
+    find_pair_contacts(blocks_[a].polygon, a, blocks_[b].polygon, b, contact_distance_, found);
+  std::sort(found.begin(), found.end(),
+            [](const ContactCandidate& x, const ContactCandidate& y) { return x.key < y.key; });
+  active_.clear();
+  active_.reserve(found.size());
+  for (const ContactCandidate& c : found) {
+    ActiveContact a;
+    a.key = c.key;
+    a.length = c.length;
+    if (auto it = records_.find(c.key); it != records_.end()) {
+      a.record = it->second;
+    } else {
+      a.record.state = c.penetration > 0 ? ContactState::locked : ContactState::open;
+      a.record.reference_ratio = c.edge_ratio;
+    }
+    if (a.record.state == ContactState::open) a.record.reference_ratio = c.edge_ratio;
+    active_.push_back(a);
+  }
+  linearise_contacts();
+}
+
+void System::linearise_contacts() {
+  for (ActiveContact& c : active_) {
+    const Block& bi = blocks_[c.key.block_i];
+    const Block& bj = blocks_[c.key.block_j];
+    const int nj = static_cast<int>(bj.polygon.size());
+    const Point p1 = bi.polygon[c.key.vertex];
+    const Point p2 = bj.polygon[c.key.edge];
+    const Point p3 = bj.polygon[(c.key.edge + 1) % nj];
+    const double length = geometry::distance(p2, p3);
+    const Point s = (p3 - p2) / length;
+    // Penetration d = S/L with S = x1(y2−y3) + x2(y3−y1) + x3(y1−y2) twice the signed area
+    // of (p1, p2, p3); its first-order change is ∂S/∂pk · Tk D (Shi 1988, eq. 4.12).
+    c.penetration0 = geometry::orient(p1, p2, p3) / length;
+    const Eigen::RowVector2d g1((p2.y - p3.y) / length, (p3.x - p2.x) / length);
+    const Eigen::RowVector2d g2((p3.y - p1.y) / length, (p1.x - p3.x) / length);
+    const Eigen::RowVector2d g3((p1.y - p2.y) / length, (p2.x - p1.x) / length);
+    c.en_i = (g1 * compute_displacement_matrix(p1, bi.moments.centroid)).transpose();
+    c.en_j = (g2 * compute_displacement_matrix(p2, bj.moments.centroid) +
+              g3 * compute_displacement_matrix(p3, bj.moments.centroid))
+                 .transpose();
+    // Shear: s = (p1 − p0)·t, p0 the reference point on the edge, moving with block j.
+    const Point p0 = p2 + c.record.reference_ratio * (p3 - p2);
+    const Eigen::RowVector2d t(s.x, s.y);
+    c.shear0 = dot(p1 - p0, s);
+    c.es_i = (t * compute_displacement_matrix(p1, bi.moments.centroid)).transpose();
+    c.es_j = -(t * compute_displacement_matrix(p0, bj.moments.centroid)).transpose();
+    c.dof_i = bi.dof;
+    c.dof_j = bj.dof;
+  }
+}
+
+// ---- assembly ----
+
+void System::assemble_blocks(double dt, Triplets& k_base, Eigen::VectorXd& f_base) const {
+  f_base = Eigen::VectorXd::Zero(6 * unknown_count_);
+  k_base.clear();
+  const bool dynamic = settings_.analysis == Analysis::dynamic;
+  std::vector<Matrix6> k(unknown_count_, Matrix6::Zero());
+  const auto add_spring = [&](int block, Point at, Point target_displacement) {
+    const Block& b = blocks_[block];
+    if (b.dof < 0) return;
+    const Matrix26 t = compute_displacement_matrix(at, b.moments.centroid);
+    // ½ k |T D − u*|²: stiffness k TᵀT, load k Tᵀ u*.
+    k[b.dof] += fixed_stiffness_ * t.transpose() * t;
+    f_base.segment<6>(6 * b.dof) +=
+        fixed_stiffness_ * t.transpose() * Eigen::Vector2d(target_displacement.x, target_displacement.y);
+  };
+  for (const Block& b : blocks_) {
+    if (b.dof < 0) continue;
+    const Material& mat = materials_[b.material];
+    const Moments& m = b.moments;
+    Matrix6& kb = k[b.dof];
+    auto fb = f_base.segment<6>(6 * b.dof);
+    // Elastic strain energy: A·E on the strains.
+    kb += compute_elastic_stiffness(m, elasticity_[b.material]);
+    // Initial (accumulated) stress: −A σ on the strains.
+    fb.segment<3>(3) -= m.area * b.stress;
+    // Body force: ρ A g on the translations (∫T dA has only those about the centroid).
+    fb[0] += mat.density * m.area * settings_.gravity.x;
+    fb[1] += mat.density * m.area * settings_.gravity.y;
+    // Inertia: d = vΔt + aΔt²/2 gives 2M/Δt² in K and 2M v/Δt in F.
+    const Matrix6 mass = compute_mass_matrix(m, mat.density);
+    kb += 2.0 / (dt * dt) * mass;
+    if (dynamic) fb += 2.0 / dt * mass * b.velocity;
+  }
+  for (const TrackedPoint& f : fixed_points_) add_spring(f.block, f.position, f.initial - f.position);
+  for (std::size_t i = 0; i < displacements_.size(); ++i) {
+    const PrescribedDisplacement& p = displacements_[i];
+    const TrackedPoint& tp = displacement_points_[i];
+    const double ramp = std::min(1.0, (time_ + dt) / p.ramp_time);
+    add_spring(tp.block, tp.position, tp.initial + ramp * p.value - tp.position);
+  }
+  for (std::size_t i = 0; i < point_loads_.size(); ++i) {
+    const Block& b = blocks_[load_points_[i].block];
+    if (b.dof < 0) continue;
+    const Matrix26 t = compute_displacement_matrix(load_points_[i].position, b.moments.centroid);
+    f_base.segment<6>(6 * b.dof) +=
+        t.transpose() * Eigen::Vector2d(point_loads_[i].force.x, point_loads_[i].force.y);
+  }
+  for (const EdgeTraction& tr : tractions_) {
+    const Block& b = blocks_[tr.block];
+    if (b.dof < 0) continue;
+    const int n = static_cast<int>(b.polygon.size());
+    f_base.segment<6>(6 * b.dof) += compute_edge_traction_load(
+        b.polygon[tr.edge], b.polygon[(tr.edge + 1) % n], b.moments.centroid, tr.normal_start,
+        tr.normal_end, tr.shear_start, tr.shear_end);
+  }
+  for (std::size_t bi = 0; bi < blocks_.size(); ++bi) {
+    const Block& b = blocks_[bi];
+    if (b.dof < 0 || vertex_forces_[bi].empty()) continue;
+    for (std::size_t v = 0; v < b.polygon.size(); ++v) {
+      const Point f = vertex_forces_[bi][v];
+      f_base.segment<6>(6 * b.dof) += compute_displacement_matrix(b.polygon[v], b.moments.centroid)
+                                          .transpose() * Eigen::Vector2d(f.x, f.y);
+    }
+  }
+  for (int d = 0; d < unknown_count_; ++d) add_block(k_base, d, d, k[d]);
+}
+
+void System::factor_with_contacts(const Triplets& base_entries) {
+  Triplets t = base_entries;
+  std::vector<std::pair<int, int>> pairs;
+  for (const ActiveContact& c : active_) {
+    if (!is_closed(c.record.state)) continue;
+    // Normal spring ½ p d²; locked contacts add the shear spring ½ p s².
+    const auto add_spring = [&](const Vector6& ei, const Vector6& ej) {
+      if (c.dof_i >= 0) add_block(t, c.dof_i, c.dof_i, penalty_ * ei * ei.transpose());
+      if (c.dof_j >= 0) add_block(t, c.dof_j, c.dof_j, penalty_ * ej * ej.transpose());
+      if (c.dof_i >= 0 && c.dof_j >= 0)
+        add_block(t, c.dof_i, c.dof_j, penalty_ * ei * ej.transpose());
+    };
+    add_spring(c.en_i, c.en_j);
+    if (c.record.state == ContactState::locked) add_spring(c.es_i, c.es_j);
+    if (c.dof_i >= 0 && c.dof_j >= 0)
+      pairs.emplace_back(std::min(c.dof_i, c.dof_j), std::max(c.dof_i, c.dof_j));
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  SparseMatrix k(6 * unknown_count_, 6 * unknown_count_);
+  k.setFromTriplets(t.begin(), t.end());
+  solver_->factor(k, unknown_count_, pairs);
+}
+
+Eigen::VectorXd System::assemble_contact_rhs(const Eigen::VectorXd& f_base) const {
+  Eigen::VectorXd f = f_base;
+  const double tan_phi = std::tan(joint_.friction_angle_deg * std::numbers::pi / 180.0);
+  for (const ActiveContact& c : active_) {
+    const ContactRecord& r = c.record;
+    if (!is_closed(r.state)) continue;
+    // Normal: energy λ d + ½ p d² → load −(λ + p d0) en.
+    const double normal = r.multiplier + penalty_ * c.penetration0;
+    add_segment(f, c.dof_i, -normal * c.en_i);
+    add_segment(f, c.dof_j, -normal * c.en_j);
+    if (r.state == ContactState::locked) {
+      add_segment(f, c.dof_i, -penalty_ * c.shear0 * c.es_i);
+      add_segment(f, c.dof_j, -penalty_ * c.shear0 * c.es_j);
+    } else {
+      // Sliding: Mohr–Coulomb friction f = N tan φ + c l against the sliding direction.
+      const double friction =
+          (std::max(r.normal_force, 0.0) * tan_phi + joint_.cohesion * c.length) * r.slide_sign;
+      add_segment(f, c.dof_i, -friction * c.es_i);
+      add_segment(f, c.dof_j, -friction * c.es_j);
+    }
+  }
+  return f;
+}
+
+Vector6 System::block_unknowns(const Eigen::VectorXd& d, int dof) const {
+  return dof < 0 ? Vector6::Zero() : Vector6(d.segment<6>(6 * dof));
+}
+
+double System::compute_penetration(const ActiveContact& c, const Eigen::VectorXd& d) const {
+  return c.penetration0 + c.en_i.dot(block_unknowns(d, c.dof_i)) +
+         c.en_j.dot(block_unknowns(d, c.dof_j));
+}
+
+double System::compute_shear(const ActiveContact& c, const Eigen::VectorXd& d) const {
+  return c.shear0 + c.es_i.dot(block_unknowns(d, c.dof_i)) +
+         c.es_j.dot(block_unknowns(d, c.dof_j));
+}
+
+double System::compute_normal_force(const ActiveContact& c, double penetration) const {
+  return c.record.multiplier + penalty_ * penetration;
+}
+
+double System::compute_shear_strength(const ActiveContact& c, double normal_force) const {
+  const double tan_phi = std::tan(joint_.friction_angle_deg * std::numbers::pi / 180.0);
+  return std::max(normal_force, 0.0) * tan_phi + joint_.cohesion * c.length;
+}
+
+// ---- open–close iteration ----
+
+// Pseudocode (Shi 1988 §5; Lin 1995 for the multipliers):
+//   repeat (open–close) until no contact changes state:
+//     factor K(states)
+//     repeat (Lagrangian): solve K D = F(λ, friction); λ ← λ + p d on closed contacts
+//       until every closed penetration < tolerance and the friction loads settle
+//     re-check each contact: open ↔ closed by penetration / tension, locked ↔ sliding by
+//     Mohr–Coulomb
+//   not settled in max iterations → the caller cuts Δt and retries.
+bool System::solve_step(double dt, Eigen::VectorXd& d, StepReport& report) {
+  Triplets base;
+  Eigen::VectorXd f_base;
+  assemble_blocks(dt, base, f_base);
+  const bool lagrangian = settings_.contact == ContactMethod::augmented_lagrangian;
+  for (int oc = 0; oc < settings_.max_open_close_iterations; ++oc) {
+    report.open_close_iterations = oc + 1;
+    factor_with_contacts(base);
+    for (int al = 0; al < settings_.max_lagrangian_iterations; ++al) {
+      ++report.lagrangian_iterations;
+      d = solver_->solve(assemble_contact_rhs(f_base));
+      double deepest = 0.0;
+      double force_scale = 0.0;
+      double friction_change = 0.0;
+      for (ActiveContact& c : active_) {
+        if (!is_closed(c.record.state)) continue;
+        const double pen = compute_penetration(c, d);
+        const double normal = compute_normal_force(c, pen);
+        deepest = std::max(deepest, std::abs(pen));
+        force_scale = std::max(force_scale, std::abs(normal));
+        if (c.record.state == ContactState::sliding)
+          friction_change = std::max(friction_change, std::abs(normal - c.record.normal_force));
+        c.record.normal_force = normal;
+        c.record.penetration = pen;
+      }
+      const bool penetration_ok = !lagrangian || deepest <= penetration_tolerance_;
+      const bool friction_ok = friction_change <= 1e-9 * force_scale;
+      if (penetration_ok && friction_ok) break;
+      if (!penetration_ok)
+        for (ActiveContact& c : active_)
+          if (is_closed(c.record.state)) c.record.multiplier = c.record.normal_force;
+    }
+    bool changed = false;
+    for (ActiveContact& c : active_) {
+      ContactRecord& r = c.record;
+      const double pen = compute_penetration(c, d);
+      if (r.state == ContactState::open) {
+        if (pen > 0) {
+          r.state = ContactState::locked;
+          r.multiplier = 0.0;
+          changed = true;
+        }
+        continue;
+      }
+      const double normal = compute_normal_force(c, pen);
+      if (normal < -joint_.tensile_strength * c.length - 1e-12 * penalty_ * penetration_tolerance_) {
+        r.state = ContactState::open;
+        r.multiplier = 0.0;
+        r.normal_force = 0.0;
+        changed = true;
+        continue;
+      }
+      // A small dead band keeps a contact at rest from flipping on round-off.
+      const double shear = compute_shear(c, d);
+      const double dead_band = 1e-3 * penetration_tolerance_;
+      if (r.state == ContactState::locked) {
+        if (penalty_ * (std::abs(shear) - dead_band) > compute_shear_strength(c, normal)) {
+          r.state = ContactState::sliding;
+          r.slide_sign = shear > 0 ? 1 : -1;
+          changed = true;
+        }
+      } else if (shear * r.slide_sign < -dead_band) {
+        r.state = ContactState::locked;
+        changed = true;
+      }
+    }
+    if (!changed) return true;
+    linearise_contacts();  // new shear references for contacts that closed
+  }
+  return false;
+}
+
+// ---- the step ----
+
+StepReport System::step() {
+  StepReport report;
+  dt_ = std::min(settings_.time_step, dt_);
+  for (;;) {
+    detect_contacts();
+    Eigen::VectorXd d;
+    const bool settled = solve_step(dt_, d, report);
+    double largest = 0.0;
+    if (settled) {
+      for (const Block& b : blocks_) {
+        if (b.dof < 0) continue;
+        const Vector6 db = d.segment<6>(6 * b.dof);
+        for (Point p : b.polygon)
+          largest = std::max(largest, geometry::distance(p, displace_point(p, b.moments.centroid, db)));
+      }
+    }
+    if (settled && largest <= allowed_displacement_) {
+      report.max_displacement = largest;
+      commit_step(d, dt_);
+      break;
+    }
+    ++report.retries;
+    if (report.retries > 40) throw std::runtime_error("DDA: the time step fell below any use");
+    dt_ *= settled ? std::max(0.1, 0.9 * allowed_displacement_ / largest) : 0.3;
+  }
+  report.time = time_;
+  report.time_step = dt_;
+  for (const auto& [key, r] : records_) {
+    if (!is_closed(r.state)) continue;
+    ++report.contacts;
+    report.max_penetration = std::max(report.max_penetration, r.penetration);
+  }
+  dt_ = std::min(settings_.time_step, 1.5 * dt_);
+  return report;
+}
+
+void System::commit_step(const Eigen::VectorXd& d, double dt) {
+  const bool dynamic = settings_.analysis == Analysis::dynamic;
+  const auto move = [&](TrackedPoint& tp) {
+    const Block& b = blocks_[tp.block];
+    if (b.dof >= 0) tp.position = displace_point(tp.position, b.moments.centroid, d.segment<6>(6 * b.dof));
+  };
+  for (auto* list : {&fixed_points_, &load_points_, &displacement_points_, &measured_})
+    for (TrackedPoint& tp : *list) move(tp);
+  for (Block& b : blocks_) {
+    if (b.dof < 0) continue;
+    const Vector6 db = d.segment<6>(6 * b.dof);
+    const Point c = b.moments.centroid;
+    for (Point& p : b.polygon) p = displace_point(p, c, db);
+    b.material_centroid = displace_point(b.material_centroid, c, db);
+    b.strain += db.segment<3>(3);
+    b.stress += elasticity_[b.material] * db.segment<3>(3);
+    b.rotation += db[2];
+    // Velocity at the step's end for constant acceleration: v1 = 2 d/Δt − v0.
+    b.velocity = dynamic ? Vector6(2.0 / dt * db - b.velocity) : Vector6::Zero();
+    b.moments = compute_moments(b.polygon);
+  }
+  records_.clear();
+  for (ActiveContact& c : active_) {
+    ContactRecord r = c.record;
+    r.penetration = compute_penetration(c, d);
+    if (r.state == ContactState::open) {
+      r.multiplier = 0.0;
+      r.normal_force = 0.0;
+    } else if (r.state == ContactState::sliding) {
+      // The shear reference moves to where the vertex now projects on the edge.
+      const Polygon& pj = blocks_[c.key.block_j].polygon;
+      const Point a = pj[c.key.edge];
+      const Point b = pj[(c.key.edge + 1) % pj.size()];
+      const Point p = blocks_[c.key.block_i].polygon[c.key.vertex];
+      r.reference_ratio = std::clamp(dot(p - a, b - a) / dot(b - a, b - a), 0.0, 1.0);
+    }
+    records_.emplace(c.key, r);
+  }
+  time_ += dt;
+}
+
+StepReport System::run_steps(int count) {
+  StepReport last;
+  for (int i = 0; i < count; ++i) last = step();
+  return last;
+}
+
+StepReport System::run_until(double end_time) {
+  StepReport last;
+  while (time_ < end_time - 1e-12 * std::max(1.0, end_time)) {
+    dt_ = std::min(dt_, end_time - time_);
+    last = step();
+  }
+  return last;
+}
+
+StepReport System::run_to_equilibrium(int max_steps) {
+  for (int i = 0; i < max_steps; ++i) {
+    const StepReport r = step();
+    if (r.max_displacement <= settings_.static_tolerance * model_size_) return r;
+  }
+  throw std::runtime_error("DDA: no static equilibrium within " + std::to_string(max_steps) +
+                           " steps");
+}
+
+}  // namespace hydrodda::dda

@@ -1,0 +1,157 @@
+#pragma once
+// The DDA system: blocks in frictional contact advanced one time step at a time.
+// A step reads as its stages: update bounds → find pairs → detect contacts → assemble →
+// open–close (augmented Lagrangian inside) → update geometry → report.
+
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "dda/block_kernels.hpp"
+#include "dda/contact_detection.hpp"
+#include "dda/definitions.hpp"
+#include "dda/linear_solver.hpp"
+
+namespace hydrodda::dda {
+
+enum class ContactState { open, sliding, locked };
+
+// A contact as the user sees it.
+struct ContactInfo {
+  ContactKey key;
+  ContactState state = ContactState::open;
+  double penetration = 0.0;   // > 0 overlap, < 0 gap (m)
+  double normal_force = 0.0;  // compression positive (N per metre)
+};
+
+struct StepReport {
+  double time = 0.0;          // at the end of the step
+  double time_step = 0.0;
+  int open_close_iterations = 0;
+  int lagrangian_iterations = 0;
+  int retries = 0;            // step cuts before this step settled
+  int contacts = 0;           // closed contacts at the end of the step
+  double max_displacement = 0.0;  // largest vertex displacement in the step
+  double max_penetration = 0.0;   // deepest closed contact at the end of the step
+};
+
+// Persistent contact state (Shi's contact transfer): carried between steps by key.
+struct ContactRecord {
+  ContactState state = ContactState::open;
+  double reference_ratio = 0.0;  // shear reference point on the edge
+  double multiplier = 0.0;       // augmented-Lagrangian normal force λ
+  int slide_sign = 0;            // direction of sliding along the edge
+  double normal_force = 0.0;
+  double penetration = 0.0;
+};
+
+class System {
+ public:
+  explicit System(ModelDefinition definition,
+                  std::unique_ptr<LinearSolver> solver = make_cholmod_solver());
+
+  // One time step (cut and retried as needed).
+  StepReport step();
+  // `count` steps; the last report.
+  StepReport run_steps(int count);
+  // Steps until `end_time`, the last step shortened to land on it.
+  StepReport run_until(double end_time);
+  // Static analysis: steps until the largest step displacement is below
+  // settings.static_tolerance × model size, at most max_steps; throws if it never gets there.
+  StepReport run_to_equilibrium(int max_steps);
+
+  // External forces per block per vertex (N per metre), e.g. fluid forces; replaces the last.
+  // forces[b] must be empty or hold one force per vertex of block b.
+  void set_vertex_forces(std::vector<std::vector<Point>> forces);
+
+  int block_count() const { return static_cast<int>(blocks_.size()); }
+  double time() const { return time_; }
+  const Polygon& polygon(int block) const { return blocks_[block].polygon; }
+  Point centroid(int block) const { return blocks_[block].moments.centroid; }
+  double area(int block) const { return blocks_[block].moments.area; }
+  // Displacement of the centroid since the start (the material centroid, followed).
+  Point displacement(int block) const;
+  double rotation(int block) const { return blocks_[block].rotation; }
+  // σxx, σyy, τxy (Pa), uniform in the block.
+  std::array<double, 3> stress(int block) const;
+  // εx, εy, γxy accumulated since the start.
+  std::array<double, 3> strain(int block) const;
+  std::vector<ContactInfo> contacts() const;
+  std::vector<Point> measured_positions() const;
+  double penalty() const { return penalty_; }
+  double penetration_tolerance() const { return penetration_tolerance_; }
+  double allowed_step_displacement() const { return allowed_displacement_; }
+
+ private:
+  struct Block {
+    Polygon polygon;
+    Moments moments;
+    int material = 0;
+    int dof = -1;  // first unknown ÷ 6, or −1 for a fixed block
+    Vector6 velocity = Vector6::Zero();
+    Vector3 stress = Vector3::Zero();
+    Vector3 strain = Vector3::Zero();
+    double rotation = 0.0;
+    Point material_centroid;  // the initial centroid, followed as a material point
+    Point initial_centroid;
+  };
+  struct TrackedPoint {
+    int block = 0;
+    Point position;
+    Point initial;
+  };
+  // Linearised contact (Shi 1988 §4): penetration d = d0 + en·D, shear s = s0 + es·D.
+  struct ActiveContact {
+    ContactKey key;
+    ContactRecord record;
+    double penetration0 = 0.0;
+    double shear0 = 0.0;
+    double length = 0.0;
+    Vector6 en_i = Vector6::Zero(), en_j = Vector6::Zero();
+    Vector6 es_i = Vector6::Zero(), es_j = Vector6::Zero();
+    int dof_i = -1, dof_j = -1;
+  };
+  void detect_contacts();
+  void linearise_contacts();
+  bool solve_step(double dt, Eigen::VectorXd& d, StepReport& report);
+  void assemble_blocks(double dt, std::vector<Eigen::Triplet<double>>& k_base,
+                       Eigen::VectorXd& f_base) const;
+  void factor_with_contacts(const std::vector<Eigen::Triplet<double>>& base_entries);
+  bool update_states();
+  Eigen::VectorXd assemble_contact_rhs(const Eigen::VectorXd& f_base) const;
+  Vector6 block_unknowns(const Eigen::VectorXd& d, int dof) const;
+  double compute_penetration(const ActiveContact& c, const Eigen::VectorXd& d) const;
+  double compute_shear(const ActiveContact& c, const Eigen::VectorXd& d) const;
+  double compute_normal_force(const ActiveContact& c, double penetration) const;
+  double compute_shear_strength(const ActiveContact& c, double normal_force) const;
+  void commit_step(const Eigen::VectorXd& d, double dt);
+
+  std::vector<Block> blocks_;
+  std::vector<Material> materials_;
+  std::vector<Eigen::Matrix3d> elasticity_;
+  Joint joint_;
+  Settings settings_;
+  std::vector<TrackedPoint> fixed_points_;
+  std::vector<PointLoad> point_loads_;  // point = current position
+  std::vector<TrackedPoint> load_points_;
+  std::vector<PrescribedDisplacement> displacements_;
+  std::vector<TrackedPoint> displacement_points_;
+  std::vector<EdgeTraction> tractions_;
+  std::vector<TrackedPoint> measured_;
+  std::vector<std::vector<Point>> vertex_forces_;
+  std::unique_ptr<LinearSolver> solver_;
+
+  std::map<ContactKey, ContactRecord> records_;
+  std::vector<ActiveContact> active_;
+  int unknown_count_ = 0;
+  double time_ = 0.0;
+  double dt_ = 0.0;
+  double penalty_ = 0.0;
+  double fixed_stiffness_ = 0.0;
+  double model_size_ = 0.0;
+  double allowed_displacement_ = 0.0;
+  double contact_distance_ = 0.0;
+  double penetration_tolerance_ = 0.0;
+};
+
+}  // namespace hydrodda::dda

@@ -1,0 +1,88 @@
+// Contact detection: the grid broad phase against all pairs, the narrow phase on exact cases.
+
+#include "dda/contact_detection.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "test_models.hpp"
+
+namespace hydrodda::dda {
+namespace {
+
+using geometry::Box;
+using testing::make_rectangle;
+
+// The grid finds exactly the pairs an all-pairs check finds (random boxes, sizes 0.1–3).
+TEST(ContactDetection, BroadPhaseEqualsAllPairs) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> pos(0.0, 30.0);
+  std::uniform_real_distribution<double> size(0.1, 3.0);
+  std::vector<Box> boxes;
+  for (int i = 0; i < 400; ++i) {
+    const Point lo{pos(rng), pos(rng)};
+    boxes.push_back({lo, lo + Point{size(rng), size(rng)}});
+  }
+  std::vector<char> skip(boxes.size(), 0);
+  skip[3] = skip[5] = 1;
+  const double d = 0.2;
+  std::vector<std::pair<int, int>> expected;
+  for (int i = 0; i < 400; ++i)
+    for (int j = i + 1; j < 400; ++j)
+      if (!(skip[i] && skip[j]) && boxes[i].inflated(d).overlaps(boxes[j])) expected.emplace_back(i, j);
+  EXPECT_EQ(find_block_pairs(boxes, d, skip), expected);
+}
+
+// A square resting on a wider one: its two bottom vertices touch the top edge (index 2),
+// each carrying half of the 1 m face; the lower block's top vertices are out of range.
+TEST(ContactDetection, FaceContactFindsBothVerticesWithHalfLengths) {
+  const Polygon base = make_rectangle(-5, -1, 5, 0);
+  const Polygon top = make_rectangle(0, 0.001, 1, 1.001);
+  std::vector<ContactCandidate> found;
+  find_pair_contacts(base, 0, top, 1, 0.01, found);
+  ASSERT_EQ(found.size(), 2u);
+  for (const ContactCandidate& c : found) {
+    EXPECT_EQ(c.key.block_i, 1);
+    EXPECT_EQ(c.key.block_j, 0);
+    EXPECT_EQ(c.key.edge, 2);
+    EXPECT_NEAR(c.penetration, -0.001, 1e-12);
+    EXPECT_NEAR(c.length, 0.5, 1e-12);
+  }
+}
+
+// Vertex–vertex: a wedge's corner near a square's corner from the diagonal takes one
+// entrance edge, the one whose line it is farther outside; the square's corner, whose
+// material would lie inside the wedge's edge lines, is not taken against the wedge.
+TEST(ContactDetection, VertexToVertexTakesTheEntranceEdge) {
+  const Polygon square = make_rectangle(0, 0, 1, 1);
+  // Wedge with its corner at (1.002, 1.001): farther outside x = 1 than y = 1.
+  const Polygon diamond{{1.002, 1.001}, {1.602, 1.201}, {1.602, 1.601}, {1.202, 1.601}};
+  std::vector<ContactCandidate> found;
+  find_pair_contacts(square, 0, diamond, 1, 0.01, found);
+  int from_diamond = 0;
+  for (const ContactCandidate& c : found)
+    if (c.key.block_i == 1) {
+      ++from_diamond;
+      EXPECT_EQ(c.key.edge, 1);  // the square's right edge (1,0) → (1,1)
+    }
+  EXPECT_EQ(from_diamond, 1);
+  EXPECT_EQ(found.size(), 1u);
+}
+
+// A reflex (concave) vertex never touches a face: an L-shaped block's inner corner above a
+// flat top edge is not a contact, its convex vertices are.
+TEST(ContactDetection, ReflexVertexIsNotAContact) {
+  const Polygon l_shape{{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+  const Polygon lid = make_rectangle(1.0, 1.0 + 1e-4, 3, 2);  // sits on the L's inner step
+  std::vector<ContactCandidate> found;
+  find_pair_contacts(l_shape, 0, lid, 1, 0.01, found);
+  for (const ContactCandidate& c : found)
+    if (c.key.block_i == 0) {
+      EXPECT_NE(c.key.vertex, 3) << "reflex vertex (1,1) taken";
+    }
+  EXPECT_FALSE(found.empty());
+}
+
+}  // namespace
+}  // namespace hydrodda::dda

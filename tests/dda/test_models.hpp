@@ -1,0 +1,58 @@
+#pragma once
+// Small models shared by the DDA tests.
+
+#include <cmath>
+#include <numbers>
+
+#include "dda/definitions.hpp"
+
+namespace hydrodda::dda::testing {
+
+inline Polygon make_rectangle(double x0, double y0, double x1, double y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+// A rectangle [u0,u1]×[w0,w1] in the frame of a slope at theta (t along, n normal to it).
+inline Polygon make_slope_rectangle(double theta, double u0, double w0, double u1, double w1) {
+  const Point t{std::cos(theta), std::sin(theta)};
+  const Point n{-std::sin(theta), std::cos(theta)};
+  Polygon out;
+  for (Point p : make_rectangle(u0, w0, u1, w1)) out.push_back(p.x * t + p.y * n);
+  return out;
+}
+
+// A 1 m × 1 m block (ρ 2500, E 10 GPa, ν 0.25) on a fixed 20 m incline at theta_deg.
+inline ModelDefinition make_incline(double theta_deg, double phi_deg, double cohesion) {
+  const double theta = theta_deg * std::numbers::pi / 180.0;
+  ModelDefinition m;
+  m.materials = {Material{2500.0, 1.0e10, 0.25}};
+  m.blocks.push_back({make_slope_rectangle(theta, 0.0, -1.0, 20.0, 0.0), 0, true});
+  m.blocks.push_back({make_slope_rectangle(theta, 15.0, 0.0, 16.0, 1.0), 0, false});
+  m.joint = {phi_deg, cohesion, 0.0};
+  m.settings.analysis = Analysis::dynamic;
+  m.settings.time_step = 1.0e-3;
+  return m;
+}
+
+// A staggered brick wall of rows × cols 2 m × 1 m bricks on a fixed base, as the peer
+// generator brickwall.py writes it.
+inline ModelDefinition make_brick_wall(int rows, int cols) {
+  ModelDefinition m;
+  m.materials = {Material{2500.0, 1.0e10, 0.25}};
+  m.joint = {30.0, 0.0, 0.0};
+  m.blocks.push_back({make_rectangle(-1.0, -1.0, 2.0 * cols + 2, 0.0), 0, true});
+  for (int r = 0; r < rows; ++r) {
+    const double off = r % 2 == 0 ? 0.0 : 1.0;
+    std::vector<double> edges{0.0};
+    for (int k = 1; k <= cols; ++k)
+      if (off + 2.0 * k < 2.0 * cols) edges.push_back(off + 2.0 * k);
+    edges.push_back(2.0 * cols);
+    for (std::size_t k = 0; k + 1 < edges.size(); ++k)
+      if (edges[k + 1] > edges[k]) m.blocks.push_back({make_rectangle(edges[k], r, edges[k + 1], r + 1.0), 0, false});
+  }
+  m.settings.analysis = Analysis::static_;
+  m.settings.time_step = 1.0e-3;
+  return m;
+}
+
+}  // namespace hydrodda::dda::testing

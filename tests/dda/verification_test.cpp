@@ -1,0 +1,155 @@
+// Verification of the DDA engine against analytic solutions (DESIGN.md §2.1). Each test
+// states its formula and tolerance; tolerances are the and are not to be loosened.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <numbers>
+
+#include "dda/system.hpp"
+#include "test_models.hpp"
+
+namespace hydrodda::dda {
+namespace {
+
+using testing::make_brick_wall;
+using testing::make_incline;
+using testing::make_rectangle;
+
+constexpr double kG = 9.81;
+constexpr double kPi = std::numbers::pi;
+
+// Runs to end_time and checks after every step that no closed contact penetrates deeper than
+// the engine's stated tolerance (verification 6).
+void run_checking_penetration(System& system, double end_time) {
+  while (system.time() < end_time - 1e-12) {
+    const StepReport r = system.run_until(std::min(end_time, system.time() + 1e-3));
+    ASSERT_LE(r.max_penetration, system.penetration_tolerance()) << "t = " << r.time;
+  }
+}
+
+struct SlideCase {
+  double theta_deg;
+  double phi_deg;
+  double cohesion;
+};
+
+class SlidingBlock : public ::testing::TestWithParam<SlideCase> {};
+
+// Block sliding down an incline, dynamic analysis. Along the slope
+//   m a = m g sin θ − m g cos θ tan φ − c L   →   d(t) = ½ a t²,
+// with m = ρ A (A = 1 m², L = 1 m the contact length). Tolerance 1% at t = 1 s.
+TEST_P(SlidingBlock, MatchesAnalyticDisplacementWithinOnePercent) {
+  const SlideCase c = GetParam();
+  System system(make_incline(c.theta_deg, c.phi_deg, c.cohesion));
+  run_checking_penetration(system, 1.0);
+  const double theta = c.theta_deg * kPi / 180.0;
+  const double phi = c.phi_deg * kPi / 180.0;
+  const double a = kG * (std::sin(theta) - std::cos(theta) * std::tan(phi)) - c.cohesion * 1.0 / 2500.0;
+  const double expected = 0.5 * a * 1.0 * 1.0;
+  const Point u = system.displacement(1);
+  EXPECT_NEAR(geometry::norm(u), expected, 0.01 * expected);
+  EXPECT_LT(u.x, 0.0);  // downhill
+}
+
+INSTANTIATE_TEST_SUITE_P(Verification, SlidingBlock,
+                         ::testing::Values(SlideCase{30.0, 20.0, 0.0}, SlideCase{40.0, 30.0, 0.0},
+                                           SlideCase{25.0, 10.0, 0.0},
+                                           SlideCase{30.0, 20.0, 1000.0}));
+
+// φ > θ: friction holds the block; it moves less than 1e-4 of its 1 m size in 1 s.
+TEST(Verification, BlockStaysPutWhenFrictionExceedsSlope) {
+  System system(make_incline(20.0, 30.0, 0.0));
+  run_checking_penetration(system, 1.0);
+  EXPECT_LT(geometry::norm(system.displacement(1)), 1e-4 * 1.0);
+}
+
+// Free fall: d(t) = ½ g t², within 0.1% at t = 1 s.
+TEST(Verification, FreeFallMatchesHalfGTSquared) {
+  ModelDefinition m;
+  m.materials = {Material{}};
+  m.blocks.push_back({make_rectangle(0, 0, 1, 1), 0, false});
+  m.settings.analysis = Analysis::dynamic;
+  m.settings.max_displacement_ratio = 1.0;
+  System system(std::move(m));
+  system.run_until(1.0);
+  EXPECT_NEAR(-system.displacement(0).y, 0.5 * kG, 1e-3 * 0.5 * kG);
+  EXPECT_NEAR(system.displacement(0).x, 0.0, 1e-12);
+}
+
+// Ten 1 m blocks stacked on a fixed base, static: the mean vertical stress of a block is
+// σyy = −ρ g × (depth of its centroid below the top), within 1%.
+TEST(Verification, StackedColumnCarriesRhoGDepth) {
+  ModelDefinition m;
+  m.materials = {Material{2500.0, 1.0e10, 0.25}};
+  m.blocks.push_back({make_rectangle(-1, -1, 2, 0), 0, true});
+  for (int k = 0; k < 10; ++k) m.blocks.push_back({make_rectangle(0, k, 1, k + 1), 0, false});
+  m.settings.analysis = Analysis::static_;
+  m.settings.time_step = 1e-2;
+  System system(std::move(m));
+  for (int i = 0; i < 400; ++i) {
+    const StepReport r = system.step();
+    ASSERT_LE(r.max_penetration, system.penetration_tolerance());
+  }
+  for (int k = 0; k < 10; ++k) {
+    const double depth = 10.0 - (k + 0.5);
+    const double expected = -2500.0 * kG * depth;
+    EXPECT_NEAR(system.stress(k + 1)[1], expected, 0.01 * std::abs(expected)) << "block " << k;
+  }
+}
+
+class ElasticBlock : public ::testing::TestWithParam<Plane> {};
+
+// A 1 m block on a fixed base (frictionless joint, so it expands freely sideways) under a
+// top traction σ = −1 MPa, static: εy = σ / E′ with E′ = E (plane stress) or E/(1 − ν²)
+// (plane strain), within 0.5%.
+TEST_P(ElasticBlock, StrainIsStressOverEPrime) {
+  const Plane plane = GetParam();
+  ModelDefinition m;
+  m.materials = {Material{2500.0, 1.0e10, 0.25}};
+  m.blocks.push_back({make_rectangle(-1, -1, 2, 0), 0, true});
+  m.blocks.push_back({make_rectangle(0, 0, 1, 1), 0, false});
+  m.joint = {0.0, 0.0, 0.0};
+  m.tractions.push_back({1, 2, -1.0e6, -1.0e6, 0.0, 0.0});
+  m.settings.analysis = Analysis::static_;
+  m.settings.plane = plane;
+  m.settings.gravity = {0.0, 0.0};
+  m.settings.time_step = 1e-2;
+  System system(std::move(m));
+  for (int i = 0; i < 200; ++i) {
+    const StepReport r = system.step();
+    ASSERT_LE(r.max_penetration, system.penetration_tolerance());
+  }
+  const double nu = 0.25;
+  const double e_prime = plane == Plane::stress ? 1.0e10 : 1.0e10 / (1 - nu * nu);
+  const double expected = -1.0e6 / e_prime;
+  EXPECT_NEAR(system.strain(1)[1], expected, 0.005 * std::abs(expected));
+  EXPECT_NEAR(system.stress(1)[1], -1.0e6, 0.005 * 1.0e6);
+}
+
+INSTANTIATE_TEST_SUITE_P(Verification, ElasticBlock,
+                         ::testing::Values(Plane::strain, Plane::stress));
+
+// A 61-block brick wall run twice gives bitwise identical vertices.
+TEST(Verification, BrickWallRunIsBitwiseReproducible) {
+  const auto run = [] {
+    System system(make_brick_wall(6, 10));
+    system.run_steps(20);
+    std::vector<double> coords;
+    for (int b = 0; b < system.block_count(); ++b)
+      for (Point p : system.polygon(b)) {
+        coords.push_back(p.x);
+        coords.push_back(p.y);
+      }
+    return coords;
+  };
+  const auto first = run();
+  const auto second = run();
+  ASSERT_GE(first.size(), 50u * 8u);
+  ASSERT_EQ(first.size(), second.size());
+  EXPECT_EQ(std::memcmp(first.data(), second.data(), first.size() * sizeof(double)), 0);
+}
+
+}  // namespace
+}  // namespace hydrodda::dda
