@@ -2,21 +2,27 @@
 #include <spdlog/spdlog.h>
 #include <unistd.h>
 
-#include <cstdio>
-
 #include "cli/app.hpp"
 #include "cli/commands.hpp"
+#include "cli/interrupt.hpp"
+#include "cli/runs.hpp"
 #include "cli/scenario_loading.hpp"
 #include "output/run_folder.hpp"
+#include "scenario/diagnostics.hpp"
 
 namespace hydrodda::cli {
 
 namespace {
 // A part of the model whose engine is not built in yet: an explicit error, never a silent zero.
 std::optional<std::string> missing_engine(const scenario::Scenario& s) {
-  if (s.mechanics) return "mechanics is not available yet";
-  if (s.flow) return "flow is not available yet";
+  if (s.flow) return "flow runs are not available yet";
+  if (s.geometry && !s.geometry->domain.empty())
+    return "cutting a domain into blocks is not available yet: give the blocks one by one";
   return std::nullopt;
+}
+
+void write_summary(const output::RunFolder& folder, const output::RunSummary& summary) {
+  folder.write("summary.json", output::format_summary(summary));
 }
 }  // namespace
 
@@ -35,15 +41,38 @@ int run_command(const RunOptions& options) {
     spdlog::error("{}: {}", options.scenario.string(), *missing);
     return kRunFailed;
   }
+
+  std::optional<output::RunFolder> folder;
   try {
-    output::RunFolder folder(directory, policy);
-    Progress progress(options.verbosity, ::isatty(STDERR_FILENO) == 1);
-    (void)progress;
-    spdlog::error("no engine can run {}", options.scenario.string());
-    return kRunFailed;
+    folder.emplace(directory, policy);
   } catch (const output::RunFolderError& e) {
     spdlog::error("{}", e.what());
     return kBadInput;
+  }
+  install_interrupt_handlers();
+  Progress progress(options.verbosity, ::isatty(STDERR_FILENO) == 1);
+  const RunContext context{*scenario, *folder, progress};
+  try {
+    const output::RunSummary summary = run_mechanics(context);
+    write_summary(*folder, summary);
+    progress.finish();
+    spdlog::info("{} after {} steps; results in {}", summary.converged ? "finished" : "not converged",
+                 summary.iterations, folder->path().string());
+    return kSuccess;
+  } catch (const scenario::ScenarioError& e) {
+    // Found while building the model: still bad input. The folder holds nothing of ours.
+    progress.finish();
+    for (const scenario::Diagnostic& d : e.diagnostics()) spdlog::error("{}", d.format());
+    return kBadInput;
+  } catch (const RunFailure& failure) {
+    progress.finish();
+    output::RunSummary summary = failure.summary();
+    summary.converged = false;
+    summary.status = "failed";
+    summary.message = failure.what();
+    write_summary(*folder, summary);
+    spdlog::error("{}; the last good state is in {}", failure.what(), folder->path().string());
+    return kRunFailed;
   }
 }
 

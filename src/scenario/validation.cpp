@@ -133,7 +133,12 @@ void resolve_materials(ReadContext& ctx, const TableView& root, Scenario& s) {
       ctx.error(b.line, "geometry.block.material", message);
     }
   }
-  const bool needs_material = s.mechanics || s.flow;
+  // Flow alone can do without a material when regions fix the permeability; whether they
+  // cover the whole domain is checked on the mesh.
+  bool permeability_fixed = false;
+  if (s.flow)
+    for (const FlowRegion& r : s.flow->regions) permeability_fixed = permeability_fixed || r.permeability;
+  const bool needs_material = s.mechanics || (s.flow && !permeability_fixed);
   if (needs_material && s.materials.empty())
     ctx.error(root.line(), "material", "no material is defined: add a [material.NAME] table");
   if (!s.geometry->domain.empty() && s.materials.size() > 1)

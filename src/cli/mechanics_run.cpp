@@ -1,0 +1,111 @@
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+
+#include "cli/interrupt.hpp"
+#include "cli/model_building.hpp"
+#include "cli/runs.hpp"
+#include "dda/system.hpp"
+#include "output/csv_table.hpp"
+
+namespace hydrodda::cli {
+
+namespace {
+
+using output::CsvTable;
+using geometry::Point;
+
+output::RunSummary summarise(const scenario::Scenario& s, const dda::System& system) {
+  output::RunSummary summary;
+  summary.title = s.title;
+  summary.scenario = s.file.string();
+  for (int b = 0; b < system.block_count(); ++b) {
+    const Point c = system.centroid(b);
+    const Point u = system.displacement(b);
+    summary.blocks.push_back({b, {c.x, c.y}, {u.x, u.y}, system.rotation(b), system.stress(b), system.area(b)});
+  }
+  const auto positions = system.measured_positions();
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    const Point start = s.mechanics->measures[i].point;
+    summary.measures.push_back({s.mechanics->measures[i].name,
+                                {positions[i].x, positions[i].y},
+                                {positions[i].x - start.x, positions[i].y - start.y}});
+  }
+  return summary;
+}
+
+}  // namespace
+
+output::RunSummary run_mechanics(const RunContext& context) {
+  const scenario::Scenario& s = context.scenario;
+  const scenario::MechanicsDefinition& m = *s.mechanics;
+  const auto start = std::chrono::steady_clock::now();
+
+  dda::System system(build_mechanics_model(s, build_blocks(s)));
+  spdlog::info("mechanics: {} blocks, penalty {:.3g} N/m, allowed step displacement {:.3g} m",
+               system.block_count(), system.penalty(), system.allowed_step_displacement());
+
+  CsvTable history({"step", "time", "time_step", "open_close_iterations", "contacts",
+                    "max_displacement", "max_penetration"});
+  CsvTable measure({"step", "time", "name", "x", "y", "ux", "uy"});
+  const auto write_tables = [&] {
+    context.folder.write("history.csv", history.text());
+    if (!m.measures.empty()) context.folder.write("measure.csv", measure.text());
+  };
+
+  const double end_time = mechanics_duration(m);
+  const int max_steps = m.steps.value_or(0);
+  long long step = 0;
+  // Time-step control may shorten steps, so a run by `end_time` goes on until that time;
+  // a run by `steps` takes exactly that many.
+  const auto more = [&] {
+    return m.steps ? step < max_steps : system.time() < end_time * (1.0 - 1e-12);
+  };
+  try {
+    while (more()) {
+      if (interrupt_requested()) {
+        write_tables();
+        output::RunSummary summary = summarise(s, system);
+        summary.iterations = static_cast<int>(step);
+        throw RunFailure(fmt::format("interrupted at step {} (t = {:g} s)", step, system.time()), summary);
+      }
+      const dda::StepReport r = m.steps ? system.step() : system.run_until(std::min(end_time, system.time() + m.time_step));
+      ++step;
+      history.add_row({CsvTable::cell(step), CsvTable::cell(r.time), CsvTable::cell(r.time_step),
+                       CsvTable::cell(static_cast<long long>(r.open_close_iterations)),
+                       CsvTable::cell(static_cast<long long>(r.contacts)), CsvTable::cell(r.max_displacement),
+                       CsvTable::cell(r.max_penetration)});
+      const auto positions = system.measured_positions();
+      for (std::size_t i = 0; i < positions.size(); ++i) {
+        const Point p0 = m.measures[i].point;
+        measure.add_row({CsvTable::cell(step), CsvTable::cell(r.time), m.measures[i].name,
+                         CsvTable::cell(positions[i].x), CsvTable::cell(positions[i].y),
+                         CsvTable::cell(positions[i].x - p0.x), CsvTable::cell(positions[i].y - p0.y)});
+      }
+      if (step % 100 == 0) write_tables();
+      context.progress.update(fmt::format("step {} t = {:.4g} s, {} contacts, max step displacement {:.3g} m",
+                                          step, r.time, r.contacts, r.max_displacement));
+    }
+  } catch (const RunFailure&) {
+    throw;
+  } catch (const std::exception& e) {
+    write_tables();
+    output::RunSummary summary = summarise(s, system);
+    summary.iterations = static_cast<int>(step);
+    throw RunFailure(fmt::format("mechanics failed at step {} (t = {:g} s): {}", step + 1, system.time(), e.what()),
+                     summary);
+  }
+  write_tables();
+  context.progress.finish();
+
+  output::RunSummary summary = summarise(s, system);
+  // Mechanics alone has no coupling loop: `converged` says the run reached its end.
+  summary.converged = true;
+  summary.iterations = static_cast<int>(step);
+  summary.timings.push_back(
+      {"mechanics", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
+  return summary;
+}
+
+}  // namespace hydrodda::cli

@@ -1,0 +1,130 @@
+#include "cli/model_building.hpp"
+
+#include <fmt/format.h>
+
+#include "dda/selection.hpp"
+#include "scenario/diagnostics.hpp"
+
+namespace hydrodda::cli {
+
+namespace {
+
+using scenario::Diagnostic;
+using scenario::Scenario;
+using geometry::Point;
+
+// Distance within which a point counts as on a boundary or in a block: a relative 1e-9 of the
+// model's size, far below any geometric feature and far above round-off.
+double geometric_tolerance(const std::vector<dda::BlockDefinition>& blocks) {
+  geometry::Box box;
+  for (const auto& b : blocks)
+    for (Point p : b.polygon) box.add(p);
+  return 1e-9 * std::max(box.width(), box.height());
+}
+
+// The block that holds p (inside or on its boundary); -1 when none does.
+int find_block(const std::vector<dda::BlockDefinition>& blocks, Point p, double tolerance) {
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    const geometry::Polygon& poly = blocks[i].polygon;
+    if (geometry::contains(poly, p)) return static_cast<int>(i);
+    for (std::size_t v = 0; v < poly.size(); ++v)
+      if (geometry::distance_to_segment(p, poly[v], poly[(v + 1) % poly.size()]) <= tolerance)
+        return static_cast<int>(i);
+  }
+  return -1;
+}
+
+int material_index(const Scenario& s, const std::string& name) {
+  for (std::size_t i = 0; i < s.materials.size(); ++i)
+    if (s.materials[i].name == name) return static_cast<int>(i);
+  return 0;
+}
+
+}  // namespace
+
+std::vector<dda::BlockDefinition> build_blocks(const Scenario& s) {
+  std::vector<dda::BlockDefinition> blocks;
+  if (!s.geometry) return blocks;
+  if (!s.geometry->domain.empty())
+    throw std::runtime_error("cutting a domain into blocks is not available yet: give the blocks "
+                             "one by one with [[geometry.block]]");
+  for (const scenario::BlockDefinition& b : s.geometry->blocks) {
+    dda::BlockDefinition block;
+    block.polygon = b.vertices;
+    block.material = material_index(s, b.material);
+    block.fixed = b.fixed;
+    blocks.push_back(std::move(block));
+  }
+  return blocks;
+}
+
+double mechanics_duration(const scenario::MechanicsDefinition& m) {
+  return m.end_time ? *m.end_time : m.time_step * static_cast<double>(m.steps.value_or(1));
+}
+
+dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::BlockDefinition> blocks) {
+  const scenario::MechanicsDefinition& m = *s.mechanics;
+  const std::string file = s.file.string();
+  std::vector<Diagnostic> errors;
+  const double tolerance = geometric_tolerance(blocks);
+  const auto point_text = [](Point p) { return fmt::format("({:g}, {:g})", p.x, p.y); };
+
+  dda::ModelDefinition model;
+  for (const scenario::MaterialDefinition& mat : s.materials)
+    model.materials.push_back({mat.density.value_or(0.0), mat.young.value_or(0.0), mat.poisson.value_or(0.0)});
+  model.joint = {s.joint.friction_angle, s.joint.cohesion, s.joint.tensile_strength};
+
+  dda::Settings& settings = model.settings;
+  settings.analysis = m.analysis == scenario::Analysis::Dynamic ? dda::Analysis::dynamic : dda::Analysis::static_;
+  settings.plane = m.plane == scenario::Plane::Stress ? dda::Plane::stress : dda::Plane::strain;
+  settings.gravity = m.gravity;
+  settings.time_step = m.time_step;
+  settings.max_displacement_ratio = m.max_displacement_ratio;
+  settings.contact = m.contact == scenario::ContactMethod::Penalty ? dda::ContactMethod::penalty
+                                                                   : dda::ContactMethod::augmented_lagrangian;
+  settings.penalty = m.penalty.value_or(0.0);
+
+  const double ramp_time = mechanics_duration(m);
+  for (const scenario::FixedPoint& f : m.fixed) {
+    const int block = find_block(blocks, f.point, tolerance);
+    if (block < 0) errors.push_back({file, f.line, "mechanics.fixed.point", fmt::format("{} lies in no block", point_text(f.point))});
+    else model.fixed_points.push_back({block, f.point});
+  }
+  for (const scenario::PointLoad& l : m.loads) {
+    const int block = find_block(blocks, l.point, tolerance);
+    if (block < 0) errors.push_back({file, l.line, "mechanics.load.point", fmt::format("{} lies in no block", point_text(l.point))});
+    else model.point_loads.push_back({block, l.point, l.force});
+  }
+  for (const scenario::PrescribedDisplacement& d : m.displacements) {
+    if (d.point) {
+      const int block = find_block(blocks, *d.point, tolerance);
+      if (block < 0) errors.push_back({file, d.line, "mechanics.displacement.point", fmt::format("{} lies in no block", point_text(*d.point))});
+      else model.displacements.push_back({block, *d.point, d.value, ramp_time});
+      continue;
+    }
+    const scenario::BoundarySegment* boundary = s.find_boundary(d.boundary);
+    const auto vertices = dda::select_vertices_on_segment(blocks, boundary->segment.from, boundary->segment.to, tolerance);
+    if (vertices.empty())
+      errors.push_back({file, d.line, "mechanics.displacement.boundary", fmt::format("no block vertex lies on boundary \"{}\"", d.boundary)});
+    for (const dda::VertexRef& v : vertices)
+      model.displacements.push_back({v.block, blocks[v.block].polygon[v.vertex], d.value, ramp_time});
+  }
+  for (const scenario::Traction& t : m.tractions) {
+    const scenario::BoundarySegment* boundary = s.find_boundary(t.boundary);
+    auto tractions = dda::make_tractions_on_segment(blocks, boundary->segment.from, boundary->segment.to, tolerance,
+                                                    t.normal, t.normal_end, t.shear, t.shear_end);
+    if (tractions.empty())
+      errors.push_back({file, t.line, "mechanics.traction.boundary", fmt::format("no block edge lies on boundary \"{}\"", t.boundary)});
+    model.tractions.insert(model.tractions.end(), tractions.begin(), tractions.end());
+  }
+  for (const scenario::MeasurePoint& p : m.measures) {
+    const int block = find_block(blocks, p.point, tolerance);
+    if (block < 0) errors.push_back({file, p.line, "mechanics.measure.point", fmt::format("{} lies in no block", point_text(p.point))});
+    else model.measured_points.push_back({block, p.point});
+  }
+  if (!errors.empty()) throw scenario::ScenarioError(std::move(errors));
+  model.blocks = std::move(blocks);
+  return model;
+}
+
+}  // namespace hydrodda::cli

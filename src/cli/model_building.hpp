@@ -1,0 +1,24 @@
+#pragma once
+// From a validated scenario to engine inputs. Problems only visible once the model is built
+// (a fixed point in no block, a boundary that touches no block) are input errors: they are
+// thrown as a ScenarioError naming the file, line and key, like the reader's.
+
+#include <vector>
+
+#include "dda/definitions.hpp"
+#include "scenario/scenario.hpp"
+
+namespace hydrodda::cli {
+
+// The block polygons of the scenario (counter-clockwise), with their material index and
+// fixed flag, in the order the scenario defines them.
+std::vector<dda::BlockDefinition> build_blocks(const scenario::Scenario& scenario);
+
+// The DDA model: blocks, materials, joint, settings and every load of [mechanics].
+dda::ModelDefinition build_mechanics_model(const scenario::Scenario& scenario,
+                                           std::vector<dda::BlockDefinition> blocks);
+
+// Total simulated time of a mechanics run: end_time, or steps × time_step.
+double mechanics_duration(const scenario::MechanicsDefinition& mechanics);
+
+}  // namespace hydrodda::cli
