@@ -85,6 +85,17 @@ void BM_GenerateMesh(benchmark::State& state) {
   set_mesh_counters(state, m);
 }
 
+// Gmsh's 2D algorithms on the same request (about 1e5 triangles): 1 MeshAdapt, 5 Delaunay,
+// 6 Frontal-Delaunay.
+void BM_GenerateMeshAlgorithm(benchmark::State& state) {
+  auto request = make_three_fractures(8200e-6);
+  request.algorithm = static_cast<int>(state.range(0));
+  mesh::TriangleMesh m;
+  for (auto _ : state) m = mesh::generate_mesh(request);
+  set_mesh_counters(state, m);
+}
+BENCHMARK(BM_GenerateMeshAlgorithm)->Arg(1)->Arg(5)->Arg(6)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
+
 void BM_SetupSolver(benchmark::State& state, const mesh::TriangleMesh& m) {
   for (auto _ : state) {
     hydro::DarcySolver solver(m, make_problem(), make_solver());
