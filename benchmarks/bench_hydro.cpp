@@ -8,6 +8,7 @@
 //   HYDRODDA_PEER_MESH=case/mesh.msh build/bin/bench_hydro --benchmark_filter=PeerMesh
 //                                                 # the peer benchmark's own mesh file
 // Run with OMP_THREAD_LIMIT=1 OPENBLAS_NUM_THREADS=1 to compare with one-thread peers.
+// HYDRODDA_ORDERING=automatic selects CHOLMOD's automatic (AMD) ordering instead of METIS.
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -65,6 +66,13 @@ std::vector<double> make_permeability(const mesh::TriangleMesh& m, double strip_
   return k;
 }
 
+std::unique_ptr<hydro::LinearSolver> make_solver() {
+  const char* ordering = std::getenv("HYDRODDA_ORDERING");
+  return hydro::make_cholmod_solver(ordering && std::string(ordering) == "automatic"
+                                        ? hydro::FillOrdering::automatic
+                                        : hydro::FillOrdering::metis);
+}
+
 void set_mesh_counters(benchmark::State& state, const mesh::TriangleMesh& m) {
   state.counters["triangles"] = m.triangle_count();
   state.counters["nodes"] = m.node_count();
@@ -77,9 +85,20 @@ void BM_GenerateMesh(benchmark::State& state) {
   set_mesh_counters(state, m);
 }
 
+// Gmsh's 2D algorithms on the same request (about 1e5 triangles): 1 MeshAdapt, 5 Delaunay,
+// 6 Frontal-Delaunay.
+void BM_GenerateMeshAlgorithm(benchmark::State& state) {
+  auto request = make_three_fractures(8200e-6);
+  request.algorithm = static_cast<int>(state.range(0));
+  mesh::TriangleMesh m;
+  for (auto _ : state) m = mesh::generate_mesh(request);
+  set_mesh_counters(state, m);
+}
+BENCHMARK(BM_GenerateMeshAlgorithm)->Arg(1)->Arg(5)->Arg(6)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
+
 void BM_SetupSolver(benchmark::State& state, const mesh::TriangleMesh& m) {
   for (auto _ : state) {
-    hydro::DarcySolver solver(m, make_problem());
+    hydro::DarcySolver solver(m, make_problem(), make_solver());
     benchmark::DoNotOptimize(solver.unknown_count());
   }
   set_mesh_counters(state, m);
@@ -88,7 +107,7 @@ void BM_SetupSolver(benchmark::State& state, const mesh::TriangleMesh& m) {
 // One coupling iteration's flow solve: new permeabilities (alternating k_f and 2 k_f so
 // that every pass really refactors), everything after the set-up.
 void BM_Solve(benchmark::State& state, const mesh::TriangleMesh& m) {
-  hydro::DarcySolver solver(m, make_problem());
+  hydro::DarcySolver solver(m, make_problem(), make_solver());
   const std::vector<double> k1 = make_permeability(m, kStripK), k2 = make_permeability(m, 2 * kStripK);
   hydro::SolveTimings sum;
   double balance = 0.0, refinements = 0.0, flow = 0.0;

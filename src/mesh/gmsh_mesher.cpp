@@ -186,6 +186,8 @@ void check_request(const MeshRequest& request) {
   check_polygon(request.domain, "mesh domain");
   for (const NamedPolygon& r : request.regions) check_polygon(r.polygon, "region '" + r.name + "'");
   if (!(request.size > 0.0)) throw std::runtime_error("mesh size must be positive");
+  if (request.algorithm != 1 && request.algorithm != 5 && request.algorithm != 6)
+    throw std::runtime_error("mesh algorithm must be 1 (MeshAdapt), 5 (Delaunay) or 6 (Frontal-Delaunay)");
   if (!request.refinement_lines.empty()) {
     if (!(request.fracture_size > 0.0)) throw std::runtime_error("mesh fracture_size must be positive");
     if (!(request.refine_distance > 0.0))
@@ -242,8 +244,7 @@ TriangleMesh generate_mesh(const MeshRequest& request) {
   });
 
   call_gmsh("Gmsh could not mesh the domain", [&] {
-    // Delaunay (5): measured fastest in 2D on this kind of mesh (docs/performance.md).
-    gmsh::option::setNumber("Mesh.Algorithm", 5);
+    gmsh::option::setNumber("Mesh.Algorithm", request.algorithm);
     gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
     gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
     gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);

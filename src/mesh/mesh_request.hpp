@@ -34,6 +34,9 @@ struct MeshRequest {
   double size = 0.1;                     // element size far from the refinement lines (m)
   double fracture_size = 0.01;           // element size on the refinement lines (m)
   double refine_distance = 0.2;          // distance over which the size grows back (m)
+  // Gmsh's 2D algorithm: 5 "Delaunay" (default: fastest measured, docs/performance.md),
+  // 6 "Frontal-Delaunay", 1 "MeshAdapt".
+  int algorithm = 5;
   bool verbose = false;                  // let Gmsh print to the terminal
 };
 

@@ -9,6 +9,7 @@
 #include "flow_test_meshes.hpp"
 #include "hydro/darcy_solver.hpp"
 #include "hydro/p1_element.hpp"
+#include "hydro/region_permeability.hpp"
 
 namespace hydrodda::hydro {
 namespace {
@@ -99,6 +100,27 @@ TEST(DarcySolver, RepeatedSolvesAreBitIdentical) {
   EXPECT_EQ(sa.head, sb.head);
   EXPECT_EQ(sa.head, sa2.head);
   EXPECT_LE(sa.balance_error, 1e-10);
+}
+
+}  // namespace
+}  // namespace hydrodda::hydro
+
+namespace hydrodda::hydro {
+namespace {
+
+TEST(RegionPermeability, AssignsPerRegionAndNamesGaps) {
+  mesh::TriangleMesh m;
+  m.nodes = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  m.triangles = {{0, 1, 2}, {0, 2, 3}};
+  m.region = {0, 1};
+  m.region_names = {"domain", "seam"};
+  const auto k = assign_region_permeability(m, {{"domain", 1e-15}, {"seam", 1e-9}});
+  EXPECT_EQ(k, (std::vector<double>{1e-15, 1e-9}));
+  EXPECT_NE(message_of([&] { assign_region_permeability(m, {{"seam", 1e-9}}); }).find("'domain'"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] { assign_region_permeability(m, {{"core", 1e-9}}); }).find("'core'"),
+            std::string::npos);
+  EXPECT_THROW(assign_region_permeability(m, {{"domain", -1.0}, {"seam", 1.0}}), std::runtime_error);
 }
 
 }  // namespace
