@@ -13,10 +13,11 @@
 namespace hydrodda::cli {
 
 namespace {
+
 // A part of the model whose engine is not built in yet: an explicit error, never a silent zero.
 std::optional<std::string> missing_engine(const scenario::Scenario& s) {
-  if (s.flow) return "flow runs are not available yet";
-  if (s.geometry && !s.geometry->domain.empty())
+  if (s.flow && s.mechanics) return "coupled runs are not available yet";
+  if (s.mechanics && s.geometry && !s.geometry->domain.empty())
     return "cutting a domain into blocks is not available yet: give the blocks one by one";
   return std::nullopt;
 }
@@ -24,6 +25,19 @@ std::optional<std::string> missing_engine(const scenario::Scenario& s) {
 void write_summary(const output::RunFolder& folder, const output::RunSummary& summary) {
   folder.write("summary.json", output::format_summary(summary));
 }
+
+// A run that stopped: summary.json says so (converged = false, what failed), exit code 1.
+int report_failure(const output::RunFolder& folder, Progress& progress, const std::string& what,
+                   output::RunSummary summary) {
+  progress.finish();
+  summary.converged = false;
+  summary.status = "failed";
+  summary.message = what;
+  write_summary(folder, summary);
+  spdlog::error("{}; the last good state is in {}", what, folder.path().string());
+  return kRunFailed;
+}
+
 }  // namespace
 
 int run_command(const RunOptions& options) {
@@ -53,26 +67,25 @@ int run_command(const RunOptions& options) {
   Progress progress(options.verbosity, ::isatty(STDERR_FILENO) == 1);
   const RunContext context{*scenario, *folder, progress};
   try {
-    const output::RunSummary summary = run_mechanics(context);
+    const output::RunSummary summary = scenario->mechanics ? run_mechanics(context) : run_flow(context);
     write_summary(*folder, summary);
     progress.finish();
-    spdlog::info("{} after {} steps; results in {}", summary.converged ? "finished" : "not converged",
-                 summary.iterations, folder->path().string());
+    spdlog::info("{}; results in {}", summary.converged ? "finished" : "not converged",
+                 folder->path().string());
     return kSuccess;
   } catch (const scenario::ScenarioError& e) {
-    // Found while building the model: still bad input. The folder holds nothing of ours.
+    // Found while building the model: still bad input.
     progress.finish();
     for (const scenario::Diagnostic& d : e.diagnostics()) spdlog::error("{}", d.format());
     return kBadInput;
   } catch (const RunFailure& failure) {
-    progress.finish();
-    output::RunSummary summary = failure.summary();
-    summary.converged = false;
-    summary.status = "failed";
-    summary.message = failure.what();
-    write_summary(*folder, summary);
-    spdlog::error("{}; the last good state is in {}", failure.what(), folder->path().string());
-    return kRunFailed;
+    return report_failure(*folder, progress, failure.what(), failure.summary());
+  } catch (const std::exception& e) {
+    // A failure before any result exists (meshing, a singular system): reported, never hidden.
+    output::RunSummary summary;
+    summary.title = scenario->title;
+    summary.scenario = scenario->file.string();
+    return report_failure(*folder, progress, e.what(), summary);
   }
 }
 

@@ -28,5 +28,6 @@ class RunFailure : public std::runtime_error {
 };
 
 output::RunSummary run_mechanics(const RunContext& context);
+output::RunSummary run_flow(const RunContext& context);
 
 }  // namespace hydrodda::cli
