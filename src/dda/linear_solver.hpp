@@ -24,7 +24,15 @@ class LinearSolver {
 };
 
 // CHOLMOD through Eigen, ordered by AMD on the block graph (6× fewer nodes than the scalar
-// graph) and re-analysed only when the block pattern changes.
-std::unique_ptr<LinearSolver> make_cholmod_solver();
+// graph), re-analysed only when the block pattern changes. A factor is reused as the
+// preconditioner of conjugate gradients on later, nearby matrices for up to max_iterations
+// iterations to ‖b − A x‖ ≤ tolerance ‖b‖; past that the matrix is refactored.
+std::unique_ptr<LinearSolver> make_cholmod_solver(double tolerance = 1e-12,
+                                                  int max_iterations = 25);
+
+// Block-Jacobi preconditioned conjugate gradients, warm-started from the last solution;
+// converged when ‖b − A x‖ ≤ tolerance ‖b‖, else it throws after max_iterations.
+std::unique_ptr<LinearSolver> make_conjugate_gradient_solver(double tolerance = 1e-10,
+                                                             int max_iterations = 5000);
 
 }  // namespace hydrodda::dda

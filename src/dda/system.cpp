@@ -10,23 +10,6 @@ namespace hydrodda::dda {
 
 namespace {
 
-using Triplets = std::vector<Eigen::Triplet<double>>;
-
-// Adds the 6×6 block m at block row a, block column b of a symmetric matrix kept as its lower
-// triangle (the (b, a) block being mᵀ).
-void add_block(Triplets& t, int a, int b, const Matrix6& m) {
-  if (a == b) {
-    for (int c = 0; c < 6; ++c)
-      for (int r = c; r < 6; ++r) t.emplace_back(6 * a + r, 6 * a + c, m(r, c));
-  } else if (a > b) {
-    for (int c = 0; c < 6; ++c)
-      for (int r = 0; r < 6; ++r) t.emplace_back(6 * a + r, 6 * b + c, m(r, c));
-  } else {
-    for (int c = 0; c < 6; ++c)
-      for (int r = 0; r < 6; ++r) t.emplace_back(6 * b + r, 6 * a + c, m(c, r));
-  }
-}
-
 void add_segment(Eigen::VectorXd& f, int dof, const Vector6& v) {
   if (dof >= 0) f.segment<6>(6 * dof) += v;
 }
@@ -175,7 +158,10 @@ void System::detect_contacts() {
     if (auto it = records_.find(c.key); it != records_.end()) {
       a.record = it->second;
     } else {
-      a.record.state = c.penetration > 0 ? ContactState::locked : ContactState::open;
+      // Touching (within the hysteresis band) counts as closed: a settled packing starts
+      // with its contacts carrying load instead of finding them one open–close pass at a time.
+      a.record.state = c.penetration > -1e-2 * penetration_tolerance_ ? ContactState::locked
+                                                                       : ContactState::open;
       a.record.reference_ratio = c.edge_ratio;
     }
     if (a.record.state == ContactState::open) a.record.reference_ratio = c.edge_ratio;
@@ -217,11 +203,10 @@ void System::linearise_contacts() {
 
 // ---- assembly ----
 
-void System::assemble_blocks(double dt, Triplets& k_base, Eigen::VectorXd& f_base) const {
+void System::assemble_blocks(double dt, std::vector<Matrix6>& k, Eigen::VectorXd& f_base) const {
   f_base = Eigen::VectorXd::Zero(6 * unknown_count_);
-  k_base.clear();
+  k.assign(unknown_count_, Matrix6::Zero());
   const bool dynamic = settings_.analysis == Analysis::dynamic;
-  std::vector<Matrix6> k(unknown_count_, Matrix6::Zero());
   const auto add_spring = [&](int block, Point at, Point target_displacement) {
     const Block& b = blocks_[block];
     if (b.dof < 0) return;
@@ -280,30 +265,74 @@ void System::assemble_blocks(double dt, Triplets& k_base, Eigen::VectorXd& f_bas
                                           .transpose() * Eigen::Vector2d(f.x, f.y);
     }
   }
-  for (int d = 0; d < unknown_count_; ++d) add_block(k_base, d, d, k[d]);
 }
 
-void System::factor_with_contacts(const Triplets& base_entries) {
-  Triplets t = base_entries;
+void System::factor_with_contacts(const std::vector<Matrix6>& base_blocks) {
+  // Block pattern: the diagonal and one 6×6 block per pair of moving blocks with a closed
+  // contact, kept as (column, row) with row > column, sorted.
   std::vector<std::pair<int, int>> pairs;
-  for (const ActiveContact& c : active_) {
-    if (!is_closed(c.record.state)) continue;
-    // Normal spring ½ p d²; locked contacts add the shear spring ½ p s².
-    const auto add_spring = [&](const Vector6& ei, const Vector6& ej) {
-      if (c.dof_i >= 0) add_block(t, c.dof_i, c.dof_i, penalty_ * ei * ei.transpose());
-      if (c.dof_j >= 0) add_block(t, c.dof_j, c.dof_j, penalty_ * ej * ej.transpose());
-      if (c.dof_i >= 0 && c.dof_j >= 0)
-        add_block(t, c.dof_i, c.dof_j, penalty_ * ei * ej.transpose());
-    };
-    add_spring(c.en_i, c.en_j);
-    if (c.record.state == ContactState::locked) add_spring(c.es_i, c.es_j);
-    if (c.dof_i >= 0 && c.dof_j >= 0)
+  for (const ActiveContact& c : active_)
+    if (is_closed(c.record.state) && c.dof_i >= 0 && c.dof_j >= 0 && c.dof_i != c.dof_j)
       pairs.emplace_back(std::min(c.dof_i, c.dof_j), std::max(c.dof_i, c.dof_j));
-  }
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  SparseMatrix k(6 * unknown_count_, 6 * unknown_count_);
-  k.setFromTriplets(t.begin(), t.end());
+  std::vector<Matrix6> diagonal = base_blocks;
+  std::vector<Matrix6> off(pairs.size(), Matrix6::Zero());  // block (row, column)
+  for (const ActiveContact& c : active_) {
+    if (!is_closed(c.record.state)) continue;
+    const bool locked = c.record.state == ContactState::locked;
+    // Normal spring ½ p d²; locked contacts add the shear spring ½ p s².
+    if (c.dof_i >= 0) {
+      diagonal[c.dof_i] += penalty_ * c.en_i * c.en_i.transpose();
+      if (locked) diagonal[c.dof_i] += penalty_ * c.es_i * c.es_i.transpose();
+    }
+    if (c.dof_j >= 0) {
+      diagonal[c.dof_j] += penalty_ * c.en_j * c.en_j.transpose();
+      if (locked) diagonal[c.dof_j] += penalty_ * c.es_j * c.es_j.transpose();
+    }
+    if (c.dof_i >= 0 && c.dof_j >= 0) {
+      const bool i_is_row = c.dof_i > c.dof_j;
+      const auto key = std::make_pair(std::min(c.dof_i, c.dof_j), std::max(c.dof_i, c.dof_j));
+      Matrix6& m = off[std::lower_bound(pairs.begin(), pairs.end(), key) - pairs.begin()];
+      const Vector6& er = i_is_row ? c.en_i : c.en_j;
+      const Vector6& ec = i_is_row ? c.en_j : c.en_i;
+      m += penalty_ * er * ec.transpose();
+      if (locked) {
+        const Vector6& sr = i_is_row ? c.es_i : c.es_j;
+        const Vector6& sc = i_is_row ? c.es_j : c.es_i;
+        m += penalty_ * sr * sc.transpose();
+      }
+    }
+  }
+  // Compressed lower triangle, column by column: the diagonal block's lower part, then the
+  // off-diagonal blocks of that block column in row order.
+  const int n = 6 * unknown_count_;
+  std::vector<int> first_pair(unknown_count_ + 1, 0);
+  for (auto [col, row] : pairs) ++first_pair[col + 1];
+  for (int b = 0; b < unknown_count_; ++b) first_pair[b + 1] += first_pair[b];
+  SparseMatrix k(n, n);
+  k.resizeNonZeros(unknown_count_ * 21 + static_cast<int>(pairs.size()) * 36);
+  int* outer = k.outerIndexPtr();
+  int* inner = k.innerIndexPtr();
+  double* value = k.valuePtr();
+  int nz = 0;
+  for (int b = 0; b < unknown_count_; ++b) {
+    for (int c = 0; c < 6; ++c) {
+      outer[6 * b + c] = nz;
+      for (int r = c; r < 6; ++r) {
+        inner[nz] = 6 * b + r;
+        value[nz++] = diagonal[b](r, c);
+      }
+      for (int p = first_pair[b]; p < first_pair[b + 1]; ++p) {
+        const int row = pairs[p].second;
+        for (int r = 0; r < 6; ++r) {
+          inner[nz] = 6 * row + r;
+          value[nz++] = off[p](r, c);
+        }
+      }
+    }
+  }
+  outer[n] = nz;
   solver_->factor(k, unknown_count_, pairs);
 }
 
@@ -365,7 +394,7 @@ double System::compute_shear_strength(const ActiveContact& c, double normal_forc
 //     Mohr–Coulomb
 //   not settled in max iterations → the caller cuts Δt and retries.
 bool System::solve_step(double dt, Eigen::VectorXd& d, StepReport& report) {
-  Triplets base;
+  std::vector<Matrix6> base;
   Eigen::VectorXd f_base;
   assemble_blocks(dt, base, f_base);
   const bool lagrangian = settings_.contact == ContactMethod::augmented_lagrangian;
@@ -396,12 +425,15 @@ bool System::solve_step(double dt, Eigen::VectorXd& d, StepReport& report) {
         for (ActiveContact& c : active_)
           if (is_closed(c.record.state)) c.record.multiplier = c.record.normal_force;
     }
+    // Hysteresis bands (a small fraction of the penetration tolerance) keep a contact that
+    // merely touches, or a joint under no load, from flipping state on round-off.
+    const double band = 1e-2 * penetration_tolerance_;
     bool changed = false;
     for (ActiveContact& c : active_) {
       ContactRecord& r = c.record;
       const double pen = compute_penetration(c, d);
       if (r.state == ContactState::open) {
-        if (pen > 0) {
+        if (pen > band) {
           r.state = ContactState::locked;
           r.multiplier = 0.0;
           changed = true;
@@ -409,23 +441,23 @@ bool System::solve_step(double dt, Eigen::VectorXd& d, StepReport& report) {
         continue;
       }
       const double normal = compute_normal_force(c, pen);
-      if (normal < -joint_.tensile_strength * c.length - 1e-12 * penalty_ * penetration_tolerance_) {
+      if (normal < -joint_.tensile_strength * c.length - penalty_ * band) {
         r.state = ContactState::open;
         r.multiplier = 0.0;
         r.normal_force = 0.0;
         changed = true;
         continue;
       }
-      // A small dead band keeps a contact at rest from flipping on round-off.
+      // The shear band is far narrower: a locked spring stretches only F/p (1e-8 m here).
+      const double shear_band = 1e-3 * band;
       const double shear = compute_shear(c, d);
-      const double dead_band = 1e-3 * penetration_tolerance_;
       if (r.state == ContactState::locked) {
-        if (penalty_ * (std::abs(shear) - dead_band) > compute_shear_strength(c, normal)) {
+        if (penalty_ * (std::abs(shear) - shear_band) > compute_shear_strength(c, normal)) {
           r.state = ContactState::sliding;
           r.slide_sign = shear > 0 ? 1 : -1;
           changed = true;
         }
-      } else if (shear * r.slide_sign < -dead_band) {
+      } else if (shear * r.slide_sign < -shear_band) {
         r.state = ContactState::locked;
         changed = true;
       }

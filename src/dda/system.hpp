@@ -114,9 +114,8 @@ class System {
   void detect_contacts();
   void linearise_contacts();
   bool solve_step(double dt, Eigen::VectorXd& d, StepReport& report);
-  void assemble_blocks(double dt, std::vector<Eigen::Triplet<double>>& k_base,
-                       Eigen::VectorXd& f_base) const;
-  void factor_with_contacts(const std::vector<Eigen::Triplet<double>>& base_entries);
+  void assemble_blocks(double dt, std::vector<Matrix6>& k_base, Eigen::VectorXd& f_base) const;
+  void factor_with_contacts(const std::vector<Matrix6>& base_blocks);
   bool update_states();
   Eigen::VectorXd assemble_contact_rhs(const Eigen::VectorXd& f_base) const;
   Vector6 block_unknowns(const Eigen::VectorXd& d, int dof) const;

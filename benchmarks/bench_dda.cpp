@@ -1,0 +1,120 @@
+// Time per DDA step against block count: a staggered brick wall on a fixed base (the same
+// wall the ntdda peer runs, see brickwall.py: 2 m × 1 m bricks, static, Δt 1e-3 s) and a
+// random packing of irregular quadrilaterals settling on a fixed base. Each benchmark
+// iteration is one step; 20 steps per case, as the peer driver times them.
+
+#include <benchmark/benchmark.h>
+
+#include <random>
+
+#include "dda/system.hpp"
+
+namespace {
+
+using hydrodda::dda::Analysis;
+using hydrodda::dda::BlockDefinition;
+using hydrodda::dda::Material;
+using hydrodda::dda::ModelDefinition;
+using hydrodda::dda::Point;
+using hydrodda::dda::Polygon;
+using hydrodda::dda::System;
+
+Polygon make_rectangle(double x0, double y0, double x1, double y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+ModelDefinition make_base_model() {
+  ModelDefinition m;
+  m.materials = {Material{2500.0, 1.0e10, 0.25}};
+  m.joint = {30.0, 0.0, 0.0};
+  m.settings.analysis = Analysis::static_;
+  m.settings.time_step = 1.0e-3;
+  return m;
+}
+
+// brickwall.py ROWS COLS: ROWS × COLS bricks + the fixed base.
+ModelDefinition make_brick_wall(int rows, int cols) {
+  ModelDefinition m = make_base_model();
+  m.blocks.push_back({make_rectangle(-1.0, -1.0, 2.0 * cols + 2, 0.0), 0, true});
+  for (int r = 0; r < rows; ++r) {
+    const double off = r % 2 == 0 ? 0.0 : 1.0;
+    std::vector<double> edges{0.0};
+    for (int k = 1; k <= cols; ++k)
+      if (off + 2.0 * k < 2.0 * cols) edges.push_back(off + 2.0 * k);
+    edges.push_back(2.0 * cols);
+    for (std::size_t k = 0; k + 1 < edges.size(); ++k)
+      m.blocks.push_back({make_rectangle(edges[k], r, edges[k + 1], r + 1.0), 0, false});
+  }
+  return m;
+}
+
+// n × n cells of a lattice with jittered nodes (±0.2 m on 1 m), each cell shrunk by 2%
+// about its centroid: irregular quadrilaterals with small gaps that settle under gravity.
+ModelDefinition make_random_packing(int n) {
+  ModelDefinition m = make_base_model();
+  m.settings.analysis = Analysis::dynamic;
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+  std::vector<Point> nodes((n + 1) * (n + 1));
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const bool edge_x = i == 0 || i == n;
+      nodes[j * (n + 1) + i] = {i + (edge_x ? 0.0 : jitter(rng)), 0.1 + j + (j == 0 ? 0.0 : jitter(rng))};
+    }
+  m.blocks.push_back({make_rectangle(-1.0, -1.0, n + 1.0, 0.0), 0, true});
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      Polygon p{nodes[j * (n + 1) + i], nodes[j * (n + 1) + i + 1],
+                nodes[(j + 1) * (n + 1) + i + 1], nodes[(j + 1) * (n + 1) + i]};
+      const Point c = hydrodda::geometry::centroid(p);
+      for (Point& v : p) v = c + 0.98 * (v - c);
+      m.blocks.push_back({p, 0, false});
+    }
+  return m;
+}
+
+void run_steps(benchmark::State& state, ModelDefinition model) {
+  const int blocks = static_cast<int>(model.blocks.size());
+  System system(std::move(model));
+  int iterations = 0;
+  int contacts = 0;
+  for (auto _ : state) {
+    const auto report = system.step();
+    iterations += report.open_close_iterations;
+    contacts = report.contacts;
+  }
+  state.counters["blocks"] = blocks;
+  state.counters["contacts"] = contacts;
+  state.counters["oc_iter"] = static_cast<double>(iterations) / state.iterations();
+}
+
+void BM_BrickWall(benchmark::State& state) {
+  run_steps(state, make_brick_wall(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))));
+}
+BENCHMARK(BM_BrickWall)
+    ->Args({3, 3})
+    ->Args({10, 10})
+    ->Args({20, 20})
+    ->Args({20, 40})
+    ->Args({40, 40})
+    ->Args({80, 80})
+    ->Args({100, 100})
+    ->Iterations(20)
+    ->Unit(benchmark::kMillisecond);
+
+void BM_RandomPacking(benchmark::State& state) {
+  run_steps(state, make_random_packing(static_cast<int>(state.range(0))));
+}
+BENCHMARK(BM_RandomPacking)
+    ->Arg(3)
+    ->Arg(10)
+    ->Arg(20)
+    ->Arg(40)
+    ->Arg(80)
+    ->Arg(100)
+    ->Iterations(20)
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
