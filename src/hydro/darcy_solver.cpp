@@ -15,11 +15,11 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// The six (row, column) local pairs with row >= column whose values enter the lower triangle.
 constexpr int kMaxRefinementSteps = 4;
-constexpr double kTargetBalance = 1e-14;
+constexpr double kTargetBalance = 1e-14;  // relative mass balance that ends the refinement
 // The three node pairs of a triangle whose couplings K_e(i, j), i ≠ j, are kept.
 constexpr std::array<std::array<int, 2>, 3> kEdgePairs{{{0, 1}, {0, 2}, {1, 2}}};
+// The six (row, column) local pairs with row >= column whose values enter the lower triangle.
 constexpr std::array<std::array<int, 2>, 6> kLocalPairs{{{0, 0}, {1, 1}, {2, 2}, {1, 0}, {2, 0}, {2, 1}}};
 
 // Conductivity tensors from permeabilities, checked: K = k ρ_w g / μ.
