@@ -55,6 +55,13 @@ TEST(DarcyVerification, LinearHeadIsExactOnUnstructuredMesh) {
   const auto r = compute_region_flow(m, s, all_triangles(m), geometry::Point{1, 0});
   EXPECT_NEAR(r.effective_conductivity / conductivity, 1.0, 1e-10);
   EXPECT_NEAR(r.flow / conductivity, 1.0, 1e-10);  // Q = K Δh/L × W = K × 1 × 1
+  // Without a direction, d follows the mean flux: (1, 0) here, and the same answers.
+  const auto d = compute_region_flow(m, s, all_triangles(m));
+  EXPECT_NEAR(d.direction.x, 1.0, 1e-10);
+  EXPECT_NEAR(d.direction.y, 0.0, 1e-10);
+  EXPECT_NEAR(d.effective_conductivity / conductivity, 1.0, 1e-10);
+  EXPECT_NEAR(d.length, 2.0, 1e-12);
+  EXPECT_NEAR(d.width, 1.0, 1e-12);
 }
 
 // Anisotropic diagonal tensor k = diag(kxx, kyy): with h = 3 − x the flux is (Kxx, 0).
