@@ -96,6 +96,16 @@ void BM_GenerateMeshAlgorithm(benchmark::State& state) {
 }
 BENCHMARK(BM_GenerateMeshAlgorithm)->Arg(1)->Arg(5)->Arg(6)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
 
+// Delaunay with Gmsh's threads (1 or 2) at about 3e5 triangles.
+void BM_GenerateMeshThreads(benchmark::State& state) {
+  auto request = make_three_fractures(3500e-6);
+  request.threads = static_cast<int>(state.range(0));
+  mesh::TriangleMesh m;
+  for (auto _ : state) m = mesh::generate_mesh(request);
+  set_mesh_counters(state, m);
+}
+BENCHMARK(BM_GenerateMeshThreads)->Arg(1)->Arg(2)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
+
 void BM_SetupSolver(benchmark::State& state, const mesh::TriangleMesh& m) {
   for (auto _ : state) {
     hydro::DarcySolver solver(m, make_problem(), make_solver());

@@ -50,7 +50,11 @@ class DarcySolver {
   void check_every_part_is_fixed() const;
   void setup_pattern();
   void assemble_system(std::span<const Conductivity> conductivity);
-  Eigen::VectorXd compute_residual(const Eigen::VectorXd& x) const;
+  struct Residual {
+    Eigen::VectorXd r;  // f − A x over the unknowns
+    double balance;     // the relative mass-balance error it implies
+  };
+  Residual compute_residual(const Eigen::VectorXd& x) const;
   std::vector<long double> compute_a_times_h(const std::vector<double>& h) const;
   std::vector<double> expand_heads(const Eigen::VectorXd& x) const;
   FlowSolution solve_with(std::span<const Conductivity> conductivity);

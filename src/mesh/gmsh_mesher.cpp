@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <map>
 #include <mutex>
@@ -186,6 +187,7 @@ void check_request(const MeshRequest& request) {
   check_polygon(request.domain, "mesh domain");
   for (const NamedPolygon& r : request.regions) check_polygon(r.polygon, "region '" + r.name + "'");
   if (!(request.size > 0.0)) throw std::runtime_error("mesh size must be positive");
+  if (request.threads < 1) throw std::runtime_error("mesh threads must be at least 1");
   if (request.algorithm != 1 && request.algorithm != 5 && request.algorithm != 6)
     throw std::runtime_error("mesh algorithm must be 1 (MeshAdapt), 5 (Delaunay) or 6 (Frontal-Delaunay)");
   if (!request.refinement_lines.empty()) {
@@ -249,7 +251,7 @@ TriangleMesh generate_mesh(const MeshRequest& request) {
     gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
     gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
     gmsh::option::setNumber("Mesh.MeshSizeMax", request.size);
-    gmsh::option::setNumber("General.NumThreads", 1);  // reproducible node numbering
+    gmsh::option::setNumber("General.NumThreads", request.threads);
     if (!request.refinement_lines.empty()) {
       // Gmsh's Distance + Threshold fields, evaluated with the exact distance to the lines
       // (a Distance field would sample them; its sample nodes would also join the mesh).

@@ -37,6 +37,9 @@ struct MeshRequest {
   // Gmsh's 2D algorithm: 5 "Delaunay" (default: fastest measured, docs/performance.md),
   // 6 "Frontal-Delaunay", 1 "MeshAdapt".
   int algorithm = 5;
+  // Gmsh threads: 2 roughly halves the meshing of a domain split into several surfaces
+  // (regions), but the node numbering then varies from run to run; 1 is reproducible.
+  int threads = 1;
   bool verbose = false;                  // let Gmsh print to the terminal
 };
 

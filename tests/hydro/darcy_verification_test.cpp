@@ -7,6 +7,7 @@
 
 #include "flow_test_meshes.hpp"
 #include "hydro/darcy_solver.hpp"
+#include "hydro/element_pressure.hpp"
 #include "hydro/region_flow.hpp"
 
 namespace hydrodda::hydro {
@@ -55,6 +56,17 @@ TEST(DarcyVerification, LinearHeadIsExactOnUnstructuredMesh) {
   const auto r = compute_region_flow(m, s, all_triangles(m), geometry::Point{1, 0});
   EXPECT_NEAR(r.effective_conductivity / conductivity, 1.0, 1e-10);
   EXPECT_NEAR(r.flow / conductivity, 1.0, 1e-10);  // Q = K Δh/L × W = K × 1 × 1
+  // Centroid pressure = p at the centroid of the linear field: ρ g (2 − x_c).
+  const auto pc = compute_centroid_pressure(m, s);
+  for (int t = 0; t < m.triangle_count(); ++t)
+    ASSERT_NEAR(pc[t], fluid.unit_weight() * (2.0 - mesh::triangle_centroid(m, t).x), 1e-10 * fluid.unit_weight());
+  // Without a direction, d follows the mean flux: (1, 0) here, and the same answers.
+  const auto d = compute_region_flow(m, s, all_triangles(m));
+  EXPECT_NEAR(d.direction.x, 1.0, 1e-10);
+  EXPECT_NEAR(d.direction.y, 0.0, 1e-10);
+  EXPECT_NEAR(d.effective_conductivity / conductivity, 1.0, 1e-10);
+  EXPECT_NEAR(d.length, 2.0, 1e-12);
+  EXPECT_NEAR(d.width, 1.0, 1e-12);
 }
 
 // Anisotropic diagonal tensor k = diag(kxx, kyy): with h = 3 − x the flux is (Kxx, 0).

@@ -142,3 +142,25 @@ TEST(GenerateMesh, IsDeterministic) {
 
 }  // namespace
 }  // namespace hydrodda::mesh
+
+namespace hydrodda::mesh {
+namespace {
+
+// Flow-only scenarios give a region covering the whole domain, then regions inside it: the
+// whole-domain region gets what the later ones leave (areas exact to 1e-12).
+TEST(GenerateMesh, RegionCoveringTheDomainThenStrips) {
+  MeshRequest request;
+  request.domain = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  request.size = 0.05;
+  request.regions = {{"matrix", {{0, 0}, {1, 0}, {1, 1}, {0, 1}}},
+                     {"f1", {{0, 0.248}, {1, 0.248}, {1, 0.252}, {0, 0.252}}}};
+  const TriangleMesh m = generate_mesh(request);
+  std::map<std::string, double> area;
+  for (int t = 0; t < m.triangle_count(); ++t) area[m.region_names[m.region[t]]] += triangle_area(m, t);
+  EXPECT_EQ(area.count("domain"), 0u);
+  EXPECT_NEAR(area.at("matrix"), 1.0 - 0.004, 1e-12);
+  EXPECT_NEAR(area.at("f1"), 0.004, 1e-12);
+}
+
+}  // namespace
+}  // namespace hydrodda::mesh
