@@ -1,0 +1,41 @@
+#pragma once
+// Equivalent porosity of each fluid element from the blocks that cover it (the paper's eq. 8):
+//   φ_e = (A_f / A_e)(1 − φ_m) + φ_m,   A_f = A_e − Σ_blocks |e ∩ block|,
+// clamped to [φ_m, 1]: where blocks overlap (contact penetration) the covered area can exceed
+// A_e, and A_f is then taken as 0. Parts of blocks outside the fluid mesh count for nothing.
+
+#include <array>
+#include <span>
+#include <vector>
+
+#include "geometry/point.hpp"
+#include "geometry/polygon.hpp"
+#include "geometry/spatial_grid.hpp"
+
+namespace hydrodda::coupling {
+
+using geometry::Point;
+
+struct PorosityField {
+  std::vector<double> fracture_area;  // A_f per element (m²)
+  std::vector<double> porosity;       // φ per element
+};
+
+// Keeps the fixed mesh's element areas and a spatial index of its elements, so that each pass
+// of the coupling loop only clips the moved blocks.
+class PorosityMapper {
+ public:
+  PorosityMapper(std::span<const Point> nodes, std::span<const std::array<int, 3>> triangles);
+
+  // Blocks: simple polygons in either orientation. matrix_porosity in [0, 1).
+  PorosityField compute(std::span<const geometry::Polygon> blocks, double matrix_porosity) const;
+
+  const std::vector<double>& element_areas() const { return areas_; }
+
+ private:
+  std::vector<std::array<Point, 3>> triangles_;
+  std::vector<double> areas_;
+  geometry::SpatialGrid grid_;
+};
+
+}  // namespace hydrodda::coupling

@@ -1,0 +1,33 @@
+#include "hydro/permeability_law.hpp"
+
+#include <gtest/gtest.h>
+
+namespace hydrodda::hydro {
+namespace {
+
+TEST(KozenyCarman, FormulaCapAndOpenFractures) {
+  // k = d² φ³ / (180 (1 − φ)²): φ = 0.1, d = 1.2e-5 → 1.44e-10 × 1e-3 / (180 × 0.81).
+  const double expected = 1.44e-10 * 1e-3 / (180.0 * 0.81);
+  EXPECT_NEAR(kozeny_carman_permeability(0.1, 1.2e-5, 1.0), expected, 1e-15 * expected);
+  // The paper's set-up: the matrix 1e5 times below the capped fracture value (1e5 mD).
+  const double cap = 9.869e-11;
+  EXPECT_NEAR(cap / kozeny_carman_permeability(0.1, 1.2e-5, cap), 1.0e5, 0.01e5);
+  EXPECT_EQ(kozeny_carman_permeability(1.0, 1.2e-5, cap), cap);
+  EXPECT_EQ(kozeny_carman_permeability(0.999, 1.2e-5, cap), cap);
+  EXPECT_EQ(kozeny_carman_permeability(0.0, 1.2e-5, cap), 0.0);
+  EXPECT_THROW(kozeny_carman_permeability(1.5, 1.2e-5, cap), std::invalid_argument);
+}
+
+TEST(CubicLaw, TransmissivityIndependentOfElementWidth) {
+  // An element of width b across a fracture of aperture w: fraction w/b, and k b = w³/12 + k_m b
+  // whatever b (exact to round-off).
+  const double w = 1e-3;
+  for (double b : {0.5e-3 * 2, 2e-3, 5e-3, 1e-2}) {
+    const double k = cubic_law_permeability(w / b, w, 0.0);
+    EXPECT_NEAR(k * b, w * w * w / 12.0, 1e-14 * w * w * w);
+  }
+  EXPECT_EQ(cubic_law_permeability(0.0, w, 3e-18), 3e-18);
+}
+
+}  // namespace
+}  // namespace hydrodda::hydro
