@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "mesh/mesh_request.hpp"
@@ -8,10 +9,24 @@ namespace hydrodda::mesh {
 void name_boundary_edges(TriangleMesh& mesh, const std::vector<NamedSegment>& segments,
                          const geometry::Box& box) {
   const double tolerance = 1e-9 * std::max(box.width(), box.height());
+  // Names in order: each user name once, then the defaults the user did not redefine.
   mesh.boundary_names.clear();
-  for (const NamedSegment& s : segments) mesh.boundary_names.push_back(s.name);
-  for (const std::string& name : kDefaultBoundaryNames) mesh.boundary_names.push_back(name);
-  const int first_default = static_cast<int>(segments.size());
+  std::vector<int> index_of_segment;
+  for (const NamedSegment& s : segments) {
+    int index = find_boundary(mesh, s.name);
+    if (index < 0) {
+      index = static_cast<int>(mesh.boundary_names.size());
+      mesh.boundary_names.push_back(s.name);
+    }
+    index_of_segment.push_back(index);
+  }
+  std::array<int, 4> index_of_side{};
+  for (int side = 0; side < 4; ++side) {
+    const std::string& name = kDefaultBoundaryNames[side];
+    const bool redefined = find_boundary(mesh, name) >= 0;
+    index_of_side[side] = redefined ? BoundaryEdge::kUnnamed : static_cast<int>(mesh.boundary_names.size());
+    if (!redefined) mesh.boundary_names.push_back(name);
+  }
 
   auto on_segment = [&](Point p, Point a, Point b) {
     return geometry::distance_to_segment(p, a, b) <= tolerance;
@@ -20,15 +35,15 @@ void name_boundary_edges(TriangleMesh& mesh, const std::vector<NamedSegment>& se
     for (std::size_t s = 0; s < segments.size(); ++s)
       if (on_segment(p, segments[s].from, segments[s].to) &&
           on_segment(q, segments[s].from, segments[s].to))
-        return static_cast<int>(s);
+        return index_of_segment[s];
     if (std::abs(p.x - box.lo.x) <= tolerance && std::abs(q.x - box.lo.x) <= tolerance)
-      return first_default + 0;
+      return index_of_side[0];
     if (std::abs(p.x - box.hi.x) <= tolerance && std::abs(q.x - box.hi.x) <= tolerance)
-      return first_default + 1;
+      return index_of_side[1];
     if (std::abs(p.y - box.lo.y) <= tolerance && std::abs(q.y - box.lo.y) <= tolerance)
-      return first_default + 2;
+      return index_of_side[2];
     if (std::abs(p.y - box.hi.y) <= tolerance && std::abs(q.y - box.hi.y) <= tolerance)
-      return first_default + 3;
+      return index_of_side[3];
     return BoundaryEdge::kUnnamed;
   };
   mesh.boundary_edges.clear();

@@ -50,8 +50,9 @@ inline const std::vector<std::string> kDefaultBoundaryNames{"left", "right", "bo
 // Names the boundary edges of `mesh` (which must have its triangles and nodes): an edge
 // takes the first segment of `segments` that contains both its end points (within a relative
 // 1e-9 of the domain size), else the first default side (left, right, bottom, top of `box`)
-// it lies on, else stays unnamed. Sets mesh.boundary_edges and mesh.boundary_names (user
-// segments first, in order, then the four defaults).
+// it lies on, else stays unnamed. Several segments may share a name; a user segment named
+// like a default side replaces that side. Sets mesh.boundary_edges and mesh.boundary_names
+// (user names first, in order, then the defaults not redefined).
 void name_boundary_edges(TriangleMesh& mesh, const std::vector<NamedSegment>& segments,
                          const geometry::Box& box);
 

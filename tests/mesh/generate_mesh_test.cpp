@@ -1,6 +1,7 @@
 // Gmsh meshing of a MeshRequest: coverage, boundary names, regions honoured, refinement.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -145,6 +146,22 @@ TEST(GenerateMesh, IsDeterministic) {
 
 namespace hydrodda::mesh {
 namespace {
+
+// A user segment named "left" replaces the default left side: only its 0.4 m are "left",
+// the rest of that side is unnamed, and the name appears once. Two segments may share a name.
+TEST(GenerateMesh, UserSegmentReplacesDefaultSide) {
+  MeshRequest request;
+  request.domain = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  request.size = 0.05;
+  request.boundaries = {{"left", {0, 0.2}, {0, 0.6}}, {"vents", {1, 0}, {1, 0.1}}, {"vents", {1, 0.9}, {1, 1}}};
+  const TriangleMesh m = generate_mesh(request);
+  EXPECT_EQ(std::count(m.boundary_names.begin(), m.boundary_names.end(), "left"), 1);
+  const auto length = boundary_lengths(m);
+  EXPECT_NEAR(length.at("left"), 0.4, 1e-12);
+  EXPECT_NEAR(length.at("vents"), 0.2, 1e-12);
+  EXPECT_NEAR(length.at("right"), 0.8, 1e-12);
+  EXPECT_NEAR(length.at("(unnamed)"), 0.6, 1e-12);
+}
 
 // Flow-only scenarios give a region covering the whole domain, then regions inside it: the
 // whole-domain region gets what the later ones leave (areas exact to 1e-12).
