@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <spdlog/spdlog.h>
+
 #include "dda/selection.hpp"
+#include "geometry/domain_cutting.hpp"
 #include "scenario/diagnostics.hpp"
 
 namespace hydrodda::cli {
@@ -45,9 +48,16 @@ int material_index(const Scenario& s, const std::string& name) {
 std::vector<dda::BlockDefinition> build_blocks(const Scenario& s) {
   std::vector<dda::BlockDefinition> blocks;
   if (!s.geometry) return blocks;
-  if (!s.geometry->domain.empty())
-    throw std::runtime_error("cutting a domain into blocks is not available yet: give the blocks "
-                             "one by one with [[geometry.block]]");
+  if (!s.geometry->domain.empty()) {
+    std::vector<geometry::Segment2> fractures;
+    for (const scenario::Segment& f : s.geometry->fractures) fractures.push_back({f.from, f.to});
+    const geometry::CutResult cut = geometry::cut_domain(s.geometry->domain, fractures, s.geometry->welded);
+    for (const std::string& w : cut.warnings) spdlog::warn("{}: geometry.fractures: {}", s.file.string(), w);
+    for (const geometry::Polygon& p : geometry::shrink_blocks(cut.blocks, s.geometry->domain, s.geometry->initial_aperture))
+      blocks.push_back({p, 0, false});
+    spdlog::info("geometry: {} blocks cut from the domain by {} fractures", blocks.size(), fractures.size());
+    return blocks;
+  }
   for (const scenario::BlockDefinition& b : s.geometry->blocks) {
     dda::BlockDefinition block;
     block.polygon = b.vertices;

@@ -17,8 +17,6 @@ namespace {
 // A part of the model whose engine is not built in yet: an explicit error, never a silent zero.
 std::optional<std::string> missing_engine(const scenario::Scenario& s) {
   if (s.flow && s.mechanics) return "coupled runs are not available yet";
-  if (s.mechanics && s.geometry && !s.geometry->domain.empty())
-    return "cutting a domain into blocks is not available yet: give the blocks one by one";
   return std::nullopt;
 }
 
