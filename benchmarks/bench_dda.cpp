@@ -97,7 +97,6 @@ BENCHMARK(BM_BrickWall)
     ->Args({20, 20})
     ->Args({20, 40})
     ->Args({40, 40})
-    ->Args({80, 80})
     ->Args({100, 100})
     ->Iterations(20)
     ->Unit(benchmark::kMillisecond);
@@ -110,8 +109,6 @@ BENCHMARK(BM_RandomPacking)
     ->Arg(10)
     ->Arg(20)
     ->Arg(40)
-    ->Arg(80)
-    ->Arg(100)
     ->Iterations(20)
     ->Unit(benchmark::kMillisecond);
 

@@ -419,7 +419,7 @@ bool System::solve_step(double dt, Eigen::VectorXd& d, StepReport& report) {
         c.record.penetration = pen;
       }
       const bool penetration_ok = !lagrangian || deepest <= penetration_tolerance_;
-      const bool friction_ok = friction_change <= 1e-9 * force_scale;
+      const bool friction_ok = friction_change <= 1e-6 * force_scale;
       if (penetration_ok && friction_ok) break;
       if (!penetration_ok)
         for (ActiveContact& c : active_)
@@ -448,8 +448,8 @@ bool System::solve_step(double dt, Eigen::VectorXd& d, StepReport& report) {
         changed = true;
         continue;
       }
-      // The shear band is far narrower: a locked spring stretches only F/p (1e-8 m here).
-      const double shear_band = 1e-3 * band;
+      // Narrower for slip than for a reversal: a locked spring stretches only F/p.
+      const double shear_band = 0.1 * band;
       const double shear = compute_shear(c, d);
       if (r.state == ContactState::locked) {
         if (penalty_ * (std::abs(shear) - shear_band) > compute_shear_strength(c, normal)) {
@@ -457,7 +457,7 @@ bool System::solve_step(double dt, Eigen::VectorXd& d, StepReport& report) {
           r.slide_sign = shear > 0 ? 1 : -1;
           changed = true;
         }
-      } else if (shear * r.slide_sign < -shear_band) {
+      } else if (shear * r.slide_sign < -band) {  // a clear reversal only
         r.state = ContactState::locked;
         changed = true;
       }

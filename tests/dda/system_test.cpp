@@ -121,3 +121,27 @@ TEST(Selection, FindsVerticesAndEdgesOnASegment) {
 
 }  // namespace
 }  // namespace hydrodda::dda
+
+namespace hydrodda::dda {
+namespace {
+
+// run_to_equilibrium stops once a static step moves nothing (1e-9 × model size): a block
+// under a −1 MPa top traction on a frictionless base ends at εy = σ/E′ (plane strain, 0.5%).
+TEST(System, RunToEquilibriumReachesTheElasticSolution) {
+  ModelDefinition m;
+  m.materials = {Material{2500.0, 1.0e10, 0.25}};
+  m.blocks.push_back({testing::make_rectangle(-1, -1, 2, 0), 0, true});
+  m.blocks.push_back({testing::make_rectangle(0, 0, 1, 1), 0, false});
+  m.joint = {0.0, 0.0, 0.0};
+  m.tractions.push_back({1, 2, -1.0e6, -1.0e6, 0.0, 0.0});
+  m.settings.gravity = {0.0, 0.0};
+  m.settings.time_step = 1e-2;
+  System system(std::move(m));
+  const StepReport r = system.run_to_equilibrium(1000);
+  EXPECT_LE(r.max_displacement, 1e-9 * 1.0);
+  const double expected = -1.0e6 * (1 - 0.25 * 0.25) / 1.0e10;
+  EXPECT_NEAR(system.strain(1)[1], expected, 0.005 * std::abs(expected));
+}
+
+}  // namespace
+}  // namespace hydrodda::dda
