@@ -3,7 +3,10 @@
 
 #include <chrono>
 
+#include "cli/model_building.hpp"
 #include "cli/runs.hpp"
+#include "coupling/permeability_model.hpp"
+#include "coupling/porosity.hpp"
 #include "hydro/darcy_solver.hpp"
 #include "hydro/region_flow.hpp"
 #include "mesh/mesh_request.hpp"
@@ -45,27 +48,32 @@ std::vector<int> select_triangles_in(const mesh::TriangleMesh& mesh, const geome
 }
 
 // k per triangle: the last region containing it that fixes a permeability (later regions take
-// precedence, as in the mesh's region tags).
-std::vector<double> assign_permeability(const scenario::Scenario& s, const mesh::TriangleMesh& mesh) {
-  std::vector<double> k(mesh.triangle_count(), 0.0);
-  std::vector<bool> set(mesh.triangle_count(), false);
+// precedence, as in the mesh's region tags); elsewhere from the porosity the blocks leave open.
+std::vector<double> assign_permeability(const scenario::Scenario& s, const mesh::TriangleMesh& mesh,
+                                        const std::vector<dda::BlockDefinition>& blocks) {
+  std::vector<std::optional<double>> fixed(mesh.triangle_count());
   const auto& regions = s.flow->regions;
   for (auto r = regions.rbegin(); r != regions.rend(); ++r) {
     if (!r->permeability) continue;
     for (int t : select_triangles_in(mesh, r->polygon))
-      if (!set[t]) {
-        k[t] = *r->permeability;
-        set[t] = true;
-      }
+      if (!fixed[t]) fixed[t] = *r->permeability;
   }
-  for (int t = 0; t < mesh.triangle_count(); ++t)
-    if (!set[t]) {
-      const Point c = mesh::triangle_centroid(mesh, t);
-      throw std::runtime_error(fmt::format(
-          "the element at ({:.4g}, {:.4g}) lies in no [[flow.region]] with a permeability, and "
-          "permeability from porosity is not available yet",
-          c.x, c.y));
-    }
+  const bool all_fixed = std::all_of(fixed.begin(), fixed.end(), [](const auto& k) { return k.has_value(); });
+  std::vector<double> k(mesh.triangle_count(), 0.0);
+  if (all_fixed) {
+    for (int t = 0; t < mesh.triangle_count(); ++t) k[t] = *fixed[t];
+    return k;
+  }
+  const scenario::MaterialDefinition& material = s.materials.front();
+  std::vector<geometry::Polygon> polygons;
+  for (const auto& b : blocks) polygons.push_back(b.polygon);
+  // Without blocks (no fractures) the whole domain is rock of the matrix porosity.
+  if (polygons.empty() && s.geometry && !s.geometry->domain.empty()) polygons.push_back(s.geometry->domain);
+  const coupling::PorosityMapper mapper(mesh.nodes, mesh.triangles);
+  const coupling::PorosityField porosity = mapper.compute(polygons, material.matrix_porosity);
+  const coupling::PermeabilityModel model = make_permeability_model(s);
+  const std::vector<double> from_porosity = model.compute(porosity, mapper.element_areas());
+  for (int t = 0; t < mesh.triangle_count(); ++t) k[t] = fixed[t] ? *fixed[t] : from_porosity[t];
   return k;
 }
 
@@ -99,7 +107,7 @@ output::RunSummary run_flow(const RunContext& context) {
   spdlog::info("mesh: {} nodes, {} triangles", mesh.node_count(), mesh.triangle_count());
 
   start = Clock::now();
-  const std::vector<double> permeability = assign_permeability(s, mesh);
+  const std::vector<double> permeability = assign_permeability(s, mesh, build_blocks(s));
   summary.timings.push_back({"permeability", seconds_since(start)});
 
   start = Clock::now();

@@ -68,6 +68,17 @@ std::vector<dda::BlockDefinition> build_blocks(const Scenario& s) {
   return blocks;
 }
 
+coupling::PermeabilityModel make_permeability_model(const Scenario& s) {
+  coupling::PermeabilityModel model;
+  const scenario::MaterialDefinition& material = s.materials.front();
+  model.law = s.flow->permeability_law == scenario::PermeabilityLaw::Cubic ? coupling::PermeabilityLaw::cubic
+                                                                          : coupling::PermeabilityLaw::kozeny_carman;
+  model.grain_diameter = material.grain_diameter.value_or(0.0);
+  model.cap = s.flow->permeability_cap;
+  model.matrix_porosity = material.matrix_porosity;
+  return model;
+}
+
 double mechanics_duration(const scenario::MechanicsDefinition& m) {
   return m.end_time ? *m.end_time : m.time_step * static_cast<double>(m.steps.value_or(1));
 }

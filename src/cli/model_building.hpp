@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "coupling/permeability_model.hpp"
 #include "dda/definitions.hpp"
 #include "scenario/scenario.hpp"
 
@@ -17,6 +18,9 @@ std::vector<dda::BlockDefinition> build_blocks(const scenario::Scenario& scenari
 // The DDA model: blocks, materials, joint, settings and every load of [mechanics].
 dda::ModelDefinition build_mechanics_model(const scenario::Scenario& scenario,
                                            std::vector<dda::BlockDefinition> blocks);
+
+// The permeability law of [flow] with the (only) material's porosity and grain size.
+coupling::PermeabilityModel make_permeability_model(const scenario::Scenario& scenario);
 
 // Total simulated time of a mechanics run: end_time, or steps × time_step.
 double mechanics_duration(const scenario::MechanicsDefinition& mechanics);

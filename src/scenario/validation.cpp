@@ -66,22 +66,29 @@ void check_boundary_reference(ReadContext& ctx, const Scenario& s, int line, con
 // Two blocks overlap when an edge of one properly crosses an edge of the other, or a vertex or
 // the centroid of one lies strictly inside the other; touching along edges is allowed.
 bool blocks_overlap(const Polygon& a, const Polygon& b) {
-  const auto strictly_inside = [](const Polygon& poly, Point p) {
+  // Coordinates in a file carry a dozen digits, so touching blocks may overlap by round-off:
+  // depths under a relative 1e-9 of the blocks' size count as touching.
+  geometry::Box box = geometry::bounding_box(a);
+  const geometry::Box box_b = geometry::bounding_box(b);
+  box.add(box_b.lo);
+  box.add(box_b.hi);
+  const double scale = std::max(box.width(), box.height());
+  const double tolerance = 1e-9 * scale;
+  const auto side = [&](Point p, Point q, Point r) {  // sign of orient, 0 within tolerance
+    const double o = geometry::orient(p, q, r) / std::max(geometry::distance(p, q), 1e-300);
+    return o > tolerance ? 1 : (o < -tolerance ? -1 : 0);
+  };
+  const auto strictly_inside = [&](const Polygon& poly, Point p) {
     if (!geometry::contains(poly, p)) return false;
-    const double scale = std::max(geometry::bounding_box(poly).width(), geometry::bounding_box(poly).height());
     for (std::size_t i = 0; i < poly.size(); ++i)
-      if (geometry::distance_to_segment(p, poly[i], poly[(i + 1) % poly.size()]) <= 1e-12 * scale)
-        return false;
+      if (geometry::distance_to_segment(p, poly[i], poly[(i + 1) % poly.size()]) <= tolerance) return false;
     return true;
   };
   for (std::size_t i = 0; i < a.size(); ++i) {
     const Point p = a[i], q = a[(i + 1) % a.size()];
     for (std::size_t j = 0; j < b.size(); ++j) {
       const Point r = b[j], t = b[(j + 1) % b.size()];
-      const double d1 = geometry::orient(r, t, p), d2 = geometry::orient(r, t, q);
-      const double d3 = geometry::orient(p, q, r), d4 = geometry::orient(p, q, t);
-      if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
-        return true;
+      if (side(r, t, p) * side(r, t, q) < 0 && side(p, q, r) * side(p, q, t) < 0) return true;
     }
   }
   for (Point p : a)
