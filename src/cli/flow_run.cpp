@@ -23,41 +23,11 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-mesh::TriangleMesh build_mesh(const scenario::Scenario& s) {
-  const scenario::MeshDefinition& m = *s.mesh;
-  if (m.file) return mesh::read_msh(m.file->string());
-  mesh::MeshRequest request;
-  request.domain = s.geometry->domain;
-  for (const scenario::BoundarySegment& b : s.boundaries)
-    if (!b.is_default) request.boundaries.push_back({b.name, b.segment.from, b.segment.to});
-  for (const scenario::Segment& f : s.geometry->fractures) request.refinement_lines.push_back({f.from, f.to});
-  for (const scenario::FlowRegion& r : s.flow->regions) request.regions.push_back({r.name, r.polygon});
-  request.size = m.size;
-  request.fracture_size = m.fracture_size;
-  request.refine_distance = m.refine_distance;
-  return mesh::generate_mesh(request);
-}
-
-// Triangles whose centroid lies in the polygon: the mesh honours region boundaries, so this is
-// exact, and overlapping regions each keep all of their triangles.
-std::vector<int> select_triangles_in(const mesh::TriangleMesh& mesh, const geometry::Polygon& polygon) {
-  std::vector<int> out;
-  for (int t = 0; t < mesh.triangle_count(); ++t)
-    if (geometry::contains(polygon, mesh::triangle_centroid(mesh, t))) out.push_back(t);
-  return out;
-}
-
 // k per triangle: the last region containing it that fixes a permeability (later regions take
 // precedence, as in the mesh's region tags); elsewhere from the porosity the blocks leave open.
 std::vector<double> assign_permeability(const scenario::Scenario& s, const mesh::TriangleMesh& mesh,
                                         const std::vector<dda::BlockDefinition>& blocks) {
-  std::vector<std::optional<double>> fixed(mesh.triangle_count());
-  const auto& regions = s.flow->regions;
-  for (auto r = regions.rbegin(); r != regions.rend(); ++r) {
-    if (!r->permeability) continue;
-    for (int t : select_triangles_in(mesh, r->polygon))
-      if (!fixed[t]) fixed[t] = *r->permeability;
-  }
+  const std::vector<std::optional<double>> fixed = find_fixed_permeability(s, mesh);
   const bool all_fixed = std::all_of(fixed.begin(), fixed.end(), [](const auto& k) { return k.has_value(); });
   std::vector<double> k(mesh.triangle_count(), 0.0);
   if (all_fixed) {
@@ -75,22 +45,6 @@ std::vector<double> assign_permeability(const scenario::Scenario& s, const mesh:
   const std::vector<double> from_porosity = model.compute(porosity, mapper.element_areas());
   for (int t = 0; t < mesh.triangle_count(); ++t) k[t] = fixed[t] ? *fixed[t] : from_porosity[t];
   return k;
-}
-
-hydro::DarcyProblem build_flow_problem(const scenario::FlowDefinition& f) {
-  hydro::DarcyProblem problem;
-  problem.fluid.density = f.fluid_density;
-  problem.fluid.viscosity = f.fluid_viscosity;
-  problem.pressure = f.pressure == scenario::PressureConvention::Hydrostatic
-                         ? hydro::PressureConvention::hydrostatic
-                         : hydro::PressureConvention::overpressure;
-  for (const scenario::FlowBoundaryCondition& bc : f.boundaries) {
-    const hydro::BoundaryKind kind = bc.kind == scenario::FlowConditionKind::Head       ? hydro::BoundaryKind::head
-                                     : bc.kind == scenario::FlowConditionKind::Pressure ? hydro::BoundaryKind::pressure
-                                                                                        : hydro::BoundaryKind::flux;
-    problem.boundaries.push_back({bc.name, kind, bc.value});
-  }
-  return problem;
 }
 
 }  // namespace

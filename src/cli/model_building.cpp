@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include "dda/selection.hpp"
+#include "mesh/mesh_request.hpp"
 #include "geometry/domain_cutting.hpp"
 #include "scenario/diagnostics.hpp"
 
@@ -77,6 +78,57 @@ coupling::PermeabilityModel make_permeability_model(const Scenario& s) {
   model.cap = s.flow->permeability_cap;
   model.matrix_porosity = material.matrix_porosity;
   return model;
+}
+
+mesh::TriangleMesh build_mesh(const Scenario& s) {
+  const scenario::MeshDefinition& m = *s.mesh;
+  if (m.file) return mesh::read_msh(m.file->string());
+  mesh::MeshRequest request;
+  request.domain = s.geometry->domain;
+  for (const scenario::BoundarySegment& b : s.boundaries)
+    if (!b.is_default) request.boundaries.push_back({b.name, b.segment.from, b.segment.to});
+  for (const scenario::Segment& f : s.geometry->fractures) request.refinement_lines.push_back({f.from, f.to});
+  for (const scenario::FlowRegion& r : s.flow->regions) request.regions.push_back({r.name, r.polygon});
+  request.size = m.size;
+  request.fracture_size = m.fracture_size;
+  request.refine_distance = m.refine_distance;
+  return mesh::generate_mesh(request);
+}
+
+// Triangles whose centroid lies in the polygon: the mesh honours region boundaries, so this is
+// exact, and overlapping regions each keep all of their triangles.
+std::vector<int> select_triangles_in(const mesh::TriangleMesh& mesh, const geometry::Polygon& polygon) {
+  std::vector<int> out;
+  for (int t = 0; t < mesh.triangle_count(); ++t)
+    if (geometry::contains(polygon, mesh::triangle_centroid(mesh, t))) out.push_back(t);
+  return out;
+}
+
+std::vector<std::optional<double>> find_fixed_permeability(const Scenario& s, const mesh::TriangleMesh& mesh) {
+  std::vector<std::optional<double>> fixed(mesh.triangle_count());
+  const auto& regions = s.flow->regions;
+  for (auto r = regions.rbegin(); r != regions.rend(); ++r) {
+    if (!r->permeability) continue;
+    for (int t : select_triangles_in(mesh, r->polygon))
+      if (!fixed[t]) fixed[t] = *r->permeability;
+  }
+  return fixed;
+}
+
+hydro::DarcyProblem build_flow_problem(const scenario::FlowDefinition& f) {
+  hydro::DarcyProblem problem;
+  problem.fluid.density = f.fluid_density;
+  problem.fluid.viscosity = f.fluid_viscosity;
+  problem.pressure = f.pressure == scenario::PressureConvention::Hydrostatic
+                         ? hydro::PressureConvention::hydrostatic
+                         : hydro::PressureConvention::overpressure;
+  for (const scenario::FlowBoundaryCondition& bc : f.boundaries) {
+    const hydro::BoundaryKind kind = bc.kind == scenario::FlowConditionKind::Head       ? hydro::BoundaryKind::head
+                                     : bc.kind == scenario::FlowConditionKind::Pressure ? hydro::BoundaryKind::pressure
+                                                                                        : hydro::BoundaryKind::flux;
+    problem.boundaries.push_back({bc.name, kind, bc.value});
+  }
+  return problem;
 }
 
 double mechanics_duration(const scenario::MechanicsDefinition& m) {

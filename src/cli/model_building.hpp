@@ -7,6 +7,10 @@
 
 #include "coupling/permeability_model.hpp"
 #include "dda/definitions.hpp"
+#include "hydro/darcy_solver.hpp"
+#include "mesh/triangle_mesh.hpp"
+
+#include <optional>
 #include "scenario/scenario.hpp"
 
 namespace hydrodda::cli {
@@ -21,6 +25,20 @@ dda::ModelDefinition build_mechanics_model(const scenario::Scenario& scenario,
 
 // The permeability law of [flow] with the (only) material's porosity and grain size.
 coupling::PermeabilityModel make_permeability_model(const scenario::Scenario& scenario);
+
+// The fixed fluid mesh: generated with Gmsh (refined along the fractures, honouring the flow
+// regions) or read from mesh.file.
+mesh::TriangleMesh build_mesh(const scenario::Scenario& scenario);
+
+// Triangles whose centroid lies in the polygon: the mesh honours region boundaries, so this is
+// exact, and overlapping regions each keep all of their triangles.
+std::vector<int> select_triangles_in(const mesh::TriangleMesh& mesh, const geometry::Polygon& polygon);
+
+// Per element, the permeability a [[flow.region]] fixes (the last listed wins), or none.
+std::vector<std::optional<double>> find_fixed_permeability(const scenario::Scenario& scenario,
+                                                           const mesh::TriangleMesh& mesh);
+
+hydro::DarcyProblem build_flow_problem(const scenario::FlowDefinition& flow);
 
 // Total simulated time of a mechanics run: end_time, or steps × time_step.
 double mechanics_duration(const scenario::MechanicsDefinition& mechanics);

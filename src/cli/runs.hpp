@@ -29,5 +29,6 @@ class RunFailure : public std::runtime_error {
 
 output::RunSummary run_mechanics(const RunContext& context);
 output::RunSummary run_flow(const RunContext& context);
+output::RunSummary run_coupled(const RunContext& context);
 
 }  // namespace hydrodda::cli

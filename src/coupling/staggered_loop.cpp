@@ -1,0 +1,122 @@
+#include "coupling/staggered_loop.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "hydro/element_pressure.hpp"
+
+namespace hydrodda::coupling {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+void check_finite(const std::vector<double>& values, const char* what, int iteration) {
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (!std::isfinite(values[i]))
+      throw std::runtime_error(std::string(what) + " is not finite at index " + std::to_string(i) +
+                               " in coupling iteration " + std::to_string(iteration));
+}
+}  // namespace
+
+double relative_change(const std::vector<double>& current, const std::vector<double>& previous) {
+  double diff = 0.0, norm = 0.0;
+  for (std::size_t i = 0; i < current.size(); ++i) {
+    const double d = current[i] - (i < previous.size() ? previous[i] : 0.0);
+    diff += d * d;
+    norm += current[i] * current[i];
+  }
+  if (norm == 0.0) return diff == 0.0 ? 0.0 : 1.0;
+  return std::sqrt(diff / norm);
+}
+
+StaggeredLoop::StaggeredLoop(const mesh::TriangleMesh& mesh, hydro::DarcyProblem flow, dda::System& mechanics,
+                             LoopSettings settings)
+    : mesh_(mesh),
+      mechanics_(mechanics),
+      settings_(std::move(settings)),
+      darcy_(mesh, std::move(flow)),
+      porosity_mapper_(mesh.nodes, mesh.triangles),
+      pressure_sampler_(mesh) {
+  if (!settings_.fixed_permeability.empty() &&
+      settings_.fixed_permeability.size() != static_cast<std::size_t>(mesh.triangle_count()))
+    throw std::invalid_argument("coupling: one fixed-permeability entry per element is needed");
+}
+
+std::vector<geometry::Polygon> StaggeredLoop::current_blocks() const {
+  std::vector<geometry::Polygon> blocks;
+  blocks.reserve(mechanics_.block_count());
+  for (int b = 0; b < mechanics_.block_count(); ++b) blocks.push_back(mechanics_.polygon(b));
+  return blocks;
+}
+
+std::vector<Point> StaggeredLoop::block_displacements() const {
+  std::vector<Point> u;
+  for (int b = 0; b < mechanics_.block_count(); ++b) u.push_back(mechanics_.displacement(b));
+  return u;
+}
+
+PassReport StaggeredLoop::run_pass() {
+  PassReport report;
+  report.iteration = ++iteration_;
+
+  // Porosity and permeability from the blocks as they are now: recomputed every pass.
+  auto start = Clock::now();
+  const std::vector<geometry::Polygon> blocks = current_blocks();
+  porosity_ = porosity_mapper_.compute(blocks, settings_.permeability.matrix_porosity);
+  permeability_ = settings_.permeability.compute(porosity_, porosity_mapper_.element_areas());
+  for (std::size_t e = 0; e < settings_.fixed_permeability.size(); ++e)
+    if (settings_.fixed_permeability[e]) permeability_[e] = *settings_.fixed_permeability[e];
+  check_finite(permeability_, "the permeability", iteration_);
+  report.porosity_seconds = seconds_since(start);
+
+  // Flow, with the heads under-relaxed against the last pass.
+  start = Clock::now();
+  hydro::FlowSolution fresh = darcy_.solve(permeability_);
+  check_finite(fresh.head, "the head", iteration_);
+  if (!previous_heads_.empty() && settings_.relaxation < 1.0) {
+    const double w = settings_.relaxation;
+    for (std::size_t i = 0; i < fresh.head.size(); ++i) {
+      fresh.head[i] = w * fresh.head[i] + (1.0 - w) * previous_heads_[i];
+      fresh.pressure[i] = w * fresh.pressure[i] + (1.0 - w) * solution_.pressure[i];
+    }
+  }
+  solution_ = std::move(fresh);
+  report.flow_seconds = seconds_since(start);
+
+  // Pressures to vertex forces on the blocks as they are now.
+  start = Clock::now();
+  const std::vector<double> element_pressure = hydro::compute_centroid_pressure(mesh_, solution_);
+  mechanics_.set_vertex_forces(compute_edge_load_forces(blocks, pressure_sampler_.sample(blocks, element_pressure)));
+  report.forces_seconds = seconds_since(start);
+
+  // Mechanics under the mechanical and fluid loads.
+  start = Clock::now();
+  for (int s = 0; s < settings_.steps_per_pass; ++s) mechanics_.step();
+  report.mechanics_seconds = seconds_since(start);
+  report.time = mechanics_.time();
+
+  // Convergence norms.
+  const std::vector<Point> u = block_displacements();
+  std::vector<double> u_flat, u_previous;
+  for (Point p : u) u_flat.insert(u_flat.end(), {p.x, p.y});
+  for (Point p : previous_displacements_) u_previous.insert(u_previous.end(), {p.x, p.y});
+  report.head_change = previous_heads_.empty() ? 1.0 : relative_change(solution_.head, previous_heads_);
+  report.displacement_change = previous_displacements_.empty() ? 1.0 : relative_change(u_flat, u_previous);
+  report.converged = iteration_ > 1 && report.head_change < settings_.tolerance &&
+                     report.displacement_change < settings_.tolerance;
+  previous_heads_ = solution_.head;
+  previous_displacements_ = u;
+
+  double porosity_sum = 0.0;
+  for (double phi : porosity_.porosity) porosity_sum += phi;
+  report.mean_porosity = porosity_.porosity.empty() ? 0.0 : porosity_sum / porosity_.porosity.size();
+  for (double k : permeability_) report.max_permeability = std::max(report.max_permeability, k);
+  for (const dda::ContactInfo& c : mechanics_.contacts())
+    report.largest_opening = std::max(report.largest_opening, -c.penetration);
+  return report;
+}
+
+}  // namespace hydrodda::coupling

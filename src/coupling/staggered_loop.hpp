@@ -1,0 +1,83 @@
+#pragma once
+// The staggered HYDRO–DDA loop (the paper's Fig. 2, DESIGN.md §2.3). Each pass:
+//   porosity (clip the current blocks) → permeability → flow solve → pressures
+//   → vertex forces → mechanics (a set number of DDA steps) → converged?
+// The convergence norms are the relative changes between passes of the heads and of the
+// blocks' displacements; both are measured every pass, and `converged` is only ever set from
+// them (never from reaching max_iterations).
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "coupling/permeability_model.hpp"
+#include "coupling/porosity.hpp"
+#include "coupling/pressure_forces.hpp"
+#include "dda/system.hpp"
+#include "hydro/darcy_solver.hpp"
+#include "mesh/triangle_mesh.hpp"
+
+namespace hydrodda::coupling {
+
+struct LoopSettings {
+  double tolerance = 1.0e-4;
+  int max_iterations = 50;
+  double relaxation = 1.0;        // heads: h ← ω h_new + (1 − ω) h_old
+  int steps_per_pass = 100;       // DDA steps run in each pass
+  PermeabilityModel permeability;
+  // Per element: a permeability fixed by the scenario (flow regions), or none.
+  std::vector<std::optional<double>> fixed_permeability;
+};
+
+// What one pass did and measured.
+struct PassReport {
+  int iteration = 0;              // 1-based
+  double time = 0.0;              // mechanics time at the end of the pass
+  double head_change = 0.0;       // ‖h_k − h_{k−1}‖ / ‖h_k‖ (1 on the first pass)
+  double displacement_change = 0.0;  // ‖u_k − u_{k−1}‖ / ‖u_k‖ over block centroids (1 first)
+  double largest_opening = 0.0;   // widest open contact gap (m)
+  double mean_porosity = 0.0;
+  double max_permeability = 0.0;
+  bool converged = false;
+  // Seconds per phase in this pass.
+  double porosity_seconds = 0.0, flow_seconds = 0.0, forces_seconds = 0.0, mechanics_seconds = 0.0;
+};
+
+class StaggeredLoop {
+ public:
+  // Keeps references to the mesh and the DDA system, which must outlive the loop.
+  StaggeredLoop(const mesh::TriangleMesh& mesh, hydro::DarcyProblem flow, dda::System& mechanics,
+                LoopSettings settings);
+
+  // One pass; throws on numerical failure (with what failed).
+  PassReport run_pass();
+
+  const hydro::FlowSolution& flow() const { return solution_; }
+  const PorosityField& porosity() const { return porosity_; }
+  const std::vector<double>& permeability() const { return permeability_; }
+  int iterations() const { return iteration_; }
+
+ private:
+  std::vector<geometry::Polygon> current_blocks() const;
+  std::vector<Point> block_displacements() const;
+
+  const mesh::TriangleMesh& mesh_;
+  dda::System& mechanics_;
+  LoopSettings settings_;
+  hydro::DarcySolver darcy_;
+  PorosityMapper porosity_mapper_;
+  VertexPressureSampler pressure_sampler_;
+
+  int iteration_ = 0;
+  PorosityField porosity_;
+  std::vector<double> permeability_;
+  hydro::FlowSolution solution_;
+  std::vector<double> previous_heads_;
+  std::vector<Point> previous_displacements_;
+};
+
+// ‖a − b‖₂ / ‖a‖₂, 0 when both are zero, 1 when only `a` is.
+double relative_change(const std::vector<double>& current, const std::vector<double>& previous);
+
+}  // namespace hydrodda::coupling
