@@ -1,0 +1,273 @@
+#include "output/field_figure.hpp"
+
+#include <cairo-pdf.h>
+#include <cairo-svg.h>
+#include <cairo.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace hydrodda::output {
+
+using geometry::Point;
+
+std::array<double, 3> viridis(double t) {
+  // Viridis (van der Walt & Smith, matplotlib), sampled at 9 equally spaced stops; linear
+  // interpolation between them is within 1/255 of the full table.
+  static constexpr std::array<std::array<double, 3>, 9> stops{{{0.267004, 0.004874, 0.329415},
+                                                                {0.282623, 0.140926, 0.457517},
+                                                                {0.253935, 0.265254, 0.529983},
+                                                                {0.206756, 0.371758, 0.553117},
+                                                                {0.163625, 0.471133, 0.558148},
+                                                                {0.127568, 0.566949, 0.550556},
+                                                                {0.134692, 0.658636, 0.517649},
+                                                                {0.266941, 0.748751, 0.440573},
+                                                                {0.993248, 0.906157, 0.143936}}};
+  t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0);
+  const double x = t * (stops.size() - 1);
+  const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(x), stops.size() - 2);
+  const double f = x - i;
+  return {stops[i][0] + f * (stops[i + 1][0] - stops[i][0]), stops[i][1] + f * (stops[i + 1][1] - stops[i][1]),
+          stops[i][2] + f * (stops[i + 1][2] - stops[i][2])};
+}
+
+std::vector<double> nice_ticks(double lo, double hi, int count) {
+  if (!(hi > lo)) return {lo};
+  const double raw = (hi - lo) / std::max(1, count);
+  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = magnitude;
+  for (double m : {1.0, 2.0, 5.0, 10.0})
+    if (m * magnitude >= raw) {
+      step = m * magnitude;
+      break;
+    }
+  std::vector<double> ticks;
+  for (double v = std::ceil(lo / step - 1e-9) * step; v <= hi + 1e-9 * step; v += step)
+    ticks.push_back(std::abs(v) < 1e-12 * step ? 0.0 : v);
+  return ticks;
+}
+
+std::vector<Point> contour_segment(const std::array<Point, 3>& p, const std::array<double, 3>& v, double level) {
+  std::vector<Point> out;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    const double a = v[i] - level, b = v[j] - level;
+    if ((a < 0.0 && b >= 0.0) || (a >= 0.0 && b < 0.0)) {
+      const double t = a / (a - b);
+      out.push_back(p[i] + t * (p[j] - p[i]));
+    }
+  }
+  if (out.size() != 2) out.clear();
+  return out;
+}
+
+namespace {
+
+struct Frame {  // world (m) → page (points)
+  double scale = 1.0, x0 = 0.0, y0 = 0.0, left = 0.0, bottom = 0.0;
+  double px(double x) const { return left + (x - x0) * scale; }
+  double py(double y) const { return bottom - (y - y0) * scale; }
+};
+
+std::string tick_label(double v) { return fmt::format("{:g}", v); }
+
+void draw_text(cairo_t* cr, const std::string& text, double x, double y, double align_x, double align_y) {
+  cairo_text_extents_t e;
+  cairo_text_extents(cr, text.c_str(), &e);
+  cairo_move_to(cr, x - align_x * e.width - e.x_bearing, y - align_y * e.height - e.y_bearing);
+  cairo_show_text(cr, text.c_str());
+}
+
+void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f) {
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  cairo_paint(cr);
+  geometry::Box box;
+  for (Point p : f.nodes) box.add(p);
+  for (const auto& b : f.blocks)
+    for (Point p : b) box.add(p);
+  const double margin_left = 70, margin_right = 120, margin_top = 50, margin_bottom = 60;
+  Frame fr;
+  fr.scale = std::min((width - margin_left - margin_right) / box.width(), (height - margin_top - margin_bottom) / box.height());
+  fr.x0 = box.lo.x;
+  fr.y0 = box.lo.y;
+  fr.left = margin_left;
+  fr.bottom = margin_top + box.height() * fr.scale;
+
+  // Field range.
+  const bool per_node = !f.node_field.empty();
+  std::vector<double> values = per_node ? f.node_field : f.element_field;
+  if (f.logarithmic)
+    for (double& v : values) v = std::log10(std::max(v, 1e-300));
+  double lo = values.empty() ? 0.0 : *std::min_element(values.begin(), values.end());
+  double hi = values.empty() ? 1.0 : *std::max_element(values.begin(), values.end());
+  if (!(hi > lo)) hi = lo + 1.0;
+  const auto colour = [&](double v) { return viridis((v - lo) / (hi - lo)); };
+
+  // Elements: flat colour of the element (mean of nodes for a node field).
+  for (std::size_t t = 0; t < f.triangles.size(); ++t) {
+    const auto& tri = f.triangles[t];
+    const double v = per_node ? (values[tri[0]] + values[tri[1]] + values[tri[2]]) / 3.0 : values[t];
+    const auto c = colour(v);
+    cairo_set_source_rgb(cr, c[0], c[1], c[2]);
+    cairo_move_to(cr, fr.px(f.nodes[tri[0]].x), fr.py(f.nodes[tri[0]].y));
+    cairo_line_to(cr, fr.px(f.nodes[tri[1]].x), fr.py(f.nodes[tri[1]].y));
+    cairo_line_to(cr, fr.px(f.nodes[tri[2]].x), fr.py(f.nodes[tri[2]].y));
+    cairo_close_path(cr);
+    cairo_fill_preserve(cr);
+    cairo_set_line_width(cr, 0.3);
+    cairo_stroke(cr);  // hairline in the same colour hides anti-aliasing seams
+  }
+
+  // Head contours.
+  if (per_node && f.contour_levels > 0 && !f.logarithmic) {
+    cairo_set_source_rgba(cr, 1, 1, 1, 0.85);
+    cairo_set_line_width(cr, 0.8);
+    for (int k = 1; k <= f.contour_levels; ++k) {
+      const double level = lo + (hi - lo) * k / (f.contour_levels + 1);
+      for (const auto& tri : f.triangles) {
+        const auto seg = contour_segment({f.nodes[tri[0]], f.nodes[tri[1]], f.nodes[tri[2]]},
+                                         {f.node_field[tri[0]], f.node_field[tri[1]], f.node_field[tri[2]]}, level);
+        if (seg.empty()) continue;
+        cairo_move_to(cr, fr.px(seg[0].x), fr.py(seg[0].y));
+        cairo_line_to(cr, fr.px(seg[1].x), fr.py(seg[1].y));
+      }
+      cairo_stroke(cr);
+    }
+  }
+
+  // Blocks.
+  cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+  cairo_set_line_width(cr, 1.2);
+  for (const auto& b : f.blocks) {
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      if (i == 0) cairo_move_to(cr, fr.px(b[i].x), fr.py(b[i].y));
+      else cairo_line_to(cr, fr.px(b[i].x), fr.py(b[i].y));
+    }
+    cairo_close_path(cr);
+    cairo_stroke(cr);
+  }
+
+  // Flux arrows: length ∝ |q| up to 4% of the plot's width; under 1% of the largest hidden.
+  if (!f.element_flux.empty()) {
+    double q_max = 0.0;
+    for (Point q : f.element_flux) q_max = std::max(q_max, geometry::norm(q));
+    const double full = 0.04 * box.width() * fr.scale;
+    // Thin the arrows to about one per (plot width / 40)² by a grid over centroids.
+    const double cell = box.width() / 40.0;
+    std::vector<char> taken(40 * 41 * 41, 0);
+    cairo_set_source_rgb(cr, 0.85, 0.1, 0.1);
+    cairo_set_line_width(cr, 0.9);
+    for (std::size_t t = 0; t < f.triangles.size() && q_max > 0.0; ++t) {
+      const Point q = f.element_flux[t];
+      const double m = geometry::norm(q);
+      if (m < 0.01 * q_max) continue;
+      const auto& tri = f.triangles[t];
+      const Point c = (f.nodes[tri[0]] + f.nodes[tri[1]] + f.nodes[tri[2]]) / 3.0;
+      const int gx = std::clamp(static_cast<int>((c.x - box.lo.x) / cell), 0, 40);
+      const int gy = std::clamp(static_cast<int>((c.y - box.lo.y) / cell), 0, 40);
+      char& slot = taken[static_cast<std::size_t>(gy) * 41 + gx];
+      if (slot) continue;
+      slot = 1;
+      const double len = full * m / q_max;
+      const double ux = q.x / m, uy = -q.y / m;  // page y points down
+      const double x0 = fr.px(c.x) - 0.5 * len * ux, y0 = fr.py(c.y) - 0.5 * len * uy;
+      const double x1 = x0 + len * ux, y1 = y0 + len * uy;
+      cairo_move_to(cr, x0, y0);
+      cairo_line_to(cr, x1, y1);
+      const double head = std::min(5.0, 0.4 * len);
+      cairo_move_to(cr, x1, y1);
+      cairo_line_to(cr, x1 - head * (ux * 0.87 - uy * 0.5), y1 - head * (uy * 0.87 + ux * 0.5));
+      cairo_move_to(cr, x1, y1);
+      cairo_line_to(cr, x1 - head * (ux * 0.87 + uy * 0.5), y1 - head * (uy * 0.87 - ux * 0.5));
+      cairo_stroke(cr);
+    }
+  }
+
+  // Axes with ticks in metres.
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  cairo_set_line_width(cr, 1.0);
+  cairo_rectangle(cr, fr.px(box.lo.x), fr.py(box.hi.y), box.width() * fr.scale, box.height() * fr.scale);
+  cairo_stroke(cr);
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, 11);
+  for (double x : nice_ticks(box.lo.x, box.hi.x, 6)) {
+    cairo_move_to(cr, fr.px(x), fr.py(box.lo.y));
+    cairo_line_to(cr, fr.px(x), fr.py(box.lo.y) + 5);
+    cairo_stroke(cr);
+    draw_text(cr, tick_label(x), fr.px(x), fr.py(box.lo.y) + 8, 0.5, 0.0);
+  }
+  for (double y : nice_ticks(box.lo.y, box.hi.y, 6)) {
+    cairo_move_to(cr, fr.px(box.lo.x), fr.py(y));
+    cairo_line_to(cr, fr.px(box.lo.x) - 5, fr.py(y));
+    cairo_stroke(cr);
+    draw_text(cr, tick_label(y), fr.px(box.lo.x) - 8, fr.py(y), 1.0, 0.5);
+  }
+  draw_text(cr, "x (m)", fr.px(0.5 * (box.lo.x + box.hi.x)), fr.py(box.lo.y) + 28, 0.5, 0.0);
+  cairo_save(cr);
+  cairo_translate(cr, fr.px(box.lo.x) - 48, fr.py(0.5 * (box.lo.y + box.hi.y)));
+  cairo_rotate(cr, -M_PI / 2);
+  draw_text(cr, "y (m)", 0, 0, 0.5, 0.5);
+  cairo_restore(cr);
+  cairo_set_font_size(cr, 14);
+  draw_text(cr, f.title, 0.5 * width, 18, 0.5, 0.0);
+
+  // Colour bar.
+  const double bar_x = fr.px(box.hi.x) + 25, bar_top = fr.py(box.hi.y), bar_height = box.height() * fr.scale;
+  for (int i = 0; i < 200; ++i) {
+    const auto c = viridis(1.0 - i / 199.0);
+    cairo_set_source_rgb(cr, c[0], c[1], c[2]);
+    cairo_rectangle(cr, bar_x, bar_top + bar_height * i / 200.0, 16, bar_height / 200.0 + 0.6);
+    cairo_fill(cr);
+  }
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  cairo_rectangle(cr, bar_x, bar_top, 16, bar_height);
+  cairo_stroke(cr);
+  cairo_set_font_size(cr, 10);
+  for (double v : nice_ticks(lo, hi, 6)) {
+    const double y = bar_top + bar_height * (1.0 - (v - lo) / (hi - lo));
+    cairo_move_to(cr, bar_x + 16, y);
+    cairo_line_to(cr, bar_x + 20, y);
+    cairo_stroke(cr);
+    draw_text(cr, f.logarithmic ? fmt::format("1e{:g}", v) : tick_label(v), bar_x + 23, y, 0.0, 0.5);
+  }
+  cairo_save(cr);
+  cairo_translate(cr, bar_x + 85, bar_top + 0.5 * bar_height);
+  cairo_rotate(cr, -M_PI / 2);
+  cairo_set_font_size(cr, 11);
+  draw_text(cr, f.field_label, 0, 0, 0.5, 0.5);
+  cairo_restore(cr);
+}
+
+}  // namespace
+
+void render_field_figure(const std::filesystem::path& path, const FieldFigure& figure) {
+  const double width = 760, height = 640;
+  const std::string ext = path.extension().string();
+  // Drawn under a temporary name and renamed, like every file of the run folder.
+  std::filesystem::path temporary = path;
+  temporary += ".tmp";
+  cairo_surface_t* surface = nullptr;
+  if (ext == ".png") surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, static_cast<int>(width * 2), static_cast<int>(height * 2));
+  else if (ext == ".svg") surface = cairo_svg_surface_create(temporary.c_str(), width, height);
+  else if (ext == ".pdf") surface = cairo_pdf_surface_create(temporary.c_str(), width, height);
+  else throw std::runtime_error(fmt::format("cannot draw {}: use .png, .svg or .pdf", path.string()));
+  cairo_t* cr = cairo_create(surface);
+  if (ext == ".png") cairo_scale(cr, 2.0, 2.0);  // 2× resolution for print
+  draw_figure(cr, width, height, figure);
+  cairo_destroy(cr);
+  cairo_status_t status = cairo_surface_status(surface);
+  if (status == CAIRO_STATUS_SUCCESS && ext == ".png") status = cairo_surface_write_to_png(surface, temporary.c_str());
+  cairo_surface_finish(surface);
+  if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface);
+  cairo_surface_destroy(surface);
+  if (status != CAIRO_STATUS_SUCCESS) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw std::runtime_error(fmt::format("cannot write {}: {}", path.string(), cairo_status_to_string(status)));
+  }
+  std::filesystem::rename(temporary, path);
+}
+
+}  // namespace hydrodda::output

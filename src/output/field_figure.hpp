@@ -1,0 +1,44 @@
+#pragma once
+// A map of a run as the paper draws it (its Figs. 6, 8, 11): the fluid mesh coloured by a
+// field, head contours, the deformed blocks, and Darcy flux arrows (arrows under 1% of the
+// largest hidden); a colour bar, axes in metres, a title. PNG, SVG or PDF by file extension.
+
+#include <array>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "geometry/point.hpp"
+#include "geometry/polygon.hpp"
+
+namespace hydrodda::output {
+
+struct FieldFigure {
+  std::string title;
+  std::string field_label;                   // the colour bar's label, e.g. "head (m)"
+  std::span<const geometry::Point> nodes;
+  std::span<const std::array<int, 3>> triangles;
+  std::vector<double> node_field;            // coloured and contoured (per node), or empty
+  std::vector<double> element_field;         // coloured per element when node_field is empty
+  bool logarithmic = false;                  // colour by log10 of the element field
+  int contour_levels = 10;                   // head contours of node_field; 0 for none
+  std::vector<geometry::Polygon> blocks;     // outlines drawn over the field
+  std::vector<geometry::Point> element_flux; // arrows at element centroids, or empty
+};
+
+// Throws std::runtime_error naming the path when the file cannot be written.
+void render_field_figure(const std::filesystem::path& path, const FieldFigure& figure);
+
+// The points where a P1 field equals `level` inside one triangle: 0 or 2 points (a segment).
+// Linear interpolation along the edges whose ends straddle the level.
+std::vector<geometry::Point> contour_segment(const std::array<geometry::Point, 3>& corners,
+                                             const std::array<double, 3>& values, double level);
+
+// "Nice" tick values covering [lo, hi] with about `count` ticks (1, 2, 5 × 10^k steps).
+std::vector<double> nice_ticks(double lo, double hi, int count);
+
+// Viridis colour map, t in [0, 1] → RGB in [0, 1].
+std::array<double, 3> viridis(double t);
+
+}  // namespace hydrodda::output
