@@ -1,0 +1,76 @@
+#include "output/field_figure.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace hydrodda::output {
+namespace {
+
+namespace fs = std::filesystem;
+using geometry::Point;
+
+TEST(ContourSegment, LinearFieldContourLiesOnItsLevelLine) {
+  // f = 2x + 3y + 1 is exact in P1: every contour point of level c satisfies 2x + 3y + 1 = c
+  // to 1e-12.
+  const std::array<Point, 3> p{Point{0.1, 0.2}, Point{1.3, 0.4}, Point{0.5, 1.7}};
+  std::array<double, 3> v{};
+  for (int i = 0; i < 3; ++i) v[i] = 2 * p[i].x + 3 * p[i].y + 1;
+  for (double c : {2.0, 3.5, 5.0, 6.5}) {
+    const auto seg = contour_segment(p, v, c);
+    ASSERT_EQ(seg.size(), 2u) << c;
+    for (Point q : seg) EXPECT_NEAR(2 * q.x + 3 * q.y + 1, c, 1e-12);
+  }
+  EXPECT_TRUE(contour_segment(p, v, 100.0).empty());
+}
+
+TEST(NiceTicks, StepsOfOneTwoFive) {
+  EXPECT_EQ(nice_ticks(0.0, 5.0, 6), (std::vector<double>{0, 1, 2, 3, 4, 5}));
+  EXPECT_EQ(nice_ticks(0.0, 20.0, 5), (std::vector<double>{0, 5, 10, 15, 20}));
+  const auto t = nice_ticks(-0.03, 0.07, 5);
+  ASSERT_FALSE(t.empty());
+  EXPECT_NEAR(t[1] - t[0], 0.02, 1e-15);
+}
+
+TEST(Viridis, EndsOfTheMap) {
+  EXPECT_NEAR(viridis(0.0)[0], 0.267004, 1e-12);
+  EXPECT_NEAR(viridis(1.0)[1], 0.906157, 1e-12);
+  EXPECT_EQ(viridis(-1.0), viridis(0.0));
+}
+
+TEST(FieldFigure, WritesPngSvgAndPdf) {
+  const std::vector<Point> nodes{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const std::vector<std::array<int, 3>> triangles{{0, 1, 2}, {0, 2, 3}};
+  FieldFigure f;
+  f.title = "test";
+  f.field_label = "head (m)";
+  f.nodes = nodes;
+  f.triangles = triangles;
+  f.node_field = {0.0, 1.0, 1.0, 0.0};
+  f.blocks = {{{0.1, 0.1}, {0.4, 0.1}, {0.4, 0.4}}};
+  f.element_flux = {{-1.0, 0.0}, {-1.0, 0.0}};
+  const fs::path dir = fs::temp_directory_path() / "hydrodda-figures";
+  fs::create_directories(dir);
+  const auto head = [](const fs::path& p, std::size_t n) {
+    std::ifstream in(p, std::ios::binary);
+    std::string s(n, '\0');
+    in.read(s.data(), static_cast<std::streamsize>(n));
+    return s;
+  };
+  render_field_figure(dir / "f.png", f);
+  EXPECT_EQ(head(dir / "f.png", 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  render_field_figure(dir / "f.pdf", f);
+  EXPECT_EQ(head(dir / "f.pdf", 5), "%PDF-");
+  render_field_figure(dir / "f.svg", f);
+  std::ifstream svg(dir / "f.svg");
+  const std::string text((std::istreambuf_iterator<char>(svg)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("<svg"), std::string::npos);
+  EXPECT_NE(text.find("</svg>"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir / "f.svg.tmp"));
+  EXPECT_THROW(render_field_figure(dir / "f.jpg", f), std::runtime_error);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace hydrodda::output
