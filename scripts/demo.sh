@@ -7,9 +7,17 @@ out=out/demo
 "$build_dir/bin/hydrodda" run "$scenario" -o "$out" --overwrite
 echo
 echo "Results of $scenario are in $out/:"
-echo "  summary.json       what converged, block displacements and stresses, boundary flows"
-echo "  history.csv        the coupling loop's residuals, one row per iteration"
-echo "  *.pvd              open in ParaView (fluid mesh and blocks over the iterations)"
-if [ -d "$out/figures" ]; then
-  echo "  figures/           $(ls "$out/figures" | tr '\n' ' ')"
-fi
+describe() {
+  case "$1" in
+    summary.json) echo "converged or not, block displacements and stresses, boundary flows" ;;
+    history.csv) echo "the coupling loop's convergence norms and flows, one row per iteration" ;;
+    measure.csv) echo "measured points, one row per DDA step" ;;
+    *.pvd) echo "open in ParaView" ;;
+    figures) echo "$(ls "$out/figures" | tr '\n' ' ')" ;;
+    *) echo "" ;;
+  esac
+}
+for entry in $(ls "$out"); do
+  case "$entry" in *.vtu) continue ;; esac
+  printf '  %-16s %s\n' "$entry" "$(describe "$entry")"
+done

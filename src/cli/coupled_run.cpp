@@ -5,6 +5,7 @@
 
 #include "cli/interrupt.hpp"
 #include "cli/model_building.hpp"
+#include "cli/run_summary.hpp"
 #include "cli/runs.hpp"
 #include "coupling/staggered_loop.hpp"
 #include "dda/system.hpp"
@@ -19,39 +20,6 @@ namespace {
 using geometry::Point;
 using output::CsvTable;
 using Clock = std::chrono::steady_clock;
-
-output::RunSummary summarise(const scenario::Scenario& s, const dda::System& system) {
-  output::RunSummary summary;
-  summary.title = s.title;
-  summary.scenario = s.file.string();
-  for (int b = 0; b < system.block_count(); ++b) {
-    const Point c = system.centroid(b);
-    const Point u = system.displacement(b);
-    summary.blocks.push_back({b, {c.x, c.y}, {u.x, u.y}, system.rotation(b), system.stress(b), system.area(b)});
-  }
-  const auto positions = system.measured_positions();
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    const Point start = s.mechanics->measures[i].point;
-    summary.measures.push_back({s.mechanics->measures[i].name,
-                                {positions[i].x, positions[i].y},
-                                {positions[i].x - start.x, positions[i].y - start.y}});
-  }
-  return summary;
-}
-
-output::FlowSummary summarise_flow(const scenario::Scenario& s, const mesh::TriangleMesh& mesh,
-                                   const hydro::FlowSolution& solution) {
-  output::FlowSummary flow;
-  for (const hydro::BoundaryFlow& b : solution.boundary_flows) flow.boundaries.push_back({b.name, b.flow});
-  flow.balance = solution.balance_error;
-  for (const scenario::FlowRegion& r : s.flow->regions) {
-    const std::vector<int> triangles = select_triangles_in(mesh, r.polygon);
-    if (triangles.empty()) continue;
-    const hydro::RegionFlow region = hydro::compute_region_flow(mesh, solution, triangles);
-    flow.regions.push_back({r.name, region.flow, region.effective_conductivity});
-  }
-  return flow;
-}
 
 // The paper's view of the result: heads with contours, the deformed blocks and the flux; and
 // the porosity and permeability maps the last pass computed.
@@ -121,7 +89,7 @@ output::RunSummary run_coupled(const RunContext& context) {
   double porosity_s = 0, flow_s = 0, forces_s = 0, mechanics_s = 0;
   bool converged = false;
   const auto current_summary = [&] {
-    output::RunSummary summary = summarise(s, system);
+    output::RunSummary summary = summarise_mechanics(s, system);
     if (loop.iterations() > 0) summary.flow = summarise_flow(s, mesh, loop.flow());
     summary.iterations = loop.iterations();
     summary.timings = {{"mesh", mesh_seconds}, {"porosity", porosity_s}, {"flow", flow_s},

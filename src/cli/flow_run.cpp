@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "cli/model_building.hpp"
+#include "cli/run_summary.hpp"
 #include "cli/runs.hpp"
 #include "coupling/permeability_model.hpp"
 #include "coupling/porosity.hpp"
@@ -71,19 +72,7 @@ output::RunSummary run_flow(const RunContext& context) {
   context.progress.update(fmt::format("flow solved: balance error {:.2e}", solution.balance_error));
   context.progress.finish();
 
-  output::FlowSummary flow;
-  for (const hydro::BoundaryFlow& b : solution.boundary_flows) flow.boundaries.push_back({b.name, b.flow});
-  flow.balance = solution.balance_error;
-  for (const scenario::FlowRegion& r : s.flow->regions) {
-    const std::vector<int> triangles = select_triangles_in(mesh, r.polygon);
-    if (triangles.empty()) {
-      spdlog::warn("flow region \"{}\" holds no element: nothing to report", r.name);
-      continue;
-    }
-    const hydro::RegionFlow region = hydro::compute_region_flow(mesh, solution, triangles);
-    flow.regions.push_back({r.name, region.flow, region.effective_conductivity});
-  }
-  summary.flow = std::move(flow);
+  summary.flow = summarise_flow(s, mesh, solution);
   summary.converged = true;  // one linear solve: nothing to iterate
   summary.iterations = 1;
   return summary;

@@ -5,6 +5,7 @@
 
 #include "cli/interrupt.hpp"
 #include "cli/model_building.hpp"
+#include "cli/run_summary.hpp"
 #include "cli/runs.hpp"
 #include "dda/system.hpp"
 #include "output/csv_table.hpp"
@@ -15,25 +16,6 @@ namespace {
 
 using output::CsvTable;
 using geometry::Point;
-
-output::RunSummary summarise(const scenario::Scenario& s, const dda::System& system) {
-  output::RunSummary summary;
-  summary.title = s.title;
-  summary.scenario = s.file.string();
-  for (int b = 0; b < system.block_count(); ++b) {
-    const Point c = system.centroid(b);
-    const Point u = system.displacement(b);
-    summary.blocks.push_back({b, {c.x, c.y}, {u.x, u.y}, system.rotation(b), system.stress(b), system.area(b)});
-  }
-  const auto positions = system.measured_positions();
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    const Point start = s.mechanics->measures[i].point;
-    summary.measures.push_back({s.mechanics->measures[i].name,
-                                {positions[i].x, positions[i].y},
-                                {positions[i].x - start.x, positions[i].y - start.y}});
-  }
-  return summary;
-}
 
 }  // namespace
 
@@ -66,7 +48,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
     while (more()) {
       if (interrupt_requested()) {
         write_tables();
-        output::RunSummary summary = summarise(s, system);
+        output::RunSummary summary = summarise_mechanics(s, system);
         summary.iterations = static_cast<int>(step);
         throw RunFailure(fmt::format("interrupted at step {} (t = {:g} s)", step, system.time()), summary);
       }
@@ -91,7 +73,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
     throw;
   } catch (const std::exception& e) {
     write_tables();
-    output::RunSummary summary = summarise(s, system);
+    output::RunSummary summary = summarise_mechanics(s, system);
     summary.iterations = static_cast<int>(step);
     throw RunFailure(fmt::format("mechanics failed at step {} (t = {:g} s): {}", step + 1, system.time(), e.what()),
                      summary);
@@ -99,7 +81,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
   write_tables();
   context.progress.finish();
 
-  output::RunSummary summary = summarise(s, system);
+  output::RunSummary summary = summarise_mechanics(s, system);
   // Mechanics alone has no coupling loop: `converged` says the run reached its end.
   summary.converged = true;
   summary.iterations = static_cast<int>(step);

@@ -16,14 +16,7 @@ using hydrodda::testing::run_program;
 namespace {
 
 nlohmann::json run_and_read(const std::string& name) {
-  const fs::path scenario = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/verification" / (name + ".toml");
-  const fs::path out = fs::temp_directory_path() / ("hydrodda-" + name);
-  fs::remove_all(out);
-  const auto result = run_program("run " + scenario.string() + " -o " + out.string());
-  EXPECT_EQ(result.exit_code, 0) << result.output;
-  auto summary = nlohmann::json::parse(std::ifstream(out / "summary.json"));
-  fs::remove_all(out);
-  return summary;
+  return hydrodda::testing::run_scenario_and_read("scenarios/verification/" + name + ".toml");
 }
 
 TEST(MechanicsVerification, FreeFall) {

@@ -2,9 +2,14 @@
 // Runs the real hydrodda program and captures what it prints, for command-line tests.
 
 #include <array>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <cstdio>
 #include <string>
 #include <sys/wait.h>
+
+#include <gtest/gtest.h>
 
 namespace hydrodda::testing {
 
@@ -23,6 +28,21 @@ inline ProgramResult run_program(const std::string& arguments) {
   const int status = ::pclose(pipe);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
+}
+
+// Runs a shipped scenario (path relative to the source tree) into a fresh temporary folder and
+// returns its summary.json; the test fails if the run does not exit with 0.
+inline nlohmann::json run_scenario_and_read(const std::string& relative_path) {
+  namespace fs = std::filesystem;
+  const fs::path scenario = fs::path(HYDRODDA_SOURCE_DIR) / relative_path;
+  const fs::path out = fs::temp_directory_path() / ("hydrodda-" + scenario.stem().string());
+  fs::remove_all(out);
+  const ProgramResult result = run_program("run " + scenario.string() + " -o " + out.string());
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  std::ifstream in(out / "summary.json");
+  nlohmann::json summary = in ? nlohmann::json::parse(in) : nlohmann::json::object();
+  fs::remove_all(out);
+  return summary;
 }
 
 }  // namespace hydrodda::testing

@@ -1,0 +1,48 @@
+#include "cli/run_summary.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include "cli/model_building.hpp"
+#include "hydro/region_flow.hpp"
+
+namespace hydrodda::cli {
+
+using geometry::Point;
+
+output::RunSummary summarise_mechanics(const scenario::Scenario& s, const dda::System& system) {
+  output::RunSummary summary;
+  summary.title = s.title;
+  summary.scenario = s.file.string();
+  for (int b = 0; b < system.block_count(); ++b) {
+    const Point c = system.centroid(b);
+    const Point u = system.displacement(b);
+    summary.blocks.push_back({b, {c.x, c.y}, {u.x, u.y}, system.rotation(b), system.stress(b), system.area(b)});
+  }
+  const auto positions = system.measured_positions();
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    const Point start = s.mechanics->measures[i].point;
+    summary.measures.push_back({s.mechanics->measures[i].name,
+                                {positions[i].x, positions[i].y},
+                                {positions[i].x - start.x, positions[i].y - start.y}});
+  }
+  return summary;
+}
+
+output::FlowSummary summarise_flow(const scenario::Scenario& s, const mesh::TriangleMesh& mesh,
+                                   const hydro::FlowSolution& solution) {
+  output::FlowSummary flow;
+  for (const hydro::BoundaryFlow& b : solution.boundary_flows) flow.boundaries.push_back({b.name, b.flow});
+  flow.balance = solution.balance_error;
+  for (const scenario::FlowRegion& r : s.flow->regions) {
+    const std::vector<int> triangles = select_triangles_in(mesh, r.polygon);
+    if (triangles.empty()) {
+      spdlog::warn("flow region \"{}\" holds no element: nothing to report", r.name);
+      continue;
+    }
+    const hydro::RegionFlow region = hydro::compute_region_flow(mesh, solution, triangles);
+    flow.regions.push_back({r.name, region.flow, region.effective_conductivity});
+  }
+  return flow;
+}
+
+}  // namespace hydrodda::cli
