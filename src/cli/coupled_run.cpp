@@ -3,6 +3,7 @@
 
 #include <chrono>
 
+#include "cli/figures.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/model_building.hpp"
 #include "cli/run_summary.hpp"
@@ -11,7 +12,6 @@
 #include "dda/system.hpp"
 #include "hydro/region_flow.hpp"
 #include "output/csv_table.hpp"
-#include "output/field_figure.hpp"
 
 namespace hydrodda::cli {
 
@@ -20,43 +20,6 @@ namespace {
 using geometry::Point;
 using output::CsvTable;
 using Clock = std::chrono::steady_clock;
-
-// The paper's view of the result: heads with contours, the deformed blocks and the flux; and
-// the porosity and permeability maps the last pass computed.
-void draw_figures(const scenario::Scenario& s, const output::RunFolder& folder, const mesh::TriangleMesh& mesh,
-                  const coupling::StaggeredLoop& loop, const dda::System& system) {
-  if (s.output.figures.empty()) return;
-  std::vector<geometry::Polygon> blocks;
-  for (int b = 0; b < system.block_count(); ++b) blocks.push_back(system.polygon(b));
-  const std::filesystem::path dir = folder.figures();
-  for (const std::string& format : s.output.figures) {
-    output::FieldFigure head;
-    head.title = s.title;
-    head.field_label = "hydraulic head (m)";
-    head.nodes = mesh.nodes;
-    head.triangles = mesh.triangles;
-    head.node_field = loop.flow().head;
-    head.blocks = blocks;
-    head.element_flux = loop.flow().flux;
-    output::render_field_figure(dir / ("head." + format), head);
-
-    output::FieldFigure porosity;
-    porosity.title = "Equivalent porosity";
-    porosity.field_label = "porosity";
-    porosity.nodes = mesh.nodes;
-    porosity.triangles = mesh.triangles;
-    porosity.element_field = loop.porosity().porosity;
-    porosity.blocks = blocks;
-    output::render_field_figure(dir / ("porosity." + format), porosity);
-
-    output::FieldFigure permeability = porosity;
-    permeability.title = "Permeability";
-    permeability.field_label = "permeability (m2, log scale)";
-    permeability.element_field = loop.permeability();
-    permeability.logarithmic = true;
-    output::render_field_figure(dir / ("permeability." + format), permeability);
-  }
-}
 
 }  // namespace
 
@@ -125,7 +88,9 @@ output::RunSummary run_coupled(const RunContext& context) {
     throw RunFailure(fmt::format("coupling iteration {} failed: {}", loop.iterations(), e.what()), current_summary());
   }
   context.progress.finish();
-  draw_figures(s, context.folder, mesh, loop, system);
+  std::vector<geometry::Polygon> blocks;
+  for (int b = 0; b < system.block_count(); ++b) blocks.push_back(system.polygon(b));
+  draw_figures(s, context.folder, {mesh, loop.flow(), loop.porosity().porosity, loop.permeability(), blocks});
   output::RunSummary summary = current_summary();
   summary.converged = converged;
   if (!converged)

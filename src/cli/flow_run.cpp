@@ -3,6 +3,7 @@
 
 #include <chrono>
 
+#include "cli/figures.hpp"
 #include "cli/model_building.hpp"
 #include "cli/run_summary.hpp"
 #include "cli/runs.hpp"
@@ -62,7 +63,8 @@ output::RunSummary run_flow(const RunContext& context) {
   spdlog::info("mesh: {} nodes, {} triangles", mesh.node_count(), mesh.triangle_count());
 
   start = Clock::now();
-  const std::vector<double> permeability = assign_permeability(s, mesh, build_blocks(s));
+  const std::vector<dda::BlockDefinition> blocks = build_blocks(s);
+  const std::vector<double> permeability = assign_permeability(s, mesh, blocks);
   summary.timings.push_back({"permeability", seconds_since(start)});
 
   start = Clock::now();
@@ -73,6 +75,10 @@ output::RunSummary run_flow(const RunContext& context) {
   context.progress.finish();
 
   summary.flow = summarise_flow(s, mesh, solution);
+  std::vector<geometry::Polygon> polygons;
+  for (const auto& b : blocks) polygons.push_back(b.polygon);
+  const std::vector<double> no_porosity;
+  draw_figures(s, context.folder, {mesh, solution, no_porosity, permeability, polygons});
   summary.converged = true;  // one linear solve: nothing to iterate
   summary.iterations = 1;
   return summary;

@@ -1,0 +1,26 @@
+#pragma once
+// The figures a run draws into figures/, in each format output.figures asks for.
+
+#include <vector>
+
+#include "geometry/polygon.hpp"
+#include "hydro/flow_solution.hpp"
+#include "mesh/triangle_mesh.hpp"
+#include "output/run_folder.hpp"
+#include "scenario/scenario.hpp"
+
+namespace hydrodda::cli {
+
+struct FlowPicture {
+  const mesh::TriangleMesh& mesh;
+  const hydro::FlowSolution& flow;
+  const std::vector<double>& porosity;      // per element; may be empty
+  const std::vector<double>& permeability;  // per element
+  const std::vector<geometry::Polygon>& blocks;
+};
+
+// head.* (heads with contours, blocks, flux arrows under 1% of the largest hidden, as the
+// paper's Fig. 6), porosity.* (when given) and permeability.* (log scale).
+void draw_figures(const scenario::Scenario& scenario, const output::RunFolder& folder, const FlowPicture& picture);
+
+}  // namespace hydrodda::cli
