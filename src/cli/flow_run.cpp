@@ -7,6 +7,7 @@
 #include "cli/model_building.hpp"
 #include "cli/run_summary.hpp"
 #include "cli/runs.hpp"
+#include "coupling/local_aperture.hpp"
 #include "coupling/permeability_model.hpp"
 #include "coupling/porosity.hpp"
 #include "hydro/darcy_solver.hpp"
@@ -44,7 +45,14 @@ std::vector<double> assign_permeability(const scenario::Scenario& s, const mesh:
   const coupling::PorosityMapper mapper(mesh.nodes, mesh.triangles);
   const coupling::PorosityField porosity = mapper.compute(polygons, material.matrix_porosity);
   const coupling::PermeabilityModel model = make_permeability_model(s);
-  const std::vector<double> from_porosity = model.compute(porosity, mapper.element_areas());
+  std::vector<double> apertures;
+  if (model.law == coupling::PermeabilityLaw::cubic) {
+    std::vector<geometry::Point> centroids;
+    for (int t = 0; t < mesh.triangle_count(); ++t) centroids.push_back(mesh::triangle_centroid(mesh, t));
+    apertures = coupling::compute_local_apertures(centroids, porosity.fracture_area, polygons, model.domain,
+                                                  model.aperture_reach);
+  }
+  const std::vector<double> from_porosity = model.compute(porosity, mapper.element_areas(), apertures);
   for (int t = 0; t < mesh.triangle_count(); ++t) k[t] = fixed[t] ? *fixed[t] : from_porosity[t];
   return k;
 }

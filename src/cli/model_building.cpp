@@ -77,6 +77,9 @@ coupling::PermeabilityModel make_permeability_model(const Scenario& s) {
   model.grain_diameter = material.grain_diameter.value_or(0.0);
   model.cap = s.flow->permeability_cap;
   model.matrix_porosity = material.matrix_porosity;
+  if (s.geometry) model.domain = s.geometry->domain;
+  // Apertures are looked for within the far-field element size: far wider than any fracture.
+  model.aperture_reach = s.mesh ? s.mesh->size : 1.0;
   return model;
 }
 

@@ -6,11 +6,17 @@
 
 namespace hydrodda::coupling {
 
-std::vector<double> PermeabilityModel::compute(const PorosityField& porosity, std::span<const double>) const {
-  if (law == PermeabilityLaw::cubic)
-    throw std::runtime_error("flow.permeability_law = \"cubic\" is not available yet: the local aperture per "
-                             "element is not computed yet; use \"kozeny-carman\"");
+std::vector<double> PermeabilityModel::compute(const PorosityField& porosity, std::span<const double> element_areas,
+                                               std::span<const double> apertures) const {
   std::vector<double> k(porosity.porosity.size());
+  if (law == PermeabilityLaw::cubic) {
+    if (apertures.size() != k.size() || element_areas.size() != k.size())
+      throw std::invalid_argument("cubic law: one aperture and one area per element are needed");
+    const double k_matrix = hydro::kozeny_carman_permeability(matrix_porosity, grain_diameter, cap);
+    for (std::size_t e = 0; e < k.size(); ++e)
+      k[e] = hydro::cubic_law_permeability(porosity.fracture_area[e] / element_areas[e], apertures[e], k_matrix);
+    return k;
+  }
   for (std::size_t e = 0; e < k.size(); ++e)
     k[e] = hydro::kozeny_carman_permeability(porosity.porosity[e], grain_diameter, cap);
   return k;

@@ -15,10 +15,17 @@ struct PermeabilityModel {
   double grain_diameter = 0.0;   // m (Kozeny–Carman)
   double cap = 9.869e-11;        // m² (Kozeny–Carman)
   double matrix_porosity = 0.0;
+  // Cubic law: the fluid domain (its boundary is a wall where fewer than two blocks are near)
+  // and how far from an element walls are looked for.
+  geometry::Polygon domain;
+  double aperture_reach = 1.0;
 
-  // k per element. Kozeny–Carman: the paper's eq. 9 on φ_e. Cubic: not available yet (the
-  // local aperture per element is not computed yet): throws rather than guess.
-  std::vector<double> compute(const PorosityField& porosity, std::span<const double> element_areas) const;
+  // k per element. Kozeny–Carman: the paper's eq. 9 on φ_e. Cubic: k_m + (A_f/A_e) w_e²/12
+  // with k_m the Kozeny–Carman value of the matrix porosity and w_e the local aperture
+  // (local_aperture.hpp; required for the cubic law, ignored otherwise). The cap is the
+  // paper's device for Kozeny–Carman and does not apply to the cubic law.
+  std::vector<double> compute(const PorosityField& porosity, std::span<const double> element_areas,
+                              std::span<const double> apertures = {}) const;
 };
 
 }  // namespace hydrodda::coupling

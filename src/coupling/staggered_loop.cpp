@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "coupling/local_aperture.hpp"
 #include "hydro/element_pressure.hpp"
 
 namespace hydrodda::coupling {
@@ -40,6 +41,7 @@ StaggeredLoop::StaggeredLoop(const mesh::TriangleMesh& mesh, hydro::DarcyProblem
       darcy_(mesh, std::move(flow)),
       porosity_mapper_(mesh.nodes, mesh.triangles),
       pressure_sampler_(mesh) {
+  for (int t = 0; t < mesh.triangle_count(); ++t) centroids_.push_back(mesh::triangle_centroid(mesh, t));
   if (!settings_.fixed_permeability.empty() &&
       settings_.fixed_permeability.size() != static_cast<std::size_t>(mesh.triangle_count()))
     throw std::invalid_argument("coupling: one fixed-permeability entry per element is needed");
@@ -66,7 +68,11 @@ PassReport StaggeredLoop::run_pass() {
   auto start = Clock::now();
   const std::vector<geometry::Polygon> blocks = current_blocks();
   porosity_ = porosity_mapper_.compute(blocks, settings_.permeability.matrix_porosity);
-  permeability_ = settings_.permeability.compute(porosity_, porosity_mapper_.element_areas());
+  std::vector<double> apertures;
+  if (settings_.permeability.law == PermeabilityLaw::cubic)
+    apertures = compute_local_apertures(centroids_, porosity_.fracture_area, blocks, settings_.permeability.domain,
+                                        settings_.permeability.aperture_reach);
+  permeability_ = settings_.permeability.compute(porosity_, porosity_mapper_.element_areas(), apertures);
   for (std::size_t e = 0; e < settings_.fixed_permeability.size(); ++e)
     if (settings_.fixed_permeability[e]) permeability_[e] = *settings_.fixed_permeability[e];
   check_finite(permeability_, "the permeability", iteration_);

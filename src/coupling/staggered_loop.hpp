@@ -69,6 +69,7 @@ class StaggeredLoop {
   PorosityMapper porosity_mapper_;
   VertexPressureSampler pressure_sampler_;
 
+  std::vector<Point> centroids_;  // of the fixed mesh's elements
   int iteration_ = 0;
   PorosityField porosity_;
   std::vector<double> permeability_;
