@@ -61,7 +61,7 @@ void check_points(std::span<const Point> points) {
 
 using Out = std::back_insert_iterator<std::string>;
 
-// "{:.17g}" prints the shortest-safe form that reads back to the same double.
+// "{:.17g}": 17 significant digits are enough for every double to read back to itself.
 void write_data_array(std::string& out, const DataArray& a) {
   const int written = a.components == 2 ? 3 : a.components;
   fmt::format_to(Out(out),

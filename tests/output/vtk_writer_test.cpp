@@ -152,7 +152,8 @@ class VtkWriter : public ::testing::Test {
 
 TEST_F(VtkWriter, TrianglesRoundTripPointsCellsAndArrays) {
   // Unit square split along its diagonal, with awkward decimals for the round trip.
-  const std::vector<Point> nodes{{0.1, 0.2}, {1.0 / 3.0, -2.5e-7}, {1e5, 7.0 / 9.0}, {-3.0, 1e-300}};
+  const std::vector<Point> nodes{
+      {0.1, 0.2}, {1.0 / 3.0, -2.5e-7}, {1e5, 7.0 / 9.0}, {-3.0, 1e-300}};
   const std::vector<std::array<int, 3>> triangles{{0, 1, 2}, {0, 2, 3}};
   const std::vector<DataArray> point_data{
       {"pressure", 1, {1.5, -2.0 / 7.0, 3e8, 0.0}},
@@ -293,6 +294,10 @@ std::string message_of(const std::function<void()>& f) {
   return "(no std::invalid_argument)";
 }
 
+void expect_mentions(const std::string& message, const std::string& needle) {
+  EXPECT_NE(message.find(needle), std::string::npos) << "message: " << message;
+}
+
 TEST(VtkWriterErrors, SizeMismatchesNameTheArray) {
   const fs::path dir = fresh_dir("hydrodda-vtk-writer-errors");
   const std::vector<Point> nodes{{0, 0}, {1, 0}, {0, 1}};
@@ -303,36 +308,37 @@ TEST(VtkWriterErrors, SizeMismatchesNameTheArray) {
       write_vtu_triangles(dir / "t.vtu", nodes, triangle, point_data, cell_data);
     });
   };
-  EXPECT_NE(triangles_with({{"pressure", 1, {1, 2}}}, {}).find("'pressure' has 2 values; expected 3"),
-            std::string::npos);
-  EXPECT_NE(triangles_with({}, {{"flux", 2, {1, 2, 3}}}).find("cell array 'flux' has 3 values; expected 2"),
-            std::string::npos);
-  EXPECT_NE(triangles_with({{"head", 0, {}}}, {}).find("'head' has 0 components"),
-            std::string::npos);
-  EXPECT_NE(triangles_with({{"", 1, {1, 2, 3}}}, {}).find("empty name"), std::string::npos);
-  EXPECT_NE(triangles_with({{"p", 1, {1, 2, 3}}, {"p", 1, {1, 2, 3}}}, {}).find("'p' appears twice"),
-            std::string::npos);
-  EXPECT_NE(triangles_with({{"p", 1, {1, NAN, 3}}}, {}).find("'p' has a non-finite value at index 1"),
-            std::string::npos);
+  expect_mentions(triangles_with({{"pressure", 1, {1, 2}}}, {}),
+                  "point array 'pressure' has 2 values; expected 3");
+  expect_mentions(triangles_with({}, {{"flux", 2, {1, 2, 3}}}),
+                  "cell array 'flux' has 3 values; expected 2");
+  expect_mentions(triangles_with({{"head", 0, {}}}, {}), "'head' has 0 components");
+  expect_mentions(triangles_with({{"", 1, {1, 2, 3}}}, {}), "empty name");
+  expect_mentions(triangles_with({{"p", 1, {1, 2, 3}}, {"p", 1, {1, 2, 3}}}, {}),
+                  "'p' appears twice");
+  expect_mentions(triangles_with({{"p", 1, {1, NAN, 3}}}, {}),
+                  "'p' has a non-finite value at index 1");
+
   const std::vector<std::array<int, 3>> bad_triangle{{0, 1, 3}};
-  EXPECT_NE(message_of([&] { write_vtu_triangles(dir / "t.vtu", nodes, bad_triangle, {}, {}); })
-                .find("triangle 0 refers to node 3"),
-            std::string::npos);
+  expect_mentions(
+      message_of([&] { write_vtu_triangles(dir / "t.vtu", nodes, bad_triangle, {}, {}); }),
+      "triangle 0 refers to node 3");
   const std::vector<std::vector<Point>> sliver{{{0, 0}, {1, 0}}};
-  EXPECT_NE(message_of([&] { write_vtu_polygons(dir / "b.vtu", sliver, {}); })
-                .find("polygon 0 has 2 vertices"),
-            std::string::npos);
+  expect_mentions(message_of([&] { write_vtu_polygons(dir / "b.vtu", sliver, {}); }),
+                  "polygon 0 has 2 vertices");
   const std::vector<std::array<Point, 2>> segment{{{{0, 0}, {1, 1}}}};
-  EXPECT_NE(message_of([&] {
-              write_vtu_segments(dir / "s.vtu", segment,
-                                 std::vector<DataArray>{{"aperture", 1, {1, 2}}});
-            }).find("'aperture' has 2 values; expected 1"),
-            std::string::npos);
+  const std::vector<DataArray> short_aperture{{"aperture", 1, {1, 2}}};
+  expect_mentions(
+      message_of([&] { write_vtu_segments(dir / "s.vtu", segment, short_aperture); }),
+      "'aperture' has 2 values; expected 1");
+
   PvdSeries series(dir / "run.pvd");
   EXPECT_THROW(series.add(NAN, "a.vtu"), std::invalid_argument);
   EXPECT_THROW(series.add(0.0, ""), std::invalid_argument);
-  // Nothing half-written: a failed validation leaves no file.
+  // Validation comes before writing: a rejected call leaves no file.
   EXPECT_FALSE(fs::exists(dir / "t.vtu"));
+  EXPECT_FALSE(fs::exists(dir / "b.vtu"));
+  EXPECT_FALSE(fs::exists(dir / "s.vtu"));
   EXPECT_FALSE(fs::exists(dir / "run.pvd"));
   fs::remove_all(dir);
 }
