@@ -5,6 +5,7 @@
 
 #include "cli/figures.hpp"
 #include "cli/interrupt.hpp"
+#include "cli/paraview_output.hpp"
 #include "cli/model_building.hpp"
 #include "cli/run_summary.hpp"
 #include "cli/runs.hpp"
@@ -49,6 +50,12 @@ output::RunSummary run_coupled(const RunContext& context) {
   for (const scenario::FlowBoundaryCondition& bc : s.flow->boundaries) columns.push_back("flow_" + bc.name);
   CsvTable history(columns);
 
+  ParaviewOutput paraview(context.folder);
+  const auto write_fields = [&](int iteration) {
+    paraview.write_fluid(iteration, iteration, mesh, loop.flow(), loop.porosity().porosity, loop.permeability());
+    paraview.write_blocks(iteration, iteration, system);
+  };
+  int last_written = 0;
   double porosity_s = 0, flow_s = 0, forces_s = 0, mechanics_s = 0;
   bool converged = false;
   const auto current_summary = [&] {
@@ -81,7 +88,12 @@ output::RunSummary run_coupled(const RunContext& context) {
       spdlog::debug("iteration {}: head change {:.3e}, displacement change {:.3e}", r.iteration, r.head_change,
                     r.displacement_change);
       converged = r.converged;
+      if (r.iteration % s.output.every == 0 || converged) {
+        write_fields(r.iteration);
+        last_written = r.iteration;
+      }
     }
+    if (loop.iterations() > 0 && last_written != loop.iterations()) write_fields(loop.iterations());
   } catch (const RunFailure&) {
     throw;
   } catch (const std::exception& e) {

@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "cli/figures.hpp"
+#include "cli/paraview_output.hpp"
 #include "cli/model_building.hpp"
 #include "cli/run_summary.hpp"
 #include "cli/runs.hpp"
@@ -87,6 +88,7 @@ output::RunSummary run_flow(const RunContext& context) {
   for (const auto& b : blocks) polygons.push_back(b.polygon);
   const std::vector<double> no_porosity;
   draw_figures(s, context.folder, {mesh, solution, no_porosity, permeability, polygons});
+  ParaviewOutput(context.folder).write_fluid(0, 0.0, mesh, solution, no_porosity, permeability);
   summary.converged = true;  // one linear solve: nothing to iterate
   summary.iterations = 1;
   return summary;

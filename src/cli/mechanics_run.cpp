@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "cli/interrupt.hpp"
+#include "cli/paraview_output.hpp"
 #include "cli/model_building.hpp"
 #include "cli/run_summary.hpp"
 #include "cli/runs.hpp"
@@ -36,6 +37,9 @@ output::RunSummary run_mechanics(const RunContext& context) {
     if (!m.measures.empty()) context.folder.write("measure.csv", measure.text());
   };
 
+  ParaviewOutput paraview(context.folder);
+  paraview.write_blocks(0, 0.0, system);
+  long long last_written = 0;
   const double end_time = mechanics_duration(m);
   const int max_steps = m.steps.value_or(0);
   long long step = 0;
@@ -66,6 +70,10 @@ output::RunSummary run_mechanics(const RunContext& context) {
                          CsvTable::cell(positions[i].x - p0.x), CsvTable::cell(positions[i].y - p0.y)});
       }
       if (step % 100 == 0) write_tables();
+      if (step % s.output.every == 0) {
+        paraview.write_blocks(static_cast<int>(step), r.time, system);
+        last_written = step;
+      }
       context.progress.update(fmt::format("step {} t = {:.4g} s, {} contacts, max step displacement {:.3g} m",
                                           step, r.time, r.contacts, r.max_displacement));
     }
@@ -79,6 +87,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
                      summary);
   }
   write_tables();
+  if (last_written != step) paraview.write_blocks(static_cast<int>(step), system.time(), system);
   context.progress.finish();
 
   output::RunSummary summary = summarise_mechanics(s, system);

@@ -1,0 +1,32 @@
+#pragma once
+// The run's ParaView series: fluid.pvd over the fluid mesh (head, pressure, porosity,
+// permeability, flux, region) and blocks.pvd over the blocks (displacement, rotation, stress,
+// area), one .vtu of each per output step.
+
+#include <optional>
+#include <vector>
+
+#include "dda/system.hpp"
+#include "hydro/flow_solution.hpp"
+#include "mesh/triangle_mesh.hpp"
+#include "output/pvd_series.hpp"
+#include "output/run_folder.hpp"
+
+namespace hydrodda::cli {
+
+class ParaviewOutput {
+ public:
+  explicit ParaviewOutput(const output::RunFolder& folder);
+
+  // `porosity` may be empty (flow-only runs without blocks).
+  void write_fluid(int step, double time, const mesh::TriangleMesh& mesh, const hydro::FlowSolution& flow,
+                   const std::vector<double>& porosity, const std::vector<double>& permeability);
+  void write_blocks(int step, double time, const dda::System& system);
+
+ private:
+  const output::RunFolder& folder_;
+  std::optional<output::PvdSeries> fluid_;
+  std::optional<output::PvdSeries> blocks_;
+};
+
+}  // namespace hydrodda::cli
