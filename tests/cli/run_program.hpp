@@ -18,8 +18,9 @@ struct ProgramResult {
   std::string output;  // stdout and stderr together
 };
 
-inline ProgramResult run_program(const std::string& arguments) {
-  const std::string command = std::string(HYDRODDA_BINARY) + " " + arguments + " 2>&1";
+// Any shell command, with stderr folded into the output.
+inline ProgramResult run_command(const std::string& shell_command) {
+  const std::string command = shell_command + " 2>&1";
   ProgramResult result;
   FILE* pipe = ::popen(command.c_str(), "r");
   if (!pipe) return result;
@@ -28,6 +29,10 @@ inline ProgramResult run_program(const std::string& arguments) {
   const int status = ::pclose(pipe);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
+}
+
+inline ProgramResult run_program(const std::string& arguments) {
+  return run_command(std::string(HYDRODDA_BINARY) + " " + arguments);
 }
 
 // Runs a shipped scenario (path relative to the source tree) into a fresh temporary folder and
