@@ -14,12 +14,6 @@ namespace hydrodda::cli {
 
 namespace {
 
-// A part of the model whose engine is not built in yet: an explicit error, never a silent zero.
-std::optional<std::string> missing_engine(const scenario::Scenario& s) {
-  (void)s;
-  return std::nullopt;
-}
-
 void write_summary(const output::RunFolder& folder, const output::RunSummary& summary) {
   folder.write("summary.json", output::format_summary(summary));
 }
@@ -43,17 +37,6 @@ int run_command(const RunOptions& options) {
   if (!scenario) return kBadInput;
   const std::filesystem::path directory = options.output.value_or(scenario->output.directory);
   const auto policy = options.overwrite ? output::ExistingFolder::Overwrite : output::ExistingFolder::Refuse;
-  try {
-    output::RunFolder::check_available(directory, policy);
-  } catch (const output::RunFolderError& e) {
-    spdlog::error("{}", e.what());
-    return kBadInput;
-  }
-  if (auto missing = missing_engine(*scenario)) {
-    spdlog::error("{}: {}", options.scenario.string(), *missing);
-    return kRunFailed;
-  }
-
   std::optional<output::RunFolder> folder;
   try {
     folder.emplace(directory, policy);
