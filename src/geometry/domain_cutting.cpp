@@ -36,7 +36,9 @@ std::vector<std::pair<double, double>> parts_inside(Point a, Point b, const Poly
   return out;
 }
 
-// Points closer than `tolerance` are one vertex: found by sorting on x, then scanning.
+// Points closer than `tolerance` are one vertex. A linear scan per point: fracture networks of a
+// few hundred traces give a few thousand vertices; denser sets would want a grid here (and in
+// the pairwise split above it).
 class VertexPool {
  public:
   explicit VertexPool(double tolerance) : tolerance_(tolerance) {}
