@@ -8,6 +8,7 @@
 #include <random>
 
 #include "dda/system.hpp"
+#include "dda/test_models.hpp"  // tests/dda: the brick wall the tests and ntdda run
 
 namespace {
 
@@ -19,9 +20,8 @@ using hydrodda::dda::Point;
 using hydrodda::dda::Polygon;
 using hydrodda::dda::System;
 
-Polygon make_rectangle(double x0, double y0, double x1, double y1) {
-  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
+using hydrodda::dda::testing::make_brick_wall;
+using hydrodda::dda::testing::make_rectangle;
 
 ModelDefinition make_base_model() {
   ModelDefinition m;
@@ -29,22 +29,6 @@ ModelDefinition make_base_model() {
   m.joint = {30.0, 0.0, 0.0};
   m.settings.analysis = Analysis::static_;
   m.settings.time_step = 1.0e-3;
-  return m;
-}
-
-// brickwall.py ROWS COLS: ROWS × COLS bricks + the fixed base.
-ModelDefinition make_brick_wall(int rows, int cols) {
-  ModelDefinition m = make_base_model();
-  m.blocks.push_back({make_rectangle(-1.0, -1.0, 2.0 * cols + 2, 0.0), 0, true});
-  for (int r = 0; r < rows; ++r) {
-    const double off = r % 2 == 0 ? 0.0 : 1.0;
-    std::vector<double> edges{0.0};
-    for (int k = 1; k <= cols; ++k)
-      if (off + 2.0 * k < 2.0 * cols) edges.push_back(off + 2.0 * k);
-    edges.push_back(2.0 * cols);
-    for (std::size_t k = 0; k + 1 < edges.size(); ++k)
-      m.blocks.push_back({make_rectangle(edges[k], r, edges[k + 1], r + 1.0), 0, false});
-  }
   return m;
 }
 
