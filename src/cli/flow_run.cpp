@@ -41,10 +41,16 @@ std::vector<double> assign_permeability(const scenario::Scenario& s, const mesh:
   const scenario::MaterialDefinition& material = s.materials.front();
   std::vector<geometry::Polygon> polygons;
   for (const auto& b : blocks) polygons.push_back(b.polygon);
-  // Without blocks (no fractures) the whole domain is rock of the matrix porosity.
-  if (polygons.empty() && s.geometry && !s.geometry->domain.empty()) polygons.push_back(s.geometry->domain);
   const coupling::PorosityMapper mapper(mesh.nodes, mesh.triangles);
-  const coupling::PorosityField porosity = mapper.compute(polygons, material.matrix_porosity);
+  coupling::PorosityField porosity;
+  if (polygons.empty()) {
+    // No block geometry (a user's mesh alone): intact rock of the matrix porosity everywhere,
+    // not the open space an empty block set would mean to the mapper.
+    porosity.fracture_area.assign(mesh.triangles.size(), 0.0);
+    porosity.porosity.assign(mesh.triangles.size(), material.matrix_porosity);
+  } else {
+    porosity = mapper.compute(polygons, material.matrix_porosity);
+  }
   const coupling::PermeabilityModel model = make_permeability_model(s);
   std::vector<double> apertures;
   if (model.law == coupling::PermeabilityLaw::cubic) {

@@ -194,8 +194,11 @@ void validate_scenario(ReadContext& ctx, const TableView& root, Scenario& s) {
   }
   if (s.flow) {
     bool head_fixed = false;
+    // With a user's mesh file the flow boundaries are its physical curves, known only once the
+    // mesh is read: the flow solver checks those names then.
+    const bool names_from_mesh_file = s.mesh && s.mesh->file;
     for (const FlowBoundaryCondition& bc : s.flow->boundaries) {
-      check_boundary_reference(ctx, s, bc.line, "flow.boundary.name", bc.name);
+      if (!names_from_mesh_file) check_boundary_reference(ctx, s, bc.line, "flow.boundary.name", bc.name);
       head_fixed = head_fixed || bc.kind != FlowConditionKind::Flux;
     }
     if (!head_fixed)
