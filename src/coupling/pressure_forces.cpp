@@ -1,6 +1,8 @@
 #include "coupling/pressure_forces.hpp"
 
+#include <algorithm>
 #include <limits>
+#include <map>
 #include <stdexcept>
 
 namespace hydrodda::coupling {
@@ -30,19 +32,27 @@ std::vector<std::vector<Point>> compute_edge_load_forces(std::span<const geometr
 }
 
 VertexPressureSampler::VertexPressureSampler(const mesh::TriangleMesh& mesh) : mesh_(mesh), locator_(mesh) {
-  centroids_.reserve(mesh.triangles.size());
-  for (int t = 0; t < mesh.triangle_count(); ++t) centroids_.push_back(mesh::triangle_centroid(mesh, t));
+  // Boundary edges (in one triangle only), each with its triangle: built once per mesh.
+  std::map<std::pair<int, int>, int> owner;  // sorted edge → triangle, or -1 when shared
+  for (int t = 0; t < mesh.triangle_count(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const auto edge = std::minmax(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3]);
+      const auto [it, inserted] = owner.emplace(edge, t);
+      if (!inserted) it->second = -1;
+    }
+  for (const auto& [edge, t] : owner)
+    if (t >= 0) boundary_.push_back({mesh.nodes[edge.first], mesh.nodes[edge.second], t});
 }
 
-int VertexPressureSampler::find_nearest_element(Point p) const {
-  // Rare (only vertices outside the fluid domain): a plain scan is enough.
+int VertexPressureSampler::find_nearest_boundary_element(Point p) const {
+  // Rare (only vertices outside the fluid mesh): a scan of the boundary edges is enough.
   int best = -1;
   double best_d = std::numeric_limits<double>::infinity();
-  for (std::size_t t = 0; t < centroids_.size(); ++t) {
-    const double d = geometry::distance(p, centroids_[t]);
+  for (const BoundarySide& side : boundary_) {
+    const double d = geometry::distance_to_segment(p, side.a, side.b);
     if (d < best_d) {
       best_d = d;
-      best = static_cast<int>(t);
+      best = side.triangle;
     }
   }
   return best;
@@ -57,7 +67,7 @@ std::vector<std::vector<double>> VertexPressureSampler::sample(std::span<const g
     out[b].reserve(blocks[b].size());
     for (Point v : blocks[b]) {
       int t = locator_.locate(v);
-      if (t < 0) t = find_nearest_element(v);
+      if (t < 0) t = find_nearest_boundary_element(v);
       out[b].push_back(element_pressure[t]);
     }
   }

@@ -26,7 +26,7 @@ std::vector<std::vector<Point>> compute_edge_load_forces(std::span<const geometr
 
 // Samples the element pressures at block vertices through the mesh's point locator; a vertex
 // outside the mesh (a block moved partly out of the fluid domain) takes the pressure of the
-// nearest element centroid.
+// element whose boundary edge is nearest to it, the element the mesh meets closest.
 class VertexPressureSampler {
  public:
   explicit VertexPressureSampler(const mesh::TriangleMesh& mesh);
@@ -36,8 +36,12 @@ class VertexPressureSampler {
  private:
   const mesh::TriangleMesh& mesh_;
   mesh::PointLocator locator_;
-  std::vector<Point> centroids_;
-  int find_nearest_element(Point p) const;
+  struct BoundarySide {
+    Point a, b;
+    int triangle;
+  };
+  std::vector<BoundarySide> boundary_;  // the mesh boundary's edges with their triangle
+  int find_nearest_boundary_element(Point p) const;
 };
 
 }  // namespace hydrodda::coupling

@@ -83,5 +83,20 @@ TEST(PressureForces, HydrostaticFieldOnAMeshGivesBuoyancy) {
   }
 }
 
+TEST(PressureForces, VertexOutsideTheMeshTakesTheNearestBoundaryElement) {
+  // A block pushed 0.1 m out through the right side: its outside vertex takes the pressure of
+  // the element that owns the boundary edge it faces (the one just inside at the same height).
+  const auto mesh = testing::make_rectangle_mesh(0.0, 0.0, 2.0, 2.0, 8, 8);
+  std::vector<double> element_pressure(mesh.triangles.size());
+  for (std::size_t t = 0; t < element_pressure.size(); ++t) element_pressure[t] = 100.0 * t;
+  const VertexPressureSampler sampler(mesh);
+  const std::vector<Polygon> blocks{{{1.5, 0.6}, {2.1, 0.77}, {1.5, 0.9}}};
+  const auto pressures = sampler.sample(blocks, element_pressure);
+  const int inside = mesh::PointLocator(mesh).locate({2.0 - 1e-9, 0.77});
+  ASSERT_GE(inside, 0);
+  EXPECT_EQ(pressures[0][1], element_pressure[inside]);
+  EXPECT_EQ(pressures[0][0], element_pressure[mesh::PointLocator(mesh).locate({1.5, 0.6})]);
+}
+
 }  // namespace
 }  // namespace hydrodda::coupling
