@@ -37,7 +37,6 @@ output::RunSummary run_coupled(const RunContext& context) {
 
   coupling::LoopSettings settings;
   settings.tolerance = s.coupling.tolerance;
-  settings.max_iterations = s.coupling.max_iterations;
   settings.relaxation = s.coupling.relaxation;
   settings.steps_per_pass = s.mechanics->steps.value_or(
       static_cast<int>(std::ceil(*s.mechanics->end_time / s.mechanics->time_step)));
@@ -67,7 +66,7 @@ output::RunSummary run_coupled(const RunContext& context) {
     return summary;
   };
   try {
-    for (int k = 0; k < settings.max_iterations && !converged; ++k) {
+    for (int k = 0; k < s.coupling.max_iterations && !converged; ++k) {
       if (interrupt_requested())
         throw RunFailure(fmt::format("interrupted after coupling iteration {}", loop.iterations()), current_summary());
       const coupling::PassReport r = loop.run_pass();
@@ -106,7 +105,7 @@ output::RunSummary run_coupled(const RunContext& context) {
   output::RunSummary summary = current_summary();
   summary.converged = converged;
   if (!converged)
-    spdlog::warn("the coupling loop did not converge in {} iterations (tolerance {:g})", settings.max_iterations,
+    spdlog::warn("the coupling loop did not converge in {} iterations (tolerance {:g})", s.coupling.max_iterations,
                  settings.tolerance);
   return summary;
 }

@@ -4,7 +4,9 @@
 //   → vertex forces → mechanics (a set number of DDA steps) → converged?
 // The convergence norms are the relative changes between passes of the heads and of the
 // blocks' displacements; both are measured every pass, and `converged` is only ever set from
-// them (never from reaching max_iterations).
+// them. The caller bounds the number of passes and stops when a pass reports convergence.
+// With relaxation, heads and pressures are relaxed; the fluxes and boundary flows reported are
+// those of the pass's own solve.
 
 #include <functional>
 #include <memory>
@@ -22,7 +24,6 @@ namespace hydrodda::coupling {
 
 struct LoopSettings {
   double tolerance = 1.0e-4;
-  int max_iterations = 50;
   double relaxation = 1.0;        // heads: h ← ω h_new + (1 − ω) h_old
   int steps_per_pass = 100;       // DDA steps run in each pass
   PermeabilityModel permeability;

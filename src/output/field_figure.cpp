@@ -156,7 +156,7 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
     const double full = 0.04 * box.width() * fr.scale;
     // Thin the arrows to about one per (plot width / 40)² by a grid over centroids.
     const double cell = box.width() / 40.0;
-    std::vector<char> taken(40 * 41 * 41, 0);
+    std::vector<char> taken(41 * 41, 0);
     cairo_set_source_rgb(cr, 0.85, 0.1, 0.1);
     cairo_set_line_width(cr, 0.9);
     for (std::size_t t = 0; t < f.triangles.size() && q_max > 0.0; ++t) {

@@ -17,9 +17,6 @@ class RunFolder {
   // files of the same name are replaced and other files are left alone.
   RunFolder(std::filesystem::path directory, ExistingFolder policy);
 
-  // Throws RunFolderError when the folder could not be used under `policy`; creates nothing.
-  static void check_available(const std::filesystem::path& directory, ExistingFolder policy);
-
   const std::filesystem::path& path() const { return directory_; }
   std::filesystem::path file(std::string_view name) const { return directory_ / name; }
   // The figures/ subfolder, created on first use.
@@ -29,6 +26,9 @@ class RunFolder {
   void write(std::string_view name, std::string_view content) const;
 
  private:
+  // Throws RunFolderError when the folder could not be used under `policy`; creates nothing.
+  static void check_available(const std::filesystem::path& directory, ExistingFolder policy);
+
   std::filesystem::path directory_;
 };
 

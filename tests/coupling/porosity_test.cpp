@@ -34,14 +34,14 @@ TEST(Porosity, FractureAreaIsDomainMinusBlocks) {
 }
 
 TEST(Porosity, EquationEightAndClamping) {
-  // One element half covered: φ = ½(1 − φ_m) + φ_m. Overlapping blocks covering it twice: φ_m.
+  // One element a quarter covered: φ = ¾(1 − φ_m) + φ_m. Overlapping blocks covering it twice: φ_m.
   mesh::TriangleMesh m;
   m.nodes = {{0, 0}, {1, 0}, {0, 1}};
   m.triangles = {{0, 1, 2}};
   PorosityMapper mapper(m.nodes, m.triangles);
   const double phi_m = 0.1;
-  // The triangle's lower half below y = 1 − 1/√2 ... use the line x + y ≤ 1 split at x = 0.5:
-  // the part with x ≥ 0.5 is a triangle of area 0.125 = ¼ of 0.5.
+  // The block covers x ≥ 0.5: of the triangle (0,0), (1,0), (0,1) that is the corner triangle
+  // (0.5,0), (1,0), (0.5,0.5) of area 0.125, a quarter; the open area is 0.375.
   const PorosityField quarter = mapper.compute(std::vector<Polygon>{rectangle(0.5, 0.0, 2.0, 2.0)}, phi_m);
   EXPECT_NEAR(quarter.fracture_area[0], 0.375, 1e-15);
   EXPECT_NEAR(quarter.porosity[0], 0.75 * (1.0 - phi_m) + phi_m, 1e-15);
