@@ -59,7 +59,7 @@ output::RunSummary run_coupled(const RunContext& context) {
   bool converged = false;
   const auto current_summary = [&] {
     output::RunSummary summary = summarise_mechanics(s, system);
-    if (loop.iterations() > 0) summary.flow = summarise_flow(s, mesh, loop.flow());
+    if (loop.has_flow()) summary.flow = summarise_flow(s, mesh, loop.flow());
     summary.iterations = loop.iterations();
     summary.timings = {{"mesh", mesh_seconds}, {"porosity", porosity_s}, {"flow", flow_s},
                        {"forces", forces_s}, {"mechanics", mechanics_s}};
@@ -96,7 +96,7 @@ output::RunSummary run_coupled(const RunContext& context) {
   } catch (const RunFailure&) {
     throw;
   } catch (const std::exception& e) {
-    throw RunFailure(fmt::format("coupling iteration {} failed: {}", loop.iterations(), e.what()), current_summary());
+    throw RunFailure(fmt::format("coupling iteration {} failed: {}", loop.iterations() + 1, e.what()), current_summary());
   }
   context.progress.finish();
   std::vector<geometry::Polygon> blocks;

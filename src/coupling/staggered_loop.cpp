@@ -122,6 +122,7 @@ PassReport StaggeredLoop::run_pass() {
   for (double k : permeability_) report.max_permeability = std::max(report.max_permeability, k);
   for (const dda::ContactInfo& c : mechanics_.contacts())
     report.largest_opening = std::max(report.largest_opening, -c.penetration);
+  completed_ = iteration_;
   return report;
 }
 

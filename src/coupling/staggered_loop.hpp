@@ -57,7 +57,10 @@ class StaggeredLoop {
   const hydro::FlowSolution& flow() const { return solution_; }
   const PorosityField& porosity() const { return porosity_; }
   const std::vector<double>& permeability() const { return permeability_; }
-  int iterations() const { return iteration_; }
+  // Passes run to their end (a pass that threw is not counted).
+  int iterations() const { return completed_; }
+  // A flow solution exists (false until the first pass's solve succeeds).
+  bool has_flow() const { return !solution_.head.empty(); }
 
  private:
   std::vector<geometry::Polygon> current_blocks() const;
@@ -71,7 +74,8 @@ class StaggeredLoop {
   VertexPressureSampler pressure_sampler_;
 
   std::vector<Point> centroids_;  // of the fixed mesh's elements
-  int iteration_ = 0;
+  int iteration_ = 0;   // passes started
+  int completed_ = 0;   // passes finished
   PorosityField porosity_;
   std::vector<double> permeability_;
   hydro::FlowSolution solution_;
