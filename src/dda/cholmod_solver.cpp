@@ -1,17 +1,24 @@
-// CHOLMOD behind LinearSolver: the only file that includes Eigen/CholmodSupport.
+// CHOLMOD behind LinearSolver: the only file of the DDA module that includes cholmod.h.
 //
-// Strategy (bench_dda showed that refactoring for every solve dominates the step; reusing
-// the factor as a CG preconditioner took the 401-block wall from 13 to 8 ms a step):
-// factor() only records the new matrix. solve() runs conjugate gradients on it, preconditioned
-// by the last Cholesky factor, which belongs to a nearby matrix (same contacts, geometry a
-// step or an open–close iteration older). When that factor is stale, CG stops making progress
-// within a few iterations and the current matrix is factored (numerically only while the
-// block pattern is unchanged) and solved directly.
-//   solve(b): x = L⁻ᵀL⁻¹ b; repeat up to k times: CG update with M = LLᵀ
-//             if ‖b − A x‖ > tol ‖b‖: factor A; x = A⁻¹ b
+// A DDA step changes its matrix in two ways: every contact whose state flips (open, sliding,
+// locked) adds or removes a penalty spring, a rank-one term √p e (√p e)ᵀ over two blocks;
+// and the geometry moves a little, which changes every entry slightly. Factoring afresh for
+// every open–close iteration dominated the step (bench_dda), so the factor is kept:
+//   factor(A, terms):  for the terms that appeared since the factor was made: update L;
+//                      for those that disappeared: downdate L (with the vector it was made with)
+//   solve(b):          conjugate gradients on the current A preconditioned by L (Saad,
+//                      alg. 9.1); L differs from A only by the geometric drift, so a few
+//                      iterations reach ‖b − A x‖ ≤ tol ‖b‖. When they do not (the drift has
+//                      grown, or an update failed), A is factored again and solved directly.
+// Updates and downdates: Davis & Hager, "Multiple-rank modifications of a sparse Cholesky
+// factorization", SIAM J. Matrix Anal. Appl. 22 (2001), as CHOLMOD's Modify module does them;
+// they need the simplicial LDLᵀ form, which also beat the supernodal one on these very sparse
+// 2D block graphs with the reference BLAS (bench_dda).
+#include <cholmod.h>
+
+#include <algorithm>
 #include <stdexcept>
 
-#include <Eigen/CholmodSupport>
 #include <Eigen/OrderingMethods>
 
 #include "dda/linear_solver.hpp"
@@ -21,80 +28,209 @@ namespace {
 
 using Permutation = Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>;
 
+bool id_less(const RankOneTerm& a, const RankOneTerm& b) { return a.id < b.id; }
+
 class CholmodSolver final : public LinearSolver {
  public:
   CholmodSolver(double tolerance, int max_iterations)
       : tolerance_(tolerance), max_iterations_(max_iterations) {
-    // We permute the matrix ourselves (block AMD); CHOLMOD keeps that order.
-    cholmod_.cholmod().nmethods = 1;
-    cholmod_.cholmod().method[0].ordering = CHOLMOD_NATURAL;
-    // Simplicial LDLᵀ: on these very sparse 2D block graphs it beats the supernodal
-    // factorisation with the reference BLAS (measured with bench_dda).
-    cholmod_.setMode(Eigen::CholmodLDLt);
+    cholmod_start(&common_);
+    // Our block AMD order, kept as given; simplicial LDLᵀ (what updates work on).
+    common_.nmethods = 1;
+    common_.method[0].ordering = CHOLMOD_GIVEN;
+    common_.supernodal = CHOLMOD_SIMPLICIAL;
+    common_.final_ll = false;
+    common_.print = 0;
   }
+  ~CholmodSolver() override {
+    cholmod_free_factor(&factor_, &common_);
+    cholmod_free_dense(&solution_, &common_);
+    cholmod_free_dense(&work_y_, &common_);
+    cholmod_free_dense(&work_e_, &common_);
+    cholmod_finish(&common_);
+  }
+  CholmodSolver(const CholmodSolver&) = delete;
+  CholmodSolver& operator=(const CholmodSolver&) = delete;
 
   void factor(const SparseMatrix& lower, int block_count,
-              const std::vector<std::pair<int, int>>& block_pairs) override {
-    if (!has_ordering_ || block_count != block_count_) compute_ordering(block_count, block_pairs);
-    pattern_changed_ = block_pairs != factored_pairs_;
-    pending_pairs_ = block_pairs;
-    permuted_.resize(lower.rows(), lower.cols());
-    permuted_.selfadjointView<Eigen::Lower>() =
-        lower.selfadjointView<Eigen::Lower>().twistedBy(permutation_);
-    full_ = permuted_.selfadjointView<Eigen::Lower>();
-    current_ = false;
+              const std::vector<std::pair<int, int>>& block_pairs,
+              const std::vector<RankOneTerm>& terms) override {
+    if (ordering_.empty() || block_count != block_count_) compute_ordering(block_count, block_pairs);
+    matrix_ = lower;
+    matrix_.makeCompressed();
+    pairs_ = block_pairs;
+    if (factor_ != nullptr && !stale_) {
+      if (!follow_terms(terms)) stale_ = true;
+    }
+    terms_ = terms;
   }
 
+  SolverCounts counts() const override { return counts_; }
+
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const override {
-    const Eigen::VectorXd b = permutation_ * rhs;
-    const double b_norm = b.norm();
+    ++counts_.solves;
+    const double b_norm = rhs.norm();
     if (b_norm == 0.0) return Eigen::VectorXd::Zero(rhs.size());
-    if (factored_ && !current_) {
-      Eigen::VectorXd x;
-      if (run_preconditioned_cg(b, b_norm, x)) return permutation_.inverse() * x;
+    Eigen::VectorXd x;
+    if (factor_ != nullptr && !stale_) {
+      const int iterations = run_preconditioned_cg(rhs, b_norm, x);
+      if (iterations >= 0) {
+        // The drift has grown past what pays: factor afresh before the next solve.
+        if (iterations > kRefactorAfter) stale_ = true;
+        return x;
+      }
     }
-    if (!current_) refactor();
-    Eigen::VectorXd x = cholmod_.solve(b);
+    refactor();
+    x = apply_factor(rhs);
     // One refinement step against round-off in the deep contact stiffness.
-    x += cholmod_.solve(Eigen::VectorXd(b - full_ * x));
-    return permutation_.inverse() * x;
+    x += apply_factor(rhs - multiply(x));
+    return x;
   }
 
  private:
-  // CG on the current matrix, preconditioned by the last factor (Saad, alg. 9.1).
-  bool run_preconditioned_cg(const Eigen::VectorXd& b, double b_norm, Eigen::VectorXd& x) const {
-    x = cholmod_.solve(b);
-    Eigen::VectorXd r = b - full_ * x;
-    if (r.norm() <= tolerance_ * b_norm) return true;
-    Eigen::VectorXd z = cholmod_.solve(r);
+  // Past this many CG iterations a fresh factorisation costs less than the drift does.
+  static constexpr int kRefactorAfter = 6;
+
+  // Updates L by the terms new since it was made and downdates it by those gone, in place.
+  // False if CHOLMOD could not (a downdate that would lose positive definiteness).
+  bool follow_terms(const std::vector<RankOneTerm>& terms) {
+    // One walk over both sorted lists: what appeared, what disappeared.
+    added_.clear();
+    removed_.clear();
+    std::size_t i = 0, j = 0;
+    while (i < terms.size() || j < factored_terms_.size()) {
+      if (j == factored_terms_.size() || (i < terms.size() && terms[i].id < factored_terms_[j].id)) {
+        added_.push_back(terms[i++]);
+      } else if (i == terms.size() || factored_terms_[j].id < terms[i].id) {
+        removed_.push_back(factored_terms_[j++]);
+      } else {
+        ++i;
+        ++j;
+      }
+    }
+    if (added_.empty() && removed_.empty()) return true;
+    if (!modify_factor(added_, true) || !modify_factor(removed_, false)) return false;
+    // What L now holds: the kept terms as they were made, and the new ones.
+    std::vector<RankOneTerm> held;
+    held.reserve(terms.size());
+    std::set_difference(factored_terms_.begin(), factored_terms_.end(), removed_.begin(), removed_.end(),
+                        std::back_inserter(held), id_less);
+    factored_terms_.clear();
+    std::merge(held.begin(), held.end(), added_.begin(), added_.end(), std::back_inserter(factored_terms_),
+               id_less);
+    return true;
+  }
+
+  // L D Lᵀ ← L D Lᵀ ± C Cᵀ, C's columns the terms' vectors in the factor's row order.
+  bool modify_factor(const std::vector<RankOneTerm>& terms, bool update) {
+    if (terms.empty()) return true;
+    const int n = static_cast<int>(matrix_.rows());
+    cholmod_sparse* c = cholmod_allocate_sparse(n, terms.size(), 12 * terms.size(), true, true, 0,
+                                                CHOLMOD_REAL, &common_);
+    if (c == nullptr) return false;
+    int* cp = static_cast<int*>(c->p);
+    int* ci = static_cast<int*>(c->i);
+    double* cx = static_cast<double*>(c->x);
+    int nz = 0;
+    std::vector<std::pair<int, double>> column;
+    for (std::size_t k = 0; k < terms.size(); ++k) {
+      cp[k] = nz;
+      column.clear();
+      const RankOneTerm& t = terms[k];
+      for (int r = 0; r < 6; ++r) {
+        if (t.block_a >= 0) column.emplace_back(inverse_order_[6 * t.block_a + r], t.w_a[r]);
+        if (t.block_b >= 0) column.emplace_back(inverse_order_[6 * t.block_b + r], t.w_b[r]);
+      }
+      std::sort(column.begin(), column.end());
+      for (auto [row, value] : column) {
+        ci[nz] = row;
+        cx[nz++] = value;
+      }
+    }
+    cp[terms.size()] = nz;
+    counts_.modified_terms += static_cast<long>(terms.size());
+    const int ok = cholmod_updown(update ? 1 : 0, c, factor_, &common_);
+    cholmod_free_sparse(&c, &common_);
+    return ok == 1 && common_.status == CHOLMOD_OK;
+  }
+
+  // Returns the iterations taken, or −1 if max_iterations did not reach the tolerance.
+  int run_preconditioned_cg(const Eigen::VectorXd& b, double b_norm, Eigen::VectorXd& x) const {
+    x = apply_factor(b);
+    Eigen::VectorXd r = b - multiply(x);
+    if (r.norm() <= tolerance_ * b_norm) return 0;
+    Eigen::VectorXd z = apply_factor(r);
     Eigen::VectorXd p = z;
     Eigen::VectorXd q(b.size());
     double rz = r.dot(z);
-    for (int it = 0; it < max_iterations_; ++it) {
-      q.noalias() = full_ * p;
+    for (int it = 1; it <= max_iterations_; ++it) {
+      ++counts_.iterations;
+      q = multiply(p);
       const double alpha = rz / p.dot(q);
       x += alpha * p;
       r -= alpha * q;
-      if (r.norm() <= tolerance_ * b_norm) return true;
-      z = cholmod_.solve(r);
+      if (r.norm() <= tolerance_ * b_norm) return it;
+      z = apply_factor(r);
       const double rz_new = r.dot(z);
       p = z + (rz_new / rz) * p;
       rz = rz_new;
     }
-    return false;
+    return -1;
   }
 
+  Eigen::VectorXd multiply(const Eigen::VectorXd& v) const {
+    return matrix_.selfadjointView<Eigen::Lower>() * v;
+  }
+
+  // x = (P A Pᵀ)⁻¹ b through the factor (CHOLMOD applies the permutation).
+  Eigen::VectorXd apply_factor(const Eigen::VectorXd& b) const {
+    cholmod_dense rhs{};
+    rhs.nrow = b.size();
+    rhs.ncol = 1;
+    rhs.nzmax = b.size();
+    rhs.d = b.size();
+    rhs.x = const_cast<double*>(b.data());
+    rhs.xtype = CHOLMOD_REAL;
+    rhs.dtype = CHOLMOD_DOUBLE;
+    if (!cholmod_solve2(CHOLMOD_A, factor_, &rhs, nullptr, &solution_, nullptr, &work_y_, &work_e_,
+                        &common_))
+      throw std::runtime_error("DDA: the factorised solve failed");
+    return Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(solution_->x), b.size());
+  }
+
+  cholmod_sparse view_of_matrix() const {
+    cholmod_sparse a{};
+    a.nrow = a.ncol = matrix_.rows();
+    a.nzmax = matrix_.nonZeros();
+    a.p = const_cast<int*>(matrix_.outerIndexPtr());
+    a.i = const_cast<int*>(matrix_.innerIndexPtr());
+    a.x = const_cast<double*>(matrix_.valuePtr());
+    a.stype = -1;  // the lower triangle of a symmetric matrix
+    a.itype = CHOLMOD_INT;
+    a.xtype = CHOLMOD_REAL;
+    a.dtype = CHOLMOD_DOUBLE;
+    a.sorted = 1;
+    a.packed = 1;
+    return a;
+  }
+
+  // Analysis (with our order) and numeric factorisation of the current matrix. The analysis
+  // is redone every time: updates may have grown L's pattern beyond the last analysis, and
+  // with a given order it costs a small part of the factorisation.
   void refactor() const {
-    if (!factored_ || pattern_changed_) {
-      cholmod_.analyzePattern(permuted_);
-      factored_pairs_ = pending_pairs_;
-      pattern_changed_ = false;
-    }
-    cholmod_.factorize(permuted_);
-    if (cholmod_.info() != Eigen::Success)
+    cholmod_sparse a = view_of_matrix();
+    cholmod_free_factor(&factor_, &common_);
+    factor_ = cholmod_analyze_p(&a, const_cast<int*>(ordering_.data()), nullptr, 0, &common_);
+    if (factor_ == nullptr) throw std::runtime_error("DDA: the stiffness matrix could not be analysed");
+    ++counts_.factorisations;
+    if (!cholmod_factorize(&a, factor_, &common_) || common_.status != CHOLMOD_OK)
       throw std::runtime_error("DDA: the global stiffness matrix is not positive definite");
-    factored_ = true;
-    current_ = true;
+    // CHOLMOD post-orders the given order: the factor's own permutation is the one to use.
+    const int* perm = static_cast<const int*>(factor_->Perm);
+    inverse_order_.resize(factor_->n);
+    for (std::size_t k = 0; k < factor_->n; ++k) inverse_order_[perm[k]] = static_cast<int>(k);
+    factored_terms_ = terms_;
+    stale_ = false;
   }
 
   // AMD on the block graph (6× fewer nodes than the scalar one), expanded to the unknowns.
@@ -112,27 +248,32 @@ class CholmodSolver final : public LinearSolver {
     graph.setFromTriplets(entries.begin(), entries.end());
     Permutation block_inverse;
     Eigen::AMDOrdering<int>()(graph, block_inverse);
-    Permutation inverse(6 * block_count);
-    for (int b = 0; b < block_count; ++b)
-      for (int k = 0; k < 6; ++k) inverse.indices()[6 * b + k] = 6 * block_inverse.indices()[b] + k;
-    permutation_ = inverse.inverse();
+    // Eigen's orderings give the inverse permutation, position k → the block eliminated k-th:
+    // CHOLMOD's convention for a given order.
+    ordering_.resize(6 * block_count);
+    for (int k = 0; k < block_count; ++k)
+      for (int r = 0; r < 6; ++r) ordering_[6 * k + r] = 6 * block_inverse.indices()[k] + r;
     block_count_ = block_count;
-    has_ordering_ = true;
+    cholmod_free_factor(&factor_, &common_);
   }
 
   double tolerance_;
   int max_iterations_;
-  mutable Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower> cholmod_;
-  Permutation permutation_;
-  SparseMatrix permuted_;
-  Eigen::SparseMatrix<double, Eigen::RowMajor, int> full_;
-  bool has_ordering_ = false;
+  mutable cholmod_common common_{};
+  mutable cholmod_factor* factor_ = nullptr;
+  mutable cholmod_dense* solution_ = nullptr;
+  mutable cholmod_dense* work_y_ = nullptr;
+  mutable cholmod_dense* work_e_ = nullptr;
+  std::vector<int> ordering_;  // ordering_[k]: the unknown eliminated k-th
+  mutable std::vector<int> inverse_order_;
   int block_count_ = -1;
-  std::vector<std::pair<int, int>> pending_pairs_;
-  mutable std::vector<std::pair<int, int>> factored_pairs_;
-  mutable bool pattern_changed_ = true;
-  mutable bool factored_ = false;
-  mutable bool current_ = false;
+  SparseMatrix matrix_;
+  std::vector<std::pair<int, int>> pairs_;
+  std::vector<RankOneTerm> terms_;                   // of the current matrix
+  mutable std::vector<RankOneTerm> factored_terms_;  // as held by the factor
+  std::vector<RankOneTerm> added_, removed_;
+  mutable bool stale_ = true;
+  mutable SolverCounts counts_;
 };
 
 }  // namespace

@@ -64,6 +64,8 @@ namespace {
 constexpr double kWedgeTolerance = 0.05;
 // Sine of the angle within which an incident edge counts as lying along the contact edge.
 constexpr double kParallelTolerance = 0.05;
+// Gaps to the two edges at a corner closer than this fraction of the contact distance tie.
+constexpr double kCornerTieTolerance = 1e-3;
 
 // Signed distance of p outside the line of edge (a, b) of a counter-clockwise polygon.
 double compute_gap(Point p, Point a, Point b) {
@@ -116,19 +118,31 @@ void find_one_way(std::span<const Point> va, int a, std::span<const Point> eb, i
       const Point n{(e1.y - e0.y) / length, -(e1.x - e0.x) / length};
       if (dot(before - p, n) < -kWedgeTolerance * geometry::distance(before, p)) continue;
       if (dot(after - p, n) < -kWedgeTolerance * geometry::distance(after, p)) continue;
-      // Past an end of the edge (vertex–vertex): keep only the entrance edge, the one of the
-      // two edges meeting there whose line the vertex is farther outside (Shi 1988, §4.3).
-      if (t < 0 || t > 1) {
-        const Point other_a = t < 0 ? eb[(e + ne - 1) % ne] : e1;
-        const Point other_b = t < 0 ? e0 : eb[(e + 2) % ne];
-        if (compute_gap(p, other_a, other_b) > gap) continue;
-        if (geometry::distance(p, t < 0 ? e0 : e1) > distance) continue;
+      const double length_share = compute_tributary_length(p, before, after, e0, e1, distance);
+      // At or past an end of the edge (vertex–vertex): keep only the entrance edge, the one of
+      // the two edges meeting there whose line the vertex is farther outside (Shi 1988, §4.3).
+      // Corners that coincide (side-by-side blocks) leave both gaps equal up to the motion of
+      // a step; there the edge that carries a face contact wins, then the lower index, so the
+      // choice (and the contact's key and state) does not flip on round-off from step to step.
+      const double tie = kCornerTieTolerance * distance;
+      if (t < tie / length || t > 1 - tie / length) {
+        const bool at_start = t < 0.5;
+        const int other = at_start ? (e + ne - 1) % ne : (e + 1) % ne;
+        const Point other_a = eb[other];
+        const Point other_b = eb[(other + 1) % ne];
+        const double other_gap = compute_gap(p, other_a, other_b);
+        if (other_gap > gap + tie) continue;
+        if (other_gap >= gap - tie) {
+          const double other_share = compute_tributary_length(p, before, after, other_a, other_b, distance);
+          if (other_share > length_share || (other_share == length_share && other < e)) continue;
+        }
+        if ((t < 0 || t > 1) && geometry::distance(p, at_start ? e0 : e1) > distance) continue;
       }
       ContactCandidate c;
       c.key = {a, v, b, e};
       c.edge_ratio = std::clamp(t, 0.0, 1.0);
       c.penetration = -gap;
-      c.length = compute_tributary_length(p, before, after, e0, e1, distance);
+      c.length = length_share;
       out.push_back(c);
     }
   }

@@ -17,8 +17,8 @@ class ConjugateGradientSolver final : public LinearSolver {
   ConjugateGradientSolver(double tolerance, int max_iterations)
       : tolerance_(tolerance), max_iterations_(max_iterations) {}
 
-  void factor(const SparseMatrix& lower, int block_count,
-              const std::vector<std::pair<int, int>>&) override {
+  void factor(const SparseMatrix& lower, int block_count, const std::vector<std::pair<int, int>>&,
+              const std::vector<RankOneTerm>&) override {
     matrix_ = lower;
     // Row-major full symmetric copy for the products.
     full_ = lower.selfadjointView<Eigen::Lower>();
@@ -32,7 +32,10 @@ class ConjugateGradientSolver final : public LinearSolver {
     if (guess_.size() != lower.rows()) guess_ = Eigen::VectorXd::Zero(lower.rows());
   }
 
+  SolverCounts counts() const override { return counts_; }
+
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const override {
+    ++counts_.solves;
     // Pseudocode (Saad, Iterative Methods, alg. 9.1): r = b − A x; z = M⁻¹ r; p = z;
     // repeat: α = rᵀz / pᵀAp; x += α p; r −= α A p; z = M⁻¹ r; β = r'ᵀz' / rᵀz; p = z + β p.
     const double b_norm = rhs.norm();
@@ -57,7 +60,7 @@ class ConjugateGradientSolver final : public LinearSolver {
     if (r.norm() > tolerance_ * b_norm)
       throw std::runtime_error("DDA: conjugate gradients did not converge");
     guess_ = x;
-    last_iterations_ = it;
+    counts_.iterations += it;
     return x;
   }
 
@@ -75,7 +78,7 @@ class ConjugateGradientSolver final : public LinearSolver {
   Eigen::SparseMatrix<double, Eigen::RowMajor, int> full_;
   std::vector<Eigen::Matrix<double, 6, 6>> inverse_blocks_;
   mutable Eigen::VectorXd guess_;
-  mutable int last_iterations_ = 0;
+  mutable SolverCounts counts_;
 };
 
 }  // namespace

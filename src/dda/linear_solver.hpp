@@ -2,6 +2,7 @@
 // The solver interface the DDA step factors and solves through, so that an iterative or a
 // distributed solver can stand in for the direct one.
 
+#include <array>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -12,21 +13,44 @@ namespace hydrodda::dda {
 
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
+// One rank-one part w wᵀ of the matrix with w nonzero on at most two blocks: a contact
+// spring, w = √p e. `id` names the part from call to call.
+struct RankOneTerm {
+  std::array<int, 5> id{};
+  int block_a = -1, block_b = -1;  // −1: no entries there
+  Eigen::Matrix<double, 6, 1> w_a = Eigen::Matrix<double, 6, 1>::Zero();
+  Eigen::Matrix<double, 6, 1> w_b = Eigen::Matrix<double, 6, 1>::Zero();
+};
+
+// What a solver has done so far, for benchmarks and tests.
+struct SolverCounts {
+  long factorisations = 0;   // numeric factorisations from scratch
+  long modified_terms = 0;   // rank-one updates and downdates of a kept factorisation
+  long solves = 0;
+  long iterations = 0;       // iterative-method iterations over all solves
+};
+
 class LinearSolver {
  public:
   virtual ~LinearSolver() = default;
   // Factor the symmetric positive definite matrix given by its lower triangle. It is made of
-  // 6×6 blocks; block_pairs (i < j, sorted) lists its off-diagonal block pattern.
+  // 6×6 blocks; block_pairs (i < j, sorted) lists its off-diagonal block pattern. `terms`
+  // (sorted by id) are the rank-one parts of the matrix that come and go between calls, the
+  // contact springs: a solver that keeps a factorisation may update it by the parts that
+  // appeared and disappeared instead of starting again. The answer is always the matrix's.
   virtual void factor(const SparseMatrix& lower, int block_count,
-                      const std::vector<std::pair<int, int>>& block_pairs) = 0;
+                      const std::vector<std::pair<int, int>>& block_pairs,
+                      const std::vector<RankOneTerm>& terms = {}) = 0;
   // Solve with the last factorisation.
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const = 0;
+  virtual SolverCounts counts() const = 0;
 };
 
-// CHOLMOD through Eigen, ordered by AMD on the block graph (6× fewer nodes than the scalar
-// graph), re-analysed only when the block pattern changes. A factor is reused as the
-// preconditioner of conjugate gradients on later, nearby matrices for up to max_iterations
-// iterations to ‖b − A x‖ ≤ tolerance ‖b‖; past that the matrix is refactored.
+// CHOLMOD's simplicial LDLᵀ, ordered by AMD on the block graph (6× fewer nodes than the
+// scalar graph). The factor follows the contact springs by rank-one updates and downdates and
+// serves as the preconditioner of conjugate gradients on the current matrix (which also moved
+// with the geometry), for up to max_iterations iterations to ‖b − A x‖ ≤ tolerance ‖b‖; when
+// it stops helping, the matrix is factored again.
 std::unique_ptr<LinearSolver> make_cholmod_solver(double tolerance = 1e-12,
                                                   int max_iterations = 25);
 

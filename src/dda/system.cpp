@@ -270,17 +270,33 @@ void System::assemble_blocks(double dt, std::vector<Matrix6>& k, Eigen::VectorXd
 void System::factor_with_contacts(const std::vector<Matrix6>& base_blocks) {
   // Block pattern: the diagonal and one 6×6 block per pair of moving blocks with a closed
   // contact, kept as (column, row) with row > column, sorted.
-  std::vector<std::pair<int, int>> pairs;
+  // The buffers are members, reused from call to call: fresh ones cost more in page faults
+  // than the assembly itself.
+  std::vector<std::pair<int, int>>& pairs = assembly_.pairs;
+  pairs.clear();
   for (const ActiveContact& c : active_)
     if (is_closed(c.record.state) && c.dof_i >= 0 && c.dof_j >= 0 && c.dof_i != c.dof_j)
       pairs.emplace_back(std::min(c.dof_i, c.dof_j), std::max(c.dof_i, c.dof_j));
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  std::vector<Matrix6> diagonal = base_blocks;
-  std::vector<Matrix6> off(pairs.size(), Matrix6::Zero());  // block (row, column)
+  std::vector<Matrix6>& diagonal = assembly_.diagonal;
+  diagonal.assign(base_blocks.begin(), base_blocks.end());
+  std::vector<Matrix6>& off = assembly_.off;  // block (row, column)
+  off.assign(pairs.size(), Matrix6::Zero());
+  // The same springs as rank-one terms √p e (√p e)ᵀ, for a solver that follows them.
+  std::vector<RankOneTerm>& terms = assembly_.terms;
+  terms.clear();
+  const double root_penalty = std::sqrt(penalty_);
+  const auto add_term = [&](const ActiveContact& c, int kind, const Vector6& e_i, const Vector6& e_j) {
+    const ContactKey& k = c.key;
+    terms.push_back({{k.block_i, k.vertex, k.block_j, k.edge, kind}, c.dof_i, c.dof_j,
+                     root_penalty * e_i, root_penalty * e_j});
+  };
   for (const ActiveContact& c : active_) {
     if (!is_closed(c.record.state)) continue;
     const bool locked = c.record.state == ContactState::locked;
+    add_term(c, 0, c.en_i, c.en_j);
+    if (locked) add_term(c, 1, c.es_i, c.es_j);
     // Normal spring ½ p d²; locked contacts add the shear spring ½ p s².
     if (c.dof_i >= 0) {
       diagonal[c.dof_i] += penalty_ * c.en_i * c.en_i.transpose();
@@ -307,10 +323,12 @@ void System::factor_with_contacts(const std::vector<Matrix6>& base_blocks) {
   // Compressed lower triangle, column by column: the diagonal block's lower part, then the
   // off-diagonal blocks of that block column in row order.
   const int n = 6 * unknown_count_;
-  std::vector<int> first_pair(unknown_count_ + 1, 0);
+  std::vector<int>& first_pair = assembly_.first_pair;
+  first_pair.assign(unknown_count_ + 1, 0);
   for (auto [col, row] : pairs) ++first_pair[col + 1];
   for (int b = 0; b < unknown_count_; ++b) first_pair[b + 1] += first_pair[b];
-  SparseMatrix k(n, n);
+  SparseMatrix& k = assembly_.matrix;
+  if (k.rows() != n) k.resize(n, n);
   k.resizeNonZeros(unknown_count_ * 21 + static_cast<int>(pairs.size()) * 36);
   int* outer = k.outerIndexPtr();
   int* inner = k.innerIndexPtr();
@@ -333,7 +351,7 @@ void System::factor_with_contacts(const std::vector<Matrix6>& base_blocks) {
     }
   }
   outer[n] = nz;
-  solver_->factor(k, unknown_count_, pairs);
+  solver_->factor(k, unknown_count_, pairs, terms);
 }
 
 Eigen::VectorXd System::assemble_contact_rhs(const Eigen::VectorXd& f_base) const {

@@ -81,6 +81,7 @@ class System {
   double penalty() const { return penalty_; }
   double penetration_tolerance() const { return penetration_tolerance_; }
   double allowed_step_displacement() const { return allowed_displacement_; }
+  SolverCounts solver_counts() const { return solver_->counts(); }
 
  private:
   struct Block {
@@ -139,6 +140,16 @@ class System {
   std::vector<TrackedPoint> measured_;
   std::vector<std::vector<Point>> vertex_forces_;
   std::unique_ptr<LinearSolver> solver_;
+
+  // Buffers of factor_with_contacts, kept between calls.
+  struct AssemblyBuffers {
+    std::vector<std::pair<int, int>> pairs;
+    std::vector<Matrix6> diagonal, off;
+    std::vector<RankOneTerm> terms;
+    std::vector<int> first_pair;
+    SparseMatrix matrix;
+  };
+  AssemblyBuffers assembly_;
 
   std::map<ContactKey, ContactRecord> records_;
   std::vector<ActiveContact> active_;
