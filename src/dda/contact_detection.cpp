@@ -153,8 +153,22 @@ void find_one_way(std::span<const Point> va, int a, std::span<const Point> eb, i
 void find_pair_contacts(std::span<const Point> polygon_a, int a,
                         std::span<const Point> polygon_b, int b, double distance,
                         std::vector<ContactCandidate>& out) {
+  const std::size_t first = out.size();
   find_one_way(polygon_a, a, polygon_b, b, distance, out);
+  const std::size_t second = out.size();
   find_one_way(polygon_b, b, polygon_a, a, distance, out);
+  // A corner of b on a corner of a already in contact is the same contact point seen from the
+  // other block: an edge–edge contact is one vertex–edge contact at each end of the overlap
+  // (Shi 1988, §4.3). Counted twice it would double the stiffness there and the cohesion and
+  // tensile strength of the face (each carries half the face's length). a's is kept.
+  const double tie = kCornerTieTolerance * distance;
+  const auto same_corner = [&](const ContactCandidate& from_b) {
+    const Point p = polygon_b[from_b.key.vertex];
+    for (std::size_t k = first; k < second; ++k)
+      if (geometry::distance(polygon_a[out[k].key.vertex], p) <= tie) return true;
+    return false;
+  };
+  out.erase(std::remove_if(out.begin() + static_cast<std::ptrdiff_t>(second), out.end(), same_corner), out.end());
 }
 
 }  // namespace hydrodda::dda

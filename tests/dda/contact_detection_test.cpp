@@ -51,6 +51,42 @@ TEST(ContactDetection, FaceContactFindsBothVerticesWithHalfLengths) {
   }
 }
 
+// Two equal squares side by side, corners coinciding: the shared 1 m face is one edge–edge
+// contact, a vertex–edge contact at each end of it, so the tributary lengths (what cohesion
+// and tensile strength act on) sum to the face's length, 1 m to 1e-12, not twice it.
+TEST(ContactDetection, CoincidingCornersCountTheFaceOnce) {
+  const Polygon left = make_rectangle(0, 0, 1, 1);
+  const Polygon right = make_rectangle(1, 0, 2, 1);
+  std::vector<ContactCandidate> found;
+  find_pair_contacts(left, 0, right, 1, 0.01, found);
+  double total = 0.0;
+  for (const ContactCandidate& c : found) total += c.length;
+  EXPECT_EQ(found.size(), 2u);
+  EXPECT_NEAR(total, 1.0, 1e-12);
+  // The same seen from the other block (the pair given the other way round).
+  found.clear();
+  find_pair_contacts(right, 1, left, 0, 0.01, found);
+  total = 0.0;
+  for (const ContactCandidate& c : found) total += c.length;
+  EXPECT_NEAR(total, 1.0, 1e-12);
+}
+
+// A corner that lies on the line of two edges of the other block (side-by-side bricks) has
+// two candidate entrance edges at equal gaps: the one carrying the face contact is taken,
+// whatever the round-off, so the contact keeps its key from step to step.
+TEST(ContactDetection, CornerOnTwoEdgeLinesTakesTheFaceEdge) {
+  const Polygon left = make_rectangle(0, 0, 1, 1);
+  for (double wobble : {-1e-13, 0.0, 1e-13}) {
+    const Polygon right = make_rectangle(1 + wobble, wobble, 2, 1);
+    std::vector<ContactCandidate> found;
+    find_pair_contacts(left, 0, right, 1, 0.01, found);
+    ASSERT_EQ(found.size(), 2u) << wobble;
+    for (const ContactCandidate& c : found)
+      EXPECT_TRUE((c.key.block_j == 1 && c.key.edge == 3) || (c.key.block_j == 0 && c.key.edge == 1))
+          << "wobble " << wobble << ": vertex " << c.key.vertex << " on edge " << c.key.edge;
+  }
+}
+
 // Vertex–vertex: a wedge's corner near a square's corner from the diagonal takes one
 // entrance edge, the one whose line it is farther outside; the square's corner, whose
 // material would lie inside the wedge's edge lines, is not taken against the wedge.

@@ -1,0 +1,31 @@
+#!/bin/bash
+# run_seal.sh [BUILD_DIR] [seal_scenario.py options...]
+# Times a coupled run of the fractured seal that seal_scenario.py writes (by default about
+# 1,000 blocks over about 2 x 10^5 triangles, 3 passes of 20 DDA steps) with the real program,
+# and prints its size and the seconds of each phase from summary.json.
+set -euo pipefail
+HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+BUILD=${1:-build}
+shift || true
+WORK=$(mktemp -d)
+trap 'rm -rf "$WORK"' EXIT
+
+python3 "$HERE/seal_scenario.py" "$@" > "$WORK/seal.toml"
+start=$(date +%s.%N)
+"$BUILD/bin/hydrodda" run "$WORK/seal.toml" -o "$WORK/out" 2> "$WORK/log" || { cat "$WORK/log" >&2; exit 1; }
+end=$(date +%s.%N)
+grep -E "^(mesh|geometry|mechanics):" "$WORK/log" || true
+python3 - "$WORK/out/summary.json" "$start" "$end" <<'EOF'
+import json, sys
+summary = json.load(open(sys.argv[1]))
+wall = float(sys.argv[3]) - float(sys.argv[2])
+t = summary["timings"]
+passes = summary["iterations"]
+print(f"passes {passes}, converged {summary['converged']}, mass balance {summary['flow']['balance']:.1e}")
+print("| phase | seconds | seconds per pass |")
+print("| --- | ---: | ---: |")
+for phase in ("mesh", "porosity", "flow", "forces", "mechanics"):
+    per_pass = "" if phase == "mesh" else f"{t[phase] / passes:.3f}"
+    print(f"| {phase} | {t[phase]:.3f} | {per_pass} |")
+print(f"| whole run (wall) | {wall:.2f} | |")
+EOF
