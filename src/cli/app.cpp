@@ -50,10 +50,20 @@ int run_app(int argc, char** argv) {
   RunOptions run;
   std::string output;
   CLI::App* run_cmd = app.add_subcommand("run", "Run a scenario and write its run folder");
-  run_cmd->add_option("scenario", run.scenario, "Scenario file (TOML)")->required();
-  run_cmd->add_option("-o,--output", output, "Run folder (default: output.directory)");
-  run_cmd->add_flag("--overwrite", run.overwrite,
-                    "Replace results in a run folder that already holds files");
+  std::string resume;
+  CLI::Option* scenario_opt = run_cmd->add_option("scenario", run.scenario, "Scenario file (TOML)");
+  CLI::Option* output_opt = run_cmd->add_option("-o,--output", output, "Run folder (default: output.directory)");
+  CLI::Option* overwrite_opt = run_cmd->add_flag("--overwrite", run.overwrite,
+                                                 "Replace results in a run folder that already holds files");
+  CLI::Option* resume_opt = run_cmd->add_option(
+      "--resume", resume,
+      "Continue the coupled run in this run folder after its last finished coupling iteration, with the "
+      "scenario copy saved there (no SCENARIO)");
+  int stop_after = 0;
+  run_cmd->add_option("--stop-after", stop_after,
+                      "Coupled runs: stop after this coupling iteration, resumable with --resume")
+      ->check(CLI::PositiveNumber);
+  resume_opt->excludes(scenario_opt)->excludes(output_opt)->excludes(overwrite_opt);
 
   std::filesystem::path check_file;
   CLI::App* check_cmd = app.add_subcommand("check", "Validate a scenario without running it");
@@ -74,6 +84,12 @@ int run_app(int argc, char** argv) {
   run.verbosity = quiet ? Verbosity::Quiet : verbose ? Verbosity::Verbose : Verbosity::Normal;
   configure_logging(run.verbosity);
   if (!output.empty()) run.output = output;
+  if (!resume.empty()) run.resume = resume;
+  if (stop_after > 0) run.stop_after = stop_after;
+  if (*run_cmd && run.scenario.empty() && !run.resume) {
+    spdlog::error("run: give a SCENARIO file, or --resume DIR to continue a run");
+    return kBadInput;
+  }
 
   if (*check_cmd) return check_command(check_file);
   return run_command(run);

@@ -9,9 +9,11 @@
 namespace hydrodda::cli {
 
 struct RunOptions {
-  std::filesystem::path scenario;
+  std::filesystem::path scenario;               // empty with --resume
+  std::optional<std::filesystem::path> resume;  // --resume DIR: continue the coupled run in DIR
   std::optional<std::filesystem::path> output;  // -o: overrides output.directory
   bool overwrite = false;
+  std::optional<int> stop_after;  // --stop-after N: a coupled run stops after iteration N, resumable
   Verbosity verbosity = Verbosity::Normal;
 };
 

@@ -2,6 +2,8 @@
 #include <spdlog/spdlog.h>
 
 #include <chrono>
+#include <filesystem>
+#include <utility>
 
 #include "cli/figures.hpp"
 #include "cli/interrupt.hpp"
@@ -49,14 +51,39 @@ output::RunSummary run_coupled(const RunContext& context) {
   for (const scenario::FlowBoundaryCondition& bc : s.flow->boundaries) columns.push_back("flow_" + bc.name);
   CsvTable history(columns);
 
+  // What a checkpoint holds besides the engines' states; restored first when resuming.
+  output::RunCheckpoint checkpoint;
+  checkpoint.scenario_hash = output::hash_text(context.scenario_text);
+  checkpoint.scenario_file = std::filesystem::absolute(s.file).string();
+  double porosity_s = 0, flow_s = 0, forces_s = 0, mechanics_s = 0;
   ParaviewOutput paraview(context.folder);
+  if (context.resume) {
+    const output::RunCheckpoint& saved = *context.resume;
+    system.import_state(saved.mechanics);
+    loop.import_state(saved.coupling);
+    checkpoint.history = saved.history;
+    checkpoint.written_iterations = saved.written_iterations;
+    for (const std::vector<std::string>& row : saved.history) history.add_row(row);
+    paraview.list_written(saved.written_iterations);
+    for (const auto& [phase, seconds] : saved.timings) {
+      for (auto [name, total] : {std::pair{"mesh", &mesh_seconds}, std::pair{"porosity", &porosity_s},
+                                 std::pair{"flow", &flow_s}, std::pair{"forces", &forces_s},
+                                 std::pair{"mechanics", &mechanics_s}})
+        if (phase == name) *total += seconds;
+    }
+    spdlog::info("resuming after coupling iteration {}", loop.iterations());
+  } else {
+    context.folder.write("scenario.toml", context.scenario_text);
+  }
+
   const auto write_fields = [&](int iteration) {
     paraview.write_fluid(iteration, iteration, mesh, loop.flow(), loop.porosity().porosity, loop.permeability());
     paraview.write_blocks(iteration, iteration, system);
+    checkpoint.written_iterations.push_back(iteration);
   };
-  int last_written = 0;
-  double porosity_s = 0, flow_s = 0, forces_s = 0, mechanics_s = 0;
+  int last_written = checkpoint.written_iterations.empty() ? 0 : checkpoint.written_iterations.back();
   bool converged = false;
+  bool stopped = false;  // by --stop-after
   const auto current_summary = [&] {
     output::RunSummary summary = summarise_mechanics(s, system);
     if (loop.has_flow()) summary.flow = summarise_flow(s, mesh, loop.flow());
@@ -65,10 +92,26 @@ output::RunSummary run_coupled(const RunContext& context) {
                        {"forces", forces_s}, {"mechanics", mechanics_s}};
     return summary;
   };
+  // After every finished pass: the checkpoint, then the engines continue from exactly what it
+  // holds, as a resumed run does (importing also restarts the DDA linear solver, whose reused
+  // factors would otherwise carry round-off history that no checkpoint holds).
+  const auto save_checkpoint = [&] {
+    checkpoint.converged = converged;
+    checkpoint.timings = {{"mesh", mesh_seconds}, {"porosity", porosity_s}, {"flow", flow_s},
+                          {"forces", forces_s}, {"mechanics", mechanics_s}};
+    checkpoint.mechanics = system.export_state();
+    checkpoint.coupling = loop.export_state();
+    context.folder.write("checkpoint.bin", output::encode_checkpoint(checkpoint));
+    system.import_state(checkpoint.mechanics);
+  };
   try {
-    for (int k = 0; k < s.coupling.max_iterations && !converged; ++k) {
+    for (int k = loop.iterations(); k < s.coupling.max_iterations && !converged; ++k) {
       if (interrupt_requested())
         throw RunFailure(fmt::format("interrupted after coupling iteration {}", loop.iterations()), current_summary());
+      if (context.stop_after && loop.iterations() >= *context.stop_after) {
+        stopped = true;
+        break;
+      }
       const coupling::PassReport r = loop.run_pass();
       porosity_s += r.porosity_seconds;
       flow_s += r.flow_seconds;
@@ -81,6 +124,7 @@ output::RunSummary run_coupled(const RunContext& context) {
       for (const scenario::FlowBoundaryCondition& bc : s.flow->boundaries)
         row.push_back(CsvTable::cell(loop.flow().boundary_flow(bc.name)));
       history.add_row(row);
+      checkpoint.history.push_back(row);
       context.folder.write("history.csv", history.text());
       context.progress.update(fmt::format("iteration {}: head change {:.2e}, displacement change {:.2e}",
                                           r.iteration, r.head_change, r.displacement_change));
@@ -91,14 +135,25 @@ output::RunSummary run_coupled(const RunContext& context) {
         write_fields(r.iteration);
         last_written = r.iteration;
       }
+      save_checkpoint();
     }
-    if (loop.iterations() > 0 && last_written != loop.iterations()) write_fields(loop.iterations());
+    // The last state's fields, unless the run is to be continued (it writes them at its end).
+    if (!stopped && loop.iterations() > 0 && last_written != loop.iterations()) {
+      write_fields(loop.iterations());
+      save_checkpoint();
+    }
   } catch (const RunFailure&) {
     throw;
   } catch (const std::exception& e) {
     throw RunFailure(fmt::format("coupling iteration {} failed: {}", loop.iterations() + 1, e.what()), current_summary());
   }
   context.progress.finish();
+  if (stopped) {
+    output::RunSummary summary = current_summary();
+    summary.status = "stopped";
+    summary.message = fmt::format("stopped after coupling iteration {} (--stop-after)", loop.iterations());
+    return summary;
+  }
   std::vector<geometry::Polygon> blocks;
   for (int b = 0; b < system.block_count(); ++b) blocks.push_back(system.polygon(b));
   draw_figures(s, context.folder, {mesh, loop.flow(), loop.porosity().porosity, loop.permeability(), blocks});

@@ -26,6 +26,15 @@ void ParaviewOutput::write_fluid(int step, double time, const mesh::TriangleMesh
   fluid_->add(time, name);
 }
 
+void ParaviewOutput::list_written(const std::vector<int>& steps) {
+  if (!fluid_) fluid_.emplace(folder_.file("fluid.pvd"));
+  if (!blocks_) blocks_.emplace(folder_.file("blocks.pvd"));
+  for (int step : steps) {
+    fluid_->add(step, fmt::format("fluid_{:04d}.vtu", step));
+    blocks_->add(step, fmt::format("blocks_{:04d}.vtu", step));
+  }
+}
+
 void ParaviewOutput::write_blocks(int step, double time, const dda::System& system) {
   std::vector<std::vector<geometry::Point>> polygons;
   DataArray id{"block", 1, {}}, displacement{"displacement", 2, {}}, rotation{"rotation", 1, {}},

@@ -22,6 +22,9 @@ class ParaviewOutput {
   void write_fluid(int step, double time, const mesh::TriangleMesh& mesh, const hydro::FlowSolution& flow,
                    const std::vector<double>& porosity, const std::vector<double>& permeability);
   void write_blocks(int step, double time, const dda::System& system);
+  // A continued run: lists again the fluid and block files an earlier part of the run wrote
+  // at these steps (time = step, as in coupled runs), so the series stay whole.
+  void list_written(const std::vector<int>& steps);
 
  private:
   const output::RunFolder& folder_;

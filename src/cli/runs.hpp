@@ -2,7 +2,11 @@
 // The kinds of run: each builds its engines from the scenario, runs them, and writes the run
 // folder as it goes. They return the summary; run_command writes it.
 
+#include <optional>
+#include <string>
+
 #include "cli/progress.hpp"
+#include "output/checkpoint.hpp"
 #include "output/run_folder.hpp"
 #include "output/summary.hpp"
 #include "scenario/scenario.hpp"
@@ -13,6 +17,12 @@ struct RunContext {
   const scenario::Scenario& scenario;
   const output::RunFolder& folder;
   Progress& progress;
+  // The scenario's text as read: coupled runs save it as scenario.toml for --resume.
+  std::string scenario_text;
+  // A coupled run continued from its checkpoint (run --resume), or none.
+  const output::RunCheckpoint* resume = nullptr;
+  // Coupled runs: stop after this coupling iteration (run --stop-after), or run to the end.
+  std::optional<int> stop_after;
 };
 
 // A run that stopped before its end: what failed and where. The summary holds the last good

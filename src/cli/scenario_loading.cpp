@@ -10,9 +10,12 @@
 
 namespace hydrodda::cli {
 
-std::optional<scenario::Scenario> load_scenario(const std::filesystem::path& file) {
+namespace {
+
+template <class Read>
+std::optional<scenario::Scenario> load_with(const std::filesystem::path& file, Read read) {
   try {
-    scenario::Scenario s = scenario::read_scenario(file);
+    scenario::Scenario s = read();
     for (const scenario::DefaultUsed& d : s.defaults_used)
       spdlog::debug("default used: {} = {}", d.key, d.value);
     if (!s.defaults_used.empty() && !spdlog::should_log(spdlog::level::debug))
@@ -25,6 +28,16 @@ std::optional<scenario::Scenario> load_scenario(const std::filesystem::path& fil
                stderr);
     return std::nullopt;
   }
+}
+
+}  // namespace
+
+std::optional<scenario::Scenario> load_scenario(const std::filesystem::path& file) {
+  return load_with(file, [&] { return scenario::read_scenario(file); });
+}
+
+std::optional<scenario::Scenario> load_scenario_text(std::string_view text, const std::filesystem::path& file) {
+  return load_with(file, [&] { return scenario::parse_scenario(text, file); });
 }
 
 std::string describe(const scenario::Scenario& s) {

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "scenario/scenario.hpp"
 
@@ -11,6 +12,8 @@ namespace hydrodda::cli {
 
 // The scenario, or nothing after every error has been printed to stderr.
 std::optional<scenario::Scenario> load_scenario(const std::filesystem::path& file);
+// The same from text that `file` held (the base of relative paths, and named in messages).
+std::optional<scenario::Scenario> load_scenario_text(std::string_view text, const std::filesystem::path& file);
 
 // One line on what the scenario asks for: "coupled run, 6 blocks, 2 flow boundaries".
 std::string describe(const scenario::Scenario& scenario);

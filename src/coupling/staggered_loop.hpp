@@ -45,6 +45,15 @@ struct PassReport {
   double porosity_seconds = 0.0, flow_seconds = 0.0, forces_seconds = 0.0, mechanics_seconds = 0.0;
 };
 
+// The loop's state between passes as plain data, for checkpoints: with the DDA system's state
+// it is all a later pass reads.
+struct LoopState {
+  int iterations = 0;                   // passes finished
+  hydro::FlowSolution flow;             // the last pass's (relaxed) solution; empty before any
+  std::vector<double> previous_heads;   // for the head norm (and relaxation)
+  std::vector<Point> previous_displacements;  // for the displacement norm
+};
+
 class StaggeredLoop {
  public:
   // Keeps references to the mesh and the DDA system, which must outlive the loop.
@@ -53,6 +62,12 @@ class StaggeredLoop {
 
   // One pass; throws on numerical failure (with what failed).
   PassReport run_pass();
+
+  // The state between passes, and its restoration (throws std::invalid_argument when the
+  // sizes do not fit this mesh and system). The porosity and permeability are not part of it:
+  // every pass recomputes them from the blocks.
+  LoopState export_state() const;
+  void import_state(LoopState state);
 
   const hydro::FlowSolution& flow() const { return solution_; }
   const PorosityField& porosity() const { return porosity_; }

@@ -67,6 +67,16 @@ class CholmodSolver final : public LinearSolver {
 
   SolverCounts counts() const override { return counts_; }
 
+  void reset() override {
+    cholmod_free_factor(&factor_, &common_);
+    ordering_.clear();
+    inverse_order_.clear();
+    block_count_ = -1;
+    terms_.clear();
+    factored_terms_.clear();
+    stale_ = true;
+  }
+
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const override {
     ++counts_.solves;
     const double b_norm = rhs.norm();

@@ -33,6 +33,7 @@ class ConjugateGradientSolver final : public LinearSolver {
   }
 
   SolverCounts counts() const override { return counts_; }
+  void reset() override { guess_.resize(0); }
 
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const override {
     ++counts_.solves;

@@ -44,6 +44,11 @@ class LinearSolver {
   // Solve with the last factorisation.
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const = 0;
   virtual SolverCounts counts() const = 0;
+  // Forget every factor, ordering and starting guess kept from earlier matrices: the next
+  // factor() and solve() behave as in a new solver. Solutions of a reused solver differ from
+  // a new one's at round-off, so a run continued from a checkpoint restarts its solver, and so
+  // does the run it must reproduce, at the same point.
+  virtual void reset() = 0;
 };
 
 // CHOLMOD's simplicial LDLᵀ, ordered by AMD on the block graph (6× fewer nodes than the

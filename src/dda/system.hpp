@@ -3,8 +3,10 @@
 // A step reads as its stages: update bounds → find pairs → detect contacts → assemble →
 // open–close (augmented Lagrangian inside) → update geometry → report.
 
+#include <array>
 #include <map>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "dda/block_kernels.hpp"
@@ -45,6 +47,26 @@ struct ContactRecord {
   double penetration = 0.0;
 };
 
+// The evolving state of a System as plain data: what a checkpoint holds to continue a run
+// exactly. Everything else in a System follows from its ModelDefinition.
+struct SystemState {
+  struct BlockState {
+    Polygon polygon;
+    std::array<double, 6> velocity{};
+    std::array<double, 3> stress{};
+    std::array<double, 3> strain{};
+    double rotation = 0.0;
+    Point material_centroid;
+  };
+  std::vector<BlockState> blocks;
+  double time = 0.0;
+  double time_step = 0.0;  // the step the next step starts from (it may have been cut)
+  std::vector<std::pair<ContactKey, ContactRecord>> contacts;  // in key order
+  // Current positions of the tracked points, in definition order.
+  std::vector<Point> fixed_points, load_points, displacement_points, measured_points;
+  std::vector<std::vector<Point>> vertex_forces;
+};
+
 class System {
  public:
   explicit System(ModelDefinition definition,
@@ -63,6 +85,12 @@ class System {
   // External forces per block per vertex (N per metre), e.g. fluid forces; replaces the last.
   // forces[b] must be empty or hold one force per vertex of block b.
   void set_vertex_forces(std::vector<std::vector<Point>> forces);
+
+  // The evolving state, and its restoration into a System built from the same definition
+  // (import throws std::invalid_argument when the counts do not fit). Importing also restarts
+  // the linear solver, so that the steps after it do not depend on factors reused from before.
+  SystemState export_state() const;
+  void import_state(const SystemState& state);
 
   int block_count() const { return static_cast<int>(blocks_.size()); }
   double time() const { return time_; }

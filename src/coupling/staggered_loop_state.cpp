@@ -1,0 +1,31 @@
+// Export and import of the staggered loop's state between passes (see LoopState).
+#include <stdexcept>
+
+#include "coupling/staggered_loop.hpp"
+
+namespace hydrodda::coupling {
+
+LoopState StaggeredLoop::export_state() const {
+  return {completed_, solution_, previous_heads_, previous_displacements_};
+}
+
+void StaggeredLoop::import_state(LoopState state) {
+  const auto nodes = static_cast<std::size_t>(mesh_.node_count());
+  const auto blocks = static_cast<std::size_t>(mechanics_.block_count());
+  const bool started = state.iterations > 0;
+  if (state.iterations < 0) throw std::invalid_argument("coupling state: a negative iteration count");
+  // A finished pass leaves a solution, heads and displacements of this mesh and system.
+  const bool fits = started ? state.flow.head.size() == nodes && state.flow.pressure.size() == nodes &&
+                                  state.flow.flux.size() == static_cast<std::size_t>(mesh_.triangle_count()) &&
+                                  state.previous_heads.size() == nodes &&
+                                  state.previous_displacements.size() == blocks
+                            : state.flow.head.empty() && state.previous_heads.empty() &&
+                                  state.previous_displacements.empty();
+  if (!fits) throw std::invalid_argument("coupling state: sizes do not fit the mesh and the blocks");
+  iteration_ = completed_ = state.iterations;
+  solution_ = std::move(state.flow);
+  previous_heads_ = std::move(state.previous_heads);
+  previous_displacements_ = std::move(state.previous_displacements);
+}
+
+}  // namespace hydrodda::coupling

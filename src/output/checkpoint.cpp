@@ -1,0 +1,299 @@
+#include "output/checkpoint.hpp"
+
+#include <cstring>
+#include <type_traits>
+
+namespace hydrodda::output {
+
+namespace {
+
+constexpr std::string_view kMagic = "hydrodda checkpoint\n";
+constexpr std::int64_t kVersion = 1;
+constexpr std::uint32_t kByteOrderMark = 0x01020304;
+// Any list longer than the file could hold is damage, not data; this bounds allocations.
+constexpr std::int64_t kMaxCount = std::int64_t{1} << 40;
+
+using geometry::Point;
+
+class Writer {
+ public:
+  template <class T>
+  void put_raw(T value) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    char bytes[sizeof(T)];
+    std::memcpy(bytes, &value, sizeof(T));
+    out_.append(bytes, sizeof(T));
+  }
+  void put(std::int64_t v) { put_raw(v); }
+  void put(int v) { put_raw(static_cast<std::int64_t>(v)); }
+  void put(bool v) { put_raw(static_cast<std::int64_t>(v)); }
+  void put(double v) { put_raw(v); }
+  void put(std::uint64_t v) { put_raw(v); }
+  void put(const std::string& s) {
+    put(static_cast<std::int64_t>(s.size()));
+    out_ += s;
+  }
+  void put(Point p) {
+    put(p.x);
+    put(p.y);
+  }
+  template <class T, std::size_t N>
+  void put(const std::array<T, N>& a) {
+    for (const T& v : a) put(v);
+  }
+  template <class T>
+  void put(const std::vector<T>& list) {
+    put(static_cast<std::int64_t>(list.size()));
+    for (const T& v : list) put(v);
+  }
+  std::string take() { return std::move(out_); }
+
+ private:
+  std::string out_;
+};
+
+class Reader {
+ public:
+  explicit Reader(std::string_view bytes) : in_(bytes) {}
+
+  template <class T>
+  T get_raw() {
+    static_assert(std::is_trivially_copyable_v<T>);
+    need(sizeof(T));
+    T value;
+    std::memcpy(&value, in_.data() + at_, sizeof(T));
+    at_ += sizeof(T);
+    return value;
+  }
+  void get(std::int64_t& v) { v = get_raw<std::int64_t>(); }
+  void get(std::uint64_t& v) { v = get_raw<std::uint64_t>(); }
+  void get(double& v) { v = get_raw<double>(); }
+  void get(int& v) {
+    const std::int64_t wide = get_raw<std::int64_t>();
+    if (wide < INT32_MIN || wide > INT32_MAX) fail();
+    v = static_cast<int>(wide);
+  }
+  void get(bool& v) {
+    const std::int64_t wide = get_raw<std::int64_t>();
+    if (wide != 0 && wide != 1) fail();
+    v = wide == 1;
+  }
+  void get(std::string& s) {
+    const std::size_t n = get_count();
+    need(n);
+    s.assign(in_.data() + at_, n);
+    at_ += n;
+  }
+  void get(Point& p) {
+    get(p.x);
+    get(p.y);
+  }
+  template <class T, std::size_t N>
+  void get(std::array<T, N>& a) {
+    for (T& v : a) get(v);
+  }
+  template <class T>
+  void get(std::vector<T>& list) {
+    const std::size_t n = get_count();
+    list.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+      T v{};
+      get(v);
+      list.push_back(std::move(v));
+    }
+  }
+  void expect(std::string_view text) {
+    need(text.size());
+    if (in_.substr(at_, text.size()) != text) fail();
+    at_ += text.size();
+  }
+  void expect_end() const {
+    if (at_ != in_.size()) fail();
+  }
+  [[noreturn]] void fail() const { throw CheckpointError("the checkpoint is damaged or cut short"); }
+
+ private:
+  std::size_t get_count() {
+    const auto n = get_raw<std::int64_t>();
+    if (n < 0 || n > kMaxCount || static_cast<std::size_t>(n) > in_.size() - at_) fail();
+    return static_cast<std::size_t>(n);
+  }
+  void need(std::size_t n) const {
+    if (n > in_.size() - at_) fail();
+  }
+
+  std::string_view in_;
+  std::size_t at_ = 0;
+};
+
+// The DDA and loop records, field by field, in one order for writing and reading.
+template <class Io, class Record>
+void visit_record(Io&& io, Record& r) {
+  int state = static_cast<int>(r.state);
+  io(state);
+  r.state = static_cast<dda::ContactState>(state);
+  io(r.reference_ratio);
+  io(r.multiplier);
+  io(r.slide_sign);
+  io(r.normal_force);
+  io(r.penetration);
+}
+
+void write_mechanics(Writer& w, const dda::SystemState& s) {
+  w.put(static_cast<std::int64_t>(s.blocks.size()));
+  for (const dda::SystemState::BlockState& b : s.blocks) {
+    w.put(b.polygon);
+    w.put(b.velocity);
+    w.put(b.stress);
+    w.put(b.strain);
+    w.put(b.rotation);
+    w.put(b.material_centroid);
+  }
+  w.put(s.time);
+  w.put(s.time_step);
+  w.put(static_cast<std::int64_t>(s.contacts.size()));
+  for (const auto& [key, record] : s.contacts) {
+    for (int v : {key.block_i, key.vertex, key.block_j, key.edge}) w.put(v);
+    dda::ContactRecord r = record;
+    visit_record([&](auto& v) { w.put(v); }, r);
+  }
+  w.put(s.fixed_points);
+  w.put(s.load_points);
+  w.put(s.displacement_points);
+  w.put(s.measured_points);
+  w.put(s.vertex_forces);
+}
+
+void read_mechanics(Reader& r, dda::SystemState& s) {
+  std::int64_t blocks = 0;
+  r.get(blocks);
+  if (blocks < 0 || blocks > kMaxCount) r.fail();
+  for (std::int64_t i = 0; i < blocks; ++i) {
+    dda::SystemState::BlockState b;
+    r.get(b.polygon);
+    r.get(b.velocity);
+    r.get(b.stress);
+    r.get(b.strain);
+    r.get(b.rotation);
+    r.get(b.material_centroid);
+    s.blocks.push_back(std::move(b));
+  }
+  r.get(s.time);
+  r.get(s.time_step);
+  std::int64_t contacts = 0;
+  r.get(contacts);
+  if (contacts < 0 || contacts > kMaxCount) r.fail();
+  for (std::int64_t i = 0; i < contacts; ++i) {
+    dda::ContactKey key;
+    r.get(key.block_i);
+    r.get(key.vertex);
+    r.get(key.block_j);
+    r.get(key.edge);
+    dda::ContactRecord record;
+    visit_record([&](auto& v) { r.get(v); }, record);
+    if (static_cast<int>(record.state) < 0 || static_cast<int>(record.state) > 2) r.fail();
+    s.contacts.emplace_back(key, record);
+  }
+  r.get(s.fixed_points);
+  r.get(s.load_points);
+  r.get(s.displacement_points);
+  r.get(s.measured_points);
+  r.get(s.vertex_forces);
+}
+
+template <class Io>
+void visit_flow(Io&& io, hydro::FlowSolution& f) {
+  io(f.head);
+  io(f.pressure);
+  io(f.flux);
+  io(f.reference_head);
+  io(f.balance_error);
+  io(f.refinement_steps);
+}
+
+}  // namespace
+
+std::uint64_t hash_text(std::string_view text) {
+  std::uint64_t h = 14695981039346656037ull;  // FNV-1a offset basis and prime
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+std::string encode_checkpoint(const RunCheckpoint& c) {
+  Writer w;
+  for (char ch : kMagic) w.put_raw(ch);
+  w.put(kVersion);
+  w.put_raw(kByteOrderMark);
+  w.put(c.scenario_hash);
+  w.put(c.scenario_file);
+  w.put(c.converged);
+  w.put(c.history);
+  w.put(c.written_iterations);
+  w.put(static_cast<std::int64_t>(c.timings.size()));
+  for (const auto& [name, seconds] : c.timings) {
+    w.put(name);
+    w.put(seconds);
+  }
+  write_mechanics(w, c.mechanics);
+  w.put(c.coupling.iterations);
+  hydro::FlowSolution flow = c.coupling.flow;
+  visit_flow([&](auto& v) { w.put(v); }, flow);
+  w.put(static_cast<std::int64_t>(flow.boundary_flows.size()));
+  for (const hydro::BoundaryFlow& b : flow.boundary_flows) {
+    w.put(b.name);
+    w.put(b.flow);
+  }
+  w.put(c.coupling.previous_heads);
+  w.put(c.coupling.previous_displacements);
+  return w.take();
+}
+
+RunCheckpoint decode_checkpoint(std::string_view bytes) {
+  Reader r(bytes);
+  if (bytes.substr(0, kMagic.size()) != kMagic) throw CheckpointError("not a hydrodda checkpoint");
+  r.expect(kMagic);
+  std::int64_t version = 0;
+  r.get(version);
+  if (version != kVersion)
+    throw CheckpointError("checkpoint format " + std::to_string(version) + "; this hydrodda reads format " +
+                          std::to_string(kVersion));
+  if (r.get_raw<std::uint32_t>() != kByteOrderMark)
+    throw CheckpointError("the checkpoint was written on a machine of another byte order");
+  RunCheckpoint c;
+  r.get(c.scenario_hash);
+  r.get(c.scenario_file);
+  r.get(c.converged);
+  r.get(c.history);
+  r.get(c.written_iterations);
+  std::int64_t timings = 0;
+  r.get(timings);
+  if (timings < 0 || timings > kMaxCount) r.fail();
+  for (std::int64_t i = 0; i < timings; ++i) {
+    std::string name;
+    double seconds = 0;
+    r.get(name);
+    r.get(seconds);
+    c.timings.emplace_back(std::move(name), seconds);
+  }
+  read_mechanics(r, c.mechanics);
+  r.get(c.coupling.iterations);
+  visit_flow([&](auto& v) { r.get(v); }, c.coupling.flow);
+  std::int64_t boundaries = 0;
+  r.get(boundaries);
+  if (boundaries < 0 || boundaries > kMaxCount) r.fail();
+  for (std::int64_t i = 0; i < boundaries; ++i) {
+    hydro::BoundaryFlow b;
+    r.get(b.name);
+    r.get(b.flow);
+    c.coupling.flow.boundary_flows.push_back(std::move(b));
+  }
+  r.get(c.coupling.previous_heads);
+  r.get(c.coupling.previous_displacements);
+  r.expect_end();
+  return c;
+}
+
+}  // namespace hydrodda::output

@@ -1,0 +1,47 @@
+#pragma once
+// The checkpoint of a coupled run (checkpoint.bin in the run folder): everything needed to
+// continue the run after its last finished coupling iteration and reach the same results, bit
+// for bit, as a run that was never stopped.
+//
+// Format: the magic line "hydrodda checkpoint\n", a format version, a byte-order mark, then
+// the fields below in order; numbers as raw 8-byte integers and IEEE doubles in the writing
+// machine's byte order (a checkpoint is read back where it was written, not exchanged), strings
+// and lists prefixed with their length. A file of another version or byte order, or a cut or
+// damaged one, is refused with CheckpointError.
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "coupling/staggered_loop.hpp"
+#include "dda/system.hpp"
+
+namespace hydrodda::output {
+
+struct RunCheckpoint {
+  std::uint64_t scenario_hash = 0;  // hash_text() of the scenario text the run started from
+  std::string scenario_file;        // that scenario's absolute path (base of its relative paths)
+  bool converged = false;
+  std::vector<std::vector<std::string>> history;  // history.csv rows so far, header excluded
+  std::vector<int> written_iterations;            // iterations whose ParaView files exist
+  std::vector<std::pair<std::string, double>> timings;  // seconds per phase so far
+  dda::SystemState mechanics;
+  coupling::LoopState coupling;
+};
+
+std::string encode_checkpoint(const RunCheckpoint& checkpoint);
+// Throws CheckpointError when the bytes are not a whole checkpoint of this format.
+RunCheckpoint decode_checkpoint(std::string_view bytes);
+
+// 64-bit FNV-1a of a text: tells a scenario edited since the run started.
+std::uint64_t hash_text(std::string_view text);
+
+class CheckpointError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace hydrodda::output

@@ -1,0 +1,134 @@
+// run --resume through the real program: a coupled run stopped after two iterations and
+// resumed reaches, byte for byte, the run folder of one never stopped (summary.json apart from
+// its wall-clock timings), and folders that cannot be resumed are refused with exit 2.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "run_program.hpp"
+
+namespace fs = std::filesystem;
+using hydrodda::testing::run_program;
+
+namespace {
+
+const fs::path kSixBlock = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/paper/six_block_lr_rl.toml";
+
+std::string read_file(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// summary.json without `timings` (wall-clock seconds, different in every run).
+nlohmann::json read_summary_without_timings(const fs::path& folder) {
+  nlohmann::json summary = nlohmann::json::parse(read_file(folder / "summary.json"));
+  summary.erase("timings");
+  return summary;
+}
+
+// Every file of the two folders (figures/ apart) is the same, byte for byte; summary.json
+// apart from its timings, parsed so that the comparison names the field.
+void expect_same_results(const fs::path& a, const fs::path& b) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(a))
+    if (entry.is_regular_file()) names.push_back(entry.path().filename().string());
+  for (const auto& entry : fs::directory_iterator(b)) {
+    if (entry.is_regular_file()) {
+      EXPECT_TRUE(fs::exists(a / entry.path().filename())) << entry.path();
+    }
+  }
+  ASSERT_GT(names.size(), 5u);
+  for (const std::string& name : names) {
+    if (name == "summary.json" || name == "checkpoint.bin") continue;  // both hold timings
+    ASSERT_TRUE(fs::exists(b / name)) << name;
+    EXPECT_TRUE(read_file(a / name) == read_file(b / name)) << name << " differs";
+  }
+  EXPECT_EQ(read_summary_without_timings(a), read_summary_without_timings(b));
+}
+
+// One pair of folders per test (ctest runs tests in parallel).
+struct Folders {
+  fs::path whole, parts;
+  explicit Folders(const std::string& test)
+      : whole(fs::temp_directory_path() / ("hydrodda-resume-whole-" + test)),
+        parts(fs::temp_directory_path() / ("hydrodda-resume-parts-" + test)) {
+    fs::remove_all(whole);
+    fs::remove_all(parts);
+  }
+  ~Folders() {
+    fs::remove_all(whole);
+    fs::remove_all(parts);
+  }
+};
+
+TEST(Resume, StoppedAndResumedRunMatchesAnUninterruptedOneBitForBit) {
+  Folders f("match");
+  const auto whole = run_program("run " + kSixBlock.string() + " -o " + f.whole.string());
+  ASSERT_EQ(whole.exit_code, 0) << whole.output;
+  ASSERT_GE(read_summary_without_timings(f.whole)["iterations"].get<int>(), 3);  // so 2 is mid-run
+
+  const auto first = run_program("run " + kSixBlock.string() + " -o " + f.parts.string() + " --stop-after 2");
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  EXPECT_NE(first.output.find("--resume"), std::string::npos) << first.output;
+  const nlohmann::json stopped = read_summary_without_timings(f.parts);
+  EXPECT_EQ(stopped["converged"], false);
+  EXPECT_EQ(stopped["status"], "stopped");
+  EXPECT_EQ(stopped["iterations"], 2);
+  EXPECT_TRUE(fs::exists(f.parts / "checkpoint.bin"));
+  EXPECT_EQ(read_file(f.parts / "scenario.toml"), read_file(kSixBlock));
+
+  const auto second = run_program("run --resume " + f.parts.string());
+  ASSERT_EQ(second.exit_code, 0) << second.output;
+  EXPECT_NE(second.output.find("resuming after coupling iteration 2"), std::string::npos) << second.output;
+  expect_same_results(f.whole, f.parts);
+  EXPECT_EQ(read_summary_without_timings(f.parts)["converged"], true);
+
+  // A converged run has nothing left to do.
+  const auto again = run_program("run --resume " + f.parts.string());
+  EXPECT_EQ(again.exit_code, 2) << again.output;
+  EXPECT_NE(again.output.find("already converged"), std::string::npos) << again.output;
+}
+
+TEST(Resume, FoldersThatCannotBeResumedAreRefused) {
+  Folders f("refused");
+  // No folder at all, and a folder without a checkpoint.
+  auto result = run_program("run --resume " + f.parts.string());
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("no such run folder"), std::string::npos) << result.output;
+  fs::create_directories(f.parts);
+  std::ofstream(f.parts / "summary.json") << "{}";
+  result = run_program("run --resume " + f.parts.string());
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("no checkpoint.bin"), std::string::npos) << result.output;
+  fs::remove_all(f.parts);
+
+  // A scenario copy edited since the start.
+  result = run_program("run " + kSixBlock.string() + " -o " + f.parts.string() + " --stop-after 1");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const std::string checkpoint = read_file(f.parts / "checkpoint.bin");
+  std::ofstream(f.parts / "scenario.toml", std::ios::app) << "# edited\n";
+  result = run_program("run --resume " + f.parts.string());
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("differs from the scenario the run started with"), std::string::npos)
+      << result.output;
+
+  // A checkpoint cut short.
+  std::ofstream(f.parts / "scenario.toml", std::ios::binary) << read_file(kSixBlock);
+  std::ofstream(f.parts / "checkpoint.bin", std::ios::binary) << checkpoint.substr(0, checkpoint.size() / 2);
+  result = run_program("run --resume " + f.parts.string());
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("damaged or cut short"), std::string::npos) << result.output;
+
+  // --resume takes no SCENARIO, -o or --overwrite; run needs one of SCENARIO and --resume.
+  EXPECT_EQ(run_program("run " + kSixBlock.string() + " --resume " + f.parts.string()).exit_code, 2);
+  EXPECT_EQ(run_program("run --resume " + f.parts.string() + " --overwrite").exit_code, 2);
+  EXPECT_EQ(run_program("run").exit_code, 2);
+}
+
+}  // namespace

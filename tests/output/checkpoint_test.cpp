@@ -1,0 +1,123 @@
+// The checkpoint codec: what is encoded decodes to the same values bit for bit, and a file cut
+// short, damaged or of another kind is refused rather than read as something else.
+
+#include "output/checkpoint.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace hydrodda::output {
+namespace {
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+RunCheckpoint make_checkpoint() {
+  RunCheckpoint c;
+  c.scenario_hash = hash_text("title = \"x\"\n");
+  c.scenario_file = "/data/runs/seal.toml";
+  c.converged = false;
+  c.history = {{"1", "0.10000000000000001", "1"}, {"2", "0.20000000000000001", "0.5"}};
+  c.written_iterations = {1, 2};
+  c.timings = {{"mesh", 0.25}, {"flow", 1.5}};
+  dda::SystemState::BlockState block;
+  block.polygon = {{0.0, 0.0}, {1.0 / 3.0, 0.0}, {0.0, 0.1}};
+  block.velocity = {1e-300, -0.0, std::numeric_limits<double>::denorm_min(), 4, 5, 6};
+  block.stress = {-1.0e7, 2.0e6, 3.0};
+  block.strain = {1e-6, -2e-6, 3e-7};
+  block.rotation = 0.001;
+  block.material_centroid = {0.1, 0.2};
+  c.mechanics.blocks = {block, block};
+  c.mechanics.time = 0.2;
+  c.mechanics.time_step = 7.5e-4;
+  dda::ContactRecord record;
+  record.state = dda::ContactState::sliding;
+  record.reference_ratio = 0.3;
+  record.multiplier = 12.5;
+  record.slide_sign = -1;
+  record.normal_force = 1e5;
+  record.penetration = -1e-5;
+  c.mechanics.contacts = {{{0, 1, 1, 2}, record}};
+  c.mechanics.fixed_points = {{0.0, 0.0}};
+  c.mechanics.measured_points = {{0.5, 0.5}, {0.25, 0.75}};
+  c.mechanics.vertex_forces = {{}, {{1.0, 2.0}, {3.0, 4.0}, {5.0, 6.0}}};
+  c.coupling.iterations = 2;
+  c.coupling.flow.head = {20.0, 10.0 / 3.0, 0.0};
+  c.coupling.flow.pressure = {2e5, 1e5, 0.0};
+  c.coupling.flow.flux = {{1e-7, -2e-7}};
+  c.coupling.flow.boundary_flows = {{"left", 1e-6}, {"right", -1e-6}};
+  c.coupling.flow.reference_head = 0.0;
+  c.coupling.flow.balance_error = 1e-15;
+  c.coupling.flow.refinement_steps = 1;
+  c.coupling.previous_heads = c.coupling.flow.head;
+  c.coupling.previous_displacements = {{1e-3, 0.0}, {0.0, -2e-3}};
+  return c;
+}
+
+TEST(Checkpoint, DecodesToTheSameValuesBitForBit) {
+  const RunCheckpoint c = make_checkpoint();
+  const RunCheckpoint d = decode_checkpoint(encode_checkpoint(c));
+  EXPECT_EQ(d.scenario_hash, c.scenario_hash);
+  EXPECT_EQ(d.scenario_file, c.scenario_file);
+  EXPECT_EQ(d.converged, c.converged);
+  EXPECT_EQ(d.history, c.history);
+  EXPECT_EQ(d.written_iterations, c.written_iterations);
+  EXPECT_EQ(d.timings, c.timings);
+  ASSERT_EQ(d.mechanics.blocks.size(), 2u);
+  const auto& b = d.mechanics.blocks[1];
+  const auto& e = c.mechanics.blocks[1];
+  ASSERT_EQ(b.polygon.size(), 3u);
+  EXPECT_TRUE(same_bits(b.polygon[1].x, e.polygon[1].x));
+  for (int i = 0; i < 6; ++i) EXPECT_TRUE(same_bits(b.velocity[i], e.velocity[i])) << i;  // -0.0, denormals
+  EXPECT_EQ(b.stress, e.stress);
+  EXPECT_EQ(b.strain, e.strain);
+  EXPECT_EQ(b.rotation, e.rotation);
+  EXPECT_EQ(b.material_centroid.y, e.material_centroid.y);
+  EXPECT_EQ(d.mechanics.time, 0.2);
+  EXPECT_EQ(d.mechanics.time_step, 7.5e-4);
+  ASSERT_EQ(d.mechanics.contacts.size(), 1u);
+  EXPECT_EQ(d.mechanics.contacts[0].first, (dda::ContactKey{0, 1, 1, 2}));
+  const dda::ContactRecord& r = d.mechanics.contacts[0].second;
+  EXPECT_EQ(r.state, dda::ContactState::sliding);
+  EXPECT_EQ(r.slide_sign, -1);
+  EXPECT_EQ(r.multiplier, 12.5);
+  EXPECT_EQ(r.penetration, -1e-5);
+  EXPECT_EQ(d.mechanics.measured_points.size(), 2u);
+  EXPECT_EQ(d.mechanics.load_points.size(), 0u);
+  ASSERT_EQ(d.mechanics.vertex_forces.size(), 2u);
+  EXPECT_TRUE(d.mechanics.vertex_forces[0].empty());
+  EXPECT_EQ(d.mechanics.vertex_forces[1][2].y, 6.0);
+  EXPECT_EQ(d.coupling.iterations, 2);
+  EXPECT_EQ(d.coupling.flow.head, c.coupling.flow.head);
+  EXPECT_EQ(d.coupling.flow.pressure, c.coupling.flow.pressure);
+  EXPECT_EQ(d.coupling.flow.flux[0].y, -2e-7);
+  ASSERT_EQ(d.coupling.flow.boundary_flows.size(), 2u);
+  EXPECT_EQ(d.coupling.flow.boundary_flows[1].name, "right");
+  EXPECT_EQ(d.coupling.flow.boundary_flow("left"), 1e-6);
+  EXPECT_EQ(d.coupling.flow.balance_error, 1e-15);
+  EXPECT_EQ(d.coupling.flow.refinement_steps, 1);
+  EXPECT_EQ(d.coupling.previous_displacements[1].y, -2e-3);
+}
+
+TEST(Checkpoint, ACutOrDamagedFileIsRefused) {
+  const std::string bytes = encode_checkpoint(make_checkpoint());
+  // Every proper prefix is refused: lengths are checked against what is left.
+  for (std::size_t n = 0; n < bytes.size(); n += 7)
+    EXPECT_THROW(decode_checkpoint(std::string_view(bytes).substr(0, n)), CheckpointError) << n;
+  EXPECT_THROW(decode_checkpoint(bytes + "x"), CheckpointError);
+  EXPECT_THROW(decode_checkpoint("title = \"a scenario, not a checkpoint\"\n"), CheckpointError);
+  std::string other_version = bytes;
+  other_version[std::string_view("hydrodda checkpoint\n").size()] = 9;
+  EXPECT_THROW(decode_checkpoint(other_version), CheckpointError);
+}
+
+TEST(Checkpoint, TheScenarioHashTellsAnEditedText) {
+  EXPECT_EQ(hash_text("steps = 100\n"), hash_text("steps = 100\n"));
+  EXPECT_NE(hash_text("steps = 100\n"), hash_text("steps = 101\n"));
+  EXPECT_EQ(hash_text(""), 14695981039346656037ull);  // FNV-1a 64 offset basis
+}
+
+}  // namespace
+}  // namespace hydrodda::output
