@@ -167,6 +167,20 @@ void check_material_fields(ReadContext& ctx, const TableView& root, const Scenar
   }
 }
 
+// Static analysis seeks equilibrium: with no support at all (no fixed block, no fixed point, no
+// prescribed displacement) the stiffness has the rigid-body motions of the whole assembly in its
+// null space, so any load moves it without end. Dynamic analysis has inertia and is fine.
+void check_static_support(ReadContext& ctx, const TableView& root, const Scenario& s) {
+  if (!s.mechanics || s.mechanics->analysis != Analysis::Static || !s.geometry) return;
+  const bool fixed_block = std::any_of(s.geometry->blocks.begin(), s.geometry->blocks.end(),
+                                       [](const BlockDefinition& b) { return b.fixed; });
+  if (fixed_block || !s.mechanics->fixed.empty() || !s.mechanics->displacements.empty()) return;
+  ctx.error(root.line_of_key("mechanics"), "mechanics.analysis",
+            "static analysis with nothing to hold the blocks: no fixed block (geometry.block fixed = "
+            "true), no [[mechanics.fixed]] point and no [[mechanics.displacement]], so nothing stops "
+            "rigid-body motion; add a support or use analysis = \"dynamic\"");
+}
+
 }  // namespace
 
 void validate_scenario(ReadContext& ctx, const TableView& root, Scenario& s) {
@@ -186,6 +200,7 @@ void validate_scenario(ReadContext& ctx, const TableView& root, Scenario& s) {
     check_block_overlaps(ctx, s.geometry->blocks);
   }
 
+  check_static_support(ctx, root, s);
   if (s.mechanics) {
     for (const PrescribedDisplacement& d : s.mechanics->displacements)
       check_boundary_reference(ctx, s, d.line, "mechanics.displacement.boundary", d.boundary);

@@ -47,7 +47,8 @@ TEST(Program, ErrorsAreAllReportedTogether) {
                          "young = 1.0e10\n"
                          "poison = 0.3\n"
                          "[mechanics]\n"
-                         "time_step = -1.0\n";
+                         "time_step = -1.0\n"
+                         "analysis = \"dynamic\"\n";
   const auto result = run_program("check " + file.string());
   EXPECT_EQ(result.exit_code, 2);
   const std::string name = file.string();

@@ -120,6 +120,7 @@ young = 0.0
 poisson = 0.7
 [mechanics]
 steps = 0
+analysis = "dynamic"
 )");
   ASSERT_EQ(errors.size(), 4u);
   for (std::size_t i = 1; i < errors.size(); ++i) EXPECT_LE(errors[i - 1].line, errors[i].line);
@@ -154,6 +155,7 @@ TEST(ScenarioReader, TouchingBlocksAreNotOverlapping) {
   EXPECT_TRUE(errors_of(R"([geometry]
 [[geometry.block]]
 vertices = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
+fixed = true
 [[geometry.block]]
 vertices = [[1.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 1.0]]
 [[geometry.block]]
@@ -179,9 +181,32 @@ young = 1.0e10
 poisson = 0.25
 [mechanics]
 steps = 1
+analysis = "dynamic"
 )");
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_NE(errors[0].message.find("overlaps"), std::string::npos);
+}
+
+TEST(ScenarioReader, StaticAnalysisNeedsASupport) {
+  // One free block under gravity, static: nothing holds it. A fixed block, a fixed point, a
+  // prescribed displacement or dynamic analysis each make the model well posed.
+  const std::string blocks = R"([geometry]
+[[geometry.block]]
+vertices = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
+[material.rock]
+density = 2500.0
+young = 1.0e10
+poisson = 0.25
+[mechanics]
+steps = 1
+)";
+  const auto errors = errors_of(blocks);
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].key, "mechanics.analysis");
+  EXPECT_EQ(errors[0].line, 8);
+  EXPECT_TRUE(errors_of(blocks + "analysis = \"dynamic\"\n").empty());
+  EXPECT_TRUE(errors_of(blocks + "[[mechanics.fixed]]\npoint = [0.5, 0.0]\n").empty());
+  EXPECT_TRUE(errors_of(blocks + "[[mechanics.displacement]]\nboundary = \"bottom\"\nvalue = [0.0, 0.0]\n").empty());
 }
 
 TEST(NearestKey, SuggestsTyposOnly) {
