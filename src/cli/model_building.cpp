@@ -83,9 +83,20 @@ coupling::PermeabilityModel make_permeability_model(const Scenario& s) {
   return model;
 }
 
+mesh::TriangleMesh read_mesh_file(const Scenario& s) {
+  const scenario::MeshDefinition& m = *s.mesh;
+  try {
+    return mesh::read_msh(m.file->string());
+  } catch (const std::exception& e) {
+    // A file that is not a usable triangle mesh is bad input, like a wrong key.
+    throw scenario::ScenarioError({{s.file.string(), m.file_line, "mesh.file",
+                                    fmt::format("not a usable triangle mesh: {}", e.what())}});
+  }
+}
+
 mesh::TriangleMesh build_mesh(const Scenario& s) {
   const scenario::MeshDefinition& m = *s.mesh;
-  if (m.file) return mesh::read_msh(m.file->string());
+  if (m.file) return read_mesh_file(s);
   mesh::MeshRequest request;
   request.domain = s.geometry->domain;
   for (const scenario::BoundarySegment& b : s.boundaries)

@@ -26,6 +26,10 @@ dda::ModelDefinition build_mechanics_model(const scenario::Scenario& scenario,
 // The permeability law of [flow] with the (only) material's porosity and grain size.
 coupling::PermeabilityModel make_permeability_model(const scenario::Scenario& scenario);
 
+// The user's mesh.file, read; a file Gmsh cannot read, or one without triangles, is a
+// ScenarioError naming the mesh.file line.
+mesh::TriangleMesh read_mesh_file(const scenario::Scenario& scenario);
+
 // The fixed fluid mesh: generated with Gmsh (refined along the fractures, honouring the flow
 // regions) or read from mesh.file.
 mesh::TriangleMesh build_mesh(const scenario::Scenario& scenario);

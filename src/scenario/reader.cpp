@@ -380,6 +380,7 @@ void read_mesh(ReadContext& ctx, const TableView& root, Scenario& s) {
     if (!std::filesystem::exists(path))
       ctx.error(m.line_of_key("file"), "mesh.file", fmt::format("no such file: {}", path.string()));
     mesh.file = path;
+    mesh.file_line = m.line_of_key("file");
   }
   s.mesh = std::move(mesh);
 }

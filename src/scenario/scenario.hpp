@@ -146,6 +146,7 @@ struct MeshDefinition {
   double fracture_size = 0.0;     // m
   double refine_distance = 0.0;   // m
   std::optional<std::filesystem::path> file;  // resolved against the scenario's folder
+  int file_line = 0;                          // line of mesh.file, for messages about it
 };
 
 struct CouplingDefinition {
