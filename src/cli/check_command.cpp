@@ -14,17 +14,17 @@ namespace hydrodda::cli {
 int check_command(const std::filesystem::path& file) {
   const auto scenario = load_scenario(file);
   if (!scenario) return kBadInput;
-  // What only reading it shows: the user's mesh file is a triangle mesh Gmsh can read.
-  if (scenario->mesh && scenario->mesh->file) {
-    try {
+  // What only building the model shows (a fixed point in no block, a boundary the mesh file
+  // does not name), short of meshing and running.
+  try {
+    if (scenario->mechanics) build_mechanics_model(*scenario, build_blocks(*scenario));
+    if (scenario->mesh && scenario->mesh->file) {
       const mesh::TriangleMesh mesh = read_mesh_file(*scenario);
       spdlog::debug("mesh.file: {} nodes, {} triangles", mesh.node_count(), mesh.triangle_count());
-    } catch (const scenario::ScenarioError& e) {
-      for (const scenario::Diagnostic& d : e.diagnostics())
-        std::fputs(fmt::format("error: {}\n", d.format()).c_str(), stderr);
-      std::fputs(fmt::format("{}: {} error(s)\n", file.string(), e.diagnostics().size()).c_str(), stderr);
-      return kBadInput;
     }
+  } catch (const scenario::ScenarioError& e) {
+    print_scenario_errors(file, e);
+    return kBadInput;
   }
   std::fputs(fmt::format("{}: OK ({})\n", file.string(), describe(*scenario)).c_str(), stdout);
   return kSuccess;

@@ -1,8 +1,11 @@
 #include "cli/model_building.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <spdlog/spdlog.h>
+
+#include <algorithm>
 
 #include "dda/selection.hpp"
 #include "mesh/mesh_request.hpp"
@@ -85,13 +88,32 @@ coupling::PermeabilityModel make_permeability_model(const Scenario& s) {
 
 mesh::TriangleMesh read_mesh_file(const Scenario& s) {
   const scenario::MeshDefinition& m = *s.mesh;
+  const std::string file = s.file.string();
+  mesh::TriangleMesh mesh;
   try {
-    return mesh::read_msh(m.file->string());
+    mesh = mesh::read_msh(m.file->string());
   } catch (const std::exception& e) {
     // A file that is not a usable triangle mesh is bad input, like a wrong key.
-    throw scenario::ScenarioError({{s.file.string(), m.file_line, "mesh.file",
-                                    fmt::format("not a usable triangle mesh: {}", e.what())}});
+    throw scenario::ScenarioError({{file, m.file_line, "mesh.file", fmt::format("not a usable triangle mesh: {}", e.what())}});
   }
+  // The flow boundaries are the file's named physical curves (with edges).
+  std::vector<Diagnostic> errors;
+  if (s.flow) {
+    for (const scenario::FlowBoundaryCondition& bc : s.flow->boundaries) {
+      const int b = mesh::find_boundary(mesh, bc.name);
+      const bool has_edges = b >= 0 && std::any_of(mesh.boundary_edges.begin(), mesh.boundary_edges.end(),
+                                                   [&](const mesh::BoundaryEdge& e) { return e.boundary == b; });
+      if (has_edges) continue;
+      std::string message = fmt::format("{} has no boundary curve named \"{}\"", m.file->filename().string(), bc.name);
+      const std::string nearest = scenario::suggest_nearest(bc.name, mesh.boundary_names);
+      if (!nearest.empty()) message += fmt::format(" (did you mean \"{}\"?)", nearest);
+      else if (!mesh.boundary_names.empty()) message += fmt::format("; it names: {}", fmt::join(mesh.boundary_names, ", "));
+      else message += "; it names no physical curves";
+      errors.push_back({file, bc.line, "flow.boundary.name", message});
+    }
+  }
+  if (!errors.empty()) throw scenario::ScenarioError(std::move(errors));
+  return mesh;
 }
 
 mesh::TriangleMesh build_mesh(const Scenario& s) {

@@ -26,8 +26,8 @@ dda::ModelDefinition build_mechanics_model(const scenario::Scenario& scenario,
 // The permeability law of [flow] with the (only) material's porosity and grain size.
 coupling::PermeabilityModel make_permeability_model(const scenario::Scenario& scenario);
 
-// The user's mesh.file, read; a file Gmsh cannot read, or one without triangles, is a
-// ScenarioError naming the mesh.file line.
+// The user's mesh.file, read; a file Gmsh cannot read or without triangles is a ScenarioError
+// naming the mesh.file line, and a flow boundary the file does not name, one naming its line.
 mesh::TriangleMesh read_mesh_file(const scenario::Scenario& scenario);
 
 // The fixed fluid mesh: generated with Gmsh (refined along the fractures, honouring the flow

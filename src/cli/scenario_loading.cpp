@@ -22,15 +22,18 @@ std::optional<scenario::Scenario> load_with(const std::filesystem::path& file, R
       spdlog::info("{} default value(s) used (-v lists them)", s.defaults_used.size());
     return s;
   } catch (const scenario::ScenarioError& e) {
-    for (const scenario::Diagnostic& d : e.diagnostics())
-      std::fputs(fmt::format("error: {}\n", d.format()).c_str(), stderr);
-    std::fputs(fmt::format("{}: {} error(s)\n", file.string(), e.diagnostics().size()).c_str(),
-               stderr);
+    print_scenario_errors(file, e);
     return std::nullopt;
   }
 }
 
 }  // namespace
+
+void print_scenario_errors(const std::filesystem::path& file, const scenario::ScenarioError& error) {
+  for (const scenario::Diagnostic& d : error.diagnostics())
+    std::fputs(fmt::format("error: {}\n", d.format()).c_str(), stderr);
+  std::fputs(fmt::format("{}: {} error(s)\n", file.string(), error.diagnostics().size()).c_str(), stderr);
+}
 
 std::optional<scenario::Scenario> load_scenario(const std::filesystem::path& file) {
   return load_with(file, [&] { return scenario::read_scenario(file); });
