@@ -9,48 +9,18 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "run_folder_compare.hpp"
 #include "run_program.hpp"
 
 namespace fs = std::filesystem;
+using hydrodda::testing::expect_same_results;
+using hydrodda::testing::read_file;
+using hydrodda::testing::read_summary_without_timings;
 using hydrodda::testing::run_program;
 
 namespace {
 
 const fs::path kSixBlock = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/paper/six_block_lr_rl.toml";
-
-std::string read_file(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// summary.json without `timings` (wall-clock seconds, different in every run).
-nlohmann::json read_summary_without_timings(const fs::path& folder) {
-  nlohmann::json summary = nlohmann::json::parse(read_file(folder / "summary.json"));
-  summary.erase("timings");
-  return summary;
-}
-
-// Every file of the two folders (figures/ apart) is the same, byte for byte; summary.json
-// apart from its timings, parsed so that the comparison names the field.
-void expect_same_results(const fs::path& a, const fs::path& b) {
-  std::vector<std::string> names;
-  for (const auto& entry : fs::directory_iterator(a))
-    if (entry.is_regular_file()) names.push_back(entry.path().filename().string());
-  for (const auto& entry : fs::directory_iterator(b)) {
-    if (entry.is_regular_file()) {
-      EXPECT_TRUE(fs::exists(a / entry.path().filename())) << entry.path();
-    }
-  }
-  ASSERT_GT(names.size(), 5u);
-  for (const std::string& name : names) {
-    if (name == "summary.json" || name == "checkpoint.bin") continue;  // both hold timings
-    ASSERT_TRUE(fs::exists(b / name)) << name;
-    EXPECT_TRUE(read_file(a / name) == read_file(b / name)) << name << " differs";
-  }
-  EXPECT_EQ(read_summary_without_timings(a), read_summary_without_timings(b));
-}
 
 // One pair of folders per test (ctest runs tests in parallel).
 struct Folders {
