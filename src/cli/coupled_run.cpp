@@ -131,11 +131,17 @@ output::RunSummary run_coupled(const RunContext& context) {
       spdlog::debug("iteration {}: head change {:.3e}, displacement change {:.3e}", r.iteration, r.head_change,
                     r.displacement_change);
       converged = r.converged;
-      if (r.iteration % s.output.every == 0 || converged) {
+      if (r.iteration % s.output.every == 0 || converged || r.diverging) {
         write_fields(r.iteration);
         last_written = r.iteration;
       }
       save_checkpoint();
+      if (r.diverging) {
+        throw RunFailure(fmt::format("the coupling loop diverges: its change grew {} passes in a row, to a head "
+                                     "change of {:.3e} and a displacement change of {:.3e} at coupling iteration {}",
+                                     r.growing_passes, r.head_change, r.displacement_change, r.iteration),
+                         current_summary());
+      }
     }
     // The last state's fields, unless the run is to be continued (it writes them at its end).
     if (!stopped && loop.iterations() > 0 && last_written != loop.iterations()) {

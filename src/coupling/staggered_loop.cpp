@@ -22,6 +22,16 @@ void check_finite(const std::vector<double>& values, const char* what, int itera
 }
 }  // namespace
 
+void ChangeGrowth::add(double change, int iteration) {
+  if (iteration > 2 && change > last) {
+    if (passes == 0) base = last;
+    ++passes;
+  } else {
+    passes = 0;
+  }
+  last = change;
+}
+
 double relative_change(const std::vector<double>& current, const std::vector<double>& previous) {
   double diff = 0.0, norm = 0.0;
   for (std::size_t i = 0; i < current.size(); ++i) {
@@ -100,7 +110,15 @@ PassReport StaggeredLoop::run_pass() {
 
   // Mechanics under the mechanical and fluid loads.
   start = Clock::now();
-  for (int s = 0; s < settings_.steps_per_pass; ++s) mechanics_.step();
+  for (int s = 0; s < settings_.steps_per_pass; ++s) {
+    try {
+      mechanics_.step();
+    } catch (const std::exception& e) {
+      throw std::runtime_error("DDA step " + std::to_string(s + 1) + " of " +
+                               std::to_string(settings_.steps_per_pass) + " (t = " + std::to_string(mechanics_.time()) +
+                               " s): " + e.what());
+    }
+  }
   report.mechanics_seconds = seconds_since(start);
   report.time = mechanics_.time();
 
@@ -108,6 +126,10 @@ PassReport StaggeredLoop::run_pass() {
   const std::vector<Point> u = block_displacements();
   std::vector<double> u_flat, u_previous;
   for (Point p : u) u_flat.insert(u_flat.end(), {p.x, p.y});
+  for (std::size_t i = 0; i < u_flat.size(); ++i)
+    if (!std::isfinite(u_flat[i]))
+      throw std::runtime_error("the displacement of block " + std::to_string(i / 2) +
+                               " is not finite in coupling iteration " + std::to_string(iteration_));
   for (Point p : previous_displacements_) u_previous.insert(u_previous.end(), {p.x, p.y});
   report.head_change = previous_heads_.empty() ? 1.0 : relative_change(solution_.head, previous_heads_);
   report.displacement_change = previous_displacements_.empty() ? 1.0 : relative_change(u_flat, u_previous);
@@ -115,6 +137,10 @@ PassReport StaggeredLoop::run_pass() {
                      report.displacement_change < settings_.tolerance;
   previous_heads_ = solution_.head;
   previous_displacements_ = u;
+  const double change = std::max(report.head_change, report.displacement_change);
+  growth_.add(change, iteration_);
+  report.growing_passes = growth_.passes;
+  report.diverging = growth_.diverging(settings_.diverging_passes, settings_.diverging_growth);
 
   double porosity_sum = 0.0;
   for (double phi : porosity_.porosity) porosity_sum += phi;

@@ -26,6 +26,12 @@ struct LoopSettings {
   double tolerance = 1.0e-4;
   double relaxation = 1.0;        // heads: h ← ω h_new + (1 − ω) h_old
   int steps_per_pass = 100;       // DDA steps run in each pass
+  // A loop whose change (the larger of the two norms) grew this many passes in a row, and by
+  // diverging_growth over them, is reported as diverging (0 passes: never). A converging
+  // iteration may grow for a few passes (the six-block up-down case grows 2x over 3) but not
+  // tenfold over five.
+  int diverging_passes = 5;
+  double diverging_growth = 10.0;
   PermeabilityModel permeability;
   // Per element: a permeability fixed by the scenario (flow regions), or none.
   std::vector<std::optional<double>> fixed_permeability;
@@ -41,8 +47,24 @@ struct PassReport {
   double mean_porosity = 0.0;
   double max_permeability = 0.0;
   bool converged = false;
+  // The change has grown LoopSettings::diverging_passes passes in a row.
+  bool diverging = false;
+  int growing_passes = 0;         // passes in a row whose change grew
   // Seconds per phase in this pass.
   double porosity_seconds = 0.0, flow_seconds = 0.0, forces_seconds = 0.0, mechanics_seconds = 0.0;
+};
+
+// How the pass-to-pass change has grown lately: passes in a row whose change (the larger norm)
+// grew, the change before they started and the last one. Passes 1 and 2 never count: the
+// first change is 1 by definition and the second has nothing comparable before it.
+struct ChangeGrowth {
+  int passes = 0;
+  double base = 0.0;
+  double last = 0.0;
+  void add(double change, int iteration);
+  bool diverging(int passes_needed, double factor) const {
+    return passes_needed > 0 && passes >= passes_needed && last >= factor * base;
+  }
 };
 
 // The loop's state between passes as plain data, for checkpoints: with the DDA system's state
@@ -52,6 +74,7 @@ struct LoopState {
   hydro::FlowSolution flow;             // the last pass's (relaxed) solution; empty before any
   std::vector<double> previous_heads;   // for the head norm (and relaxation)
   std::vector<Point> previous_displacements;  // for the displacement norm
+  ChangeGrowth growth;                  // for the divergence rule
 };
 
 class StaggeredLoop {
@@ -96,6 +119,7 @@ class StaggeredLoop {
   hydro::FlowSolution solution_;
   std::vector<double> previous_heads_;
   std::vector<Point> previous_displacements_;
+  ChangeGrowth growth_;
 };
 
 // ‖a − b‖₂ / ‖a‖₂, 0 when both are zero, 1 when only `a` is.

@@ -6,7 +6,7 @@
 namespace hydrodda::coupling {
 
 LoopState StaggeredLoop::export_state() const {
-  return {completed_, solution_, previous_heads_, previous_displacements_};
+  return {completed_, solution_, previous_heads_, previous_displacements_, growth_};
 }
 
 void StaggeredLoop::import_state(LoopState state) {
@@ -26,6 +26,7 @@ void StaggeredLoop::import_state(LoopState state) {
   solution_ = std::move(state.flow);
   previous_heads_ = std::move(state.previous_heads);
   previous_displacements_ = std::move(state.previous_displacements);
+  growth_ = state.growth;
 }
 
 }  // namespace hydrodda::coupling

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -15,6 +16,12 @@ void add_segment(Eigen::VectorXd& f, int dof, const Vector6& v) {
 }
 
 bool is_closed(ContactState s) { return s != ContactState::open; }
+
+std::string format_number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", v);
+  return text;
+}
 
 }  // namespace
 
@@ -496,12 +503,17 @@ StepReport System::step() {
     Eigen::VectorXd d;
     const bool settled = solve_step(dt_, d, report);
     double largest = 0.0;
+    int largest_block = -1;
     if (settled) {
-      for (const Block& b : blocks_) {
+      for (std::size_t bi = 0; bi < blocks_.size(); ++bi) {
+        const Block& b = blocks_[bi];
         if (b.dof < 0) continue;
         const Vector6 db = d.segment<6>(6 * b.dof);
-        for (Point p : b.polygon)
-          largest = std::max(largest, geometry::distance(p, displace_point(p, b.moments.centroid, db)));
+        for (Point p : b.polygon) {
+          const double moved = geometry::distance(p, displace_point(p, b.moments.centroid, db));
+          if (moved > largest || !std::isfinite(moved)) largest_block = static_cast<int>(bi);
+          largest = std::max(largest, moved);
+        }
       }
     }
     if (settled && largest <= allowed_displacement_) {
@@ -510,7 +522,13 @@ StepReport System::step() {
       break;
     }
     ++report.retries;
-    if (report.retries > 40) throw std::runtime_error("DDA: the time step fell below any use");
+    if (report.retries > 40)
+      throw std::runtime_error(
+          "DDA: the time step fell below any use (cut 40 times, to " + format_number(dt_) + " s, at t = " +
+          format_number(time_) + " s): " +
+          (settled ? "block " + std::to_string(largest_block) + " still moved " + format_number(largest) +
+                         " m in a step, more than the allowed " + format_number(allowed_displacement_) + " m"
+                   : "the open-close iteration did not settle the contact states"));
     dt_ *= settled ? std::max(0.1, 0.9 * allowed_displacement_ / largest) : 0.3;
   }
   report.time = time_;

@@ -248,6 +248,9 @@ std::string encode_checkpoint(const RunCheckpoint& c) {
   }
   w.put(c.coupling.previous_heads);
   w.put(c.coupling.previous_displacements);
+  w.put(c.coupling.growth.passes);
+  w.put(c.coupling.growth.base);
+  w.put(c.coupling.growth.last);
   return w.take();
 }
 
@@ -292,6 +295,9 @@ RunCheckpoint decode_checkpoint(std::string_view bytes) {
   }
   r.get(c.coupling.previous_heads);
   r.get(c.coupling.previous_displacements);
+  r.get(c.coupling.growth.passes);
+  r.get(c.coupling.growth.base);
+  r.get(c.coupling.growth.last);
   r.expect_end();
   return c;
 }

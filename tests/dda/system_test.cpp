@@ -144,4 +144,22 @@ TEST(System, RunToEquilibriumReachesTheElasticSolution) {
 }
 
 }  // namespace
+// A step that cannot settle is cut and retried; when the cuts are used up the error says so,
+// with the time step reached, the time, and what failed (here: open–close never settles, as
+// it is allowed no iteration at all).
+TEST(System, AStepThatNeverSettlesSaysWhatFailedAndWhen) {
+  ModelDefinition m = testing::make_incline(30.0, 10.0, 0.0);
+  m.settings.max_open_close_iterations = 0;
+  System system(std::move(m));
+  try {
+    system.step();
+    FAIL() << "the step should have failed";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("time step fell below any use"), std::string::npos) << what;
+    EXPECT_NE(what.find("at t = 0 s"), std::string::npos) << what;
+    EXPECT_NE(what.find("open-close iteration did not settle"), std::string::npos) << what;
+  }
+}
+
 }  // namespace hydrodda::dda
