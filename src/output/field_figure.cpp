@@ -1,9 +1,9 @@
 #include "output/field_figure.hpp"
 
-#include <cairo-pdf.h>
-#include <cairo-svg.h>
-#include <cairo.h>
 #include <fmt/format.h>
+
+#include "output/figure_canvas.hpp"
+#include "output/plot_axes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,42 +12,6 @@
 namespace hydrodda::output {
 
 using geometry::Point;
-
-std::array<double, 3> viridis(double t) {
-  // Viridis (van der Walt & Smith, matplotlib), sampled at 9 equally spaced stops; linear
-  // interpolation between them is within 1/255 of the full table.
-  static constexpr std::array<std::array<double, 3>, 9> stops{{{0.267004, 0.004874, 0.329415},
-                                                                {0.282623, 0.140926, 0.457517},
-                                                                {0.253935, 0.265254, 0.529983},
-                                                                {0.206756, 0.371758, 0.553117},
-                                                                {0.163625, 0.471133, 0.558148},
-                                                                {0.127568, 0.566949, 0.550556},
-                                                                {0.134692, 0.658636, 0.517649},
-                                                                {0.266941, 0.748751, 0.440573},
-                                                                {0.993248, 0.906157, 0.143936}}};
-  t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0);
-  const double x = t * (stops.size() - 1);
-  const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(x), stops.size() - 2);
-  const double f = x - i;
-  return {stops[i][0] + f * (stops[i + 1][0] - stops[i][0]), stops[i][1] + f * (stops[i + 1][1] - stops[i][1]),
-          stops[i][2] + f * (stops[i + 1][2] - stops[i][2])};
-}
-
-std::vector<double> nice_ticks(double lo, double hi, int count) {
-  if (!(hi > lo)) return {lo};
-  const double raw = (hi - lo) / std::max(1, count);
-  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
-  double step = magnitude;
-  for (double m : {1.0, 2.0, 5.0, 10.0})
-    if (m * magnitude >= raw) {
-      step = m * magnitude;
-      break;
-    }
-  std::vector<double> ticks;
-  for (double v = std::ceil(lo / step - 1e-9) * step; v <= hi + 1e-9 * step; v += step)
-    ticks.push_back(std::abs(v) < 1e-12 * step ? 0.0 : v);
-  return ticks;
-}
 
 std::vector<Point> contour_segment(const std::array<Point, 3>& p, const std::array<double, 3>& v, double level) {
   std::vector<Point> out;
@@ -73,16 +37,7 @@ struct Frame {  // world (m) → page (points)
 
 std::string tick_label(double v) { return fmt::format("{:g}", v); }
 
-void draw_text(cairo_t* cr, const std::string& text, double x, double y, double align_x, double align_y) {
-  cairo_text_extents_t e;
-  cairo_text_extents(cr, text.c_str(), &e);
-  cairo_move_to(cr, x - align_x * e.width - e.x_bearing, y - align_y * e.height - e.y_bearing);
-  cairo_show_text(cr, text.c_str());
-}
-
 void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f) {
-  cairo_set_source_rgb(cr, 1, 1, 1);
-  cairo_paint(cr);
   geometry::Box box;
   for (Point p : f.nodes) box.add(p);
   for (const auto& b : f.blocks)
@@ -205,11 +160,7 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
     draw_text(cr, tick_label(y), fr.px(box.lo.x) - 8, fr.py(y), 1.0, 0.5);
   }
   draw_text(cr, "x (m)", fr.px(0.5 * (box.lo.x + box.hi.x)), fr.py(box.lo.y) + 28, 0.5, 0.0);
-  cairo_save(cr);
-  cairo_translate(cr, fr.px(box.lo.x) - 48, fr.py(0.5 * (box.lo.y + box.hi.y)));
-  cairo_rotate(cr, -M_PI / 2);
-  draw_text(cr, "y (m)", 0, 0, 0.5, 0.5);
-  cairo_restore(cr);
+  draw_text(cr, "y (m)", fr.px(box.lo.x) - 48, fr.py(0.5 * (box.lo.y + box.hi.y)), 0.5, 0.5, -M_PI / 2);
   cairo_set_font_size(cr, 14);
   draw_text(cr, f.title, 0.5 * width, 18, 0.5, 0.0);
 
@@ -232,42 +183,15 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
     cairo_stroke(cr);
     draw_text(cr, f.logarithmic ? fmt::format("1e{:g}", v) : tick_label(v), bar_x + 23, y, 0.0, 0.5);
   }
-  cairo_save(cr);
-  cairo_translate(cr, bar_x + 85, bar_top + 0.5 * bar_height);
-  cairo_rotate(cr, -M_PI / 2);
   cairo_set_font_size(cr, 11);
-  draw_text(cr, f.field_label, 0, 0, 0.5, 0.5);
-  cairo_restore(cr);
+  draw_text(cr, f.field_label, bar_x + 85, bar_top + 0.5 * bar_height, 0.5, 0.5, -M_PI / 2);
 }
 
 }  // namespace
 
 void render_field_figure(const std::filesystem::path& path, const FieldFigure& figure) {
   const double width = 760, height = 640;
-  const std::string ext = path.extension().string();
-  // Drawn under a temporary name and renamed, like every file of the run folder.
-  std::filesystem::path temporary = path;
-  temporary += ".tmp";
-  cairo_surface_t* surface = nullptr;
-  if (ext == ".png") surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, static_cast<int>(width * 2), static_cast<int>(height * 2));
-  else if (ext == ".svg") surface = cairo_svg_surface_create(temporary.c_str(), width, height);
-  else if (ext == ".pdf") surface = cairo_pdf_surface_create(temporary.c_str(), width, height);
-  else throw std::runtime_error(fmt::format("cannot draw {}: use .png, .svg or .pdf", path.string()));
-  cairo_t* cr = cairo_create(surface);
-  if (ext == ".png") cairo_scale(cr, 2.0, 2.0);  // 2× resolution for print
-  draw_figure(cr, width, height, figure);
-  cairo_destroy(cr);
-  cairo_status_t status = cairo_surface_status(surface);
-  if (status == CAIRO_STATUS_SUCCESS && ext == ".png") status = cairo_surface_write_to_png(surface, temporary.c_str());
-  cairo_surface_finish(surface);
-  if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface);
-  cairo_surface_destroy(surface);
-  if (status != CAIRO_STATUS_SUCCESS) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw std::runtime_error(fmt::format("cannot write {}: {}", path.string(), cairo_status_to_string(status)));
-  }
-  std::filesystem::rename(temporary, path);
+  draw_to_file(path, width, height, [&](cairo_t* cr) { draw_figure(cr, width, height, figure); });
 }
 
 }  // namespace hydrodda::output

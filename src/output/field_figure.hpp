@@ -35,10 +35,4 @@ void render_field_figure(const std::filesystem::path& path, const FieldFigure& f
 std::vector<geometry::Point> contour_segment(const std::array<geometry::Point, 3>& corners,
                                              const std::array<double, 3>& values, double level);
 
-// "Nice" tick values covering [lo, hi] with about `count` ticks (1, 2, 5 × 10^k steps).
-std::vector<double> nice_ticks(double lo, double hi, int count);
-
-// Viridis colour map, t in [0, 1] → RGB in [0, 1].
-std::array<double, 3> viridis(double t);
-
 }  // namespace hydrodda::output

@@ -25,20 +25,6 @@ TEST(ContourSegment, LinearFieldContourLiesOnItsLevelLine) {
   EXPECT_TRUE(contour_segment(p, v, 100.0).empty());
 }
 
-TEST(NiceTicks, StepsOfOneTwoFive) {
-  EXPECT_EQ(nice_ticks(0.0, 5.0, 6), (std::vector<double>{0, 1, 2, 3, 4, 5}));
-  EXPECT_EQ(nice_ticks(0.0, 20.0, 5), (std::vector<double>{0, 5, 10, 15, 20}));
-  const auto t = nice_ticks(-0.03, 0.07, 5);
-  ASSERT_FALSE(t.empty());
-  EXPECT_NEAR(t[1] - t[0], 0.02, 1e-15);
-}
-
-TEST(Viridis, EndsOfTheMap) {
-  EXPECT_NEAR(viridis(0.0)[0], 0.267004, 1e-12);
-  EXPECT_NEAR(viridis(1.0)[1], 0.906157, 1e-12);
-  EXPECT_EQ(viridis(-1.0), viridis(0.0));
-}
-
 TEST(FieldFigure, WritesPngSvgAndPdf) {
   const std::vector<Point> nodes{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   const std::vector<std::array<int, 3>> triangles{{0, 1, 2}, {0, 2, 3}};

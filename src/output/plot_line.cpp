@@ -1,0 +1,296 @@
+#include "output/plot_line.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+#include "output/figure_canvas.hpp"
+#include "output/plot_axes.hpp"
+
+namespace hydrodda::output {
+namespace {
+
+// Okabe–Ito colours, told apart by colour-blind readers; each series also gets its own marker
+// so the plot survives printing in grey.
+constexpr double kPalette[][3] = {{0.000, 0.447, 0.698}, {0.835, 0.369, 0.000}, {0.000, 0.620, 0.451},
+                                  {0.800, 0.475, 0.655}, {0.902, 0.624, 0.000}, {0.337, 0.706, 0.914},
+                                  {0.0, 0.0, 0.0}};
+constexpr int kMarkers = 4;  // circle, square, triangle, diamond
+
+bool is_plottable(double v, bool log_axis) { return std::isfinite(v) && (!log_axis || v > 0.0); }
+
+// One axis: data value → page coordinate, linear or log10.
+struct Axis {
+  double lo, hi, page_lo, page_hi;
+  bool log;
+  double to_page(double v) const {
+    const double t = log ? std::log10(v / lo) / std::log10(hi / lo) : (v - lo) / (hi - lo);
+    return page_lo + t * (page_hi - page_lo);
+  }
+};
+
+// The data range with a margin of 4% of its span (linear) or of its decades (log) on each
+// side, so markers at the ends are not cut by the frame.
+Axis make_axis(double lo, double hi, bool log_axis, double page_lo, double page_hi) {
+  if (log_axis) {
+    double a = std::log10(lo), b = std::log10(hi);
+    if (b - a < 1e-9) {
+      a -= 0.5;
+      b += 0.5;
+    }
+    const double pad = 0.04 * (b - a);
+    return {std::pow(10.0, a - pad), std::pow(10.0, b + pad), page_lo, page_hi, true};
+  }
+  if (hi - lo <= 1e-12 * std::max(std::abs(lo), std::abs(hi))) {
+    const double pad = lo == 0.0 ? 1.0 : 0.1 * std::abs(lo);
+    lo -= pad;
+    hi += pad;
+  }
+  const double pad = 0.04 * (hi - lo);
+  return {lo - pad, hi + pad, page_lo, page_hi, false};
+}
+
+void draw_marker(cairo_t* cr, int kind, double x, double y) {
+  const double r = 2.6;
+  cairo_new_sub_path(cr);
+  switch (kind % kMarkers) {
+    case 0: cairo_arc(cr, x, y, r, 0.0, 2.0 * std::numbers::pi); break;
+    case 1: cairo_rectangle(cr, x - 0.9 * r, y - 0.9 * r, 1.8 * r, 1.8 * r); break;
+    case 2:
+      cairo_move_to(cr, x, y - 1.2 * r);
+      cairo_line_to(cr, x + 1.1 * r, y + 0.8 * r);
+      cairo_line_to(cr, x - 1.1 * r, y + 0.8 * r);
+      cairo_close_path(cr);
+      break;
+    default:
+      cairo_move_to(cr, x, y - 1.3 * r);
+      cairo_line_to(cr, x + 1.1 * r, y);
+      cairo_line_to(cr, x, y + 1.3 * r);
+      cairo_line_to(cr, x - 1.1 * r, y);
+      cairo_close_path(cr);
+  }
+  cairo_fill(cr);
+}
+
+// A decade label 10^e with a raised exponent; returns its width.
+double draw_power_of_ten(cairo_t* cr, int e, double x, double y, double align_x, bool measure_only = false) {
+  const std::string base = "10", exponent = fmt::format("{}", e);
+  cairo_font_extents_t font;
+  cairo_font_extents(cr, &font);
+  const double size = font.ascent + font.descent;
+  const double base_w = text_width(cr, base);
+  cairo_matrix_t m;
+  cairo_get_font_matrix(cr, &m);
+  cairo_set_font_size(cr, 0.7 * m.xx);
+  const double exp_w = text_width(cr, exponent);
+  const double width = base_w + exp_w + 0.5;
+  if (!measure_only) {
+    const double left = x - align_x * width;
+    draw_text(cr, exponent, left + base_w + 0.5, y - 0.45 * size, 0.0, 0.5);
+    cairo_set_font_matrix(cr, &m);
+    draw_text(cr, base, left, y, 0.0, 0.5);
+  }
+  cairo_set_font_matrix(cr, &m);
+  return width;
+}
+
+// Ticks of one axis with their labels and light grid lines; returns the widest label.
+double draw_ticks(cairo_t* cr, const Axis& a, bool horizontal, double frame_lo, double frame_hi) {
+  std::vector<double> major = a.log ? log_ticks(a.lo, a.hi) : nice_ticks(a.lo, a.hi, 6);
+  std::vector<double> minor;
+  if (a.log && major.size() >= 2 && major[1] / major[0] < 11.0)
+    for (double d = major[0] / 10.0; d < a.hi; d *= 10.0)
+      for (int m = 2; m <= 9; ++m)
+        if (m * d > a.lo && m * d < a.hi) minor.push_back(m * d);
+  const double step = major.size() >= 2 ? major[1] - major[0] : 1.0;
+  const auto line = [&](double v, double length) {
+    const double p = a.to_page(v);
+    if (horizontal) {
+      cairo_move_to(cr, p, frame_lo);
+      cairo_line_to(cr, p, frame_lo - length);
+    } else {
+      cairo_move_to(cr, frame_lo, p);
+      cairo_line_to(cr, frame_lo + length, p);
+    }
+  };
+  // Grid first, under everything else.
+  cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
+  cairo_set_line_width(cr, 0.5);
+  for (double v : major) line(v, std::abs(frame_hi - frame_lo));
+  cairo_stroke(cr);
+  cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+  cairo_set_line_width(cr, 0.7);
+  for (double v : major) line(v, 4.0);
+  for (double v : minor) line(v, 2.0);
+  cairo_stroke(cr);
+  double widest = 0.0;
+  for (double v : major) {
+    const double p = a.to_page(v);
+    const double gap = 6.0;
+    const int e = static_cast<int>(std::lround(std::log10(v)));
+    if (a.log && std::abs(v - std::pow(10.0, e)) < 1e-9 * v) {
+      if (horizontal)
+        draw_power_of_ten(cr, e, p, frame_lo + gap + 5.0, 0.5);
+      else
+        widest = std::max(widest, draw_power_of_ten(cr, e, frame_lo - gap, p, 1.0));
+    } else {
+      const std::string label = a.log ? fmt::format("{:g}", v) : format_tick(v, step);
+      if (horizontal)
+        draw_text(cr, label, p, frame_lo + gap, 0.5, 0.0);
+      else
+        draw_text(cr, label, frame_lo - gap, p, 1.0, 0.5);
+      widest = std::max(widest, text_width(cr, label));
+    }
+  }
+  return widest;
+}
+
+// The legend, in the corner of the frame that hides the fewest data points.
+void draw_legend(cairo_t* cr, const LinePlotSpec& spec, const Axis& x, const Axis& y) {
+  double text_w = 0.0;
+  int rows = 0;
+  for (const LineSeries& s : spec.series)
+    if (!s.name.empty()) {
+      text_w = std::max(text_w, text_width(cr, s.name));
+      ++rows;
+    }
+  if (rows == 0) return;
+  const double row = 13.0, w = text_w + 36.0, h = row * rows + 6.0, inset = 8.0;
+  const double left = x.page_lo, right = x.page_hi, top = y.page_hi, bottom = y.page_lo;
+  const std::array<std::array<double, 2>, 4> corners{{{right - w - inset, top + inset},
+                                                       {left + inset, top + inset},
+                                                       {right - w - inset, bottom - h - inset},
+                                                       {left + inset, bottom - h - inset}}};
+  std::size_t best = 0, best_hidden = std::numeric_limits<std::size_t>::max();
+  for (std::size_t c = 0; c < corners.size(); ++c) {
+    std::size_t hidden = 0;
+    for (const LineSeries& s : spec.series)
+      for (std::size_t i = 0; i < s.x.size(); ++i) {
+        if (!is_plottable(s.x[i], x.log) || !is_plottable(s.y[i], y.log)) continue;
+        const double px = x.to_page(s.x[i]), py = y.to_page(s.y[i]);
+        hidden += px > corners[c][0] - 4 && px < corners[c][0] + w + 4 && py > corners[c][1] - 4 &&
+                  py < corners[c][1] + h + 4;
+      }
+    if (hidden < best_hidden) {
+      best = c;
+      best_hidden = hidden;
+    }
+  }
+  const double bx = corners[best][0], by = corners[best][1];
+  cairo_rectangle(cr, bx, by, w, h);
+  cairo_set_source_rgba(cr, 1, 1, 1, 0.92);
+  cairo_fill_preserve(cr);
+  cairo_set_source_rgb(cr, 0.7, 0.7, 0.7);
+  cairo_set_line_width(cr, 0.5);
+  cairo_stroke(cr);
+  int r = 0;
+  for (std::size_t k = 0; k < spec.series.size(); ++k) {
+    if (spec.series[k].name.empty()) continue;
+    const double y = by + 3.0 + row * (r++ + 0.5);
+    const double* c = kPalette[k % std::size(kPalette)];
+    cairo_set_source_rgb(cr, c[0], c[1], c[2]);
+    cairo_set_line_width(cr, 1.4);
+    cairo_move_to(cr, bx + 6.0, y);
+    cairo_line_to(cr, bx + 26.0, y);
+    cairo_stroke(cr);
+    draw_marker(cr, static_cast<int>(k), bx + 16.0, y);
+    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+    draw_text(cr, spec.series[k].name, bx + 31.0, y, 0.0, 0.5);
+  }
+}
+
+}  // namespace
+
+void render_line_plot(const std::filesystem::path& path, const LinePlotSpec& spec) {
+  double xlo = std::numeric_limits<double>::infinity(), xhi = -xlo, ylo = xlo, yhi = -xlo;
+  for (const LineSeries& s : spec.series) {
+    if (s.x.size() != s.y.size())
+      throw std::invalid_argument(fmt::format("line plot {}: series '{}' has {} x and {} y values", path.string(),
+                                              s.name, s.x.size(), s.y.size()));
+    for (std::size_t i = 0; i < s.x.size(); ++i) {
+      if (!is_plottable(s.x[i], spec.x_log) || !is_plottable(s.y[i], spec.y_log)) continue;
+      xlo = std::min(xlo, s.x[i]);
+      xhi = std::max(xhi, s.x[i]);
+      ylo = std::min(ylo, s.y[i]);
+      yhi = std::max(yhi, s.y[i]);
+    }
+  }
+  if (!(xlo <= xhi)) throw std::invalid_argument(fmt::format("line plot {}: nothing to plot", path.string()));
+  for (const ReferenceLine& r : spec.references)
+    if (is_plottable(r.y, spec.y_log)) {
+      ylo = std::min(ylo, r.y);
+      yhi = std::max(yhi, r.y);
+    }
+
+  draw_to_file(path, spec.width, spec.height, [&](cairo_t* cr) {
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, 9.5);
+    const double left = 64.0, right = spec.width - 18.0;
+    const double top = spec.title.empty() ? 14.0 : 32.0, bottom = spec.height - 42.0;
+    const Axis x = make_axis(xlo, xhi, spec.x_log, left, right);
+    const Axis y = make_axis(ylo, yhi, spec.y_log, bottom, top);
+
+    draw_ticks(cr, x, true, bottom, top);
+    const double widest = draw_ticks(cr, y, false, left, right);
+
+    // Series and reference lines, clipped to the frame.
+    cairo_save(cr);
+    cairo_rectangle(cr, left, top, right - left, bottom - top);
+    cairo_clip(cr);
+    const double dash[] = {5.0, 3.0};
+    for (const ReferenceLine& r : spec.references) {
+      if (!is_plottable(r.y, spec.y_log)) continue;
+      cairo_set_source_rgb(cr, 0.35, 0.35, 0.35);
+      cairo_set_line_width(cr, 1.0);
+      cairo_set_dash(cr, dash, 2, 0.0);
+      cairo_move_to(cr, left, y.to_page(r.y));
+      cairo_line_to(cr, right, y.to_page(r.y));
+      cairo_stroke(cr);
+      cairo_set_dash(cr, nullptr, 0, 0.0);
+      draw_text(cr, r.name, right - 6.0, y.to_page(r.y) - 3.0, 1.0, 1.0);
+    }
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    for (std::size_t k = 0; k < spec.series.size(); ++k) {
+      const LineSeries& s = spec.series[k];
+      const double* c = kPalette[k % std::size(kPalette)];
+      cairo_set_source_rgb(cr, c[0], c[1], c[2]);
+      cairo_set_line_width(cr, 1.4);
+      bool pen_down = false;
+      for (std::size_t i = 0; i < s.x.size(); ++i) {
+        const bool ok = is_plottable(s.x[i], spec.x_log) && is_plottable(s.y[i], spec.y_log);
+        if (ok && pen_down) cairo_line_to(cr, x.to_page(s.x[i]), y.to_page(s.y[i]));
+        if (ok && !pen_down) cairo_move_to(cr, x.to_page(s.x[i]), y.to_page(s.y[i]));
+        pen_down = ok;
+      }
+      cairo_stroke(cr);
+      for (std::size_t i = 0; i < s.x.size(); ++i)
+        if (is_plottable(s.x[i], spec.x_log) && is_plottable(s.y[i], spec.y_log))
+          draw_marker(cr, static_cast<int>(k), x.to_page(s.x[i]), y.to_page(s.y[i]));
+    }
+    cairo_restore(cr);
+
+    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+    cairo_set_line_width(cr, 0.8);
+    cairo_rectangle(cr, left, top, right - left, bottom - top);
+    cairo_stroke(cr);
+    draw_legend(cr, spec, x, y);
+
+    cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+    cairo_set_font_size(cr, 10.5);
+    draw_text(cr, spec.x_label, 0.5 * (left + right), bottom + 24.0, 0.5, 0.0);
+    draw_text(cr, spec.y_label, std::max(4.0, left - widest - 14.0), 0.5 * (top + bottom), 0.5, 1.0,
+              -std::numbers::pi / 2);
+    if (!spec.title.empty()) {
+      cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+      cairo_set_font_size(cr, 11.5);
+      draw_text(cr, spec.title, 0.5 * (left + right), 10.0, 0.5, 0.0);
+    }
+  });
+}
+
+}  // namespace hydrodda::output

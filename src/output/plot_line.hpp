@@ -1,0 +1,36 @@
+#pragma once
+// Line plots: convergence histories (changes on a log axis against iteration) and the
+// responses of parameter sweeps, several series with a legend, horizontal reference lines
+// (a tolerance, a baseline). PNG, SVG or PDF by file extension.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace hydrodda::output {
+
+struct LineSeries {
+  std::string name;  // legend entry; unnamed series are left out of the legend
+  std::vector<double> x, y;
+};
+
+struct ReferenceLine {
+  std::string name;  // written above the line at its right end
+  double y = 0.0;
+};
+
+struct LinePlotSpec {
+  std::string title;
+  std::string x_label, y_label;
+  bool x_log = false, y_log = false;
+  std::vector<LineSeries> series;
+  std::vector<ReferenceLine> references;
+  double width = 460.0, height = 320.0;  // points
+};
+
+// On a log axis non-positive values are skipped (the line breaks there). Throws
+// std::invalid_argument naming the path if a series' x and y differ in length or nothing is
+// plottable, std::runtime_error naming the path if the file cannot be written.
+void render_line_plot(const std::filesystem::path& path, const LinePlotSpec& spec);
+
+}  // namespace hydrodda::output
