@@ -24,6 +24,19 @@ using geometry::Point;
 using output::CsvTable;
 using Clock = std::chrono::steady_clock;
 
+// The changes of every pass from history.csv's rows (columns iteration, time, head_change,
+// displacement_change, ...), those of a resumed run's earlier passes included.
+ConvergenceHistory read_convergence(const std::vector<std::vector<std::string>>& rows, double tolerance) {
+  ConvergenceHistory h;
+  h.tolerance = tolerance;
+  for (const std::vector<std::string>& row : rows) {
+    h.iteration.push_back(std::stod(row[0]));
+    h.head_change.push_back(std::stod(row[2]));
+    h.displacement_change.push_back(std::stod(row[3]));
+  }
+  return h;
+}
+
 }  // namespace
 
 output::RunSummary run_coupled(const RunContext& context) {
@@ -163,6 +176,7 @@ output::RunSummary run_coupled(const RunContext& context) {
   std::vector<geometry::Polygon> blocks;
   for (int b = 0; b < system.block_count(); ++b) blocks.push_back(system.polygon(b));
   draw_figures(s, context.folder, {mesh, loop.flow(), loop.porosity().porosity, loop.permeability(), blocks});
+  draw_convergence(s, context.folder, read_convergence(checkpoint.history, settings.tolerance));
   output::RunSummary summary = current_summary();
   summary.converged = converged;
   if (!converged)

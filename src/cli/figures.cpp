@@ -1,6 +1,9 @@
 #include "cli/figures.hpp"
 
+#include <fmt/format.h>
+
 #include "output/field_figure.hpp"
+#include "output/plot_line.hpp"
 
 namespace hydrodda::cli {
 
@@ -34,6 +37,19 @@ void draw_figures(const scenario::Scenario& s, const output::RunFolder& folder, 
     map.logarithmic = true;
     output::render_field_figure(dir / ("permeability." + format), map);
   }
+}
+
+void draw_convergence(const scenario::Scenario& s, const output::RunFolder& folder, const ConvergenceHistory& h) {
+  if (s.output.figures.empty() || h.iteration.empty()) return;
+  output::LinePlotSpec plot;
+  plot.title = "Convergence of the coupling loop";
+  plot.x_label = "coupling iteration";
+  plot.y_label = "relative change between iterations";
+  plot.y_log = true;
+  plot.series = {{"head", h.iteration, h.head_change}, {"block displacement", h.iteration, h.displacement_change}};
+  plot.references = {{fmt::format("tolerance {:g}", h.tolerance), h.tolerance}};
+  for (const std::string& format : s.output.figures)
+    output::render_line_plot(folder.figures() / ("convergence." + format), plot);
 }
 
 }  // namespace hydrodda::cli

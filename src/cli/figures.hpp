@@ -19,8 +19,19 @@ struct FlowPicture {
   const std::vector<geometry::Polygon>& blocks;
 };
 
+// The relative changes of a coupled run's passes, as history.csv lists them.
+struct ConvergenceHistory {
+  std::vector<double> iteration, head_change, displacement_change;
+  double tolerance = 0.0;
+};
+
 // head.* (heads with contours, blocks, flux arrows under 1% of the largest hidden, as the
 // paper's Fig. 6), porosity.* (when given) and permeability.* (log scale).
 void draw_figures(const scenario::Scenario& scenario, const output::RunFolder& folder, const FlowPicture& picture);
+
+// convergence.*: head and displacement change (log scale) against coupling iteration, with the
+// tolerance both must fall below.
+void draw_convergence(const scenario::Scenario& scenario, const output::RunFolder& folder,
+                      const ConvergenceHistory& history);
 
 }  // namespace hydrodda::cli

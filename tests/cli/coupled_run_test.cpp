@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <boost/property_tree/ptree.hpp>
+#include <boost/property_tree/xml_parser.hpp>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -68,6 +70,12 @@ TEST(CoupledRun, SixBlockModelConverges) {
   // (computed once and reused) would repeat the same mean.
   EXPECT_NE(history[1][5], history[2][5]);
 
+  // The convergence history is drawn with the other figures (figures = ["png"] in the file).
+  std::ifstream png(out / "figures/convergence.png", std::ios::binary);
+  std::string signature(8, '\0');
+  png.read(signature.data(), 8);
+  EXPECT_EQ(signature, std::string("\x89PNG\r\n\x1a\n", 8));
+
   // The ParaView series, read back with VTK's own reader (python3-vtk9): one fluid and one
   // block data set per iteration, with the arrays the docs name.
   ASSERT_TRUE(fs::exists(out / "fluid.pvd"));
@@ -99,6 +107,9 @@ TEST(CoupledRun, StoppedAtMaxIterationsReportsNotConverged) {
   const std::string key = "max_iterations = 50";
   ASSERT_NE(scenario.find(key), std::string::npos);
   scenario.replace(scenario.find(key), key.size(), "max_iterations = 2");
+  const std::string figures = "figures = [\"png\"]";
+  ASSERT_NE(scenario.find(figures), std::string::npos);
+  scenario.replace(scenario.find(figures), figures.size(), "figures = [\"svg\"]");
   const fs::path file = fs::temp_directory_path() / "hydrodda-six-block-short.toml";
   std::ofstream(file) << scenario;
   const fs::path out = fs::temp_directory_path() / "hydrodda-six-block-short";
@@ -109,6 +120,11 @@ TEST(CoupledRun, StoppedAtMaxIterationsReportsNotConverged) {
   const auto summary = nlohmann::json::parse(std::ifstream(out / "summary.json"));
   EXPECT_EQ(summary["converged"], false);  // ... and says it did not converge
   EXPECT_EQ(summary["iterations"], 2);
+  // A run that did not converge still draws its convergence history; the SVG is well-formed
+  // XML with an <svg> root.
+  boost::property_tree::ptree svg;
+  ASSERT_NO_THROW(boost::property_tree::read_xml((out / "figures/convergence.svg").string(), svg));
+  EXPECT_EQ(svg.count("svg"), 1u);
   fs::remove_all(out);
 }
 
