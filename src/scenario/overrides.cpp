@@ -1,0 +1,139 @@
+#include "scenario/overrides.hpp"
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include <charconv>
+#include <sstream>
+
+#include "scenario/diagnostics.hpp"
+
+namespace hydrodda::scenario {
+
+namespace {
+
+// One step of a key path: a key, then any number of array indices ("boundary[0]").
+struct PathStep {
+  std::string key;
+  std::vector<std::size_t> indices;
+};
+
+[[noreturn]] void fail(const std::filesystem::path& file, const std::string& key, const std::string& message) {
+  throw ScenarioError({{file.string(), 0, key, message}});
+}
+
+std::vector<PathStep> split_key_path(const std::filesystem::path& file, const std::string& path) {
+  std::vector<PathStep> steps;
+  std::stringstream parts(path);
+  std::string part;
+  while (std::getline(parts, part, '.')) {
+    PathStep step;
+    const std::size_t bracket = part.find('[');
+    step.key = part.substr(0, bracket);
+    if (step.key.empty()) fail(file, path, "expected a key path such as flow.boundary[0].head");
+    for (std::size_t at = bracket; at != std::string::npos; at = part.find('[', at)) {
+      const std::size_t close = part.find(']', at);
+      std::size_t index = 0;
+      const char* first = part.data() + at + 1;
+      const char* last = part.data() + (close == std::string::npos ? part.size() : close);
+      const auto [end, ec] = std::from_chars(first, last, index);
+      if (close == std::string::npos || ec != std::errc{} || end != last)
+        fail(file, path, fmt::format("'{}' is not a key with array indices such as boundary[0]", part));
+      step.indices.push_back(index);
+      at = close + 1;
+      if (at < part.size() && part[at] != '[') fail(file, path, fmt::format("unexpected text after ']' in '{}'", part));
+    }
+    steps.push_back(std::move(step));
+  }
+  if (path.empty() || path.back() == '.' || steps.empty())
+    fail(file, path, "expected a key path such as flow.boundary[0].head");
+  return steps;
+}
+
+// The value text as TOML; text that does not read as a TOML value is taken as a string.
+toml::table parse_value(const std::string& value) {
+  try {
+    toml::table holder = toml::parse("v = " + value);
+    if (holder.size() == 1 && holder.contains("v")) return holder;
+  } catch (const toml::parse_error&) {
+  }
+  toml::table holder;
+  holder.insert("v", value);
+  return holder;
+}
+
+// Follows `indices` into the arrays under `node`; the element reached, with its name.
+toml::node* follow_indices(const std::filesystem::path& file, const std::string& full_key, toml::node* node,
+                           std::string& name, const std::vector<std::size_t>& indices) {
+  for (std::size_t index : indices) {
+    toml::array* array = node->as_array();
+    if (!array) fail(file, full_key, fmt::format("{} is not an array", name));
+    if (index >= array->size())
+      fail(file, full_key, fmt::format("{} has {} element(s); index {} is out of range", name, array->size(), index));
+    name += fmt::format("[{}]", index);
+    node = array->get(index);
+  }
+  return node;
+}
+
+void apply_override(const std::filesystem::path& file, toml::table& document, const Override& o) {
+  const std::vector<PathStep> steps = split_key_path(file, o.key);
+  toml::table* table = &document;
+  std::string name;
+  for (std::size_t s = 0; s + 1 < steps.size(); ++s) {
+    name += (name.empty() ? "" : ".") + steps[s].key;
+    toml::node* node = table->get(steps[s].key);
+    if (!node) fail(file, o.key, fmt::format("the scenario has no '{}' to follow", name));
+    node = follow_indices(file, o.key, node, name, steps[s].indices);
+    table = node->as_table();
+    if (!table) fail(file, o.key, fmt::format("{} is not a table", name));
+  }
+  toml::table value = parse_value(o.value);
+  toml::node& new_value = *value.get("v");
+  const PathStep& last = steps.back();
+  toml::node* old_value = table->get(last.key);
+  // A whole number given for a value written as a decimal stays a decimal.
+  const auto keep_float = [&](toml::node& old, toml::node& replacement) -> toml::node& {
+    if (old.is_floating_point() && replacement.is_integer())
+      value.insert_or_assign("v", static_cast<double>(*replacement.value<long long>()));
+    return *value.get("v");
+  };
+  if (last.indices.empty()) {
+    table->insert_or_assign(last.key, std::move(old_value ? keep_float(*old_value, new_value) : new_value));
+    return;
+  }
+  name += (name.empty() ? "" : ".") + last.key;
+  if (!old_value) fail(file, o.key, fmt::format("the scenario has no '{}' to follow", name));
+  const std::vector<std::size_t> parents(last.indices.begin(), last.indices.end() - 1);
+  toml::array* array = follow_indices(file, o.key, old_value, name, parents)->as_array();
+  if (!array) fail(file, o.key, fmt::format("{} is not an array", name));
+  const std::size_t index = last.indices.back();
+  if (index >= array->size())
+    fail(file, o.key, fmt::format("{} has {} element(s); index {} is out of range", name, array->size(), index));
+  toml::node& replacement = keep_float(*array->get(index), new_value);
+  array->replace(array->cbegin() + static_cast<std::ptrdiff_t>(index), std::move(replacement));
+}
+
+}  // namespace
+
+std::string apply_overrides(std::string_view text, const std::filesystem::path& file,
+                            const std::vector<Override>& overrides) {
+  toml::table document;
+  try {
+    document = toml::parse(text, file.string());
+  } catch (const toml::parse_error& e) {
+    throw ScenarioError({{file.string(), static_cast<int>(e.source().begin.line), "",
+                          "malformed TOML: " + std::string(e.description())}});
+  }
+  for (const Override& o : overrides) apply_override(file, document, o);
+  if (toml::table* mesh = document["mesh"].as_table())
+    if (const auto mesh_file = mesh->get_as<std::string>("file")) {
+      const std::filesystem::path path(mesh_file->get());
+      if (path.is_relative()) mesh->insert_or_assign("file", std::filesystem::absolute(file.parent_path() / path).string());
+    }
+  std::ostringstream out;
+  out << toml::toml_formatter(document) << '\n';
+  return out.str();
+}
+
+}  // namespace hydrodda::scenario

@@ -1,0 +1,95 @@
+#include "scenario/overrides.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "scenario/diagnostics.hpp"
+#include "scenario/reader.hpp"
+
+namespace hydrodda::scenario {
+namespace {
+
+const std::filesystem::path kSixBlock =
+    std::filesystem::path(HYDRODDA_SOURCE_DIR) / "scenarios/paper/six_block_lr_rl.toml";
+
+std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The message of the ScenarioError that applying `overrides` throws, or "" if none.
+std::string error_of(const std::vector<Override>& overrides) {
+  try {
+    apply_overrides(read_text(kSixBlock), kSixBlock, overrides);
+  } catch (const ScenarioError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ScenarioOverrides, SetsValuesInTablesAndArraysOfTables) {
+  const std::string text = apply_overrides(read_text(kSixBlock), kSixBlock,
+                                           {{"coupling.relaxation", "0.5"},
+                                            {"flow.boundary[0].head", "5"},
+                                            {"mechanics.contact", "penalty"},
+                                            {"mechanics.gravity", "[0.0, -10.0]"},
+                                            {"mechanics.displacement[1].value[0]", "-0.002"},
+                                            {"title", "\"case 1\""}});
+  const Scenario s = parse_scenario(text, "case.toml");
+  EXPECT_EQ(s.coupling.relaxation, 0.5);
+  ASSERT_EQ(s.flow->boundaries.size(), 2u);
+  EXPECT_EQ(s.flow->boundaries[0].name, "right");
+  EXPECT_EQ(s.flow->boundaries[0].value, 5.0);
+  EXPECT_EQ(s.flow->boundaries[1].value, 0.0);  // the other boundary untouched
+  EXPECT_EQ(s.mechanics->contact, ContactMethod::Penalty);
+  EXPECT_EQ(s.mechanics->gravity, (Point{0.0, -10.0}));
+  EXPECT_EQ(s.title, "case 1");
+  // A whole number replacing a decimal stays a decimal in the file.
+  EXPECT_NE(text.find("head = 5.0"), std::string::npos) << text;
+  // Everything else reads back as in the original file.
+  const Scenario original = read_scenario(kSixBlock);
+  EXPECT_EQ(s.geometry->fractures.size(), original.geometry->fractures.size());
+  EXPECT_EQ(s.mesh->size, original.mesh->size);
+  EXPECT_EQ(s.coupling.tolerance, original.coupling.tolerance);
+}
+
+TEST(ScenarioOverrides, AddsAValueMissingFromAnExistingTable) {
+  // coupling.relaxation is in the file; mechanics.max_displacement_ratio is not.
+  const std::string text = apply_overrides(read_text(kSixBlock), kSixBlock,
+                                           {{"mechanics.max_displacement_ratio", "0.005"}});
+  EXPECT_EQ(parse_scenario(text, "case.toml").mechanics->max_displacement_ratio, 0.005);
+}
+
+TEST(ScenarioOverrides, BadKeysAreNamed) {
+  EXPECT_NE(error_of({{"nosuch.value", "1"}}).find("nosuch.value: the scenario has no 'nosuch'"), std::string::npos);
+  EXPECT_NE(error_of({{"flow.boundary[2].head", "1"}}).find("flow.boundary has 2 element(s); index 2 is out of range"),
+            std::string::npos);
+  EXPECT_NE(error_of({{"coupling[0].relaxation", "1"}}).find("coupling is not an array"), std::string::npos);
+  EXPECT_NE(error_of({{"flow.boundary[x].head", "1"}}).find("'boundary[x]'"), std::string::npos);
+  EXPECT_NE(error_of({{"coupling..tolerance", "1"}}).find("expected a key path"), std::string::npos);
+  EXPECT_NE(error_of({{"coupling.relaxation.value", "1"}}).find("coupling.relaxation is not a table"),
+            std::string::npos);
+  // A misspelt last key is set, and the reader then names it with a suggestion.
+  const std::string text =
+      apply_overrides(read_text(kSixBlock), kSixBlock, {{"coupling.relaxtion", "0.5"}});
+  try {
+    parse_scenario(text, "case.toml");
+    FAIL() << "an unknown key was accepted";
+  } catch (const ScenarioError& e) {
+    EXPECT_NE(std::string(e.what()).find("coupling.relaxtion"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("relaxation"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ScenarioOverrides, RelativeMeshFileBecomesAbsolute) {
+  const std::filesystem::path file = "/data/models/case.toml";
+  const std::string text = apply_overrides("[mesh]\nfile = \"meshes/m.msh\"\n", file, {});
+  EXPECT_NE(text.find("/data/models/meshes/m.msh"), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace hydrodda::scenario
