@@ -69,7 +69,22 @@ int run_app(int argc, char** argv) {
   CLI::App* check_cmd = app.add_subcommand("check", "Validate a scenario without running it");
   check_cmd->add_option("scenario", check_file, "Scenario file (TOML)")->required();
 
-  for (CLI::App* sub : {run_cmd, check_cmd}) {
+  SweepOptions sweep;
+  std::string sweep_output;
+  CLI::App* sweep_cmd = app.add_subcommand("sweep", "Run a scenario for every combination of swept values");
+  sweep_cmd->add_option("scenario", sweep.scenario, "Scenario file (TOML)")->required();
+  sweep_cmd->add_option("--set", sweep.sets, "KEY=V1,V2,...: a key path of the scenario and its values (repeatable)")
+      ->required()
+      ->allow_extra_args(false);
+  sweep_cmd->add_option("-o,--output", sweep_output, "Sweep folder (default: out/<scenario name>-sweep)");
+  sweep_cmd->add_option("--jobs", sweep.jobs, "Cases run at a time (default: the hardware threads)")
+      ->check(CLI::PositiveNumber);
+  sweep_cmd->add_option("--column", sweep.columns,
+                        "A summary.json path to gather, e.g. flow.regions.core.effective_conductivity (repeatable)")
+      ->allow_extra_args(false);
+  sweep_cmd->add_flag("--overwrite", sweep.overwrite, "Replace results in a sweep folder that already holds files");
+
+  for (CLI::App* sub : {run_cmd, check_cmd, sweep_cmd}) {
     sub->add_flag("-q,--quiet", quiet, "Print warnings and errors only");
     sub->add_flag("-v,--verbose", verbose, "Print every step and every default used");
   }
@@ -92,6 +107,10 @@ int run_app(int argc, char** argv) {
   }
 
   if (*check_cmd) return check_command(check_file);
+  if (*sweep_cmd) {
+    if (!sweep_output.empty()) sweep.output = sweep_output;
+    return sweep_command(sweep);
+  }
   return run_command(run);
 }
 

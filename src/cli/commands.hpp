@@ -3,6 +3,8 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "cli/progress.hpp"
 
@@ -17,7 +19,17 @@ struct RunOptions {
   Verbosity verbosity = Verbosity::Normal;
 };
 
+struct SweepOptions {
+  std::filesystem::path scenario;
+  std::vector<std::string> sets;                // "KEY=V1,V2,..."
+  std::optional<std::filesystem::path> output;  // default out/<scenario stem>-sweep
+  std::optional<int> jobs;                      // default: the hardware threads
+  std::vector<std::string> columns;             // dotted paths into summary.json
+  bool overwrite = false;
+};
+
 int check_command(const std::filesystem::path& scenario);
 int run_command(const RunOptions& options);
+int sweep_command(const SweepOptions& options);
 
 }  // namespace hydrodda::cli

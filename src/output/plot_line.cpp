@@ -99,15 +99,69 @@ double draw_power_of_ten(cairo_t* cr, int e, double x, double y, double align_x,
   return width;
 }
 
-// Ticks of one axis with their labels and light grid lines; returns the widest label.
-double draw_ticks(cairo_t* cr, const Axis& a, bool horizontal, double frame_lo, double frame_hi) {
-  std::vector<double> major = a.log ? log_ticks(a.lo, a.hi) : nice_ticks(a.lo, a.hi, 6);
-  std::vector<double> minor;
-  if (a.log && major.size() >= 2 && major[1] / major[0] < 11.0)
-    for (double d = major[0] / 10.0; d < a.hi; d *= 10.0)
+// "×10⁻⁸": the factor a linear axis's labels leave out.
+std::string format_scale(int exponent) {
+  static const char* const digits[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+  std::string text = exponent < 0 ? "⁻" : "";
+  for (char c : std::to_string(std::abs(exponent))) text += digits[c - '0'];
+  return " (×10" + text + ")";
+}
+
+// The ticks of one axis and their labels. Linear axes whose values are very large or small
+// label v / 10^scale and name the factor in the axis title, so labels stay short.
+struct TickLabels {
+  std::vector<double> major, minor;
+  std::vector<std::string> text;  // per major tick; empty for a power of ten (drawn as 10^e)
+  int scale = 0;
+};
+
+TickLabels make_tick_labels(const Axis& a) {
+  TickLabels t;
+  t.major = a.log ? log_ticks(a.lo, a.hi) : nice_ticks(a.lo, a.hi, 6);
+  if (a.log && t.major.size() >= 2 && t.major[1] / t.major[0] < 11.0)
+    for (double d = t.major[0] / 10.0; d < a.hi; d *= 10.0)
       for (int m = 2; m <= 9; ++m)
-        if (m * d > a.lo && m * d < a.hi) minor.push_back(m * d);
-  const double step = major.size() >= 2 ? major[1] - major[0] : 1.0;
+        if (m * d > a.lo && m * d < a.hi) t.minor.push_back(m * d);
+  const double step = t.major.size() >= 2 ? t.major[1] - t.major[0] : 1.0;
+  const double largest = std::max(std::abs(a.lo), std::abs(a.hi));
+  if (!a.log && (largest >= 1e5 || largest < 1e-3)) t.scale = static_cast<int>(std::floor(std::log10(largest)));
+  const double factor = std::pow(10.0, t.scale);
+  for (double v : t.major) {
+    const int e = static_cast<int>(std::lround(std::log10(v)));
+    if (a.log && std::abs(v - std::pow(10.0, e)) < 1e-9 * v)
+      t.text.emplace_back();
+    else
+      t.text.push_back(a.log ? fmt::format("{:g}", v) : format_tick(v / factor, step / factor));
+  }
+  return t;
+}
+
+// Draws (or only measures) the label of major tick i; returns its width.
+double draw_tick_label(cairo_t* cr, const TickLabels& t, std::size_t i, double x, double y, bool horizontal,
+                       bool measure_only = false) {
+  if (t.text[i].empty()) {
+    const int e = static_cast<int>(std::lround(std::log10(t.major[i])));
+    return horizontal ? draw_power_of_ten(cr, e, x, y + 5.0, 0.5, measure_only)
+                      : draw_power_of_ten(cr, e, x, y, 1.0, measure_only);
+  }
+  if (!measure_only) {
+    if (horizontal)
+      draw_text(cr, t.text[i], x, y, 0.5, 0.0);
+    else
+      draw_text(cr, t.text[i], x, y, 1.0, 0.5);
+  }
+  return text_width(cr, t.text[i]);
+}
+
+double measure_widest_label(cairo_t* cr, const TickLabels& t) {
+  double widest = 0.0;
+  for (std::size_t i = 0; i < t.major.size(); ++i)
+    widest = std::max(widest, draw_tick_label(cr, t, i, 0.0, 0.0, false, true));
+  return widest;
+}
+
+// Ticks of one axis with their labels and light grid lines.
+void draw_ticks(cairo_t* cr, const Axis& a, const TickLabels& t, bool horizontal, double frame_lo, double frame_hi) {
   const auto line = [&](double v, double length) {
     const double p = a.to_page(v);
     if (horizontal) {
@@ -121,33 +175,21 @@ double draw_ticks(cairo_t* cr, const Axis& a, bool horizontal, double frame_lo, 
   // Grid first, under everything else.
   cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
   cairo_set_line_width(cr, 0.5);
-  for (double v : major) line(v, std::abs(frame_hi - frame_lo));
+  for (double v : t.major) line(v, std::abs(frame_hi - frame_lo));
   cairo_stroke(cr);
   cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
   cairo_set_line_width(cr, 0.7);
-  for (double v : major) line(v, 4.0);
-  for (double v : minor) line(v, 2.0);
+  for (double v : t.major) line(v, 4.0);
+  for (double v : t.minor) line(v, 2.0);
   cairo_stroke(cr);
-  double widest = 0.0;
-  for (double v : major) {
-    const double p = a.to_page(v);
-    const double gap = 6.0;
-    const int e = static_cast<int>(std::lround(std::log10(v)));
-    if (a.log && std::abs(v - std::pow(10.0, e)) < 1e-9 * v) {
-      if (horizontal)
-        draw_power_of_ten(cr, e, p, frame_lo + gap + 5.0, 0.5);
-      else
-        widest = std::max(widest, draw_power_of_ten(cr, e, frame_lo - gap, p, 1.0));
-    } else {
-      const std::string label = a.log ? fmt::format("{:g}", v) : format_tick(v, step);
-      if (horizontal)
-        draw_text(cr, label, p, frame_lo + gap, 0.5, 0.0);
-      else
-        draw_text(cr, label, frame_lo - gap, p, 1.0, 0.5);
-      widest = std::max(widest, text_width(cr, label));
-    }
+  const double gap = 6.0;
+  for (std::size_t i = 0; i < t.major.size(); ++i) {
+    const double p = a.to_page(t.major[i]);
+    if (horizontal)
+      draw_tick_label(cr, t, i, p, frame_lo + gap, true);
+    else
+      draw_tick_label(cr, t, i, frame_lo - gap, p, false);
   }
-  return widest;
 }
 
 // The legend, in the corner of the frame that hides the fewest data points.
@@ -230,13 +272,16 @@ void render_line_plot(const std::filesystem::path& path, const LinePlotSpec& spe
   draw_to_file(path, spec.width, spec.height, [&](cairo_t* cr) {
     cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
     cairo_set_font_size(cr, 9.5);
-    const double left = 64.0, right = spec.width - 18.0;
+    // The left margin holds the widest y label and the y title beside it.
     const double top = spec.title.empty() ? 14.0 : 32.0, bottom = spec.height - 42.0;
-    const Axis x = make_axis(xlo, xhi, spec.x_log, left, right);
     const Axis y = make_axis(ylo, yhi, spec.y_log, bottom, top);
-
-    draw_ticks(cr, x, true, bottom, top);
-    const double widest = draw_ticks(cr, y, false, left, right);
+    const TickLabels y_ticks = make_tick_labels(y);
+    const double widest = measure_widest_label(cr, y_ticks);
+    const double left = std::max(48.0, widest + 32.0), right = spec.width - 18.0;
+    const Axis x = make_axis(xlo, xhi, spec.x_log, left, right);
+    const TickLabels x_ticks = make_tick_labels(x);
+    draw_ticks(cr, x, x_ticks, true, bottom, top);
+    draw_ticks(cr, y, y_ticks, false, left, right);
 
     // Series and reference lines, clipped to the frame.
     cairo_save(cr);
@@ -282,9 +327,10 @@ void render_line_plot(const std::filesystem::path& path, const LinePlotSpec& spe
 
     cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
     cairo_set_font_size(cr, 10.5);
-    draw_text(cr, spec.x_label, 0.5 * (left + right), bottom + 24.0, 0.5, 0.0);
-    draw_text(cr, spec.y_label, std::max(4.0, left - widest - 14.0), 0.5 * (top + bottom), 0.5, 1.0,
-              -std::numbers::pi / 2);
+    const std::string x_title = spec.x_label + (x_ticks.scale ? format_scale(x_ticks.scale) : "");
+    const std::string y_title = spec.y_label + (y_ticks.scale ? format_scale(y_ticks.scale) : "");
+    draw_text(cr, x_title, 0.5 * (left + right), bottom + 24.0, 0.5, 0.0);
+    draw_text(cr, y_title, left - widest - 12.0, 0.5 * (top + bottom), 0.5, 1.0, -std::numbers::pi / 2);
     if (!spec.title.empty()) {
       cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
       cairo_set_font_size(cr, 11.5);

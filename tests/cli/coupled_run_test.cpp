@@ -14,6 +14,7 @@
 
 namespace fs = std::filesystem;
 using hydrodda::testing::run_command;
+using hydrodda::testing::read_csv;
 using hydrodda::testing::run_program;
 
 namespace {
@@ -28,19 +29,6 @@ int count_lines_starting(const std::string& text, const std::string& prefix) {
   return n;
 }
 
-std::vector<std::vector<std::string>> read_csv(const fs::path& file) {
-  std::vector<std::vector<std::string>> rows;
-  std::ifstream in(file);
-  std::string line;
-  while (std::getline(in, line)) {
-    std::vector<std::string> cells;
-    std::stringstream cells_in(line);
-    std::string cell;
-    while (std::getline(cells_in, cell, ',')) cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  return rows;
-}
 
 TEST(CoupledRun, SixBlockModelConverges) {
   const fs::path out = fs::temp_directory_path() / "hydrodda-six-block";

@@ -6,7 +6,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <cstdio>
+#include <sstream>
 #include <string>
+#include <vector>
 #include <sys/wait.h>
 
 #include <gtest/gtest.h>
@@ -48,6 +50,22 @@ inline nlohmann::json run_scenario_and_read(const std::string& relative_path) {
   nlohmann::json summary = in ? nlohmann::json::parse(in) : nlohmann::json::object();
   fs::remove_all(out);
   return summary;
+}
+
+// Rows of a CSV file whose cells hold no quoted separators; a trailing empty cell is kept.
+inline std::vector<std::vector<std::string>> read_csv(const std::filesystem::path& file) {
+  std::vector<std::vector<std::string>> rows;
+  std::ifstream in(file);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::stringstream cells_in(line);
+    std::string cell;
+    while (std::getline(cells_in, cell, ',')) cells.push_back(cell);
+    if (!line.empty() && line.back() == ',') cells.emplace_back();
+    rows.push_back(cells);
+  }
+  return rows;
 }
 
 }  // namespace hydrodda::testing

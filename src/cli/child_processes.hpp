@@ -1,0 +1,26 @@
+#pragma once
+// Running copies of a program side by side, a few at a time, as a parameter sweep does.
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace hydrodda::cli {
+
+struct ChildCommand {
+  std::vector<std::string> arguments;  // arguments[0] is the program
+  std::filesystem::path log;           // receives the child's stdout and stderr
+};
+
+// Runs the commands with at most `jobs` at a time, in order, calling `on_finish(index, exit
+// code)` as each ends (128 + the signal for one killed by a signal). Children get stdin from
+// /dev/null and OMP_NUM_THREADS=1 unless it is set, so that `jobs` processes share the cores
+// rather than each filling them. Once interrupt_requested() (SIGINT or SIGTERM), no further
+// command is started and the running children are sent SIGINT; returns when all have ended,
+// with the indices of the commands never started. Throws std::runtime_error if a child cannot
+// be started.
+std::vector<std::size_t> run_child_processes(const std::vector<ChildCommand>& commands, int jobs,
+                                             const std::function<void(std::size_t, int)>& on_finish);
+
+}  // namespace hydrodda::cli

@@ -1,0 +1,164 @@
+// `hydrodda sweep`: a scenario run once per combination of swept values, each case a child
+// `hydrodda run` of this same program in its own folder, several at a time; their results
+// gathered into sweep.csv and plotted in sweep.png.
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "cli/app.hpp"
+#include "cli/child_processes.hpp"
+#include "cli/commands.hpp"
+#include "cli/interrupt.hpp"
+#include "cli/scenario_loading.hpp"
+#include "cli/sweep_plan.hpp"
+#include "cli/sweep_results.hpp"
+#include "output/run_folder.hpp"
+#include "scenario/diagnostics.hpp"
+#include "scenario/reader.hpp"
+
+namespace hydrodda::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct PreparedCase {
+  std::string name;  // case_000
+  std::string text;  // the case's scenario file
+};
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void print_error(const std::string& message) { std::fputs(fmt::format("error: {}\n", message).c_str(), stderr); }
+
+std::string describe_case(const std::vector<scenario::Override>& overrides) {
+  std::string text;
+  for (const scenario::Override& o : overrides) text += fmt::format("{}{}={}", text.empty() ? "" : ", ", o.key, o.value);
+  return text;
+}
+
+// Every case's scenario file, each read and checked as `run` would; nothing when any fails
+// (after every problem has been printed).
+std::optional<std::vector<PreparedCase>> prepare_cases(const fs::path& file, const fs::path& directory,
+                                                       const std::vector<std::vector<scenario::Override>>& cases,
+                                                       std::vector<std::string>& region_names) {
+  const std::string original = read_text(file);
+  std::vector<PreparedCase> prepared;
+  bool ok = true;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const std::string name = fmt::format("case_{:03}", i);
+    const fs::path case_file = directory / name / "scenario.toml";
+    try {
+      std::string text = scenario::apply_overrides(original, file, cases[i]);
+      const scenario::Scenario s = scenario::parse_scenario(text, case_file);
+      if (i == 0 && s.flow)
+        for (const scenario::FlowRegion& r : s.flow->regions) region_names.push_back(r.name);
+      prepared.push_back({name, std::move(text)});
+    } catch (const scenario::ScenarioError& e) {
+      print_error(fmt::format("{} ({}):", name, describe_case(cases[i])));
+      for (const scenario::Diagnostic& d : e.diagnostics()) print_error(d.format());
+      ok = false;
+    }
+  }
+  if (!ok) return std::nullopt;
+  return prepared;
+}
+
+}  // namespace
+
+int sweep_command(const SweepOptions& options) {
+  const auto base = load_scenario(options.scenario);
+  if (!base) return kBadInput;
+  std::vector<SweepAxis> axes;
+  try {
+    for (const std::string& set : options.sets) axes.push_back(parse_sweep_axis(set));
+  } catch (const std::invalid_argument& e) {
+    print_error(e.what());
+    return kBadInput;
+  }
+  const fs::path directory =
+      options.output.value_or(fs::path("out") / (options.scenario.stem().string() + "-sweep"));
+  const std::vector<std::vector<scenario::Override>> cases = enumerate_cases(axes);
+  std::vector<std::string> region_names;
+  const auto prepared = prepare_cases(options.scenario, directory, cases, region_names);
+  if (!prepared) {
+    std::fputs(fmt::format("{}: the sweep was not started\n", options.scenario.string()).c_str(), stderr);
+    return kBadInput;
+  }
+  std::vector<std::string> columns = options.columns;
+  if (columns.empty())
+    for (const std::string& region : region_names)
+      columns.push_back(fmt::format("flow.regions.{}.effective_conductivity", region));
+
+  std::optional<output::RunFolder> folder;
+  try {
+    folder.emplace(directory, options.overwrite ? output::ExistingFolder::Overwrite : output::ExistingFolder::Refuse);
+    for (const PreparedCase& c : *prepared) {
+      const output::RunFolder case_folder(directory / c.name, output::ExistingFolder::Overwrite);
+      case_folder.write("scenario.toml", c.text);
+      fs::remove(case_folder.file("summary.json"));  // an earlier sweep's result must not be read as this one's
+    }
+  } catch (const output::RunFolderError& e) {
+    print_error(e.what());
+    return kBadInput;
+  }
+
+  const fs::path program = fs::read_symlink("/proc/self/exe");
+  std::vector<ChildCommand> commands;
+  for (const PreparedCase& c : *prepared) {
+    const fs::path case_dir = directory / c.name;
+    commands.push_back({{program.string(), "-q", "run", (case_dir / "scenario.toml").string(), "-o",
+                         case_dir.string(), "--overwrite"},
+                        case_dir / "run.log"});
+  }
+  const int jobs = options.jobs.value_or(std::max(1u, std::thread::hardware_concurrency()));
+  spdlog::info("sweep of {}: {} case(s), {} at a time, in {}", options.scenario.string(), cases.size(), jobs,
+               directory.string());
+
+  SweepResults results(axes, cases, columns);
+  for (std::size_t i = 0; i < prepared->size(); ++i) results.set_name(i, (*prepared)[i].name);
+  install_interrupt_handlers();
+  std::size_t finished = 0;
+  std::vector<std::size_t> never_started;
+  try {
+    never_started = run_child_processes(commands, jobs, [&](std::size_t index, int exit_code) {
+      const fs::path case_dir = directory / (*prepared)[index].name;
+      const CaseResult& r = results.record_run(index, case_dir, exit_code);
+      ++finished;
+      const std::string line = fmt::format("{} ({}): {}{}  [{}/{}]", (*prepared)[index].name,
+                                           describe_case(cases[index]), r.status,
+                                           r.message.empty() ? "" : ": " + r.message, finished, cases.size());
+      if (r.status == "failed") spdlog::error("{}", line);
+      else spdlog::info("{}", line);
+      folder->write("sweep.csv", results.csv_text());
+    });
+  } catch (const std::exception& e) {
+    print_error(e.what());
+    folder->write("sweep.csv", results.csv_text());
+    return kRunFailed;
+  }
+  for (std::size_t index : never_started) results.record_not_run(index);
+  folder->write("sweep.csv", results.csv_text());
+  results.plot(directory / "sweep.png", base->title);
+
+  const std::size_t failed = results.count_not_ok();
+  if (failed > 0) {
+    spdlog::error("{} of {} case(s) failed or did not run; see {}", failed, cases.size(),
+                  (directory / "sweep.csv").string());
+    return kRunFailed;
+  }
+  spdlog::info("all {} case(s) finished; results in {}", cases.size(), (directory / "sweep.csv").string());
+  return kSuccess;
+}
+
+}  // namespace hydrodda::cli

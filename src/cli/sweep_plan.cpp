@@ -1,0 +1,73 @@
+#include "cli/sweep_plan.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+namespace hydrodda::cli {
+
+namespace {
+
+// Splits at commas outside brackets, braces and quotes.
+std::vector<std::string> split_values(const std::string& list) {
+  std::vector<std::string> values;
+  std::string current;
+  int depth = 0;
+  char quote = 0;
+  for (char c : list) {
+    if (quote) {
+      if (c == quote) quote = 0;
+    } else if (c == '"' || c == '\'') {
+      quote = c;
+    } else if (c == '[' || c == '{') {
+      ++depth;
+    } else if (c == ']' || c == '}') {
+      --depth;
+    } else if (c == ',' && depth == 0) {
+      values.push_back(current);
+      current.clear();
+      continue;
+    }
+    current += c;
+  }
+  values.push_back(current);
+  return values;
+}
+
+std::string trim(const std::string& s) {
+  const std::size_t first = s.find_first_not_of(" \t");
+  if (first == std::string::npos) return "";
+  return s.substr(first, s.find_last_not_of(" \t") - first + 1);
+}
+
+}  // namespace
+
+SweepAxis parse_sweep_axis(const std::string& option) {
+  const std::size_t equals = option.find('=');
+  if (equals == std::string::npos)
+    throw std::invalid_argument(fmt::format("--set {}: expected KEY=V1,V2,...", option));
+  SweepAxis axis{trim(option.substr(0, equals)), {}};
+  if (axis.key.empty()) throw std::invalid_argument(fmt::format("--set {}: the key is empty", option));
+  for (const std::string& value : split_values(option.substr(equals + 1))) {
+    axis.values.push_back(trim(value));
+    if (axis.values.back().empty())
+      throw std::invalid_argument(fmt::format("--set {}: an empty value in the list", option));
+  }
+  return axis;
+}
+
+std::vector<std::vector<scenario::Override>> enumerate_cases(const std::vector<SweepAxis>& axes) {
+  std::vector<std::vector<scenario::Override>> cases{{}};
+  for (const SweepAxis& axis : axes) {
+    std::vector<std::vector<scenario::Override>> longer;
+    for (const auto& partial : cases)
+      for (const std::string& value : axis.values) {
+        longer.push_back(partial);
+        longer.back().push_back({axis.key, value});
+      }
+    cases = std::move(longer);
+  }
+  return cases;
+}
+
+}  // namespace hydrodda::cli

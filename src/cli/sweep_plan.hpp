@@ -1,0 +1,25 @@
+#pragma once
+// The cases of a parameter sweep: every combination of the values given with --set.
+
+#include <string>
+#include <vector>
+
+#include "scenario/overrides.hpp"
+
+namespace hydrodda::cli {
+
+// One swept key and its values, from "KEY=V1,V2,...".
+struct SweepAxis {
+  std::string key;
+  std::vector<std::string> values;
+};
+
+// Parses "KEY=V1,V2,..."; commas inside brackets or quotes do not split ("g=[0,-9.81],[0,-5]").
+// Throws std::invalid_argument with a message naming the option when it is malformed.
+SweepAxis parse_sweep_axis(const std::string& option);
+
+// The Cartesian product of the axes' values, the first axis varying slowest: case i sets
+// axes[k].key to its value in each.
+std::vector<std::vector<scenario::Override>> enumerate_cases(const std::vector<SweepAxis>& axes);
+
+}  // namespace hydrodda::cli

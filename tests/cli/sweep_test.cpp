@@ -1,0 +1,157 @@
+// `hydrodda sweep` through the real program: every case run and gathered, a failed case
+// reported and never hidden, bad keys refused before anything runs, and an interrupt passed on.
+
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <array>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "run_program.hpp"
+
+namespace fs = std::filesystem;
+using hydrodda::testing::read_csv;
+using hydrodda::testing::run_program;
+
+namespace {
+
+const fs::path kSource = HYDRODDA_SOURCE_DIR;
+
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / (name + "-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  return dir;
+}
+
+TEST(Sweep, RunsEveryCombinationAndGathersTheSummaries) {
+  const fs::path out = fresh_dir("hydrodda-sweep-flow");
+  const auto result = run_program("sweep " + (kSource / "scenarios/verification/flow_linear_head.toml").string() +
+                                   " --set flow.boundary[0].head=3,5 --set flow.region[0].permeability=1e-12,2e-12"
+                                   " --jobs 2 -o " + out.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const auto rows = read_csv(out / "sweep.csv");
+  ASSERT_EQ(rows.size(), 5u);
+  EXPECT_EQ(rows[0], (std::vector<std::string>{"case", "flow.boundary[0].head", "flow.region[0].permeability",
+                                               "status", "converged", "iterations",
+                                               "flow.regions.rock.effective_conductivity", "message"}));
+  const std::vector<std::array<std::string, 3>> expected{
+      {"case_000", "3", "1e-12"}, {"case_001", "3", "2e-12"}, {"case_002", "5", "1e-12"}, {"case_003", "5", "2e-12"}};
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    const auto& row = rows[i + 1];
+    ASSERT_EQ(row.size(), 8u);
+    EXPECT_EQ(row[0], expected[i][0]);
+    EXPECT_EQ(row[1], expected[i][1]);
+    EXPECT_EQ(row[2], expected[i][2]);
+    EXPECT_EQ(row[3], "ok");
+    EXPECT_EQ(row[4], "true");
+    // Uniform permeability k: K_eff = k ρ g / μ exactly (1000 kg/m3, 9.81 m/s2, 1e-3 Pa s),
+    // whatever the head drop, as Darcy's law is linear. Round-off only: 1e-9 relative.
+    const double k = std::stod(row[2]);
+    EXPECT_NEAR(std::stod(row[6]), k * 1000.0 * 9.81 / 1e-3, 1e-9 * k * 1e7) << row[0];
+    EXPECT_EQ(row[7], "");
+  }
+  // Each case ran from its own scenario file, with the value set.
+  std::ifstream case_file(out / "case_002/scenario.toml");
+  std::stringstream text;
+  text << case_file.rdbuf();
+  EXPECT_NE(text.str().find("head = 5.0"), std::string::npos) << text.str();
+  EXPECT_TRUE(fs::exists(out / "case_003/summary.json"));
+  std::ifstream png(out / "sweep.png", std::ios::binary);
+  std::string signature(8, '\0');
+  png.read(signature.data(), 8);
+  EXPECT_EQ(signature, std::string("\x89PNG\r\n\x1a\n", 8));
+  // A second sweep into the same folder is refused unless asked to overwrite.
+  EXPECT_EQ(run_program("sweep " + (kSource / "scenarios/verification/flow_linear_head.toml").string() +
+                        " --set flow.boundary[0].head=3 -o " + out.string())
+                .exit_code,
+            2);
+  fs::remove_all(out);
+}
+
+TEST(Sweep, AFailedCaseIsReportedAndTheOthersFinish) {
+  const fs::path out = fresh_dir("hydrodda-sweep-failed");
+  // The second measure point lies in no block: that run stops with an error of its own.
+  const auto result = run_program("sweep " + (kSource / "scenarios/verification/free_fall.toml").string() +
+                                  " --set mechanics.end_time=0.05 --set mechanics.measure[0].point=[0.5,0.5],[50,50]"
+                                  " --column measure.centre.displacement.1 -o " + out.string());
+  EXPECT_EQ(result.exit_code, 1) << result.output;
+  EXPECT_NE(result.output.find("1 of 2 case(s) failed"), std::string::npos) << result.output;
+  std::ifstream in(out / "sweep.csv");
+  std::string header, ok, failed;
+  std::getline(in, header);
+  std::getline(in, ok);
+  std::getline(in, failed);
+  EXPECT_EQ(header, "case,mechanics.end_time,mechanics.measure[0].point,status,converged,iterations,"
+                    "measure.centre.displacement.1,message");
+  // Free fall for 0.05 s: u_y = −g t²/2 = −0.0122625 m (the shipped scenario checks it to 1e-6).
+  EXPECT_EQ(ok.rfind("case_000,0.05,\"[0.5,0.5]\",ok,true,", 0), 0u) << ok;
+  EXPECT_NE(ok.find(",-0.0122"), std::string::npos) << ok;
+  EXPECT_EQ(failed.rfind("case_001,0.05,\"[50,50]\",failed,", 0), 0u) << failed;
+  EXPECT_NE(failed.find("(50, 50) lies in no block"), std::string::npos) << failed;
+  fs::remove_all(out);
+}
+
+TEST(Sweep, BadInputIsRefusedBeforeAnythingRuns) {
+  const fs::path out = fresh_dir("hydrodda-sweep-bad");
+  const std::string scenario = (kSource / "scenarios/verification/flow_linear_head.toml").string();
+  const auto no_table = run_program("sweep " + scenario + " --set nosuch.value=1 -o " + out.string());
+  EXPECT_EQ(no_table.exit_code, 2);
+  EXPECT_NE(no_table.output.find("nosuch.value: the scenario has no 'nosuch'"), std::string::npos)
+      << no_table.output;
+  const auto index = run_program("sweep " + scenario + " --set flow.boundary[5].head=1 -o " + out.string());
+  EXPECT_EQ(index.exit_code, 2);
+  EXPECT_NE(index.output.find("index 5 is out of range"), std::string::npos) << index.output;
+  // The second value is out of range for the reader: no case runs, not even the first.
+  const auto value = run_program("sweep " + scenario + " --set flow.fluid.viscosity=1e-3,-1 -o " + out.string());
+  EXPECT_EQ(value.exit_code, 2);
+  EXPECT_NE(value.output.find("case_001 (flow.fluid.viscosity=-1)"), std::string::npos) << value.output;
+  EXPECT_NE(value.output.find("flow.fluid.viscosity: must be > 0"), std::string::npos) << value.output;
+  const auto malformed = run_program("sweep " + scenario + " --set flow.boundary -o " + out.string());
+  EXPECT_EQ(malformed.exit_code, 2);
+  EXPECT_NE(malformed.output.find("expected KEY=V1,V2"), std::string::npos) << malformed.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(Sweep, InterruptStopsLaunchingAndReachesTheRunningCase) {
+  const fs::path out = fresh_dir("hydrodda-sweep-interrupt");
+  const std::string scenario = (kSource / "scenarios/paper/six_block_lr_rl.toml").string();
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    // Its own process group, so the signal below reaches the sweep only; the sweep must pass
+    // it on to its running case.
+    ::setpgid(0, 0);
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, STDOUT_FILENO);
+    ::dup2(null, STDERR_FILENO);
+    ::execl(HYDRODDA_BINARY, HYDRODDA_BINARY, "sweep", scenario.c_str(), "--set", "flow.boundary[0].head=5,10,15",
+            "--jobs", "1", "-o", out.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  // Wait until the first case has written its first coupling iteration, then interrupt.
+  for (int i = 0; i < 600 && !fs::exists(out / "case_000/history.csv"); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  ::kill(pid, SIGINT);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  const auto rows = read_csv(out / "sweep.csv");
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_EQ(rows[1][2], "failed");  // the running case stopped at the interrupt ...
+  EXPECT_NE(rows[1].back().find("interrupted"), std::string::npos) << rows[1].back();
+  EXPECT_EQ(rows[2][2], "not run");  // ... and no further case started
+  EXPECT_EQ(rows[3][2], "not run");
+  EXPECT_FALSE(fs::exists(out / "case_001/summary.json"));
+  fs::remove_all(out);
+}
+
+}  // namespace
