@@ -89,7 +89,7 @@ output::RunSummary run_flow(const RunContext& context) {
   context.progress.update(fmt::format("flow solved: balance error {:.2e}", solution.balance_error));
   context.progress.finish();
 
-  summary.flow = summarise_flow(s, mesh, solution);
+  summary.flow = summarise_flow(s, mesh, solution, solve_matrix_flow(s, mesh));
   std::vector<geometry::Polygon> polygons;
   for (const auto& b : blocks) polygons.push_back(b.polygon);
   const std::vector<double> no_porosity;

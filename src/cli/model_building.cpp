@@ -10,6 +10,7 @@
 #include "dda/selection.hpp"
 #include "mesh/mesh_request.hpp"
 #include "geometry/domain_cutting.hpp"
+#include "hydro/permeability_law.hpp"
 #include "scenario/diagnostics.hpp"
 
 namespace hydrodda::cli {
@@ -149,6 +150,20 @@ std::vector<std::optional<double>> find_fixed_permeability(const Scenario& s, co
       if (!fixed[t]) fixed[t] = *r->permeability;
   }
   return fixed;
+}
+
+std::vector<double> compute_matrix_permeability(const Scenario& s, const mesh::TriangleMesh& mesh) {
+  const std::vector<std::optional<double>> fixed = find_fixed_permeability(s, mesh);
+  std::optional<double> k_matrix;  // only where some element is not fixed is a material needed
+  std::vector<double> k(fixed.size());
+  for (std::size_t t = 0; t < fixed.size(); ++t) {
+    if (!fixed[t] && !k_matrix) {
+      const coupling::PermeabilityModel model = make_permeability_model(s);
+      k_matrix = hydro::kozeny_carman_permeability(model.matrix_porosity, model.grain_diameter, model.cap);
+    }
+    k[t] = fixed[t] ? *fixed[t] : *k_matrix;
+  }
+  return k;
 }
 
 hydro::DarcyProblem build_flow_problem(const scenario::FlowDefinition& f) {

@@ -42,6 +42,11 @@ std::vector<int> select_triangles_in(const mesh::TriangleMesh& mesh, const geome
 std::vector<std::optional<double>> find_fixed_permeability(const scenario::Scenario& scenario,
                                                            const mesh::TriangleMesh& mesh);
 
+// k per triangle of the unfractured case: intact rock of the matrix porosity everywhere
+// (k_m = Kozeny–Carman of φ_m, which both laws give where no fracture area lies), except where
+// a flow region fixes the permeability.
+std::vector<double> compute_matrix_permeability(const scenario::Scenario& scenario, const mesh::TriangleMesh& mesh);
+
 hydro::DarcyProblem build_flow_problem(const scenario::FlowDefinition& flow);
 
 // Total simulated time of a mechanics run: end_time, or steps × time_step.

@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include "cli/model_building.hpp"
+#include "hydro/darcy_solver.hpp"
 #include "hydro/region_flow.hpp"
 
 namespace hydrodda::cli {
@@ -28,8 +29,15 @@ output::RunSummary summarise_mechanics(const scenario::Scenario& s, const dda::S
   return summary;
 }
 
+std::optional<hydro::FlowSolution> solve_matrix_flow(const scenario::Scenario& s, const mesh::TriangleMesh& mesh) {
+  if (s.flow->regions.empty()) return std::nullopt;
+  hydro::DarcySolver solver(mesh, build_flow_problem(*s.flow));
+  return solver.solve(compute_matrix_permeability(s, mesh));
+}
+
 output::FlowSummary summarise_flow(const scenario::Scenario& s, const mesh::TriangleMesh& mesh,
-                                   const hydro::FlowSolution& solution) {
+                                   const hydro::FlowSolution& solution,
+                                   const std::optional<hydro::FlowSolution>& matrix) {
   output::FlowSummary flow;
   for (const hydro::BoundaryFlow& b : solution.boundary_flows) flow.boundaries.push_back({b.name, b.flow});
   flow.balance = solution.balance_error;
@@ -40,7 +48,10 @@ output::FlowSummary summarise_flow(const scenario::Scenario& s, const mesh::Tria
       continue;
     }
     const hydro::RegionFlow region = hydro::compute_region_flow(mesh, solution, triangles);
-    flow.regions.push_back({r.name, region.flow, region.effective_conductivity});
+    // What a run of the unfractured case reports for the region (its own flow direction).
+    const double k_matrix = hydro::compute_region_flow(mesh, *matrix, triangles).effective_conductivity;
+    flow.regions.push_back({r.name, region.flow, region.effective_conductivity, k_matrix,
+                            region.effective_conductivity / k_matrix});
   }
   return flow;
 }

@@ -1,6 +1,8 @@
 #pragma once
 // The parts of summary.json that every kind of run fills the same way.
 
+#include <optional>
+
 #include "dda/system.hpp"
 #include "hydro/flow_solution.hpp"
 #include "mesh/triangle_mesh.hpp"
@@ -12,8 +14,15 @@ namespace hydrodda::cli {
 // Title, blocks (centroid, displacement, rotation, stress, area) and measured points.
 output::RunSummary summarise_mechanics(const scenario::Scenario& scenario, const dda::System& system);
 
-// Boundary flows, mass balance, and each [[flow.region]]'s flow and effective conductivity.
+// The flow of the unfractured case (compute_matrix_permeability) under the same boundary
+// conditions, the reference of each region's normalised conductivity; nothing when the
+// scenario has no flow region to report.
+std::optional<hydro::FlowSolution> solve_matrix_flow(const scenario::Scenario& scenario, const mesh::TriangleMesh& mesh);
+
+// Boundary flows, mass balance, and each [[flow.region]]'s flow and effective conductivity,
+// with its conductivity in the unfractured case (`matrix`) and their ratio.
 output::FlowSummary summarise_flow(const scenario::Scenario& scenario, const mesh::TriangleMesh& mesh,
-                                   const hydro::FlowSolution& solution);
+                                   const hydro::FlowSolution& solution,
+                                   const std::optional<hydro::FlowSolution>& matrix);
 
 }  // namespace hydrodda::cli

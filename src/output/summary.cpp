@@ -34,7 +34,10 @@ std::string format_summary(const RunSummary& s) {
     for (const NamedValue& b : s.flow->boundaries) boundaries[b.name] = b.value;
     json regions = json::object();
     for (const RegionSummary& r : s.flow->regions)
-      regions[r.name] = {{"flow", r.flow}, {"effective_conductivity", r.effective_conductivity}};
+      regions[r.name] = {{"flow", r.flow},
+                         {"effective_conductivity", r.effective_conductivity},
+                         {"matrix_conductivity", r.matrix_conductivity},
+                         {"normalised_conductivity", r.normalised_conductivity}};
     out["flow"] = {{"boundaries", boundaries}, {"balance", s.flow->balance}, {"regions", regions}};
   }
   return out.dump(2) + "\n";

@@ -32,6 +32,8 @@ struct RegionSummary {
   std::string name;
   double flow = 0.0;
   double effective_conductivity = 0.0;
+  double matrix_conductivity = 0.0;      // the same region in the unfractured case
+  double normalised_conductivity = 0.0;  // effective / matrix
 };
 
 struct FlowSummary {

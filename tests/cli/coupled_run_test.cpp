@@ -46,6 +46,14 @@ TEST(CoupledRun, SixBlockModelConverges) {
   EXPECT_LT(in, 0.0);
   EXPECT_NEAR(in + out_flow, 0.0, 1e-10 * out_flow);
 
+  // The unfractured case: k_m = d² φ³ / (180 (1 − φ)²) (Kozeny–Carman, φ = 0.1, d = 1.2e-5 m)
+  // everywhere, left and right heads on a square: K_eff = k_m ρ g / μ exactly (1e-9, round-off).
+  const auto& model = summary["flow"]["regions"]["model"];
+  const double matrix = 1.2e-5 * 1.2e-5 * 1e-3 / (180.0 * 0.9 * 0.9) * 1000.0 * 9.81 / 1e-3;
+  EXPECT_NEAR(model["matrix_conductivity"].get<double>(), matrix, 1e-9 * matrix);
+  EXPECT_NEAR(model["normalised_conductivity"].get<double>(),
+              model["effective_conductivity"].get<double>() / model["matrix_conductivity"].get<double>(), 1e-12);
+
   const auto history = read_csv(out / "history.csv");
   ASSERT_EQ(history.size(), static_cast<std::size_t>(iterations) + 1);
   EXPECT_EQ(history[0][2], "head_change");
