@@ -2,6 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
+#include "geometry/polygon.hpp"
+
 #include "output/vtk_writer.hpp"
 
 namespace hydrodda::cli {
@@ -54,6 +58,37 @@ void ParaviewOutput::write_blocks(int step, double time, const dda::System& syst
   output::write_vtu_polygons(folder_.file(name), polygons, cells);
   if (!blocks_) blocks_.emplace(folder_.file("blocks.pvd"));
   blocks_->add(time, name);
+  write_contacts(step, time, system);
+}
+
+static_assert(static_cast<int>(dda::ContactState::open) == 0 && static_cast<int>(dda::ContactState::sliding) == 1 &&
+              static_cast<int>(dda::ContactState::locked) == 2);
+
+// Each contact as a line from block_i's vertex to the nearest point of block_j's edge: its
+// length shows the gap (or overlap) the contact measures.
+void ParaviewOutput::write_contacts(int step, double time, const dda::System& system) {
+  std::vector<std::array<geometry::Point, 2>> segments;
+  DataArray state{"state", 1, {}}, normal_force{"normal_force", 1, {}}, penetration{"penetration", 1, {}},
+      aperture{"aperture", 1, {}}, block_i{"block_i", 1, {}}, block_j{"block_j", 1, {}};
+  for (const dda::ContactInfo& c : system.contacts()) {
+    const geometry::Polygon vertex_block = system.polygon(c.key.block_i);
+    const geometry::Polygon edge_block = system.polygon(c.key.block_j);
+    const geometry::Point p = vertex_block[c.key.vertex];
+    const geometry::Point a = edge_block[c.key.edge];
+    const geometry::Point b = edge_block[(c.key.edge + 1) % edge_block.size()];
+    segments.push_back({p, geometry::closest_point_on_segment(p, a, b)});
+    state.values.push_back(static_cast<double>(c.state));  // 0 open, 1 sliding, 2 locked
+    normal_force.values.push_back(c.normal_force);
+    penetration.values.push_back(c.penetration);
+    aperture.values.push_back(std::max(0.0, -c.penetration));
+    block_i.values.push_back(c.key.block_i);
+    block_j.values.push_back(c.key.block_j);
+  }
+  const std::vector<DataArray> cells{state, normal_force, penetration, aperture, block_i, block_j};
+  const std::string name = fmt::format("contacts_{:04d}.vtu", step);
+  output::write_vtu_segments(folder_.file(name), segments, cells);
+  if (!contacts_) contacts_.emplace(folder_.file("contacts.pvd"));
+  contacts_->add(time, name);
 }
 
 }  // namespace hydrodda::cli

@@ -1,7 +1,8 @@
 #pragma once
 // The run's ParaView series: fluid.pvd over the fluid mesh (head, pressure, porosity,
-// permeability, flux, region) and blocks.pvd over the blocks (displacement, rotation, stress,
-// area), one .vtu of each per output step.
+// permeability, flux, region), blocks.pvd over the blocks (displacement, rotation, stress,
+// area) and contacts.pvd over the block contacts (state, normal force, penetration, aperture),
+// one .vtu of each per output step.
 
 #include <optional>
 #include <vector>
@@ -21,6 +22,7 @@ class ParaviewOutput {
   // `porosity` may be empty (flow-only runs without blocks).
   void write_fluid(int step, double time, const mesh::TriangleMesh& mesh, const hydro::FlowSolution& flow,
                    const std::vector<double>& porosity, const std::vector<double>& permeability);
+  // The blocks and their contacts (blocks_NNNN.vtu, contacts_NNNN.vtu).
   void write_blocks(int step, double time, const dda::System& system);
   // A continued run: lists again the fluid and block files an earlier part of the run wrote
   // at these steps (time = step, as in coupled runs), so the series stay whole.
@@ -30,6 +32,9 @@ class ParaviewOutput {
   const output::RunFolder& folder_;
   std::optional<output::PvdSeries> fluid_;
   std::optional<output::PvdSeries> blocks_;
+  std::optional<output::PvdSeries> contacts_;
+
+  void write_contacts(int step, double time, const dda::System& system);
 };
 
 }  // namespace hydrodda::cli

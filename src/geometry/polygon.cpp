@@ -113,12 +113,14 @@ bool contains(std::span<const Point> polygon, Point p) {
   return inside;
 }
 
-double distance_to_segment(Point p, Point a, Point b) {
+Point closest_point_on_segment(Point p, Point a, Point b) {
   const Point ab = b - a;
   const double len2 = dot(ab, ab);
-  if (len2 == 0.0) return distance(p, a);
+  if (len2 == 0.0) return a;
   const double t = std::clamp(dot(p - a, ab) / len2, 0.0, 1.0);
-  return distance(p, a + t * ab);
+  return a + t * ab;
 }
+
+double distance_to_segment(Point p, Point a, Point b) { return distance(p, closest_point_on_segment(p, a, b)); }
 
 }  // namespace hydrodda::geometry

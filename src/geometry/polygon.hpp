@@ -33,5 +33,7 @@ bool contains(std::span<const Point> polygon, Point p);
 
 // Distance from p to the closed segment ab.
 double distance_to_segment(Point p, Point a, Point b);
+// The point of segment ab nearest to p (a when the segment has no length).
+Point closest_point_on_segment(Point p, Point a, Point b);
 
 }  // namespace hydrodda::geometry

@@ -92,6 +92,14 @@ TEST(CoupledRun, SixBlockModelConverges) {
   EXPECT_NE(blocks.output.find("cells 6"), std::string::npos);
   EXPECT_NE(blocks.output.find("cell_array displacement 3 6"), std::string::npos);
   EXPECT_NE(blocks.output.find("cell_array stress 3 6"), std::string::npos);
+  // The contacts, one data set per iteration with their arrays (tests/cli/contact_output_test.cpp
+  // checks their values).
+  const auto contacts = run_command("/usr/bin/python3 " + check + " " + (out / "contacts.pvd").string());
+  ASSERT_EQ(contacts.exit_code, 0) << contacts.output.substr(0, 2000);
+  EXPECT_EQ(count_lines_starting(contacts.output, "dataset "), iterations);
+  for (const char* array : {"cell_array state 1", "cell_array normal_force 1", "cell_array penetration 1",
+                            "cell_array aperture 1"})
+    EXPECT_NE(contacts.output.find(array), std::string::npos) << array;
   fs::remove_all(out);
 }
 
