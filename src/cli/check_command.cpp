@@ -14,14 +14,8 @@ namespace hydrodda::cli {
 int check_command(const std::filesystem::path& file) {
   const auto scenario = load_scenario(file);
   if (!scenario) return kBadInput;
-  // What only building the model shows (a fixed point in no block, a boundary the mesh file
-  // does not name), short of meshing and running.
   try {
-    if (scenario->mechanics) build_mechanics_model(*scenario, build_blocks(*scenario));
-    if (scenario->mesh && scenario->mesh->file) {
-      const mesh::TriangleMesh mesh = read_mesh_file(*scenario);
-      spdlog::debug("mesh.file: {} nodes, {} triangles", mesh.node_count(), mesh.triangle_count());
-    }
+    check_model(*scenario);
   } catch (const scenario::ScenarioError& e) {
     print_scenario_errors(file, e);
     return kBadInput;
