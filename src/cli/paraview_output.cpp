@@ -33,9 +33,11 @@ void ParaviewOutput::write_fluid(int step, double time, const mesh::TriangleMesh
 void ParaviewOutput::list_written(const std::vector<int>& steps) {
   if (!fluid_) fluid_.emplace(folder_.file("fluid.pvd"));
   if (!blocks_) blocks_.emplace(folder_.file("blocks.pvd"));
+  if (!contacts_) contacts_.emplace(folder_.file("contacts.pvd"));
   for (int step : steps) {
     fluid_->add(step, fmt::format("fluid_{:04d}.vtu", step));
     blocks_->add(step, fmt::format("blocks_{:04d}.vtu", step));
+    contacts_->add(step, fmt::format("contacts_{:04d}.vtu", step));
   }
 }
 

@@ -24,7 +24,7 @@ class ParaviewOutput {
                    const std::vector<double>& porosity, const std::vector<double>& permeability);
   // The blocks and their contacts (blocks_NNNN.vtu, contacts_NNNN.vtu).
   void write_blocks(int step, double time, const dda::System& system);
-  // A continued run: lists again the fluid and block files an earlier part of the run wrote
+  // A continued run: lists again the fluid, block and contact files an earlier part of the run wrote
   // at these steps (time = step, as in coupled runs), so the series stay whole.
   void list_written(const std::vector<int>& steps);
 
