@@ -38,5 +38,9 @@ function(hydrodda_add_test_folder name)
   target_compile_definitions(${target} PRIVATE
     HYDRODDA_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     HYDRODDA_BINARY="$<TARGET_FILE:hydrodda_program>")
-  gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS ${name})
+  # Each build tree keeps its tests' scratch files apart, so two suites (say `make test` and
+  # `make asan`) can run at once without writing into each other's run folders.
+  file(MAKE_DIRECTORY ${CMAKE_BINARY_DIR}/test-tmp)
+  gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60
+                       PROPERTIES LABELS ${name} ENVIRONMENT TMPDIR=${CMAKE_BINARY_DIR}/test-tmp)
 endfunction()
