@@ -37,12 +37,21 @@ struct Frame {  // world (m) → page (points)
 
 std::string tick_label(double v) { return fmt::format("{:g}", v); }
 
-void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f) {
+constexpr double kMarginLeft = 70, kMarginRight = 120, kMarginTop = 50, kMarginBottom = 60;
+constexpr double kMinColourBarHeight = 120;  // room for a colour bar's ticks under a flat domain
+
+geometry::Box figure_box(const FieldFigure& f) {
   geometry::Box box;
   for (Point p : f.nodes) box.add(p);
   for (const auto& b : f.blocks)
     for (Point p : b) box.add(p);
-  const double margin_left = 70, margin_right = 120, margin_top = 50, margin_bottom = 60;
+  return box;
+}
+
+void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f) {
+  const geometry::Box box = figure_box(f);
+  const double margin_left = kMarginLeft, margin_right = kMarginRight, margin_top = kMarginTop,
+               margin_bottom = kMarginBottom;
   Frame fr;
   fr.scale = std::min((width - margin_left - margin_right) / box.width(), (height - margin_top - margin_bottom) / box.height());
   fr.x0 = box.lo.x;
@@ -165,7 +174,8 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
   draw_text(cr, f.title, 0.5 * width, 18, 0.5, 0.0);
 
   // Colour bar.
-  const double bar_x = fr.px(box.hi.x) + 25, bar_top = fr.py(box.hi.y), bar_height = box.height() * fr.scale;
+  const double bar_x = fr.px(box.hi.x) + 25, bar_top = fr.py(box.hi.y);
+  const double bar_height = std::max(box.height() * fr.scale, kMinColourBarHeight);
   for (int i = 0; i < 200; ++i) {
     const auto c = viridis(1.0 - i / 199.0);
     cairo_set_source_rgb(cr, c[0], c[1], c[2]);
@@ -190,7 +200,14 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
 }  // namespace
 
 void render_field_figure(const std::filesystem::path& path, const FieldFigure& figure) {
-  const double width = 760, height = 640;
+  // The page follows the domain's shape: a wide, flat layer gets a short page rather than a
+  // strip above a blank one; a tall domain is held to the largest height.
+  const double width = 760, largest_height = 640;
+  const geometry::Box box = figure_box(figure);
+  const double plot_width = width - kMarginLeft - kMarginRight;
+  const double plot_height = box.width() > 0 ? plot_width * box.height() / box.width() : plot_width;
+  const double height =
+      std::min(largest_height, kMarginTop + kMarginBottom + std::max(plot_height, kMinColourBarHeight));
   draw_to_file(path, width, height, [&](cairo_t* cr) { draw_figure(cr, width, height, figure); });
 }
 
