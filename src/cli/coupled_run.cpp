@@ -57,6 +57,7 @@ output::RunSummary run_coupled(const RunContext& context) {
       static_cast<int>(std::ceil(*s.mechanics->end_time / s.mechanics->time_step)));
   settings.permeability = make_permeability_model(s);
   settings.fixed_permeability = find_fixed_permeability(s, mesh);
+  settings.stop_requested = interrupt_requested;
   coupling::StaggeredLoop loop(mesh, build_flow_problem(*s.flow), system, settings);
   // The unfractured case does not change between passes: solved once.
   const std::optional<hydro::FlowSolution> matrix_flow = solve_matrix_flow(s, mesh);
@@ -76,6 +77,8 @@ output::RunSummary run_coupled(const RunContext& context) {
     const output::RunCheckpoint& saved = *context.resume;
     system.import_state(saved.mechanics);
     loop.import_state(saved.coupling);
+    checkpoint.mechanics = saved.mechanics;
+    checkpoint.coupling = saved.coupling;
     checkpoint.history = saved.history;
     checkpoint.written_iterations = saved.written_iterations;
     for (const std::vector<std::string>& row : saved.history) history.add_row(row);
@@ -119,6 +122,7 @@ output::RunSummary run_coupled(const RunContext& context) {
     context.folder.write("checkpoint.bin", output::encode_checkpoint(checkpoint));
     system.import_state(checkpoint.mechanics);
   };
+  const dda::SystemState initial_mechanics = system.export_state();
   try {
     for (int k = loop.iterations(); k < s.coupling.max_iterations && !converged; ++k) {
       if (interrupt_requested())
@@ -165,6 +169,18 @@ output::RunSummary run_coupled(const RunContext& context) {
     }
   } catch (const RunFailure&) {
     throw;
+  } catch (const coupling::PassInterrupted& e) {
+    // Back to the last finished pass, the state the run folder and the checkpoint hold (before
+    // the first pass: the blocks as built), so that summary.json describes it.
+    if (loop.iterations() > 0) {
+      system.import_state(checkpoint.mechanics);
+      loop.import_state(checkpoint.coupling);
+    } else {
+      system.import_state(initial_mechanics);
+    }
+    throw RunFailure(fmt::format("interrupted: {}; the results are those of coupling iteration {}", e.what(),
+                                 loop.iterations()),
+                     current_summary());
   } catch (const std::exception& e) {
     throw RunFailure(fmt::format("coupling iteration {} failed: {}", loop.iterations() + 1, e.what()), current_summary());
   }

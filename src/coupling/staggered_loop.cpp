@@ -111,6 +111,9 @@ PassReport StaggeredLoop::run_pass() {
   // Mechanics under the mechanical and fluid loads.
   start = Clock::now();
   for (int s = 0; s < settings_.steps_per_pass; ++s) {
+    if (settings_.stop_requested && settings_.stop_requested())
+      throw PassInterrupted("coupling iteration " + std::to_string(iteration_) + " stopped at DDA step " +
+                            std::to_string(s + 1) + " of " + std::to_string(settings_.steps_per_pass));
     try {
       mechanics_.step();
     } catch (const std::exception& e) {

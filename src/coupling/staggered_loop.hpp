@@ -11,6 +11,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 #include "coupling/permeability_model.hpp"
@@ -33,8 +34,17 @@ struct LoopSettings {
   int diverging_passes = 5;
   double diverging_growth = 10.0;
   PermeabilityModel permeability;
+  // Asked before every DDA step: true abandons the pass (PassInterrupted), so that a long pass
+  // does not hold up an interrupt until its end. Unset: never.
+  std::function<bool()> stop_requested;
   // Per element: a permeability fixed by the scenario (flow regions), or none.
   std::vector<std::optional<double>> fixed_permeability;
+};
+
+// Thrown by run_pass when LoopSettings::stop_requested says so; the pass is not counted and the
+// blocks stand wherever its last DDA step left them.
+struct PassInterrupted : std::runtime_error {
+  using std::runtime_error::runtime_error;
 };
 
 // What one pass did and measured.
