@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -45,7 +46,19 @@ std::string replace_all(std::string text, const std::string& from, const std::st
 struct RunResult {
   nlohmann::json summary = nlohmann::json::object();
   std::vector<std::vector<std::string>> history;  // history.csv, header first
+  std::string contacts;                           // the last pass's contacts_NNNN.vtu
 };
+
+// The values of the named cell array of an ASCII .vtu file.
+std::vector<double> read_vtu_array(const std::string& vtu, const std::string& name) {
+  std::vector<double> values;
+  const std::size_t at = vtu.find("Name=\"" + name + "\"");
+  if (at == std::string::npos) return values;
+  const std::size_t first = vtu.find('>', at) + 1, last = vtu.find("</DataArray>", first);
+  std::stringstream numbers(vtu.substr(first, last - first));
+  for (double v; numbers >> v;) values.push_back(v);
+  return values;
+}
 
 // Runs a scenario file into a fresh temporary folder named `name`; exit code 0 expected.
 RunResult run_and_read(const fs::path& scenario, const std::string& name) {
@@ -56,6 +69,11 @@ RunResult run_and_read(const fs::path& scenario, const std::string& name) {
   RunResult r;
   if (std::ifstream in(out / "summary.json"); in) r.summary = nlohmann::json::parse(in);
   r.history = read_csv(out / "history.csv");
+  if (r.summary.contains("iterations")) {
+    char contacts[32];
+    std::snprintf(contacts, sizeof contacts, "contacts_%04d.vtu", r.summary["iterations"].get<int>());
+    r.contacts = read_text(out / contacts);
+  }
   fs::remove_all(out);
   return r;
 }
@@ -99,36 +117,64 @@ TEST(CoupledVerification, HydraulicJackingStartsAtTheForceBalance) {
   }
 }
 
-TEST(CoupledVerification, HydrostaticColumnOnlySettlesElastically) {
-  // Equal heads (3 m) on the bottom and the top: the head is 3 m everywhere, no flow. The dry
-  // column (H = 3 m, plane strain, E' = E / (1 - nu^2)) settles at height y by
-  //   s_dry(y) = rho_r g (H y - y^2 / 2) / E'.
-  // Water does not add to it: each block's settlement lies between the effective-stress value
-  // (rho_r - rho_w) / rho_r * s_dry and s_dry + n * 1.5e-6 m (n contacts below it, each allowed
-  // to penetrate 1e-4 of the allowed step displacement, 0.01 * 1.5 m). Horizontal displacement
-  // under 1e-7 m (1% of the top's settlement), no contact open by more than 1e-9 m, and
-  // |flow| under 1e-15 m2/s on both boundaries (a 1 mm head difference would drive 3e-12).
+TEST(CoupledVerification, HydrostaticColumnFloatsOnItsContacts) {
+  // Equal heads (3 m) on the bottom and the top: the head is 3 m everywhere, no flow; |flow|
+  // under 1e-15 m2/s on both boundaries (a 1 mm head difference would drive 3e-12).
+  // The water presses on every face, the contact faces too: each block takes Archimedes'
+  // buoyancy, and an interface carries the effective weight of the blocks above it,
+  //   N = (rho_r - rho_w) g * (3 m - y) * 1 m   (14,715 N at y = 2 m, 29,430 N at y = 1 m),
+  // within rho_w g * 0.1 m * 1 m = 981 N: a vertex takes the pressure of an element centroid
+  // up to one element (mesh size 0.1 m) away. Every contact stays locked (none opens or slides),
+  // no contact opens by more than 1e-9 m in any pass, horizontal displacement under 1e-7 m
+  // (1% of the top's settlement).
+  // Settlement, elastic only: with the dry column (H = 3 m, plane strain, E' = E / (1 - nu^2))
+  //   s_dry(y) = rho_r g (H y - y^2 / 2) / E',
+  // each block's lies between the effective-stress value (rho_r - rho_w) / rho_r * s_dry and
+  // s_dry + n * 1.5e-6 m (n contacts below it, each allowed to penetrate 1e-4 of the allowed
+  // step displacement, 0.01 * 1.5 m).
   const RunResult r = run_and_read(kVerification / "coupled_hydrostatic_column.toml", "hydrostatic");
   const auto& s = r.summary;
   ASSERT_TRUE(s.contains("flow"));
   EXPECT_EQ(s["converged"], true);
-  for (const char* boundary : {"bottom", "top"}) EXPECT_LE(std::abs(s["flow"]["boundaries"][boundary].get<double>()), 1e-15) << boundary;
+  for (const char* boundary : {"bottom", "top"})
+    EXPECT_LE(std::abs(s["flow"]["boundaries"][boundary].get<double>()), 1e-15) << boundary;
+
+  // Contact forces per interface (an interface y = k lies between blocks k - 1 and k).
+  const auto state = read_vtu_array(r.contacts, "state");
+  const auto normal = read_vtu_array(r.contacts, "normal_force");
+  const auto block_i = read_vtu_array(r.contacts, "block_i");
+  const auto block_j = read_vtu_array(r.contacts, "block_j");
+  ASSERT_FALSE(state.empty());
+  ASSERT_EQ(normal.size(), state.size());
+  ASSERT_EQ(block_i.size(), state.size());
+  ASSERT_EQ(block_j.size(), state.size());
+  double interface_force[3] = {0.0, 0.0, 0.0};
+  for (std::size_t c = 0; c < state.size(); ++c) {
+    EXPECT_EQ(state[c], 2.0) << "contact " << c << " must stay locked";
+    const int upper = static_cast<int>(std::max(block_i[c], block_j[c]));
+    ASSERT_EQ(std::abs(block_i[c] - block_j[c]), 1.0) << "contact " << c << " joins neighbours";
+    interface_force[upper] += normal[c];
+  }
+  for (int y = 1; y <= 2; ++y) {
+    const double expected = (kRhoRock - kRhoWater) * kG * (3.0 - y) * 1.0;
+    EXPECT_NEAR(interface_force[y], expected, kRhoWater * kG * 0.1 * 1.0) << "interface y = " << y << " m";
+  }
 
   const double young = 1.0e10, poisson = 0.25, height = 3.0;
   const double e_plane = young / (1.0 - poisson * poisson);
   const auto s_dry = [&](double y) { return kRhoRock * kG * (height * y - 0.5 * y * y) / e_plane; };
-  const double buoyant = (kRhoRock - kRhoWater) / kRhoRock;
+  const double effective = (kRhoRock - kRhoWater) / kRhoRock;
   const double penetration = 1e-4 * 0.01 * 0.5 * height;
   ASSERT_EQ(s["blocks"].size(), 3u);
   for (int k = 0; k < 3; ++k) {  // bottom to top; block k has k contacts below it
     const auto& u = s["blocks"][k]["displacement"];
     const double settlement = -u[1].get<double>(), y = k + 0.5;
     EXPECT_LT(std::abs(u[0].get<double>()), 1e-7) << "block " << k;
-    EXPECT_GE(settlement, buoyant * s_dry(y)) << "block " << k;
+    EXPECT_GE(settlement, effective * s_dry(y)) << "block " << k;
     EXPECT_LE(settlement, s_dry(y) + k * penetration) << "block " << k;
   }
   const double top = -s["measure"]["top"]["displacement"][1].get<double>();
-  EXPECT_GE(top, buoyant * s_dry(height));
+  EXPECT_GE(top, effective * s_dry(height));
   EXPECT_LE(top, s_dry(height) + 2 * penetration);
 
   ASSERT_GE(r.history.size(), 2u);
