@@ -6,7 +6,12 @@
 // faces a distance w apart this is exactly w wherever the centroid lies, in the gap or inside
 // either block, so the cubic law's transmissivity does not depend on how the element sits
 // across the fracture. Where fewer than two blocks are within reach, the domain boundary is a
-// wall too (a block pulled away from it leaves a gap against it).
+// wall too (a block pulled away from it leaves a gap against it). The two nearest walls must
+// face each other (their distances grow in opposite directions, within 45°); where they do
+// not, the narrowest open gap between facing walls, the domain boundary among them, is taken:
+// an element along the boundary, its centroid in a block that has moved a little off the
+// boundary, has the sliver the block left, not the distance to the block across a fracture
+// behind it.
 
 #include <array>
 #include <span>
