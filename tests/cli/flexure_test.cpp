@@ -1,4 +1,4 @@
-// The paper's symmetric flexure model (scenarios/paper/symmetric_flexure_*.toml) through the real
+// The paper's flexure models (scenarios/paper/*_flexure_*.toml) through the real
 // program: it converges, it stays mirror-symmetric, and a larger head differential flexes the
 // layer more and raises the central region's conductivity (the trend of the paper's Fig. 9).
 
@@ -65,6 +65,18 @@ TEST(SymmetricFlexure, LargerHeadDifferentialFlexesMoreAndConductsMore) {
   EXPECT_EQ(low["converged"], true);
   EXPECT_EQ(high["converged"], true);
   EXPECT_GT(largest_uplift(high), largest_uplift(low));
+  EXPECT_GT(normalised_conductivity(low), 1.0);
+  EXPECT_GT(normalised_conductivity(high), normalised_conductivity(low));
+}
+
+// The asymmetric flexure model: a larger end moment turns the left end further, opens the
+// joints wider and raises the central region's conductivity; every load converges.
+TEST(AsymmetricFlexure, LargerEndLoadConductsMore) {
+  const nlohmann::json low = run_scenario_and_read("scenarios/paper/asymmetric_flexure_5mpa.toml");
+  const nlohmann::json high = run_scenario_and_read("scenarios/paper/asymmetric_flexure_20mpa.toml");
+  ASSERT_TRUE(low.contains("flow") && high.contains("flow"));
+  EXPECT_EQ(low["converged"], true);
+  EXPECT_EQ(high["converged"], true);
   EXPECT_GT(normalised_conductivity(low), 1.0);
   EXPECT_GT(normalised_conductivity(high), normalised_conductivity(low));
 }
