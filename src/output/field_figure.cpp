@@ -206,8 +206,8 @@ void render_field_figure(const std::filesystem::path& path, const FieldFigure& f
   const geometry::Box box = figure_box(figure);
   const double plot_width = width - kMarginLeft - kMarginRight;
   const double plot_height = box.width() > 0 ? plot_width * box.height() / box.width() : plot_width;
-  const double height =
-      std::min(largest_height, kMarginTop + kMarginBottom + std::max(plot_height, kMinColourBarHeight));
+  const double height = std::min(
+      largest_height, kMarginTop + std::max(plot_height + kMarginBottom, kMinColourBarHeight + 15));
   draw_to_file(path, width, height, [&](cairo_t* cr) { draw_figure(cr, width, height, figure); });
 }
 
