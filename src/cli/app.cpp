@@ -83,6 +83,10 @@ int run_app(int argc, char** argv) {
                         "A summary.json path to gather, e.g. flow.regions.core.effective_conductivity (repeatable)")
       ->allow_extra_args(false);
   sweep_cmd->add_flag("--overwrite", sweep.overwrite, "Replace results in a sweep folder that already holds files");
+  sweep_cmd->add_flag("--zip", sweep.zip,
+                      "Take the --set lists together (case i sets every key to its i-th value) instead of "
+                      "running every combination");
+  sweep_cmd->add_option("--title", sweep.title, "Title of sweep.png (default: the scenario's title)");
 
   for (CLI::App* sub : {run_cmd, check_cmd, sweep_cmd}) {
     sub->add_flag("-q,--quiet", quiet, "Print warnings and errors only");

@@ -26,6 +26,8 @@ struct SweepOptions {
   std::optional<int> jobs;                      // default: the hardware threads
   std::vector<std::string> columns;             // dotted paths into summary.json
   bool overwrite = false;
+  bool zip = false;                             // the --set lists taken together, not combined
+  std::optional<std::string> title;             // sweep.png's title (default: the scenario's)
 };
 
 int check_command(const std::filesystem::path& scenario);

@@ -82,15 +82,16 @@ int sweep_command(const SweepOptions& options) {
   const auto base = load_scenario(options.scenario);
   if (!base) return kBadInput;
   std::vector<SweepAxis> axes;
+  std::vector<std::vector<scenario::Override>> cases;
   try {
     for (const std::string& set : options.sets) axes.push_back(parse_sweep_axis(set));
+    cases = options.zip ? zip_cases(axes) : enumerate_cases(axes);
   } catch (const std::invalid_argument& e) {
     print_error(e.what());
     return kBadInput;
   }
   const fs::path directory =
       options.output.value_or(fs::path("out") / (options.scenario.stem().string() + "-sweep"));
-  const std::vector<std::vector<scenario::Override>> cases = enumerate_cases(axes);
   std::vector<std::string> region_names;
   const auto prepared = prepare_cases(options.scenario, directory, cases, region_names);
   if (!prepared) {
@@ -127,7 +128,7 @@ int sweep_command(const SweepOptions& options) {
   spdlog::info("sweep of {}: {} case(s), {} at a time, in {}", options.scenario.string(), cases.size(), jobs,
                directory.string());
 
-  SweepResults results(axes, cases, columns);
+  SweepResults results(axes, cases, columns, options.zip);
   for (std::size_t i = 0; i < prepared->size(); ++i) results.set_name(i, (*prepared)[i].name);
   install_interrupt_handlers();
   std::size_t finished = 0;
@@ -151,7 +152,7 @@ int sweep_command(const SweepOptions& options) {
   }
   for (std::size_t index : never_started) results.record_not_run(index);
   folder->write("sweep.csv", results.csv_text());
-  results.plot(directory / "sweep.png", base->title);
+  results.plot(directory / "sweep.png", options.title.value_or(base->title));
 
   const std::size_t failed = results.count_not_ok();
   if (failed > 0) {

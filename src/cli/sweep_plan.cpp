@@ -70,4 +70,19 @@ std::vector<std::vector<scenario::Override>> enumerate_cases(const std::vector<S
   return cases;
 }
 
+std::vector<std::vector<scenario::Override>> zip_cases(const std::vector<SweepAxis>& axes) {
+  std::vector<std::vector<scenario::Override>> cases;
+  if (axes.empty()) return {{}};
+  for (const SweepAxis& axis : axes)
+    if (axis.values.size() != axes[0].values.size())
+      throw std::invalid_argument("--zip: --set " + axes[0].key + " has " + std::to_string(axes[0].values.size()) +
+                                  " value(s) but --set " + axis.key + " has " + std::to_string(axis.values.size()) +
+                                  "; zipped keys need as many values each");
+  for (std::size_t i = 0; i < axes[0].values.size(); ++i) {
+    cases.emplace_back();
+    for (const SweepAxis& axis : axes) cases.back().push_back({axis.key, axis.values[i]});
+  }
+  return cases;
+}
+
 }  // namespace hydrodda::cli

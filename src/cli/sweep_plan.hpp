@@ -1,5 +1,6 @@
 #pragma once
-// The cases of a parameter sweep: every combination of the values given with --set.
+// The cases of a parameter sweep: every combination of the values given with --set, or
+// (--zip) the values taken together.
 
 #include <string>
 #include <vector>
@@ -21,5 +22,10 @@ SweepAxis parse_sweep_axis(const std::string& option);
 // The Cartesian product of the axes' values, the first axis varying slowest: case i sets
 // axes[k].key to its value in each.
 std::vector<std::vector<scenario::Override>> enumerate_cases(const std::vector<SweepAxis>& axes);
+
+// The axes' values taken together (--zip): case i sets every axis's key to its i-th value, so
+// that keys which must move together (the two ends of a couple) are swept as one. Throws
+// std::invalid_argument naming the axes when they do not all have the same number of values.
+std::vector<std::vector<scenario::Override>> zip_cases(const std::vector<SweepAxis>& axes);
 
 }  // namespace hydrodda::cli

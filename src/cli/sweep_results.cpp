@@ -36,8 +36,12 @@ std::string find_last_error(const std::filesystem::path& log) {
 }  // namespace
 
 SweepResults::SweepResults(std::vector<SweepAxis> axes, std::vector<std::vector<scenario::Override>> cases,
-                           std::vector<std::string> columns)
-    : axes_(std::move(axes)), cases_(std::move(cases)), columns_(std::move(columns)), results_(cases_.size()) {}
+                           std::vector<std::string> columns, bool zipped)
+    : axes_(std::move(axes)),
+      cases_(std::move(cases)),
+      columns_(std::move(columns)),
+      zipped_(zipped),
+      results_(cases_.size()) {}
 
 void SweepResults::set_name(std::size_t index, std::string name) { results_[index].name = std::move(name); }
 
@@ -116,7 +120,7 @@ void SweepResults::plot(const std::filesystem::path& file, const std::string& ti
     const std::optional<double> y = r.status == "ok" && r.columns[0] ? to_number(*r.columns[0]) : std::nullopt;
     if (!y) continue;
     std::string series;
-    for (std::size_t k = 1; k < cases_[i].size(); ++k)
+    for (std::size_t k = 1; !zipped_ && k < cases_[i].size(); ++k)
       series += fmt::format("{}{} = {}", series.empty() ? "" : ", ", cases_[i][k].key, cases_[i][k].value);
     auto it = std::find_if(spec.series.begin(), spec.series.end(),
                            [&](const output::LineSeries& s) { return s.name == series; });

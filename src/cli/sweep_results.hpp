@@ -19,9 +19,10 @@ struct CaseResult {
 
 class SweepResults {
  public:
-  // `columns` are dotted paths into each case's summary.json.
+  // `columns` are dotted paths into each case's summary.json; `zipped`: the keys moved
+  // together (sweep --zip), so the plot draws one curve against the first.
   SweepResults(std::vector<SweepAxis> axes, std::vector<std::vector<scenario::Override>> cases,
-               std::vector<std::string> columns);
+               std::vector<std::string> columns, bool zipped = false);
 
   void set_name(std::size_t index, std::string name);
   // Reads the case's summary.json; a case is "ok" when its run exited with 0 and says so.
@@ -41,6 +42,7 @@ class SweepResults {
   std::vector<SweepAxis> axes_;
   std::vector<std::vector<scenario::Override>> cases_;
   std::vector<std::string> columns_;
+  bool zipped_ = false;
   std::vector<CaseResult> results_;
 };
 

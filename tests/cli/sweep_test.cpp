@@ -130,6 +130,32 @@ TEST(Sweep, BadInputIsRefusedBeforeAnythingRuns) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+// --zip takes the lists together: two cases, not four, each key at the same position; lists of
+// different lengths are refused before anything runs.
+TEST(Sweep, ZipTakesTheListsTogether) {
+  const fs::path out = fresh_dir("hydrodda-sweep-zip");
+  const std::string scenario = (kSource / "scenarios/verification/flow_linear_head.toml").string();
+  const auto result = run_program("sweep " + scenario +
+                                  " --set flow.boundary[0].head=3,5 --set flow.region[0].permeability=1e-12,2e-12"
+                                  " --zip --title 'Two zipped keys' -o " + out.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const auto rows = read_csv(out / "sweep.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[1][1], "3");
+  EXPECT_EQ(rows[1][2], "1e-12");
+  EXPECT_EQ(rows[2][1], "5");
+  EXPECT_EQ(rows[2][2], "2e-12");
+  EXPECT_TRUE(fs::exists(out / "sweep.png"));
+  fs::remove_all(out);
+
+  const auto uneven = run_program("sweep " + scenario +
+                                  " --set flow.boundary[0].head=3,5,7 --set flow.region[0].permeability=1e-12,2e-12"
+                                  " --zip -o " + out.string());
+  EXPECT_EQ(uneven.exit_code, 2);
+  EXPECT_NE(uneven.output.find("zipped keys need as many values each"), std::string::npos) << uneven.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
 TEST(Sweep, InterruptStopsLaunchingAndReachesTheRunningCase) {
   const fs::path out = fresh_dir("hydrodda-sweep-interrupt");
   const std::string scenario = (kSource / "scenarios/paper/six_block_lr_rl.toml").string();
