@@ -1,5 +1,7 @@
 #include "dda/system.hpp"
 
+#include "dda/anderson.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -415,6 +417,7 @@ double System::compute_shear_strength(const ActiveContact& c, double normal_forc
 //     factor K(states)
 //     repeat (Lagrangian): solve K D = F(λ, friction); λ ← λ + p d on closed contacts
 //       until every closed penetration < tolerance and the friction loads settle
+//       (the sliding contacts' normal forces, a fixed point mixed by Anderson acceleration)
 //     re-check each contact: open ↔ closed by penetration / tension, locked ↔ sliding by
 //     Mohr–Coulomb
 //   not settled in max iterations → the caller cuts Δt and retries.
@@ -426,29 +429,43 @@ bool System::solve_step(double dt, Eigen::VectorXd& d, StepReport& report) {
   for (int oc = 0; oc < settings_.max_open_close_iterations; ++oc) {
     report.open_close_iterations = oc + 1;
     factor_with_contacts(base);
+    // The sliding contacts' normal forces: those the friction loads were made with (x) and
+    // those the solution gives (G(x)).
+    std::vector<ActiveContact*> sliding;
+    for (ActiveContact& c : active_)
+      if (c.record.state == ContactState::sliding) sliding.push_back(&c);
+    Eigen::VectorXd used(sliding.size());
+    Eigen::VectorXd image(sliding.size());
+    AndersonAccelerator friction_mixing;
     for (int al = 0; al < settings_.max_lagrangian_iterations; ++al) {
       ++report.lagrangian_iterations;
+      for (std::size_t k = 0; k < sliding.size(); ++k) used[k] = sliding[k]->record.normal_force;
       d = solver_->solve(assemble_contact_rhs(f_base));
       double deepest = 0.0;
       double force_scale = 0.0;
-      double friction_change = 0.0;
       for (ActiveContact& c : active_) {
         if (!is_closed(c.record.state)) continue;
         const double pen = compute_penetration(c, d);
         const double normal = compute_normal_force(c, pen);
         deepest = std::max(deepest, std::abs(pen));
         force_scale = std::max(force_scale, std::abs(normal));
-        if (c.record.state == ContactState::sliding)
-          friction_change = std::max(friction_change, std::abs(normal - c.record.normal_force));
         c.record.normal_force = normal;
         c.record.penetration = pen;
       }
+      for (std::size_t k = 0; k < sliding.size(); ++k) image[k] = sliding[k]->record.normal_force;
+      const double friction_change = sliding.empty() ? 0.0 : (image - used).lpNorm<Eigen::Infinity>();
       const bool penetration_ok = !lagrangian || deepest <= penetration_tolerance_;
       const bool friction_ok = friction_change <= 1e-6 * force_scale;
       if (penetration_ok && friction_ok) break;
-      if (!penetration_ok)
+      if (al + 1 == settings_.max_lagrangian_iterations) break;  // the records keep G(x)
+      if (!penetration_ok) {
         for (ActiveContact& c : active_)
           if (is_closed(c.record.state)) c.record.multiplier = c.record.normal_force;
+        friction_mixing.reset();  // a new map: its history no longer applies
+      } else {
+        const Eigen::VectorXd mixed = friction_mixing.next(used, image);
+        for (std::size_t k = 0; k < sliding.size(); ++k) sliding[k]->record.normal_force = mixed[k];
+      }
     }
     // Hysteresis bands (1% of the penetration tolerance) keep a contact that merely touches,
     // or a joint under no load, from flipping state on round-off. A closed joint set carrying
