@@ -1,0 +1,2 @@
+contactforces = [
+];
