@@ -71,6 +71,21 @@ TEST(ContactDetection, CoincidingCornersCountTheFaceOnce) {
   EXPECT_NEAR(total, 1.0, 1e-12);
 }
 
+// Bricks offset by half a length, one on the other: the 1 m overlap of their faces is one
+// vertex–edge contact at each end of it (the upper brick's corner on the lower face, the lower
+// brick's corner on the upper face), each carrying half the overlap, so cohesion and tensile
+// strength act on 1 m (to 1e-12), not on both faces' lengths.
+TEST(ContactDetection, OffsetFacesCountTheOverlapOnce) {
+  const Polygon lower = make_rectangle(0, 0, 2, 1);
+  const Polygon upper = make_rectangle(1, 1, 3, 2);
+  std::vector<ContactCandidate> found;
+  find_pair_contacts(lower, 0, upper, 1, 0.01, found);
+  double total = 0.0;
+  for (const ContactCandidate& c : found) total += c.length;
+  EXPECT_EQ(found.size(), 2u);
+  EXPECT_NEAR(total, 1.0, 1e-12);
+}
+
 // A corner that lies on the line of two edges of the other block (side-by-side bricks) has
 // two candidate entrance edges at equal gaps: the one carrying the face contact is taken,
 // whatever the round-off, so the contact keeps its key from step to step.
