@@ -420,8 +420,8 @@ double System::compute_shear_strength(const ActiveContact& c, double normal_forc
 //       (the sliding contacts' normal forces, a fixed point mixed by Anderson acceleration)
 //     re-check each contact: open ↔ closed by penetration / tension, locked ↔ sliding by
 //     Mohr–Coulomb
-//   not settled in max iterations → the caller cuts Δt and retries.
-bool System::solve_step(double dt, Eigen::VectorXd& d, StepReport& report) {
+//   not settled in max iterations (states or forces) → the caller cuts Δt and retries.
+System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& report) {
   std::vector<Matrix6> base;
   Eigen::VectorXd f_base;
   assemble_blocks(dt, base, f_base);
@@ -457,7 +457,8 @@ bool System::solve_step(double dt, Eigen::VectorXd& d, StepReport& report) {
       const bool penetration_ok = !lagrangian || deepest <= penetration_tolerance_;
       const bool friction_ok = friction_change <= 1e-6 * force_scale;
       if (penetration_ok && friction_ok) break;
-      if (al + 1 == settings_.max_lagrangian_iterations) break;  // the records keep G(x)
+      // Forces that have not settled are no solution to accept: the step is cut and retried.
+      if (al + 1 == settings_.max_lagrangian_iterations) return Unsettled::contact_forces;
       if (!penetration_ok) {
         for (ActiveContact& c : active_)
           if (is_closed(c.record.state)) c.record.multiplier = c.record.normal_force;
@@ -509,10 +510,10 @@ bool System::solve_step(double dt, Eigen::VectorXd& d, StepReport& report) {
         changed = true;
       }
     }
-    if (!changed) return true;
+    if (!changed) return Unsettled::no;
     linearise_contacts();  // new shear references for contacts that closed
   }
-  return false;
+  return Unsettled::contact_states;
 }
 
 // ---- the step ----
@@ -523,7 +524,8 @@ StepReport System::step() {
   for (;;) {
     detect_contacts();
     Eigen::VectorXd d;
-    const bool settled = solve_step(dt_, d, report);
+    const Unsettled unsettled = solve_step(dt_, d, report);
+    const bool settled = unsettled == Unsettled::no;
     double largest = 0.0;
     int largest_block = -1;
     if (settled) {
@@ -550,7 +552,10 @@ StepReport System::step() {
           format_number(time_) + " s): " +
           (settled ? "block " + std::to_string(largest_block) + " still moved " + format_number(largest) +
                          " m in a step, more than the allowed " + format_number(allowed_displacement_) + " m"
-                   : "the open-close iteration did not settle the contact states"));
+                   : unsettled == Unsettled::contact_states
+                         ? "the open-close iteration did not settle the contact states"
+                         : "the contact forces (Lagrange multipliers and friction) did not settle in " +
+                               std::to_string(settings_.max_lagrangian_iterations) + " passes"));
     dt_ *= settled ? std::max(0.1, 0.9 * allowed_displacement_ / largest) : 0.3;
   }
   report.time = time_;

@@ -142,7 +142,9 @@ class System {
   };
   void detect_contacts();
   void linearise_contacts();
-  bool solve_step(double dt, Eigen::VectorXd& d, StepReport& report);
+  // Why a step's solve did not settle, if it did not.
+  enum class Unsettled { no, contact_states, contact_forces };
+  Unsettled solve_step(double dt, Eigen::VectorXd& d, StepReport& report);
   void assemble_blocks(double dt, std::vector<Matrix6>& k_base, Eigen::VectorXd& f_base) const;
   void factor_with_contacts(const std::vector<Matrix6>& base_blocks);
   bool update_states();

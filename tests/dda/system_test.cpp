@@ -189,4 +189,24 @@ TEST(System, AStepThatNeverSettlesSaysWhatFailedAndWhen) {
   }
 }
 
+// Contact forces that do not settle are no solution either. With a penalty so soft that the
+// block's weight pushes it past the penetration tolerance (1e-6 m) in a 1 ms step, the
+// augmented Lagrangian needs a second pass to lift it out; allowed one, every step is cut
+// until a single pass is enough, and no accepted step penetrates past the tolerance (the
+// first step, accepted as the pass left it, would penetrate 4.2e-6 m).
+TEST(System, ContactForcesThatDoNotSettleAreNotAccepted) {
+  ModelDefinition m = testing::make_incline(30.0, 10.0, 0.0);
+  m.settings.penalty = 1e3;
+  m.settings.penetration_tolerance = 1e-6;
+  m.settings.max_lagrangian_iterations = 1;
+  System system(std::move(m));
+  int retries = 0;
+  for (int k = 0; k < 20; ++k) {
+    const StepReport r = system.step();
+    retries += r.retries;
+    EXPECT_LE(r.max_penetration, 1e-6) << "step " << k;
+  }
+  EXPECT_GT(retries, 0);
+}
+
 }  // namespace hydrodda::dda
