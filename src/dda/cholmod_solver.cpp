@@ -7,8 +7,8 @@
 //   factor(A, terms):  for the terms that appeared since the factor was made: update L;
 //                      for those that disappeared: downdate L (with the vector it was made with)
 //   solve(b):          conjugate gradients on the current A preconditioned by L (Saad,
-//                      alg. 9.1), from the last solution; L differs from A only by the geometric drift, so a few
-//                      iterations reach ‖b − A x‖ ≤ tol ‖b‖. When they do not (the drift has
+//                      alg. 9.1), from the last solution; L differs from A only by the
+//                      geometric drift, so a few iterations reach ‖b − A x‖ ≤ tol ‖b‖. When they do not (the drift has
 //                      grown, or an update failed or was not worth making), A is factored
 //                      again and solved directly.
 // Updates and downdates: Davis & Hager, "Multiple-rank modifications of a sparse Cholesky

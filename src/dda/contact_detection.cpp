@@ -68,10 +68,8 @@ constexpr double kParallelTolerance = 0.05;
 constexpr double kCornerTieTolerance = 1e-3;
 
 // Signed distance of p outside the line of edge (a, b) of a counter-clockwise polygon.
-double compute_gap(Point p, Point a, Point b) {
-  const double length = geometry::distance(a, b);
-  return -geometry::orient(a, b, p) / length;
-}
+double compute_gap(Point p, Point a, Point b, double length) { return -geometry::orient(a, b, p) / length; }
+double compute_gap(Point p, Point a, Point b) { return compute_gap(p, a, b, geometry::distance(a, b)); }
 
 // Half the length, along the edge and inside it, of each face incident to the vertex that
 // lies along the edge: the share of the face contact this vertex carries.
@@ -135,7 +133,7 @@ void find_one_way(std::span<const Point> va, int a, std::span<const Point> eb, i
       const Point e0 = edge.a;
       const Point e1 = edge.b;
       const double length = edge.length;
-      const double gap = -geometry::orient(e0, e1, p) / length;
+      const double gap = compute_gap(p, e0, e1, length);
       if (gap > distance || gap < -distance) continue;
       const double t = dot(p - e0, e1 - e0) / (length * length);
       const double slack = distance / length;

@@ -54,8 +54,8 @@ class LinearSolver {
 // CHOLMOD's simplicial LDLᵀ, ordered by AMD on the block graph (6× fewer nodes than the
 // scalar graph). The factor follows the contact springs by rank-one updates and downdates and
 // serves as the preconditioner of conjugate gradients on the current matrix (which also moved
-// with the geometry), warm-started from the last solution, for up to max_iterations iterations to ‖b − A x‖ ≤ tolerance ‖b‖; when
-// it stops helping, the matrix is factored again.
+// with the geometry), started from the last solution, for up to max_iterations iterations to
+// ‖b − A x‖ ≤ tolerance ‖b‖; when it stops helping, the matrix is factored again.
 std::unique_ptr<LinearSolver> make_cholmod_solver(double tolerance = 1e-12,
                                                   int max_iterations = 25);
 

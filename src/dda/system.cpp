@@ -1,13 +1,13 @@
 #include "dda/system.hpp"
 
-#include "dda/anderson.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+
+#include "dda/anderson.hpp"
 
 namespace hydrodda::dda {
 

@@ -50,14 +50,13 @@ geometry::Box figure_box(const FieldFigure& f) {
 
 void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f) {
   const geometry::Box box = figure_box(f);
-  const double margin_left = kMarginLeft, margin_right = kMarginRight, margin_top = kMarginTop,
-               margin_bottom = kMarginBottom;
   Frame fr;
-  fr.scale = std::min((width - margin_left - margin_right) / box.width(), (height - margin_top - margin_bottom) / box.height());
+  fr.scale = std::min((width - kMarginLeft - kMarginRight) / box.width(),
+                      (height - kMarginTop - kMarginBottom) / box.height());
   fr.x0 = box.lo.x;
   fr.y0 = box.lo.y;
-  fr.left = margin_left;
-  fr.bottom = margin_top + box.height() * fr.scale;
+  fr.left = kMarginLeft;
+  fr.bottom = kMarginTop + box.height() * fr.scale;
 
   // Field range.
   const bool per_node = !f.node_field.empty();

@@ -14,6 +14,13 @@ namespace {
 using geometry::Box;
 using testing::make_rectangle;
 
+// The face length the contacts carry between them (what cohesion and tensile strength act on).
+double total_length(const std::vector<ContactCandidate>& found) {
+  double total = 0.0;
+  for (const ContactCandidate& c : found) total += c.length;
+  return total;
+}
+
 // The grid finds exactly the pairs an all-pairs check finds (random boxes, sizes 0.1–3).
 TEST(ContactDetection, BroadPhaseEqualsAllPairs) {
   std::mt19937 rng(7);
@@ -59,16 +66,12 @@ TEST(ContactDetection, CoincidingCornersCountTheFaceOnce) {
   const Polygon right = make_rectangle(1, 0, 2, 1);
   std::vector<ContactCandidate> found;
   find_pair_contacts(left, 0, right, 1, 0.01, found);
-  double total = 0.0;
-  for (const ContactCandidate& c : found) total += c.length;
   EXPECT_EQ(found.size(), 2u);
-  EXPECT_NEAR(total, 1.0, 1e-12);
+  EXPECT_NEAR(total_length(found), 1.0, 1e-12);
   // The same seen from the other block (the pair given the other way round).
   found.clear();
   find_pair_contacts(right, 1, left, 0, 0.01, found);
-  total = 0.0;
-  for (const ContactCandidate& c : found) total += c.length;
-  EXPECT_NEAR(total, 1.0, 1e-12);
+  EXPECT_NEAR(total_length(found), 1.0, 1e-12);
 }
 
 // Bricks offset by half a length, one on the other: the 1 m overlap of their faces is one
@@ -80,10 +83,8 @@ TEST(ContactDetection, OffsetFacesCountTheOverlapOnce) {
   const Polygon upper = make_rectangle(1, 1, 3, 2);
   std::vector<ContactCandidate> found;
   find_pair_contacts(lower, 0, upper, 1, 0.01, found);
-  double total = 0.0;
-  for (const ContactCandidate& c : found) total += c.length;
   EXPECT_EQ(found.size(), 2u);
-  EXPECT_NEAR(total, 1.0, 1e-12);
+  EXPECT_NEAR(total_length(found), 1.0, 1e-12);
 }
 
 // A corner that lies on the line of two edges of the other block (side-by-side bricks) has
