@@ -20,14 +20,11 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include <Eigen/OrderingMethods>
 
 #include "dda/linear_solver.hpp"
 
 namespace hydrodda::dda {
 namespace {
-
-using Permutation = Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>;
 
 bool id_less(const RankOneTerm& a, const RankOneTerm& b) { return a.id < b.id; }
 
@@ -53,13 +50,9 @@ class CholmodSolver final : public LinearSolver {
   CholmodSolver(const CholmodSolver&) = delete;
   CholmodSolver& operator=(const CholmodSolver&) = delete;
 
-  void factor(const SparseMatrix& lower, int block_count,
-              const std::vector<std::pair<int, int>>& block_pairs,
-              const std::vector<RankOneTerm>& terms) override {
-    if (ordering_.empty() || block_count != block_count_) compute_ordering(block_count, block_pairs);
-    matrix_ = lower;
-    matrix_.makeCompressed();
-    pairs_ = block_pairs;
+  void factor(const BlockMatrix& a, const std::vector<RankOneTerm>& terms) override {
+    if (ordering_.empty() || a.block_count != block_count_) compute_ordering(a);
+    matrix_ = a.lower_triangle();
     if (factor_ != nullptr && !stale_) {
       if (!follow_terms(terms)) stale_ = true;
     }
@@ -109,25 +102,12 @@ class CholmodSolver final : public LinearSolver {
   // False if it did not: too many changes at once, or a downdate CHOLMOD could not make (one
   // that would lose positive definiteness).
   bool follow_terms(const std::vector<RankOneTerm>& terms) {
-    // One walk over both sorted lists: what appeared, what disappeared.
-    added_.clear();
-    removed_.clear();
-    std::size_t i = 0, j = 0;
-    while (i < terms.size() || j < factored_terms_.size()) {
-      if (j == factored_terms_.size() || (i < terms.size() && terms[i].id < factored_terms_[j].id)) {
-        added_.push_back(terms[i++]);
-      } else if (i == terms.size() || factored_terms_[j].id < terms[i].id) {
-        removed_.push_back(factored_terms_[j++]);
-      } else {
-        ++i;
-        ++j;
-      }
-    }
-    if (added_.empty() && removed_.empty()) return true;
     // Many changes at once (contacts landing all over a settling packing): each update walks
     // a path of L, and past a quarter of the block count a fresh factorisation costs less
     // (bench_dda: the 1,601-block packing went from 709 to 95 ms a step, the wall unchanged).
-    if (4 * (added_.size() + removed_.size()) > static_cast<std::size_t>(block_count_)) return false;
+    if (!find_changed_terms(terms, factored_terms_, static_cast<std::size_t>(block_count_) / 4, added_, removed_))
+      return false;
+    if (added_.empty() && removed_.empty()) return true;
     if (!modify_factor(added_, true) || !modify_factor(removed_, false)) return false;
     // What L now holds: the kept terms as they were made, and the new ones.
     std::vector<RankOneTerm> held;
@@ -263,27 +243,15 @@ class CholmodSolver final : public LinearSolver {
     stale_ = false;
   }
 
-  // AMD on the block graph (6× fewer nodes than the scalar one), expanded to the unknowns.
-  // The graph is that of the first matrix; later contacts change the fill a little, not the
-  // correctness.
-  void compute_ordering(int block_count, const std::vector<std::pair<int, int>>& block_pairs) {
-    std::vector<Eigen::Triplet<double>> entries;
-    entries.reserve(block_count + 2 * block_pairs.size());
-    for (int b = 0; b < block_count; ++b) entries.emplace_back(b, b, 1.0);
-    for (auto [i, j] : block_pairs) {
-      entries.emplace_back(i, j, 1.0);
-      entries.emplace_back(j, i, 1.0);
-    }
-    SparseMatrix graph(block_count, block_count);
-    graph.setFromTriplets(entries.begin(), entries.end());
-    Permutation block_inverse;
-    Eigen::AMDOrdering<int>()(graph, block_inverse);
-    // Eigen's orderings give the inverse permutation, position k → the block eliminated k-th:
-    // CHOLMOD's convention for a given order.
-    ordering_.resize(6 * block_count);
-    for (int k = 0; k < block_count; ++k)
-      for (int r = 0; r < 6; ++r) ordering_[6 * k + r] = 6 * block_inverse.indices()[k] + r;
-    block_count_ = block_count;
+  // Minimum degree on the block graph, expanded to the unknowns. The graph is that of the
+  // first matrix; later contacts change the fill a little, not the correctness.
+  void compute_ordering(const BlockMatrix& a) {
+    const std::vector<int> blocks = order_by_minimum_degree(a);
+    // CHOLMOD's convention for a given order is the same: position k → the unknown eliminated k-th.
+    ordering_.resize(6 * a.block_count);
+    for (int k = 0; k < a.block_count; ++k)
+      for (int r = 0; r < 6; ++r) ordering_[6 * k + r] = 6 * blocks[k] + r;
+    block_count_ = a.block_count;
     cholmod_free_factor(&factor_, &common_);
   }
 
@@ -298,7 +266,6 @@ class CholmodSolver final : public LinearSolver {
   mutable std::vector<int> inverse_order_;
   int block_count_ = -1;
   SparseMatrix matrix_;
-  std::vector<std::pair<int, int>> pairs_;
   std::vector<RankOneTerm> terms_;                   // of the current matrix
   mutable std::vector<RankOneTerm> factored_terms_;  // as held by the factor
   std::vector<RankOneTerm> added_, removed_;

@@ -17,19 +17,11 @@ class ConjugateGradientSolver final : public LinearSolver {
   ConjugateGradientSolver(double tolerance, int max_iterations)
       : tolerance_(tolerance), max_iterations_(max_iterations) {}
 
-  void factor(const SparseMatrix& lower, int block_count, const std::vector<std::pair<int, int>>&,
-              const std::vector<RankOneTerm>&) override {
-    matrix_ = lower;
-    // Row-major full symmetric copy for the products.
-    full_ = lower.selfadjointView<Eigen::Lower>();
-    inverse_blocks_.resize(block_count);
-    for (int b = 0; b < block_count; ++b) {
-      Eigen::Matrix<double, 6, 6> d;
-      for (int r = 0; r < 6; ++r)
-        for (int c = 0; c < 6; ++c) d(r, c) = full_.coeff(6 * b + r, 6 * b + c);
-      inverse_blocks_[b] = d.inverse();
-    }
-    if (guess_.size() != lower.rows()) guess_ = Eigen::VectorXd::Zero(lower.rows());
+  void factor(const BlockMatrix& a, const std::vector<RankOneTerm>&) override {
+    matrix_ = a;
+    inverse_blocks_.resize(a.block_count);
+    for (int b = 0; b < a.block_count; ++b) inverse_blocks_[b] = a.diagonal[b].inverse();
+    if (guess_.size() != a.size()) guess_ = Eigen::VectorXd::Zero(a.size());
   }
 
   SolverCounts counts() const override { return counts_; }
@@ -42,14 +34,15 @@ class ConjugateGradientSolver final : public LinearSolver {
     const double b_norm = rhs.norm();
     Eigen::VectorXd x = guess_;
     if (b_norm == 0.0) return Eigen::VectorXd::Zero(rhs.size());
-    Eigen::VectorXd r = rhs - full_ * x;
+    Eigen::VectorXd q(rhs.size());
+    matrix_.multiply(x, q);
+    Eigen::VectorXd r = rhs - q;
     Eigen::VectorXd z = precondition(r);
     Eigen::VectorXd p = z;
-    Eigen::VectorXd q(rhs.size());
     double rz = r.dot(z);
     int it = 0;
     for (; it < max_iterations_ && r.norm() > tolerance_ * b_norm; ++it) {
-      q.noalias() = full_ * p;
+      matrix_.multiply(p, q);
       const double alpha = rz / p.dot(q);
       x += alpha * p;
       r -= alpha * q;
@@ -75,8 +68,7 @@ class ConjugateGradientSolver final : public LinearSolver {
 
   double tolerance_;
   int max_iterations_;
-  SparseMatrix matrix_;
-  Eigen::SparseMatrix<double, Eigen::RowMajor, int> full_;
+  BlockMatrix matrix_;
   std::vector<Eigen::Matrix<double, 6, 6>> inverse_blocks_;
   mutable Eigen::VectorXd guess_;
   mutable SolverCounts counts_;

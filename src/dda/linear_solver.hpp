@@ -9,9 +9,9 @@
 
 #include <Eigen/Sparse>
 
-namespace hydrodda::dda {
+#include "dda/block_matrix.hpp"
 
-using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+namespace hydrodda::dda {
 
 // One rank-one part w wᵀ of the matrix with w nonzero on at most two blocks: a contact
 // spring, w = √p e. `id` names the part from call to call.
@@ -21,6 +21,13 @@ struct RankOneTerm {
   Eigen::Matrix<double, 6, 1> w_a = Eigen::Matrix<double, 6, 1>::Zero();
   Eigen::Matrix<double, 6, 1> w_b = Eigen::Matrix<double, 6, 1>::Zero();
 };
+
+// The terms of `now` that `before` lacks (added) and those of `before` that `now` lacks
+// (removed), both lists sorted by id, as a solver that follows the springs needs them. False,
+// with the lists incomplete, as soon as there are more than `limit` changes.
+bool find_changed_terms(const std::vector<RankOneTerm>& now, const std::vector<RankOneTerm>& before,
+                        std::size_t limit, std::vector<RankOneTerm>& added,
+                        std::vector<RankOneTerm>& removed);
 
 // What a solver has done so far, for benchmarks and tests.
 struct SolverCounts {
@@ -33,14 +40,11 @@ struct SolverCounts {
 class LinearSolver {
  public:
   virtual ~LinearSolver() = default;
-  // Factor the symmetric positive definite matrix given by its lower triangle. It is made of
-  // 6×6 blocks; block_pairs (i < j, sorted) lists its off-diagonal block pattern. `terms`
-  // (sorted by id) are the rank-one parts of the matrix that come and go between calls, the
-  // contact springs: a solver that keeps a factorisation may update it by the parts that
-  // appeared and disappeared instead of starting again. The answer is always the matrix's.
-  virtual void factor(const SparseMatrix& lower, int block_count,
-                      const std::vector<std::pair<int, int>>& block_pairs,
-                      const std::vector<RankOneTerm>& terms = {}) = 0;
+  // Factor the symmetric positive definite block matrix. `terms` (sorted by id) are the
+  // rank-one parts of the matrix that come and go between calls, the contact springs: a
+  // solver that keeps a factorisation may follow the parts that appeared and disappeared
+  // instead of starting again. The answer is always the matrix's.
+  virtual void factor(const BlockMatrix& matrix, const std::vector<RankOneTerm>& terms = {}) = 0;
   // Solve with the last factorisation.
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const = 0;
   virtual SolverCounts counts() const = 0;
@@ -50,6 +54,14 @@ class LinearSolver {
   // does the run it must reproduce, at the same point.
   virtual void reset() = 0;
 };
+
+// The default: a block Cholesky factor (block_cholesky.hpp), kept from call to call, follows
+// the contact springs by a low-rank Sherman–Morrison–Woodbury correction and serves as the
+// preconditioner of conjugate gradients on the current matrix, started from the last
+// solution, for up to max_iterations iterations to ‖b − A x‖ ≤ tolerance ‖b‖; when it stops
+// helping, the matrix is factored again. Throws if the matrix is not positive definite.
+std::unique_ptr<LinearSolver> make_block_factor_solver(double tolerance = 1e-12,
+                                                       int max_iterations = 25);
 
 // CHOLMOD's simplicial LDLᵀ, ordered by AMD on the block graph (6× fewer nodes than the
 // scalar graph). The factor follows the contact springs by rank-one updates and downdates and

@@ -160,12 +160,15 @@ void System::detect_contacts() {
             [](const ContactCandidate& x, const ContactCandidate& y) { return x.key < y.key; });
   active_.clear();
   active_.reserve(found.size());
+  // Both lists are in key order: one walk finds each candidate's record from the last step.
+  auto record = records_.begin();
   for (const ContactCandidate& c : found) {
     ActiveContact a;
     a.key = c.key;
     a.length = c.length;
-    if (auto it = records_.find(c.key); it != records_.end()) {
-      a.record = it->second;
+    while (record != records_.end() && record->first < c.key) ++record;
+    if (record != records_.end() && record->first == c.key) {
+      a.record = record->second;
     } else {
       // Touching (within the hysteresis band) counts as closed: a settled packing starts
       // with its contacts carrying load instead of finding them one open–close pass at a time.
@@ -281,16 +284,18 @@ void System::factor_with_contacts(const std::vector<Matrix6>& base_blocks) {
   // contact, kept as (column, row) with row > column, sorted.
   // The buffers are members, reused from call to call: fresh ones cost more in page faults
   // than the assembly itself.
-  std::vector<std::pair<int, int>>& pairs = assembly_.pairs;
+  BlockMatrix& k = assembly_.matrix;
+  k.block_count = unknown_count_;
+  std::vector<std::pair<int, int>>& pairs = k.pairs;
   pairs.clear();
   for (const ActiveContact& c : active_)
     if (is_closed(c.record.state) && c.dof_i >= 0 && c.dof_j >= 0 && c.dof_i != c.dof_j)
       pairs.emplace_back(std::min(c.dof_i, c.dof_j), std::max(c.dof_i, c.dof_j));
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  std::vector<Matrix6>& diagonal = assembly_.diagonal;
+  std::vector<Matrix6>& diagonal = k.diagonal;
   diagonal.assign(base_blocks.begin(), base_blocks.end());
-  std::vector<Matrix6>& off = assembly_.off;  // block (row, column)
+  std::vector<Matrix6>& off = k.off;  // block (row, column)
   off.assign(pairs.size(), Matrix6::Zero());
   // The same springs as rank-one terms √p e (√p e)ᵀ, for a solver that follows them.
   std::vector<RankOneTerm>& terms = assembly_.terms;
@@ -329,38 +334,7 @@ void System::factor_with_contacts(const std::vector<Matrix6>& base_blocks) {
       }
     }
   }
-  // Compressed lower triangle, column by column: the diagonal block's lower part, then the
-  // off-diagonal blocks of that block column in row order.
-  const int n = 6 * unknown_count_;
-  std::vector<int>& first_pair = assembly_.first_pair;
-  first_pair.assign(unknown_count_ + 1, 0);
-  for (auto [col, row] : pairs) ++first_pair[col + 1];
-  for (int b = 0; b < unknown_count_; ++b) first_pair[b + 1] += first_pair[b];
-  SparseMatrix& k = assembly_.matrix;
-  if (k.rows() != n) k.resize(n, n);
-  k.resizeNonZeros(unknown_count_ * 21 + static_cast<int>(pairs.size()) * 36);
-  int* outer = k.outerIndexPtr();
-  int* inner = k.innerIndexPtr();
-  double* value = k.valuePtr();
-  int nz = 0;
-  for (int b = 0; b < unknown_count_; ++b) {
-    for (int c = 0; c < 6; ++c) {
-      outer[6 * b + c] = nz;
-      for (int r = c; r < 6; ++r) {
-        inner[nz] = 6 * b + r;
-        value[nz++] = diagonal[b](r, c);
-      }
-      for (int p = first_pair[b]; p < first_pair[b + 1]; ++p) {
-        const int row = pairs[p].second;
-        for (int r = 0; r < 6; ++r) {
-          inner[nz] = 6 * row + r;
-          value[nz++] = off[p](r, c);
-        }
-      }
-    }
-  }
-  outer[n] = nz;
-  solver_->factor(k, unknown_count_, pairs, terms);
+  solver_->factor(k, terms);
 }
 
 Eigen::VectorXd System::assemble_contact_rhs(const Eigen::VectorXd& f_base) const {
@@ -590,7 +564,7 @@ void System::commit_step(const Eigen::VectorXd& d, double dt) {
     b.velocity = dynamic ? Vector6(2.0 / dt * db - b.velocity) : Vector6::Zero();
     b.moments = compute_moments(b.polygon);
   }
-  records_.clear();
+  records_.clear();  // active_ is in key order, and so stays records_
   for (ActiveContact& c : active_) {
     ContactRecord r = c.record;
     r.penetration = compute_penetration(c, d);
@@ -605,7 +579,7 @@ void System::commit_step(const Eigen::VectorXd& d, double dt) {
       const Point p = blocks_[c.key.block_i].polygon[c.key.vertex];
       r.reference_ratio = std::clamp(dot(p - a, b - a) / dot(b - a, b - a), 0.0, 1.0);
     }
-    records_.emplace(c.key, r);
+    records_.emplace_back(c.key, r);
   }
   time_ += dt;
 }

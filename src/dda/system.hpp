@@ -70,7 +70,7 @@ struct SystemState {
 class System {
  public:
   explicit System(ModelDefinition definition,
-                  std::unique_ptr<LinearSolver> solver = make_cholmod_solver());
+                  std::unique_ptr<LinearSolver> solver = make_block_factor_solver());
 
   // One time step (cut and retried as needed).
   StepReport step();
@@ -173,15 +173,13 @@ class System {
 
   // Buffers of factor_with_contacts, kept between calls.
   struct AssemblyBuffers {
-    std::vector<std::pair<int, int>> pairs;
-    std::vector<Matrix6> diagonal, off;
+    BlockMatrix matrix;
     std::vector<RankOneTerm> terms;
-    std::vector<int> first_pair;
-    SparseMatrix matrix;
   };
   AssemblyBuffers assembly_;
 
-  std::map<ContactKey, ContactRecord> records_;
+  // The contacts of the last step, in key order.
+  std::vector<std::pair<ContactKey, ContactRecord>> records_;
   std::vector<ActiveContact> active_;
   int unknown_count_ = 0;
   double time_ = 0.0;

@@ -1,4 +1,5 @@
 // Export and import of a System's evolving state (see SystemState), for checkpoints.
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -79,7 +80,13 @@ void System::import_state(const SystemState& s) {
   }
   time_ = s.time;
   dt_ = s.time_step;
-  records_ = std::map<ContactKey, ContactRecord>(s.contacts.begin(), s.contacts.end());
+  // In key order, the first of any repeated key kept.
+  records_ = s.contacts;
+  const auto key_less = [](const auto& a, const auto& b) { return a.first < b.first; };
+  std::stable_sort(records_.begin(), records_.end(), key_less);
+  records_.erase(std::unique(records_.begin(), records_.end(),
+                             [](const auto& a, const auto& b) { return a.first == b.first; }),
+                 records_.end());
   active_.clear();
   const auto restore = [](std::vector<TrackedPoint>& points, const std::vector<Point>& positions) {
     for (std::size_t i = 0; i < points.size(); ++i) points[i].position = positions[i];

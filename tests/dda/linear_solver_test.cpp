@@ -1,5 +1,6 @@
-// Both LinearSolver implementations against a dense solve of a random SPD block matrix, and
-// the factor-reuse path of the CHOLMOD solver on a nearby matrix.
+// The LinearSolver implementations against a dense solve of a random SPD block matrix, and
+// the factor-reuse paths of the kept-factor solvers (block Cholesky, CHOLMOD) on nearby
+// matrices and springs that come and go.
 
 #include "dda/linear_solver.hpp"
 
@@ -36,27 +37,42 @@ TEST(LinearSolver, DirectAndIterativeMatchADenseSolve) {
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(180, -1.0, 2.0);
   const Eigen::VectorXd expected = dense.llt().solve(b);
   std::vector<std::unique_ptr<LinearSolver>> solvers;
+  solvers.push_back(make_block_factor_solver());
   solvers.push_back(make_cholmod_solver());
   solvers.push_back(make_conjugate_gradient_solver());
   for (auto& solver : solvers) {
-    solver->factor(a, 30, pairs);
+    solver->factor(block_form(a, 30));
     EXPECT_LT((solver->solve(b) - expected).norm(), 1e-10 * expected.norm());
   }
 }
 
-// After factor() with a perturbed matrix (1e-3 relative), the CHOLMOD solver's answer is the
-// new matrix's, whether reached by CG on the old factor or by refactoring.
-TEST(LinearSolver, ReusedFactorSolvesTheNewMatrix) {
+// The solvers that keep a factorisation from call to call.
+struct KeptFactorSolver {
+  const char* name;
+  std::unique_ptr<LinearSolver> (*make)();
+};
+std::unique_ptr<LinearSolver> make_block() { return make_block_factor_solver(); }
+std::unique_ptr<LinearSolver> make_cholmod() { return make_cholmod_solver(); }
+
+class KeptFactor : public ::testing::TestWithParam<KeptFactorSolver> {};
+
+INSTANTIATE_TEST_SUITE_P(LinearSolver, KeptFactor,
+                         ::testing::Values(KeptFactorSolver{"block", make_block},
+                                           KeptFactorSolver{"cholmod", make_cholmod}),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+// After factor() with a perturbed matrix (1e-3 relative), the answer is the new matrix's,
+// whether reached by CG on the old factor or by refactoring.
+TEST_P(KeptFactor, ReusedFactorSolvesTheNewMatrix) {
   std::vector<std::pair<int, int>> pairs;
   const SparseMatrix a = make_block_chain(30, 1.0, pairs);
   const SparseMatrix a2 = make_block_chain(30, 1.001, pairs);
   const Eigen::MatrixXd dense2 = a2.selfadjointView<Eigen::Lower>() * Eigen::MatrixXd::Identity(180, 180);
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(180, -1.0, 2.0);
-  auto solver = make_cholmod_solver();
-  pairs.resize(29);
-  solver->factor(a, 30, pairs);
+  auto solver = GetParam().make();
+  solver->factor(block_form(a, 30));
   solver->solve(b);
-  solver->factor(a2, 30, pairs);
+  solver->factor(block_form(a2, 30));
   const Eigen::VectorXd expected = dense2.llt().solve(b);
   EXPECT_LT((solver->solve(b) - expected).norm(), 1e-10 * expected.norm());
 }
@@ -89,51 +105,55 @@ struct ChainWithSprings {
     }
     return dense;
   }
-  static SparseMatrix lower_of(const Eigen::MatrixXd& dense) {
-    return Eigen::MatrixXd(dense.triangularView<Eigen::Lower>()).sparseView();
+  static BlockMatrix block_of(const Eigen::MatrixXd& dense) {
+    const SparseMatrix lower = Eigen::MatrixXd(dense.triangularView<Eigen::Lower>()).sparseView();
+    return block_form(lower, static_cast<int>(dense.rows() / 6));
   }
 };
 
 // Springs that come and go: A = B + Σ w wᵀ over the listed terms. After factor(A1, T1) and a
-// solve, factor(A2, T2) with one term gone, one kept and two new: the CHOLMOD solver updates
-// and downdates its factor instead of refactoring, and its answer is still A2⁻¹ b to 1e-10
+// solve, factor(A2, T2) with one term gone, one kept and two new: the solver follows the
+// three changed springs (CHOLMOD updates and downdates its factor; the block solver corrects
+// its preconditioner by Sherman–Morrison–Woodbury) instead of refactoring, and its answer is still A2⁻¹ b to 1e-10
 // relative, the same bound as the direct solve.
-TEST(LinearSolver, FactorFollowsSpringsThatComeAndGo) {
+TEST_P(KeptFactor, FactorFollowsSpringsThatComeAndGo) {
   ChainWithSprings chain;
   const RankOneTerm gone = chain.make_term(1, 3, 4), kept = chain.make_term(2, 10, 11);
   const RankOneTerm new_a = chain.make_term(3, 20, 21), new_b = chain.make_term(4, 25, -1);
   const std::vector<RankOneTerm> first{gone, kept}, second{kept, new_a, new_b};
   const Eigen::MatrixXd dense1 = chain.dense_with(first), dense2 = chain.dense_with(second);
-  std::vector<std::pair<int, int>> pairs2 = chain.pairs;
-  pairs2.emplace_back(25, 29);  // unused slot: the pattern may grow
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(180, -1.0, 2.0);
-  auto solver = make_cholmod_solver();
-  solver->factor(ChainWithSprings::lower_of(dense1), 30, chain.pairs, first);
+  auto solver = GetParam().make();
+  solver->factor(ChainWithSprings::block_of(dense1), first);
   const Eigen::VectorXd x1 = dense1.llt().solve(b);
   EXPECT_LT((solver->solve(b) - x1).norm(), 1e-10 * x1.norm());
-  solver->factor(ChainWithSprings::lower_of(dense2), 30, chain.pairs, second);
+  const long iterations_before = solver->counts().iterations;
+  solver->factor(ChainWithSprings::block_of(dense2), second);
   const Eigen::VectorXd x2 = dense2.llt().solve(b);
   EXPECT_LT((solver->solve(b) - x2).norm(), 1e-10 * x2.norm());
-  // Reached by updating, not refactoring: one factorisation, three terms changed, and (the
-  // factor being exact for A2) no iteration.
+  // Reached by following, not refactoring: one factorisation and three terms changed. The
+  // followed factor is exact for A2, so CG needs one iteration in exact arithmetic, and one
+  // more at most for the round-off of the downdate (w wᵀ taken back out of the factor that
+  // holds it); an uncorrected factor would need up to four (three rank-one changes).
   EXPECT_EQ(solver->counts().factorisations, 1);
   EXPECT_EQ(solver->counts().modified_terms, 3);
-  EXPECT_EQ(solver->counts().iterations, 0);
+  EXPECT_LE(solver->counts().iterations - iterations_before, 2);
 }
 
-// More springs changing at once than a quarter of the block count (here 10 new on 30 blocks):
-// the solver factors afresh instead of updating, and the answer is still A2⁻¹ b to 1e-10.
-TEST(LinearSolver, ManySpringsChangingAtOnceAreFactoredAfresh) {
+// More springs changing at once than either solver follows (CHOLMOD: a quarter of the block
+// count; the block solver: 48), here 60 new on 30 blocks: the solver factors afresh instead,
+// and the answer is still A2⁻¹ b to 1e-10.
+TEST_P(KeptFactor, ManySpringsChangingAtOnceAreFactoredAfresh) {
   ChainWithSprings chain;
   const std::vector<RankOneTerm> first{chain.make_term(1, 0, 1)};
   std::vector<RankOneTerm> second = first;
-  for (int k = 0; k < 10; ++k) second.push_back(chain.make_term(2 + k, 2 * k + 2, 2 * k + 3));
+  for (int k = 0; k < 60; ++k) second.push_back(chain.make_term(2 + k, k % 29, k % 29 + 1));
   const Eigen::MatrixXd dense1 = chain.dense_with(first), dense2 = chain.dense_with(second);
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(180, -1.0, 2.0);
-  auto solver = make_cholmod_solver();
-  solver->factor(ChainWithSprings::lower_of(dense1), 30, chain.pairs, first);
+  auto solver = GetParam().make();
+  solver->factor(ChainWithSprings::block_of(dense1), first);
   solver->solve(b);
-  solver->factor(ChainWithSprings::lower_of(dense2), 30, chain.pairs, second);
+  solver->factor(ChainWithSprings::block_of(dense2), second);
   const Eigen::VectorXd x2 = dense2.llt().solve(b);
   EXPECT_LT((solver->solve(b) - x2).norm(), 1e-10 * x2.norm());
   EXPECT_EQ(solver->counts().factorisations, 2);

@@ -1,0 +1,255 @@
+// The default DDA solver: a kept block Cholesky factor (block_cholesky.hpp) as the
+// preconditioner of conjugate gradients on the current matrix.
+//
+// A DDA step changes its matrix in two ways: every contact whose state flips (open, sliding,
+// locked) adds or removes a penalty spring, a rank-one term w wᵀ over two blocks; and the
+// geometry moves a little, which changes every entry slightly. So the factor P = L Lᵀ is kept
+// from one open–close pass and one step to the next:
+//   factor(A, terms):  the springs that appeared (+) or disappeared (−) since P was made
+//                      become a low-rank correction M = P + W S Wᵀ, S = diag(±1), whose
+//                      inverse is applied by the Sherman–Morrison–Woodbury identity
+//                        M⁻¹ = P⁻¹ − Z (S⁻¹ + Wᵀ Z)⁻¹ Zᵀ,   Z = P⁻¹ W (one solve per spring)
+//                      (Hager, "Updating the inverse of a matrix", SIAM Review 31, 1989)
+//   solve(b):          conjugate gradients on the current A preconditioned by M (Saad,
+//                      alg. 9.1) from the last solution; M differs from A by the geometric
+//                      drift only, so a few iterations reach ‖b − A x‖ ≤ tol ‖b‖.
+// When the corrections grow past kMaxCorrections, or CG needs more than kRefactorAfter
+// iterations (the drift has grown), A is factored afresh.
+#include <algorithm>
+#include <string>
+#include <stdexcept>
+
+#include <Eigen/Dense>
+
+#include "dda/block_cholesky.hpp"
+#include "dda/linear_solver.hpp"
+
+namespace hydrodda::dda {
+namespace {
+
+// One spring of the low-rank correction: its vector w as the factor knew it (removed springs)
+// or as it came (added ones), and the sign of w wᵀ. Its z = P⁻¹ w is a column of Z.
+struct Correction {
+  RankOneTerm term;
+  double sign = 1.0;
+};
+
+class BlockFactorSolver final : public LinearSolver {
+ public:
+  BlockFactorSolver(double tolerance, int max_iterations)
+      : tolerance_(tolerance), max_iterations_(max_iterations) {}
+
+  void factor(const BlockMatrix& a, const std::vector<RankOneTerm>& terms) override {
+    if (order_.empty() || a.block_count != static_cast<int>(order_.size())) compute_ordering(a);
+    matrix_ = a;
+    terms_ = terms;
+    if (!factor_.empty() && !stale_ && !follow_terms()) stale_ = true;
+  }
+
+  SolverCounts counts() const override { return counts_; }
+
+  void reset() override {
+    factor_.clear();
+    order_.clear();
+    terms_.clear();
+    factored_terms_.clear();
+    corrections_.clear();
+    last_solution_.resize(0);
+    stale_ = true;
+  }
+
+  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const override {
+    ++counts_.solves;
+    const double b_norm = rhs.norm();
+    if (b_norm == 0.0) return Eigen::VectorXd::Zero(rhs.size());
+    if (factor_.empty() || stale_) refactor();
+    Eigen::VectorXd x;
+    int iterations = run_preconditioned_cg(rhs, b_norm, x);
+    if (iterations < 0) {
+      // The kept factor no longer serves: factor the matrix itself, with which CG converges
+      // at once unless the matrix is too ill-conditioned to solve.
+      refactor();
+      iterations = run_preconditioned_cg(rhs, b_norm, x);
+      if (iterations < 0)
+        throw std::runtime_error(
+            "DDA: the stiffness solve did not converge even on a fresh factorisation: the matrix is "
+            "numerically singular");
+    }
+    last_solution_ = x;
+    if (iterations > kRefactorAfter) stale_ = true;
+    return x;
+  }
+
+ private:
+  // Past this many CG iterations a fresh factorisation costs less than the drift does.
+  static constexpr int kRefactorAfter = 6;
+  // Past this many springs changed since the factorisation, the correction (n × m dense)
+  // costs more per application than a fresh factorisation saves.
+  static constexpr std::size_t kMaxCorrections = 32;
+
+  // Brings the correction up to the springs of the current matrix. False if there are too
+  // many changes to follow.
+  bool follow_terms() {
+    // What appeared (+), what disappeared (−).
+    std::vector<RankOneTerm> added, removed;
+    if (!find_changed_terms(terms_, factored_terms_, kMaxCorrections, added, removed)) return false;
+    std::vector<std::pair<RankOneTerm, double>> wanted;
+    for (const RankOneTerm& t : added) wanted.emplace_back(t, 1.0);
+    for (const RankOneTerm& t : removed) wanted.emplace_back(t, -1.0);
+    // Keep the corrections already made (same spring, same sign), their columns of Z moved
+    // left over those dropped; the new ones after them, one solve each.
+    std::vector<char> kept(wanted.size(), 0);
+    std::size_t m = 0;
+    for (std::size_t k = 0; k < corrections_.size(); ++k) {
+      const Correction& c = corrections_[k];
+      const auto found = std::find_if(wanted.begin(), wanted.end(), [&](const auto& w) {
+        return w.first.id == c.term.id && w.second == c.sign;
+      });
+      if (found == wanted.end()) continue;
+      kept[found - wanted.begin()] = 1;
+      if (m != k) {
+        corrections_[m] = c;
+        z_.col(static_cast<Eigen::Index>(m)) = z_.col(static_cast<Eigen::Index>(k));
+      }
+      ++m;
+    }
+    const bool same = m == corrections_.size() && m == wanted.size();
+    corrections_.resize(m);
+    if (z_.rows() != matrix_.size()) z_.resize(matrix_.size(), kMaxCorrections);
+    for (std::size_t w = 0; w < wanted.size(); ++w) {
+      if (kept[w]) continue;
+      const auto column = static_cast<Eigen::Index>(corrections_.size());
+      corrections_.push_back({wanted[w].first, wanted[w].second});
+      z_.col(column).setZero();
+      add_term(wanted[w].first, z_.col(column));
+      factor_.solve_in_place(z_.col(column));
+      ++counts_.modified_terms;
+    }
+    if (!same) build_capacitance();
+    return true;
+  }
+
+  // v += w, the term's vector spread over the unknowns.
+  static void add_term(const RankOneTerm& t, Eigen::Ref<Eigen::VectorXd> v) {
+    if (t.block_a >= 0) v.segment<6>(6 * t.block_a) += t.w_a;
+    if (t.block_b >= 0) v.segment<6>(6 * t.block_b) += t.w_b;
+  }
+
+  static double dot_term(const RankOneTerm& t, const Eigen::Ref<const Eigen::VectorXd>& v) {
+    double s = 0.0;
+    if (t.block_a >= 0) s += t.w_a.dot(v.segment<6>(6 * t.block_a));
+    if (t.block_b >= 0) s += t.w_b.dot(v.segment<6>(6 * t.block_b));
+    return s;
+  }
+
+  // C = S⁻¹ + Wᵀ Z, factored.
+  void build_capacitance() {
+    const auto m = static_cast<Eigen::Index>(corrections_.size());
+    Eigen::MatrixXd c(m, m);
+    for (Eigen::Index b = 0; b < m; ++b) {
+      for (Eigen::Index a = 0; a < m; ++a) c(a, b) = dot_term(corrections_[a].term, z_.col(b));
+      c(b, b) += 1.0 / corrections_[b].sign;
+    }
+    capacitance_.compute(c);
+  }
+
+  // z = M⁻¹ r.
+  void apply_preconditioner(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
+    z = r;
+    factor_.solve_in_place(z);
+    if (corrections_.empty()) return;
+    Eigen::VectorXd t(corrections_.size());
+    for (std::size_t a = 0; a < corrections_.size(); ++a) t[a] = dot_term(corrections_[a].term, z);
+    z.noalias() -= z_.leftCols(t.size()) * capacitance_.solve(t);
+  }
+
+  // Returns the iterations taken, or −1 if max_iterations did not reach the tolerance.
+  // Starts from the last solution: the solves of one step (Lagrangian and friction updates,
+  // open–close passes) and of successive steps differ little; from zero if that is no better.
+  // Iterates on b/‖b‖, so that a load all but balanced (‖b‖ ~ 1e-150 at a static
+  // equilibrium) does not underflow the inner products.
+  // Pseudocode (Saad, Iterative Methods, alg. 9.1): r = b − A x; z = M⁻¹ r; p = z;
+  // repeat: α = rᵀz / pᵀAp; x += α p; r −= α A p; z = M⁻¹ r; β = r'ᵀz' / rᵀz; p = z + β p.
+  int run_preconditioned_cg(const Eigen::VectorXd& b, double b_norm, Eigen::VectorXd& x) const {
+    const double scale = 1.0 / b_norm;
+    const int iterations = iterate(b * scale, x, last_solution_.size() == b.size() ? scale : 0.0);
+    x *= b_norm;
+    return iterations;
+  }
+
+  // CG on A x = b with ‖b‖ = 1, from x = guess_scale × the last solution.
+  int iterate(const Eigen::VectorXd& b, Eigen::VectorXd& x, double guess_scale) const {
+    r_ = b;
+    x = Eigen::VectorXd::Zero(b.size());
+    if (guess_scale != 0.0) {
+      const Eigen::VectorXd guess = guess_scale * last_solution_;
+      matrix_.multiply(guess, q_);
+      if ((b - q_).norm() < 1.0) {
+        x = guess;
+        r_ = b - q_;
+      }
+    }
+    if (r_.norm() <= tolerance_) return 0;
+    apply_preconditioner(r_, z_vector_);
+    p_ = z_vector_;
+    double rz = r_.dot(z_vector_);
+    for (int it = 1; it <= max_iterations_; ++it) {
+      ++counts_.iterations;
+      matrix_.multiply(p_, q_);
+      const double curvature = p_.dot(q_);
+      if (!(curvature > 0.0) || !(rz > 0.0)) return -1;  // broken down: no descent left
+      const double alpha = rz / curvature;
+      x += alpha * p_;
+      r_ -= alpha * q_;
+      if (r_.norm() <= tolerance_) return it;
+      apply_preconditioner(r_, z_vector_);
+      const double rz_new = r_.dot(z_vector_);
+      p_ = z_vector_ + (rz_new / rz) * p_;
+      rz = rz_new;
+    }
+    return -1;
+  }
+
+  void refactor() const {
+    ++counts_.factorisations;
+    if (!factor_.factorise(matrix_, order_)) {
+      if (!matrix_.all_finite())
+        throw std::runtime_error("DDA: the global stiffness matrix has entries that are not finite "
+                                 "(an overflow in the model's data)");
+      throw std::runtime_error("DDA: the global stiffness matrix is not positive definite");
+    }
+    factored_terms_ = terms_;
+    corrections_.clear();
+    stale_ = false;
+  }
+
+  // Minimum degree on the block graph of the first matrix; later contacts change the fill a
+  // little, not the correctness.
+  void compute_ordering(const BlockMatrix& a) {
+    order_ = order_by_minimum_degree(a);
+    factor_.clear();
+    stale_ = true;
+  }
+
+  double tolerance_;
+  int max_iterations_;
+  std::vector<int> order_;
+  BlockMatrix matrix_;
+  std::vector<RankOneTerm> terms_;                   // of the current matrix
+  mutable std::vector<RankOneTerm> factored_terms_;  // as held by the factor
+  mutable BlockCholesky factor_;
+  mutable std::vector<Correction> corrections_;
+  mutable Eigen::MatrixXd z_;
+  mutable Eigen::PartialPivLU<Eigen::MatrixXd> capacitance_;
+  mutable Eigen::VectorXd last_solution_, r_, z_vector_, p_, q_;
+  mutable bool stale_ = true;
+  mutable SolverCounts counts_;
+};
+
+}  // namespace
+
+std::unique_ptr<LinearSolver> make_block_factor_solver(double tolerance, int max_iterations) {
+  return std::make_unique<BlockFactorSolver>(tolerance, max_iterations);
+}
+
+}  // namespace hydrodda::dda
