@@ -6,6 +6,7 @@
 #include <benchmark/benchmark.h>
 
 #include <random>
+#include <set>
 
 #include "dda/system.hpp"
 #include "dda/test_models.hpp"  // tests/dda: the brick wall the tests and ntdda run
@@ -13,6 +14,8 @@
 namespace {
 
 using hydrodda::dda::Analysis;
+using hydrodda::dda::BlockMatrix;
+using hydrodda::dda::LinearSolver;
 using hydrodda::dda::BlockDefinition;
 using hydrodda::dda::Material;
 using hydrodda::dda::ModelDefinition;
@@ -59,9 +62,10 @@ ModelDefinition make_random_packing(int n) {
   return m;
 }
 
-void run_steps(benchmark::State& state, ModelDefinition model, int settle = 0) {
+void run_steps(benchmark::State& state, ModelDefinition model, int settle = 0,
+               std::unique_ptr<LinearSolver> solver = hydrodda::dda::make_block_factor_solver()) {
   const int blocks = static_cast<int>(model.blocks.size());
-  System system(std::move(model));
+  System system(std::move(model), std::move(solver));
   system.run_steps(settle);
   int iterations = 0;
   int contacts = 0;
@@ -93,6 +97,67 @@ BENCHMARK(BM_BrickWall)
     ->Args({40, 40})
     ->Args({100, 100})
     ->Iterations(20)
+    ->Unit(benchmark::kMillisecond);
+
+// The same wall through CHOLMOD (simplicial LDLᵀ, rank-one updates): what the hand-written
+// block factorisation must beat to earn its place.
+void BM_BrickWallCholmod(benchmark::State& state) {
+  run_steps(state, make_brick_wall(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))), 0,
+            hydrodda::dda::make_cholmod_solver());
+}
+BENCHMARK(BM_BrickWallCholmod)->Args({20, 20})->Args({40, 40})->Iterations(20)->Unit(benchmark::kMillisecond);
+
+// A matrix on the block graph of a rows × rows staggered wall (each brick joined to its two
+// neighbours in the row and two in each row above and below), each joint adding Gᵀ G for a
+// random 6 × 12 G, plus the identity: the pattern, and so the fill, of the wall's matrix.
+BlockMatrix make_wall_graph_matrix(int rows) {
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const int n = rows * rows;
+  std::set<std::pair<int, int>> joints;
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < rows; ++c) {
+      const int b = r * rows + c;
+      if (c + 1 < rows) joints.emplace(b, b + 1);
+      if (r + 1 < rows) {
+        joints.emplace(b, b + rows);
+        const int shifted = r % 2 == 0 ? c - 1 : c + 1;
+        if (shifted >= 0 && shifted < rows) joints.emplace(b, (r + 1) * rows + shifted);
+      }
+    }
+  BlockMatrix a;
+  a.block_count = n;
+  a.diagonal.assign(n, hydrodda::dda::Matrix6::Identity());
+  for (auto [i, j] : joints) {
+    Eigen::Matrix<double, 6, 12> g;
+    for (int k = 0; k < g.size(); ++k) g.data()[k] = u(rng);
+    const Eigen::Matrix<double, 12, 12> gg = g.transpose() * g;
+    a.diagonal[i] += gg.topLeftCorner<6, 6>();
+    a.diagonal[j] += gg.bottomRightCorner<6, 6>();
+    a.pairs.emplace_back(i, j);
+    a.off.push_back(gg.bottomLeftCorner<6, 6>());
+  }
+  return a;
+}
+
+// One factorisation and one solve from scratch, the block factor against CHOLMOD on the same
+// matrix (argument 1: CHOLMOD).
+void BM_WallGraphFactorAndSolve(benchmark::State& state) {
+  const BlockMatrix a = make_wall_graph_matrix(static_cast<int>(state.range(0)));
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(a.size(), -1.0, 1.0);
+  for (auto _ : state) {
+    auto solver = state.range(1) == 1 ? hydrodda::dda::make_cholmod_solver()
+                                      : hydrodda::dda::make_block_factor_solver();
+    solver->factor(a);
+    benchmark::DoNotOptimize(solver->solve(b));
+  }
+  state.counters["blocks"] = a.block_count;
+}
+BENCHMARK(BM_WallGraphFactorAndSolve)
+    ->Args({40, 0})
+    ->Args({40, 1})
+    ->Args({100, 0})
+    ->Args({100, 1})
     ->Unit(benchmark::kMillisecond);
 
 void BM_RandomPacking(benchmark::State& state) {
