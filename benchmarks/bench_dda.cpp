@@ -111,9 +111,6 @@ BENCHMARK(BM_BrickWallCholmod)->Args({20, 20})->Args({40, 40})->Iterations(20)->
 // neighbours in the row and two in each row above and below), each joint adding Gᵀ G for a
 // random 6 × 12 G, plus the identity: the pattern, and so the fill, of the wall's matrix.
 BlockMatrix make_wall_graph_matrix(int rows) {
-  std::mt19937 rng(21);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const int n = rows * rows;
   std::set<std::pair<int, int>> joints;
   for (int r = 0; r < rows; ++r)
     for (int c = 0; c < rows; ++c) {
@@ -125,19 +122,7 @@ BlockMatrix make_wall_graph_matrix(int rows) {
         if (shifted >= 0 && shifted < rows) joints.emplace(b, (r + 1) * rows + shifted);
       }
     }
-  BlockMatrix a;
-  a.block_count = n;
-  a.diagonal.assign(n, hydrodda::dda::Matrix6::Identity());
-  for (auto [i, j] : joints) {
-    Eigen::Matrix<double, 6, 12> g;
-    for (int k = 0; k < g.size(); ++k) g.data()[k] = u(rng);
-    const Eigen::Matrix<double, 12, 12> gg = g.transpose() * g;
-    a.diagonal[i] += gg.topLeftCorner<6, 6>();
-    a.diagonal[j] += gg.bottomRightCorner<6, 6>();
-    a.pairs.emplace_back(i, j);
-    a.off.push_back(gg.bottomLeftCorner<6, 6>());
-  }
-  return a;
+  return hydrodda::dda::testing::make_block_graph_matrix(rows * rows, {joints.begin(), joints.end()}, 21);
 }
 
 // One factorisation and one solve from scratch, the block factor against CHOLMOD on the same

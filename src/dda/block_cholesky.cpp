@@ -22,7 +22,6 @@ struct RowEntry {
 void BlockCholesky::clear() {
   block_count_ = 0;
   order_.clear();
-  parent_.clear();
   column_start_.clear();
   row_.clear();
   value_.clear();
@@ -62,8 +61,9 @@ bool BlockCholesky::factorise(const BlockMatrix& a, const std::vector<int>& orde
     }
   }
 
-  // Elimination tree (Liu's algorithm with path compression through `ancestor`).
-  parent_.assign(n, -1);
+  // Elimination tree, in elimination positions (Liu's algorithm with path compression
+  // through `ancestor`).
+  std::vector<int> parent(n, -1);
   {
     std::vector<int> ancestor(n, -1);
     for (int k = 0; k < n; ++k)
@@ -71,7 +71,7 @@ bool BlockCholesky::factorise(const BlockMatrix& a, const std::vector<int>& orde
         for (int i = rows[e].column; i != -1 && i < k;) {
           const int next = ancestor[i];
           ancestor[i] = k;
-          if (next == -1) parent_[i] = k;
+          if (next == -1) parent[i] = k;
           i = next;
         }
   }
@@ -83,7 +83,7 @@ bool BlockCholesky::factorise(const BlockMatrix& a, const std::vector<int>& orde
     mark[k] = k;
     for (int e = row_start[k]; e < row_start[k + 1]; ++e) {
       int length = 0;
-      for (int i = rows[e].column; mark[i] != k; i = parent_[i]) {
+      for (int i = rows[e].column; mark[i] != k; i = parent[i]) {
         path[length++] = i;
         mark[i] = k;
       }

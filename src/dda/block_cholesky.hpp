@@ -32,7 +32,6 @@ class BlockCholesky {
  private:
   int block_count_ = 0;
   std::vector<int> order_;            // order_[k]: the block eliminated k-th
-  std::vector<int> parent_;           // elimination tree, in elimination positions
   std::vector<int> column_start_;     // L's block columns (positions), compressed
   std::vector<int> row_;
   std::vector<Matrix6> value_;

@@ -8,9 +8,9 @@
 //                      for those that disappeared: downdate L (with the vector it was made with)
 //   solve(b):          conjugate gradients on the current A preconditioned by L (Saad,
 //                      alg. 9.1), from the last solution; L differs from A only by the
-//                      geometric drift, so a few iterations reach ‖b − A x‖ ≤ tol ‖b‖. When they do not (the drift has
-//                      grown, or an update failed or was not worth making), A is factored
-//                      again and solved directly.
+//                      geometric drift, so a few iterations reach ‖b − A x‖ ≤ tol ‖b‖. When
+//                      they do not (the drift has grown, or an update failed or was not worth
+//                      making), A is factored again and solved directly.
 // Updates and downdates: Davis & Hager, "Multiple-rank modifications of a sparse Cholesky
 // factorization", SIAM J. Matrix Anal. Appl. 22 (2001), as CHOLMOD's Modify module does them;
 // they need the simplicial LDLᵀ form, which also beat the supernodal one on these very sparse
@@ -19,7 +19,6 @@
 
 #include <algorithm>
 #include <stdexcept>
-
 
 #include "dda/linear_solver.hpp"
 

@@ -62,19 +62,20 @@ class BlockFactorSolver final : public LinearSolver {
     ++counts_.solves;
     const double b_norm = rhs.norm();
     if (b_norm == 0.0) return Eigen::VectorXd::Zero(rhs.size());
-    if (factor_.empty() || stale_) refactor();
+    const bool kept = !factor_.empty() && !stale_;
+    if (!kept) refactor();
     Eigen::VectorXd x;
     int iterations = run_preconditioned_cg(rhs, b_norm, x);
-    if (iterations < 0) {
-      // The kept factor no longer serves: factor the matrix itself, with which CG converges
-      // at once unless the matrix is too ill-conditioned to solve.
+    // A kept factor that no longer serves: factor the matrix itself, with which CG converges
+    // at once unless the matrix is too ill-conditioned to solve.
+    if (iterations < 0 && kept) {
       refactor();
       iterations = run_preconditioned_cg(rhs, b_norm, x);
-      if (iterations < 0)
-        throw std::runtime_error(
-            "DDA: the stiffness solve did not converge even on a fresh factorisation: the matrix is "
-            "numerically singular");
     }
+    if (iterations < 0)
+      throw std::runtime_error(
+          "DDA: the stiffness solve did not converge even on a fresh factorisation: the matrix is "
+          "numerically singular");
     last_solution_ = x;
     if (iterations > kRefactorAfter) stale_ = true;
     return x;
@@ -93,17 +94,17 @@ class BlockFactorSolver final : public LinearSolver {
     // What appeared (+), what disappeared (−).
     std::vector<RankOneTerm> added, removed;
     if (!find_changed_terms(terms_, factored_terms_, kMaxCorrections, added, removed)) return false;
-    std::vector<std::pair<RankOneTerm, double>> wanted;
-    for (const RankOneTerm& t : added) wanted.emplace_back(t, 1.0);
-    for (const RankOneTerm& t : removed) wanted.emplace_back(t, -1.0);
+    std::vector<Correction> wanted;
+    for (const RankOneTerm& t : added) wanted.push_back({t, 1.0});
+    for (const RankOneTerm& t : removed) wanted.push_back({t, -1.0});
     // Keep the corrections already made (same spring, same sign), their columns of Z moved
     // left over those dropped; the new ones after them, one solve each.
     std::vector<char> kept(wanted.size(), 0);
     std::size_t m = 0;
     for (std::size_t k = 0; k < corrections_.size(); ++k) {
       const Correction& c = corrections_[k];
-      const auto found = std::find_if(wanted.begin(), wanted.end(), [&](const auto& w) {
-        return w.first.id == c.term.id && w.second == c.sign;
+      const auto found = std::find_if(wanted.begin(), wanted.end(), [&](const Correction& w) {
+        return w.term.id == c.term.id && w.sign == c.sign;
       });
       if (found == wanted.end()) continue;
       kept[found - wanted.begin()] = 1;
@@ -119,9 +120,9 @@ class BlockFactorSolver final : public LinearSolver {
     for (std::size_t w = 0; w < wanted.size(); ++w) {
       if (kept[w]) continue;
       const auto column = static_cast<Eigen::Index>(corrections_.size());
-      corrections_.push_back({wanted[w].first, wanted[w].second});
+      corrections_.push_back(wanted[w]);
       z_.col(column).setZero();
-      add_term(wanted[w].first, z_.col(column));
+      add_term(wanted[w].term, z_.col(column));
       factor_.solve_in_place(z_.col(column));
       ++counts_.modified_terms;
     }
@@ -184,9 +185,10 @@ class BlockFactorSolver final : public LinearSolver {
     if (guess_scale != 0.0) {
       const Eigen::VectorXd guess = guess_scale * last_solution_;
       matrix_.multiply(guess, q_);
-      if ((b - q_).norm() < 1.0) {
+      q_ = b - q_;
+      if (q_.norm() < 1.0) {
         x = guess;
-        r_ = b - q_;
+        r_ = q_;
       }
     }
     if (r_.norm() <= tolerance_) return 0;

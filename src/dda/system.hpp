@@ -4,7 +4,6 @@
 // open–close (augmented Lagrangian inside) → update geometry → report.
 
 #include <array>
-#include <map>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -147,7 +146,6 @@ class System {
   Unsettled solve_step(double dt, Eigen::VectorXd& d, StepReport& report);
   void assemble_blocks(double dt, std::vector<Matrix6>& k_base, Eigen::VectorXd& f_base) const;
   void factor_with_contacts(const std::vector<Matrix6>& base_blocks);
-  bool update_states();
   Eigen::VectorXd assemble_contact_rhs(const Eigen::VectorXd& f_base) const;
   Vector6 block_unknowns(const Eigen::VectorXd& d, int dof) const;
   double compute_penetration(const ActiveContact& c, const Eigen::VectorXd& d) const;

@@ -12,31 +12,17 @@
 
 #include <Eigen/Dense>
 
+#include "test_models.hpp"
+
 namespace hydrodda::dda {
 namespace {
 
-// A symmetric positive definite block matrix on the given block graph: each pair (i, j)
-// contributes Gᵀ G for a random 6 × 12 G over the two blocks, plus the identity.
+// A symmetric positive definite block matrix on the given block graph (test_models.hpp),
+// and its dense form.
 BlockMatrix make_matrix(int n, const std::set<std::pair<int, int>>& graph, Eigen::MatrixXd& dense) {
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  dense = Eigen::MatrixXd::Identity(6 * n, 6 * n);
-  for (auto [i, j] : graph) {
-    Eigen::MatrixXd g(6, 12);
-    for (int k = 0; k < g.size(); ++k) g.data()[k] = u(rng);
-    const Eigen::MatrixXd gg = g.transpose() * g;
-    dense.block(6 * i, 6 * i, 6, 6) += gg.block(0, 0, 6, 6);
-    dense.block(6 * j, 6 * j, 6, 6) += gg.block(6, 6, 6, 6);
-    dense.block(6 * j, 6 * i, 6, 6) += gg.block(6, 0, 6, 6);
-    dense.block(6 * i, 6 * j, 6, 6) += gg.block(0, 6, 6, 6);
-  }
-  BlockMatrix a;
-  a.block_count = n;
-  for (int b = 0; b < n; ++b) a.diagonal.push_back(dense.block(6 * b, 6 * b, 6, 6));
-  for (auto [i, j] : graph) {
-    a.pairs.emplace_back(i, j);
-    a.off.push_back(dense.block(6 * j, 6 * i, 6, 6));
-  }
+  BlockMatrix a = testing::make_block_graph_matrix(n, {graph.begin(), graph.end()}, 11);
+  const Eigen::MatrixXd lower(a.lower_triangle());
+  dense = lower.selfadjointView<Eigen::Lower>();
   return a;
 }
 

@@ -21,6 +21,20 @@ double total_length(const std::vector<ContactCandidate>& found) {
   return total;
 }
 
+// Two blocks sharing `length` of face: one vertex–edge contact at each end of the shared part,
+// their tributary lengths summing to `length` (to 1e-12), with the pair given either way round.
+void expect_face_counted_once(const Polygon& a, const Polygon& b, double length) {
+  for (bool swapped : {false, true}) {
+    std::vector<ContactCandidate> found;
+    if (swapped)
+      find_pair_contacts(b, 1, a, 0, 0.01, found);
+    else
+      find_pair_contacts(a, 0, b, 1, 0.01, found);
+    EXPECT_EQ(found.size(), 2u) << (swapped ? "b against a" : "a against b");
+    EXPECT_NEAR(total_length(found), length, 1e-12) << (swapped ? "b against a" : "a against b");
+  }
+}
+
 // The grid finds exactly the pairs an all-pairs check finds (random boxes, sizes 0.1–3).
 TEST(ContactDetection, BroadPhaseEqualsAllPairs) {
   std::mt19937 rng(7);
@@ -60,31 +74,19 @@ TEST(ContactDetection, FaceContactFindsBothVerticesWithHalfLengths) {
 
 // Two equal squares side by side, corners coinciding: the shared 1 m face is one edge–edge
 // contact, a vertex–edge contact at each end of it, so the tributary lengths (what cohesion
-// and tensile strength act on) sum to the face's length, 1 m to 1e-12, not twice it.
+// and tensile strength act on) sum to the face's length, 1 m to 1e-12, not twice it, whichever
+// block the pair names first.
 TEST(ContactDetection, CoincidingCornersCountTheFaceOnce) {
-  const Polygon left = make_rectangle(0, 0, 1, 1);
-  const Polygon right = make_rectangle(1, 0, 2, 1);
-  std::vector<ContactCandidate> found;
-  find_pair_contacts(left, 0, right, 1, 0.01, found);
-  EXPECT_EQ(found.size(), 2u);
-  EXPECT_NEAR(total_length(found), 1.0, 1e-12);
-  // The same seen from the other block (the pair given the other way round).
-  found.clear();
-  find_pair_contacts(right, 1, left, 0, 0.01, found);
-  EXPECT_NEAR(total_length(found), 1.0, 1e-12);
+  expect_face_counted_once(make_rectangle(0, 0, 1, 1), make_rectangle(1, 0, 2, 1), 1.0);
 }
 
 // Bricks offset by half a length, one on the other: the 1 m overlap of their faces is one
 // vertex–edge contact at each end of it (the upper brick's corner on the lower face, the lower
 // brick's corner on the upper face), each carrying half the overlap, so cohesion and tensile
-// strength act on 1 m (to 1e-12), not on both faces' lengths.
+// strength act on 1 m (to 1e-12), not on both faces' lengths, whichever block the pair names
+// first.
 TEST(ContactDetection, OffsetFacesCountTheOverlapOnce) {
-  const Polygon lower = make_rectangle(0, 0, 2, 1);
-  const Polygon upper = make_rectangle(1, 1, 3, 2);
-  std::vector<ContactCandidate> found;
-  find_pair_contacts(lower, 0, upper, 1, 0.01, found);
-  EXPECT_EQ(found.size(), 2u);
-  EXPECT_NEAR(total_length(found), 1.0, 1e-12);
+  expect_face_counted_once(make_rectangle(0, 0, 2, 1), make_rectangle(1, 1, 3, 2), 1.0);
 }
 
 // A corner that lies on the line of two edges of the other block (side-by-side bricks) has

@@ -3,7 +3,11 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
+#include <utility>
+#include <vector>
 
+#include "dda/block_matrix.hpp"
 #include "dda/definitions.hpp"
 
 namespace hydrodda::dda::testing {
@@ -53,6 +57,28 @@ inline ModelDefinition make_brick_wall(int rows, int cols) {
   m.settings.analysis = Analysis::static_;
   m.settings.time_step = 1.0e-3;
   return m;
+}
+
+// A symmetric positive definite matrix on a block graph of n blocks: each joint (i, j), i < j,
+// sorted, adds Gᵀ G for a random 6 × 12 G over its two blocks, the diagonal the identity
+// besides. The same joints and seed give the same matrix.
+inline BlockMatrix make_block_graph_matrix(int n, const std::vector<std::pair<int, int>>& joints,
+                                           unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  BlockMatrix a;
+  a.block_count = n;
+  a.diagonal.assign(n, Matrix6::Identity());
+  for (auto [i, j] : joints) {
+    Eigen::Matrix<double, 6, 12> g;
+    for (int k = 0; k < g.size(); ++k) g.data()[k] = u(rng);
+    const Eigen::Matrix<double, 12, 12> gg = g.transpose() * g;
+    a.diagonal[i] += gg.topLeftCorner<6, 6>();
+    a.diagonal[j] += gg.bottomRightCorner<6, 6>();
+    a.pairs.emplace_back(i, j);
+    a.off.push_back(gg.bottomLeftCorner<6, 6>());
+  }
+  return a;
 }
 
 }  // namespace hydrodda::dda::testing
