@@ -25,6 +25,25 @@ class BlockCholesky {
   bool empty() const { return block_count_ == 0; }
   // x ← A⁻¹ x.
   void solve_in_place(Eigen::Ref<Eigen::VectorXd> x) const;
+
+  // The two halves of a solve, A⁻¹ = Pᵀ L⁻ᵀ L⁻¹ P, for a caller that works between them: u in
+  // elimination order (block k of u is the block eliminated k-th).
+  void forward(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::VectorXd& u) const;  // u = L⁻¹ P x
+  void backward(Eigen::VectorXd& u, Eigen::Ref<Eigen::VectorXd> x) const;  // x = Pᵀ L⁻ᵀ u; u is spent
+
+  // A vector nonzero on a few blocks: (block or position, 6 values), positions ascending.
+  struct SparseVector {
+    std::vector<int> blocks;
+    std::vector<Vector6> values;
+  };
+  // L⁻¹ P b for a b nonzero on a few blocks, in elimination positions. Its nonzeros lie on the
+  // paths from b's blocks to the root of the elimination tree, so this costs a path, not the
+  // whole factor (Gilbert & Peierls 1988; Davis 2006, §3.2).
+  SparseVector forward_sparse(const SparseVector& b) const;
+  // The block kernels by hand with AVX2 and FMA (on by default where the CPU has them) or
+  // portable; the answer is the same to round-off. Returns whether the vectorised ones are
+  // now in use. For tests and benchmarks that compare the two.
+  static bool use_vectorised_kernels(bool on);
   // Off-diagonal 6×6 blocks of L: the fill.
   long off_diagonal_blocks() const { return static_cast<long>(row_.size()); }
   void clear();
@@ -36,7 +55,9 @@ class BlockCholesky {
   std::vector<int> row_;
   std::vector<Matrix6> value_;
   std::vector<Matrix6> inverse_diagonal_;  // (L_kk)⁻¹, lower triangular
+  std::vector<int> parent_;                 // elimination tree, in positions; −1 at a root
   mutable Eigen::VectorXd work_;
+  mutable std::vector<char> on_path_;
 };
 
 }  // namespace hydrodda::dda

@@ -13,6 +13,7 @@ namespace hydrodda::dda {
 
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 using Matrix6 = Eigen::Matrix<double, 6, 6>;
+using Vector6 = Eigen::Matrix<double, 6, 1>;
 
 struct BlockMatrix {
   int block_count = 0;

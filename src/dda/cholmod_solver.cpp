@@ -49,7 +49,8 @@ class CholmodSolver final : public LinearSolver {
   CholmodSolver(const CholmodSolver&) = delete;
   CholmodSolver& operator=(const CholmodSolver&) = delete;
 
-  void factor(const BlockMatrix& a, const std::vector<RankOneTerm>& terms) override {
+  void factor(const BlockMatrix& base, const std::vector<RankOneTerm>& terms) override {
+    const BlockMatrix a = add_springs(base, terms);
     if (ordering_.empty() || a.block_count != block_count_) compute_ordering(a);
     matrix_ = a.lower_triangle();
     if (factor_ != nullptr && !stale_) {

@@ -6,10 +6,13 @@
 // geometry moves a little, which changes every entry slightly. So the factor P = L Lᵀ is kept
 // from one open–close pass and one step to the next:
 //   factor(A, terms):  the springs that appeared (+) or disappeared (−) since P was made
-//                      become a low-rank correction M = P + W S Wᵀ, S = diag(±1), whose
-//                      inverse is applied by the Sherman–Morrison–Woodbury identity
-//                        M⁻¹ = P⁻¹ − Z (S⁻¹ + Wᵀ Z)⁻¹ Zᵀ,   Z = P⁻¹ W (one solve per spring)
-//                      (Hager, "Updating the inverse of a matrix", SIAM Review 31, 1989)
+//                      become a low-rank correction M = P + W S Wᵀ, S = diag(±1). With
+//                      P = Πᵀ L Lᵀ Π and Y = L⁻¹ Π W, M = Πᵀ L (I + Y S Yᵀ) Lᵀ Π, and by the
+//                      Sherman–Morrison–Woodbury identity
+//                        M⁻¹ = Πᵀ L⁻ᵀ (I − Y C⁻¹ Yᵀ) L⁻¹ Π,   C = S⁻¹ + Yᵀ Y
+//                      (Hager, "Updating the inverse of a matrix", SIAM Review 31, 1989).
+//                      A spring spans two blocks, so its column of Y is nonzero only on their
+//                      paths to the root of the elimination tree: a sparse half-solve each.
 //   solve(b):          conjugate gradients on the current A preconditioned by M (Saad,
 //                      alg. 9.1) from the last solution; M differs from A by the geometric
 //                      drift only, so a few iterations reach ‖b − A x‖ ≤ tol ‖b‖.
@@ -32,16 +35,37 @@ namespace {
 struct Correction {
   RankOneTerm term;
   double sign = 1.0;
+  BlockCholesky::SparseVector y;  // L⁻¹ Π w, in elimination positions
 };
+
+// Σ over the positions both hold of a_k · b_k (both in ascending positions).
+double sparse_dot(const BlockCholesky::SparseVector& a, const BlockCholesky::SparseVector& b) {
+  double s = 0.0;
+  std::size_t i = 0, j = 0;
+  while (i < a.blocks.size() && j < b.blocks.size()) {
+    if (a.blocks[i] < b.blocks[j]) {
+      ++i;
+    } else if (b.blocks[j] < a.blocks[i]) {
+      ++j;
+    } else {
+      s += a.values[i++].dot(b.values[j++]);
+    }
+  }
+  return s;
+}
 
 class BlockFactorSolver final : public LinearSolver {
  public:
   BlockFactorSolver(double tolerance, int max_iterations)
       : tolerance_(tolerance), max_iterations_(max_iterations) {}
 
-  void factor(const BlockMatrix& a, const std::vector<RankOneTerm>& terms) override {
-    if (order_.empty() || a.block_count != static_cast<int>(order_.size())) compute_ordering(a);
-    matrix_ = a;
+  void factor(const BlockMatrix& base, const std::vector<RankOneTerm>& terms) override {
+    if (base.block_count != base_.block_count) {
+      order_.clear();  // ordered at the next factorisation, on the assembled pattern
+      factor_.clear();
+      stale_ = true;
+    }
+    base_ = base;
     terms_ = terms;
     if (!factor_.empty() && !stale_ && !follow_terms()) stale_ = true;
   }
@@ -51,6 +75,7 @@ class BlockFactorSolver final : public LinearSolver {
   void reset() override {
     factor_.clear();
     order_.clear();
+    base_ = BlockMatrix{};
     terms_.clear();
     factored_terms_.clear();
     corrections_.clear();
@@ -84,8 +109,8 @@ class BlockFactorSolver final : public LinearSolver {
  private:
   // Past this many CG iterations a fresh factorisation costs less than the drift does.
   static constexpr int kRefactorAfter = 6;
-  // Past this many springs changed since the factorisation, the correction (n × m dense)
-  // costs more per application than a fresh factorisation saves.
+  // Past this many springs changed since the factorisation, the correction (m sparse columns
+  // and an m × m capacitance) costs more per application than a fresh factorisation saves.
   static constexpr std::size_t kMaxCorrections = 32;
 
   // Brings the correction up to the springs of the current matrix. False if there are too
@@ -95,73 +120,74 @@ class BlockFactorSolver final : public LinearSolver {
     std::vector<RankOneTerm> added, removed;
     if (!find_changed_terms(terms_, factored_terms_, kMaxCorrections, added, removed)) return false;
     std::vector<Correction> wanted;
-    for (const RankOneTerm& t : added) wanted.push_back({t, 1.0});
-    for (const RankOneTerm& t : removed) wanted.push_back({t, -1.0});
-    // Keep the corrections already made (same spring, same sign), their columns of Z moved
-    // left over those dropped; the new ones after them, one solve each.
+    for (const RankOneTerm& t : added) wanted.push_back({t, 1.0, {}});
+    for (const RankOneTerm& t : removed) wanted.push_back({t, -1.0, {}});
+    // Keep the corrections already made (same spring, same sign); the new ones after them,
+    // one sparse half-solve each.
     std::vector<char> kept(wanted.size(), 0);
     std::size_t m = 0;
     for (std::size_t k = 0; k < corrections_.size(); ++k) {
-      const Correction& c = corrections_[k];
       const auto found = std::find_if(wanted.begin(), wanted.end(), [&](const Correction& w) {
-        return w.term.id == c.term.id && w.sign == c.sign;
+        return w.term.id == corrections_[k].term.id && w.sign == corrections_[k].sign;
       });
       if (found == wanted.end()) continue;
       kept[found - wanted.begin()] = 1;
-      if (m != k) {
-        corrections_[m] = c;
-        z_.col(static_cast<Eigen::Index>(m)) = z_.col(static_cast<Eigen::Index>(k));
-      }
+      if (m != k) corrections_[m] = std::move(corrections_[k]);
       ++m;
     }
     const bool same = m == corrections_.size() && m == wanted.size();
     corrections_.resize(m);
-    if (z_.rows() != matrix_.size()) z_.resize(matrix_.size(), kMaxCorrections);
     for (std::size_t w = 0; w < wanted.size(); ++w) {
       if (kept[w]) continue;
-      const auto column = static_cast<Eigen::Index>(corrections_.size());
-      corrections_.push_back(wanted[w]);
-      z_.col(column).setZero();
-      add_term(wanted[w].term, z_.col(column));
-      factor_.solve_in_place(z_.col(column));
+      Correction c = wanted[w];
+      BlockCholesky::SparseVector spring;
+      if (c.term.block_a >= 0) {
+        spring.blocks.push_back(c.term.block_a);
+        spring.values.push_back(c.term.w_a);
+      }
+      if (c.term.block_b >= 0) {
+        spring.blocks.push_back(c.term.block_b);
+        spring.values.push_back(c.term.w_b);
+      }
+      c.y = factor_.forward_sparse(spring);
+      corrections_.push_back(std::move(c));
       ++counts_.modified_terms;
     }
     if (!same) build_capacitance();
     return true;
   }
 
-  // v += w, the term's vector spread over the unknowns.
-  static void add_term(const RankOneTerm& t, Eigen::Ref<Eigen::VectorXd> v) {
-    if (t.block_a >= 0) v.segment<6>(6 * t.block_a) += t.w_a;
-    if (t.block_b >= 0) v.segment<6>(6 * t.block_b) += t.w_b;
-  }
-
-  static double dot_term(const RankOneTerm& t, const Eigen::Ref<const Eigen::VectorXd>& v) {
-    double s = 0.0;
-    if (t.block_a >= 0) s += t.w_a.dot(v.segment<6>(6 * t.block_a));
-    if (t.block_b >= 0) s += t.w_b.dot(v.segment<6>(6 * t.block_b));
-    return s;
-  }
-
-  // C = S⁻¹ + Wᵀ Z, factored.
+  // C = S⁻¹ + Yᵀ Y, factored.
   void build_capacitance() {
     const auto m = static_cast<Eigen::Index>(corrections_.size());
     Eigen::MatrixXd c(m, m);
     for (Eigen::Index b = 0; b < m; ++b) {
-      for (Eigen::Index a = 0; a < m; ++a) c(a, b) = dot_term(corrections_[a].term, z_.col(b));
+      for (Eigen::Index a = 0; a <= b; ++a) c(a, b) = c(b, a) = sparse_dot(corrections_[a].y, corrections_[b].y);
       c(b, b) += 1.0 / corrections_[b].sign;
     }
     capacitance_.compute(c);
   }
 
-  // z = M⁻¹ r.
+  // z = M⁻¹ r: u = L⁻¹ Π r; u −= Y C⁻¹ Yᵀ u; z = Πᵀ L⁻ᵀ u.
   void apply_preconditioner(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
-    z = r;
-    factor_.solve_in_place(z);
-    if (corrections_.empty()) return;
-    Eigen::VectorXd t(corrections_.size());
-    for (std::size_t a = 0; a < corrections_.size(); ++a) t[a] = dot_term(corrections_[a].term, z);
-    z.noalias() -= z_.leftCols(t.size()) * capacitance_.solve(t);
+    factor_.forward(r, u_);
+    if (!corrections_.empty()) {
+      Eigen::VectorXd t(corrections_.size());
+      for (std::size_t a = 0; a < corrections_.size(); ++a) {
+        const BlockCholesky::SparseVector& y = corrections_[a].y;
+        double s = 0.0;
+        for (std::size_t e = 0; e < y.blocks.size(); ++e) s += y.values[e].dot(u_.segment<6>(6 * y.blocks[e]));
+        t[static_cast<Eigen::Index>(a)] = s;
+      }
+      const Eigen::VectorXd coefficients = capacitance_.solve(t);
+      for (std::size_t a = 0; a < corrections_.size(); ++a) {
+        const BlockCholesky::SparseVector& y = corrections_[a].y;
+        const double c = coefficients[static_cast<Eigen::Index>(a)];
+        for (std::size_t e = 0; e < y.blocks.size(); ++e) u_.segment<6>(6 * y.blocks[e]) -= c * y.values[e];
+      }
+    }
+    z.resize(r.size());
+    factor_.backward(u_, z);
   }
 
   // Returns the iterations taken, or −1 if max_iterations did not reach the tolerance.
@@ -184,7 +210,7 @@ class BlockFactorSolver final : public LinearSolver {
     x = Eigen::VectorXd::Zero(b.size());
     if (guess_scale != 0.0) {
       const Eigen::VectorXd guess = guess_scale * last_solution_;
-      matrix_.multiply(guess, q_);
+      multiply_with_springs(base_, terms_, guess, q_);
       q_ = b - q_;
       if (q_.norm() < 1.0) {
         x = guess;
@@ -197,7 +223,7 @@ class BlockFactorSolver final : public LinearSolver {
     double rz = r_.dot(z_vector_);
     for (int it = 1; it <= max_iterations_; ++it) {
       ++counts_.iterations;
-      matrix_.multiply(p_, q_);
+      multiply_with_springs(base_, terms_, p_, q_);
       const double curvature = p_.dot(q_);
       if (!(curvature > 0.0) || !(rz > 0.0)) return -1;  // broken down: no descent left
       const double alpha = rz / curvature;
@@ -214,8 +240,12 @@ class BlockFactorSolver final : public LinearSolver {
 
   void refactor() const {
     ++counts_.factorisations;
-    if (!factor_.factorise(matrix_, order_)) {
-      if (!matrix_.all_finite())
+    const BlockMatrix a = add_springs(base_, terms_);
+    // Minimum degree on the block graph of the first matrix; later contacts change the fill a
+    // little, not the correctness.
+    if (order_.empty()) order_ = order_by_minimum_degree(a);
+    if (!factor_.factorise(a, order_)) {
+      if (!a.all_finite())
         throw std::runtime_error("DDA: the global stiffness matrix has entries that are not finite "
                                  "(an overflow in the model's data)");
       throw std::runtime_error("DDA: the global stiffness matrix is not positive definite");
@@ -225,25 +255,16 @@ class BlockFactorSolver final : public LinearSolver {
     stale_ = false;
   }
 
-  // Minimum degree on the block graph of the first matrix; later contacts change the fill a
-  // little, not the correctness.
-  void compute_ordering(const BlockMatrix& a) {
-    order_ = order_by_minimum_degree(a);
-    factor_.clear();
-    stale_ = true;
-  }
-
   double tolerance_;
   int max_iterations_;
-  std::vector<int> order_;
-  BlockMatrix matrix_;
+  mutable std::vector<int> order_;
+  BlockMatrix base_;  // the matrix is base_ + the springs terms_
   std::vector<RankOneTerm> terms_;                   // of the current matrix
   mutable std::vector<RankOneTerm> factored_terms_;  // as held by the factor
   mutable BlockCholesky factor_;
   mutable std::vector<Correction> corrections_;
-  mutable Eigen::MatrixXd z_;
   mutable Eigen::PartialPivLU<Eigen::MatrixXd> capacitance_;
-  mutable Eigen::VectorXd last_solution_, r_, z_vector_, p_, q_;
+  mutable Eigen::VectorXd last_solution_, r_, z_vector_, p_, q_, u_;
   mutable bool stale_ = true;
   mutable SolverCounts counts_;
 };

@@ -17,8 +17,9 @@ class ConjugateGradientSolver final : public LinearSolver {
   ConjugateGradientSolver(double tolerance, int max_iterations)
       : tolerance_(tolerance), max_iterations_(max_iterations) {}
 
-  void factor(const BlockMatrix& a, const std::vector<RankOneTerm>&) override {
-    matrix_ = a;
+  void factor(const BlockMatrix& base, const std::vector<RankOneTerm>& springs) override {
+    matrix_ = add_springs(base, springs);
+    const BlockMatrix& a = matrix_;
     inverse_blocks_.resize(a.block_count);
     for (int b = 0; b < a.block_count; ++b) inverse_blocks_[b] = a.diagonal[b].inverse();
     if (guess_.size() != a.size()) guess_ = Eigen::VectorXd::Zero(a.size());

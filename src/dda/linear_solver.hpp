@@ -29,6 +29,14 @@ bool find_changed_terms(const std::vector<RankOneTerm>& now, const std::vector<R
                         std::size_t limit, std::vector<RankOneTerm>& added,
                         std::vector<RankOneTerm>& removed);
 
+// base + Σ w wᵀ over the springs as one block matrix: a block for each pair of blocks a
+// spring joins.
+BlockMatrix add_springs(const BlockMatrix& base, const std::vector<RankOneTerm>& springs);
+
+// y = (base + Σ w wᵀ) x, without assembling the springs.
+void multiply_with_springs(const BlockMatrix& base, const std::vector<RankOneTerm>& springs,
+                           const Eigen::VectorXd& x, Eigen::VectorXd& y);
+
 // What a solver has done so far, for benchmarks and tests.
 struct SolverCounts {
   long factorisations = 0;   // numeric factorisations from scratch
@@ -40,11 +48,12 @@ struct SolverCounts {
 class LinearSolver {
  public:
   virtual ~LinearSolver() = default;
-  // Factor the symmetric positive definite block matrix. `terms` (sorted by id) are the
-  // rank-one parts of the matrix that come and go between calls, the contact springs: a
-  // solver that keeps a factorisation may follow the parts that appeared and disappeared
-  // instead of starting again. The answer is always the matrix's.
-  virtual void factor(const BlockMatrix& matrix, const std::vector<RankOneTerm>& terms = {}) = 0;
+  // Factor the symmetric positive definite matrix A = base + Σ w wᵀ over `springs`. The
+  // springs (sorted by id) are the rank-one parts that come and go between calls, the contact
+  // springs: a solver that keeps a factorisation may follow the ones that appeared and
+  // disappeared instead of starting again, and one that only multiplies by A need never
+  // assemble them. The answer is always A's.
+  virtual void factor(const BlockMatrix& base, const std::vector<RankOneTerm>& springs = {}) = 0;
   // Solve with the last factorisation.
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const = 0;
   virtual SolverCounts counts() const = 0;
