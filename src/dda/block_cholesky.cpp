@@ -21,19 +21,6 @@ struct RowEntry {
   bool transposed;
 };
 
-}  // namespace
-
-void BlockCholesky::clear() {
-  block_count_ = 0;
-  order_.clear();
-  column_start_.clear();
-  row_.clear();
-  value_.clear();
-  inverse_diagonal_.clear();
-  parent_.clear();
-}
-
-namespace {
 
 // x[rows[q]] −= l values[q]ᵀ for q < count: the update of row k by one earlier column, the
 // factorisation's inner loop. Portable in Eigen; by hand with AVX2 and FMA where the CPU has
@@ -72,29 +59,39 @@ void subtract_products_portable(const Matrix6& l, const Matrix6* values, const i
 }
 #endif
 
+bool cpu_has_avx2_fma() {
 #if defined(__x86_64__)
-bool vectorised = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
 #else
-bool vectorised = false;
+  return false;
 #endif
+}
 
-bool has_avx2_fma() { return vectorised; }
+// Whether the AVX2/FMA kernels are in use: decided when the program starts.
+bool vectorised = cpu_has_avx2_fma();
 
 void subtract_products(const Matrix6& l, const Matrix6* values, const int* rows, int count, Matrix6* x) {
 #if defined(__x86_64__)
-  if (has_avx2_fma()) return subtract_products_avx2(l, values, rows, count, x);
+  if (vectorised) return subtract_products_avx2(l, values, rows, count, x);
 #endif
   subtract_products_portable(l, values, rows, count, x);
 }
 
 }  // namespace
 
+void BlockCholesky::clear() {
+  block_count_ = 0;
+  order_.clear();
+  column_start_.clear();
+  row_.clear();
+  value_.clear();
+  inverse_diagonal_.clear();
+  parent_.clear();
+  position_.clear();
+}
+
 bool BlockCholesky::use_vectorised_kernels(bool on) {
-#if defined(__x86_64__)
-  vectorised = on && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-#else
-  (void)on;
-#endif
+  vectorised = on && cpu_has_avx2_fma();
   return vectorised;
 }
 
@@ -111,7 +108,8 @@ bool BlockCholesky::use_vectorised_kernels(bool on) {
 bool BlockCholesky::factorise(const BlockMatrix& a, const std::vector<int>& order) {
   clear();
   const int n = a.block_count;
-  std::vector<int> position(n);
+  std::vector<int>& position = position_;
+  position.resize(n);
   for (int k = 0; k < n; ++k) position[order[k]] = k;
 
   // Rows of the permuted strictly lower triangle, by counting sort.
@@ -202,21 +200,13 @@ bool BlockCholesky::factorise(const BlockMatrix& a, const std::vector<int>& orde
   }
   order_ = order;
   parent_ = std::move(parent);
+  path_work_.setZero(6 * n);
+  on_path_.assign(n, 0);
   block_count_ = n;
   return true;
 }
 
-namespace {
-
-// The triangular sweeps over L's block columns, on u in elimination order, 6×6 blocks column
-// major. The portable form is Eigen's; on a CPU with AVX2 and FMA a hand-vectorised form
-// (bench_dda, BM_WallGraphTriangularSolves: 13% faster on the wall's factor) is chosen once,
-// at the first solve. Eigen picks its SIMD width at compile time and, for the baseline x86-64
-// build, 6-vectors get 2-wide SSE2 only.
-//
-// Forward, by columns: u_k ← L_kk⁻¹ u_k; u_r −= L_rk u_k for the rows r of column k.
-// Backward, by rows of Lᵀ: u_k ← L_kk⁻ᵀ (u_k − Σ_r L_rkᵀ u_r).
-struct Sweep {
+struct BlockCholesky::Sweep {
   int n;
   const int* column_start;
   const int* row;
@@ -224,15 +214,30 @@ struct Sweep {
   const Matrix6* inverse_diagonal;
 };
 
+namespace {
+
+// The triangular sweeps over L's block columns, on u in elimination order, 6×6 blocks column
+// major. The portable form is Eigen's; on a CPU with AVX2 and FMA a hand-vectorised form
+// (bench_dda, BM_WallGraphTriangularSolves: 13% faster on the wall's factor) is chosen when
+// the program starts. Eigen picks its SIMD width at compile time and, for the baseline x86-64
+// build, 6-vectors get 2-wide SSE2 only.
+//
+// Forward, by columns: u_k ← L_kk⁻¹ u_k; u_r −= L_rk u_k for the rows r of column k.
+// Backward, by rows of Lᵀ: u_k ← L_kk⁻ᵀ (u_k − Σ_r L_rkᵀ u_r).
+using Sweep = BlockCholesky::Sweep;
+
+// One column of the forward sweep, for the dense sweep and the sparse one alike.
+void forward_column(const Sweep& l, int k, double* u) {
+  Eigen::Map<Vector6> uk(u + 6 * k);
+  // The inverse is lower triangular; a full fixed-size product is faster than a triangular one.
+  const Vector6 yk = l.inverse_diagonal[k] * uk;
+  uk = yk;
+  for (int q = l.column_start[k]; q < l.column_start[k + 1]; ++q)
+    Eigen::Map<Vector6>(u + 6 * l.row[q]).noalias() -= l.value[q] * yk;
+}
+
 void forward_portable(const Sweep& l, double* u) {
-  for (int k = 0; k < l.n; ++k) {
-    Eigen::Map<Vector6> uk(u + 6 * k);
-    // The inverse is lower triangular; a full fixed-size product is faster than a triangular one.
-    const Vector6 yk = l.inverse_diagonal[k] * uk;
-    uk = yk;
-    for (int q = l.column_start[k]; q < l.column_start[k + 1]; ++q)
-      Eigen::Map<Vector6>(u + 6 * l.row[q]).noalias() -= l.value[q] * yk;
-  }
+  for (int k = 0; k < l.n; ++k) forward_column(l, k, u);
 }
 
 void backward_portable(const Sweep& l, double* u) {
@@ -300,10 +305,8 @@ void backward_portable(const Sweep& l, double* u) {
   }
 }
 
-void forward_sweep(const Sweep& l, double* u) { has_avx2_fma() ? forward_avx2(l, u) : forward_portable(l, u); }
-void backward_sweep(const Sweep& l, double* u) {
-  has_avx2_fma() ? backward_avx2(l, u) : backward_portable(l, u);
-}
+void forward_sweep(const Sweep& l, double* u) { vectorised ? forward_avx2(l, u) : forward_portable(l, u); }
+void backward_sweep(const Sweep& l, double* u) { vectorised ? backward_avx2(l, u) : backward_portable(l, u); }
 #else
 void forward_sweep(const Sweep& l, double* u) { forward_portable(l, u); }
 void backward_sweep(const Sweep& l, double* u) { backward_portable(l, u); }
@@ -311,17 +314,20 @@ void backward_sweep(const Sweep& l, double* u) { backward_portable(l, u); }
 
 }  // namespace
 
+BlockCholesky::Sweep BlockCholesky::sweep() const {
+  return {block_count_, column_start_.data(), row_.data(), value_.data(), inverse_diagonal_.data()};
+}
+
 void BlockCholesky::forward(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::VectorXd& u) const {
   const int n = block_count_;
   u.resize(6 * n);
   for (int k = 0; k < n; ++k) u.segment<6>(6 * k) = x.segment<6>(6 * order_[k]);
-  forward_sweep({n, column_start_.data(), row_.data(), value_.data(), inverse_diagonal_.data()}, u.data());
+  forward_sweep(sweep(), u.data());
 }
 
 void BlockCholesky::backward(Eigen::VectorXd& u, Eigen::Ref<Eigen::VectorXd> x) const {
-  const int n = block_count_;
-  backward_sweep({n, column_start_.data(), row_.data(), value_.data(), inverse_diagonal_.data()}, u.data());
-  for (int k = 0; k < n; ++k) x.segment<6>(6 * order_[k]) = u.segment<6>(6 * k);
+  backward_sweep(sweep(), u.data());
+  for (int k = 0; k < block_count_; ++k) x.segment<6>(6 * order_[k]) = u.segment<6>(6 * k);
 }
 
 void BlockCholesky::solve_in_place(Eigen::Ref<Eigen::VectorXd> x) const {
@@ -330,18 +336,14 @@ void BlockCholesky::solve_in_place(Eigen::Ref<Eigen::VectorXd> x) const {
 }
 
 // Pseudocode: mark the tree paths from the positions of b's blocks to the root; the marked
-// positions ascending are the nonzeros of L⁻¹ P b (a column of L has rows only on its own path);
-// sweep forward over them alone.
+// positions ascending are the nonzeros of L⁻¹ P b (a column of L has rows only on its own
+// path); sweep forward over them alone. path_work_ and on_path_ are zero off the path before
+// and after, so nothing here costs more than the path.
 BlockCholesky::SparseVector BlockCholesky::forward_sparse(const SparseVector& b) const {
-  const int n = block_count_;
-  work_.setZero(6 * n);  // zero outside the path, so the sweep reads only what it wrote
-  on_path_.assign(n, 0);
   SparseVector y;
-  std::vector<int> position(n);
-  for (int k = 0; k < n; ++k) position[order_[k]] = k;
   for (std::size_t e = 0; e < b.blocks.size(); ++e) {
-    const int start = position[b.blocks[e]];
-    work_.segment<6>(6 * start) += b.values[e];
+    const int start = position_[b.blocks[e]];
+    path_work_.segment<6>(6 * start) += b.values[e];
     for (int k = start; k != -1 && !on_path_[k]; k = parent_[k]) {
       on_path_[k] = 1;
       y.blocks.push_back(k);
@@ -349,11 +351,14 @@ BlockCholesky::SparseVector BlockCholesky::forward_sparse(const SparseVector& b)
   }
   std::sort(y.blocks.begin(), y.blocks.end());
   y.values.reserve(y.blocks.size());
+  const Sweep l = sweep();
   for (int k : y.blocks) {
-    const Vector6 yk = inverse_diagonal_[k] * work_.segment<6>(6 * k);
-    for (int q = column_start_[k]; q < column_start_[k + 1]; ++q)
-      work_.segment<6>(6 * row_[q]).noalias() -= value_[q] * yk;
-    y.values.push_back(yk);
+    forward_column(l, k, path_work_.data());
+    y.values.push_back(path_work_.segment<6>(6 * k));
+  }
+  for (int k : y.blocks) {
+    path_work_.segment<6>(6 * k).setZero();
+    on_path_[k] = 0;
   }
   return y;
 }

@@ -44,6 +44,8 @@ class BlockCholesky {
   // portable; the answer is the same to round-off. Returns whether the vectorised ones are
   // now in use. For tests and benchmarks that compare the two.
   static bool use_vectorised_kernels(bool on);
+  // The factor's arrays as the triangular-sweep kernels take them (defined with them).
+  struct Sweep;
   // Off-diagonal 6×6 blocks of L: the fill.
   long off_diagonal_blocks() const { return static_cast<long>(row_.size()); }
   void clear();
@@ -55,9 +57,12 @@ class BlockCholesky {
   std::vector<int> row_;
   std::vector<Matrix6> value_;
   std::vector<Matrix6> inverse_diagonal_;  // (L_kk)⁻¹, lower triangular
+  std::vector<int> position_;               // position_[b]: where block b is eliminated
   std::vector<int> parent_;                 // elimination tree, in positions; −1 at a root
   mutable Eigen::VectorXd work_;
-  mutable std::vector<char> on_path_;
+  mutable Eigen::VectorXd path_work_;       // zero but during forward_sparse
+  mutable std::vector<char> on_path_;       // likewise
+  Sweep sweep() const;
 };
 
 }  // namespace hydrodda::dda

@@ -19,7 +19,6 @@
 // When the corrections grow past kMaxCorrections, or CG needs more than kRefactorAfter
 // iterations (the drift has grown), A is factored afresh.
 #include <algorithm>
-#include <string>
 #include <stdexcept>
 
 #include <Eigen/Dense>
@@ -31,7 +30,7 @@ namespace hydrodda::dda {
 namespace {
 
 // One spring of the low-rank correction: its vector w as the factor knew it (removed springs)
-// or as it came (added ones), and the sign of w wᵀ. Its z = P⁻¹ w is a column of Z.
+// or as it came (added ones), the sign of w wᵀ, and its column of Y.
 struct Correction {
   RankOneTerm term;
   double sign = 1.0;
@@ -85,17 +84,16 @@ class BlockFactorSolver final : public LinearSolver {
 
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const override {
     ++counts_.solves;
-    const double b_norm = rhs.norm();
-    if (b_norm == 0.0) return Eigen::VectorXd::Zero(rhs.size());
+    if (rhs.norm() == 0.0) return Eigen::VectorXd::Zero(rhs.size());
     const bool kept = !factor_.empty() && !stale_;
     if (!kept) refactor();
     Eigen::VectorXd x;
-    int iterations = run_preconditioned_cg(rhs, b_norm, x);
+    int iterations = run_preconditioned_cg(rhs, x);
     // A kept factor that no longer serves: factor the matrix itself, with which CG converges
     // at once unless the matrix is too ill-conditioned to solve.
     if (iterations < 0 && kept) {
       refactor();
-      iterations = run_preconditioned_cg(rhs, b_norm, x);
+      iterations = run_preconditioned_cg(rhs, x);
     }
     if (iterations < 0)
       throw std::runtime_error(
@@ -190,52 +188,12 @@ class BlockFactorSolver final : public LinearSolver {
     factor_.backward(u_, z);
   }
 
-  // Returns the iterations taken, or −1 if max_iterations did not reach the tolerance.
-  // Starts from the last solution: the solves of one step (Lagrangian and friction updates,
-  // open–close passes) and of successive steps differ little; from zero if that is no better.
-  // Iterates on b/‖b‖, so that a load all but balanced (‖b‖ ~ 1e-150 at a static
-  // equilibrium) does not underflow the inner products.
-  // Pseudocode (Saad, Iterative Methods, alg. 9.1): r = b − A x; z = M⁻¹ r; p = z;
-  // repeat: α = rᵀz / pᵀAp; x += α p; r −= α A p; z = M⁻¹ r; β = r'ᵀz' / rᵀz; p = z + β p.
-  int run_preconditioned_cg(const Eigen::VectorXd& b, double b_norm, Eigen::VectorXd& x) const {
-    const double scale = 1.0 / b_norm;
-    const int iterations = iterate(b * scale, x, last_solution_.size() == b.size() ? scale : 0.0);
-    x *= b_norm;
-    return iterations;
-  }
-
-  // CG on A x = b with ‖b‖ = 1, from x = guess_scale × the last solution.
-  int iterate(const Eigen::VectorXd& b, Eigen::VectorXd& x, double guess_scale) const {
-    r_ = b;
-    x = Eigen::VectorXd::Zero(b.size());
-    if (guess_scale != 0.0) {
-      const Eigen::VectorXd guess = guess_scale * last_solution_;
-      multiply_with_springs(base_, terms_, guess, q_);
-      q_ = b - q_;
-      if (q_.norm() < 1.0) {
-        x = guess;
-        r_ = q_;
-      }
-    }
-    if (r_.norm() <= tolerance_) return 0;
-    apply_preconditioner(r_, z_vector_);
-    p_ = z_vector_;
-    double rz = r_.dot(z_vector_);
-    for (int it = 1; it <= max_iterations_; ++it) {
-      ++counts_.iterations;
-      multiply_with_springs(base_, terms_, p_, q_);
-      const double curvature = p_.dot(q_);
-      if (!(curvature > 0.0) || !(rz > 0.0)) return -1;  // broken down: no descent left
-      const double alpha = rz / curvature;
-      x += alpha * p_;
-      r_ -= alpha * q_;
-      if (r_.norm() <= tolerance_) return it;
-      apply_preconditioner(r_, z_vector_);
-      const double rz_new = r_.dot(z_vector_);
-      p_ = z_vector_ + (rz_new / rz) * p_;
-      rz = rz_new;
-    }
-    return -1;
+  // CG on the current matrix, preconditioned by the corrected factor, from the last solution.
+  int run_preconditioned_cg(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+    return solve_by_conjugate_gradients(
+        [this](const Eigen::VectorXd& v, Eigen::VectorXd& y) { multiply_with_springs(base_, terms_, v, y); },
+        [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { apply_preconditioner(r, z); }, b, last_solution_,
+        tolerance_, max_iterations_, x, counts_.iterations);
   }
 
   void refactor() const {
@@ -264,7 +222,7 @@ class BlockFactorSolver final : public LinearSolver {
   mutable BlockCholesky factor_;
   mutable std::vector<Correction> corrections_;
   mutable Eigen::PartialPivLU<Eigen::MatrixXd> capacitance_;
-  mutable Eigen::VectorXd last_solution_, r_, z_vector_, p_, q_, u_;
+  mutable Eigen::VectorXd last_solution_, u_;
   mutable bool stale_ = true;
   mutable SolverCounts counts_;
 };

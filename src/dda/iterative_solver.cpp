@@ -19,10 +19,8 @@ class ConjugateGradientSolver final : public LinearSolver {
 
   void factor(const BlockMatrix& base, const std::vector<RankOneTerm>& springs) override {
     matrix_ = add_springs(base, springs);
-    const BlockMatrix& a = matrix_;
-    inverse_blocks_.resize(a.block_count);
-    for (int b = 0; b < a.block_count; ++b) inverse_blocks_[b] = a.diagonal[b].inverse();
-    if (guess_.size() != a.size()) guess_ = Eigen::VectorXd::Zero(a.size());
+    inverse_blocks_.resize(matrix_.block_count);
+    for (int b = 0; b < matrix_.block_count; ++b) inverse_blocks_[b] = matrix_.diagonal[b].inverse();
   }
 
   SolverCounts counts() const override { return counts_; }
@@ -30,41 +28,21 @@ class ConjugateGradientSolver final : public LinearSolver {
 
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const override {
     ++counts_.solves;
-    // Pseudocode (Saad, Iterative Methods, alg. 9.1): r = b − A x; z = M⁻¹ r; p = z;
-    // repeat: α = rᵀz / pᵀAp; x += α p; r −= α A p; z = M⁻¹ r; β = r'ᵀz' / rᵀz; p = z + β p.
-    const double b_norm = rhs.norm();
-    Eigen::VectorXd x = guess_;
-    if (b_norm == 0.0) return Eigen::VectorXd::Zero(rhs.size());
-    Eigen::VectorXd q(rhs.size());
-    matrix_.multiply(x, q);
-    Eigen::VectorXd r = rhs - q;
-    Eigen::VectorXd z = precondition(r);
-    Eigen::VectorXd p = z;
-    double rz = r.dot(z);
-    int it = 0;
-    for (; it < max_iterations_ && r.norm() > tolerance_ * b_norm; ++it) {
-      matrix_.multiply(p, q);
-      const double alpha = rz / p.dot(q);
-      x += alpha * p;
-      r -= alpha * q;
-      z = precondition(r);
-      const double rz_new = r.dot(z);
-      p = z + (rz_new / rz) * p;
-      rz = rz_new;
-    }
-    if (r.norm() > tolerance_ * b_norm)
-      throw std::runtime_error("DDA: conjugate gradients did not converge");
+    Eigen::VectorXd x;
+    const int iterations = solve_by_conjugate_gradients(
+        [this](const Eigen::VectorXd& v, Eigen::VectorXd& y) { matrix_.multiply(v, y); },
+        [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { precondition(r, z); }, rhs, guess_, tolerance_,
+        max_iterations_, x, counts_.iterations);
+    if (iterations < 0) throw std::runtime_error("DDA: conjugate gradients did not converge");
     guess_ = x;
-    counts_.iterations += it;
     return x;
   }
 
  private:
-  Eigen::VectorXd precondition(const Eigen::VectorXd& r) const {
-    Eigen::VectorXd z(r.size());
+  void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
+    z.resize(r.size());
     for (std::size_t b = 0; b < inverse_blocks_.size(); ++b)
       z.segment<6>(6 * b).noalias() = inverse_blocks_[b] * r.segment<6>(6 * b);
-    return z;
   }
 
   double tolerance_;

@@ -71,4 +71,50 @@ void multiply_with_springs(const BlockMatrix& base, const std::vector<RankOneTer
   }
 }
 
+// Pseudocode (Saad, Iterative Methods, alg. 9.1): r = b − A x; z = M⁻¹ r; p = z;
+// repeat: α = rᵀz / pᵀAp; x += α p; r −= α A p; z = M⁻¹ r; β = r'ᵀz' / rᵀz; p = z + β p.
+int solve_by_conjugate_gradients(const VectorOperator& multiply, const VectorOperator& precondition,
+                                 const Eigen::VectorXd& b, const Eigen::VectorXd& guess,
+                                 double tolerance, int max_iterations, Eigen::VectorXd& x,
+                                 long& iterations) {
+  const double b_norm = b.norm();
+  x = Eigen::VectorXd::Zero(b.size());
+  if (b_norm == 0.0) return 0;
+  const double scale = 1.0 / b_norm;
+  const Eigen::VectorXd unit_b = scale * b;
+  Eigen::VectorXd r = unit_b, q(b.size()), z(b.size()), p;
+  if (guess.size() == b.size()) {
+    const Eigen::VectorXd start = scale * guess;
+    multiply(start, q);
+    q = unit_b - q;
+    if (q.norm() < 1.0) {
+      x = start;
+      r = q;
+    }
+  }
+  const auto done = [&](int taken) {
+    x *= b_norm;
+    return taken;
+  };
+  if (r.norm() <= tolerance) return done(0);
+  precondition(r, z);
+  p = z;
+  double rz = r.dot(z);
+  for (int it = 1; it <= max_iterations; ++it) {
+    ++iterations;
+    multiply(p, q);
+    const double curvature = p.dot(q);
+    if (!(curvature > 0.0) || !(rz > 0.0)) return -1;
+    const double alpha = rz / curvature;
+    x += alpha * p;
+    r -= alpha * q;
+    if (r.norm() <= tolerance) return done(it);
+    precondition(r, z);
+    const double rz_new = r.dot(z);
+    p = z + (rz_new / rz) * p;
+    rz = rz_new;
+  }
+  return -1;
+}
+
 }  // namespace hydrodda::dda

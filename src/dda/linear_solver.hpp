@@ -3,6 +3,7 @@
 // distributed solver can stand in for the direct one.
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -36,6 +37,20 @@ BlockMatrix add_springs(const BlockMatrix& base, const std::vector<RankOneTerm>&
 // y = (base + Σ w wᵀ) x, without assembling the springs.
 void multiply_with_springs(const BlockMatrix& base, const std::vector<RankOneTerm>& springs,
                            const Eigen::VectorXd& x, Eigen::VectorXd& y);
+
+// y = A x, or z = M⁻¹ r: the two operations conjugate gradients needs.
+using VectorOperator = std::function<void(const Eigen::VectorXd&, Eigen::VectorXd&)>;
+
+// Preconditioned conjugate gradients on A x = b to ‖b − A x‖ ≤ tolerance ‖b‖, started from
+// `guess` when it has b's size and leaves a smaller residual than zero does. Iterates on
+// b/‖b‖, so that a load all but balanced (‖b‖ ~ 1e-150 at a static equilibrium) does not
+// underflow the inner products. Returns the iterations taken (also added to `iterations`),
+// or −1 if max_iterations did not reach the tolerance or CG broke down (no descent left: A or
+// M not positive definite in exact arithmetic any more).
+int solve_by_conjugate_gradients(const VectorOperator& multiply, const VectorOperator& precondition,
+                                 const Eigen::VectorXd& b, const Eigen::VectorXd& guess,
+                                 double tolerance, int max_iterations, Eigen::VectorXd& x,
+                                 long& iterations);
 
 // What a solver has done so far, for benchmarks and tests.
 struct SolverCounts {

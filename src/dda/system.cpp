@@ -279,18 +279,13 @@ void System::assemble_blocks(double dt, std::vector<Matrix6>& k, Eigen::VectorXd
   }
 }
 
-void System::factor_with_contacts(const std::vector<Matrix6>& base_blocks) {
-  // The matrix is the blocks' own terms (diagonal) plus one penalty spring w wᵀ per closed
-  // contact, normal and, locked, shear: w = √p e, e the contact's row of the linearised
-  // penetration or shear. The springs stay rank-one terms: the solver multiplies by them and
-  // assembles them only when it factors, and follows those that come and go between passes.
-  // The buffers are members, reused from call to call: fresh ones cost more in page faults
-  // than the assembly itself.
-  BlockMatrix& base = assembly_.matrix;
-  base.block_count = unknown_count_;
-  base.diagonal.assign(base_blocks.begin(), base_blocks.end());
-  base.pairs.clear();
-  base.off.clear();
+void System::factor_with_contacts() {
+  // The matrix is the blocks' own terms (assembly_.matrix, diagonal, made once a step) plus
+  // one penalty spring w wᵀ per closed contact, normal and, locked, shear: w = √p e, e the
+  // contact's row of the linearised penetration or shear. The springs stay rank-one terms:
+  // the solver multiplies by them and assembles them only when it factors, and follows those
+  // that come and go between passes. The buffers are members, reused from call to call:
+  // fresh ones cost more in page faults than the assembly itself.
   std::vector<RankOneTerm>& terms = assembly_.terms;
   terms.clear();
   const double root_penalty = std::sqrt(penalty_);
@@ -305,7 +300,7 @@ void System::factor_with_contacts(const std::vector<Matrix6>& base_blocks) {
     add_term(c, 0, c.en_i, c.en_j);  // normal spring ½ p d²
     if (c.record.state == ContactState::locked) add_term(c, 1, c.es_i, c.es_j);  // shear ½ p s²
   }
-  solver_->factor(base, terms);
+  solver_->factor(assembly_.matrix, terms);
 }
 
 Eigen::VectorXd System::assemble_contact_rhs(const Eigen::VectorXd& f_base) const {
@@ -382,13 +377,17 @@ double System::largest_vertex_motion(const Eigen::VectorXd& change) const {
 //     Mohr–Coulomb
 //   not settled in max iterations (states or forces) → the caller cuts Δt and retries.
 System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& report) {
-  std::vector<Matrix6> base;
+  // The blocks' own terms: the same for every pass of the step.
+  BlockMatrix& base = assembly_.matrix;
+  base.block_count = unknown_count_;
+  base.pairs.clear();
+  base.off.clear();
   Eigen::VectorXd f_base;
-  assemble_blocks(dt, base, f_base);
+  assemble_blocks(dt, base.diagonal, f_base);
   const bool lagrangian = settings_.contact == ContactMethod::augmented_lagrangian;
   for (int oc = 0; oc < settings_.max_open_close_iterations; ++oc) {
     report.open_close_iterations = oc + 1;
-    factor_with_contacts(base);
+    factor_with_contacts();
     // The sliding contacts' normal forces: those the friction loads were made with (x) and
     // those the solution gives (G(x)).
     std::vector<ActiveContact*> sliding;

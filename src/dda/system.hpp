@@ -145,7 +145,7 @@ class System {
   enum class Unsettled { no, contact_states, contact_forces };
   Unsettled solve_step(double dt, Eigen::VectorXd& d, StepReport& report);
   void assemble_blocks(double dt, std::vector<Matrix6>& k_base, Eigen::VectorXd& f_base) const;
-  void factor_with_contacts(const std::vector<Matrix6>& base_blocks);
+  void factor_with_contacts();
   Eigen::VectorXd assemble_contact_rhs(const Eigen::VectorXd& f_base) const;
   Vector6 block_unknowns(const Eigen::VectorXd& d, int dof) const;
   double compute_penetration(const ActiveContact& c, const Eigen::VectorXd& d) const;
@@ -171,7 +171,8 @@ class System {
   std::vector<std::vector<Point>> vertex_forces_;
   std::unique_ptr<LinearSolver> solver_;
 
-  // Buffers of factor_with_contacts, kept between calls.
+  // The step's matrix as the solver takes it, kept between calls: the blocks' own terms
+  // (diagonal blocks, assembled once a step) and the contact springs (once a pass).
   struct AssemblyBuffers {
     BlockMatrix matrix;
     std::vector<RankOneTerm> terms;

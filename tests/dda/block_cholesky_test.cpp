@@ -26,16 +26,21 @@ BlockMatrix make_matrix(int n, const std::set<std::pair<int, int>>& graph, Eigen
   return a;
 }
 
+// Blocks 0 … n−1 joined each to the next.
+std::set<std::pair<int, int>> chain_graph(int n) {
+  std::set<std::pair<int, int>> chain;
+  for (int b = 0; b + 1 < n; ++b) chain.emplace(b, b + 1);
+  return chain;
+}
+
 std::vector<int> natural_order(int n) {
   std::vector<int> order(n);
   std::iota(order.begin(), order.end(), 0);
   return order;
 }
 
-// A random graph of 40 blocks and 90 pairs, factored in three orders (natural, reversed,
-// random): A⁻¹ b agrees with a dense LLᵀ solve to 1e-10 relative, far above round-off for a
-// matrix this well conditioned, far below any error in the factor. With the portable kernels
-// and, where the CPU has AVX2 and FMA, the vectorised ones.
+// The tests below run with the portable kernels and, where the CPU has AVX2 and FMA, the
+// vectorised ones.
 class BlockCholeskyKernels : public ::testing::TestWithParam<bool> {
  protected:
   void SetUp() override {
@@ -47,6 +52,9 @@ class BlockCholeskyKernels : public ::testing::TestWithParam<bool> {
 INSTANTIATE_TEST_SUITE_P(BlockCholesky, BlockCholeskyKernels, ::testing::Values(false, true),
                          [](const auto& info) { return info.param ? "vectorised" : "portable"; });
 
+// A random graph of 40 blocks and 90 pairs, factored in three orders (natural, reversed,
+// random): A⁻¹ b agrees with a dense LLᵀ solve to 1e-10 relative, far above round-off for a
+// matrix this well conditioned, far below any error in the factor.
 TEST_P(BlockCholeskyKernels, SolvesAsADenseFactorDoes) {
   const int n = 40;
   std::mt19937 rng(5);
@@ -79,8 +87,7 @@ TEST_P(BlockCholeskyKernels, SolvesAsADenseFactorDoes) {
 // than all the blocks.
 TEST_P(BlockCholeskyKernels, HalfSolvesAndASparseForwardSolveAgree) {
   const int n = 40;
-  std::set<std::pair<int, int>> chain;
-  for (int b = 0; b + 1 < n; ++b) chain.emplace(b, b + 1);
+  std::set<std::pair<int, int>> chain = chain_graph(n);
   for (int b = 0; b + 5 < n; b += 5) chain.emplace(b, b + 5);
   Eigen::MatrixXd dense;
   const BlockMatrix a = make_matrix(n, chain, dense);
@@ -111,8 +118,8 @@ TEST_P(BlockCholeskyKernels, HalfSolvesAndASparseForwardSolveAgree) {
 // (every leaf joins every later leaf: (n − 1) + (n − 1)(n − 2)/2 blocks).
 TEST(BlockCholesky, FillIsThatOfTheEliminationGraph) {
   const int n = 12;
-  std::set<std::pair<int, int>> chain, star;
-  for (int b = 0; b + 1 < n; ++b) chain.emplace(b, b + 1);
+  const std::set<std::pair<int, int>> chain = chain_graph(n);
+  std::set<std::pair<int, int>> star;
   for (int b = 1; b < n; ++b) star.emplace(0, b);
   Eigen::MatrixXd dense;
   BlockCholesky factor;
@@ -135,10 +142,8 @@ TEST(BlockCholesky, FillIsThatOfTheEliminationGraph) {
 // refused, and no factor is left to be used.
 TEST(BlockCholesky, RefusesAMatrixThatIsNotPositiveDefinite) {
   const int n = 6;
-  std::set<std::pair<int, int>> chain;
-  for (int b = 0; b + 1 < n; ++b) chain.emplace(b, b + 1);
   Eigen::MatrixXd dense;
-  BlockMatrix a = make_matrix(n, chain, dense);
+  BlockMatrix a = make_matrix(n, chain_graph(n), dense);
   a.diagonal[3](2, 2) = -100.0;
   BlockCholesky factor;
   EXPECT_FALSE(factor.factorise(a, natural_order(n)));
