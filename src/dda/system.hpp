@@ -186,6 +186,7 @@ class System {
   double time_ = 0.0;
   double dt_ = 0.0;
   double penalty_ = 0.0;
+  double tan_friction_angle_ = 0.0;  // of the joints
   double fixed_stiffness_ = 0.0;
   double model_size_ = 0.0;
   double allowed_displacement_ = 0.0;
