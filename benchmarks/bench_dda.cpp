@@ -6,9 +6,9 @@
 #include <benchmark/benchmark.h>
 
 #include <random>
-#include <set>
 
 #include "dda/block_cholesky.hpp"
+#include "dda/contact_detection.hpp"
 #include "dda/system.hpp"
 #include "dda/test_models.hpp"  // tests/dda: the brick wall the tests and ntdda run
 
@@ -25,6 +25,7 @@ using hydrodda::dda::Polygon;
 using hydrodda::dda::System;
 
 using hydrodda::dda::testing::make_brick_wall;
+using hydrodda::dda::testing::make_wall_graph_matrix;
 using hydrodda::dda::testing::make_rectangle;
 
 ModelDefinition make_base_model() {
@@ -108,24 +109,6 @@ void BM_BrickWallCholmod(benchmark::State& state) {
 }
 BENCHMARK(BM_BrickWallCholmod)->Args({20, 20})->Args({40, 40})->Iterations(20)->Unit(benchmark::kMillisecond);
 
-// A matrix on the block graph of a rows × rows staggered wall (each brick joined to its two
-// neighbours in the row and two in each row above and below), each joint adding Gᵀ G for a
-// random 6 × 12 G, plus the identity: the pattern, and so the fill, of the wall's matrix.
-BlockMatrix make_wall_graph_matrix(int rows) {
-  std::set<std::pair<int, int>> joints;
-  for (int r = 0; r < rows; ++r)
-    for (int c = 0; c < rows; ++c) {
-      const int b = r * rows + c;
-      if (c + 1 < rows) joints.emplace(b, b + 1);
-      if (r + 1 < rows) {
-        joints.emplace(b, b + rows);
-        const int shifted = r % 2 == 0 ? c - 1 : c + 1;
-        if (shifted >= 0 && shifted < rows) joints.emplace(b, (r + 1) * rows + shifted);
-      }
-    }
-  return hydrodda::dda::testing::make_block_graph_matrix(rows * rows, {joints.begin(), joints.end()}, 21);
-}
-
 // One factorisation and one solve from scratch, the block factor against CHOLMOD on the same
 // matrix (argument 1: CHOLMOD).
 void BM_WallGraphFactorAndSolve(benchmark::State& state) {
@@ -149,6 +132,15 @@ BENCHMARK(BM_WallGraphFactorAndSolve)
 // The block factor's two halves apart on the wall's matrix: the factorisation, and one pair
 // of triangular solves with the kept factor (the step's most frequent operation: one per CG
 // iteration). Counter: L's off-diagonal 6×6 blocks, the fill.
+// The factor's work (blocks of L) in the two parts of its elimination tree that run side by
+// side, and in the top that runs after them.
+void add_part_counters(benchmark::State& state, const hydrodda::dda::BlockCholesky& factor) {
+  const auto parts = factor.part_blocks();
+  state.counters["part_0"] = static_cast<double>(parts[0]);
+  state.counters["part_1"] = static_cast<double>(parts[1]);
+  state.counters["top"] = static_cast<double>(parts[2]);
+}
+
 void BM_WallGraphFactorise(benchmark::State& state) {
   const BlockMatrix a = make_wall_graph_matrix(static_cast<int>(state.range(0)));
   const std::vector<int> order = hydrodda::dda::order_by_minimum_degree(a);
@@ -156,6 +148,7 @@ void BM_WallGraphFactorise(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(factor.factorise(a, order));
   state.counters["blocks"] = a.block_count;
   state.counters["L_blocks"] = static_cast<double>(factor.off_diagonal_blocks());
+  add_part_counters(state, factor);
 }
 BENCHMARK(BM_WallGraphFactorise)->Arg(40)->Arg(100)->Unit(benchmark::kMillisecond);
 
@@ -170,8 +163,37 @@ void BM_WallGraphTriangularSolves(benchmark::State& state) {
   }
   state.counters["blocks"] = a.block_count;
   state.counters["L_blocks"] = static_cast<double>(factor.off_diagonal_blocks());
+  add_part_counters(state, factor);
 }
 BENCHMARK(BM_WallGraphTriangularSolves)->Arg(40)->Arg(100)->Unit(benchmark::kMicrosecond);
+
+// Contact detection alone on the wall as it stands (rows × rows blocks, the contact distance a
+// step uses there: 2.5 × 1% of half the height): the broad phase, then the narrow phase over
+// its pairs, one thread. Counters: the pairs and the candidate contacts.
+void BM_WallContactDetection(benchmark::State& state) {
+  const int rows = static_cast<int>(state.range(0));
+  const ModelDefinition wall = make_brick_wall(rows, rows);
+  std::vector<hydrodda::geometry::Box> boxes;
+  std::vector<char> fixed;
+  for (const auto& b : wall.blocks) {
+    boxes.push_back(hydrodda::geometry::bounding_box(b.polygon));
+    fixed.push_back(b.fixed);
+  }
+  const double distance = 2.5 * 0.01 * 0.5 * (rows + 1.0);
+  std::size_t pair_count = 0, candidate_count = 0;
+  for (auto _ : state) {
+    const auto pairs = hydrodda::dda::find_block_pairs(boxes, distance, fixed);
+    hydrodda::dda::ContactCandidates found;
+    for (auto [a, b] : pairs)
+      hydrodda::dda::find_pair_contacts(wall.blocks[a].polygon, a, wall.blocks[b].polygon, b, distance, found);
+    benchmark::DoNotOptimize(found.data());
+    pair_count = pairs.size();
+    candidate_count = found.size();
+  }
+  state.counters["pairs"] = static_cast<double>(pair_count);
+  state.counters["candidates"] = static_cast<double>(candidate_count);
+}
+BENCHMARK(BM_WallContactDetection)->Arg(40)->Unit(benchmark::kMicrosecond);
 
 void BM_RandomPacking(benchmark::State& state) {
   // 60 steps of 1 ms: a free fall of 18 mm, past every initial gap.

@@ -1,6 +1,7 @@
 # Every dependency is a Debian package installed by scripts/install-deps.sh.
 find_package(PkgConfig REQUIRED)
 find_package(Threads REQUIRED)
+find_package(OpenMP REQUIRED)      # GCC's libgomp: the two-part block factor and sweeps
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(fmt REQUIRED)
 find_package(spdlog REQUIRED)

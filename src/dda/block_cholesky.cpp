@@ -1,13 +1,17 @@
 #include "dda/block_cholesky.hpp"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
+
 
 #if defined(__x86_64__)
 #include <immintrin.h>
 #endif
 
 #include <Eigen/Cholesky>
+
+#include "dda/parallel.hpp"
 
 namespace hydrodda::dda {
 
@@ -88,6 +92,9 @@ void BlockCholesky::clear() {
   inverse_diagonal_.clear();
   parent_.clear();
   position_.clear();
+  for (auto& columns : part_columns_) columns.clear();
+  top_index_.clear();
+  top_rows_start_.clear();
 }
 
 bool BlockCholesky::use_vectorised_kernels(bool on) {
@@ -144,35 +151,51 @@ bool BlockCholesky::factorise(const BlockMatrix& a, const std::vector<int>& orde
         }
   }
 
-  // ereach(k): the row pattern of L(k, :), on the stack[top … n−1], children first.
-  std::vector<int> mark(n, -1), stack(n), path(n);
-  const auto reach = [&](int k) {
+  parent_ = std::move(parent);
+
+  // ereach(k): the row pattern of L(k, :), on stack[top … n−1], children first. Each part
+  // of the tree has its own marks and stacks.
+  struct Reach {
+    std::vector<int> mark, stack, path;
+  };
+  std::array<Reach, 2> reaches;
+  for (Reach& r : reaches) {
+    r.mark.assign(n, -1);
+    r.stack.resize(n);
+    r.path.resize(n);
+  }
+  const auto reach = [&](int k, Reach& r) {
     int top = n;
-    mark[k] = k;
+    r.mark[k] = k;
     for (int e = row_start[k]; e < row_start[k + 1]; ++e) {
       int length = 0;
-      for (int i = rows[e].column; mark[i] != k; i = parent[i]) {
-        path[length++] = i;
-        mark[i] = k;
+      for (int i = rows[e].column; r.mark[i] != k; i = parent_[i]) {
+        r.path[length++] = i;
+        r.mark[i] = k;
       }
-      while (length > 0) stack[--top] = path[--length];
+      while (length > 0) r.stack[--top] = r.path[--length];
     }
     return top;
   };
 
-  // Column counts, then the numeric factorisation into the allocated columns.
+  // Column counts, then the split of the tree, then the numeric factorisation into the
+  // allocated columns.
   column_start_.assign(n + 1, 0);
   for (int k = 0; k < n; ++k)
-    for (int top = reach(k); top < n; ++top) ++column_start_[stack[top] + 1];
+    for (int top = reach(k, reaches[0]); top < n; ++top) ++column_start_[reaches[0].stack[top] + 1];
   for (int k = 0; k < n; ++k) column_start_[k + 1] += column_start_[k];
+  block_count_ = n;
+  split_elimination_tree();
   row_.resize(column_start_[n]);
   value_.resize(column_start_[n]);
   inverse_diagonal_.resize(n);
   std::vector<int> filled(column_start_.begin(), column_start_.end() - 1);
-  std::vector<Matrix6> x(n, Matrix6::Zero());
-  std::fill(mark.begin(), mark.end(), -1);
-  for (int k = 0; k < n; ++k) {
-    const int top = reach(k);
+  // Row k touches only its own subtree (the columns of ereach(k) and their rows below k), so
+  // the two parts share nothing here.
+  Matrix6Array x(n, Matrix6::Zero());
+  for (Reach& r : reaches) std::fill(r.mark.begin(), r.mark.end(), -1);
+  const auto eliminate_row = [&](int k, Reach& r) {
+    const int top = reach(k, r);
     for (int e = row_start[k]; e < row_start[k + 1]; ++e) {
       const Matrix6& block = a.off[rows[e].pair];
       if (rows[e].transposed)
@@ -182,7 +205,7 @@ bool BlockCholesky::factorise(const BlockMatrix& a, const std::vector<int>& orde
     }
     Matrix6 d = a.diagonal[order[k]];
     for (int s = top; s < n; ++s) {
-      const int i = stack[s];
+      const int i = r.stack[s];
       const Matrix6 lki = x[i] * inverse_diagonal_[i].transpose();
       x[i].setZero();
       subtract_products(lki, value_.data() + column_start_[i], row_.data() + column_start_[i],
@@ -192,19 +215,120 @@ bool BlockCholesky::factorise(const BlockMatrix& a, const std::vector<int>& orde
       value_[filled[i]++] = lki;
     }
     const Eigen::LLT<Matrix6> llt(d);
-    if (llt.info() != Eigen::Success || !std::isfinite(d.trace())) {
-      clear();
-      return false;
-    }
+    if (llt.info() != Eigen::Success || !std::isfinite(d.trace())) return false;
     inverse_diagonal_[k] = llt.matrixL().solve(Matrix6::Identity());
+    return true;
+  };
+  std::array<bool, 2> part_ok{true, true};
+  run_two_parts(run_parts_in_parallel(), [&](int p) {
+    for (int k : part_columns_[p])
+      if (!(part_ok[p] = eliminate_row(k, reaches[p]))) return;
+  });
+  bool ok = part_ok[0] && part_ok[1];
+  for (std::size_t t = 0; ok && t < part_columns_[2].size(); ++t) ok = eliminate_row(part_columns_[2][t], reaches[0]);
+  if (!ok) {
+    clear();
+    return false;
   }
+  // Where each part's columns reach the top: the forward sweep's updates beyond it wait in
+  // the part's own buffer. A column's rows are its ancestors ascending, its own subtree's
+  // first.
+  top_rows_start_.resize(n);
+  for (int k = 0; k < n; ++k) {
+    int q = column_start_[k];
+    if (top_index_[k] >= 0) {
+      q = column_start_[k + 1];  // the top's own columns update the top directly
+    } else {
+      while (q < column_start_[k + 1] && top_index_[row_[q]] < 0) ++q;
+    }
+    top_rows_start_[k] = q;
+  }
+  for (Eigen::VectorXd& updates : top_updates_) updates.setZero(6 * static_cast<Eigen::Index>(part_columns_[2].size()));
   order_ = order;
-  parent_ = std::move(parent);
   path_work_.setZero(6 * n);
   on_path_.assign(n, 0);
-  block_count_ = n;
   return true;
 }
+
+// Pseudocode (subtree-to-processor mapping; Geist & Ng, "Task scheduling for parallel sparse
+// Cholesky factorization", Int. J. Parallel Programming 18, 1989):
+//   weight(v) ← the blocks of L in column v, diagonal included; load(v) ← over v's subtree
+//   candidates ← the roots; top ← ∅
+//   repeat:
+//     deal the candidates, heaviest first, each to the lighter part
+//     keep the split if max(part loads) + weight(top) is the least so far
+//     move the heaviest candidate to the top, its children into the candidates
+//   until no candidate is left or the top alone weighs as much as the best split
+void BlockCholesky::split_elimination_tree() {
+  const int n = block_count_;
+  std::vector<long> load(n);
+  for (int k = 0; k < n; ++k) load[k] = column_start_[k + 1] - column_start_[k] + 1;
+  const std::vector<long> weight = load;
+  for (int k = 0; k < n; ++k)
+    if (parent_[k] >= 0) load[parent_[k]] += load[k];
+  std::vector<std::vector<int>> children(n);
+  std::vector<int> candidates;
+  for (int k = 0; k < n; ++k) (parent_[k] >= 0 ? children[parent_[k]] : candidates).push_back(k);
+  // Heaviest first; ties by position, so that the split is the same on every machine.
+  const auto heavier = [&](int a, int b) { return load[a] != load[b] ? load[a] > load[b] : a < b; };
+  const auto deal = [&](const std::vector<int>& sorted, std::vector<int>* part_of_root) {
+    std::array<long, 2> parts{0, 0};
+    for (int v : sorted) {
+      const int p = parts[1] < parts[0] ? 1 : 0;
+      parts[p] += load[v];
+      if (part_of_root) (*part_of_root)[v] = p;
+    }
+    return std::max(parts[0], parts[1]);
+  };
+  std::sort(candidates.begin(), candidates.end(), heavier);
+  const std::vector<int> roots = candidates;
+  std::vector<int> moved;  // candidates moved to the top, in turn
+  long top_weight = 0;
+  long best_cost = deal(candidates, nullptr);
+  std::size_t best_moves = 0;
+  while (!candidates.empty() && top_weight < best_cost) {
+    const int v = candidates.front();
+    candidates.erase(candidates.begin());
+    moved.push_back(v);
+    top_weight += weight[v];
+    for (int c : children[v]) candidates.insert(std::upper_bound(candidates.begin(), candidates.end(), c, heavier), c);
+    const long cost = deal(candidates, nullptr) + top_weight;
+    if (cost < best_cost) {
+      best_cost = cost;
+      best_moves = moved.size();
+    }
+  }
+  // The best split again: its top, its candidates dealt, every node in its root's part.
+  std::vector<char> in_top(n, 0);
+  candidates = roots;
+  for (std::size_t m = 0; m < best_moves; ++m) {
+    const int v = moved[m];
+    in_top[v] = 1;
+    candidates.erase(std::find(candidates.begin(), candidates.end(), v));
+    for (int c : children[v]) candidates.insert(std::upper_bound(candidates.begin(), candidates.end(), c, heavier), c);
+  }
+  std::vector<int> part_of(n, 2);
+  deal(candidates, &part_of);
+  for (int k = n - 1; k >= 0; --k)
+    if (!in_top[k] && parent_[k] >= 0 && !in_top[parent_[k]]) part_of[k] = part_of[parent_[k]];
+  for (auto& columns : part_columns_) columns.clear();
+  top_index_.assign(n, -1);
+  for (int k = 0; k < n; ++k) {
+    if (part_of[k] == 2) top_index_[k] = static_cast<int>(part_columns_[2].size());
+    part_columns_[part_of[k]].push_back(k);
+  }
+}
+
+std::array<long, 3> BlockCholesky::part_blocks() const {
+  std::array<long, 3> blocks{0, 0, 0};
+  for (int p = 0; p < 3; ++p)
+    for (int k : part_columns_[p]) blocks[p] += column_start_[k + 1] - column_start_[k] + 1;
+  return blocks;
+}
+
+// Below some 5,000 blocks of L a sweep takes tens of microseconds, and waking a second thread
+// costs as much as it saves.
+bool BlockCholesky::run_parts_in_parallel() const { return column_start_.back() + block_count_ >= 5000; }
 
 struct BlockCholesky::Sweep {
   int n;
@@ -212,6 +336,8 @@ struct BlockCholesky::Sweep {
   const int* row;
   const Matrix6* value;
   const Matrix6* inverse_diagonal;
+  const int* top_rows_start;  // per column: its rows from here on are the top's
+  const int* top_index;
 };
 
 namespace {
@@ -226,7 +352,7 @@ namespace {
 // Backward, by rows of Lᵀ: u_k ← L_kk⁻ᵀ (u_k − Σ_r L_rkᵀ u_r).
 using Sweep = BlockCholesky::Sweep;
 
-// One column of the forward sweep, for the dense sweep and the sparse one alike.
+// One column of the forward sweep with all its updates in u: the sparse sweep's.
 void forward_column(const Sweep& l, int k, double* u) {
   Eigen::Map<Vector6> uk(u + 6 * k);
   // The inverse is lower triangular; a full fixed-size product is faster than a triangular one.
@@ -236,12 +362,24 @@ void forward_column(const Sweep& l, int k, double* u) {
     Eigen::Map<Vector6>(u + 6 * l.row[q]).noalias() -= l.value[q] * yk;
 }
 
-void forward_portable(const Sweep& l, double* u) {
-  for (int k = 0; k < l.n; ++k) forward_column(l, k, u);
+// The forward sweep over some columns, ascending: their updates to the top's rows go to
+// `top_updates` (by top index), the rest to u.
+void forward_portable(const Sweep& l, const std::vector<int>& columns, double* u, double* top_updates) {
+  for (int k : columns) {
+    Eigen::Map<Vector6> uk(u + 6 * k);
+    const Vector6 yk = l.inverse_diagonal[k] * uk;
+    uk = yk;
+    int q = l.column_start[k];
+    for (; q < l.top_rows_start[k]; ++q) Eigen::Map<Vector6>(u + 6 * l.row[q]).noalias() -= l.value[q] * yk;
+    for (; q < l.column_start[k + 1]; ++q)
+      Eigen::Map<Vector6>(top_updates + 6 * l.top_index[l.row[q]]).noalias() -= l.value[q] * yk;
+  }
 }
 
-void backward_portable(const Sweep& l, double* u) {
-  for (int k = l.n - 1; k >= 0; --k) {
+// The backward sweep over some columns, descending; every row they read is final.
+void backward_portable(const Sweep& l, const std::vector<int>& columns, double* u) {
+  for (auto c = columns.rbegin(); c != columns.rend(); ++c) {
+    const int k = *c;
     Eigen::Map<Vector6> uk(u + 6 * k);
     Vector6 t = uk;
     for (int q = l.column_start[k]; q < l.column_start[k + 1]; ++q)
@@ -251,33 +389,38 @@ void backward_portable(const Sweep& l, double* u) {
 }
 
 #if defined(__x86_64__)
-// A 6-vector as a 4-wide and a 2-wide register.
-[[gnu::target("avx2,fma")]] void forward_avx2(const Sweep& l, double* u) {
-  for (int k = 0; k < l.n; ++k) {
+// A 6-vector as a 4-wide and a 2-wide register: target −= v y, y's entries broadcast.
+[[gnu::target("avx2,fma")]] inline void subtract_product_avx2(const double* v, const __m256d* y, double* target) {
+  __m256d head = _mm256_loadu_pd(target);
+  __m128d tail = _mm_loadu_pd(target + 4);
+  for (int j = 0; j < 6; ++j) {
+    head = _mm256_fnmadd_pd(_mm256_loadu_pd(v + 6 * j), y[j], head);
+    tail = _mm_fnmadd_pd(_mm_loadu_pd(v + 6 * j + 4), _mm256_castpd256_pd128(y[j]), tail);
+  }
+  _mm256_storeu_pd(target, head);
+  _mm_storeu_pd(target + 4, tail);
+}
+
+[[gnu::target("avx2,fma")]] void forward_avx2(const Sweep& l, const std::vector<int>& columns, double* u,
+                                             double* top_updates) {
+  for (int k : columns) {
     Eigen::Map<Vector6> uk(u + 6 * k);
     const Vector6 yk = l.inverse_diagonal[k] * uk;
     uk = yk;
     __m256d y[6];
     for (int j = 0; j < 6; ++j) y[j] = _mm256_set1_pd(yk[j]);
-    for (int q = l.column_start[k]; q < l.column_start[k + 1]; ++q) {
-      const double* v = l.value[q].data();
-      double* target = u + 6 * l.row[q];
-      __m256d head = _mm256_loadu_pd(target);
-      __m128d tail = _mm_loadu_pd(target + 4);
-      for (int j = 0; j < 6; ++j) {
-        head = _mm256_fnmadd_pd(_mm256_loadu_pd(v + 6 * j), y[j], head);
-        tail = _mm_fnmadd_pd(_mm_loadu_pd(v + 6 * j + 4), _mm256_castpd256_pd128(y[j]), tail);
-      }
-      _mm256_storeu_pd(target, head);
-      _mm_storeu_pd(target + 4, tail);
-    }
+    int q = l.column_start[k];
+    for (; q < l.top_rows_start[k]; ++q) subtract_product_avx2(l.value[q].data(), y, u + 6 * l.row[q]);
+    for (; q < l.column_start[k + 1]; ++q)
+      subtract_product_avx2(l.value[q].data(), y, top_updates + 6 * l.top_index[l.row[q]]);
   }
 }
 
 // Σ_r L_rkᵀ u_r: column j of each block times u_r, elementwise into one accumulator per j,
 // summed across once per k.
-[[gnu::target("avx2,fma")]] void backward_avx2(const Sweep& l, double* u) {
-  for (int k = l.n - 1; k >= 0; --k) {
+[[gnu::target("avx2,fma")]] void backward_avx2(const Sweep& l, const std::vector<int>& columns, double* u) {
+  for (auto c = columns.rbegin(); c != columns.rend(); ++c) {
+    const int k = *c;
     __m256d head[6];
     __m128d tail[6];
     for (int j = 0; j < 6; ++j) {
@@ -305,28 +448,52 @@ void backward_portable(const Sweep& l, double* u) {
   }
 }
 
-void forward_sweep(const Sweep& l, double* u) { vectorised ? forward_avx2(l, u) : forward_portable(l, u); }
-void backward_sweep(const Sweep& l, double* u) { vectorised ? backward_avx2(l, u) : backward_portable(l, u); }
+void forward_sweep(const Sweep& l, const std::vector<int>& columns, double* u, double* top_updates) {
+  vectorised ? forward_avx2(l, columns, u, top_updates) : forward_portable(l, columns, u, top_updates);
+}
+void backward_sweep(const Sweep& l, const std::vector<int>& columns, double* u) {
+  vectorised ? backward_avx2(l, columns, u) : backward_portable(l, columns, u);
+}
 #else
-void forward_sweep(const Sweep& l, double* u) { forward_portable(l, u); }
-void backward_sweep(const Sweep& l, double* u) { backward_portable(l, u); }
+void forward_sweep(const Sweep& l, const std::vector<int>& columns, double* u, double* top_updates) {
+  forward_portable(l, columns, u, top_updates);
+}
+void backward_sweep(const Sweep& l, const std::vector<int>& columns, double* u) {
+  backward_portable(l, columns, u);
+}
 #endif
 
 }  // namespace
 
 BlockCholesky::Sweep BlockCholesky::sweep() const {
-  return {block_count_, column_start_.data(), row_.data(), value_.data(), inverse_diagonal_.data()};
+  return {block_count_,       column_start_.data(),    row_.data(),      value_.data(),
+          inverse_diagonal_.data(), top_rows_start_.data(), top_index_.data()};
 }
 
+// The two parts, each with the top's updates in its own buffer; then the top, once both
+// parts' updates are in.
 void BlockCholesky::forward(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::VectorXd& u) const {
   const int n = block_count_;
   u.resize(6 * n);
   for (int k = 0; k < n; ++k) u.segment<6>(6 * k) = x.segment<6>(6 * order_[k]);
-  forward_sweep(sweep(), u.data());
+  const Sweep l = sweep();
+  run_two_parts(run_parts_in_parallel(),
+            [&](int p) { forward_sweep(l, part_columns_[p], u.data(), top_updates_[p].data()); });
+  const std::vector<int>& top = part_columns_[2];
+  for (std::size_t t = 0; t < top.size(); ++t) {
+    for (Eigen::VectorXd& updates : top_updates_) {
+      u.segment<6>(6 * top[t]) += updates.segment<6>(6 * t);
+      updates.segment<6>(6 * t).setZero();
+    }
+  }
+  forward_sweep(l, top, u.data(), nullptr);
 }
 
+// The top first, then the two parts, which read only it and themselves.
 void BlockCholesky::backward(Eigen::VectorXd& u, Eigen::Ref<Eigen::VectorXd> x) const {
-  backward_sweep(sweep(), u.data());
+  const Sweep l = sweep();
+  backward_sweep(l, part_columns_[2], u.data());
+  run_two_parts(run_parts_in_parallel(), [&](int p) { backward_sweep(l, part_columns_[p], u.data()); });
   for (int k = 0; k < block_count_; ++k) x.segment<6>(6 * order_[k]) = u.segment<6>(6 * k);
 }
 

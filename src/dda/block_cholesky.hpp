@@ -8,6 +8,7 @@
 // takes 80 ms (bench_dda, BM_WallGraphFactorAndSolve), and the whole wall step is faster
 // (BM_BrickWall against BM_BrickWallCholmod; docs/performance.md).
 
+#include <array>
 #include <vector>
 
 #include <Eigen/Core>
@@ -48,6 +49,9 @@ class BlockCholesky {
   struct Sweep;
   // Off-diagonal 6×6 blocks of L: the fill.
   long off_diagonal_blocks() const { return static_cast<long>(row_.size()); }
+  // The factor's work (blocks of L, diagonal included) in each of the two parts of the
+  // elimination tree that run side by side, and in the top that runs after them.
+  std::array<long, 3> part_blocks() const;
   void clear();
 
  private:
@@ -55,14 +59,25 @@ class BlockCholesky {
   std::vector<int> order_;            // order_[k]: the block eliminated k-th
   std::vector<int> column_start_;     // L's block columns (positions), compressed
   std::vector<int> row_;
-  std::vector<Matrix6> value_;
-  std::vector<Matrix6> inverse_diagonal_;  // (L_kk)⁻¹, lower triangular
+  Matrix6Array value_;
+  Matrix6Array inverse_diagonal_;  // (L_kk)⁻¹, lower triangular
   std::vector<int> position_;               // position_[b]: where block b is eliminated
   std::vector<int> parent_;                 // elimination tree, in positions; −1 at a root
+  // Two parts of the elimination tree, each a set of whole subtrees, that share no column,
+  // and the top: the ancestors of both (split_elimination_tree). The factorisation and both
+  // sweeps do the two parts side by side, on two threads where there are two, and the top
+  // after them; the arithmetic is the same on one thread or two.
+  std::array<std::vector<int>, 3> part_columns_;  // positions ascending: part 0, part 1, top
+  std::vector<int> top_index_;                    // position → index among the top's; −1 below
+  std::vector<int> top_rows_start_;               // position → first of its column's top rows
+  mutable std::array<Eigen::VectorXd, 2> top_updates_;  // each part's forward updates to the top
   mutable Eigen::VectorXd work_;
   mutable Eigen::VectorXd path_work_;       // zero but during forward_sparse
   mutable std::vector<char> on_path_;       // likewise
   Sweep sweep() const;
+  void split_elimination_tree();
+  // Whether a factor this size pays for a second thread.
+  bool run_parts_in_parallel() const;
 };
 
 }  // namespace hydrodda::dda

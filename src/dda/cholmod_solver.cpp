@@ -49,7 +49,7 @@ class CholmodSolver final : public LinearSolver {
   CholmodSolver(const CholmodSolver&) = delete;
   CholmodSolver& operator=(const CholmodSolver&) = delete;
 
-  void factor(const BlockMatrix& base, const std::vector<RankOneTerm>& terms) override {
+  void factor(const BlockMatrix& base, const RankOneTerms& terms) override {
     const BlockMatrix a = add_springs(base, terms);
     if (ordering_.empty() || a.block_count != block_count_) compute_ordering(a);
     matrix_ = a.lower_triangle();
@@ -106,7 +106,7 @@ class CholmodSolver final : public LinearSolver {
   // Updates L by the terms new since it was made and downdates it by those gone, in place.
   // False if it did not: too many changes at once, or a downdate CHOLMOD could not make (one
   // that would lose positive definiteness).
-  bool follow_terms(const std::vector<RankOneTerm>& terms) {
+  bool follow_terms(const RankOneTerms& terms) {
     // Many changes at once (contacts landing all over a settling packing): each update walks
     // a path of L, and past a quarter of the block count a fresh factorisation costs less
     // (bench_dda: the 1,601-block packing went from 709 to 95 ms a step, the wall unchanged).
@@ -115,7 +115,7 @@ class CholmodSolver final : public LinearSolver {
     if (added_.empty() && removed_.empty()) return true;
     if (!modify_factor(added_, true) || !modify_factor(removed_, false)) return false;
     // What L now holds: the kept terms as they were made, and the new ones.
-    std::vector<RankOneTerm> held;
+    RankOneTerms held;
     held.reserve(terms.size());
     std::set_difference(factored_terms_.begin(), factored_terms_.end(), removed_.begin(), removed_.end(),
                         std::back_inserter(held), id_less);
@@ -126,7 +126,7 @@ class CholmodSolver final : public LinearSolver {
   }
 
   // L D Lᵀ ← L D Lᵀ ± C Cᵀ, C's columns the terms' vectors in the factor's row order.
-  bool modify_factor(const std::vector<RankOneTerm>& terms, bool update) {
+  bool modify_factor(const RankOneTerms& terms, bool update) {
     if (terms.empty()) return true;
     const int n = static_cast<int>(matrix_.rows());
     cholmod_sparse* c = cholmod_allocate_sparse(n, terms.size(), 12 * terms.size(), true, true, 0,
@@ -236,9 +236,9 @@ class CholmodSolver final : public LinearSolver {
   mutable std::vector<int> inverse_order_;
   int block_count_ = -1;
   SparseMatrix matrix_;
-  std::vector<RankOneTerm> terms_;                   // of the current matrix
-  mutable std::vector<RankOneTerm> factored_terms_;  // as held by the factor
-  std::vector<RankOneTerm> added_, removed_;
+  RankOneTerms terms_;                   // of the current matrix
+  mutable RankOneTerms factored_terms_;  // as held by the factor
+  RankOneTerms added_, removed_;
   mutable Eigen::VectorXd last_solution_;  // the starting guess of the next solve
   mutable bool stale_ = true;
   mutable SolverCounts counts_;

@@ -11,11 +11,18 @@ using geometry::Point;
 
 std::vector<std::pair<int, int>> find_block_pairs(std::span<const Box> boxes, double distance,
                                                   std::span<const char> skip) {
+  std::vector<std::pair<int, int>> pairs;
+  find_block_pairs(boxes, distance, skip, pairs);
+  return pairs;
+}
+
+void find_block_pairs(std::span<const Box> boxes, double distance, std::span<const char> skip,
+                      std::vector<std::pair<int, int>>& pairs) {
   // Uniform grid: cell = mean box extent; each box is entered in every cell it covers, the
   // (cell, block) list is sorted and pairs are read off within each cell, then deduplicated.
   const int n = static_cast<int>(boxes.size());
-  std::vector<std::pair<int, int>> pairs;
-  if (n < 2) return pairs;
+  pairs.clear();
+  if (n < 2) return;
   Box all;
   double extent = 0.0;
   for (const Box& b : boxes) {
@@ -27,8 +34,8 @@ std::vector<std::pair<int, int>> find_block_pairs(std::span<const Box> boxes, do
   // Keep the cell count near the block count so memory stays linear.
   while ((all.width() / cell + 1) * (all.height() / cell + 1) > 4.0 * n + 16) cell *= 1.5;
   const auto nx = static_cast<std::int64_t>(all.width() / cell) + 1;
-  std::vector<std::pair<std::int64_t, int>> entries;
-  entries.reserve(4 * boxes.size());
+  thread_local std::vector<std::pair<std::int64_t, int>> entries;  // the memory kept from call to call
+  entries.clear();
   for (int i = 0; i < n; ++i) {
     const Box b = boxes[i].inflated(distance / 2);
     const auto x0 = static_cast<std::int64_t>((b.lo.x - all.lo.x) / cell);
@@ -55,7 +62,6 @@ std::vector<std::pair<int, int>> find_block_pairs(std::span<const Box> boxes, do
   }
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  return pairs;
 }
 
 namespace {
@@ -108,7 +114,7 @@ struct EdgeFrame {
 // vertex–edge pairs before any division or square root (bench_dda: detection was an eighth
 // of a wall's step).
 void find_one_way(std::span<const Point> va, int a, std::span<const Point> eb, int b,
-                  double distance, std::vector<ContactCandidate>& out) {
+                  double distance, ContactCandidates& out) {
   const int nv = static_cast<int>(va.size());
   const int ne = static_cast<int>(eb.size());
   thread_local std::vector<EdgeFrame> edges;
@@ -177,7 +183,7 @@ void find_one_way(std::span<const Point> va, int a, std::span<const Point> eb, i
 
 void find_pair_contacts(std::span<const Point> polygon_a, int a,
                         std::span<const Point> polygon_b, int b, double distance,
-                        std::vector<ContactCandidate>& out) {
+                        ContactCandidates& out) {
   const std::size_t first = out.size();
   find_one_way(polygon_a, a, polygon_b, b, distance, out);
   const std::size_t second = out.size();

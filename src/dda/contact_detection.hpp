@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "dda/huge_page_allocator.hpp"
 #include "geometry/point.hpp"
 #include "geometry/polygon.hpp"
 
@@ -30,8 +31,13 @@ struct ContactCandidate {
   double length = 0.0;       // tributary length of face contact (for cohesion, tension)
 };
 
+using ContactCandidates = std::vector<ContactCandidate, HugePageAllocator<ContactCandidate>>;
+
 // Pairs (i < j) of blocks whose boxes, grown by `distance`, overlap; pairs of two blocks that
-// both have skip[i] set (fixed blocks) are left out. Sorted.
+// both have skip[i] set (fixed blocks) are left out. Sorted, into `pairs` (its old contents
+// replaced, its memory reused).
+void find_block_pairs(std::span<const geometry::Box> boxes, double distance, std::span<const char> skip,
+                      std::vector<std::pair<int, int>>& pairs);
 std::vector<std::pair<int, int>> find_block_pairs(std::span<const geometry::Box> boxes,
                                                   double distance,
                                                   std::span<const char> skip);
@@ -39,6 +45,6 @@ std::vector<std::pair<int, int>> find_block_pairs(std::span<const geometry::Box>
 // Vertex–edge contacts of the pair (a, b), both ways, within `distance`. Sorted by key.
 void find_pair_contacts(std::span<const geometry::Point> polygon_a, int a,
                         std::span<const geometry::Point> polygon_b, int b, double distance,
-                        std::vector<ContactCandidate>& out);
+                        ContactCandidates& out);
 
 }  // namespace hydrodda::dda

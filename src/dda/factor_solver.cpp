@@ -58,7 +58,7 @@ class BlockFactorSolver final : public LinearSolver {
   BlockFactorSolver(double tolerance, int max_iterations)
       : tolerance_(tolerance), max_iterations_(max_iterations) {}
 
-  void factor(const BlockMatrix& base, const std::vector<RankOneTerm>& terms) override {
+  void factor(const BlockMatrix& base, const RankOneTerms& terms) override {
     if (base.block_count != base_.block_count) {
       order_.clear();  // ordered at the next factorisation, on the assembled pattern
       factor_.clear();
@@ -115,7 +115,7 @@ class BlockFactorSolver final : public LinearSolver {
   // many changes to follow.
   bool follow_terms() {
     // What appeared (+), what disappeared (−).
-    std::vector<RankOneTerm> added, removed;
+    RankOneTerms added, removed;
     if (!find_changed_terms(terms_, factored_terms_, kMaxCorrections, added, removed)) return false;
     std::vector<Correction> wanted;
     for (const RankOneTerm& t : added) wanted.push_back({t, 1.0, {}});
@@ -217,8 +217,8 @@ class BlockFactorSolver final : public LinearSolver {
   int max_iterations_;
   mutable std::vector<int> order_;
   BlockMatrix base_;  // the matrix is base_ + the springs terms_
-  std::vector<RankOneTerm> terms_;                   // of the current matrix
-  mutable std::vector<RankOneTerm> factored_terms_;  // as held by the factor
+  RankOneTerms terms_;                   // of the current matrix
+  mutable RankOneTerms factored_terms_;  // as held by the factor
   mutable BlockCholesky factor_;
   mutable std::vector<Correction> corrections_;
   mutable Eigen::PartialPivLU<Eigen::MatrixXd> capacitance_;

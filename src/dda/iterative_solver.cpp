@@ -17,7 +17,7 @@ class ConjugateGradientSolver final : public LinearSolver {
   ConjugateGradientSolver(double tolerance, int max_iterations)
       : tolerance_(tolerance), max_iterations_(max_iterations) {}
 
-  void factor(const BlockMatrix& base, const std::vector<RankOneTerm>& springs) override {
+  void factor(const BlockMatrix& base, const RankOneTerms& springs) override {
     matrix_ = add_springs(base, springs);
     inverse_blocks_.resize(matrix_.block_count);
     for (int b = 0; b < matrix_.block_count; ++b) inverse_blocks_[b] = matrix_.diagonal[b].inverse();

@@ -4,9 +4,9 @@
 
 namespace hydrodda::dda {
 
-bool find_changed_terms(const std::vector<RankOneTerm>& now, const std::vector<RankOneTerm>& before,
-                        std::size_t limit, std::vector<RankOneTerm>& added,
-                        std::vector<RankOneTerm>& removed) {
+bool find_changed_terms(const RankOneTerms& now, const RankOneTerms& before,
+                        std::size_t limit, RankOneTerms& added,
+                        RankOneTerms& removed) {
   added.clear();
   removed.clear();
   // One walk over both sorted lists.
@@ -25,7 +25,7 @@ bool find_changed_terms(const std::vector<RankOneTerm>& now, const std::vector<R
   return true;
 }
 
-BlockMatrix add_springs(const BlockMatrix& base, const std::vector<RankOneTerm>& springs) {
+BlockMatrix add_springs(const BlockMatrix& base, const RankOneTerms& springs) {
   BlockMatrix a;
   a.block_count = base.block_count;
   a.diagonal = base.diagonal;
@@ -58,7 +58,7 @@ BlockMatrix add_springs(const BlockMatrix& base, const std::vector<RankOneTerm>&
   return a;
 }
 
-void multiply_with_springs(const BlockMatrix& base, const std::vector<RankOneTerm>& springs,
+void multiply_with_springs(const BlockMatrix& base, const RankOneTerms& springs,
                            const Eigen::VectorXd& x, Eigen::VectorXd& y) {
   base.multiply(x, y);
   for (const RankOneTerm& t : springs) {

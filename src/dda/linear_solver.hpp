@@ -11,6 +11,7 @@
 #include <Eigen/Sparse>
 
 #include "dda/block_matrix.hpp"
+#include "dda/huge_page_allocator.hpp"
 
 namespace hydrodda::dda {
 
@@ -23,19 +24,22 @@ struct RankOneTerm {
   Eigen::Matrix<double, 6, 1> w_b = Eigen::Matrix<double, 6, 1>::Zero();
 };
 
+// The springs of a matrix: a large array (two per closed contact), on huge pages.
+using RankOneTerms = std::vector<RankOneTerm, HugePageAllocator<RankOneTerm>>;
+
 // The terms of `now` that `before` lacks (added) and those of `before` that `now` lacks
 // (removed), both lists sorted by id, as a solver that follows the springs needs them. False,
 // with the lists incomplete, as soon as there are more than `limit` changes.
-bool find_changed_terms(const std::vector<RankOneTerm>& now, const std::vector<RankOneTerm>& before,
-                        std::size_t limit, std::vector<RankOneTerm>& added,
-                        std::vector<RankOneTerm>& removed);
+bool find_changed_terms(const RankOneTerms& now, const RankOneTerms& before,
+                        std::size_t limit, RankOneTerms& added,
+                        RankOneTerms& removed);
 
 // base + Σ w wᵀ over the springs as one block matrix: a block for each pair of blocks a
 // spring joins.
-BlockMatrix add_springs(const BlockMatrix& base, const std::vector<RankOneTerm>& springs);
+BlockMatrix add_springs(const BlockMatrix& base, const RankOneTerms& springs);
 
 // y = (base + Σ w wᵀ) x, without assembling the springs.
-void multiply_with_springs(const BlockMatrix& base, const std::vector<RankOneTerm>& springs,
+void multiply_with_springs(const BlockMatrix& base, const RankOneTerms& springs,
                            const Eigen::VectorXd& x, Eigen::VectorXd& y);
 
 // y = A x, or z = M⁻¹ r: the two operations conjugate gradients needs.
@@ -68,7 +72,7 @@ class LinearSolver {
   // springs: a solver that keeps a factorisation may follow the ones that appeared and
   // disappeared instead of starting again, and one that only multiplies by A need never
   // assemble them. The answer is always A's.
-  virtual void factor(const BlockMatrix& base, const std::vector<RankOneTerm>& springs = {}) = 0;
+  virtual void factor(const BlockMatrix& base, const RankOneTerms& springs = {}) = 0;
   // Solve with the last factorisation.
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const = 0;
   virtual SolverCounts counts() const = 0;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "dda/anderson.hpp"
+#include "dda/parallel.hpp"
 
 namespace hydrodda::dda {
 
@@ -147,76 +148,99 @@ std::vector<Point> System::measured_positions() const {
 // ---- detection and linearisation ----
 
 void System::detect_contacts() {
-  std::vector<geometry::Box> boxes;
-  std::vector<char> fixed;
+  DetectionBuffers& buffers = detection_;
+  buffers.boxes.clear();
+  buffers.fixed.clear();
   for (const Block& b : blocks_) {
-    boxes.push_back(geometry::bounding_box(b.polygon));
-    fixed.push_back(b.dof < 0);
+    buffers.boxes.push_back(geometry::bounding_box(b.polygon));
+    buffers.fixed.push_back(b.dof < 0);
   }
-  const auto pairs = find_block_pairs(boxes, contact_distance_, fixed);
-  std::vector<ContactCandidate> found;
-  for (auto [a, b] : pairs)
-    find_pair_contacts(blocks_[a].polygon, a, blocks_[b].polygon, b, contact_distance_, found);
-  std::sort(found.begin(), found.end(),
-            [](const ContactCandidate& x, const ContactCandidate& y) { return x.key < y.key; });
-  active_.clear();
-  active_.reserve(found.size());
-  // Both lists are in key order: one walk finds each candidate's record from the last step.
-  auto record = records_.begin();
-  for (const ContactCandidate& c : found) {
-    ActiveContact a;
-    a.key = c.key;
-    a.length = c.length;
-    while (record != records_.end() && record->first < c.key) ++record;
-    if (record != records_.end() && record->first == c.key) {
-      a.record = record->second;
-    } else {
-      // Touching (within the hysteresis band) counts as closed: a settled packing starts
-      // with its contacts carrying load instead of finding them one open–close pass at a time.
-      a.record.state = c.penetration > -1e-2 * penetration_tolerance_ ? ContactState::locked
-                                                                       : ContactState::open;
-      a.record.reference_ratio = c.edge_ratio;
+  find_block_pairs(buffers.boxes, contact_distance_, buffers.fixed, buffers.pairs);
+  const std::vector<std::pair<int, int>>& pairs = buffers.pairs;
+  // The narrow phase and the linearisation in two halves, side by side on two threads where
+  // there are two (a wall of 1,601 blocks: 4,700 pairs, 9,400 candidates). Each half's
+  // candidates sorted by key and the halves merged: the keys are unique, so the list is the
+  // same as one sort of all.
+  const bool parallel = pairs.size() >= 1000;
+  const std::size_t half_pairs = pairs.size() / 2;
+  run_two_parts(parallel, [&](int part) {
+    ContactCandidates& out = buffers.found[part];
+    out.clear();
+    for (std::size_t p = part == 0 ? 0 : half_pairs; p < (part == 0 ? half_pairs : pairs.size()); ++p) {
+      const auto [a, b] = pairs[p];
+      find_pair_contacts(blocks_[a].polygon, a, blocks_[b].polygon, b, contact_distance_, out);
     }
-    if (a.record.state == ContactState::open) a.record.reference_ratio = c.edge_ratio;
-    active_.push_back(a);
-  }
-  linearise_contacts();
+    std::sort(out.begin(), out.end(),
+              [](const ContactCandidate& x, const ContactCandidate& y) { return x.key < y.key; });
+  });
+  ContactCandidates& candidates = buffers.candidates;
+  candidates.resize(buffers.found[0].size() + buffers.found[1].size());
+  std::merge(buffers.found[0].begin(), buffers.found[0].end(), buffers.found[1].begin(), buffers.found[1].end(),
+             candidates.begin(), [](const ContactCandidate& x, const ContactCandidate& y) { return x.key < y.key; });
+  active_.resize(candidates.size());
+  const std::size_t half = candidates.size() / 2;
+  run_two_parts(parallel, [&](int part) {
+    const std::size_t begin = part == 0 ? 0 : half;
+    const std::size_t end = part == 0 ? half : candidates.size();
+    if (begin == end) return;
+    // Both lists are in key order: one walk finds each candidate's record from the last step.
+    auto record = std::lower_bound(records_.begin(), records_.end(), candidates[begin].key,
+                                   [](const auto& r, const ContactKey& key) { return r.first < key; });
+    for (std::size_t i = begin; i < end; ++i) {
+      const ContactCandidate& c = candidates[i];
+      ActiveContact& a = active_[i];
+      a = ActiveContact{};
+      a.key = c.key;
+      a.length = c.length;
+      while (record != records_.end() && record->first < c.key) ++record;
+      if (record != records_.end() && record->first == c.key) {
+        a.record = record->second;
+      } else {
+        // Touching (within the hysteresis band) counts as closed: a settled packing starts
+        // with its contacts carrying load instead of finding them one open–close pass at a
+        // time.
+        a.record.state = c.penetration > -1e-2 * penetration_tolerance_ ? ContactState::locked
+                                                                         : ContactState::open;
+        a.record.reference_ratio = c.edge_ratio;
+      }
+      if (a.record.state == ContactState::open) a.record.reference_ratio = c.edge_ratio;
+      linearise_contact(a);
+    }
+  });
 }
 
-void System::linearise_contacts() {
-  for (ActiveContact& c : active_) {
-    const Block& bi = blocks_[c.key.block_i];
-    const Block& bj = blocks_[c.key.block_j];
-    const int nj = static_cast<int>(bj.polygon.size());
-    const Point p1 = bi.polygon[c.key.vertex];
-    const Point p2 = bj.polygon[c.key.edge];
-    const Point p3 = bj.polygon[(c.key.edge + 1) % nj];
-    const double length = geometry::distance(p2, p3);
-    const Point s = (p3 - p2) / length;
-    // Penetration d = S/L with S = x1(y2−y3) + x2(y3−y1) + x3(y1−y2) twice the signed area
-    // of (p1, p2, p3); its first-order change is ∂S/∂pk · Tk D (Shi 1988, eq. 4.12).
-    c.penetration0 = geometry::orient(p1, p2, p3) / length;
-    const Eigen::RowVector2d g1((p2.y - p3.y) / length, (p3.x - p2.x) / length);
-    const Eigen::RowVector2d g2((p3.y - p1.y) / length, (p1.x - p3.x) / length);
-    const Eigen::RowVector2d g3((p1.y - p2.y) / length, (p2.x - p1.x) / length);
-    c.en_i = (g1 * compute_displacement_matrix(p1, bi.moments.centroid)).transpose();
-    c.en_j = (g2 * compute_displacement_matrix(p2, bj.moments.centroid) +
-              g3 * compute_displacement_matrix(p3, bj.moments.centroid))
-                 .transpose();
-    // Shear: s = (p1 − p0)·t, p0 the reference point on the edge, moving with block j.
-    const Point p0 = p2 + c.record.reference_ratio * (p3 - p2);
-    const Eigen::RowVector2d t(s.x, s.y);
-    c.shear0 = dot(p1 - p0, s);
-    c.es_i = (t * compute_displacement_matrix(p1, bi.moments.centroid)).transpose();
-    c.es_j = -(t * compute_displacement_matrix(p0, bj.moments.centroid)).transpose();
-    c.dof_i = bi.dof;
-    c.dof_j = bj.dof;
-  }
+void System::linearise_contact(ActiveContact& c) const {
+  const Block& bi = blocks_[c.key.block_i];
+  const Block& bj = blocks_[c.key.block_j];
+  const int nj = static_cast<int>(bj.polygon.size());
+  const Point p1 = bi.polygon[c.key.vertex];
+  const Point p2 = bj.polygon[c.key.edge];
+  const Point p3 = bj.polygon[(c.key.edge + 1) % nj];
+  const double length = geometry::distance(p2, p3);
+  const Point s = (p3 - p2) / length;
+  // Penetration d = S/L with S = x1(y2−y3) + x2(y3−y1) + x3(y1−y2) twice the signed area
+  // of (p1, p2, p3); its first-order change is ∂S/∂pk · Tk D (Shi 1988, eq. 4.12).
+  c.penetration0 = geometry::orient(p1, p2, p3) / length;
+  const Eigen::RowVector2d g1((p2.y - p3.y) / length, (p3.x - p2.x) / length);
+  const Eigen::RowVector2d g2((p3.y - p1.y) / length, (p1.x - p3.x) / length);
+  const Eigen::RowVector2d g3((p1.y - p2.y) / length, (p2.x - p1.x) / length);
+  c.en_i = (g1 * compute_displacement_matrix(p1, bi.moments.centroid)).transpose();
+  c.en_j = (g2 * compute_displacement_matrix(p2, bj.moments.centroid) +
+            g3 * compute_displacement_matrix(p3, bj.moments.centroid))
+               .transpose();
+  // Shear: s = (p1 − p0)·t, p0 the reference point on the edge, moving with block j.
+  const Point p0 = p2 + c.record.reference_ratio * (p3 - p2);
+  const Eigen::RowVector2d t(s.x, s.y);
+  c.shear0 = dot(p1 - p0, s);
+  c.es_i = (t * compute_displacement_matrix(p1, bi.moments.centroid)).transpose();
+  c.es_j = -(t * compute_displacement_matrix(p0, bj.moments.centroid)).transpose();
+  c.dof_i = bi.dof;
+  c.dof_j = bj.dof;
 }
 
 // ---- assembly ----
 
-void System::assemble_blocks(double dt, std::vector<Matrix6>& k, Eigen::VectorXd& f_base) const {
+void System::assemble_blocks(double dt, Matrix6Array& k, Eigen::VectorXd& f_base) const {
   f_base = Eigen::VectorXd::Zero(6 * unknown_count_);
   k.assign(unknown_count_, Matrix6::Zero());
   const bool dynamic = settings_.analysis == Analysis::dynamic;
@@ -287,13 +311,20 @@ void System::factor_with_contacts() {
   // the solver multiplies by them and assembles them only when it factors, and follows those
   // that come and go between passes. The buffers are members, reused from call to call:
   // fresh ones cost more in page faults than the assembly itself.
-  std::vector<RankOneTerm>& terms = assembly_.terms;
-  terms.clear();
+  RankOneTerms& terms = assembly_.terms;
+  std::size_t count = 0;
+  for (const ActiveContact& c : active_) count += (is_closed(c.record.state) ? 1 : 0) + (c.record.state == ContactState::locked ? 1 : 0);
+  terms.resize(count);
   const double root_penalty = std::sqrt(penalty_);
+  RankOneTerm* next = terms.data();
   const auto add_term = [&](const ActiveContact& c, int kind, const Vector6& e_i, const Vector6& e_j) {
     const ContactKey& k = c.key;
-    terms.push_back({{k.block_i, k.vertex, k.block_j, k.edge, kind}, c.dof_i, c.dof_j,
-                     root_penalty * e_i, root_penalty * e_j});
+    RankOneTerm& t = *next++;
+    t.id = {k.block_i, k.vertex, k.block_j, k.edge, kind};
+    t.block_a = c.dof_i;
+    t.block_b = c.dof_j;
+    t.w_a = root_penalty * e_i;
+    t.w_b = root_penalty * e_j;
   };
   // active_ is in key order, and so the terms in id order.
   for (const ActiveContact& c : active_) {
@@ -565,6 +596,7 @@ void System::commit_step(const Eigen::VectorXd& d, double dt) {
     b.moments = compute_moments(b.polygon);
   }
   records_.clear();  // active_ is in key order, and so stays records_
+  records_.reserve(active_.size());
   for (ActiveContact& c : active_) {
     ContactRecord r = c.record;
     r.penetration = compute_penetration(c, d);

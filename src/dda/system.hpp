@@ -140,11 +140,11 @@ class System {
     int dof_i = -1, dof_j = -1;
   };
   void detect_contacts();
-  void linearise_contacts();
+  void linearise_contact(ActiveContact& c) const;
   // Why a step's solve did not settle, if it did not.
   enum class Unsettled { no, contact_states, contact_forces };
   Unsettled solve_step(double dt, Eigen::VectorXd& d, StepReport& report);
-  void assemble_blocks(double dt, std::vector<Matrix6>& k_base, Eigen::VectorXd& f_base) const;
+  void assemble_blocks(double dt, Matrix6Array& k_base, Eigen::VectorXd& f_base) const;
   void factor_with_contacts();
   Eigen::VectorXd assemble_contact_rhs(const Eigen::VectorXd& f_base) const;
   Vector6 block_unknowns(const Eigen::VectorXd& d, int dof) const;
@@ -175,13 +175,24 @@ class System {
   // (diagonal blocks, assembled once a step) and the contact springs (once a pass).
   struct AssemblyBuffers {
     BlockMatrix matrix;
-    std::vector<RankOneTerm> terms;
+    RankOneTerms terms;
   };
   AssemblyBuffers assembly_;
+  // Contact detection's lists, kept from step to step: fresh ones cost their page faults
+  // every step.
+  struct DetectionBuffers {
+    std::vector<geometry::Box> boxes;
+    std::vector<char> fixed;
+    std::vector<std::pair<int, int>> pairs;
+    std::array<ContactCandidates, 2> found;  // by the two halves of the pairs
+    ContactCandidates candidates;
+  };
+  DetectionBuffers detection_;
 
   // The contacts of the last step, in key order.
-  std::vector<std::pair<ContactKey, ContactRecord>> records_;
-  std::vector<ActiveContact> active_;
+  using ContactRecords = std::vector<std::pair<ContactKey, ContactRecord>, HugePageAllocator<std::pair<ContactKey, ContactRecord>>>;
+  ContactRecords records_;
+  std::vector<ActiveContact, HugePageAllocator<ActiveContact>> active_;  // some 300 bytes each
   int unknown_count_ = 0;
   double time_ = 0.0;
   double dt_ = 0.0;

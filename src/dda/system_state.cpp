@@ -81,7 +81,7 @@ void System::import_state(const SystemState& s) {
   time_ = s.time;
   dt_ = s.time_step;
   // In key order, the first of any repeated key kept.
-  records_ = s.contacts;
+  records_.assign(s.contacts.begin(), s.contacts.end());
   const auto key_less = [](const auto& a, const auto& b) { return a.first < b.first; };
   std::stable_sort(records_.begin(), records_.end(), key_less);
   records_.erase(std::unique(records_.begin(), records_.end(),

@@ -1,5 +1,6 @@
 // The block Cholesky factorisation against a dense one, its fill against what elimination
-// theory says it must be, and its refusal of a matrix that is not positive definite.
+// theory says it must be, its refusal of a matrix that is not positive definite, and its
+// split into two parts that run side by side.
 
 #include "dda/block_cholesky.hpp"
 
@@ -11,6 +12,7 @@
 #include <set>
 
 #include <Eigen/Dense>
+#include <omp.h>
 
 #include "test_models.hpp"
 
@@ -148,6 +150,46 @@ TEST(BlockCholesky, RefusesAMatrixThatIsNotPositiveDefinite) {
   BlockCholesky factor;
   EXPECT_FALSE(factor.factorise(a, natural_order(n)));
   EXPECT_TRUE(factor.empty());
+}
+
+// The elimination tree of a 1,600-block wall's matrix is split into two parts that share no
+// column and the top above them, so that the factorisation and the sweeps do the parts side by
+// side. The split covers the factor (its blocks of L add up to L's, diagonal included), its
+// parts are balanced within 10% of each other, and the top, which waits for both, holds under
+// 10% of the work (measured: 15,040 and 14,582 blocks, top 1,081).
+TEST(BlockCholesky, SplitsTheEliminationTreeIntoTwoBalancedParts) {
+  const BlockMatrix a = testing::make_wall_graph_matrix(40);
+  BlockCholesky factor;
+  ASSERT_TRUE(factor.factorise(a, order_by_minimum_degree(a)));
+  const auto parts = factor.part_blocks();
+  const long total = parts[0] + parts[1] + parts[2];
+  EXPECT_EQ(total, factor.off_diagonal_blocks() + a.block_count);
+  EXPECT_LT(std::max(parts[0], parts[1]), 1.1 * std::min(parts[0], parts[1]));
+  EXPECT_LT(parts[2], 0.1 * total);
+}
+
+// One thread or two: the factor and the solve are the same to the last bit, as each part's
+// arithmetic is the same whichever thread does it. The solve is also right: ‖A x − b‖ ≤
+// 1e-10 ‖b‖ (a well-conditioned matrix; round-off is far below).
+TEST(BlockCholesky, OneThreadOrTwoGiveTheSameBits) {
+  const BlockMatrix a = testing::make_wall_graph_matrix(40);
+  const std::vector<int> order = order_by_minimum_degree(a);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(a.size(), -1.0, 2.0);
+  const int threads_before = omp_get_max_threads();
+  std::vector<Eigen::VectorXd> solutions;
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    BlockCholesky factor;
+    ASSERT_TRUE(factor.factorise(a, order));
+    Eigen::VectorXd x = b;
+    factor.solve_in_place(x);
+    solutions.push_back(x);
+  }
+  omp_set_num_threads(threads_before);
+  EXPECT_EQ(solutions[0], solutions[1]);
+  Eigen::VectorXd ax;
+  a.multiply(solutions[1], ax);
+  EXPECT_LT((ax - b).norm(), 1e-10 * b.norm());
 }
 
 }  // namespace

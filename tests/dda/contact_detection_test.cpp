@@ -15,7 +15,7 @@ using geometry::Box;
 using testing::make_rectangle;
 
 // The face length the contacts carry between them (what cohesion and tensile strength act on).
-double total_length(const std::vector<ContactCandidate>& found) {
+double total_length(const ContactCandidates& found) {
   double total = 0.0;
   for (const ContactCandidate& c : found) total += c.length;
   return total;
@@ -25,7 +25,7 @@ double total_length(const std::vector<ContactCandidate>& found) {
 // their tributary lengths summing to `length` (to 1e-12), with the pair given either way round.
 void expect_face_counted_once(const Polygon& a, const Polygon& b, double length) {
   for (bool swapped : {false, true}) {
-    std::vector<ContactCandidate> found;
+    ContactCandidates found;
     if (swapped)
       find_pair_contacts(b, 1, a, 0, 0.01, found);
     else
@@ -60,7 +60,7 @@ TEST(ContactDetection, BroadPhaseEqualsAllPairs) {
 TEST(ContactDetection, FaceContactFindsBothVerticesWithHalfLengths) {
   const Polygon base = make_rectangle(-5, -1, 5, 0);
   const Polygon top = make_rectangle(0, 0.001, 1, 1.001);
-  std::vector<ContactCandidate> found;
+  ContactCandidates found;
   find_pair_contacts(base, 0, top, 1, 0.01, found);
   ASSERT_EQ(found.size(), 2u);
   for (const ContactCandidate& c : found) {
@@ -96,7 +96,7 @@ TEST(ContactDetection, CornerOnTwoEdgeLinesTakesTheFaceEdge) {
   const Polygon left = make_rectangle(0, 0, 1, 1);
   for (double wobble : {-1e-13, 0.0, 1e-13}) {
     const Polygon right = make_rectangle(1 + wobble, wobble, 2, 1);
-    std::vector<ContactCandidate> found;
+    ContactCandidates found;
     find_pair_contacts(left, 0, right, 1, 0.01, found);
     ASSERT_EQ(found.size(), 2u) << wobble;
     for (const ContactCandidate& c : found)
@@ -112,7 +112,7 @@ TEST(ContactDetection, VertexToVertexTakesTheEntranceEdge) {
   const Polygon square = make_rectangle(0, 0, 1, 1);
   // Wedge with its corner at (1.002, 1.001): farther outside x = 1 than y = 1.
   const Polygon diamond{{1.002, 1.001}, {1.602, 1.201}, {1.602, 1.601}, {1.202, 1.601}};
-  std::vector<ContactCandidate> found;
+  ContactCandidates found;
   find_pair_contacts(square, 0, diamond, 1, 0.01, found);
   int from_diamond = 0;
   for (const ContactCandidate& c : found)
@@ -129,7 +129,7 @@ TEST(ContactDetection, VertexToVertexTakesTheEntranceEdge) {
 TEST(ContactDetection, ReflexVertexIsNotAContact) {
   const Polygon l_shape{{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
   const Polygon lid = make_rectangle(1.0, 1.0 + 1e-4, 3, 2);  // sits on the L's inner step
-  std::vector<ContactCandidate> found;
+  ContactCandidates found;
   find_pair_contacts(l_shape, 0, lid, 1, 0.01, found);
   for (const ContactCandidate& c : found)
     if (c.key.block_i == 0) {

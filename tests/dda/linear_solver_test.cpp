@@ -95,7 +95,7 @@ struct ChainWithSprings {
     }
     return t;
   }
-  Eigen::MatrixXd dense_with(const std::vector<RankOneTerm>& terms) const {
+  Eigen::MatrixXd dense_with(const RankOneTerms& terms) const {
     Eigen::MatrixXd dense = base.selfadjointView<Eigen::Lower>() * Eigen::MatrixXd::Identity(180, 180);
     for (const RankOneTerm& t : terms) {
       Eigen::VectorXd w = Eigen::VectorXd::Zero(180);
@@ -113,7 +113,7 @@ struct ChainWithSprings {
 // over one block, and over the same block twice (its two vectors summed).
 TEST(LinearSolver, SpringsAddUpToTheDenseMatrix) {
   ChainWithSprings chain;
-  std::vector<RankOneTerm> springs{chain.make_term(1, 3, 4), chain.make_term(2, 12, 7),
+  RankOneTerms springs{chain.make_term(1, 3, 4), chain.make_term(2, 12, 7),
                                    chain.make_term(3, 20, -1), chain.make_term(4, -1, 25),
                                    chain.make_term(5, 9, 9)};
   const Eigen::MatrixXd dense = chain.dense_with(springs);
@@ -136,7 +136,7 @@ TEST_P(KeptFactor, FactorFollowsSpringsThatComeAndGo) {
   ChainWithSprings chain;
   const RankOneTerm gone = chain.make_term(1, 3, 4), kept = chain.make_term(2, 10, 11);
   const RankOneTerm new_a = chain.make_term(3, 20, 21), new_b = chain.make_term(4, 25, -1);
-  const std::vector<RankOneTerm> first{gone, kept}, second{kept, new_a, new_b};
+  const RankOneTerms first{gone, kept}, second{kept, new_a, new_b};
   const Eigen::MatrixXd dense1 = chain.dense_with(first), dense2 = chain.dense_with(second);
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(180, -1.0, 2.0);
   auto solver = GetParam().make();
@@ -161,8 +161,8 @@ TEST_P(KeptFactor, FactorFollowsSpringsThatComeAndGo) {
 // and the answer is still A2⁻¹ b to 1e-10.
 TEST_P(KeptFactor, ManySpringsChangingAtOnceAreFactoredAfresh) {
   ChainWithSprings chain;
-  const std::vector<RankOneTerm> first{chain.make_term(1, 0, 1)};
-  std::vector<RankOneTerm> second = first;
+  const RankOneTerms first{chain.make_term(1, 0, 1)};
+  RankOneTerms second = first;
   for (int k = 0; k < 60; ++k) second.push_back(chain.make_term(2 + k, k % 29, k % 29 + 1));
   const Eigen::MatrixXd dense1 = chain.dense_with(first), dense2 = chain.dense_with(second);
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(180, -1.0, 2.0);

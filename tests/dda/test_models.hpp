@@ -1,6 +1,7 @@
 #pragma once
 // Small models shared by the DDA tests.
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -79,6 +80,25 @@ inline BlockMatrix make_block_graph_matrix(int n, const std::vector<std::pair<in
     a.off.push_back(gg.bottomLeftCorner<6, 6>());
   }
   return a;
+}
+
+// A matrix on the block graph of a rows × rows staggered wall (each brick joined to its two
+// neighbours in the row and two in each row above and below), each joint adding Gᵀ G for a
+// random 6 × 12 G, plus the identity: the pattern, and so the fill, of the wall's matrix.
+inline BlockMatrix make_wall_graph_matrix(int rows) {
+  std::vector<std::pair<int, int>> joints;
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < rows; ++c) {
+      const int b = r * rows + c;
+      if (c + 1 < rows) joints.emplace_back(b, b + 1);
+      if (r + 1 < rows) {
+        joints.emplace_back(b, b + rows);
+        const int shifted = r % 2 == 0 ? c - 1 : c + 1;
+        if (shifted >= 0 && shifted < rows) joints.emplace_back(b, (r + 1) * rows + shifted);
+      }
+    }
+  std::sort(joints.begin(), joints.end());
+  return make_block_graph_matrix(rows * rows, joints, 21);
 }
 
 }  // namespace hydrodda::dda::testing

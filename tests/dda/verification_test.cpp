@@ -7,6 +7,8 @@
 #include <cstring>
 #include <numbers>
 
+#include <omp.h>
+
 #include "dda/system.hpp"
 #include "test_models.hpp"
 
@@ -131,24 +133,47 @@ TEST_P(ElasticBlock, StrainIsStressOverEPrime) {
 INSTANTIATE_TEST_SUITE_P(Verification, ElasticBlock,
                          ::testing::Values(Plane::strain, Plane::stress));
 
+// Every vertex of every block, x then y.
+std::vector<double> vertex_coordinates(const System& system) {
+  std::vector<double> coords;
+  for (int b = 0; b < system.block_count(); ++b)
+    for (Point p : system.polygon(b)) {
+      coords.push_back(p.x);
+      coords.push_back(p.y);
+    }
+  return coords;
+}
+
 // A 61-block brick wall run twice gives bitwise identical vertices.
 TEST(Verification, BrickWallRunIsBitwiseReproducible) {
   const auto run = [] {
     System system(make_brick_wall(6, 10));
     system.run_steps(20);
-    std::vector<double> coords;
-    for (int b = 0; b < system.block_count(); ++b)
-      for (Point p : system.polygon(b)) {
-        coords.push_back(p.x);
-        coords.push_back(p.y);
-      }
-    return coords;
+    return vertex_coordinates(system);
   };
   const auto first = run();
   const auto second = run();
   ASSERT_GE(first.size(), 50u * 8u);
   ASSERT_EQ(first.size(), second.size());
   EXPECT_EQ(std::memcmp(first.data(), second.data(), first.size() * sizeof(double)), 0);
+}
+
+// A wall large enough (901 blocks: 2,600 block pairs, a factor of 15,000 blocks) that contact
+// detection and the factor run in two parts side by side gives the same vertices to the last
+// bit on one thread as on two.
+TEST(Verification, BrickWallRunIsTheSameOnOneThreadOrTwo) {
+  const int threads_before = omp_get_max_threads();
+  const auto run = [](int threads) {
+    omp_set_num_threads(threads);
+    System system(make_brick_wall(30, 30));
+    system.run_steps(10);
+    return vertex_coordinates(system);
+  };
+  const auto one = run(1);
+  const auto two = run(2);
+  omp_set_num_threads(threads_before);
+  ASSERT_EQ(one.size(), two.size());
+  EXPECT_EQ(std::memcmp(one.data(), two.data(), one.size() * sizeof(double)), 0);
 }
 
 }  // namespace

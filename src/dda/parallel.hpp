@@ -1,0 +1,22 @@
+#pragma once
+// Work in two independent parts, side by side on two threads where the OpenMP runtime grants
+// them, else one after the other (OMP_NUM_THREADS=1 keeps one thread, as each case of a
+// sweep does). The callers split their work into the same two parts either way, so the
+// answer does not depend on the number of threads, only on the split.
+
+#include <algorithm>
+
+#include <omp.h>
+
+namespace hydrodda::dda {
+
+// Runs task(0) and task(1); on two threads if `parallel` (the caller's judgement that the
+// parts are large enough to pay for waking a second thread) and two are available.
+template <class Task>
+void run_two_parts(bool parallel, Task&& task) {
+  const int threads = parallel ? std::min(2, omp_get_max_threads()) : 1;
+#pragma omp parallel for schedule(static, 1) num_threads(threads)
+  for (int part = 0; part < 2; ++part) task(part);
+}
+
+}  // namespace hydrodda::dda
