@@ -192,7 +192,8 @@ bool BlockCholesky::factorise(const BlockMatrix& a, const std::vector<int>& orde
   std::vector<int> filled(column_start_.begin(), column_start_.end() - 1);
   // Row k touches only its own subtree (the columns of ereach(k) and their rows below k), so
   // the two parts share nothing here.
-  Matrix6Array x(n, Matrix6::Zero());
+  Matrix6Array& x = row_work_;
+  x.assign(n, Matrix6::Zero());
   for (Reach& r : reaches) std::fill(r.mark.begin(), r.mark.end(), -1);
   const auto eliminate_row = [&](int k, Reach& r) {
     const int top = reach(k, r);
@@ -258,7 +259,8 @@ bool BlockCholesky::factorise(const BlockMatrix& a, const std::vector<int>& orde
 //     deal the candidates, heaviest first, each to the lighter part
 //     keep the split if max(part loads) + weight(top) is the least so far
 //     move the heaviest candidate to the top, its children into the candidates
-//   until no candidate is left or the top alone weighs as much as the best split
+//   until no candidate is left, or the top alone weighs as much as the best split, or the
+//   heaviest candidate is a twentieth of all (dealing is then balanced to 5%)
 void BlockCholesky::split_elimination_tree() {
   const int n = block_count_;
   std::vector<long> load(n);
@@ -286,11 +288,18 @@ void BlockCholesky::split_elimination_tree() {
   long top_weight = 0;
   long best_cost = deal(candidates, nullptr);
   std::size_t best_moves = 0;
-  while (!candidates.empty() && top_weight < best_cost) {
+  long candidate_load = 0;
+  for (int v : candidates) candidate_load += load[v];
+  // Dealt heaviest first, the parts differ by at most the heaviest candidate: once that is a
+  // twentieth of the whole, splitting further only grows the top. (A forest of many small
+  // trees, a packing's blocks that touch nothing, is there at once.) The moves are capped too.
+  const auto worth_splitting = [&] { return 20 * load[candidates.front()] > candidate_load && moved.size() < 256; };
+  while (!candidates.empty() && top_weight < best_cost && worth_splitting()) {
     const int v = candidates.front();
     candidates.erase(candidates.begin());
     moved.push_back(v);
     top_weight += weight[v];
+    candidate_load -= weight[v];
     for (int c : children[v]) candidates.insert(std::upper_bound(candidates.begin(), candidates.end(), c, heavier), c);
     const long cost = deal(candidates, nullptr) + top_weight;
     if (cost < best_cost) {

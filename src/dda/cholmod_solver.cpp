@@ -50,7 +50,8 @@ class CholmodSolver final : public LinearSolver {
   CholmodSolver& operator=(const CholmodSolver&) = delete;
 
   void factor(const BlockMatrix& base, const RankOneTerms& terms) override {
-    const BlockMatrix a = add_springs(base, terms);
+    BlockMatrix& a = assembled_;
+    add_springs(base, terms, a);
     if (ordering_.empty() || a.block_count != block_count_) compute_ordering(a);
     matrix_ = a.lower_triangle();
     if (factor_ != nullptr && !stale_) {
@@ -237,6 +238,7 @@ class CholmodSolver final : public LinearSolver {
   int block_count_ = -1;
   SparseMatrix matrix_;
   RankOneTerms terms_;                   // of the current matrix
+  BlockMatrix assembled_;                           // base + springs, its memory reused
   mutable RankOneTerms factored_terms_;  // as held by the factor
   RankOneTerms added_, removed_;
   mutable Eigen::VectorXd last_solution_;  // the starting guess of the next solve

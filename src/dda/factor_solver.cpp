@@ -198,7 +198,8 @@ class BlockFactorSolver final : public LinearSolver {
 
   void refactor() const {
     ++counts_.factorisations;
-    const BlockMatrix a = add_springs(base_, terms_);
+    BlockMatrix& a = assembled_;
+    add_springs(base_, terms_, a);
     // Minimum degree on the block graph of the first matrix; later contacts change the fill a
     // little, not the correctness.
     if (order_.empty()) order_ = order_by_minimum_degree(a);
@@ -217,6 +218,7 @@ class BlockFactorSolver final : public LinearSolver {
   int max_iterations_;
   mutable std::vector<int> order_;
   BlockMatrix base_;  // the matrix is base_ + the springs terms_
+  mutable BlockMatrix assembled_;  // the two added, as last factored
   RankOneTerms terms_;                   // of the current matrix
   mutable RankOneTerms factored_terms_;  // as held by the factor
   mutable BlockCholesky factor_;

@@ -18,7 +18,7 @@ class ConjugateGradientSolver final : public LinearSolver {
       : tolerance_(tolerance), max_iterations_(max_iterations) {}
 
   void factor(const BlockMatrix& base, const RankOneTerms& springs) override {
-    matrix_ = add_springs(base, springs);
+    add_springs(base, springs, matrix_);
     inverse_blocks_.resize(matrix_.block_count);
     for (int b = 0; b < matrix_.block_count; ++b) inverse_blocks_[b] = matrix_.diagonal[b].inverse();
   }

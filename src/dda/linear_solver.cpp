@@ -27,17 +27,45 @@ bool find_changed_terms(const RankOneTerms& now, const RankOneTerms& before,
 
 BlockMatrix add_springs(const BlockMatrix& base, const RankOneTerms& springs) {
   BlockMatrix a;
-  a.block_count = base.block_count;
-  a.diagonal = base.diagonal;
-  a.pairs = base.pairs;
+  add_springs(base, springs, a);
+  return a;
+}
+
+void add_springs(const BlockMatrix& base, const RankOneTerms& springs, BlockMatrix& a) {
+  const int n = base.block_count;
+  a.block_count = n;
+  a.diagonal.assign(base.diagonal.begin(), base.diagonal.end());
+  a.pairs.clear();
+  // The pairs (column, row), row > column, of the base and of the springs that join two
+  // blocks, bucketed by column (a counting sort: a block touches a handful of others), each
+  // column's rows then sorted and made unique.
+  const auto joins_two = [](const RankOneTerm& t) { return t.block_a >= 0 && t.block_b >= 0 && t.block_a != t.block_b; };
+  std::vector<int> start(n + 1, 0);
+  for (const auto& [column, row] : base.pairs) ++start[column + 1];
   for (const RankOneTerm& t : springs)
-    if (t.block_a >= 0 && t.block_b >= 0 && t.block_a != t.block_b)
-      a.pairs.emplace_back(std::min(t.block_a, t.block_b), std::max(t.block_a, t.block_b));
-  std::sort(a.pairs.begin(), a.pairs.end());
-  a.pairs.erase(std::unique(a.pairs.begin(), a.pairs.end()), a.pairs.end());
+    if (joins_two(t)) ++start[std::min(t.block_a, t.block_b) + 1];
+  for (int c = 0; c < n; ++c) start[c + 1] += start[c];
+  std::vector<int> rows(start[n]);
+  {
+    std::vector<int> next(start.begin(), start.end() - 1);
+    for (const auto& [column, row] : base.pairs) rows[next[column]++] = row;
+    for (const RankOneTerm& t : springs)
+      if (joins_two(t)) rows[next[std::min(t.block_a, t.block_b)]++] = std::max(t.block_a, t.block_b);
+  }
+  std::vector<int> first_pair(n + 1, 0);  // a.pairs of column c: [first_pair[c], first_pair[c + 1])
+  for (int c = 0; c < n; ++c) {
+    const auto begin = rows.begin() + start[c], end = rows.begin() + start[c + 1];
+    std::sort(begin, end);
+    first_pair[c] = static_cast<int>(a.pairs.size());
+    for (auto r = begin; r != end; ++r)
+      if (r == begin || *r != *(r - 1)) a.pairs.emplace_back(c, *r);
+  }
+  first_pair[n] = static_cast<int>(a.pairs.size());
   a.off.assign(a.pairs.size(), Matrix6::Zero());
   const auto off_block = [&](int col, int row) -> Matrix6& {
-    return a.off[std::lower_bound(a.pairs.begin(), a.pairs.end(), std::make_pair(col, row)) - a.pairs.begin()];
+    int p = first_pair[col];
+    while (a.pairs[p].second != row) ++p;
+    return a.off[p];
   };
   for (std::size_t p = 0; p < base.pairs.size(); ++p) off_block(base.pairs[p].first, base.pairs[p].second) = base.off[p];
   for (const RankOneTerm& t : springs) {
@@ -55,7 +83,6 @@ BlockMatrix add_springs(const BlockMatrix& base, const RankOneTerms& springs) {
     else
       off_block(t.block_a, t.block_b).noalias() += t.w_b * t.w_a.transpose();
   }
-  return a;
 }
 
 void multiply_with_springs(const BlockMatrix& base, const RankOneTerms& springs,

@@ -37,6 +37,8 @@ bool find_changed_terms(const RankOneTerms& now, const RankOneTerms& before,
 // base + Σ w wᵀ over the springs as one block matrix: a block for each pair of blocks a
 // spring joins.
 BlockMatrix add_springs(const BlockMatrix& base, const RankOneTerms& springs);
+// The same into `a`, whose memory is reused: a solver that factors again and again keeps one.
+void add_springs(const BlockMatrix& base, const RankOneTerms& springs, BlockMatrix& a);
 
 // y = (base + Σ w wᵀ) x, without assembling the springs.
 void multiply_with_springs(const BlockMatrix& base, const RankOneTerms& springs,
