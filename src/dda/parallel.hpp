@@ -15,6 +15,11 @@ namespace hydrodda::dda {
 template <class Task>
 void run_two_parts(bool parallel, Task&& task) {
   const int threads = parallel ? std::min(2, omp_get_max_threads()) : 1;
+  if (threads == 1) {  // not even a one-thread region: a small model's step has hundreds
+    task(0);
+    task(1);
+    return;
+  }
 #pragma omp parallel for schedule(static, 1) num_threads(threads)
   for (int part = 0; part < 2; ++part) task(part);
 }
