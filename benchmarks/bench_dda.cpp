@@ -129,9 +129,6 @@ BENCHMARK(BM_WallGraphFactorAndSolve)
     ->Args({100, 1})
     ->Unit(benchmark::kMillisecond);
 
-// The block factor's two halves apart on the wall's matrix: the factorisation, and one pair
-// of triangular solves with the kept factor (the step's most frequent operation: one per CG
-// iteration). Counter: L's off-diagonal 6×6 blocks, the fill.
 // The factor's work (blocks of L) in the two parts of its elimination tree that run side by
 // side, and in the top that runs after them.
 void add_part_counters(benchmark::State& state, const hydrodda::dda::BlockCholesky& factor) {
@@ -141,6 +138,9 @@ void add_part_counters(benchmark::State& state, const hydrodda::dda::BlockCholes
   state.counters["top"] = static_cast<double>(parts[2]);
 }
 
+// The block factor's two halves apart on the wall's matrix: the factorisation, and one pair
+// of triangular solves with the kept factor (the step's most frequent operation: one per CG
+// iteration). Counter: L's off-diagonal 6×6 blocks, the fill.
 void BM_WallGraphFactorise(benchmark::State& state) {
   const BlockMatrix a = make_wall_graph_matrix(static_cast<int>(state.range(0)));
   const std::vector<int> order = hydrodda::dda::order_by_minimum_degree(a);

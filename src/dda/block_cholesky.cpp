@@ -283,11 +283,11 @@ void BlockCholesky::split_elimination_tree() {
     return std::max(parts[0], parts[1]);
   };
   std::sort(candidates.begin(), candidates.end(), heavier);
-  const std::vector<int> roots = candidates;
   std::vector<int> moved;  // candidates moved to the top, in turn
   long top_weight = 0;
   long best_cost = deal(candidates, nullptr);
   std::size_t best_moves = 0;
+  std::vector<int> best_candidates = candidates;
   long candidate_load = 0;
   for (int v : candidates) candidate_load += load[v];
   // Dealt heaviest first, the parts differ by at most the heaviest candidate: once that is a
@@ -305,19 +305,14 @@ void BlockCholesky::split_elimination_tree() {
     if (cost < best_cost) {
       best_cost = cost;
       best_moves = moved.size();
+      best_candidates = candidates;
     }
   }
-  // The best split again: its top, its candidates dealt, every node in its root's part.
+  // The best split: its top, its candidates dealt, every other node in its root's part.
   std::vector<char> in_top(n, 0);
-  candidates = roots;
-  for (std::size_t m = 0; m < best_moves; ++m) {
-    const int v = moved[m];
-    in_top[v] = 1;
-    candidates.erase(std::find(candidates.begin(), candidates.end(), v));
-    for (int c : children[v]) candidates.insert(std::upper_bound(candidates.begin(), candidates.end(), c, heavier), c);
-  }
+  for (std::size_t m = 0; m < best_moves; ++m) in_top[moved[m]] = 1;
   std::vector<int> part_of(n, 2);
-  deal(candidates, &part_of);
+  deal(best_candidates, &part_of);
   for (int k = n - 1; k >= 0; --k)
     if (!in_top[k] && parent_[k] >= 0 && !in_top[parent_[k]]) part_of[k] = part_of[parent_[k]];
   for (auto& columns : part_columns_) columns.clear();
@@ -340,7 +335,6 @@ std::array<long, 3> BlockCholesky::part_blocks() const {
 bool BlockCholesky::run_parts_in_parallel() const { return column_start_.back() + block_count_ >= 5000; }
 
 struct BlockCholesky::Sweep {
-  int n;
   const int* column_start;
   const int* row;
   const Matrix6* value;
@@ -361,28 +355,22 @@ namespace {
 // Backward, by rows of Lᵀ: u_k ← L_kk⁻ᵀ (u_k − Σ_r L_rkᵀ u_r).
 using Sweep = BlockCholesky::Sweep;
 
-// One column of the forward sweep with all its updates in u: the sparse sweep's.
-void forward_column(const Sweep& l, int k, double* u) {
+// One column of the forward sweep: its updates to rows before `split` go to u, those from
+// `split` on (the top's rows, for a column of a part) to `top_updates` by top index.
+void forward_column(const Sweep& l, int k, int split, double* u, double* top_updates) {
   Eigen::Map<Vector6> uk(u + 6 * k);
   // The inverse is lower triangular; a full fixed-size product is faster than a triangular one.
   const Vector6 yk = l.inverse_diagonal[k] * uk;
   uk = yk;
-  for (int q = l.column_start[k]; q < l.column_start[k + 1]; ++q)
-    Eigen::Map<Vector6>(u + 6 * l.row[q]).noalias() -= l.value[q] * yk;
+  int q = l.column_start[k];
+  for (; q < split; ++q) Eigen::Map<Vector6>(u + 6 * l.row[q]).noalias() -= l.value[q] * yk;
+  for (; q < l.column_start[k + 1]; ++q)
+    Eigen::Map<Vector6>(top_updates + 6 * l.top_index[l.row[q]]).noalias() -= l.value[q] * yk;
 }
 
-// The forward sweep over some columns, ascending: their updates to the top's rows go to
-// `top_updates` (by top index), the rest to u.
+// The forward sweep over some columns, ascending.
 void forward_portable(const Sweep& l, const std::vector<int>& columns, double* u, double* top_updates) {
-  for (int k : columns) {
-    Eigen::Map<Vector6> uk(u + 6 * k);
-    const Vector6 yk = l.inverse_diagonal[k] * uk;
-    uk = yk;
-    int q = l.column_start[k];
-    for (; q < l.top_rows_start[k]; ++q) Eigen::Map<Vector6>(u + 6 * l.row[q]).noalias() -= l.value[q] * yk;
-    for (; q < l.column_start[k + 1]; ++q)
-      Eigen::Map<Vector6>(top_updates + 6 * l.top_index[l.row[q]]).noalias() -= l.value[q] * yk;
-  }
+  for (int k : columns) forward_column(l, k, l.top_rows_start[k], u, top_updates);
 }
 
 // The backward sweep over some columns, descending; every row they read is final.
@@ -475,7 +463,7 @@ void backward_sweep(const Sweep& l, const std::vector<int>& columns, double* u) 
 }  // namespace
 
 BlockCholesky::Sweep BlockCholesky::sweep() const {
-  return {block_count_,       column_start_.data(),    row_.data(),      value_.data(),
+  return {column_start_.data(),     row_.data(),            value_.data(),
           inverse_diagonal_.data(), top_rows_start_.data(), top_index_.data()};
 }
 
@@ -487,7 +475,7 @@ void BlockCholesky::forward(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::V
   for (int k = 0; k < n; ++k) u.segment<6>(6 * k) = x.segment<6>(6 * order_[k]);
   const Sweep l = sweep();
   run_two_parts(run_parts_in_parallel(),
-            [&](int p) { forward_sweep(l, part_columns_[p], u.data(), top_updates_[p].data()); });
+                [&](int p) { forward_sweep(l, part_columns_[p], u.data(), top_updates_[p].data()); });
   const std::vector<int>& top = part_columns_[2];
   for (std::size_t t = 0; t < top.size(); ++t) {
     for (Eigen::VectorXd& updates : top_updates_) {
@@ -529,7 +517,7 @@ BlockCholesky::SparseVector BlockCholesky::forward_sparse(const SparseVector& b)
   y.values.reserve(y.blocks.size());
   const Sweep l = sweep();
   for (int k : y.blocks) {
-    forward_column(l, k, path_work_.data());
+    forward_column(l, k, l.column_start[k + 1], path_work_.data(), nullptr);
     y.values.push_back(path_work_.segment<6>(6 * k));
   }
   for (int k : y.blocks) {

@@ -238,7 +238,7 @@ class CholmodSolver final : public LinearSolver {
   int block_count_ = -1;
   SparseMatrix matrix_;
   RankOneTerms terms_;                   // of the current matrix
-  BlockMatrix assembled_;                           // base + springs, its memory reused
+  BlockMatrix assembled_;                // base + springs, its memory reused
   mutable RankOneTerms factored_terms_;  // as held by the factor
   RankOneTerms added_, removed_;
   mutable Eigen::VectorXd last_solution_;  // the starting guess of the next solve

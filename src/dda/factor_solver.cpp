@@ -217,8 +217,8 @@ class BlockFactorSolver final : public LinearSolver {
   double tolerance_;
   int max_iterations_;
   mutable std::vector<int> order_;
-  BlockMatrix base_;  // the matrix is base_ + the springs terms_
-  mutable BlockMatrix assembled_;  // the two added, as last factored
+  BlockMatrix base_;                     // the matrix is base_ + the springs terms_
+  mutable BlockMatrix assembled_;        // the two added, as last factored
   RankOneTerms terms_;                   // of the current matrix
   mutable RankOneTerms factored_terms_;  // as held by the factor
   mutable BlockCholesky factor_;

@@ -3,8 +3,9 @@
 // contacts): arrays of 256 KiB or more are placed on 2 MiB boundaries, their size rounded up
 // to whole 2 MiB, and advised for transparent huge pages, so that their first touch costs one
 // page fault per 2 MiB instead of one per 4 KiB page. The rounding costs at most 2 MiB for
-// each of the few arrays that use it. On a virtual machine a fault costs microseconds: the 1,601-block wall's
-// first step spent half its time in them (bench_dda, BM_BrickWall; docs/performance.md).
+// each of the few arrays that use it. On a virtual machine a fault costs microseconds: the
+// 1,601-block wall's first step spent most of its time in them (bench_dda, BM_BrickWall;
+// docs/performance.md).
 // Where the kernel keeps huge pages off the advice is ignored and ordinary pages are used.
 // Smaller arrays come from the ordinary allocator.
 

@@ -4,9 +4,8 @@
 
 namespace hydrodda::dda {
 
-bool find_changed_terms(const RankOneTerms& now, const RankOneTerms& before,
-                        std::size_t limit, RankOneTerms& added,
-                        RankOneTerms& removed) {
+bool find_changed_terms(const RankOneTerms& now, const RankOneTerms& before, std::size_t limit,
+                        RankOneTerms& added, RankOneTerms& removed) {
   added.clear();
   removed.clear();
   // One walk over both sorted lists.

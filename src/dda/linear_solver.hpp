@@ -30,9 +30,8 @@ using RankOneTerms = std::vector<RankOneTerm, HugePageAllocator<RankOneTerm>>;
 // The terms of `now` that `before` lacks (added) and those of `before` that `now` lacks
 // (removed), both lists sorted by id, as a solver that follows the springs needs them. False,
 // with the lists incomplete, as soon as there are more than `limit` changes.
-bool find_changed_terms(const RankOneTerms& now, const RankOneTerms& before,
-                        std::size_t limit, RankOneTerms& added,
-                        RankOneTerms& removed);
+bool find_changed_terms(const RankOneTerms& now, const RankOneTerms& before, std::size_t limit,
+                        RankOneTerms& added, RankOneTerms& removed);
 
 // base + Σ w wᵀ over the springs as one block matrix: a block for each pair of blocks a
 // spring joins.

@@ -5,6 +5,8 @@
 // answer does not depend on the number of threads, only on the split.
 
 #include <algorithm>
+#include <cstddef>
+#include <utility>
 
 #include <omp.h>
 
@@ -22,6 +24,13 @@ void run_two_parts(bool parallel, Task&& task) {
   }
 #pragma omp parallel for schedule(static, 1) num_threads(threads)
   for (int part = 0; part < 2; ++part) task(part);
+}
+
+// Part `part` (0 or 1) of 0 … count − 1 split in halves: [first, second).
+inline std::pair<std::size_t, std::size_t> half_range(int part, std::size_t count) {
+  const std::size_t half = count / 2;
+  if (part == 0) return {0, half};
+  return {half, count};
 }
 
 }  // namespace hydrodda::dda

@@ -162,11 +162,11 @@ void System::detect_contacts() {
   // candidates sorted by key and the halves merged: the keys are unique, so the list is the
   // same as one sort of all.
   const bool parallel = pairs.size() >= 1000;
-  const std::size_t half_pairs = pairs.size() / 2;
   run_two_parts(parallel, [&](int part) {
     ContactCandidates& out = buffers.found[part];
     out.clear();
-    for (std::size_t p = part == 0 ? 0 : half_pairs; p < (part == 0 ? half_pairs : pairs.size()); ++p) {
+    const auto [first, second] = half_range(part, pairs.size());
+    for (std::size_t p = first; p < second; ++p) {
       const auto [a, b] = pairs[p];
       find_pair_contacts(blocks_[a].polygon, a, blocks_[b].polygon, b, contact_distance_, out);
     }
@@ -178,10 +178,8 @@ void System::detect_contacts() {
   std::merge(buffers.found[0].begin(), buffers.found[0].end(), buffers.found[1].begin(), buffers.found[1].end(),
              candidates.begin(), [](const ContactCandidate& x, const ContactCandidate& y) { return x.key < y.key; });
   active_.resize(candidates.size());
-  const std::size_t half = candidates.size() / 2;
   run_two_parts(parallel, [&](int part) {
-    const std::size_t begin = part == 0 ? 0 : half;
-    const std::size_t end = part == 0 ? half : candidates.size();
+    const auto [begin, end] = half_range(part, candidates.size());
     if (begin == end) return;
     // Both lists are in key order: one walk finds each candidate's record from the last step.
     auto record = std::lower_bound(records_.begin(), records_.end(), candidates[begin].key,
@@ -312,8 +310,9 @@ void System::factor_with_contacts() {
   // that come and go between passes. The buffers are members, reused from call to call:
   // fresh ones cost more in page faults than the assembly itself.
   RankOneTerms& terms = assembly_.terms;
-  std::size_t count = 0;
-  for (const ActiveContact& c : active_) count += (is_closed(c.record.state) ? 1 : 0) + (c.record.state == ContactState::locked ? 1 : 0);
+  std::size_t count = 0;  // a normal spring for each closed contact, a shear one for each locked
+  for (const ActiveContact& c : active_)
+    count += (is_closed(c.record.state) ? 1 : 0) + (c.record.state == ContactState::locked ? 1 : 0);
   terms.resize(count);
   const double root_penalty = std::sqrt(penalty_);
   RankOneTerm* next = terms.data();

@@ -190,8 +190,8 @@ class System {
   DetectionBuffers detection_;
 
   // The contacts of the last step, in key order.
-  using ContactRecords = std::vector<std::pair<ContactKey, ContactRecord>, HugePageAllocator<std::pair<ContactKey, ContactRecord>>>;
-  ContactRecords records_;
+  using KeyedRecord = std::pair<ContactKey, ContactRecord>;
+  std::vector<KeyedRecord, HugePageAllocator<KeyedRecord>> records_;
   std::vector<ActiveContact, HugePageAllocator<ActiveContact>> active_;  // some 300 bytes each
   int unknown_count_ = 0;
   double time_ = 0.0;
