@@ -9,6 +9,7 @@
 
 #include "dda/block_cholesky.hpp"
 #include "dda/contact_detection.hpp"
+#include "dda/contact_search.hpp"
 #include "dda/system.hpp"
 #include "dda/test_models.hpp"  // tests/dda: the brick wall the tests and ntdda run
 
@@ -194,6 +195,31 @@ void BM_WallContactDetection(benchmark::State& state) {
   state.counters["candidates"] = static_cast<double>(candidate_count);
 }
 BENCHMARK(BM_WallContactDetection)->Arg(40)->Unit(benchmark::kMicrosecond);
+
+// The same wall through the contact search a step uses: argument 1 = 1, with the lists kept
+// from the last search (a step whose blocks barely moved); 0, made afresh each time (the
+// first step, or one after the blocks moved half the skin). Two threads where there are two.
+void BM_WallContactSearch(benchmark::State& state) {
+  const int rows = static_cast<int>(state.range(0));
+  const ModelDefinition wall = make_brick_wall(rows, rows);
+  std::vector<std::span<const Point>> polygons;
+  std::vector<char> fixed;
+  for (const auto& b : wall.blocks) {
+    polygons.emplace_back(b.polygon);
+    fixed.push_back(b.fixed);
+  }
+  const double distance = 2.5 * 0.01 * 0.5 * (rows + 1.0);
+  hydrodda::dda::ContactSearch search(distance, 0.2 * distance);
+  hydrodda::dda::ContactCandidates found;
+  for (auto _ : state) {
+    if (state.range(1) == 0) search.forget();
+    search.find(polygons, fixed, found);
+    benchmark::DoNotOptimize(found.data());
+  }
+  state.counters["candidates"] = static_cast<double>(found.size());
+  state.counters["lists"] = static_cast<double>(search.list_count());
+}
+BENCHMARK(BM_WallContactSearch)->Args({40, 0})->Args({40, 1})->Unit(benchmark::kMicrosecond);
 
 void BM_RandomPacking(benchmark::State& state) {
   // 60 steps of 1 ms: a free fall of 18 mm, past every initial gap.

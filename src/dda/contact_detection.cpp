@@ -99,95 +99,107 @@ double compute_tributary_length(Point p, Point before, Point after, Point a, Poi
   return total;
 }
 
-// An edge of the polygon whose edges are searched, with what every vertex test needs of it.
-struct EdgeFrame {
-  Point a, b;
-  double length;
-  // The edge's box grown by twice the contact distance. The tests below admit a vertex up to
-  // the distance off the edge's line and past its ends, at most √2 × the distance from the
-  // edge's box along either axis, so a vertex outside this box cannot pass them.
-  Box reach;
-};
-
-// Vertices of polygon `va` against edges of polygon `eb`. The edges' lengths and reach are
-// computed once per pair rather than once per vertex–edge test, and the box test rejects most
-// vertex–edge pairs before any division or square root (bench_dda: detection was an eighth
-// of a wall's step).
-void find_one_way(std::span<const Point> va, int a, std::span<const Point> eb, int b,
-                  double distance, ContactCandidates& out) {
+// Vertex v of polygon `va` (block a) against edge e of polygon `eb` (block b): the candidate
+// appended to `out` if the vertex may touch the edge. Every candidate's vertex lies within
+// `distance` of the edge as a segment: within it of the line, and past an end within it of
+// that end.
+void test_vertex_edge(std::span<const Point> va, int a, int v, std::span<const Point> eb, int b, int e,
+                      double distance, ContactCandidates& out) {
   const int nv = static_cast<int>(va.size());
   const int ne = static_cast<int>(eb.size());
-  thread_local std::vector<EdgeFrame> edges;
-  edges.resize(ne);
-  for (int e = 0; e < ne; ++e) {
-    EdgeFrame& f = edges[e];
-    f.a = eb[e];
-    f.b = eb[(e + 1) % ne];
-    f.length = geometry::distance(f.a, f.b);
-    f.reach = Box{};
-    f.reach.add(f.a);
-    f.reach.add(f.b);
-    f.reach = f.reach.inflated(2.0 * distance);
+  const Point p = va[v];
+  const Point e0 = eb[e];
+  const Point e1 = eb[(e + 1) % ne];
+  const double length = geometry::distance(e0, e1);
+  const double gap = compute_gap(p, e0, e1, length);
+  if (gap > distance || gap < -distance) return;
+  const double t = dot(p - e0, e1 - e0) / (length * length);
+  const double slack = distance / length;
+  if (t < -slack || t > 1 + slack) return;
+  // The vertex's own block must lie outside the edge near the vertex: both incident edges
+  // point away from block b (a reflex vertex never touches a face).
+  const Point before = va[(v + nv - 1) % nv];
+  const Point after = va[(v + 1) % nv];
+  const Point n{(e1.y - e0.y) / length, -(e1.x - e0.x) / length};
+  if (dot(before - p, n) < -kWedgeTolerance * geometry::distance(before, p)) return;
+  if (dot(after - p, n) < -kWedgeTolerance * geometry::distance(after, p)) return;
+  const double length_share = compute_tributary_length(p, before, after, e0, e1, distance);
+  // At or past an end of the edge (vertex–vertex): keep only the entrance edge, the one of
+  // the two edges meeting there whose line the vertex is farther outside (Shi 1988, §4.3).
+  // Corners that coincide (side-by-side blocks) leave both gaps equal up to the motion of a
+  // step; there the edge that carries a face contact wins, then the lower index, so the
+  // choice (and the contact's key and state) does not flip on round-off from step to step.
+  const double tie = kCornerTieTolerance * distance;
+  if (t < tie / length || t > 1 - tie / length) {
+    const bool at_start = t < 0.5;
+    const int other = at_start ? (e + ne - 1) % ne : (e + 1) % ne;
+    const Point other_a = eb[other];
+    const Point other_b = eb[(other + 1) % ne];
+    const double other_gap = compute_gap(p, other_a, other_b);
+    if (other_gap > gap + tie) return;
+    if (other_gap >= gap - tie) {
+      const double other_share = compute_tributary_length(p, before, after, other_a, other_b, distance);
+      if (other_share > length_share || (other_share == length_share && other < e)) return;
+    }
+    if ((t < 0 || t > 1) && geometry::distance(p, at_start ? e0 : e1) > distance) return;
   }
+  ContactCandidate c;
+  c.key = {a, v, b, e};
+  c.edge_ratio = std::clamp(t, 0.0, 1.0);
+  c.penetration = -gap;
+  c.length = length_share;
+  out.push_back(c);
+}
+
+// Vertices of polygon `va` within `reach` of edges of polygon `eb`, vertex by vertex, edges in
+// order. A box test rejects most combinations before any division or square root.
+void find_one_way_combinations(std::span<const Point> va, std::span<const Point> eb, double reach,
+                               std::vector<VertexEdge>& out) {
+  const int nv = static_cast<int>(va.size());
+  const int ne = static_cast<int>(eb.size());
+  thread_local std::vector<Box> boxes;  // each edge's box grown by the reach
+  boxes.resize(ne);
+  for (int e = 0; e < ne; ++e) {
+    Box box;
+    box.add(eb[e]);
+    box.add(eb[(e + 1) % ne]);
+    boxes[e] = box.inflated(reach);
+  }
+  const double reach_squared = reach * reach;
   for (int v = 0; v < nv; ++v) {
     const Point p = va[v];
-    const Point before = va[(v + nv - 1) % nv];
-    const Point after = va[(v + 1) % nv];
     for (int e = 0; e < ne; ++e) {
-      const EdgeFrame& edge = edges[e];
-      if (!edge.reach.contains(p)) continue;
-      const Point e0 = edge.a;
-      const Point e1 = edge.b;
-      const double length = edge.length;
-      const double gap = compute_gap(p, e0, e1, length);
-      if (gap > distance || gap < -distance) continue;
-      const double t = dot(p - e0, e1 - e0) / (length * length);
-      const double slack = distance / length;
-      if (t < -slack || t > 1 + slack) continue;
-      // The vertex's own block must lie outside the edge near the vertex: both incident
-      // edges point away from block b (a reflex vertex never touches a face).
-      const Point n{(e1.y - e0.y) / length, -(e1.x - e0.x) / length};
-      if (dot(before - p, n) < -kWedgeTolerance * geometry::distance(before, p)) continue;
-      if (dot(after - p, n) < -kWedgeTolerance * geometry::distance(after, p)) continue;
-      const double length_share = compute_tributary_length(p, before, after, e0, e1, distance);
-      // At or past an end of the edge (vertex–vertex): keep only the entrance edge, the one of
-      // the two edges meeting there whose line the vertex is farther outside (Shi 1988, §4.3).
-      // Corners that coincide (side-by-side blocks) leave both gaps equal up to the motion of
-      // a step; there the edge that carries a face contact wins, then the lower index, so the
-      // choice (and the contact's key and state) does not flip on round-off from step to step.
-      const double tie = kCornerTieTolerance * distance;
-      if (t < tie / length || t > 1 - tie / length) {
-        const bool at_start = t < 0.5;
-        const int other = at_start ? (e + ne - 1) % ne : (e + 1) % ne;
-        const Point other_a = eb[other];
-        const Point other_b = eb[(other + 1) % ne];
-        const double other_gap = compute_gap(p, other_a, other_b);
-        if (other_gap > gap + tie) continue;
-        if (other_gap >= gap - tie) {
-          const double other_share = compute_tributary_length(p, before, after, other_a, other_b, distance);
-          if (other_share > length_share || (other_share == length_share && other < e)) continue;
-        }
-        if ((t < 0 || t > 1) && geometry::distance(p, at_start ? e0 : e1) > distance) continue;
-      }
-      ContactCandidate c;
-      c.key = {a, v, b, e};
-      c.edge_ratio = std::clamp(t, 0.0, 1.0);
-      c.penetration = -gap;
-      c.length = length_share;
-      out.push_back(c);
+      if (!boxes[e].contains(p)) continue;
+      // The squared distance to the nearest point of the segment.
+      const Point a = eb[e];
+      const Point ab = eb[(e + 1) % ne] - a;
+      const double t = std::clamp(dot(p - a, ab) / dot(ab, ab), 0.0, 1.0);
+      const Point off = p - (a + t * ab);
+      if (dot(off, off) <= reach_squared) out.push_back({v, e});
     }
   }
 }
 
 }  // namespace
 
-void find_pair_contacts(std::span<const Point> polygon_a, int a,
-                        std::span<const Point> polygon_b, int b, double distance,
+std::size_t find_vertex_edge_combinations(std::span<const Point> polygon_a, std::span<const Point> polygon_b,
+                                          double reach, std::vector<VertexEdge>& out) {
+  const std::size_t first = out.size();
+  find_one_way_combinations(polygon_a, polygon_b, reach, out);
+  const std::size_t a_on_b = out.size() - first;
+  find_one_way_combinations(polygon_b, polygon_a, reach, out);
+  return a_on_b;
+}
+
+void find_pair_contacts(std::span<const Point> polygon_a, int a, std::span<const Point> polygon_b, int b,
+                        double distance, std::span<const VertexEdge> combinations, std::size_t a_on_b,
                         ContactCandidates& out) {
   const std::size_t first = out.size();
-  find_one_way(polygon_a, a, polygon_b, b, distance, out);
+  for (std::size_t k = 0; k < a_on_b; ++k)
+    test_vertex_edge(polygon_a, a, combinations[k].vertex, polygon_b, b, combinations[k].edge, distance, out);
   const std::size_t second = out.size();
-  find_one_way(polygon_b, b, polygon_a, a, distance, out);
+  for (std::size_t k = a_on_b; k < combinations.size(); ++k)
+    test_vertex_edge(polygon_b, b, combinations[k].vertex, polygon_a, a, combinations[k].edge, distance, out);
   // A corner of b on a corner of a already in contact is the same contact point seen from the
   // other block: an edge–edge contact is one vertex–edge contact at each end of the overlap
   // (Shi 1988, §4.3). Counted twice it would double the stiffness there and the cohesion and
@@ -200,6 +212,15 @@ void find_pair_contacts(std::span<const Point> polygon_a, int a,
     return false;
   };
   out.erase(std::remove_if(out.begin() + static_cast<std::ptrdiff_t>(second), out.end(), same_corner), out.end());
+}
+
+void find_pair_contacts(std::span<const Point> polygon_a, int a, std::span<const Point> polygon_b, int b,
+                        double distance, ContactCandidates& out) {
+  thread_local std::vector<VertexEdge> combinations;
+  combinations.clear();
+  const std::size_t a_on_b =
+      find_vertex_edge_combinations(polygon_a, polygon_b, contact_reach(distance), combinations);
+  find_pair_contacts(polygon_a, a, polygon_b, b, distance, combinations, a_on_b, out);
 }
 
 }  // namespace hydrodda::dda

@@ -42,9 +42,33 @@ std::vector<std::pair<int, int>> find_block_pairs(std::span<const geometry::Box>
                                                   double distance,
                                                   std::span<const char> skip);
 
-// Vertex–edge contacts of the pair (a, b), both ways, within `distance`. Sorted by key.
+// Every contact's vertex lies within the contact distance of its edge as a segment (within it
+// of the edge's line, and past an end within it of that end). A list of vertex–edge
+// combinations within this reach, round-off allowed for, holds all the pair's contacts.
+inline double contact_reach(double distance) { return distance * (1.0 + 1e-9); }
+
+// A vertex of one polygon and an edge (edge → edge + 1) of another.
+struct VertexEdge {
+  int vertex = 0;
+  int edge = 0;
+};
+
+// The combinations of a vertex of a with an edge of b, then of a vertex of b with an edge of
+// a, whose vertex lies within `reach` of the edge as a segment; appended to `out`, vertex by
+// vertex, edges in order. Returns how many are a's vertices on b's edges.
+std::size_t find_vertex_edge_combinations(std::span<const geometry::Point> polygon_a,
+                                          std::span<const geometry::Point> polygon_b, double reach,
+                                          std::vector<VertexEdge>& out);
+
+// Vertex–edge contacts of the pair (a, b), both ways, within `distance`, appended to `out`:
+// among all the pair's combinations, or among those of `combinations` (its first `a_on_b`
+// a's vertices on b's edges, the rest b's on a's). Given every combination within
+// contact_reach(distance), the two find the same contacts.
 void find_pair_contacts(std::span<const geometry::Point> polygon_a, int a,
                         std::span<const geometry::Point> polygon_b, int b, double distance,
                         ContactCandidates& out);
+void find_pair_contacts(std::span<const geometry::Point> polygon_a, int a,
+                        std::span<const geometry::Point> polygon_b, int b, double distance,
+                        std::span<const VertexEdge> combinations, std::size_t a_on_b, ContactCandidates& out);
 
 }  // namespace hydrodda::dda

@@ -59,14 +59,13 @@ class BlockFactorSolver final : public LinearSolver {
       : tolerance_(tolerance), max_iterations_(max_iterations) {}
 
   void factor(const BlockMatrix& base, const RankOneTerms& terms) override {
-    if (base.block_count != base_.block_count) {
-      order_.clear();  // ordered at the next factorisation, on the assembled pattern
-      factor_.clear();
-      stale_ = true;
-    }
-    base_ = base;
     terms_ = terms;
-    if (!factor_.empty() && !stale_ && !follow_terms()) stale_ = true;
+    take_matrix(base);
+  }
+
+  void factor_taking(const BlockMatrix& base, RankOneTerms& terms) override {
+    terms_.swap(terms);
+    take_matrix(base);
   }
 
   SolverCounts counts() const override { return counts_; }
@@ -110,6 +109,17 @@ class BlockFactorSolver final : public LinearSolver {
   // Past this many springs changed since the factorisation, the correction (m sparse columns
   // and an m × m capacitance) costs more per application than a fresh factorisation saves.
   static constexpr std::size_t kMaxCorrections = 32;
+
+  // The matrix is now base + terms_.
+  void take_matrix(const BlockMatrix& base) {
+    if (base.block_count != base_.block_count) {
+      order_.clear();  // ordered at the next factorisation, on the assembled pattern
+      factor_.clear();
+      stale_ = true;
+    }
+    base_ = base;
+    if (!factor_.empty() && !stale_ && !follow_terms()) stale_ = true;
+  }
 
   // Brings the correction up to the springs of the current matrix. False if there are too
   // many changes to follow.

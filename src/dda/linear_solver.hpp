@@ -74,6 +74,10 @@ class LinearSolver {
   // disappeared instead of starting again, and one that only multiplies by A need never
   // assemble them. The answer is always A's.
   virtual void factor(const BlockMatrix& base, const RankOneTerms& springs = {}) = 0;
+  // The same, taking the springs over instead of copying them (a large model's run to
+  // megabytes, passed several times a step): `springs` is left holding memory to reuse, its
+  // contents unspecified. A solver that keeps no springs copies, as factor() does.
+  virtual void factor_taking(const BlockMatrix& base, RankOneTerms& springs) { factor(base, springs); }
   // Solve with the last factorisation.
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const = 0;
   virtual SolverCounts counts() const = 0;

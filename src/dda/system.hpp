@@ -5,11 +5,13 @@
 
 #include <array>
 #include <memory>
+#include <span>
 #include <utility>
 #include <vector>
 
 #include "dda/block_kernels.hpp"
 #include "dda/contact_detection.hpp"
+#include "dda/contact_search.hpp"
 #include "dda/definitions.hpp"
 #include "dda/linear_solver.hpp"
 
@@ -181,12 +183,11 @@ class System {
   // Contact detection's lists, kept from step to step: fresh ones cost their page faults
   // every step.
   struct DetectionBuffers {
-    std::vector<geometry::Box> boxes;
+    std::vector<std::span<const Point>> polygons;  // the blocks', in block order
     std::vector<char> fixed;
-    std::vector<std::pair<int, int>> pairs;
-    std::array<ContactCandidates, 2> found;  // by the two halves of the pairs
     ContactCandidates candidates;
   };
+  ContactSearch contact_search_{0.0, 0.0};  // made with the contact distance
   DetectionBuffers detection_;
 
   // The contacts of the last step, in key order.

@@ -97,6 +97,7 @@ void System::import_state(const SystemState& s) {
   restore(measured_, s.measured_points);
   vertex_forces_ = s.vertex_forces;
   solver_->reset();
+  contact_search_.forget();
 }
 
 }  // namespace hydrodda::dda
