@@ -153,6 +153,13 @@ void BM_WallGraphFactorise(benchmark::State& state) {
 }
 BENCHMARK(BM_WallGraphFactorise)->Arg(40)->Arg(100)->Unit(benchmark::kMillisecond);
 
+// The minimum degree ordering of the wall's block graph (the first factorisation's).
+void BM_WallGraphOrdering(benchmark::State& state) {
+  const BlockMatrix a = make_wall_graph_matrix(static_cast<int>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(hydrodda::dda::order_by_minimum_degree(a));
+}
+BENCHMARK(BM_WallGraphOrdering)->Arg(40)->Arg(100)->Unit(benchmark::kMicrosecond);
+
 void BM_WallGraphTriangularSolves(benchmark::State& state) {
   const BlockMatrix a = make_wall_graph_matrix(static_cast<int>(state.range(0)));
   hydrodda::dda::BlockCholesky factor;

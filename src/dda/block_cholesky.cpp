@@ -11,6 +11,7 @@
 
 #include <Eigen/Cholesky>
 
+#include "dda/huge_page_allocator.hpp"
 #include "dda/parallel.hpp"
 
 namespace hydrodda::dda {
@@ -186,8 +187,8 @@ bool BlockCholesky::factorise(const BlockMatrix& a, const std::vector<int>& orde
   for (int k = 0; k < n; ++k) column_start_[k + 1] += column_start_[k];
   block_count_ = n;
   split_elimination_tree();
-  row_.resize(column_start_[n]);
-  value_.resize(column_start_[n]);
+  resize_for_overwrite(row_, column_start_[n]);
+  resize_for_overwrite(value_, column_start_[n]);
   inverse_diagonal_.resize(n);
   std::vector<int> filled(column_start_.begin(), column_start_.end() - 1);
   // Row k touches only its own subtree (the columns of ereach(k) and their rows below k), so

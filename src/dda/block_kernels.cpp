@@ -105,13 +105,4 @@ Vector6 compute_edge_traction_load(Point a, Point b, Point centroid, double norm
                               centroid);
 }
 
-Point displace_point(Point p, Point centroid, const Vector6& d) {
-  const double x = p.x - centroid.x;
-  const double y = p.y - centroid.y;
-  const double c = std::cos(d[2]);
-  const double s = std::sin(d[2]);
-  return {p.x + d[0] + (c - 1) * x - s * y + x * d[3] + y * d[5] / 2,
-          p.y + d[1] + s * x + (c - 1) * y + y * d[4] + x * d[5] / 2};
-}
-
 }  // namespace hydrodda::dda

@@ -5,6 +5,7 @@
 //   u = u0 − (y−y0) r0 + (x−x0) εx + (y−y0) γxy/2
 //   v = v0 + (x−x0) r0 + (y−y0) εy + (x−x0) γxy/2
 
+#include <cmath>
 #include <span>
 
 #include <Eigen/Dense>
@@ -48,8 +49,27 @@ Vector6 compute_segment_load(Point a, Point b, Point t_a, Point t_b, Point centr
 Vector6 compute_edge_traction_load(Point a, Point b, Point centroid, double normal_a,
                                    double normal_b, double shear_a, double shear_b);
 
-// The point after the block displacement D, the rotation applied exactly (cos r0, sin r0) so
-// that a rigid rotation keeps lengths and areas; strain terms as in T.
-Point displace_point(Point p, Point centroid, const Vector6& d);
+// The points of a block after its displacement D about `centroid`, the rotation applied
+// exactly (cos r0, sin r0) so that a rigid rotation keeps lengths and areas; strain terms as
+// in T. The cosine and sine are computed once for all the block's points.
+class BlockMotion {
+ public:
+  BlockMotion(Point centroid, const Vector6& d)
+      : centroid_(centroid), d_(d), cos_minus_one_(std::cos(d[2]) - 1), sin_(std::sin(d[2])) {}
+  Point operator()(Point p) const {
+    const double x = p.x - centroid_.x;
+    const double y = p.y - centroid_.y;
+    return {p.x + d_[0] + cos_minus_one_ * x - sin_ * y + x * d_[3] + y * d_[5] / 2,
+            p.y + d_[1] + sin_ * x + cos_minus_one_ * y + y * d_[4] + x * d_[5] / 2};
+  }
+
+ private:
+  Point centroid_;
+  Vector6 d_;
+  double cos_minus_one_, sin_;
+};
+
+// One point after the block displacement D (BlockMotion).
+inline Point displace_point(Point p, Point centroid, const Vector6& d) { return BlockMotion(centroid, d)(p); }
 
 }  // namespace hydrodda::dda

@@ -58,7 +58,7 @@ void ContactSearch::find(std::span<const std::span<const geometry::Point>> polyg
     }
     std::sort(half.found.begin(), half.found.end(), by_key);
   });
-  out.resize(halves_[0].found.size() + halves_[1].found.size());
+  resize_for_overwrite(out, halves_[0].found.size() + halves_[1].found.size());
   std::merge(halves_[0].found.begin(), halves_[0].found.end(), halves_[1].found.begin(), halves_[1].found.end(),
              out.begin(), by_key);
 }

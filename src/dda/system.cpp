@@ -160,7 +160,7 @@ void System::detect_contacts() {
   contact_search_.find(buffers.polygons, buffers.fixed, candidates);
   // The linearisation in two halves, side by side on two threads where there are two.
   const bool parallel = candidates.size() >= 2000;
-  active_.resize(candidates.size());
+  resize_for_overwrite(active_, candidates.size());
   run_two_parts(parallel, [&](int part) {
     const auto [begin, end] = half_range(part, candidates.size());
     if (begin == end) return;
@@ -297,7 +297,7 @@ void System::factor_with_contacts() {
   std::size_t count = 0;  // a normal spring for each closed contact, a shear one for each locked
   for (const ActiveContact& c : active_)
     count += (is_closed(c.record.state) ? 1 : 0) + (c.record.state == ContactState::locked ? 1 : 0);
-  terms.resize(count);
+  resize_for_overwrite(terms, count);
   const double root_penalty = std::sqrt(penalty_);
   RankOneTerm* next = terms.data();
   const auto add_term = [&](const ActiveContact& c, int kind, const Vector6& e_i, const Vector6& e_j) {
@@ -520,9 +520,9 @@ StepReport System::step() {
       for (std::size_t bi = 0; bi < blocks_.size(); ++bi) {
         const Block& b = blocks_[bi];
         if (b.dof < 0) continue;
-        const Vector6 db = d.segment<6>(6 * b.dof);
+        const BlockMotion motion(b.moments.centroid, d.segment<6>(6 * b.dof));
         for (Point p : b.polygon) {
-          const double moved = geometry::distance(p, displace_point(p, b.moments.centroid, db));
+          const double moved = geometry::distance(p, motion(p));
           if (moved > largest || !std::isfinite(moved)) largest_block = static_cast<int>(bi);
           largest = std::max(largest, moved);
         }
@@ -570,8 +570,9 @@ void System::commit_step(const Eigen::VectorXd& d, double dt) {
     if (b.dof < 0) continue;
     const Vector6 db = d.segment<6>(6 * b.dof);
     const Point c = b.moments.centroid;
-    for (Point& p : b.polygon) p = displace_point(p, c, db);
-    b.material_centroid = displace_point(b.material_centroid, c, db);
+    const BlockMotion motion(c, db);
+    for (Point& p : b.polygon) p = motion(p);
+    b.material_centroid = motion(b.material_centroid);
     b.strain += db.segment<3>(3);
     b.stress += elasticity_[b.material] * db.segment<3>(3);
     b.rotation += db[2];
@@ -580,7 +581,7 @@ void System::commit_step(const Eigen::VectorXd& d, double dt) {
     b.moments = compute_moments(b.polygon);
   }
   records_.clear();  // active_ is in key order, and so stays records_
-  records_.reserve(active_.size());
+  reserve_with_headroom(records_, active_.size());
   for (ActiveContact& c : active_) {
     ContactRecord r = c.record;
     r.penetration = compute_penetration(c, d);

@@ -30,5 +30,24 @@ TEST(HugePageAllocator, AGrowingVectorKeepsItsValues) {
   EXPECT_EQ(reinterpret_cast<std::uintptr_t>(v.data()) % (std::size_t{2} << 20), 0u);
 }
 
+// Grown past its capacity, an array overwritten in full gets a quarter more room; grown again
+// within that room, it stays where it is (no fresh pages, no copy).
+TEST(HugePageAllocator, ResizeForOverwriteGrowsWithHeadroom) {
+  std::vector<double, HugePageAllocator<double>> v;
+  resize_for_overwrite(v, 100000);
+  EXPECT_EQ(v.size(), 100000u);
+  EXPECT_GE(v.capacity(), 125000u);
+  const double* before = v.data();
+  resize_for_overwrite(v, 120000);
+  EXPECT_EQ(v.size(), 120000u);
+  EXPECT_EQ(v.data(), before);
+  resize_for_overwrite(v, 200000);
+  EXPECT_GE(v.capacity(), 250000u);
+  std::vector<int> kept{1, 2, 3};
+  reserve_with_headroom(kept, 8);
+  EXPECT_GE(kept.capacity(), 10u);
+  EXPECT_EQ(kept, (std::vector<int>{1, 2, 3}));  // reserving keeps the values
+}
+
 }  // namespace
 }  // namespace hydrodda::dda
