@@ -158,10 +158,9 @@ void System::detect_contacts() {
   for (const Block& b : blocks_) buffers.polygons.emplace_back(b.polygon);
   ContactCandidates& candidates = buffers.candidates;
   contact_search_.find(buffers.polygons, buffers.fixed, candidates);
-  // The linearisation in two halves, side by side on two threads where there are two.
-  const bool parallel = candidates.size() >= 2000;
   resize_for_overwrite(active_, candidates.size());
-  run_two_parts(parallel, [&](int part) {
+  // The linearisation in two halves, side by side on two threads where there are two.
+  run_two_parts(active_.size() >= 2000, [&](int part) {
     const auto [begin, end] = half_range(part, candidates.size());
     if (begin == end) return;
     // Both lists are in key order: one walk finds each candidate's record from the last step.
@@ -376,6 +375,42 @@ double System::largest_vertex_motion(const Eigen::VectorXd& change) const {
   return largest;
 }
 
+// Moves contact c to the state the solution d puts it in: open ↔ closed by penetration and
+// tension, locked ↔ sliding by Mohr–Coulomb, with hysteresis `band`. Whether it changed.
+bool System::update_state(ActiveContact& c, const Eigen::VectorXd& d, double band) const {
+  ContactRecord& r = c.record;
+  const double pen = compute_penetration(c, d);
+  if (r.state == ContactState::open) {
+    if (pen > band) {
+      r.state = ContactState::locked;
+      r.multiplier = 0.0;
+      return true;
+    }
+    return false;
+  }
+  const double normal = compute_normal_force(c, pen);
+  if (normal < -joint_.tensile_strength * c.length - penalty_ * band) {
+    r.state = ContactState::open;
+    r.multiplier = 0.0;
+    r.normal_force = 0.0;
+    return true;
+  }
+  // Narrower for slip than for a reversal: a locked spring stretches only F/p.
+  const double shear_band = 0.1 * band;
+  const double shear = compute_shear(c, d);
+  if (r.state == ContactState::locked) {
+    if (penalty_ * (std::abs(shear) - shear_band) > compute_shear_strength(c, normal)) {
+      r.state = ContactState::sliding;
+      r.slide_sign = shear > 0 ? 1 : -1;
+      return true;
+    }
+  } else if (shear * r.slide_sign < -band) {  // a clear reversal only
+    r.state = ContactState::locked;
+    return true;
+  }
+  return false;
+}
+
 // ---- open–close iteration ----
 
 // Pseudocode (Shi 1988 §5; Lin 1995 for the multipliers):
@@ -461,39 +496,7 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
     const bool chattering = oc >= settings_.max_open_close_iterations / 4;
     const double band = (chattering ? 1e-1 : 1e-2) * penetration_tolerance_;
     bool changed = false;
-    for (ActiveContact& c : active_) {
-      ContactRecord& r = c.record;
-      const double pen = compute_penetration(c, d);
-      if (r.state == ContactState::open) {
-        if (pen > band) {
-          r.state = ContactState::locked;
-          r.multiplier = 0.0;
-          changed = true;
-        }
-        continue;
-      }
-      const double normal = compute_normal_force(c, pen);
-      if (normal < -joint_.tensile_strength * c.length - penalty_ * band) {
-        r.state = ContactState::open;
-        r.multiplier = 0.0;
-        r.normal_force = 0.0;
-        changed = true;
-        continue;
-      }
-      // Narrower for slip than for a reversal: a locked spring stretches only F/p.
-      const double shear_band = 0.1 * band;
-      const double shear = compute_shear(c, d);
-      if (r.state == ContactState::locked) {
-        if (penalty_ * (std::abs(shear) - shear_band) > compute_shear_strength(c, normal)) {
-          r.state = ContactState::sliding;
-          r.slide_sign = shear > 0 ? 1 : -1;
-          changed = true;
-        }
-      } else if (shear * r.slide_sign < -band) {  // a clear reversal only
-        r.state = ContactState::locked;
-        changed = true;
-      }
-    }
+    for (ActiveContact& c : active_) changed = update_state(c, d, band) || changed;
     if (!changed) return Unsettled::no;
     // A pass whose states changed leaves its friction loads settled for the states it had; a
     // few contacts that change state at the margin of Mohr–Coulomb (slip starting at a

@@ -154,6 +154,7 @@ class System {
   double compute_shear(const ActiveContact& c, const Eigen::VectorXd& d) const;
   double compute_normal_force(const ActiveContact& c, double penetration) const;
   double compute_shear_strength(const ActiveContact& c, double normal_force) const;
+  bool update_state(ActiveContact& c, const Eigen::VectorXd& d, double band) const;
   // The largest distance a vertex moves under the block unknowns `change` (first order).
   double largest_vertex_motion(const Eigen::VectorXd& change) const;
   void commit_step(const Eigen::VectorXd& d, double dt);
