@@ -15,55 +15,15 @@
 
 namespace {
 
-using hydrodda::dda::Analysis;
 using hydrodda::dda::BlockMatrix;
 using hydrodda::dda::LinearSolver;
-using hydrodda::dda::BlockDefinition;
-using hydrodda::dda::Material;
 using hydrodda::dda::ModelDefinition;
 using hydrodda::dda::Point;
-using hydrodda::dda::Polygon;
 using hydrodda::dda::System;
 
 using hydrodda::dda::testing::make_brick_wall;
+using hydrodda::dda::testing::make_random_packing;
 using hydrodda::dda::testing::make_wall_graph_matrix;
-using hydrodda::dda::testing::make_rectangle;
-
-ModelDefinition make_base_model() {
-  ModelDefinition m;
-  m.materials = {Material{2500.0, 1.0e10, 0.25}};
-  m.joint = {30.0, 0.0, 0.0};
-  m.settings.analysis = Analysis::static_;
-  m.settings.time_step = 1.0e-3;
-  return m;
-}
-
-// n × n cells of a lattice with jittered nodes (±0.2 m on 1 m), each cell shrunk by 0.1%
-// about its centroid: irregular quadrilaterals 0.5 mm apart, 0.5 mm above a fixed base.
-// They settle under gravity for `settle` steps before the timing starts, so that the timed
-// steps carry a packing whose contacts are closed.
-ModelDefinition make_random_packing(int n) {
-  ModelDefinition m = make_base_model();
-  m.settings.analysis = Analysis::dynamic;
-  std::mt19937 rng(12345);
-  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
-  std::vector<Point> nodes((n + 1) * (n + 1));
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      const bool edge_x = i == 0 || i == n;
-      nodes[j * (n + 1) + i] = {i + (edge_x ? 0.0 : jitter(rng)), 0.0015 + j + (j == 0 ? 0.0 : jitter(rng))};
-    }
-  m.blocks.push_back({make_rectangle(-1.0, -1.0, n + 1.0, 0.0), 0, true});
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      Polygon p{nodes[j * (n + 1) + i], nodes[j * (n + 1) + i + 1],
-                nodes[(j + 1) * (n + 1) + i + 1], nodes[(j + 1) * (n + 1) + i]};
-      const Point c = hydrodda::geometry::centroid(p);
-      for (Point& v : p) v = c + 0.999 * (v - c);
-      m.blocks.push_back({p, 0, false});
-    }
-  return m;
-}
 
 void run_steps(benchmark::State& state, ModelDefinition model, int settle = 0,
                std::unique_ptr<LinearSolver> solver = hydrodda::dda::make_block_factor_solver()) {

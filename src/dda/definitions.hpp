@@ -48,6 +48,10 @@ struct Settings {
   double penalty = 0.0;                   // N/m; 0 → 50 × the largest Young's modulus × 1 m
   double penetration_tolerance = 0.0;     // m; 0 → 1e-4 × allowed step displacement
   double contact_distance = 0.0;          // m; 0 → 2.5 × allowed step displacement
+  // m; the margin the contact search lists pairs and vertex–edge combinations with, kept
+  // until a vertex has moved half of it (contact_search.hpp); < 0 → a fifth of the contact
+  // distance; 0 → made afresh every step. The contacts found do not depend on it.
+  double contact_skin = -1.0;
   int max_open_close_iterations = 12;     // then the step is cut and retried
   int max_lagrangian_iterations = 30;
   double static_tolerance = 1.0e-9;       // run_to_equilibrium: max step displacement ÷ model size

@@ -111,7 +111,8 @@ System::System(ModelDefinition def, std::unique_ptr<LinearSolver> solver)
   // A skin of a fifth of the contact distance keeps the lists for many steps of a slow run
   // and adds little to what each step tests (a wall of 1,601 blocks: 19,000 combinations
   // within the contact distance of 9,400 contacts).
-  contact_search_ = ContactSearch(contact_distance_, 0.2 * contact_distance_);
+  contact_search_ = ContactSearch(contact_distance_,
+                                  settings_.contact_skin >= 0 ? settings_.contact_skin : 0.2 * contact_distance_);
   for (const Block& b : blocks_) detection_.fixed.push_back(b.dof < 0);
 }
 

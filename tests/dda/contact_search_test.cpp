@@ -13,6 +13,7 @@
 namespace hydrodda::dda {
 namespace {
 
+using testing::make_random_packing;
 using testing::make_rectangle;
 
 // Every pair (i < j, not both fixed) through find_pair_contacts, sorted by key: the reference.
@@ -45,30 +46,19 @@ void expect_same(const ContactCandidates& found, const ContactCandidates& expect
   }
 }
 
-// A 12 × 12 lattice of jittered quadrilaterals 1 mm apart on a fixed base, each moved every
-// round by its own small rigid motion (translation and rotation about its centroid). The
-// search is told the largest vertex motion, as a DDA step tells it; its candidates equal an
-// all-pairs search's in every round, exactly. Small motions keep the lists for several rounds;
-// larger ones make them again; both happen here.
+// A 12 × 12 lattice of jittered quadrilaterals 0.5 mm apart on a fixed base (the random
+// packing), each moved every round by its own small rigid motion (translation and rotation
+// about its centroid). The search is told the largest vertex motion, as a DDA step tells it;
+// its candidates equal an all-pairs search's in every round, exactly. Small motions keep the
+// lists for several rounds; larger ones make them again; both happen here.
 TEST(ContactSearch, FindsWhatASearchOfAllPairsFindsWhileTheBlocksMove) {
-  const int n = 12;
+  std::vector<Polygon> polygons;
+  std::vector<char> fixed;
+  for (const BlockDefinition& b : make_random_packing(12).blocks) {
+    polygons.push_back(b.polygon);
+    fixed.push_back(b.fixed ? 1 : 0);
+  }
   std::mt19937 rng(2024);
-  std::uniform_real_distribution<double> jitter(-0.15, 0.15);
-  std::vector<Point> nodes((n + 1) * (n + 1));
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i)
-      nodes[j * (n + 1) + i] = {i + (i == 0 || i == n ? 0.0 : jitter(rng)), 0.001 + j + (j == 0 ? 0.0 : jitter(rng))};
-  std::vector<Polygon> polygons{make_rectangle(-1.0, -1.0, n + 1.0, 0.0)};
-  std::vector<char> fixed{1};
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      Polygon p{nodes[j * (n + 1) + i], nodes[j * (n + 1) + i + 1], nodes[(j + 1) * (n + 1) + i + 1],
-                nodes[(j + 1) * (n + 1) + i]};
-      const Point c = geometry::centroid(p);
-      for (Point& v : p) v = c + 0.999 * (v - c);
-      polygons.push_back(p);
-      fixed.push_back(0);
-    }
   const double distance = 0.02;
   ContactSearch kept(distance, 0.2 * distance);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
