@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -38,11 +39,16 @@ inline ProgramResult run_program(const std::string& arguments) {
 }
 
 // Runs a shipped scenario (path relative to the source tree) into a fresh temporary folder and
-// returns its summary.json; the test fails if the run does not exit with 0.
+// returns its summary.json; the test fails if the run does not exit with 0. The folder is named
+// after the test and the process as well as the scenario: tests that run the same scenario
+// side by side (ctest -j) must not share it.
 inline nlohmann::json run_scenario_and_read(const std::string& relative_path) {
   namespace fs = std::filesystem;
   const fs::path scenario = fs::path(HYDRODDA_SOURCE_DIR) / relative_path;
-  const fs::path out = fs::temp_directory_path() / ("hydrodda-" + scenario.stem().string());
+  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  const fs::path out = fs::temp_directory_path() /
+                       ("hydrodda-" + std::string(test ? test->name() : "test") + "-" + std::to_string(::getpid()) +
+                        "-" + scenario.stem().string());
   fs::remove_all(out);
   const ProgramResult result = run_program("run " + scenario.string() + " -o " + out.string());
   EXPECT_EQ(result.exit_code, 0) << result.output;
