@@ -1,9 +1,7 @@
 #include "dda/block_cholesky.hpp"
 
 #include <algorithm>
-#include <climits>
 #include <cmath>
-
 
 #if defined(__x86_64__)
 #include <immintrin.h>

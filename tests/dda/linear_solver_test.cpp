@@ -113,9 +113,8 @@ struct ChainWithSprings {
 // over one block, and over the same block twice (its two vectors summed).
 TEST(LinearSolver, SpringsAddUpToTheDenseMatrix) {
   ChainWithSprings chain;
-  RankOneTerms springs{chain.make_term(1, 3, 4), chain.make_term(2, 12, 7),
-                                   chain.make_term(3, 20, -1), chain.make_term(4, -1, 25),
-                                   chain.make_term(5, 9, 9)};
+  RankOneTerms springs{chain.make_term(1, 3, 4), chain.make_term(2, 12, 7), chain.make_term(3, 20, -1),
+                       chain.make_term(4, -1, 25), chain.make_term(5, 9, 9)};
   const Eigen::MatrixXd dense = chain.dense_with(springs);
   const BlockMatrix assembled = add_springs(chain.base_blocks(), springs);
   const Eigen::MatrixXd from_blocks =
