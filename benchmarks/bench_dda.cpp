@@ -45,6 +45,7 @@ void run_steps(benchmark::State& state, ModelDefinition model, int settle = 0,
   const auto per_step = [&](long count) { return static_cast<double>(count) / state.iterations(); };
   state.counters["factor"] = per_step(after.factorisations - before.factorisations);
   state.counters["solves"] = per_step(after.solves - before.solves);
+  state.counters["estimates"] = per_step(after.estimates - before.estimates);
   state.counters["cg_iter"] = per_step(after.iterations - before.iterations);
   state.counters["updates"] = per_step(after.modified_terms - before.modified_terms);
 }

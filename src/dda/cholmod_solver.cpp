@@ -76,33 +76,44 @@ class CholmodSolver final : public LinearSolver {
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const override {
     ++counts_.solves;
     if (rhs.norm() == 0.0) return Eigen::VectorXd::Zero(rhs.size());
+    // From the last solution: the solves of one step (Lagrangian and friction updates,
+    // open–close passes) and of successive steps differ little, and starting there took
+    // the 1,601-block wall from 14.6 to 8.8 iterations a step (bench_dda).
+    last_solution_ = solve_to(rhs, last_solution_, tolerance_);
+    return last_solution_;
+  }
+
+  Eigen::VectorXd estimate(const Eigen::VectorXd& rhs, double relative) const override {
+    ++counts_.estimates;
+    if (rhs.norm() == 0.0) return Eigen::VectorXd::Zero(rhs.size());
+    return solve_to(rhs, Eigen::VectorXd(), relative);
+  }
+
+ private:
+  // Past this many CG iterations a fresh factorisation costs less than the drift does.
+  static constexpr int kRefactorAfter = 6;
+
+  // x with ‖b − A x‖ ≤ tolerance ‖b‖: CG from `guess` preconditioned by the kept factor, or,
+  // when there is none or CG does not get there, a direct solve on a fresh one.
+  Eigen::VectorXd solve_to(const Eigen::VectorXd& b, const Eigen::VectorXd& guess, double tolerance) const {
     Eigen::VectorXd x;
     if (factor_ != nullptr && !stale_) {
-      // From the last solution: the solves of one step (Lagrangian and friction updates,
-      // open–close passes) and of successive steps differ little, and starting there took
-      // the 1,601-block wall from 14.6 to 8.8 iterations a step (bench_dda).
       const int iterations = solve_by_conjugate_gradients(
           [this](const Eigen::VectorXd& v, Eigen::VectorXd& y) { y = multiply(v); },
-          [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { z = apply_factor(r); }, rhs, last_solution_,
-          tolerance_, max_iterations_, x, counts_.iterations);
+          [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { z = apply_factor(r); }, b, guess, tolerance,
+          max_iterations_, x, counts_.iterations);
       if (iterations >= 0) {
-        last_solution_ = x;
         // The drift has grown past what pays: factor afresh before the next solve.
         if (iterations > kRefactorAfter) stale_ = true;
         return x;
       }
     }
     refactor();
-    x = apply_factor(rhs);
+    x = apply_factor(b);
     // One refinement step against round-off in the deep contact stiffness.
-    x += apply_factor(rhs - multiply(x));
-    last_solution_ = x;
+    x += apply_factor(b - multiply(x));
     return x;
   }
-
- private:
-  // Past this many CG iterations a fresh factorisation costs less than the drift does.
-  static constexpr int kRefactorAfter = 6;
 
   // Updates L by the terms new since it was made and downdates it by those gone, in place.
   // False if it did not: too many changes at once, or a downdate CHOLMOD could not make (one

@@ -1,6 +1,7 @@
 #include "dda/contact_search.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <stdexcept>
 
 #include "dda/parallel.hpp"
@@ -56,11 +57,26 @@ void ContactSearch::find(std::span<const std::span<const geometry::Point>> polyg
       find_pair_contacts(polygons[p.a], p.a, polygons[p.b], p.b, distance_, combinations, p.middle - p.first,
                          half.found);
     }
-    std::sort(half.found.begin(), half.found.end(), by_key);
+    half.sort_found();
   });
-  resize_for_overwrite(out, halves_[0].found.size() + halves_[1].found.size());
-  std::merge(halves_[0].found.begin(), halves_[0].found.end(), halves_[1].found.begin(), halves_[1].found.end(),
-             out.begin(), by_key);
+  resize_for_overwrite(out, halves_[0].sorted.size() + halves_[1].sorted.size());
+  std::merge(halves_[0].sorted.begin(), halves_[0].sorted.end(), halves_[1].sorted.begin(),
+             halves_[1].sorted.end(), out.begin(), by_key);
+}
+
+void ContactSearch::Half::sort_found() {
+  const std::size_t n = found.size();
+  bool same = n == found_keys.size();
+  for (std::size_t i = 0; same && i < n; ++i) same = found[i].key == found_keys[i];
+  if (!same) {
+    found_keys.resize(n);
+    for (std::size_t i = 0; i < n; ++i) found_keys[i] = found[i].key;
+    key_order.resize(n);
+    std::iota(key_order.begin(), key_order.end(), 0);
+    std::sort(key_order.begin(), key_order.end(), [&](int x, int y) { return found_keys[x] < found_keys[y]; });
+  }
+  resize_for_overwrite(sorted, n);
+  for (std::size_t i = 0; i < n; ++i) sorted[i] = found[key_order[i]];
 }
 
 }  // namespace hydrodda::dda

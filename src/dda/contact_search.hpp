@@ -56,7 +56,14 @@ class ContactSearch {
   struct Half {
     std::vector<ListedPair> pairs;
     std::vector<VertexEdge> combinations;
-    ContactCandidates found;
+    ContactCandidates found;   // in the order the lists give them
+    ContactCandidates sorted;  // by key
+    // The keys found last time, in the lists' order, and the order that sorted them: while
+    // the lists are kept and no contact comes or goes, each search finds the same keys in the
+    // same order, and sorting them again would only repeat that order.
+    std::vector<ContactKey> found_keys;
+    std::vector<int> key_order;
+    void sort_found();
   };
   void make_lists(std::span<const std::span<const geometry::Point>> polygons, std::span<const char> fixed);
 

@@ -84,23 +84,14 @@ class BlockFactorSolver final : public LinearSolver {
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const override {
     ++counts_.solves;
     if (rhs.norm() == 0.0) return Eigen::VectorXd::Zero(rhs.size());
-    const bool kept = !factor_.empty() && !stale_;
-    if (!kept) refactor();
-    Eigen::VectorXd x;
-    int iterations = run_preconditioned_cg(rhs, x);
-    // A kept factor that no longer serves: factor the matrix itself, with which CG converges
-    // at once unless the matrix is too ill-conditioned to solve.
-    if (iterations < 0 && kept) {
-      refactor();
-      iterations = run_preconditioned_cg(rhs, x);
-    }
-    if (iterations < 0)
-      throw std::runtime_error(
-          "DDA: the stiffness solve did not converge even on a fresh factorisation: the matrix is "
-          "numerically singular");
+    Eigen::VectorXd x = solve_to(rhs, last_solution_, tolerance_);
     last_solution_ = x;
-    if (iterations > kRefactorAfter) stale_ = true;
     return x;
+  }
+
+  Eigen::VectorXd estimate(const Eigen::VectorXd& rhs, double relative) const override {
+    ++counts_.estimates;
+    return solve_to(rhs, Eigen::VectorXd(), relative);
   }
 
  private:
@@ -198,12 +189,34 @@ class BlockFactorSolver final : public LinearSolver {
     factor_.backward(u_, z);
   }
 
-  // CG on the current matrix, preconditioned by the corrected factor, from the last solution.
-  int run_preconditioned_cg(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  // x with ‖b − A x‖ ≤ tolerance ‖b‖, by CG from `guess`.
+  Eigen::VectorXd solve_to(const Eigen::VectorXd& b, const Eigen::VectorXd& guess, double tolerance) const {
+    if (b.norm() == 0.0) return Eigen::VectorXd::Zero(b.size());
+    const bool kept = !factor_.empty() && !stale_;
+    if (!kept) refactor();
+    Eigen::VectorXd x;
+    int iterations = run_preconditioned_cg(b, guess, tolerance, x);
+    // A kept factor that no longer serves: factor the matrix itself, with which CG converges
+    // at once unless the matrix is too ill-conditioned to solve.
+    if (iterations < 0 && kept) {
+      refactor();
+      iterations = run_preconditioned_cg(b, guess, tolerance, x);
+    }
+    if (iterations < 0)
+      throw std::runtime_error(
+          "DDA: the stiffness solve did not converge even on a fresh factorisation: the matrix is "
+          "numerically singular");
+    if (iterations > kRefactorAfter) stale_ = true;
+    return x;
+  }
+
+  // CG on the current matrix, preconditioned by the corrected factor.
+  int run_preconditioned_cg(const Eigen::VectorXd& b, const Eigen::VectorXd& guess, double tolerance,
+                            Eigen::VectorXd& x) const {
     return solve_by_conjugate_gradients(
         [this](const Eigen::VectorXd& v, Eigen::VectorXd& y) { multiply_with_springs(base_, terms_, v, y); },
-        [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { apply_preconditioner(r, z); }, b, last_solution_,
-        tolerance_, max_iterations_, x, counts_.iterations);
+        [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { apply_preconditioner(r, z); }, b, guess,
+        tolerance, max_iterations_, x, counts_.iterations);
   }
 
   void refactor() const {

@@ -38,6 +38,17 @@ class ConjugateGradientSolver final : public LinearSolver {
     return x;
   }
 
+  Eigen::VectorXd estimate(const Eigen::VectorXd& rhs, double relative) const override {
+    ++counts_.estimates;
+    Eigen::VectorXd x;
+    const int iterations = solve_by_conjugate_gradients(
+        [this](const Eigen::VectorXd& v, Eigen::VectorXd& y) { matrix_.multiply(v, y); },
+        [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { precondition(r, z); }, rhs, Eigen::VectorXd(),
+        relative, max_iterations_, x, counts_.iterations);
+    if (iterations < 0) throw std::runtime_error("DDA: conjugate gradients did not converge");
+    return x;
+  }
+
  private:
   void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
     z.resize(r.size());

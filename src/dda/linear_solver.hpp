@@ -62,7 +62,8 @@ struct SolverCounts {
   long factorisations = 0;   // numeric factorisations from scratch
   long modified_terms = 0;   // rank-one updates and downdates of a kept factorisation
   long solves = 0;
-  long iterations = 0;       // iterative-method iterations over all solves
+  long iterations = 0;       // iterative-method iterations over all solves and estimates
+  long estimates = 0;        // estimate() calls
 };
 
 class LinearSolver {
@@ -80,6 +81,11 @@ class LinearSolver {
   virtual void factor_taking(const BlockMatrix& base, RankOneTerms& springs) { factor(base, springs); }
   // Solve with the last factorisation.
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const = 0;
+  // x with ‖rhs − A x‖ ≤ relative ‖rhs‖, from zero: the size of a small change to the
+  // solution (what a change of load would move), not the solution itself. Leaves the state
+  // solve() keeps (its starting guess) as it was, so that solve()'s answers do not depend on
+  // whether estimates were made in between.
+  virtual Eigen::VectorXd estimate(const Eigen::VectorXd& rhs, double relative) const = 0;
   virtual SolverCounts counts() const = 0;
   // Forget every factor, ordering and starting guess kept from earlier matrices: the next
   // factor() and solve() behave as in a new solver. Solutions of a reused solver differ from

@@ -33,4 +33,15 @@ inline std::pair<std::size_t, std::size_t> half_range(int part, std::size_t coun
   return {half, count};
 }
 
+// body(i) for every i in 0 … count − 1, the two halves side by side where `parallel`. Each i
+// is visited once, by the same code either way: a body that writes only its own i's data
+// gives the same answer on one thread or two.
+template <class Body>
+void for_each_in_halves(bool parallel, std::size_t count, Body&& body) {
+  run_two_parts(parallel, [&](int part) {
+    const auto [begin, end] = half_range(part, count);
+    for (std::size_t i = begin; i < end; ++i) body(i);
+  });
+}
+
 }  // namespace hydrodda::dda

@@ -141,6 +141,13 @@ class System {
     Vector6 es_i = Vector6::Zero(), es_j = Vector6::Zero();
     int dof_i = -1, dof_j = -1;
   };
+  // Whether a loop is long enough to pay for a second thread, which can take some tens of
+  // microseconds to wake: one over the blocks (a few hundred nanoseconds each), one that
+  // linearises the contacts (about a hundred nanoseconds each), or one of a pass's light
+  // loops over them (ten or twenty nanoseconds each).
+  bool many_blocks() const { return blocks_.size() >= 500; }
+  bool many_contacts_to_linearise() const { return active_.size() >= 2000; }
+  bool many_contacts() const { return active_.size() >= 5000; }
   void detect_contacts();
   void linearise_contact(ActiveContact& c) const;
   // Why a step's solve did not settle, if it did not.
@@ -149,11 +156,22 @@ class System {
   void assemble_blocks(double dt, Matrix6Array& k_base, Eigen::VectorXd& f_base) const;
   void factor_with_contacts();
   Eigen::VectorXd assemble_contact_rhs(const Eigen::VectorXd& f_base) const;
+  // The change of the load when the sliding contacts' friction goes from the normal forces
+  // `from` to `to` (in the order of `sliding`).
+  Eigen::VectorXd friction_load_change(const std::vector<ActiveContact*>& sliding, const Eigen::VectorXd& from,
+                                       const Eigen::VectorXd& to) const;
   Vector6 block_unknowns(const Eigen::VectorXd& d, int dof) const;
   double compute_penetration(const ActiveContact& c, const Eigen::VectorXd& d) const;
   double compute_shear(const ActiveContact& c, const Eigen::VectorXd& d) const;
   double compute_normal_force(const ActiveContact& c, double penetration) const;
   double compute_shear_strength(const ActiveContact& c, double normal_force) const;
+  // The closed contacts' penetrations and normal forces under the solution d, into their
+  // records; the deepest penetration and the largest normal force (in size).
+  struct ContactForceExtent {
+    double deepest = 0.0;
+    double force_scale = 0.0;
+  };
+  ContactForceExtent update_contact_forces(const Eigen::VectorXd& d);
   bool update_state(ActiveContact& c, const Eigen::VectorXd& d, double band) const;
   // The largest distance a vertex moves under the block unknowns `change` (first order).
   double largest_vertex_motion(const Eigen::VectorXd& change) const;
