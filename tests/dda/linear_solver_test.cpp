@@ -46,6 +46,37 @@ TEST(LinearSolver, DirectAndIterativeMatchADenseSolve) {
   }
 }
 
+// estimate(b, 1e-2) leaves ‖b − A x‖ ≤ 1e-2 ‖b‖ (the residual is what CG's stopping test
+// bounds; checked against the dense matrix), and leaves solve() as it was: a solve after an
+// estimate gives the bits a solve without one gives (the estimate starts from zero and keeps
+// no starting guess). For every solver, on a matrix the kept factors have drifted from.
+TEST(LinearSolver, EstimateMeetsItsResidualAndLeavesSolveAlone) {
+  std::vector<std::pair<int, int>> pairs;
+  const SparseMatrix a = make_block_chain(30, 1.0, pairs);
+  const SparseMatrix drifted = make_block_chain(30, 1.001, pairs);
+  const Eigen::MatrixXd dense =
+      drifted.selfadjointView<Eigen::Lower>() * Eigen::MatrixXd::Identity(180, 180);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(180, -1.0, 2.0);
+  const Eigen::VectorXd change = 1e-3 * Eigen::VectorXd::LinSpaced(180, 1.0, -0.5);
+  using Make = std::unique_ptr<LinearSolver> (*)();
+  for (Make make : {Make{[] { return make_block_factor_solver(); }}, Make{[] { return make_cholmod_solver(); }},
+                    Make{[] { return make_conjugate_gradient_solver(); }}}) {
+    auto with = make();
+    auto without = make();
+    for (auto* solver : {with.get(), without.get()}) {
+      solver->factor(block_form(a, 30));
+      solver->solve(b);
+      solver->factor(block_form(drifted, 30));
+    }
+    const Eigen::VectorXd x = with->estimate(change, 1e-2);
+    EXPECT_LE((change - dense * x).norm(), 1e-2 * change.norm());
+    EXPECT_EQ(with->counts().estimates, 1);
+    const Eigen::VectorXd after = with->solve(b + change);
+    const Eigen::VectorXd alone = without->solve(b + change);
+    EXPECT_EQ(after, alone);
+  }
+}
+
 // The solvers that keep a factorisation from call to call.
 struct KeptFactorSolver {
   const char* name;
