@@ -84,14 +84,17 @@ class BlockFactorSolver final : public LinearSolver {
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const override {
     ++counts_.solves;
     if (rhs.norm() == 0.0) return Eigen::VectorXd::Zero(rhs.size());
-    Eigen::VectorXd x = solve_to(rhs, last_solution_, tolerance_);
-    last_solution_ = x;
-    return x;
+    int iterations = 0;
+    last_solution_ = solve_to(rhs, last_solution_, tolerance_, iterations);
+    if (iterations > kRefactorAfter) stale_ = true;
+    return last_solution_;
   }
 
   Eigen::VectorXd estimate(const Eigen::VectorXd& rhs, double relative) const override {
     ++counts_.estimates;
-    return solve_to(rhs, Eigen::VectorXd(), relative);
+    if (rhs.norm() == 0.0) return Eigen::VectorXd::Zero(rhs.size());
+    int iterations = 0;
+    return solve_to(rhs, Eigen::VectorXd(), relative, iterations);
   }
 
  private:
@@ -189,13 +192,13 @@ class BlockFactorSolver final : public LinearSolver {
     factor_.backward(u_, z);
   }
 
-  // x with ‖b − A x‖ ≤ tolerance ‖b‖, by CG from `guess`.
-  Eigen::VectorXd solve_to(const Eigen::VectorXd& b, const Eigen::VectorXd& guess, double tolerance) const {
-    if (b.norm() == 0.0) return Eigen::VectorXd::Zero(b.size());
+  // x with ‖b − A x‖ ≤ tolerance ‖b‖ (b ≠ 0), by CG from `guess`, the iterations it took.
+  Eigen::VectorXd solve_to(const Eigen::VectorXd& b, const Eigen::VectorXd& guess, double tolerance,
+                           int& iterations) const {
     const bool kept = !factor_.empty() && !stale_;
     if (!kept) refactor();
     Eigen::VectorXd x;
-    int iterations = run_preconditioned_cg(b, guess, tolerance, x);
+    iterations = run_preconditioned_cg(b, guess, tolerance, x);
     // A kept factor that no longer serves: factor the matrix itself, with which CG converges
     // at once unless the matrix is too ill-conditioned to solve.
     if (iterations < 0 && kept) {
@@ -206,7 +209,6 @@ class BlockFactorSolver final : public LinearSolver {
       throw std::runtime_error(
           "DDA: the stiffness solve did not converge even on a fresh factorisation: the matrix is "
           "numerically singular");
-    if (iterations > kRefactorAfter) stale_ = true;
     return x;
   }
 

@@ -28,28 +28,27 @@ class ConjugateGradientSolver final : public LinearSolver {
 
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const override {
     ++counts_.solves;
-    Eigen::VectorXd x;
-    const int iterations = solve_by_conjugate_gradients(
-        [this](const Eigen::VectorXd& v, Eigen::VectorXd& y) { matrix_.multiply(v, y); },
-        [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { precondition(r, z); }, rhs, guess_, tolerance_,
-        max_iterations_, x, counts_.iterations);
-    if (iterations < 0) throw std::runtime_error("DDA: conjugate gradients did not converge");
-    guess_ = x;
-    return x;
+    guess_ = solve_to(rhs, guess_, tolerance_);
+    return guess_;
   }
 
   Eigen::VectorXd estimate(const Eigen::VectorXd& rhs, double relative) const override {
     ++counts_.estimates;
+    return solve_to(rhs, Eigen::VectorXd(), relative);
+  }
+
+ private:
+  // x with ‖b − A x‖ ≤ tolerance ‖b‖, by CG from `guess`.
+  Eigen::VectorXd solve_to(const Eigen::VectorXd& b, const Eigen::VectorXd& guess, double tolerance) const {
     Eigen::VectorXd x;
     const int iterations = solve_by_conjugate_gradients(
         [this](const Eigen::VectorXd& v, Eigen::VectorXd& y) { matrix_.multiply(v, y); },
-        [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { precondition(r, z); }, rhs, Eigen::VectorXd(),
-        relative, max_iterations_, x, counts_.iterations);
+        [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { precondition(r, z); }, b, guess, tolerance,
+        max_iterations_, x, counts_.iterations);
     if (iterations < 0) throw std::runtime_error("DDA: conjugate gradients did not converge");
     return x;
   }
 
- private:
   void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
     z.resize(r.size());
     for (std::size_t b = 0; b < inverse_blocks_.size(); ++b)

@@ -82,9 +82,9 @@ class LinearSolver {
   // Solve with the last factorisation.
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const = 0;
   // x with ‖rhs − A x‖ ≤ relative ‖rhs‖, from zero: the size of a small change to the
-  // solution (what a change of load would move), not the solution itself. Leaves the state
-  // solve() keeps (its starting guess) as it was, so that solve()'s answers do not depend on
-  // whether estimates were made in between.
+  // solution (what a change of load would move), not the solution itself. Leaves solve()'s
+  // starting guess, and its rule for when to factor afresh, as they were; only a kept factor
+  // that cannot reach even this tolerance is factored afresh here, as the next solve would.
   virtual Eigen::VectorXd estimate(const Eigen::VectorXd& rhs, double relative) const = 0;
   virtual SolverCounts counts() const = 0;
   // Forget every factor, ordering and starting guess kept from earlier matrices: the next

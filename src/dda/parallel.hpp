@@ -5,6 +5,7 @@
 // answer does not depend on the number of threads, only on the split.
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <utility>
 
@@ -42,6 +43,18 @@ void for_each_in_halves(bool parallel, std::size_t count, Body&& body) {
     const auto [begin, end] = half_range(part, count);
     for (std::size_t i = begin; i < end; ++i) body(i);
   });
+}
+
+// part(begin, end) over each half [begin, end) of 0 … count − 1, side by side where
+// `parallel`: the two halves' results, the first half's first, for the caller to combine.
+template <class Part>
+auto results_in_halves(bool parallel, std::size_t count, Part&& part) {
+  std::array<decltype(part(std::size_t{0}, std::size_t{0})), 2> results{};
+  run_two_parts(parallel, [&](int p) {
+    const auto [begin, end] = half_range(p, count);
+    results[p] = part(begin, end);
+  });
+  return results;
 }
 
 }  // namespace hydrodda::dda

@@ -382,9 +382,7 @@ double System::compute_shear_strength(const ActiveContact& c, double normal_forc
 }
 
 System::ContactForceExtent System::update_contact_forces(const Eigen::VectorXd& d) {
-  std::array<ContactForceExtent, 2> extent_in;  // of each half of the contacts
-  run_two_parts(many_contacts(), [&](int part) {
-    const auto [begin, end] = half_range(part, active_.size());
+  const auto halves = results_in_halves(many_contacts(), active_.size(), [&](std::size_t begin, std::size_t end) {
     ContactForceExtent extent;
     for (std::size_t i = begin; i < end; ++i) {
       ActiveContact& c = active_[i];
@@ -396,16 +394,13 @@ System::ContactForceExtent System::update_contact_forces(const Eigen::VectorXd& 
       c.record.normal_force = normal;
       c.record.penetration = pen;
     }
-    extent_in[part] = extent;
+    return extent;
   });
-  return {std::max(extent_in[0].deepest, extent_in[1].deepest),
-          std::max(extent_in[0].force_scale, extent_in[1].force_scale)};
+  return {std::max(halves[0].deepest, halves[1].deepest), std::max(halves[0].force_scale, halves[1].force_scale)};
 }
 
 double System::largest_vertex_motion(const Eigen::VectorXd& change) const {
-  std::array<double, 2> largest{0.0, 0.0};  // of each half of the blocks
-  run_two_parts(many_blocks(), [&](int part) {
-    const auto [begin, end] = half_range(part, blocks_.size());
+  const auto largest = results_in_halves(many_blocks(), blocks_.size(), [&](std::size_t begin, std::size_t end) {
     double half_largest = 0.0;
     for (std::size_t bi = begin; bi < end; ++bi) {
       const Block& b = blocks_[bi];
@@ -416,7 +411,7 @@ double System::largest_vertex_motion(const Eigen::VectorXd& change) const {
         half_largest = std::max(half_largest, moved.norm());
       }
     }
-    largest[part] = half_largest;
+    return half_largest;
   });
   return std::max(largest[0], largest[1]);
 }
@@ -531,8 +526,10 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
           friction_ok = true;
         }
       }
-      if (penetration_ok && friction_ok) settled_at_once = al <= 1;
-      if (penetration_ok && friction_ok) break;
+      if (penetration_ok && friction_ok) {
+        settled_at_once = al <= 1;
+        break;
+      }
       // Forces that have not settled are no solution to accept: the step is cut and retried.
       if (al + 1 == settings_.max_lagrangian_iterations) return Unsettled::contact_forces;
       if (!penetration_ok) {
@@ -554,14 +551,12 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
     // thousandfold to settle them. They stay well inside the penetration tolerance either way.
     const bool chattering = oc >= settings_.max_open_close_iterations / 4;
     const double band = (chattering ? 1e-1 : 1e-2) * penetration_tolerance_;
-    std::array<char, 2> changed_in{0, 0};  // in each half of the contacts
-    run_two_parts(many_contacts(), [&](int part) {
-      const auto [begin, end] = half_range(part, active_.size());
-      bool changed = false;
-      for (std::size_t i = begin; i < end; ++i) changed = update_state(active_[i], d, band) || changed;
-      changed_in[part] = changed;
+    const auto changed = results_in_halves(many_contacts(), active_.size(), [&](std::size_t begin, std::size_t end) {
+      bool any = false;
+      for (std::size_t i = begin; i < end; ++i) any = update_state(active_[i], d, band) || any;
+      return any;
     });
-    if (!changed_in[0] && !changed_in[1]) return Unsettled::no;
+    if (!changed[0] && !changed[1]) return Unsettled::no;
     // A pass whose states changed leaves its friction loads settled for the states it had; a
     // few contacts that change state at the margin of Mohr–Coulomb (slip starting at a
     // shear force a hair above the strength) hardly move the blocks, so the next pass's

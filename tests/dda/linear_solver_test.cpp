@@ -48,32 +48,45 @@ TEST(LinearSolver, DirectAndIterativeMatchADenseSolve) {
 
 // estimate(b, 1e-2) leaves ‖b − A x‖ ≤ 1e-2 ‖b‖ (the residual is what CG's stopping test
 // bounds; checked against the dense matrix), and leaves solve() as it was: a solve after an
-// estimate gives the bits a solve without one gives (the estimate starts from zero and keeps
-// no starting guess). For every solver, on a matrix the kept factors have drifted from.
+// estimate gives the bits a solve without one gives (the estimate starts from zero, keeps no
+// starting guess, and does not decide when to factor afresh). For every solver, on matrices
+// the kept factors have drifted from a little (1e-3) and far (the coupling thirtyfold). Far
+// off, the estimate takes more iterations than a solve may before the factor is made again,
+// and CG is allowed enough iterations (200) that the solves themselves still converge on the
+// kept factor: an estimate that applied the rule would have the next solve factor afresh.
 TEST(LinearSolver, EstimateMeetsItsResidualAndLeavesSolveAlone) {
   std::vector<std::pair<int, int>> pairs;
   const SparseMatrix a = make_block_chain(30, 1.0, pairs);
-  const SparseMatrix drifted = make_block_chain(30, 1.001, pairs);
-  const Eigen::MatrixXd dense =
-      drifted.selfadjointView<Eigen::Lower>() * Eigen::MatrixXd::Identity(180, 180);
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(180, -1.0, 2.0);
   const Eigen::VectorXd change = 1e-3 * Eigen::VectorXd::LinSpaced(180, 1.0, -0.5);
   using Make = std::unique_ptr<LinearSolver> (*)();
-  for (Make make : {Make{[] { return make_block_factor_solver(); }}, Make{[] { return make_cholmod_solver(); }},
-                    Make{[] { return make_conjugate_gradient_solver(); }}}) {
-    auto with = make();
-    auto without = make();
-    for (auto* solver : {with.get(), without.get()}) {
-      solver->factor(block_form(a, 30));
-      solver->solve(b);
-      solver->factor(block_form(drifted, 30));
+  for (const double drift : {1.001, 30.0}) {
+    const SparseMatrix drifted = make_block_chain(30, drift, pairs);
+    const Eigen::MatrixXd dense =
+        drifted.selfadjointView<Eigen::Lower>() * Eigen::MatrixXd::Identity(180, 180);
+    for (Make make : {Make{[] { return make_block_factor_solver(1e-12, 200); }},
+                      Make{[] { return make_cholmod_solver(1e-12, 200); }},
+                      Make{[] { return make_conjugate_gradient_solver(); }}}) {
+      auto with = make();
+      auto without = make();
+      for (auto* solver : {with.get(), without.get()}) {
+        solver->factor(block_form(a, 30));
+        solver->solve(b);
+        solver->factor(block_form(drifted, 30));
+      }
+      const long before = with->counts().iterations;
+      const Eigen::VectorXd x = with->estimate(change, 1e-2);
+      // Far off, more than the six iterations after which a kept-factor solver's solve has
+      // the factor made again.
+      if (drift > 2.0) {
+        EXPECT_GT(with->counts().iterations - before, 6);
+      }
+      EXPECT_LE((change - dense * x).norm(), 1e-2 * change.norm());
+      EXPECT_EQ(with->counts().estimates, 1);
+      const Eigen::VectorXd after = with->solve(b + change);
+      const Eigen::VectorXd alone = without->solve(b + change);
+      EXPECT_EQ(after, alone);
     }
-    const Eigen::VectorXd x = with->estimate(change, 1e-2);
-    EXPECT_LE((change - dense * x).norm(), 1e-2 * change.norm());
-    EXPECT_EQ(with->counts().estimates, 1);
-    const Eigen::VectorXd after = with->solve(b + change);
-    const Eigen::VectorXd alone = without->solve(b + change);
-    EXPECT_EQ(after, alone);
   }
 }
 
