@@ -26,6 +26,15 @@ target_link_libraries(hydrodda_gmsh INTERFACE ${GMSH_LIBRARY})
 
 pkg_check_modules(CAIRO REQUIRED IMPORTED_TARGET cairo)
 
+# jemalloc (libjemalloc-dev), the programs' allocator (src/allocator_options.cpp); the
+# sanitizers bring their own.
+if(HYDRODDA_SANITIZE OR HYDRODDA_FUZZ)
+  set(HYDRODDA_JEMALLOC OFF)
+else()
+  pkg_check_modules(JEMALLOC REQUIRED IMPORTED_TARGET jemalloc)
+  set(HYDRODDA_JEMALLOC ON)
+endif()
+
 if(HYDRODDA_BUILD_TESTS)
   find_package(GTest REQUIRED)
   find_package(Boost 1.74 REQUIRED)   # Boost.Geometry, the clipping oracle in tests

@@ -14,6 +14,7 @@ build_packages=(
   libfmt-dev libspdlog-dev # text and logs
   nlohmann-json3-dev       # summary.json
   libcairo2-dev            # figures
+  libjemalloc-dev          # memory allocator, on transparent huge pages
   libgtest-dev libgmock-dev libbenchmark-dev
   libboost-dev             # Boost.Geometry: test oracle for clipping
   python3 python3-vtk9     # reading our VTU/PVD back in tests

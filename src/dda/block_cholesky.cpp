@@ -9,7 +9,7 @@
 
 #include <Eigen/Cholesky>
 
-#include "dda/huge_page_allocator.hpp"
+#include "dda/array_growth.hpp"
 #include "dda/parallel.hpp"
 
 namespace hydrodda::dda {

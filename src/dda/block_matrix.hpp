@@ -9,16 +9,13 @@
 #include <Eigen/Core>
 #include <Eigen/Sparse>
 
-#include "dda/huge_page_allocator.hpp"
-
 namespace hydrodda::dda {
 
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 using Matrix6 = Eigen::Matrix<double, 6, 6>;
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 
-// An array of 6×6 blocks, on huge pages once it is large (huge_page_allocator.hpp).
-using Matrix6Array = std::vector<Matrix6, HugePageAllocator<Matrix6>>;
+using Matrix6Array = std::vector<Matrix6>;
 
 struct BlockMatrix {
   int block_count = 0;

@@ -8,7 +8,6 @@
 #include <utility>
 #include <vector>
 
-#include "dda/huge_page_allocator.hpp"
 #include "geometry/point.hpp"
 #include "geometry/polygon.hpp"
 
@@ -31,7 +30,7 @@ struct ContactCandidate {
   double length = 0.0;       // tributary length of face contact (for cohesion, tension)
 };
 
-using ContactCandidates = std::vector<ContactCandidate, HugePageAllocator<ContactCandidate>>;
+using ContactCandidates = std::vector<ContactCandidate>;
 
 // Pairs (i < j) of blocks whose boxes, grown by `distance`, overlap; pairs of two blocks that
 // both have skip[i] set (fixed blocks) are left out. Sorted, into `pairs` (its old contents

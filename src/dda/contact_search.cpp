@@ -4,6 +4,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "dda/array_growth.hpp"
 #include "dda/parallel.hpp"
 
 namespace hydrodda::dda {

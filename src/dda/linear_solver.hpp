@@ -11,7 +11,6 @@
 #include <Eigen/Sparse>
 
 #include "dda/block_matrix.hpp"
-#include "dda/huge_page_allocator.hpp"
 
 namespace hydrodda::dda {
 
@@ -24,8 +23,8 @@ struct RankOneTerm {
   Eigen::Matrix<double, 6, 1> w_b = Eigen::Matrix<double, 6, 1>::Zero();
 };
 
-// The springs of a matrix: a large array (two per closed contact), on huge pages.
-using RankOneTerms = std::vector<RankOneTerm, HugePageAllocator<RankOneTerm>>;
+// The springs of a matrix: a large array (two per closed contact).
+using RankOneTerms = std::vector<RankOneTerm>;
 
 // The terms of `now` that `before` lacks (added) and those of `before` that `now` lacks
 // (removed), both lists sorted by id, as a solver that follows the springs needs them. False,

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "dda/anderson.hpp"
+#include "dda/array_growth.hpp"
 #include "dda/parallel.hpp"
 
 namespace hydrodda::dda {

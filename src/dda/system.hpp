@@ -211,8 +211,8 @@ class System {
 
   // The contacts of the last step, in key order.
   using KeyedRecord = std::pair<ContactKey, ContactRecord>;
-  std::vector<KeyedRecord, HugePageAllocator<KeyedRecord>> records_;
-  std::vector<ActiveContact, HugePageAllocator<ActiveContact>> active_;  // some 300 bytes each
+  std::vector<KeyedRecord> records_;
+  std::vector<ActiveContact> active_;  // some 300 bytes each
   int unknown_count_ = 0;
   double time_ = 0.0;
   double dt_ = 0.0;
