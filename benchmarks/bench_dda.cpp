@@ -5,8 +5,6 @@
 
 #include <benchmark/benchmark.h>
 
-#include <random>
-
 #include "dda/block_cholesky.hpp"
 #include "dda/contact_detection.hpp"
 #include "dda/contact_search.hpp"

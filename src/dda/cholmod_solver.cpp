@@ -20,17 +20,16 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "dda/linear_solver.hpp"
+#include "dda/kept_factor_solver.hpp"
 
 namespace hydrodda::dda {
 namespace {
 
 bool id_less(const RankOneTerm& a, const RankOneTerm& b) { return a.id < b.id; }
 
-class CholmodSolver final : public LinearSolver {
+class CholmodSolver final : public KeptFactorSolver {
  public:
-  CholmodSolver(double tolerance, int max_iterations)
-      : tolerance_(tolerance), max_iterations_(max_iterations) {
+  CholmodSolver(double tolerance, int max_iterations) : KeptFactorSolver(tolerance, max_iterations) {
     cholmod_start(&common_);
     // Our block AMD order, kept as given; simplicial LDLᵀ (what updates work on).
     common_.nmethods = 1;
@@ -60,8 +59,6 @@ class CholmodSolver final : public LinearSolver {
     terms_ = terms;
   }
 
-  SolverCounts counts() const override { return counts_; }
-
   void reset() override {
     cholmod_free_factor(&factor_, &common_);
     ordering_.clear();
@@ -69,38 +66,14 @@ class CholmodSolver final : public LinearSolver {
     block_count_ = -1;
     terms_.clear();
     factored_terms_.clear();
-    last_solution_.resize(0);
-    stale_ = true;
-  }
-
-  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const override {
-    ++counts_.solves;
-    if (rhs.norm() == 0.0) return Eigen::VectorXd::Zero(rhs.size());
-    // From the last solution: the solves of one step (Lagrangian and friction updates,
-    // open–close passes) and of successive steps differ little, and starting there took
-    // the 1,601-block wall from 14.6 to 8.8 iterations a step (bench_dda).
-    int iterations = 0;
-    last_solution_ = solve_to(rhs, last_solution_, tolerance_, iterations);
-    // The drift has grown past what pays: factor afresh before the next solve.
-    if (iterations > kRefactorAfter) stale_ = true;
-    return last_solution_;
-  }
-
-  Eigen::VectorXd estimate(const Eigen::VectorXd& rhs, double relative) const override {
-    ++counts_.estimates;
-    if (rhs.norm() == 0.0) return Eigen::VectorXd::Zero(rhs.size());
-    int iterations = 0;
-    return solve_to(rhs, Eigen::VectorXd(), relative, iterations);
+    forget_solution();
   }
 
  private:
-  // Past this many CG iterations a fresh factorisation costs less than the drift does.
-  static constexpr int kRefactorAfter = 6;
-
-  // x with ‖b − A x‖ ≤ tolerance ‖b‖: CG from `guess` preconditioned by the kept factor, or,
-  // when there is none or CG does not get there, a direct solve on a fresh one (0 iterations).
+  // CG from `guess` preconditioned by the kept factor, or, when there is none or CG does not
+  // get there, a direct solve on a fresh one (0 iterations).
   Eigen::VectorXd solve_to(const Eigen::VectorXd& b, const Eigen::VectorXd& guess, double tolerance,
-                           int& iterations) const {
+                           int& iterations) const override {
     Eigen::VectorXd x;
     iterations = 0;
     if (factor_ != nullptr && !stale_) {
@@ -240,8 +213,6 @@ class CholmodSolver final : public LinearSolver {
     cholmod_free_factor(&factor_, &common_);
   }
 
-  double tolerance_;
-  int max_iterations_;
   mutable cholmod_common common_{};
   mutable cholmod_factor* factor_ = nullptr;
   mutable cholmod_dense* solution_ = nullptr;
@@ -255,9 +226,6 @@ class CholmodSolver final : public LinearSolver {
   BlockMatrix assembled_;                // base + springs, its memory reused
   mutable RankOneTerms factored_terms_;  // as held by the factor
   RankOneTerms added_, removed_;
-  mutable Eigen::VectorXd last_solution_;  // the starting guess of the next solve
-  mutable bool stale_ = true;
-  mutable SolverCounts counts_;
 };
 
 }  // namespace

@@ -17,14 +17,14 @@
 //                      alg. 9.1) from the last solution; M differs from A by the geometric
 //                      drift only, so a few iterations reach ‖b − A x‖ ≤ tol ‖b‖.
 // When the corrections grow past kMaxCorrections, or CG needs more than kRefactorAfter
-// iterations (the drift has grown), A is factored afresh.
+// iterations (the drift has grown; kept_factor_solver.hpp), A is factored afresh.
 #include <algorithm>
 #include <stdexcept>
 
 #include <Eigen/Dense>
 
 #include "dda/block_cholesky.hpp"
-#include "dda/linear_solver.hpp"
+#include "dda/kept_factor_solver.hpp"
 
 namespace hydrodda::dda {
 namespace {
@@ -53,10 +53,9 @@ double sparse_dot(const BlockCholesky::SparseVector& a, const BlockCholesky::Spa
   return s;
 }
 
-class BlockFactorSolver final : public LinearSolver {
+class BlockFactorSolver final : public KeptFactorSolver {
  public:
-  BlockFactorSolver(double tolerance, int max_iterations)
-      : tolerance_(tolerance), max_iterations_(max_iterations) {}
+  BlockFactorSolver(double tolerance, int max_iterations) : KeptFactorSolver(tolerance, max_iterations) {}
 
   void factor(const BlockMatrix& base, const RankOneTerms& terms) override {
     terms_ = terms;
@@ -68,8 +67,6 @@ class BlockFactorSolver final : public LinearSolver {
     take_matrix(base);
   }
 
-  SolverCounts counts() const override { return counts_; }
-
   void reset() override {
     factor_.clear();
     order_.clear();
@@ -77,29 +74,10 @@ class BlockFactorSolver final : public LinearSolver {
     terms_.clear();
     factored_terms_.clear();
     corrections_.clear();
-    last_solution_.resize(0);
-    stale_ = true;
-  }
-
-  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const override {
-    ++counts_.solves;
-    if (rhs.norm() == 0.0) return Eigen::VectorXd::Zero(rhs.size());
-    int iterations = 0;
-    last_solution_ = solve_to(rhs, last_solution_, tolerance_, iterations);
-    if (iterations > kRefactorAfter) stale_ = true;
-    return last_solution_;
-  }
-
-  Eigen::VectorXd estimate(const Eigen::VectorXd& rhs, double relative) const override {
-    ++counts_.estimates;
-    if (rhs.norm() == 0.0) return Eigen::VectorXd::Zero(rhs.size());
-    int iterations = 0;
-    return solve_to(rhs, Eigen::VectorXd(), relative, iterations);
+    forget_solution();
   }
 
  private:
-  // Past this many CG iterations a fresh factorisation costs less than the drift does.
-  static constexpr int kRefactorAfter = 6;
   // Past this many springs changed since the factorisation, the correction (m sparse columns
   // and an m × m capacitance) costs more per application than a fresh factorisation saves.
   static constexpr std::size_t kMaxCorrections = 32;
@@ -192,9 +170,9 @@ class BlockFactorSolver final : public LinearSolver {
     factor_.backward(u_, z);
   }
 
-  // x with ‖b − A x‖ ≤ tolerance ‖b‖ (b ≠ 0), by CG from `guess`, the iterations it took.
+  // By CG from `guess`, preconditioned by the kept factor or a fresh one.
   Eigen::VectorXd solve_to(const Eigen::VectorXd& b, const Eigen::VectorXd& guess, double tolerance,
-                           int& iterations) const {
+                           int& iterations) const override {
     const bool kept = !factor_.empty() && !stale_;
     if (!kept) refactor();
     Eigen::VectorXd x;
@@ -239,8 +217,6 @@ class BlockFactorSolver final : public LinearSolver {
     stale_ = false;
   }
 
-  double tolerance_;
-  int max_iterations_;
   mutable std::vector<int> order_;
   BlockMatrix base_;                     // the matrix is base_ + the springs terms_
   mutable BlockMatrix assembled_;        // the two added, as last factored
@@ -249,9 +225,7 @@ class BlockFactorSolver final : public LinearSolver {
   mutable BlockCholesky factor_;
   mutable std::vector<Correction> corrections_;
   mutable Eigen::PartialPivLU<Eigen::MatrixXd> capacitance_;
-  mutable Eigen::VectorXd last_solution_, u_;
-  mutable bool stale_ = true;
-  mutable SolverCounts counts_;
+  mutable Eigen::VectorXd u_;
 };
 
 }  // namespace

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstring>
 #include <numbers>
-#include <random>
 #include <utility>
 
 #include <omp.h>
