@@ -58,20 +58,21 @@ class BlockFactorSolver final : public KeptFactorSolver {
   BlockFactorSolver(double tolerance, int max_iterations) : KeptFactorSolver(tolerance, max_iterations) {}
 
   void factor(const BlockMatrix& base, const RankOneTerms& terms) override {
-    terms_ = terms;
-    take_matrix(base);
+    own_base_ = base;
+    own_terms_ = terms;
+    take_matrix(own_base_, own_terms_);
   }
 
-  void factor_taking(const BlockMatrix& base, RankOneTerms& terms) override {
-    terms_.swap(terms);
-    take_matrix(base);
-  }
+  void factor_borrowing(const BlockMatrix& base, const RankOneTerms& terms) override { take_matrix(base, terms); }
 
   void reset() override {
     factor_.clear();
     order_.clear();
-    base_ = BlockMatrix{};
-    terms_.clear();
+    block_count_ = -1;
+    base_ = nullptr;
+    terms_ = nullptr;
+    own_base_ = BlockMatrix{};
+    own_terms_.clear();
     factored_terms_.clear();
     corrections_.clear();
     forget_solution();
@@ -82,14 +83,16 @@ class BlockFactorSolver final : public KeptFactorSolver {
   // and an m × m capacitance) costs more per application than a fresh factorisation saves.
   static constexpr std::size_t kMaxCorrections = 32;
 
-  // The matrix is now base + terms_.
-  void take_matrix(const BlockMatrix& base) {
-    if (base.block_count != base_.block_count) {
+  // The matrix is now base + terms.
+  void take_matrix(const BlockMatrix& base, const RankOneTerms& terms) {
+    if (base.block_count != block_count_) {
+      block_count_ = base.block_count;
       order_.clear();  // ordered at the next factorisation, on the assembled pattern
       factor_.clear();
       stale_ = true;
     }
-    base_ = base;
+    base_ = &base;
+    terms_ = &terms;
     if (!factor_.empty() && !stale_ && !follow_terms()) stale_ = true;
   }
 
@@ -98,7 +101,7 @@ class BlockFactorSolver final : public KeptFactorSolver {
   bool follow_terms() {
     // What appeared (+), what disappeared (−).
     RankOneTerms added, removed;
-    if (!find_changed_terms(terms_, factored_terms_, kMaxCorrections, added, removed)) return false;
+    if (!find_changed_terms(*terms_, factored_terms_, kMaxCorrections, added, removed)) return false;
     std::vector<Correction> wanted;
     for (const RankOneTerm& t : added) wanted.push_back({t, 1.0, {}});
     for (const RankOneTerm& t : removed) wanted.push_back({t, -1.0, {}});
@@ -194,7 +197,7 @@ class BlockFactorSolver final : public KeptFactorSolver {
   int run_preconditioned_cg(const Eigen::VectorXd& b, const Eigen::VectorXd& guess, double tolerance,
                             Eigen::VectorXd& x) const {
     return solve_by_conjugate_gradients(
-        [this](const Eigen::VectorXd& v, Eigen::VectorXd& y) { multiply_with_springs(base_, terms_, v, y); },
+        [this](const Eigen::VectorXd& v, Eigen::VectorXd& y) { multiply_with_springs(*base_, *terms_, v, y); },
         [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { apply_preconditioner(r, z); }, b, guess,
         tolerance, max_iterations_, x, counts_.iterations);
   }
@@ -202,7 +205,7 @@ class BlockFactorSolver final : public KeptFactorSolver {
   void refactor() const {
     ++counts_.factorisations;
     BlockMatrix& a = assembled_;
-    add_springs(base_, terms_, a);
+    add_springs(*base_, *terms_, a);
     // Minimum degree on the block graph of the first matrix; later contacts change the fill a
     // little, not the correctness.
     if (order_.empty()) order_ = order_by_minimum_degree(a);
@@ -212,15 +215,20 @@ class BlockFactorSolver final : public KeptFactorSolver {
                                  "(an overflow in the model's data)");
       throw std::runtime_error("DDA: the global stiffness matrix is not positive definite");
     }
-    factored_terms_ = terms_;
+    factored_terms_ = *terms_;
     corrections_.clear();
     stale_ = false;
   }
 
   mutable std::vector<int> order_;
-  BlockMatrix base_;                     // the matrix is base_ + the springs terms_
+  // The matrix is *base_ + the springs *terms_: the caller's (factor_borrowing) or own_base_
+  // and own_terms_ (factor).
+  const BlockMatrix* base_ = nullptr;
+  const RankOneTerms* terms_ = nullptr;
+  BlockMatrix own_base_;
+  RankOneTerms own_terms_;
+  int block_count_ = -1;  // of the last matrix
   mutable BlockMatrix assembled_;        // the two added, as last factored
-  RankOneTerms terms_;                   // of the current matrix
   mutable RankOneTerms factored_terms_;  // as held by the factor
   mutable BlockCholesky factor_;
   mutable std::vector<Correction> corrections_;

@@ -8,20 +8,26 @@ bool find_changed_terms(const RankOneTerms& now, const RankOneTerms& before, std
                         RankOneTerms& added, RankOneTerms& removed) {
   added.clear();
   removed.clear();
-  // One walk over both sorted lists.
+  // One walk over both sorted lists, one three-way comparison a step: the lists are long
+  // (two springs a contact) and nearly the same.
+  const auto over_limit = [&] { return added.size() + removed.size() > limit; };
   std::size_t i = 0, j = 0;
-  while (i < now.size() || j < before.size()) {
-    if (j == before.size() || (i < now.size() && now[i].id < before[j].id)) {
-      added.push_back(now[i++]);
-    } else if (i == now.size() || before[j].id < now[i].id) {
-      removed.push_back(before[j++]);
-    } else {
+  while (i < now.size() && j < before.size()) {
+    const auto order = now[i].id <=> before[j].id;
+    if (order == 0) {
       ++i;
       ++j;
+      continue;
     }
-    if (added.size() + removed.size() > limit) return false;
+    if (order < 0)
+      added.push_back(now[i++]);
+    else
+      removed.push_back(before[j++]);
+    if (over_limit()) return false;
   }
-  return true;
+  for (; i < now.size() && !over_limit(); ++i) added.push_back(now[i]);
+  for (; j < before.size() && !over_limit(); ++j) removed.push_back(before[j]);
+  return !over_limit();
 }
 
 BlockMatrix add_springs(const BlockMatrix& base, const RankOneTerms& springs) {

@@ -116,6 +116,7 @@ System::System(ModelDefinition def, std::unique_ptr<LinearSolver> solver)
   contact_search_ = ContactSearch(contact_distance_,
                                   settings_.contact_skin >= 0 ? settings_.contact_skin : 0.2 * contact_distance_);
   for (const Block& b : blocks_) detection_.fixed.push_back(b.dof < 0);
+  if (many_blocks()) start_second_thread();
 }
 
 void System::set_vertex_forces(std::vector<std::vector<Point>> forces) {
@@ -294,37 +295,61 @@ void System::factor_with_contacts() {
   // one penalty spring w wᵀ per closed contact, normal and, locked, shear: w = √p e, e the
   // contact's row of the linearised penetration or shear. The springs stay rank-one terms:
   // the solver multiplies by them and assembles them only when it factors, and follows those
-  // that come and go between passes. The solver takes the springs over and hands back its
-  // last ones' memory, reused for the next pass: fresh memory costs more in page faults than
-  // the assembly itself.
+  // that come and go between passes. The solver reads the springs where they are, and the
+  // next pass writes its own over them: fresh memory costs more in page faults than the
+  // assembly itself.
   RankOneTerms& terms = assembly_.terms;
-  std::size_t count = 0;  // a normal spring for each closed contact, a shear one for each locked
-  for (const ActiveContact& c : active_)
-    count += (is_closed(c.record.state) ? 1 : 0) + (c.record.state == ContactState::locked ? 1 : 0);
-  resize_for_overwrite(terms, count);
+  // A normal spring for each closed contact, a shear one for each locked; each half of the
+  // contacts writes its springs from where the first half's end.
+  const auto counts = results_in_halves(many_contacts(), active_.size(), [&](std::size_t begin, std::size_t end) {
+    std::size_t count = 0;
+    for (std::size_t i = begin; i < end; ++i) {
+      const ContactState state = active_[i].record.state;
+      count += (is_closed(state) ? 1 : 0) + (state == ContactState::locked ? 1 : 0);
+    }
+    return count;
+  });
+  resize_for_overwrite(terms, counts[0] + counts[1]);
   const double root_penalty = std::sqrt(penalty_);
-  RankOneTerm* next = terms.data();
-  const auto add_term = [&](const ActiveContact& c, int kind, const Vector6& e_i, const Vector6& e_j) {
-    const ContactKey& k = c.key;
-    RankOneTerm& t = *next++;
-    t.id = {k.block_i, k.vertex, k.block_j, k.edge, kind};
-    t.block_a = c.dof_i;
-    t.block_b = c.dof_j;
-    t.w_a = root_penalty * e_i;
-    t.w_b = root_penalty * e_j;
-  };
-  // active_ is in key order, and so the terms in id order.
-  for (const ActiveContact& c : active_) {
-    if (!is_closed(c.record.state)) continue;
-    add_term(c, 0, c.en_i, c.en_j);  // normal spring ½ p d²
-    if (c.record.state == ContactState::locked) add_term(c, 1, c.es_i, c.es_j);  // shear ½ p s²
-  }
-  solver_->factor_taking(assembly_.matrix, terms);
+  run_two_parts(many_contacts(), [&](int part) {
+    const auto [begin, end] = half_range(part, active_.size());
+    RankOneTerm* next = terms.data() + (part == 0 ? 0 : counts[0]);
+    const auto add_term = [&](const ActiveContact& c, int kind, const Vector6& e_i, const Vector6& e_j) {
+      const ContactKey& k = c.key;
+      RankOneTerm& t = *next++;
+      t.id = {k.block_i, k.vertex, k.block_j, k.edge, kind};
+      t.block_a = c.dof_i;
+      t.block_b = c.dof_j;
+      t.w_a = root_penalty * e_i;
+      t.w_b = root_penalty * e_j;
+    };
+    // active_ is in key order, and so the terms in id order.
+    for (std::size_t i = begin; i < end; ++i) {
+      const ActiveContact& c = active_[i];
+      if (!is_closed(c.record.state)) continue;
+      add_term(c, 0, c.en_i, c.en_j);  // normal spring ½ p d²
+      if (c.record.state == ContactState::locked) add_term(c, 1, c.es_i, c.es_j);  // shear ½ p s²
+    }
+  });
+  // Both stay as they are until the next pass's call: every solve follows this call.
+  solver_->factor_borrowing(assembly_.matrix, terms);
 }
 
 Eigen::VectorXd System::assemble_contact_rhs(const Eigen::VectorXd& f_base) const {
-  Eigen::VectorXd f = f_base;
-  for (const ActiveContact& c : active_) {
+  // The halves of the contacts load the same blocks: each adds into its own vector, the
+  // second's added to the first's after.
+  std::array<Eigen::VectorXd, 2> halves{f_base, Eigen::VectorXd::Zero(f_base.size())};
+  run_two_parts(many_contacts(), [&](int part) {
+    const auto [begin, end] = half_range(part, active_.size());
+    add_contact_loads(begin, end, halves[part]);
+  });
+  halves[0] += halves[1];
+  return std::move(halves[0]);
+}
+
+void System::add_contact_loads(std::size_t begin, std::size_t end, Eigen::VectorXd& f) const {
+  for (std::size_t i = begin; i < end; ++i) {
+    const ActiveContact& c = active_[i];
     const ContactRecord& r = c.record;
     if (!is_closed(r.state)) continue;
     // Normal: energy λ d + ½ p d² → load −(λ + p d0) en.
@@ -342,7 +367,6 @@ Eigen::VectorXd System::assemble_contact_rhs(const Eigen::VectorXd& f_base) cons
       add_segment(f, c.dof_j, -friction * c.es_j);
     }
   }
-  return f;
 }
 
 Eigen::VectorXd System::friction_load_change(const std::vector<ActiveContact*>& sliding,

@@ -156,6 +156,8 @@ class System {
   void assemble_blocks(double dt, Matrix6Array& k_base, Eigen::VectorXd& f_base) const;
   void factor_with_contacts();
   Eigen::VectorXd assemble_contact_rhs(const Eigen::VectorXd& f_base) const;
+  // The loads of contacts begin … end − 1 (their multipliers, penalties and friction), into f.
+  void add_contact_loads(std::size_t begin, std::size_t end, Eigen::VectorXd& f) const;
   // The change of the load when the sliding contacts' friction goes from the normal forces
   // `from` to `to` (in the order of `sliding`).
   Eigen::VectorXd friction_load_change(const std::vector<ActiveContact*>& sliding, const Eigen::VectorXd& from,

@@ -199,6 +199,59 @@ TEST_P(KeptFactor, FactorFollowsSpringsThatComeAndGo) {
   EXPECT_LE(solver->counts().iterations - iterations_before, 2);
 }
 
+// The springs passed by reference (factor_borrowing) give the bits that copies (factor) give,
+// with the caller's lists written over in place between calls as a DDA step does: the solver
+// reads the current contents, and follows the change from the first set to the second.
+TEST_P(KeptFactor, BorrowedSpringsGiveTheAnswersOfCopiedOnes) {
+  ChainWithSprings chain;
+  const RankOneTerms first{chain.make_term(1, 3, 4), chain.make_term(2, 10, 11)};
+  const RankOneTerms second{chain.make_term(2, 10, 11), chain.make_term(3, 20, 21), chain.make_term(4, 25, -1)};
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(180, -1.0, 2.0);
+  auto copying = GetParam().make();
+  auto borrowing = GetParam().make();
+  BlockMatrix base = chain.base_blocks();
+  RankOneTerms springs = first;
+  copying->factor(chain.base_blocks(), first);
+  borrowing->factor_borrowing(base, springs);
+  const Eigen::VectorXd x1 = copying->solve(b);
+  EXPECT_EQ(borrowing->solve(b), x1);
+  springs = second;
+  copying->factor(chain.base_blocks(), second);
+  borrowing->factor_borrowing(base, springs);
+  const Eigen::VectorXd x2 = copying->solve(b);
+  EXPECT_EQ(borrowing->solve(b), x2);
+  const Eigen::VectorXd expected = chain.dense_with(second).llt().solve(b);
+  EXPECT_LT((x2 - expected).norm(), 1e-10 * expected.norm());
+  EXPECT_EQ(borrowing->counts().factorisations, copying->counts().factorisations);
+  EXPECT_EQ(borrowing->counts().modified_terms, copying->counts().modified_terms);
+}
+
+// find_changed_terms walks both sorted lists once: what is new (in `now` only) and what is
+// gone (in `before` only), in id order, the ones in both left out, at either list's end too;
+// false once more than `limit` have changed.
+TEST(LinearSolver, ChangedTermsAreThoseInOneListOnly) {
+  const auto term = [](int block, int kind) {
+    RankOneTerm t;
+    t.id = {block, 0, block + 1, 0, kind};
+    return t;
+  };
+  const RankOneTerms before{term(1, 0), term(2, 0), term(2, 1), term(5, 0)};
+  const RankOneTerms now{term(0, 0), term(2, 0), term(3, 0), term(5, 0), term(7, 0), term(8, 1)};
+  RankOneTerms added, removed;
+  ASSERT_TRUE(find_changed_terms(now, before, 6, added, removed));
+  const auto ids = [](const RankOneTerms& terms) {
+    std::vector<std::array<int, 5>> out;
+    for (const RankOneTerm& t : terms) out.push_back(t.id);
+    return out;
+  };
+  EXPECT_EQ(ids(added), ids({term(0, 0), term(3, 0), term(7, 0), term(8, 1)}));
+  EXPECT_EQ(ids(removed), ids({term(1, 0), term(2, 1)}));
+  EXPECT_FALSE(find_changed_terms(now, before, 5, added, removed));  // six changed
+  EXPECT_FALSE(find_changed_terms(now, {}, 5, added, removed));      // six new, all at the end
+  EXPECT_TRUE(find_changed_terms(now, now, 0, added, removed));
+  EXPECT_TRUE(added.empty() && removed.empty());
+}
+
 // More springs changing at once than either solver follows (CHOLMOD: a quarter of the block
 // count; the block solver: 48), here 60 new on 30 blocks: the solver factors afresh instead,
 // and the answer is still A2⁻¹ b to 1e-10.
