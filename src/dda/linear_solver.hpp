@@ -74,10 +74,11 @@ class LinearSolver {
   // disappeared instead of starting again, and one that only multiplies by A need never
   // assemble them. The answer is always A's.
   virtual void factor(const BlockMatrix& base, const RankOneTerms& springs = {}) = 0;
-  // The same without copying: the solver may refer to `base` and `springs` themselves until
-  // the next factor call or reset(), so the caller keeps both alive and unchanged until then
-  // (a large model's springs run to megabytes and come several times a step, and a copy of
-  // them is as much fresh memory). A solver that keeps neither copies, as factor() does.
+  // The same without copying: solve() and estimate() may read `base` and `springs` themselves
+  // until the next factor call or reset(), so the caller keeps both alive and unchanged for as
+  // long as it solves with them (a large model's springs run to megabytes and come several
+  // times a step, and a copy of them is as much fresh memory). A solver that keeps neither
+  // copies, as factor() does.
   virtual void factor_borrowing(const BlockMatrix& base, const RankOneTerms& springs) { factor(base, springs); }
   // Solve with the last factorisation.
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const = 0;

@@ -331,7 +331,8 @@ void System::factor_with_contacts() {
       if (c.record.state == ContactState::locked) add_term(c, 1, c.es_i, c.es_j);  // shear ½ p s²
     }
   });
-  // Both stay as they are until the next pass's call: every solve follows this call.
+  // Both stay as they are through this pass's solves; the next step's assembly writes over
+  // the matrix only before its own first call.
   solver_->factor_borrowing(assembly_.matrix, terms);
 }
 
