@@ -152,23 +152,25 @@ bool BlockCholesky::factorise(const BlockMatrix& a, const std::vector<int>& orde
 
   parent_ = std::move(parent);
 
-  // ereach(k): the row pattern of L(k, :), on stack[top … n−1], children first. Each part
-  // of the tree has its own marks and stacks.
+  // ereach(k): the row pattern of L(k, :), on stack[top … n−1], children first: the walk
+  // from each entry's column up the tree to the first node already on the stack. `start`
+  // maps the column to where the walk begins (−1: not at all) and `keep` says which nodes
+  // it may pass. Each part of the tree, and the top, has its own marks and stacks.
   struct Reach {
     std::vector<int> mark, stack, path;
   };
-  std::array<Reach, 2> reaches;
+  std::array<Reach, 3> reaches;
   for (Reach& r : reaches) {
     r.mark.assign(n, -1);
     r.stack.resize(n);
     r.path.resize(n);
   }
-  const auto reach = [&](int k, Reach& r) {
+  const auto reach = [&](int k, Reach& r, auto start, auto keep) {
     int top = n;
     r.mark[k] = k;
     for (int e = row_start[k]; e < row_start[k + 1]; ++e) {
       int length = 0;
-      for (int i = rows[e].column; r.mark[i] != k; i = parent_[i]) {
+      for (int i = start(rows[e].column); i >= 0 && keep(i) && r.mark[i] != k; i = parent_[i]) {
         r.path[length++] = i;
         r.mark[i] = k;
       }
@@ -176,36 +178,49 @@ bool BlockCholesky::factorise(const BlockMatrix& a, const std::vector<int>& orde
     }
     return top;
   };
+  const auto from_column = [](int c) { return c; };
+  const auto anywhere = [](int) { return true; };
 
   // Column counts, then the split of the tree, then the numeric factorisation into the
   // allocated columns.
   column_start_.assign(n + 1, 0);
   for (int k = 0; k < n; ++k)
-    for (int top = reach(k, reaches[0]); top < n; ++top) ++column_start_[reaches[0].stack[top] + 1];
+    for (int top = reach(k, reaches[0], from_column, anywhere); top < n; ++top)
+      ++column_start_[reaches[0].stack[top] + 1];
   for (int k = 0; k < n; ++k) column_start_[k + 1] += column_start_[k];
   block_count_ = n;
   split_elimination_tree();
+  std::vector<signed char> part_of(n);
+  for (int p = 0; p < 3; ++p)
+    for (int k : part_columns_[p]) part_of[k] = static_cast<signed char>(p);
+  // Where a part's node first meets the top on its way to the root (−1: never).
+  std::vector<int> top_above(n, -1);
+  for (int k = n - 1; k >= 0; --k)
+    if (part_of[k] != 2 && parent_[k] >= 0) top_above[k] = part_of[parent_[k]] == 2 ? parent_[k] : top_above[parent_[k]];
   resize_for_overwrite(row_, column_start_[n]);
   resize_for_overwrite(value_, column_start_[n]);
   inverse_diagonal_.resize(n);
   std::vector<int> filled(column_start_.begin(), column_start_.end() - 1);
-  // Row k touches only its own subtree (the columns of ereach(k) and their rows below k), so
-  // the two parts share nothing here.
-  Matrix6Array& x = row_work_;
-  x.assign(n, Matrix6::Zero());
   for (Reach& r : reaches) std::fill(r.mark.begin(), r.mark.end(), -1);
-  const auto eliminate_row = [&](int k, Reach& r) {
-    const int top = reach(k, r);
+  // Each part works its row in its own array (x_p, by position); the top's rows use part 0's.
+  for (Matrix6Array& x : row_work_) x.assign(n, Matrix6::Zero());
+  // Row k's entries A(k, c) for the columns c that `take` accepts, into x.
+  const auto scatter_row = [&](int k, Matrix6Array& x, auto take) {
     for (int e = row_start[k]; e < row_start[k + 1]; ++e) {
+      if (!take(rows[e].column)) continue;
       const Matrix6& block = a.off[rows[e].pair];
       if (rows[e].transposed)
         x[rows[e].column] = block.transpose();
       else
         x[rows[e].column] = block;
     }
-    Matrix6 d = a.diagonal[order[k]];
+  };
+  // The columns stack[top … n−1] that `take` accepts, in turn: L(k, i) from x_i, then row k
+  // updated by column i, and d −= L(k, i) L(k, i)ᵀ.
+  const auto eliminate_columns = [&](int k, const Reach& r, int top, Matrix6Array& x, Matrix6& d, auto take) {
     for (int s = top; s < n; ++s) {
       const int i = r.stack[s];
+      if (!take(i)) continue;
       const Matrix6 lki = x[i] * inverse_diagonal_[i].transpose();
       x[i].setZero();
       subtract_products(lki, value_.data() + column_start_[i], row_.data() + column_start_[i],
@@ -214,18 +229,72 @@ bool BlockCholesky::factorise(const BlockMatrix& a, const std::vector<int>& orde
       row_[filled[i]] = k;
       value_[filled[i]++] = lki;
     }
+  };
+  const auto factor_pivot = [&](int k, const Matrix6& d) {
     const Eigen::LLT<Matrix6> llt(d);
     if (llt.info() != Eigen::Success || !std::isfinite(d.trace())) return false;
     inverse_diagonal_[k] = llt.matrixL().solve(Matrix6::Identity());
     return true;
   };
+
+  // The top's rows take most of the arithmetic (a separator's row reaches deep into both
+  // parts), so they are done in two phases. In the first, side by side, each part eliminates
+  // its own columns from every top row, in the top's order: row k of the top restricted to
+  // part p is a triangular solve with part p's columns alone (they hold rows of part p and of
+  // the top only), and the part's columns receive their rows in the top as the sequential
+  // order would give them. What this leaves on the top's columns of row k, and on its pivot,
+  // waits in top_sums_[p] (block (k, j) of the top at tri(k) + j, the pivot at tri(k) + k).
+  // In the second, row by row, the top's own columns are eliminated from the row the two
+  // sums and A's own entries make.
+  const std::vector<int>& top_nodes = part_columns_[2];
+  const auto tri = [](std::size_t t) { return t * (t + 1) / 2; };
+  for (Matrix6Array& sums : top_sums_) resize_for_overwrite(sums, tri(top_nodes.size()));
   std::array<bool, 2> part_ok{true, true};
   run_two_parts(run_parts_in_parallel(), [&](int p) {
-    for (int k : part_columns_[p])
-      if (!(part_ok[p] = eliminate_row(k, reaches[p]))) return;
+    Matrix6Array& x = row_work_[p];
+    Reach& r = reaches[p];
+    for (int k : part_columns_[p]) {
+      scatter_row(k, x, anywhere);
+      Matrix6 d = a.diagonal[order[k]];
+      eliminate_columns(k, r, reach(k, r, from_column, anywhere), x, d, anywhere);
+      if (!(part_ok[p] = factor_pivot(k, d))) return;
+    }
+    const auto in_part = [&](int c) { return part_of[c] == p; };
+    const auto only_in_part = [&](int c) { return in_part(c) ? c : -1; };
+    for (std::size_t t = 0; t < top_nodes.size(); ++t) {
+      const int k = top_nodes[t];
+      scatter_row(k, x, in_part);
+      Matrix6 d = Matrix6::Zero();
+      eliminate_columns(k, r, reach(k, r, only_in_part, in_part), x, d, anywhere);
+      Matrix6* sums = top_sums_[p].data() + tri(t);
+      for (std::size_t u = 0; u < t; ++u) {
+        Matrix6& xj = x[top_nodes[u]];
+        sums[u] = xj;
+        xj.setZero();
+      }
+      sums[t] = d;
+    }
   });
   bool ok = part_ok[0] && part_ok[1];
-  for (std::size_t t = 0; ok && t < part_columns_[2].size(); ++t) ok = eliminate_row(part_columns_[2][t], reaches[0]);
+  Matrix6Array& x = row_work_[0];
+  const auto in_top = [&](int c) { return part_of[c] == 2; };
+  const auto top_of = [&](int c) { return part_of[c] == 2 ? c : top_above[c]; };
+  for (std::size_t t = 0; ok && t < top_nodes.size(); ++t) {
+    const int k = top_nodes[t];
+    scatter_row(k, x, in_top);
+    const Matrix6* sums_0 = top_sums_[0].data() + tri(t);
+    const Matrix6* sums_1 = top_sums_[1].data() + tri(t);
+    for (std::size_t u = 0; u < t; ++u) {
+      Matrix6& xj = x[top_nodes[u]];
+      xj += sums_0[u];
+      xj += sums_1[u];
+    }
+    Matrix6 d = a.diagonal[order[k]];
+    d += sums_0[t];
+    d += sums_1[t];
+    eliminate_columns(k, reaches[2], reach(k, reaches[2], top_of, anywhere), x, d, anywhere);
+    ok = factor_pivot(k, d);
+  }
   if (!ok) {
     clear();
     return false;

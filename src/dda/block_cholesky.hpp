@@ -72,7 +72,8 @@ class BlockCholesky {
   std::vector<int> top_rows_start_;               // position → first of its column's top rows
   mutable std::array<Eigen::VectorXd, 2> top_updates_;  // each part's forward updates to the top
   mutable Eigen::VectorXd work_;
-  Matrix6Array row_work_;                   // the factorisation's row being eliminated
+  std::array<Matrix6Array, 2> row_work_;    // the factorisation's row being eliminated, per part
+  std::array<Matrix6Array, 2> top_sums_;    // each part's share of the top's rows (factorise)
   mutable Eigen::VectorXd path_work_;       // zero but during forward_sparse
   mutable std::vector<char> on_path_;       // likewise
   Sweep sweep() const;

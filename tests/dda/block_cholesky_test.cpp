@@ -140,6 +140,26 @@ TEST(BlockCholesky, FillIsThatOfTheEliminationGraph) {
   EXPECT_LT((x - expected).norm(), 1e-10 * expected.norm());
 }
 
+// A wall's matrix (14 × 14 blocks) splits into two parts and a top, whose rows are done in
+// two phases (each part's columns eliminated from them side by side, then the top's own):
+// A⁻¹ b agrees with a dense LLᵀ solve to 1e-10 relative, as in the test above.
+TEST_P(BlockCholeskyKernels, ATreeSplitWithATopSolvesAsADenseFactorDoes) {
+  const BlockMatrix a = testing::make_wall_graph_matrix(14);
+  const Eigen::MatrixXd lower(a.lower_triangle());
+  const Eigen::MatrixXd dense = lower.selfadjointView<Eigen::Lower>();
+  BlockCholesky factor;
+  ASSERT_TRUE(factor.factorise(a, order_by_minimum_degree(a)));
+  const auto parts = factor.part_blocks();
+  ASSERT_GT(parts[0], 0);
+  ASSERT_GT(parts[1], 0);
+  ASSERT_GT(parts[2], 1);  // a top of more than one block: its rows meet both parts and itself
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(a.size(), -2.0, 1.0);
+  const Eigen::VectorXd expected = dense.llt().solve(b);
+  Eigen::VectorXd x = b;
+  factor.solve_in_place(x);
+  EXPECT_LT((x - expected).norm(), 1e-10 * expected.norm());
+}
+
 // A matrix with a negative eigenvalue (one diagonal entry of a chain turned to −100) is
 // refused, and no factor is left to be used.
 TEST(BlockCholesky, RefusesAMatrixThatIsNotPositiveDefinite) {
@@ -149,6 +169,19 @@ TEST(BlockCholesky, RefusesAMatrixThatIsNotPositiveDefinite) {
   a.diagonal[3](2, 2) = -100.0;
   BlockCholesky factor;
   EXPECT_FALSE(factor.factorise(a, natural_order(n)));
+  EXPECT_TRUE(factor.empty());
+}
+
+// The same refusal where the bad pivot is the last eliminated, the root, in the top of a split
+// tree (a wall's matrix, 14 × 14 blocks).
+TEST(BlockCholesky, RefusesAMatrixWhoseTopIsNotPositiveDefinite) {
+  BlockMatrix a = testing::make_wall_graph_matrix(14);
+  const std::vector<int> order = order_by_minimum_degree(a);
+  BlockCholesky factor;
+  ASSERT_TRUE(factor.factorise(a, order));
+  ASSERT_GT(factor.part_blocks()[2], 0);
+  a.diagonal[order.back()](0, 0) = -100.0;
+  EXPECT_FALSE(factor.factorise(a, order));
   EXPECT_TRUE(factor.empty());
 }
 
