@@ -1,18 +1,23 @@
 #include "dda/linear_solver.hpp"
 
 #include <algorithm>
+#include <array>
+
+#include "dda/parallel.hpp"
 
 namespace hydrodda::dda {
 
-bool find_changed_terms(const RankOneTerms& now, const RankOneTerms& before, std::size_t limit,
-                        RankOneTerms& added, RankOneTerms& removed) {
-  added.clear();
-  removed.clear();
+namespace {
+
+// find_changed_terms on now[i, i_end) and before[j, j_end), appending to added and removed;
+// false as soon as they hold more than `limit` between them.
+bool walk_changed_terms(const RankOneTerms& now, std::size_t i, std::size_t i_end, const RankOneTerms& before,
+                        std::size_t j, std::size_t j_end, std::size_t limit, RankOneTerms& added,
+                        RankOneTerms& removed) {
   // One walk over both sorted lists, one three-way comparison a step: the lists are long
   // (two springs a contact) and nearly the same.
   const auto over_limit = [&] { return added.size() + removed.size() > limit; };
-  std::size_t i = 0, j = 0;
-  while (i < now.size() && j < before.size()) {
+  while (i < i_end && j < j_end) {
     const auto order = now[i].id <=> before[j].id;
     if (order == 0) {
       ++i;
@@ -25,9 +30,42 @@ bool find_changed_terms(const RankOneTerms& now, const RankOneTerms& before, std
       removed.push_back(before[j++]);
     if (over_limit()) return false;
   }
-  for (; i < now.size() && !over_limit(); ++i) added.push_back(now[i]);
-  for (; j < before.size() && !over_limit(); ++j) removed.push_back(before[j]);
+  for (; i < i_end && !over_limit(); ++i) added.push_back(now[i]);
+  for (; j < j_end && !over_limit(); ++j) removed.push_back(before[j]);
   return !over_limit();
+}
+
+// Below this many springs a walk takes tens of microseconds, what waking a second thread
+// can cost.
+bool worth_two_threads(std::size_t terms) { return terms >= 10000; }
+
+}  // namespace
+
+bool find_changed_terms(const RankOneTerms& now, const RankOneTerms& before, std::size_t limit,
+                        RankOneTerms& added, RankOneTerms& removed) {
+  added.clear();
+  removed.clear();
+  // Two walks side by side: now's first half against the terms of `before` that sort before
+  // now's middle term, and the rest against the rest. The two halves' changes, in turn, are
+  // the changes in id order, the same on one thread or two.
+  const std::size_t middle = now.size() / 2;
+  const std::size_t before_middle =
+      middle == now.size() ? before.size()
+                           : static_cast<std::size_t>(
+                                 std::lower_bound(before.begin(), before.end(), now[middle].id,
+                                                  [](const RankOneTerm& t, const std::array<int, 5>& id) { return t.id < id; }) -
+                                 before.begin());
+  std::array<RankOneTerms, 2> second;  // the second half's changes: added, removed
+  std::array<bool, 2> found{};
+  run_two_parts(worth_two_threads(now.size() + before.size()), [&](int part) {
+    found[part] = part == 0 ? walk_changed_terms(now, 0, middle, before, 0, before_middle, limit, added, removed)
+                            : walk_changed_terms(now, middle, now.size(), before, before_middle, before.size(),
+                                                 limit, second[0], second[1]);
+  });
+  if (!found[0] || !found[1]) return false;
+  added.insert(added.end(), second[0].begin(), second[0].end());
+  removed.insert(removed.end(), second[1].begin(), second[1].end());
+  return added.size() + removed.size() <= limit;
 }
 
 BlockMatrix add_springs(const BlockMatrix& base, const RankOneTerms& springs) {

@@ -6,7 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <iterator>
 #include <random>
+#include <set>
 
 #include <Eigen/Dense>
 
@@ -250,6 +253,52 @@ TEST(LinearSolver, ChangedTermsAreThoseInOneListOnly) {
   EXPECT_FALSE(find_changed_terms(now, {}, 5, added, removed));      // six new, all at the end
   EXPECT_TRUE(find_changed_terms(now, now, 0, added, removed));
   EXPECT_TRUE(added.empty() && removed.empty());
+}
+
+// Long lists (12,000 springs and more, enough for the two halves to run side by side): now
+// holds springs on blocks 0 … 8,999 at random; before lacks every third of them and has 4,000
+// of its own on blocks below 1,000, so that the two lists' middles by count lie far apart by
+// id. The added and removed terms are exactly std::set_difference's, in id order. With the
+// limit one below the number of changes, the answer is false.
+TEST(LinearSolver, ChangedTermsOfLongListsAreThoseOfASetDifference) {
+  std::mt19937 rng(17);
+  const auto draw = [&](std::size_t count, int blocks) {
+    std::set<std::array<int, 5>> ids;
+    std::uniform_int_distribution<int> block(0, blocks - 1), kind(0, 1);
+    while (ids.size() < count) ids.insert({block(rng), 0, block(rng), 0, kind(rng)});
+    return ids;
+  };
+  const auto as_terms = [](const std::set<std::array<int, 5>>& ids) {
+    RankOneTerms terms;
+    for (const auto& id : ids) {
+      RankOneTerm t;
+      t.id = id;
+      terms.push_back(t);
+    }
+    return terms;
+  };
+  const std::set<std::array<int, 5>> now_ids = draw(12000, 9000);
+  std::set<std::array<int, 5>> before_ids = draw(4000, 1000);
+  int k = 0;
+  for (const auto& id : now_ids)
+    if (k++ % 3 != 0) before_ids.insert(id);
+  const RankOneTerms now = as_terms(now_ids), before = as_terms(before_ids);
+  const auto by_id = [](const RankOneTerm& a, const RankOneTerm& b) { return a.id < b.id; };
+  RankOneTerms expected_added, expected_removed;
+  std::set_difference(now.begin(), now.end(), before.begin(), before.end(), std::back_inserter(expected_added), by_id);
+  std::set_difference(before.begin(), before.end(), now.begin(), now.end(), std::back_inserter(expected_removed), by_id);
+  const std::size_t changes = expected_added.size() + expected_removed.size();
+  ASSERT_GT(changes, 5000u);
+  RankOneTerms added, removed;
+  ASSERT_TRUE(find_changed_terms(now, before, changes, added, removed));
+  const auto ids = [](const RankOneTerms& terms) {
+    std::vector<std::array<int, 5>> out;
+    for (const RankOneTerm& t : terms) out.push_back(t.id);
+    return out;
+  };
+  EXPECT_EQ(ids(added), ids(expected_added));
+  EXPECT_EQ(ids(removed), ids(expected_removed));
+  EXPECT_FALSE(find_changed_terms(now, before, changes - 1, added, removed));
 }
 
 // More springs changing at once than either solver follows (CHOLMOD: a quarter of the block
