@@ -31,6 +31,13 @@ Moments compute_moments(std::span<const Point> polygon);
 
 // T(x, y): the point's displacement is T·D.
 Matrix26 compute_displacement_matrix(Point p, Point centroid);
+// T·D written out, for loops over every vertex that need no matrix: with (x, y) from the
+// centroid, (u0 − r0 y + εx x + γ y/2, v0 + r0 x + εy y + γ x/2).
+inline Point first_order_displacement(Point p, Point centroid, const Vector6& d) {
+  const double x = p.x - centroid.x;
+  const double y = p.y - centroid.y;
+  return {d[0] - d[2] * y + d[3] * x + d[5] * y / 2, d[1] + d[2] * x + d[4] * y + d[5] * x / 2};
+}
 
 // 3×3 elasticity matrix: σ = E ε with ε = (εx, εy, γxy).
 Eigen::Matrix3d compute_elasticity(const Material& material, Plane plane);

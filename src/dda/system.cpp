@@ -301,19 +301,27 @@ void System::factor_with_contacts() {
   RankOneTerms& terms = assembly_.terms;
   // A normal spring for each closed contact, a shear one for each locked; each half of the
   // contacts writes its springs from where the first half's end.
+  // The closed contacts are listed too (closed_): the pass's loops over contacts that carry
+  // load walk that list, not every candidate.
+  struct Counts {
+    std::size_t springs = 0, closed = 0;
+  };
   const auto counts = results_in_halves(many_contacts(), active_.size(), [&](std::size_t begin, std::size_t end) {
-    std::size_t count = 0;
+    Counts count;
     for (std::size_t i = begin; i < end; ++i) {
       const ContactState state = active_[i].record.state;
-      count += (is_closed(state) ? 1 : 0) + (state == ContactState::locked ? 1 : 0);
+      count.closed += is_closed(state) ? 1 : 0;
+      count.springs += (is_closed(state) ? 1 : 0) + (state == ContactState::locked ? 1 : 0);
     }
     return count;
   });
-  resize_for_overwrite(terms, counts[0] + counts[1]);
+  resize_for_overwrite(terms, counts[0].springs + counts[1].springs);
+  resize_for_overwrite(closed_, counts[0].closed + counts[1].closed);
   const double root_penalty = std::sqrt(penalty_);
   run_two_parts(many_contacts(), [&](int part) {
     const auto [begin, end] = half_range(part, active_.size());
-    RankOneTerm* next = terms.data() + (part == 0 ? 0 : counts[0]);
+    RankOneTerm* next = terms.data() + (part == 0 ? 0 : counts[0].springs);
+    int* next_closed = closed_.data() + (part == 0 ? 0 : counts[0].closed);
     const auto add_term = [&](const ActiveContact& c, int kind, const Vector6& e_i, const Vector6& e_j) {
       const ContactKey& k = c.key;
       RankOneTerm& t = *next++;
@@ -327,6 +335,7 @@ void System::factor_with_contacts() {
     for (std::size_t i = begin; i < end; ++i) {
       const ActiveContact& c = active_[i];
       if (!is_closed(c.record.state)) continue;
+      *next_closed++ = static_cast<int>(i);
       add_term(c, 0, c.en_i, c.en_j);  // normal spring ½ p d²
       if (c.record.state == ContactState::locked) add_term(c, 1, c.es_i, c.es_j);  // shear ½ p s²
     }
@@ -337,22 +346,26 @@ void System::factor_with_contacts() {
 }
 
 Eigen::VectorXd System::assemble_contact_rhs(const Eigen::VectorXd& f_base) const {
+  Eigen::VectorXd f = f_base;
+  if (!many_closed_contacts()) {
+    add_contact_loads(0, closed_.size(), f);
+    return f;
+  }
   // The halves of the contacts load the same blocks: each adds into its own vector, the
   // second's added to the first's after.
-  std::array<Eigen::VectorXd, 2> halves{f_base, Eigen::VectorXd::Zero(f_base.size())};
-  run_two_parts(many_contacts(), [&](int part) {
-    const auto [begin, end] = half_range(part, active_.size());
-    add_contact_loads(begin, end, halves[part]);
+  Eigen::VectorXd second = Eigen::VectorXd::Zero(f_base.size());
+  run_two_parts(true, [&](int part) {
+    const auto [begin, end] = half_range(part, closed_.size());
+    add_contact_loads(begin, end, part == 0 ? f : second);
   });
-  halves[0] += halves[1];
-  return std::move(halves[0]);
+  f += second;
+  return f;
 }
 
 void System::add_contact_loads(std::size_t begin, std::size_t end, Eigen::VectorXd& f) const {
-  for (std::size_t i = begin; i < end; ++i) {
-    const ActiveContact& c = active_[i];
+  for (std::size_t k = begin; k < end; ++k) {
+    const ActiveContact& c = active_[closed_[k]];
     const ContactRecord& r = c.record;
-    if (!is_closed(r.state)) continue;
     // Normal: energy λ d + ½ p d² → load −(λ + p d0) en.
     const double normal = r.multiplier + penalty_ * c.penetration0;
     add_segment(f, c.dof_i, -normal * c.en_i);
@@ -408,11 +421,10 @@ double System::compute_shear_strength(const ActiveContact& c, double normal_forc
 }
 
 System::ContactForceExtent System::update_contact_forces(const Eigen::VectorXd& d) {
-  const auto halves = results_in_halves(many_contacts(), active_.size(), [&](std::size_t begin, std::size_t end) {
+  const auto halves = results_in_halves(many_closed_contacts(), closed_.size(), [&](std::size_t begin, std::size_t end) {
     ContactForceExtent extent;
-    for (std::size_t i = begin; i < end; ++i) {
-      ActiveContact& c = active_[i];
-      if (!is_closed(c.record.state)) continue;
+    for (std::size_t k = begin; k < end; ++k) {
+      ActiveContact& c = active_[closed_[k]];
       const double pen = compute_penetration(c, d);
       const double normal = compute_normal_force(c, pen);
       extent.deepest = std::max(extent.deepest, std::abs(pen));
@@ -427,19 +439,19 @@ System::ContactForceExtent System::update_contact_forces(const Eigen::VectorXd& 
 
 double System::largest_vertex_motion(const Eigen::VectorXd& change) const {
   const auto largest = results_in_halves(many_blocks(), blocks_.size(), [&](std::size_t begin, std::size_t end) {
-    double half_largest = 0.0;
+    double half_largest = 0.0;  // squared: one square root at the end
     for (std::size_t bi = begin; bi < end; ++bi) {
       const Block& b = blocks_[bi];
       if (b.dof < 0) continue;
       const Vector6 db = change.segment<6>(6 * b.dof);
       for (Point p : b.polygon) {
-        const Eigen::Vector2d moved = compute_displacement_matrix(p, b.moments.centroid) * db;
-        half_largest = std::max(half_largest, moved.norm());
+        const Point moved = first_order_displacement(p, b.moments.centroid, db);
+        half_largest = std::max(half_largest, moved.x * moved.x + moved.y * moved.y);
       }
     }
     return half_largest;
   });
-  return std::max(largest[0], largest[1]);
+  return std::sqrt(std::max(largest[0], largest[1]));
 }
 
 // Moves contact c to the state the solution d puts it in: open ↔ closed by penetration and
@@ -512,8 +524,8 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
     // The sliding contacts' normal forces: those the friction loads were made with (x) and
     // those the solution gives (G(x)).
     std::vector<ActiveContact*> sliding;
-    for (ActiveContact& c : active_)
-      if (c.record.state == ContactState::sliding) sliding.push_back(&c);
+    for (int i : closed_)
+      if (active_[i].record.state == ContactState::sliding) sliding.push_back(&active_[i]);
     Eigen::VectorXd used(sliding.size());
     Eigen::VectorXd image(sliding.size());
     AndersonAccelerator friction_mixing;
@@ -559,8 +571,7 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
       // Forces that have not settled are no solution to accept: the step is cut and retried.
       if (al + 1 == settings_.max_lagrangian_iterations) return Unsettled::contact_forces;
       if (!penetration_ok) {
-        for (ActiveContact& c : active_)
-          if (is_closed(c.record.state)) c.record.multiplier = c.record.normal_force;
+        for (int i : closed_) active_[i].record.multiplier = active_[i].record.normal_force;
         friction_mixing.reset();  // a new map: its history no longer applies
         before_friction_update.resize(0);
       } else {

@@ -148,6 +148,7 @@ class System {
   bool many_blocks() const { return blocks_.size() >= 500; }
   bool many_contacts_to_linearise() const { return active_.size() >= 2000; }
   bool many_contacts() const { return active_.size() >= 5000; }
+  bool many_closed_contacts() const { return closed_.size() >= 5000; }  // loops over closed_
   void detect_contacts();
   void linearise_contact(ActiveContact& c) const;
   // Why a step's solve did not settle, if it did not.
@@ -156,7 +157,8 @@ class System {
   void assemble_blocks(double dt, Matrix6Array& k_base, Eigen::VectorXd& f_base) const;
   void factor_with_contacts();
   Eigen::VectorXd assemble_contact_rhs(const Eigen::VectorXd& f_base) const;
-  // The loads of contacts begin … end − 1 (their multipliers, penalties and friction), into f.
+  // The loads of the closed contacts closed_[begin … end − 1] (their multipliers, penalties and
+  // friction), into f.
   void add_contact_loads(std::size_t begin, std::size_t end, Eigen::VectorXd& f) const;
   // The change of the load when the sliding contacts' friction goes from the normal forces
   // `from` to `to` (in the order of `sliding`).
@@ -215,6 +217,7 @@ class System {
   using KeyedRecord = std::pair<ContactKey, ContactRecord>;
   std::vector<KeyedRecord> records_;
   std::vector<ActiveContact> active_;  // some 300 bytes each
+  std::vector<int> closed_;            // active_'s closed contacts this pass, ascending
   int unknown_count_ = 0;
   double time_ = 0.0;
   double dt_ = 0.0;

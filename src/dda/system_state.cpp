@@ -88,6 +88,7 @@ void System::import_state(const SystemState& s) {
                              [](const auto& a, const auto& b) { return a.first == b.first; }),
                  records_.end());
   active_.clear();
+  closed_.clear();
   const auto restore = [](std::vector<TrackedPoint>& points, const std::vector<Point>& positions) {
     for (std::size_t i = 0; i < points.size(); ++i) points[i].position = positions[i];
   };
