@@ -16,13 +16,19 @@ namespace hydrodda::dda {
 
 namespace {
 
-// One entry of row k of the permuted lower triangle: column j < k, and the matrix's block
-// that holds A'(k, j), transposed if the permutation swapped its row and column.
+// One entry of row k of the permuted lower triangle: column j < k, and where its block comes
+// from: a block of the matrix (`source` its pair), transposed if the permutation swapped its
+// row and column, or a spring w wᵀ joining the two blocks (`source` the spring), whose part
+// in A(k, j) is w_row w_columnᵀ (`transposed`: the row's block is the spring's block_b).
 struct RowEntry {
   int column;
-  int pair;
+  int source;
   bool transposed;
+  bool spring;
 };
+
+// Whether spring t joins two different blocks (an entry off the diagonal).
+bool joins_two(const RankOneTerm& t) { return t.block_a >= 0 && t.block_b >= 0 && t.block_a != t.block_b; }
 
 
 // x[rows[q]] −= l values[q]ᵀ for q < count: the update of row k by one earlier column, the
@@ -112,26 +118,56 @@ bool BlockCholesky::use_vectorised_kernels(bool on) {
 //       D −= L(k, i) L(k, i)ᵀ
 //     L(k, k) ← chol(D)   (fails if D is not positive definite)
 bool BlockCholesky::factorise(const BlockMatrix& a, const std::vector<int>& order) {
+  return factorise(a, RankOneTerms{}, order);
+}
+
+bool BlockCholesky::factorise(const BlockMatrix& a, const RankOneTerms& springs, const std::vector<int>& order) {
   clear();
   const int n = a.block_count;
   std::vector<int>& position = position_;
   position.resize(n);
   for (int k = 0; k < n; ++k) position[order[k]] = k;
 
-  // Rows of the permuted strictly lower triangle, by counting sort.
+  // Rows of the permuted strictly lower triangle, by counting sort: the matrix's blocks off
+  // the diagonal, and one entry for each spring joining two blocks (a pair of blocks that
+  // several springs join has an entry for each: the row sums them, and the pattern is the
+  // same).
   std::vector<int> row_start(n + 1, 0);
   for (auto [col, row] : a.pairs) ++row_start[std::max(position[col], position[row]) + 1];
+  for (const RankOneTerm& t : springs)
+    if (joins_two(t)) ++row_start[std::max(position[t.block_a], position[t.block_b]) + 1];
   for (int k = 0; k < n; ++k) row_start[k + 1] += row_start[k];
-  std::vector<RowEntry> rows(a.pairs.size());
+  std::vector<RowEntry> rows(row_start[n]);
+  // The springs on each block's diagonal: those that touch it, by counting sort.
+  std::vector<int> touching_start(n + 1, 0);
+  for (const RankOneTerm& t : springs) {
+    if (t.block_a >= 0) ++touching_start[t.block_a + 1];
+    if (t.block_b >= 0 && t.block_b != t.block_a) ++touching_start[t.block_b + 1];
+  }
+  for (int b = 0; b < n; ++b) touching_start[b + 1] += touching_start[b];
+  std::vector<int> touching(touching_start[n]);
   {
     std::vector<int> next(row_start.begin(), row_start.end() - 1);
     for (std::size_t p = 0; p < a.pairs.size(); ++p) {
       const int pc = position[a.pairs[p].first], pr = position[a.pairs[p].second];
       // off[p] is A(row, column): it is A'(pr, pc) as stored, or its transpose if pc > pr.
       if (pr > pc)
-        rows[next[pr]++] = {pc, static_cast<int>(p), false};
+        rows[next[pr]++] = {pc, static_cast<int>(p), false, false};
       else
-        rows[next[pc]++] = {pr, static_cast<int>(p), true};
+        rows[next[pc]++] = {pr, static_cast<int>(p), true, false};
+    }
+    std::vector<int> next_touching(touching_start.begin(), touching_start.end() - 1);
+    for (std::size_t q = 0; q < springs.size(); ++q) {
+      const RankOneTerm& t = springs[q];
+      const int spring = static_cast<int>(q);
+      if (t.block_a >= 0) touching[next_touching[t.block_a]++] = spring;
+      if (t.block_b >= 0 && t.block_b != t.block_a) touching[next_touching[t.block_b]++] = spring;
+      if (!joins_two(t)) continue;
+      const int pa = position[t.block_a], pb = position[t.block_b];
+      if (pa > pb)
+        rows[next[pa]++] = {pb, spring, false, true};
+      else
+        rows[next[pb]++] = {pa, spring, true, true};
     }
   }
 
@@ -204,16 +240,40 @@ bool BlockCholesky::factorise(const BlockMatrix& a, const std::vector<int>& orde
   for (Reach& r : reaches) std::fill(r.mark.begin(), r.mark.end(), -1);
   // Each part works its row in its own array (x_p, by position); the top's rows use part 0's.
   for (Matrix6Array& x : row_work_) x.assign(n, Matrix6::Zero());
-  // Row k's entries A(k, c) for the columns c that `take` accepts, into x.
+  // Row k's entries A(k, c) for the columns c that `take` accepts, added into x (zero there).
   const auto scatter_row = [&](int k, Matrix6Array& x, auto take) {
     for (int e = row_start[k]; e < row_start[k + 1]; ++e) {
-      if (!take(rows[e].column)) continue;
-      const Matrix6& block = a.off[rows[e].pair];
-      if (rows[e].transposed)
-        x[rows[e].column] = block.transpose();
-      else
-        x[rows[e].column] = block;
+      const RowEntry& entry = rows[e];
+      if (!take(entry.column)) continue;
+      Matrix6& target = x[entry.column];
+      if (entry.spring) {
+        const RankOneTerm& t = springs[entry.source];
+        if (entry.transposed)
+          target.noalias() += t.w_b * t.w_a.transpose();
+        else
+          target.noalias() += t.w_a * t.w_b.transpose();
+      } else if (entry.transposed) {
+        target += a.off[entry.source].transpose();
+      } else {
+        target += a.off[entry.source];
+      }
     }
+  };
+  // A(k, k): the matrix's diagonal block and the springs on it.
+  const auto diagonal = [&](int k) {
+    const int b = order[k];
+    Matrix6 d = a.diagonal[b];
+    for (int q = touching_start[b]; q < touching_start[b + 1]; ++q) {
+      const RankOneTerm& t = springs[touching[q]];
+      if (t.block_a == t.block_b) {
+        const Vector6 w = t.w_a + t.w_b;
+        d.noalias() += w * w.transpose();
+      } else {
+        const Vector6& w = t.block_a == b ? t.w_a : t.w_b;
+        d.noalias() += w * w.transpose();
+      }
+    }
+    return d;
   };
   // The columns stack[top … n−1] that `take` accepts, in turn: L(k, i) from x_i, then row k
   // updated by column i, and d −= L(k, i) L(k, i)ᵀ.
@@ -255,7 +315,7 @@ bool BlockCholesky::factorise(const BlockMatrix& a, const std::vector<int>& orde
     Reach& r = reaches[p];
     for (int k : part_columns_[p]) {
       scatter_row(k, x, anywhere);
-      Matrix6 d = a.diagonal[order[k]];
+      Matrix6 d = diagonal(k);
       eliminate_columns(k, r, reach(k, r, from_column, anywhere), x, d, anywhere);
       if (!(part_ok[p] = factor_pivot(k, d))) return;
     }
@@ -289,7 +349,7 @@ bool BlockCholesky::factorise(const BlockMatrix& a, const std::vector<int>& orde
       xj += sums_0[u];
       xj += sums_1[u];
     }
-    Matrix6 d = a.diagonal[order[k]];
+    Matrix6 d = diagonal(k);
     d += sums_0[t];
     d += sums_1[t];
     eliminate_columns(k, reaches[2], reach(k, reaches[2], top_of, anywhere), x, d, anywhere);

@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 
 #include "dda/block_matrix.hpp"
+#include "dda/linear_solver.hpp"
 
 namespace hydrodda::dda {
 
@@ -23,6 +24,9 @@ class BlockCholesky {
   // eliminated k-th, a permutation of 0 … block_count − 1). False, leaving no factor, if a
   // pivot block is not positive definite.
   bool factorise(const BlockMatrix& a, const std::vector<int>& order);
+  // The same for a + Σ w wᵀ over the springs, read where they are: no assembled matrix, whose
+  // memory a first factorisation would touch afresh.
+  bool factorise(const BlockMatrix& a, const RankOneTerms& springs, const std::vector<int>& order);
   bool empty() const { return block_count_ == 0; }
   // x ← A⁻¹ x.
   void solve_in_place(Eigen::Ref<Eigen::VectorXd> x) const;

@@ -204,13 +204,12 @@ class BlockFactorSolver final : public KeptFactorSolver {
 
   void refactor() const {
     ++counts_.factorisations;
-    BlockMatrix& a = assembled_;
-    add_springs(*base_, *terms_, a);
     // Minimum degree on the block graph of the first matrix; later contacts change the fill a
     // little, not the correctness.
-    if (order_.empty()) order_ = order_by_minimum_degree(a);
-    if (!factor_.factorise(a, order_)) {
-      if (!a.all_finite())
+    if (order_.empty()) order_ = order_by_minimum_degree(*base_, *terms_);
+    // The springs are read where they are, not assembled first.
+    if (!factor_.factorise(*base_, *terms_, order_)) {
+      if (!all_finite(*base_, *terms_))
         throw std::runtime_error("DDA: the global stiffness matrix has entries that are not finite "
                                  "(an overflow in the model's data)");
       throw std::runtime_error("DDA: the global stiffness matrix is not positive definite");
@@ -228,7 +227,6 @@ class BlockFactorSolver final : public KeptFactorSolver {
   BlockMatrix own_base_;
   RankOneTerms own_terms_;
   int block_count_ = -1;  // of the last matrix
-  mutable BlockMatrix assembled_;        // the two added, as last factored
   mutable RankOneTerms factored_terms_;  // as held by the factor
   mutable BlockCholesky factor_;
   mutable std::vector<Correction> corrections_;

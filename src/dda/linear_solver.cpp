@@ -68,6 +68,23 @@ bool find_changed_terms(const RankOneTerms& now, const RankOneTerms& before, std
   return added.size() + removed.size() <= limit;
 }
 
+std::vector<int> order_by_minimum_degree(const BlockMatrix& base, const RankOneTerms& springs) {
+  // The pattern alone: the ordering reads the pairs, and a pair listed twice is the same edge.
+  BlockMatrix pattern;
+  pattern.block_count = base.block_count;
+  pattern.pairs = base.pairs;
+  for (const RankOneTerm& t : springs)
+    if (t.block_a >= 0 && t.block_b >= 0 && t.block_a != t.block_b)
+      pattern.pairs.emplace_back(std::min(t.block_a, t.block_b), std::max(t.block_a, t.block_b));
+  return order_by_minimum_degree(pattern);
+}
+
+bool all_finite(const BlockMatrix& base, const RankOneTerms& springs) {
+  return base.all_finite() && std::all_of(springs.begin(), springs.end(), [](const RankOneTerm& t) {
+           return t.w_a.allFinite() && t.w_b.allFinite();
+         });
+}
+
 BlockMatrix add_springs(const BlockMatrix& base, const RankOneTerms& springs) {
   BlockMatrix a;
   add_springs(base, springs, a);

@@ -32,6 +32,12 @@ using RankOneTerms = std::vector<RankOneTerm>;
 bool find_changed_terms(const RankOneTerms& now, const RankOneTerms& before, std::size_t limit,
                         RankOneTerms& added, RankOneTerms& removed);
 
+// An elimination order of base + Σ w wᵀ by approximate minimum degree on its block graph
+// (order_by_minimum_degree), the springs joining the blocks they span.
+std::vector<int> order_by_minimum_degree(const BlockMatrix& base, const RankOneTerms& springs);
+// Whether base and the springs hold finite values only.
+bool all_finite(const BlockMatrix& base, const RankOneTerms& springs);
+
 // base + Σ w wᵀ over the springs as one block matrix: a block for each pair of blocks a
 // spring joins.
 BlockMatrix add_springs(const BlockMatrix& base, const RankOneTerms& springs);
