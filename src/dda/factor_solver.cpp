@@ -87,7 +87,7 @@ class BlockFactorSolver final : public KeptFactorSolver {
   void take_matrix(const BlockMatrix& base, const RankOneTerms& terms) {
     if (base.block_count != block_count_) {
       block_count_ = base.block_count;
-      order_.clear();  // ordered at the next factorisation, on the assembled pattern
+      order_.clear();  // ordered at the next factorisation, on the pattern of the matrix and its springs
       factor_.clear();
       stale_ = true;
     }
