@@ -27,9 +27,6 @@ struct RowEntry {
   bool spring;
 };
 
-// Whether spring t joins two different blocks (an entry off the diagonal).
-bool joins_two(const RankOneTerm& t) { return t.block_a >= 0 && t.block_b >= 0 && t.block_a != t.block_b; }
-
 
 // x[rows[q]] −= l values[q]ᵀ for q < count: the update of row k by one earlier column, the
 // factorisation's inner loop. Portable in Eigen; by hand with AVX2 and FMA where the CPU has
@@ -135,7 +132,7 @@ bool BlockCholesky::factorise(const BlockMatrix& a, const RankOneTerms& springs,
   std::vector<int> row_start(n + 1, 0);
   for (auto [col, row] : a.pairs) ++row_start[std::max(position[col], position[row]) + 1];
   for (const RankOneTerm& t : springs)
-    if (joins_two(t)) ++row_start[std::max(position[t.block_a], position[t.block_b]) + 1];
+    if (t.joins_two_blocks()) ++row_start[std::max(position[t.block_a], position[t.block_b]) + 1];
   for (int k = 0; k < n; ++k) row_start[k + 1] += row_start[k];
   std::vector<RowEntry> rows(row_start[n]);
   // The springs on each block's diagonal: those that touch it, by counting sort.
@@ -162,7 +159,7 @@ bool BlockCholesky::factorise(const BlockMatrix& a, const RankOneTerms& springs,
       const int spring = static_cast<int>(q);
       if (t.block_a >= 0) touching[next_touching[t.block_a]++] = spring;
       if (t.block_b >= 0 && t.block_b != t.block_a) touching[next_touching[t.block_b]++] = spring;
-      if (!joins_two(t)) continue;
+      if (!t.joins_two_blocks()) continue;
       const int pa = position[t.block_a], pb = position[t.block_b];
       if (pa > pb)
         rows[next[pa]++] = {pb, spring, false, true};
@@ -264,14 +261,8 @@ bool BlockCholesky::factorise(const BlockMatrix& a, const RankOneTerms& springs,
     const int b = order[k];
     Matrix6 d = a.diagonal[b];
     for (int q = touching_start[b]; q < touching_start[b + 1]; ++q) {
-      const RankOneTerm& t = springs[touching[q]];
-      if (t.block_a == t.block_b) {
-        const Vector6 w = t.w_a + t.w_b;
-        d.noalias() += w * w.transpose();
-      } else {
-        const Vector6& w = t.block_a == b ? t.w_a : t.w_b;
-        d.noalias() += w * w.transpose();
-      }
+      const Vector6 w = springs[touching[q]].part_on(b);
+      d.noalias() += w * w.transpose();
     }
     return d;
   };

@@ -74,7 +74,7 @@ std::vector<int> order_by_minimum_degree(const BlockMatrix& base, const RankOneT
   pattern.block_count = base.block_count;
   pattern.pairs = base.pairs;
   for (const RankOneTerm& t : springs)
-    if (t.block_a >= 0 && t.block_b >= 0 && t.block_a != t.block_b)
+    if (t.joins_two_blocks())
       pattern.pairs.emplace_back(std::min(t.block_a, t.block_b), std::max(t.block_a, t.block_b));
   return order_by_minimum_degree(pattern);
 }
@@ -99,18 +99,17 @@ void add_springs(const BlockMatrix& base, const RankOneTerms& springs, BlockMatr
   // The pairs (column, row), row > column, of the base and of the springs that join two
   // blocks, bucketed by column (a counting sort: a block touches a handful of others), each
   // column's rows then sorted and made unique.
-  const auto joins_two = [](const RankOneTerm& t) { return t.block_a >= 0 && t.block_b >= 0 && t.block_a != t.block_b; };
   std::vector<int> start(n + 1, 0);
   for (const auto& [column, row] : base.pairs) ++start[column + 1];
   for (const RankOneTerm& t : springs)
-    if (joins_two(t)) ++start[std::min(t.block_a, t.block_b) + 1];
+    if (t.joins_two_blocks()) ++start[std::min(t.block_a, t.block_b) + 1];
   for (int c = 0; c < n; ++c) start[c + 1] += start[c];
   std::vector<int> rows(start[n]);
   {
     std::vector<int> next(start.begin(), start.end() - 1);
     for (const auto& [column, row] : base.pairs) rows[next[column]++] = row;
     for (const RankOneTerm& t : springs)
-      if (joins_two(t)) rows[next[std::min(t.block_a, t.block_b)]++] = std::max(t.block_a, t.block_b);
+      if (t.joins_two_blocks()) rows[next[std::min(t.block_a, t.block_b)]++] = std::max(t.block_a, t.block_b);
   }
   std::vector<int> first_pair(n + 1, 0);  // a.pairs of column c: [first_pair[c], first_pair[c + 1])
   for (int c = 0; c < n; ++c) {
@@ -129,14 +128,13 @@ void add_springs(const BlockMatrix& base, const RankOneTerms& springs, BlockMatr
   };
   for (std::size_t p = 0; p < base.pairs.size(); ++p) off_block(base.pairs[p].first, base.pairs[p].second) = base.off[p];
   for (const RankOneTerm& t : springs) {
-    if (t.block_a >= 0 && t.block_a == t.block_b) {
-      const Eigen::Matrix<double, 6, 1> w = t.w_a + t.w_b;
-      a.diagonal[t.block_a].noalias() += w * w.transpose();
-      continue;
+    // On the diagonal, w's part on each block it touches.
+    for (const int block : {t.block_a, t.block_b == t.block_a ? -1 : t.block_b}) {
+      if (block < 0) continue;
+      const Vector6 w = t.part_on(block);
+      a.diagonal[block].noalias() += w * w.transpose();
     }
-    if (t.block_a >= 0) a.diagonal[t.block_a].noalias() += t.w_a * t.w_a.transpose();
-    if (t.block_b >= 0) a.diagonal[t.block_b].noalias() += t.w_b * t.w_b.transpose();
-    if (t.block_a < 0 || t.block_b < 0) continue;
+    if (!t.joins_two_blocks()) continue;
     // Block (row, column), row > column: w_row w_columnᵀ.
     if (t.block_a > t.block_b)
       off_block(t.block_b, t.block_a).noalias() += t.w_a * t.w_b.transpose();

@@ -21,6 +21,16 @@ struct RankOneTerm {
   int block_a = -1, block_b = -1;  // −1: no entries there
   Eigen::Matrix<double, 6, 1> w_a = Eigen::Matrix<double, 6, 1>::Zero();
   Eigen::Matrix<double, 6, 1> w_b = Eigen::Matrix<double, 6, 1>::Zero();
+
+  // Whether w spans two different blocks: a block of w wᵀ off the diagonal.
+  bool joins_two_blocks() const { return block_a >= 0 && block_b >= 0 && block_a != block_b; }
+  // w's part on `block` (both ends added where the spring has it at both).
+  Eigen::Matrix<double, 6, 1> part_on(int block) const {
+    Eigen::Matrix<double, 6, 1> w = Eigen::Matrix<double, 6, 1>::Zero();
+    if (block_a == block) w += w_a;
+    if (block_b == block) w += w_b;
+    return w;
+  }
 };
 
 // The springs of a matrix: a large array (two per closed contact).

@@ -299,10 +299,10 @@ void System::factor_with_contacts() {
   // next pass writes its own over them: fresh memory costs more in page faults than the
   // assembly itself.
   RankOneTerms& terms = assembly_.terms;
-  // A normal spring for each closed contact, a shear one for each locked; each half of the
-  // contacts writes its springs from where the first half's end.
-  // The closed contacts are listed too (closed_): the pass's loops over contacts that carry
-  // load walk that list, not every candidate.
+  // A normal spring for each closed contact, a shear one for each locked, and the closed
+  // contacts listed (closed_: the pass's loops over contacts that carry load walk that list,
+  // not every candidate); each half of the contacts writes its springs and its list entries
+  // from where the first half's end.
   struct Counts {
     std::size_t springs = 0, closed = 0;
   };
