@@ -124,6 +124,51 @@ TEST(ContactDetection, VertexToVertexTakesTheEntranceEdge) {
   EXPECT_EQ(found.size(), 1u);
 }
 
+// Contact distances near a block's size (a tall model's default, or a large ratio): two
+// blocks 1 mm apart across a slanting joint. The left block's corner (1, 0.6) lies 0.6 m
+// behind the line of the right block's bottom edge, projecting onto it 0.1 m from its start,
+// and the right block's corner (0.9, 0) 0.6 m behind the line of the left block's top edge.
+// Neither is inside the other block, so neither is a contact with those far edges (taken for
+// one, a 0.6 m penetration no step could settle); the left corner's contact is with the
+// joint, 1 mm away.
+TEST(ContactDetection, ACornerBesideABlockIsNoContactWithItsFarEdges) {
+  const double run = 0.101 / 0.6;  // the joint's run per metre of rise
+  const Polygon left{{0.0, -0.4}, {0.899 - 0.4 * run, -0.4}, {1.0, 0.6}, {0.0, 0.6}};
+  const Polygon right{{0.9, 0.0}, {2.0, 0.0}, {2.0, 0.6}, {1.001, 0.6}};  // edge 3 is the joint
+  for (const double distance : {0.01, 0.7}) {
+    ContactCandidates found;
+    find_pair_contacts(left, 0, right, 1, distance, found);
+    int corner_contacts = 0;
+    for (const ContactCandidate& c : found) {
+      EXPECT_LE(c.penetration, 0.0) << "distance " << distance << ": vertex " << c.key.vertex << " of block "
+                                    << c.key.block_i << " on edge " << c.key.edge;
+      if (c.key.block_i == 0 && c.key.vertex == 2) {
+        ++corner_contacts;
+        EXPECT_EQ(c.key.edge, 3) << "distance " << distance;
+      }
+    }
+    EXPECT_EQ(corner_contacts, 1) << "distance " << distance;
+  }
+}
+
+// A corner 2 mm inside a block through its bottom edge, 0.7 m from its left edge, with a
+// contact distance of 1 m: it entered by the bottom edge, the nearest, and is a contact with
+// that edge alone, penetrating 2 mm (to 1e-12), not 0.7 m into the left one.
+TEST(ContactDetection, ACornerInsideABlockTouchesTheEdgeItEnteredBy) {
+  const Polygon lower = make_rectangle(0.1, 0.0, 0.7, 1.002);  // corners 2 and 3 at y = 1.002
+  const Polygon upper = make_rectangle(0.0, 1.0, 0.8, 1.6);    // bottom edge 0 at y = 1
+  ContactCandidates found;
+  find_pair_contacts(lower, 0, upper, 1, 1.0, found);
+  int from_lower = 0;
+  for (const ContactCandidate& c : found)
+    if (c.key.block_i == 0) {
+      ++from_lower;
+      EXPECT_EQ(c.key.edge, 0) << "vertex " << c.key.vertex;
+      EXPECT_NEAR(c.penetration, 0.002, 1e-12) << "vertex " << c.key.vertex;
+    }
+  EXPECT_EQ(from_lower, 2);
+}
+
 // A reflex (concave) vertex never touches a face: an L-shaped block's inner corner above a
 // flat top edge is not a contact, its convex vertices are.
 TEST(ContactDetection, ReflexVertexIsNotAContact) {
