@@ -40,10 +40,10 @@ inline ModelDefinition make_incline(double theta_deg, double phi_deg, double coh
   return m;
 }
 
-// n × n cells of a lattice with jittered nodes (±0.2 m on 1 m), each cell shrunk by 0.1%
-// about its centroid: irregular quadrilaterals 0.5 mm apart, 0.5 mm above a fixed base, to
-// fall and settle under gravity (dynamic, Δt 1 ms).
-inline ModelDefinition make_random_packing(int n) {
+// rows × cols cells of a lattice with jittered nodes (±0.2 m on 1 m), each cell shrunk by
+// 0.1% about its centroid: irregular quadrilaterals 0.5 mm apart, 0.5 mm above a fixed base,
+// to fall and settle under gravity (dynamic, Δt 1 ms).
+inline ModelDefinition make_random_packing(int rows, int cols) {
   ModelDefinition m;
   m.materials = {Material{2500.0, 1.0e10, 0.25}};
   m.joint = {30.0, 0.0, 0.0};
@@ -51,23 +51,25 @@ inline ModelDefinition make_random_packing(int n) {
   m.settings.time_step = 1.0e-3;
   std::mt19937 rng(12345);
   std::uniform_real_distribution<double> jitter(-0.2, 0.2);
-  std::vector<Point> nodes((n + 1) * (n + 1));
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      const bool edge_x = i == 0 || i == n;
-      nodes[j * (n + 1) + i] = {i + (edge_x ? 0.0 : jitter(rng)), 0.0015 + j + (j == 0 ? 0.0 : jitter(rng))};
+  std::vector<Point> nodes((rows + 1) * (cols + 1));
+  for (int j = 0; j <= rows; ++j)
+    for (int i = 0; i <= cols; ++i) {
+      const bool edge_x = i == 0 || i == cols;
+      nodes[j * (cols + 1) + i] = {i + (edge_x ? 0.0 : jitter(rng)), 0.0015 + j + (j == 0 ? 0.0 : jitter(rng))};
     }
-  m.blocks.push_back({make_rectangle(-1.0, -1.0, n + 1.0, 0.0), 0, true});
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      Polygon p{nodes[j * (n + 1) + i], nodes[j * (n + 1) + i + 1], nodes[(j + 1) * (n + 1) + i + 1],
-                nodes[(j + 1) * (n + 1) + i]};
+  m.blocks.push_back({make_rectangle(-1.0, -1.0, cols + 1.0, 0.0), 0, true});
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < cols; ++i) {
+      Polygon p{nodes[j * (cols + 1) + i], nodes[j * (cols + 1) + i + 1], nodes[(j + 1) * (cols + 1) + i + 1],
+                nodes[(j + 1) * (cols + 1) + i]};
       const Point c = geometry::centroid(p);
       for (Point& v : p) v = c + 0.999 * (v - c);
       m.blocks.push_back({p, 0, false});
     }
   return m;
 }
+
+inline ModelDefinition make_random_packing(int n) { return make_random_packing(n, n); }
 
 // A staggered brick wall of rows × cols 2 m × 1 m bricks on a fixed base, as the peer
 // generator brickwall.py writes it.
