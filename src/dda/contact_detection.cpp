@@ -126,17 +126,6 @@ void test_vertex_edge(std::span<const Point> va, int a, int v, std::span<const P
   const double t = dot(p - e0, e1 - e0) / (length * length);
   const double slack = distance / length;
   if (t < -slack || t > 1 + slack) return;
-  // Behind the edge's line is a penetration only inside block b, and only of the edge the
-  // vertex came in by, the nearest (Shi's entrance edge). Where the contact distance nears
-  // the size of a block, a vertex just beside b (outside another of its edges), or just
-  // inside it near another edge, also lies within the distance behind b's far edges: a
-  // corner 1 mm to the left of a 0.64 m high block sits 0.64 m "into" its bottom edge.
-  // Taken as a contact, that depth pushes the blocks apart with forces no cut of the step
-  // can settle. What a settled step leaves (under the penetration tolerance, 1e-4 of the
-  // allowed step displacement) is far below the corner tie, so real contacts of a running
-  // model never reach these tests.
-  const double tie = kCornerTieTolerance * distance;
-  if (-gap > tie && !is_entrance_edge(p, eb, e, -gap, tie)) return;
   // The vertex's own block must lie outside the edge near the vertex: both incident edges
   // point away from block b (a reflex vertex never touches a face).
   const Point before = va[(v + nv - 1) % nv];
@@ -144,6 +133,15 @@ void test_vertex_edge(std::span<const Point> va, int a, int v, std::span<const P
   const Point n{(e1.y - e0.y) / length, -(e1.x - e0.x) / length};
   if (dot(before - p, n) < -kWedgeTolerance * geometry::distance(before, p)) return;
   if (dot(after - p, n) < -kWedgeTolerance * geometry::distance(after, p)) return;
+  // Behind the edge's line is a penetration only inside block b, and only of the edge the
+  // vertex came in by, the nearest (Shi's entrance edge). Where the contact distance nears a
+  // block's size, a vertex just beside b, or just inside it near another edge, also lies
+  // within the distance behind b's far edges (a corner 1 mm to the left of a 0.64 m high
+  // block sits 0.64 m "into" its bottom edge): a depth no cut of the step could settle. A
+  // settled step leaves penetrations far below the corner tie, so real contacts of a running
+  // model are never tested here; after the wedge test, as it is the dearer.
+  const double tie = kCornerTieTolerance * distance;
+  if (-gap > tie && !is_entrance_edge(p, eb, e, -gap, tie)) return;
   const double length_share = compute_tributary_length(p, before, after, e0, e1, distance);
   // At or past an end of the edge (vertex–vertex): keep only the entrance edge, the one of
   // the two edges meeting there whose line the vertex is farther outside (Shi 1988, §4.3).
