@@ -5,7 +5,7 @@
 
 #include "cli/app.hpp"
 #include "cli/commands.hpp"
-#include "cli/model_building.hpp"
+#include "run/model_building.hpp"
 #include "cli/scenario_loading.hpp"
 #include "scenario/diagnostics.hpp"
 
@@ -15,7 +15,7 @@ int check_command(const std::filesystem::path& file) {
   const auto scenario = load_scenario(file);
   if (!scenario) return kBadInput;
   try {
-    check_model(*scenario);
+    run::check_model(*scenario);
   } catch (const scenario::ScenarioError& e) {
     print_scenario_errors(file, e);
     return kBadInput;

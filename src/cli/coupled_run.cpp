@@ -5,11 +5,11 @@
 #include <filesystem>
 #include <utility>
 
-#include "cli/figures.hpp"
+#include "run/figures.hpp"
 #include "cli/interrupt.hpp"
-#include "cli/paraview_output.hpp"
-#include "cli/model_building.hpp"
-#include "cli/run_summary.hpp"
+#include "run/paraview_output.hpp"
+#include "run/model_building.hpp"
+#include "run/run_summary.hpp"
 #include "cli/runs.hpp"
 #include "coupling/staggered_loop.hpp"
 #include "dda/system.hpp"
@@ -17,6 +17,8 @@
 #include "output/csv_table.hpp"
 
 namespace hydrodda::cli {
+
+using namespace hydrodda::run;  // the run layer, while the runs still live here
 
 namespace {
 

@@ -3,10 +3,10 @@
 
 #include <chrono>
 
-#include "cli/figures.hpp"
-#include "cli/paraview_output.hpp"
-#include "cli/model_building.hpp"
-#include "cli/run_summary.hpp"
+#include "run/figures.hpp"
+#include "run/paraview_output.hpp"
+#include "run/model_building.hpp"
+#include "run/run_summary.hpp"
 #include "cli/runs.hpp"
 #include "coupling/local_aperture.hpp"
 #include "coupling/permeability_model.hpp"
@@ -17,6 +17,8 @@
 #include "mesh/triangle_mesh.hpp"
 
 namespace hydrodda::cli {
+
+using namespace hydrodda::run;  // the run layer, while the runs still live here
 
 namespace {
 

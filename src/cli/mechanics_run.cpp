@@ -4,14 +4,16 @@
 #include <chrono>
 
 #include "cli/interrupt.hpp"
-#include "cli/paraview_output.hpp"
-#include "cli/model_building.hpp"
-#include "cli/run_summary.hpp"
+#include "run/paraview_output.hpp"
+#include "run/model_building.hpp"
+#include "run/run_summary.hpp"
 #include "cli/runs.hpp"
 #include "dda/system.hpp"
 #include "output/csv_table.hpp"
 
 namespace hydrodda::cli {
+
+using namespace hydrodda::run;  // the run layer, while the runs still live here
 
 namespace {
 

@@ -14,7 +14,7 @@
 #include "cli/child_processes.hpp"
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
-#include "cli/model_building.hpp"
+#include "run/model_building.hpp"
 #include "cli/scenario_loading.hpp"
 #include "cli/sweep_plan.hpp"
 #include "cli/sweep_results.hpp"
@@ -62,7 +62,7 @@ std::optional<std::vector<PreparedCase>> prepare_cases(const fs::path& file, con
     try {
       std::string text = scenario::apply_overrides(original, file, cases[i]);
       const scenario::Scenario s = scenario::parse_scenario(text, case_file);
-      check_model(s);  // as `check` does
+      run::check_model(s);  // as `check` does
       if (i == 0 && s.flow)
         for (const scenario::FlowRegion& r : s.flow->regions) region_names.push_back(r.name);
       prepared.push_back({name, std::move(text)});

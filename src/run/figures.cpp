@@ -1,11 +1,11 @@
-#include "cli/figures.hpp"
+#include "run/figures.hpp"
 
 #include <fmt/format.h>
 
 #include "output/field_figure.hpp"
 #include "output/plot_line.hpp"
 
-namespace hydrodda::cli {
+namespace hydrodda::run {
 
 void draw_figures(const scenario::Scenario& s, const output::RunFolder& folder, const FlowPicture& p) {
   if (s.output.figures.empty()) return;
@@ -52,4 +52,4 @@ void draw_convergence(const scenario::Scenario& s, const output::RunFolder& fold
     output::render_line_plot(folder.figures() / ("convergence." + format), plot);
 }
 
-}  // namespace hydrodda::cli
+}  // namespace hydrodda::run

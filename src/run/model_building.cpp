@@ -1,4 +1,4 @@
-#include "cli/model_building.hpp"
+#include "run/model_building.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -13,7 +13,7 @@
 #include "hydro/permeability_law.hpp"
 #include "scenario/diagnostics.hpp"
 
-namespace hydrodda::cli {
+namespace hydrodda::run {
 
 namespace {
 
@@ -259,4 +259,4 @@ dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::B
   return model;
 }
 
-}  // namespace hydrodda::cli
+}  // namespace hydrodda::run

@@ -1,4 +1,4 @@
-#include "cli/paraview_output.hpp"
+#include "run/paraview_output.hpp"
 
 #include <fmt/format.h>
 
@@ -8,7 +8,7 @@
 
 #include "output/vtk_writer.hpp"
 
-namespace hydrodda::cli {
+namespace hydrodda::run {
 
 using output::DataArray;
 
@@ -93,4 +93,4 @@ void ParaviewOutput::write_contacts(int step, double time, const dda::System& sy
   contacts_->add(time, name);
 }
 
-}  // namespace hydrodda::cli
+}  // namespace hydrodda::run

@@ -13,7 +13,7 @@
 #include <optional>
 #include "scenario/scenario.hpp"
 
-namespace hydrodda::cli {
+namespace hydrodda::run {
 
 // The block polygons of the scenario (counter-clockwise), with their material index and
 // fixed flag, in the order the scenario defines them.
@@ -56,4 +56,4 @@ hydro::DarcyProblem build_flow_problem(const scenario::FlowDefinition& flow);
 // Total simulated time of a mechanics run: end_time, or steps × time_step.
 double mechanics_duration(const scenario::MechanicsDefinition& mechanics);
 
-}  // namespace hydrodda::cli
+}  // namespace hydrodda::run

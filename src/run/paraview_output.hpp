@@ -13,7 +13,7 @@
 #include "output/pvd_series.hpp"
 #include "output/run_folder.hpp"
 
-namespace hydrodda::cli {
+namespace hydrodda::run {
 
 class ParaviewOutput {
  public:
@@ -37,4 +37,4 @@ class ParaviewOutput {
   void write_contacts(int step, double time, const dda::System& system);
 };
 
-}  // namespace hydrodda::cli
+}  // namespace hydrodda::run

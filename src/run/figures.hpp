@@ -9,7 +9,7 @@
 #include "output/run_folder.hpp"
 #include "scenario/scenario.hpp"
 
-namespace hydrodda::cli {
+namespace hydrodda::run {
 
 struct FlowPicture {
   const mesh::TriangleMesh& mesh;
@@ -34,4 +34,4 @@ void draw_figures(const scenario::Scenario& scenario, const output::RunFolder& f
 void draw_convergence(const scenario::Scenario& scenario, const output::RunFolder& folder,
                       const ConvergenceHistory& history);
 
-}  // namespace hydrodda::cli
+}  // namespace hydrodda::run

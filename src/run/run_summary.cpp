@@ -1,12 +1,12 @@
-#include "cli/run_summary.hpp"
+#include "run/run_summary.hpp"
 
 #include <spdlog/spdlog.h>
 
-#include "cli/model_building.hpp"
+#include "run/model_building.hpp"
 #include "hydro/darcy_solver.hpp"
 #include "hydro/region_flow.hpp"
 
-namespace hydrodda::cli {
+namespace hydrodda::run {
 
 using geometry::Point;
 
@@ -56,4 +56,4 @@ output::FlowSummary summarise_flow(const scenario::Scenario& s, const mesh::Tria
   return flow;
 }
 
-}  // namespace hydrodda::cli
+}  // namespace hydrodda::run

@@ -9,7 +9,7 @@
 #include "output/summary.hpp"
 #include "scenario/scenario.hpp"
 
-namespace hydrodda::cli {
+namespace hydrodda::run {
 
 // Title, blocks (centroid, displacement, rotation, stress, area) and measured points.
 output::RunSummary summarise_mechanics(const scenario::Scenario& scenario, const dda::System& system);
@@ -25,4 +25,4 @@ output::FlowSummary summarise_flow(const scenario::Scenario& scenario, const mes
                                    const hydro::FlowSolution& solution,
                                    const std::optional<hydro::FlowSolution>& matrix);
 
-}  // namespace hydrodda::cli
+}  // namespace hydrodda::run
