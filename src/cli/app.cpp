@@ -6,6 +6,7 @@
 #include <spdlog/spdlog.h>
 
 #include "cli/commands.hpp"
+#include "cli/progress.hpp"
 #include "cli/version.hpp"
 
 namespace hydrodda::cli {
@@ -26,8 +27,28 @@ class SeverityPrefix : public spdlog::custom_flag_formatter {
   }
 };
 
+// Log lines go to stderr, as the progress line does: a live one still open is ended first.
+class AfterLiveLine : public spdlog::sinks::sink {
+ public:
+  explicit AfterLiveLine(std::shared_ptr<spdlog::sinks::sink> stderr_sink) : stderr_(std::move(stderr_sink)) {}
+  void log(const spdlog::details::log_msg& msg) override {
+    end_live_line();
+    stderr_->log(msg);
+  }
+  void flush() override { stderr_->flush(); }
+  void set_pattern(const std::string& pattern) override { stderr_->set_pattern(pattern); }
+  void set_formatter(std::unique_ptr<spdlog::formatter> formatter) override {
+    stderr_->set_formatter(std::move(formatter));
+  }
+
+ private:
+  std::shared_ptr<spdlog::sinks::sink> stderr_;
+};
+
+// The run layer logs through the default logger; the program decides where and how much.
 void configure_logging(Verbosity verbosity) {
-  auto logger = spdlog::stderr_color_mt("hydrodda");
+  auto logger = std::make_shared<spdlog::logger>(
+      "hydrodda", std::make_shared<AfterLiveLine>(std::make_shared<spdlog::sinks::stderr_color_sink_mt>()));
   auto formatter = std::make_unique<spdlog::pattern_formatter>();
   formatter->add_flag<SeverityPrefix>('*').set_pattern("%^%*%$%v");
   logger->set_formatter(std::move(formatter));

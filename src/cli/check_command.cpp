@@ -5,8 +5,8 @@
 
 #include "cli/app.hpp"
 #include "cli/commands.hpp"
-#include "run/model_building.hpp"
 #include "cli/scenario_loading.hpp"
+#include "run/run.hpp"
 #include "scenario/diagnostics.hpp"
 
 namespace hydrodda::cli {

@@ -7,6 +7,18 @@
 
 namespace hydrodda::cli {
 
+namespace {
+// One stderr, so one live line at most; written and ended on the thread that runs.
+bool live_line_open = false;
+}  // namespace
+
+void end_live_line() {
+  if (live_line_open) {
+    std::fputs("\n", stderr);
+    live_line_open = false;
+  }
+}
+
 Progress::Progress(Verbosity verbosity, bool terminal)
     : verbosity_(verbosity),
       terminal_(terminal),
@@ -25,7 +37,7 @@ void Progress::update(const std::string& text) {
   if (terminal_) {
     std::fputs(fmt::format("\r\033[K{}", line).c_str(), stderr);
     std::fflush(stderr);
-    line_open_ = true;
+    live_line_open = true;
     return;
   }
   const auto now = std::chrono::steady_clock::now();
@@ -35,11 +47,6 @@ void Progress::update(const std::string& text) {
   }
 }
 
-void Progress::finish() {
-  if (line_open_) {
-    std::fputs("\n", stderr);
-    line_open_ = false;
-  }
-}
+void Progress::finish() { end_live_line(); }
 
 }  // namespace hydrodda::cli

@@ -23,9 +23,12 @@ class Progress {
  private:
   Verbosity verbosity_;
   bool terminal_;
-  bool line_open_ = false;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_log_;
 };
+
+// Ends the live line, if one is open on stderr: the logger calls it before every message, so
+// that no log line continues a progress line.
+void end_live_line();
 
 }  // namespace hydrodda::cli

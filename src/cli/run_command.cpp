@@ -1,109 +1,83 @@
-#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 #include <unistd.h>
 
-#include <filesystem>
 #include <optional>
 #include <string>
 
 #include "cli/app.hpp"
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
-#include "cli/resumed_run.hpp"
-#include "cli/runs.hpp"
 #include "cli/scenario_loading.hpp"
 #include "output/run_folder.hpp"
+#include "run/resumed_run.hpp"
+#include "run/run.hpp"
 #include "scenario/diagnostics.hpp"
 
 namespace hydrodda::cli {
 
 namespace {
 
-void write_summary(const output::RunFolder& folder, const output::RunSummary& summary) {
-  folder.write("summary.json", output::format_summary(summary));
+// The run folder to continue (run --resume DIR), its scenario read and logged as a new run's.
+std::optional<run::ResumedRun> open_resumed_run(const std::filesystem::path& directory) {
+  run::SavedRun saved = run::read_saved_run(directory);
+  // Parsed as the original file, so that relative paths (mesh.file) resolve as they did.
+  std::optional<scenario::Scenario> scenario = load_scenario_text(saved.scenario_text, saved.checkpoint.scenario_file);
+  if (!scenario) return std::nullopt;
+  run::check_resumable(directory, *scenario, saved.checkpoint);
+  return run::ResumedRun{directory, std::move(*scenario), std::move(saved.scenario_text), std::move(saved.checkpoint)};
 }
 
-// A run that stopped: summary.json says so (converged = false, what failed), exit code 1.
-int report_failure(const output::RunFolder& folder, Progress& progress, const std::string& what,
-                   output::RunSummary summary) {
-  progress.finish();
-  summary.converged = false;
-  summary.status = "failed";
-  summary.message = what;
-  write_summary(folder, summary);
-  spdlog::error("{}; the last good state is in {}", what, folder.path().string());
+// The exit code of a run that went as far as running, and the line that says how it ended.
+int report(const run::RunResult& result) {
+  const std::string folder = result.folder.string();
+  switch (result.status) {
+    case run::RunStatus::stopped:
+      spdlog::info("{}; continue with: hydrodda run --resume {}", result.message, folder);
+      return kSuccess;
+    case run::RunStatus::finished:
+      spdlog::info("{}; results in {}", result.converged ? "finished" : "not converged", folder);
+      return kSuccess;
+    case run::RunStatus::interrupted:
+    case run::RunStatus::failed:
+      break;
+  }
+  spdlog::error("{}; the last good state is in {}", result.message, folder);
   return kRunFailed;
 }
 
 }  // namespace
 
 int run_command(const RunOptions& options) {
-  // The scenario, its text and the folder: a new run's, or those of the run to continue.
-  std::optional<ResumedRun> resumed;
-  std::optional<scenario::Scenario> loaded;
-  std::string scenario_text;
-  std::filesystem::path directory;
-  auto policy = options.overwrite ? output::ExistingFolder::Overwrite : output::ExistingFolder::Refuse;
-  if (options.resume) {
-    resumed = open_resumed_run(*options.resume);
-    if (!resumed) return kBadInput;
-    directory = *options.resume;
-    policy = output::ExistingFolder::Overwrite;  // its own files, continued
-  } else {
-    loaded = load_scenario(options.scenario);
-    if (!loaded) return kBadInput;
-    const std::optional<std::string> text = read_text_file(options.scenario);
-    if (!text) {
-      spdlog::error("cannot read {}", options.scenario.string());
-      return kBadInput;
-    }
-    scenario_text = *text;
-    directory = options.output.value_or(loaded->output.directory);
-  }
-  const scenario::Scenario& scenario = resumed ? resumed->scenario : *loaded;
-  if (options.stop_after && !(scenario.mechanics && scenario.flow)) {
-    spdlog::error("--stop-after: only coupled runs ([mechanics] and [flow]) stop after an iteration");
-    return kBadInput;
-  }
-  std::error_code ec;
-  const bool folder_is_new = !std::filesystem::exists(directory, ec);
-  std::optional<output::RunFolder> folder;
+  install_interrupt_handlers();
+  Progress progress(options.verbosity, ::isatty(STDERR_FILENO) == 1);
+  const run::Callbacks callbacks{[&](const run::ProgressReport& r) { progress.update(r.message); },
+                                 interrupt_requested};
   try {
-    folder.emplace(directory, policy);
+    std::optional<run::RunResult> result;
+    if (options.resume) {
+      const std::optional<run::ResumedRun> resumed = open_resumed_run(*options.resume);
+      if (!resumed) return kBadInput;
+      result = run::resume(*resumed, options.stop_after, callbacks);
+    } else {
+      const std::optional<scenario::Scenario> scenario = load_scenario(options.scenario);
+      if (!scenario) return kBadInput;
+      const run::RunOptions run_options{options.output.value_or(scenario->output.directory), options.overwrite,
+                                        options.stop_after, std::nullopt};
+      result = run::run(*scenario, run_options, callbacks);
+    }
+    progress.finish();
+    return report(*result);
+  } catch (const scenario::ScenarioError& e) {
+    // Found while building the model: bad input, and the run left no folder behind.
+    progress.finish();
+    for (const scenario::Diagnostic& d : e.diagnostics()) spdlog::error("{}", d.format());
+    return kBadInput;
+  } catch (const run::InputError& e) {
+    spdlog::error("{}", e.what());
+    return kBadInput;
   } catch (const output::RunFolderError& e) {
     spdlog::error("{}", e.what());
     return kBadInput;
-  }
-  install_interrupt_handlers();
-  Progress progress(options.verbosity, ::isatty(STDERR_FILENO) == 1);
-  const RunContext context{scenario, *folder, progress, resumed ? resumed->scenario_text : scenario_text,
-                           resumed ? &resumed->checkpoint : nullptr, options.stop_after};
-  try {
-    const output::RunSummary summary = scenario.mechanics && scenario.flow ? run_coupled(context)
-                                       : scenario.mechanics               ? run_mechanics(context)
-                                                                          : run_flow(context);
-    write_summary(*folder, summary);
-    progress.finish();
-    if (summary.status == "stopped")
-      spdlog::info("{}; continue with: hydrodda run --resume {}", summary.message, folder->path().string());
-    else
-      spdlog::info("{}; results in {}", summary.converged ? "finished" : "not converged", folder->path().string());
-    return kSuccess;
-  } catch (const scenario::ScenarioError& e) {
-    // Found while building the model: still bad input, and bad input leaves no run folder
-    // behind. Nothing has been written by then; a folder this run made is removed.
-    progress.finish();
-    for (const scenario::Diagnostic& d : e.diagnostics()) spdlog::error("{}", d.format());
-    if (folder_is_new) std::filesystem::remove_all(directory, ec);
-    return kBadInput;
-  } catch (const RunFailure& failure) {
-    return report_failure(*folder, progress, failure.what(), failure.summary());
-  } catch (const std::exception& e) {
-    // A failure before any result exists (meshing, a singular system): reported, never hidden.
-    output::RunSummary summary;
-    summary.title = scenario.title;
-    summary.scenario = scenario.file.string();
-    return report_failure(*folder, progress, e.what(), summary);
   }
 }
 

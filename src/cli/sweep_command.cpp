@@ -14,11 +14,11 @@
 #include "cli/child_processes.hpp"
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
-#include "run/model_building.hpp"
 #include "cli/scenario_loading.hpp"
 #include "cli/sweep_plan.hpp"
 #include "cli/sweep_results.hpp"
 #include "output/run_folder.hpp"
+#include "run/run.hpp"
 #include "scenario/diagnostics.hpp"
 #include "scenario/reader.hpp"
 

@@ -166,14 +166,6 @@ std::vector<double> compute_matrix_permeability(const Scenario& s, const mesh::T
   return k;
 }
 
-void check_model(const Scenario& s) {
-  if (s.mechanics) build_mechanics_model(s, build_blocks(s));
-  if (s.mesh && s.mesh->file) {
-    const mesh::TriangleMesh mesh = read_mesh_file(s);
-    spdlog::debug("mesh.file: {} nodes, {} triangles", mesh.node_count(), mesh.triangle_count());
-  }
-}
-
 hydro::DarcyProblem build_flow_problem(const scenario::FlowDefinition& f) {
   hydro::DarcyProblem problem;
   problem.fluid.density = f.fluid_density;

@@ -47,10 +47,6 @@ std::vector<std::optional<double>> find_fixed_permeability(const scenario::Scena
 // a flow region fixes the permeability.
 std::vector<double> compute_matrix_permeability(const scenario::Scenario& scenario, const mesh::TriangleMesh& mesh);
 
-// What only building the model shows (a fixed point in no block, a boundary the mesh file
-// does not name), short of meshing and running: throws ScenarioError listing it.
-void check_model(const scenario::Scenario& scenario);
-
 hydro::DarcyProblem build_flow_problem(const scenario::FlowDefinition& flow);
 
 // Total simulated time of a mechanics run: end_time, or steps × time_step.

@@ -1,24 +1,19 @@
-#include <fmt/format.h>
+#include "run/flow_model.hpp"
+
 #include <spdlog/spdlog.h>
 
 #include <chrono>
+#include <stdexcept>
 
-#include "run/figures.hpp"
-#include "run/paraview_output.hpp"
 #include "run/model_building.hpp"
 #include "run/run_summary.hpp"
-#include "cli/runs.hpp"
 #include "coupling/local_aperture.hpp"
 #include "coupling/permeability_model.hpp"
 #include "coupling/porosity.hpp"
 #include "hydro/darcy_solver.hpp"
-#include "hydro/region_flow.hpp"
-#include "mesh/mesh_request.hpp"
 #include "mesh/triangle_mesh.hpp"
 
-namespace hydrodda::cli {
-
-using namespace hydrodda::run;  // the run layer, while the runs still live here
+namespace hydrodda::run {
 
 namespace {
 
@@ -32,7 +27,7 @@ double seconds_since(Clock::time_point start) {
 // k per triangle: the last region containing it that fixes a permeability (later regions take
 // precedence, as in the mesh's region tags); elsewhere from the porosity the blocks leave open.
 std::vector<double> assign_permeability(const scenario::Scenario& s, const mesh::TriangleMesh& mesh,
-                                        const std::vector<dda::BlockDefinition>& blocks) {
+                                        const std::vector<geometry::Polygon>& polygons) {
   const std::vector<std::optional<double>> fixed = find_fixed_permeability(s, mesh);
   const bool all_fixed = std::all_of(fixed.begin(), fixed.end(), [](const auto& k) { return k.has_value(); });
   std::vector<double> k(mesh.triangle_count(), 0.0);
@@ -41,8 +36,6 @@ std::vector<double> assign_permeability(const scenario::Scenario& s, const mesh:
     return k;
   }
   const scenario::MaterialDefinition& material = s.materials.front();
-  std::vector<geometry::Polygon> polygons;
-  for (const auto& b : blocks) polygons.push_back(b.polygon);
   const coupling::PorosityMapper mapper(mesh.nodes, mesh.triangles);
   coupling::PorosityField porosity;
   if (polygons.empty()) {
@@ -68,38 +61,35 @@ std::vector<double> assign_permeability(const scenario::Scenario& s, const mesh:
 
 }  // namespace
 
-output::RunSummary run_flow(const RunContext& context) {
-  const scenario::Scenario& s = context.scenario;
-  output::RunSummary summary;
-  summary.title = s.title;
-  summary.scenario = s.file.string();
-
+FlowModel::FlowModel(const scenario::Scenario& scenario) : scenario_(scenario) {
   auto start = Clock::now();
-  const mesh::TriangleMesh mesh = build_mesh(s);
-  summary.timings.push_back({"mesh", seconds_since(start)});
-  spdlog::info("mesh: {} nodes, {} triangles", mesh.node_count(), mesh.triangle_count());
+  mesh_ = build_mesh(scenario_);
+  timings_.push_back({"mesh", seconds_since(start)});
+  spdlog::info("mesh: {} nodes, {} triangles", mesh_.node_count(), mesh_.triangle_count());
 
   start = Clock::now();
-  const std::vector<dda::BlockDefinition> blocks = build_blocks(s);
-  const std::vector<double> permeability = assign_permeability(s, mesh, blocks);
-  summary.timings.push_back({"permeability", seconds_since(start)});
+  for (const dda::BlockDefinition& b : build_blocks(scenario_)) blocks_.push_back(b.polygon);
+  permeability_ = assign_permeability(scenario_, mesh_, blocks_);
+  timings_.push_back({"permeability", seconds_since(start)});
+}
 
-  start = Clock::now();
-  hydro::DarcySolver solver(mesh, build_flow_problem(*s.flow));
-  const hydro::FlowSolution solution = solver.solve(permeability);
-  summary.timings.push_back({"flow", seconds_since(start)});
-  context.progress.update(fmt::format("flow solved: balance error {:.2e}", solution.balance_error));
-  context.progress.finish();
+const hydro::FlowSolution& FlowModel::solve() {
+  const auto start = Clock::now();
+  hydro::DarcySolver solver(mesh_, build_flow_problem(*scenario_.flow));
+  solution_ = solver.solve(permeability_);
+  const double seconds = seconds_since(start);
+  if (timings_.back().name == "flow") timings_.back().value += seconds;
+  else timings_.push_back({"flow", seconds});
+  return solution_;
+}
 
-  summary.flow = summarise_flow(s, mesh, solution, solve_matrix_flow(s, mesh));
-  std::vector<geometry::Polygon> polygons;
-  for (const auto& b : blocks) polygons.push_back(b.polygon);
-  const std::vector<double> no_porosity;
-  draw_figures(s, context.folder, {mesh, solution, no_porosity, permeability, polygons});
-  ParaviewOutput(context.folder).write_fluid(0, 0.0, mesh, solution, no_porosity, permeability);
-  summary.converged = true;  // one linear solve: nothing to iterate
-  summary.iterations = 1;
+output::RunSummary FlowModel::summary() const {
+  if (solution_.head.empty()) throw std::logic_error("FlowModel::summary: nothing has been solved yet");
+  output::RunSummary summary;
+  summary.title = scenario_.title;
+  summary.scenario = scenario_.file.string();
+  summary.flow = summarise_flow(scenario_, mesh_, solution_, solve_matrix_flow(scenario_, mesh_));
   return summary;
 }
 
-}  // namespace hydrodda::cli
+}  // namespace hydrodda::run

@@ -1,19 +1,14 @@
+
 #include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
 #include <chrono>
 
-#include "cli/interrupt.hpp"
+#include "run/mechanics_model.hpp"
 #include "run/paraview_output.hpp"
-#include "run/model_building.hpp"
-#include "run/run_summary.hpp"
-#include "cli/runs.hpp"
-#include "dda/system.hpp"
+#include "run/runs.hpp"
 #include "output/csv_table.hpp"
 
-namespace hydrodda::cli {
-
-using namespace hydrodda::run;  // the run layer, while the runs still live here
+namespace hydrodda::run {
 
 namespace {
 
@@ -27,9 +22,8 @@ output::RunSummary run_mechanics(const RunContext& context) {
   const scenario::MechanicsDefinition& m = *s.mechanics;
   const auto start = std::chrono::steady_clock::now();
 
-  dda::System system(build_mechanics_model(s, build_blocks(s)));
-  spdlog::info("mechanics: {} blocks, penalty {:.3g} N/m, allowed step displacement {:.3g} m",
-               system.block_count(), system.penalty(), system.allowed_step_displacement());
+  MechanicsModel model(s);
+  const dda::System& system = model.system();
 
   CsvTable history({"step", "time", "time_step", "open_close_iterations", "contacts",
                     "max_displacement", "max_penetration"});
@@ -42,24 +36,16 @@ output::RunSummary run_mechanics(const RunContext& context) {
   ParaviewOutput paraview(context.folder);
   paraview.write_blocks(0, 0.0, system);
   long long last_written = 0;
-  const double end_time = mechanics_duration(m);
-  const int max_steps = m.steps.value_or(0);
-  long long step = 0;
-  // Time-step control may shorten steps, so a run by `end_time` goes on until that time;
-  // a run by `steps` takes exactly that many.
-  const auto more = [&] {
-    return m.steps ? step < max_steps : system.time() < end_time * (1.0 - 1e-12);
-  };
   try {
-    while (more()) {
-      if (interrupt_requested()) {
+    while (!model.finished()) {
+      if (context.stop_requested()) {
         write_tables();
-        output::RunSummary summary = summarise_mechanics(s, system);
-        summary.iterations = static_cast<int>(step);
-        throw RunFailure(fmt::format("interrupted at step {} (t = {:g} s)", step, system.time()), summary);
+        throw RunFailure(RunStatus::interrupted,
+                         fmt::format("interrupted at step {} (t = {:g} s)", model.steps(), system.time()),
+                         model.summary());
       }
-      const dda::StepReport r = m.steps ? system.step() : system.run_until(std::min(end_time, system.time() + m.time_step));
-      ++step;
+      const dda::StepReport r = model.step();
+      const long long step = model.steps();
       history.add_row({CsvTable::cell(step), CsvTable::cell(r.time), CsvTable::cell(r.time_step),
                        CsvTable::cell(static_cast<long long>(r.open_close_iterations)),
                        CsvTable::cell(static_cast<long long>(r.contacts)), CsvTable::cell(r.max_displacement),
@@ -76,29 +62,34 @@ output::RunSummary run_mechanics(const RunContext& context) {
         paraview.write_blocks(static_cast<int>(step), r.time, system);
         last_written = step;
       }
-      context.progress.update(fmt::format("step {} t = {:.4g} s, {} contacts, max step displacement {:.3g} m",
-                                          step, r.time, r.contacts, r.max_displacement));
+      ProgressReport report;
+      report.kind = ProgressReport::Kind::mechanics_step;
+      report.count = step;
+      report.time = r.time;
+      report.contacts = r.contacts;
+      report.max_displacement = r.max_displacement;
+      report.message = fmt::format("step {} t = {:.4g} s, {} contacts, max step displacement {:.3g} m", step,
+                                   r.time, r.contacts, r.max_displacement);
+      context.report(report);
     }
   } catch (const RunFailure&) {
     throw;
   } catch (const std::exception& e) {
     write_tables();
-    output::RunSummary summary = summarise_mechanics(s, system);
-    summary.iterations = static_cast<int>(step);
-    throw RunFailure(fmt::format("mechanics failed at step {} (t = {:g} s): {}", step + 1, system.time(), e.what()),
-                     summary);
+    throw RunFailure(RunStatus::failed,
+                     fmt::format("mechanics failed at step {} (t = {:g} s): {}", model.steps() + 1, system.time(),
+                                 e.what()),
+                     model.summary());
   }
   write_tables();
-  if (last_written != step) paraview.write_blocks(static_cast<int>(step), system.time(), system);
-  context.progress.finish();
+  if (last_written != model.steps()) paraview.write_blocks(static_cast<int>(model.steps()), system.time(), system);
 
-  output::RunSummary summary = summarise_mechanics(s, system);
+  output::RunSummary summary = model.summary();
   // Mechanics alone has no coupling loop: `converged` says the run reached its end.
   summary.converged = true;
-  summary.iterations = static_cast<int>(step);
   summary.timings.push_back(
       {"mechanics", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
   return summary;
 }
 
-}  // namespace hydrodda::cli
+}  // namespace hydrodda::run

@@ -1,30 +1,20 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include <chrono>
 #include <filesystem>
 #include <utility>
 
+#include "run/coupled_model.hpp"
 #include "run/figures.hpp"
-#include "cli/interrupt.hpp"
 #include "run/paraview_output.hpp"
-#include "run/model_building.hpp"
-#include "run/run_summary.hpp"
-#include "cli/runs.hpp"
-#include "coupling/staggered_loop.hpp"
-#include "dda/system.hpp"
-#include "hydro/region_flow.hpp"
+#include "run/runs.hpp"
 #include "output/csv_table.hpp"
 
-namespace hydrodda::cli {
-
-using namespace hydrodda::run;  // the run layer, while the runs still live here
+namespace hydrodda::run {
 
 namespace {
 
-using geometry::Point;
 using output::CsvTable;
-using Clock = std::chrono::steady_clock;
 
 // The changes of every pass from history.csv's rows (columns iteration, time, head_change,
 // displacement_change, ...), those of a resumed run's earlier passes included.
@@ -39,30 +29,27 @@ ConvergenceHistory read_convergence(const std::vector<std::vector<std::string>>&
   return h;
 }
 
+ProgressReport report_pass(const coupling::PassReport& r) {
+  ProgressReport report;
+  report.kind = ProgressReport::Kind::coupling_pass;
+  report.count = r.iteration;
+  report.time = r.time;
+  report.head_change = r.head_change;
+  report.displacement_change = r.displacement_change;
+  report.message = fmt::format("iteration {}: head change {:.2e}, displacement change {:.2e}", r.iteration,
+                               r.head_change, r.displacement_change);
+  return report;
+}
+
 }  // namespace
 
 output::RunSummary run_coupled(const RunContext& context) {
   const scenario::Scenario& s = context.scenario;
-  double mesh_seconds = 0.0;
-  auto start = Clock::now();
-  const mesh::TriangleMesh mesh = build_mesh(s);
-  mesh_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  spdlog::info("mesh: {} nodes, {} triangles", mesh.node_count(), mesh.triangle_count());
-
-  dda::System system(build_mechanics_model(s, build_blocks(s)));
-  spdlog::info("mechanics: {} blocks", system.block_count());
-
-  coupling::LoopSettings settings;
-  settings.tolerance = s.coupling.tolerance;
-  settings.relaxation = s.coupling.relaxation;
-  settings.steps_per_pass = s.mechanics->steps.value_or(
-      static_cast<int>(std::ceil(*s.mechanics->end_time / s.mechanics->time_step)));
-  settings.permeability = make_permeability_model(s);
-  settings.fixed_permeability = find_fixed_permeability(s, mesh);
-  settings.stop_requested = interrupt_requested;
-  coupling::StaggeredLoop loop(mesh, build_flow_problem(*s.flow), system, settings);
-  // The unfractured case does not change between passes: solved once.
-  const std::optional<hydro::FlowSolution> matrix_flow = solve_matrix_flow(s, mesh);
+  CoupledModel model(s);
+  model.set_stop_request(context.callbacks.stop_requested);
+  const mesh::TriangleMesh& mesh = model.mesh();
+  const dda::System& system = model.mechanics();
+  const coupling::StaggeredLoop& loop = model.loop();
 
   std::vector<std::string> columns{"iteration", "time", "head_change", "displacement_change",
                                    "largest_opening", "mean_porosity", "max_permeability"};
@@ -73,24 +60,15 @@ output::RunSummary run_coupled(const RunContext& context) {
   output::RunCheckpoint checkpoint;
   checkpoint.scenario_hash = output::hash_text(context.scenario_text);
   checkpoint.scenario_file = std::filesystem::absolute(s.file).string();
-  double porosity_s = 0, flow_s = 0, forces_s = 0, mechanics_s = 0;
   ParaviewOutput paraview(context.folder);
   if (context.resume) {
     const output::RunCheckpoint& saved = *context.resume;
-    system.import_state(saved.mechanics);
-    loop.import_state(saved.coupling);
-    checkpoint.mechanics = saved.mechanics;
-    checkpoint.coupling = saved.coupling;
+    model.import_state({saved.mechanics, saved.coupling});
     checkpoint.history = saved.history;
     checkpoint.written_iterations = saved.written_iterations;
     for (const std::vector<std::string>& row : saved.history) history.add_row(row);
     paraview.list_written(saved.written_iterations);
-    for (const auto& [phase, seconds] : saved.timings) {
-      for (auto [name, total] : {std::pair{"mesh", &mesh_seconds}, std::pair{"porosity", &porosity_s},
-                                 std::pair{"flow", &flow_s}, std::pair{"forces", &forces_s},
-                                 std::pair{"mechanics", &mechanics_s}})
-        if (phase == name) *total += seconds;
-    }
+    model.add_timings(saved.timings);
     spdlog::info("resuming after coupling iteration {}", loop.iterations());
   } else {
     context.folder.write("scenario.toml", context.scenario_text);
@@ -103,41 +81,32 @@ output::RunSummary run_coupled(const RunContext& context) {
   };
   int last_written = checkpoint.written_iterations.empty() ? 0 : checkpoint.written_iterations.back();
   bool converged = false;
-  bool stopped = false;  // by --stop-after
+  bool stopped = false;  // by stop_after
   const auto current_summary = [&] {
-    output::RunSummary summary = summarise_mechanics(s, system);
-    if (loop.has_flow()) summary.flow = summarise_flow(s, mesh, loop.flow(), matrix_flow);
-    summary.iterations = loop.iterations();
-    summary.timings = {{"mesh", mesh_seconds}, {"porosity", porosity_s}, {"flow", flow_s},
-                       {"forces", forces_s}, {"mechanics", mechanics_s}};
+    output::RunSummary summary = model.summary();
+    summary.timings = model.timings();
     return summary;
   };
-  // After every finished pass: the checkpoint, then the engines continue from exactly what it
-  // holds, as a resumed run does (importing also restarts the DDA linear solver, whose reused
-  // factors would otherwise carry round-off history that no checkpoint holds).
+  // After every finished pass: the checkpoint of the state the model continues from
+  // (CoupledModel::run_pass), which a resumed run continues from too.
   const auto save_checkpoint = [&] {
     checkpoint.converged = converged;
-    checkpoint.timings = {{"mesh", mesh_seconds}, {"porosity", porosity_s}, {"flow", flow_s},
-                          {"forces", forces_s}, {"mechanics", mechanics_s}};
-    checkpoint.mechanics = system.export_state();
-    checkpoint.coupling = loop.export_state();
+    checkpoint.timings.clear();
+    for (const auto& [phase, seconds] : model.timings()) checkpoint.timings.emplace_back(phase, seconds);
+    checkpoint.mechanics = model.export_state().mechanics;
+    checkpoint.coupling = model.export_state().coupling;
     context.folder.write("checkpoint.bin", output::encode_checkpoint(checkpoint));
-    system.import_state(checkpoint.mechanics);
   };
-  const dda::SystemState initial_mechanics = system.export_state();
   try {
     for (int k = loop.iterations(); k < s.coupling.max_iterations && !converged; ++k) {
-      if (interrupt_requested())
-        throw RunFailure(fmt::format("interrupted after coupling iteration {}", loop.iterations()), current_summary());
+      if (context.stop_requested())
+        throw RunFailure(RunStatus::interrupted, fmt::format("interrupted after coupling iteration {}", loop.iterations()),
+                         current_summary());
       if (context.stop_after && loop.iterations() >= *context.stop_after) {
         stopped = true;
         break;
       }
-      const coupling::PassReport r = loop.run_pass();
-      porosity_s += r.porosity_seconds;
-      flow_s += r.flow_seconds;
-      forces_s += r.forces_seconds;
-      mechanics_s += r.mechanics_seconds;
+      const coupling::PassReport r = model.run_pass();
       std::vector<std::string> row{CsvTable::cell(static_cast<long long>(r.iteration)), CsvTable::cell(r.time),
                                    CsvTable::cell(r.head_change), CsvTable::cell(r.displacement_change),
                                    CsvTable::cell(r.largest_opening), CsvTable::cell(r.mean_porosity),
@@ -147,8 +116,7 @@ output::RunSummary run_coupled(const RunContext& context) {
       history.add_row(row);
       checkpoint.history.push_back(row);
       context.folder.write("history.csv", history.text());
-      context.progress.update(fmt::format("iteration {}: head change {:.2e}, displacement change {:.2e}",
-                                          r.iteration, r.head_change, r.displacement_change));
+      context.report(report_pass(r));
       spdlog::debug("iteration {}: head change {:.3e}, displacement change {:.3e}", r.iteration, r.head_change,
                     r.displacement_change);
       converged = r.converged;
@@ -158,7 +126,8 @@ output::RunSummary run_coupled(const RunContext& context) {
       }
       save_checkpoint();
       if (r.diverging) {
-        throw RunFailure(fmt::format("the coupling loop diverges: its change grew {} passes in a row, to a head "
+        throw RunFailure(RunStatus::failed,
+                         fmt::format("the coupling loop diverges: its change grew {} passes in a row, to a head "
                                      "change of {:.3e} and a displacement change of {:.3e} at coupling iteration {}",
                                      r.growing_passes, r.head_change, r.displacement_change, r.iteration),
                          current_summary());
@@ -172,37 +141,30 @@ output::RunSummary run_coupled(const RunContext& context) {
   } catch (const RunFailure&) {
     throw;
   } catch (const coupling::PassInterrupted& e) {
-    // Back to the last finished pass, the state the run folder and the checkpoint hold (before
-    // the first pass: the blocks as built), so that summary.json describes it.
-    if (loop.iterations() > 0) {
-      system.import_state(checkpoint.mechanics);
-      loop.import_state(checkpoint.coupling);
-    } else {
-      system.import_state(initial_mechanics);
-    }
-    throw RunFailure(fmt::format("interrupted: {}; the results are those of coupling iteration {}", e.what(),
+    // The model is back at the last finished pass, the state the run folder and the checkpoint
+    // hold (before the first pass: the blocks as built), so that summary.json describes it.
+    throw RunFailure(RunStatus::interrupted,
+                     fmt::format("interrupted: {}; the results are those of coupling iteration {}", e.what(),
                                  loop.iterations()),
                      current_summary());
   } catch (const std::exception& e) {
-    throw RunFailure(fmt::format("coupling iteration {} failed: {}", loop.iterations() + 1, e.what()), current_summary());
+    throw RunFailure(RunStatus::failed, fmt::format("coupling iteration {} failed: {}", loop.iterations() + 1, e.what()),
+                     current_summary());
   }
-  context.progress.finish();
   if (stopped) {
     output::RunSummary summary = current_summary();
     summary.status = "stopped";
     summary.message = fmt::format("stopped after coupling iteration {} (--stop-after)", loop.iterations());
     return summary;
   }
-  std::vector<geometry::Polygon> blocks;
-  for (int b = 0; b < system.block_count(); ++b) blocks.push_back(system.polygon(b));
-  draw_figures(s, context.folder, {mesh, loop.flow(), loop.porosity().porosity, loop.permeability(), blocks});
-  draw_convergence(s, context.folder, read_convergence(checkpoint.history, settings.tolerance));
+  draw_figures(s, context.folder, {mesh, loop.flow(), loop.porosity().porosity, loop.permeability(), model.block_polygons()});
+  draw_convergence(s, context.folder, read_convergence(checkpoint.history, s.coupling.tolerance));
   output::RunSummary summary = current_summary();
   summary.converged = converged;
   if (!converged)
     spdlog::warn("the coupling loop did not converge in {} iterations (tolerance {:g})", s.coupling.max_iterations,
-                 settings.tolerance);
+                 s.coupling.tolerance);
   return summary;
 }
 
-}  // namespace hydrodda::cli
+}  // namespace hydrodda::run

@@ -1,0 +1,95 @@
+#include "run/coupled_model.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <cmath>
+#include <utility>
+
+#include "run/model_building.hpp"
+#include "run/run_summary.hpp"
+
+namespace hydrodda::run {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+}  // namespace
+
+CoupledModel::CoupledModel(const scenario::Scenario& scenario) : scenario_(scenario) {
+  const scenario::Scenario& s = scenario_;
+  const auto start = Clock::now();
+  mesh_ = build_mesh(s);
+  mesh_seconds_ = std::chrono::duration<double>(Clock::now() - start).count();
+  spdlog::info("mesh: {} nodes, {} triangles", mesh_.node_count(), mesh_.triangle_count());
+
+  system_.emplace(build_mechanics_model(s, build_blocks(s)));
+  spdlog::info("mechanics: {} blocks", system_->block_count());
+
+  coupling::LoopSettings settings;
+  settings.tolerance = s.coupling.tolerance;
+  settings.relaxation = s.coupling.relaxation;
+  settings.steps_per_pass = s.mechanics->steps.value_or(
+      static_cast<int>(std::ceil(*s.mechanics->end_time / s.mechanics->time_step)));
+  settings.permeability = make_permeability_model(s);
+  settings.fixed_permeability = find_fixed_permeability(s, mesh_);
+  settings.stop_requested = [this] { return stop_requested_ && stop_requested_(); };
+  loop_.emplace(mesh_, build_flow_problem(*s.flow), *system_, std::move(settings));
+  // The unfractured case does not change between passes: solved once.
+  matrix_flow_ = solve_matrix_flow(s, mesh_);
+  last_pass_ = {system_->export_state(), loop_->export_state()};
+}
+
+coupling::PassReport CoupledModel::run_pass() {
+  coupling::PassReport r;
+  try {
+    r = loop_->run_pass();
+  } catch (const coupling::PassInterrupted&) {
+    // Back to the last finished pass, the state a run folder and its checkpoint hold (before
+    // the first pass: the blocks as built), so that a summary describes it.
+    system_->import_state(last_pass_.mechanics);
+    if (loop_->iterations() > 0) loop_->import_state(last_pass_.coupling);
+    throw;
+  }
+  porosity_seconds_ += r.porosity_seconds;
+  flow_seconds_ += r.flow_seconds;
+  forces_seconds_ += r.forces_seconds;
+  mechanics_seconds_ += r.mechanics_seconds;
+  last_pass_ = {system_->export_state(), loop_->export_state()};
+  system_->import_state(last_pass_.mechanics);
+  return r;
+}
+
+void CoupledModel::import_state(const CoupledState& state) {
+  system_->import_state(state.mechanics);
+  loop_->import_state(state.coupling);
+  last_pass_ = state;
+}
+
+std::vector<geometry::Polygon> CoupledModel::block_polygons() const {
+  std::vector<geometry::Polygon> blocks;
+  for (int b = 0; b < system_->block_count(); ++b) blocks.push_back(system_->polygon(b));
+  return blocks;
+}
+
+output::RunSummary CoupledModel::summary() const {
+  output::RunSummary summary = summarise_mechanics(scenario_, *system_);
+  if (loop_->has_flow()) summary.flow = summarise_flow(scenario_, mesh_, loop_->flow(), matrix_flow_);
+  summary.iterations = loop_->iterations();
+  return summary;
+}
+
+std::vector<output::NamedValue> CoupledModel::timings() const {
+  return {{"mesh", mesh_seconds_}, {"porosity", porosity_seconds_}, {"flow", flow_seconds_},
+          {"forces", forces_seconds_}, {"mechanics", mechanics_seconds_}};
+}
+
+void CoupledModel::add_timings(const std::vector<std::pair<std::string, double>>& earlier) {
+  for (const auto& [phase, seconds] : earlier) {
+    for (auto [name, total] : {std::pair{"mesh", &mesh_seconds_}, std::pair{"porosity", &porosity_seconds_},
+                               std::pair{"flow", &flow_seconds_}, std::pair{"forces", &forces_seconds_},
+                               std::pair{"mechanics", &mechanics_seconds_}})
+      if (phase == name) *total += seconds;
+  }
+}
+
+}  // namespace hydrodda::run

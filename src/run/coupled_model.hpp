@@ -1,0 +1,81 @@
+#pragma once
+// A coupled model: the fixed fluid mesh, the DDA system and the staggered loop that joins them,
+// owned together and advanced one coupling pass at a time. It writes no file; run() drives it
+// into a run folder (history, ParaView series, checkpoint after every pass).
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "coupling/staggered_loop.hpp"
+#include "dda/system.hpp"
+#include "hydro/flow_solution.hpp"
+#include "mesh/triangle_mesh.hpp"
+#include "output/summary.hpp"
+#include "scenario/scenario.hpp"
+
+namespace hydrodda::run {
+
+// Everything a later pass reads, as plain data: what checkpoint.bin holds of the engines.
+struct CoupledState {
+  dda::SystemState mechanics;
+  coupling::LoopState coupling;
+};
+
+class CoupledModel {
+ public:
+  // Meshes the domain (or reads mesh.file), builds the DDA system and the loop, and solves the
+  // unfractured case once (the reference of the regions' normalised conductivity). Throws
+  // scenario::ScenarioError for what only building shows.
+  explicit CoupledModel(const scenario::Scenario& scenario);
+  // The loop keeps references to the mesh and the system: the model stays where it was built.
+  CoupledModel(const CoupledModel&) = delete;
+  CoupledModel& operator=(const CoupledModel&) = delete;
+
+  // One pass: porosity → permeability → flow → pressures → vertex forces → DDA steps. After it
+  // the engines continue from their state as exported (export_state), exactly as a run resumed
+  // there from a checkpoint does: importing restarts the DDA linear solver, whose reused factors
+  // would otherwise carry round-off history that no checkpoint holds. A pass the stop request
+  // abandons (coupling::PassInterrupted, rethrown) leaves the model at its last finished pass,
+  // or as built. Any other failure leaves the engines where it happened.
+  coupling::PassReport run_pass();
+  // Asked before every DDA step of a pass; unset: never.
+  void set_stop_request(std::function<bool()> stop_requested) { stop_requested_ = std::move(stop_requested); }
+
+  // The state after the last finished pass (as built before the first), and its restoration
+  // into a model built from the same scenario (continuing a run); throws std::invalid_argument
+  // when it does not fit.
+  const CoupledState& export_state() const { return last_pass_; }
+  void import_state(const CoupledState& state);
+
+  int iterations() const { return loop_->iterations(); }
+  const scenario::Scenario& scenario() const { return scenario_; }
+  const mesh::TriangleMesh& mesh() const { return mesh_; }
+  const dda::System& mechanics() const { return *system_; }
+  const coupling::StaggeredLoop& loop() const { return *loop_; }
+  std::vector<geometry::Polygon> block_polygons() const;
+
+  // summary.json's blocks, measured points and flow (once a pass has solved it), iterations =
+  // passes finished; no timings.
+  output::RunSummary summary() const;
+  // Seconds per phase: mesh, porosity, flow, forces, mechanics.
+  std::vector<output::NamedValue> timings() const;
+  // Adds the seconds of a run's earlier part (as its checkpoint holds them) to the phases of the
+  // same names.
+  void add_timings(const std::vector<std::pair<std::string, double>>& earlier);
+
+ private:
+  scenario::Scenario scenario_;
+  double mesh_seconds_ = 0.0, porosity_seconds_ = 0.0, flow_seconds_ = 0.0, forces_seconds_ = 0.0,
+         mechanics_seconds_ = 0.0;
+  mesh::TriangleMesh mesh_;
+  std::optional<dda::System> system_;
+  std::optional<coupling::StaggeredLoop> loop_;
+  std::optional<hydro::FlowSolution> matrix_flow_;  // the unfractured case; none without regions
+  std::function<bool()> stop_requested_;
+  CoupledState last_pass_;
+};
+
+}  // namespace hydrodda::run

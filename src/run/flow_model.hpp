@@ -1,0 +1,44 @@
+#pragma once
+// A flow-only model: the fixed mesh, the blocks' geometry and the permeability it gives, and
+// one steady Darcy solve. It writes no file; run() drives it into a run folder.
+
+#include <vector>
+
+#include "geometry/polygon.hpp"
+#include "hydro/flow_solution.hpp"
+#include "mesh/triangle_mesh.hpp"
+#include "output/summary.hpp"
+#include "scenario/scenario.hpp"
+
+namespace hydrodda::run {
+
+class FlowModel {
+ public:
+  // Meshes the domain (or reads mesh.file), cuts the blocks and gives every element its
+  // permeability: a flow region's fixed value, else the porosity law's from the space the blocks
+  // leave open. Throws scenario::ScenarioError for a mesh.file that cannot be used.
+  explicit FlowModel(const scenario::Scenario& scenario);
+
+  // The heads under the scenario's boundary conditions.
+  const hydro::FlowSolution& solve();
+
+  const scenario::Scenario& scenario() const { return scenario_; }
+  const mesh::TriangleMesh& mesh() const { return mesh_; }
+  const std::vector<geometry::Polygon>& blocks() const { return blocks_; }
+  const std::vector<double>& permeability() const { return permeability_; }  // per element
+  const hydro::FlowSolution& flow() const { return solution_; }  // empty before solve()
+  // summary.json's title and flow (boundary flows, balance, regions); no timings.
+  output::RunSummary summary() const;
+  // Seconds per phase: mesh, permeability, flow.
+  const std::vector<output::NamedValue>& timings() const { return timings_; }
+
+ private:
+  scenario::Scenario scenario_;
+  std::vector<output::NamedValue> timings_;
+  mesh::TriangleMesh mesh_;
+  std::vector<geometry::Polygon> blocks_;
+  std::vector<double> permeability_;
+  hydro::FlowSolution solution_;
+};
+
+}  // namespace hydrodda::run

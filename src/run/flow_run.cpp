@@ -1,0 +1,31 @@
+#include <fmt/format.h>
+
+#include "run/figures.hpp"
+#include "run/flow_model.hpp"
+#include "run/paraview_output.hpp"
+#include "run/runs.hpp"
+
+namespace hydrodda::run {
+
+output::RunSummary run_flow(const RunContext& context) {
+  FlowModel model(context.scenario);
+  const hydro::FlowSolution& solution = model.solve();
+  ProgressReport report;
+  report.kind = ProgressReport::Kind::flow_solve;
+  report.count = 1;
+  report.balance_error = solution.balance_error;
+  report.message = fmt::format("flow solved: balance error {:.2e}", solution.balance_error);
+  context.report(report);
+
+  output::RunSummary summary = model.summary();
+  summary.timings = model.timings();
+  const std::vector<double> no_porosity;
+  draw_figures(context.scenario, context.folder,
+               {model.mesh(), solution, no_porosity, model.permeability(), model.blocks()});
+  ParaviewOutput(context.folder).write_fluid(0, 0.0, model.mesh(), solution, no_porosity, model.permeability());
+  summary.converged = true;  // one linear solve: nothing to iterate
+  summary.iterations = 1;
+  return summary;
+}
+
+}  // namespace hydrodda::run

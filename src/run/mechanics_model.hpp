@@ -1,0 +1,36 @@
+#pragma once
+// A mechanics-only model: the DDA system of the scenario's blocks and loads, stepped until the
+// scenario's `steps` or `end_time`. It writes no file; run() drives it into a run folder.
+
+#include "dda/system.hpp"
+#include "output/summary.hpp"
+#include "scenario/scenario.hpp"
+
+namespace hydrodda::run {
+
+class MechanicsModel {
+ public:
+  // Cuts or reads the blocks and builds the system with every load of [mechanics]. Throws
+  // scenario::ScenarioError for what only the blocks show (a fixed point in no block).
+  explicit MechanicsModel(const scenario::Scenario& scenario);
+
+  // Whether the run is at its end: `steps` taken, or `end_time` reached.
+  bool finished() const;
+  // One DDA step: of the current step size under `steps`; under `end_time`, one that does not
+  // pass it (time-step control may shorten steps, so such a run takes as many as it needs).
+  dda::StepReport step();
+  long long steps() const { return steps_; }
+
+  const scenario::Scenario& scenario() const { return scenario_; }
+  const dda::System& system() const { return system_; }
+  // summary.json's blocks and measured points, iterations = steps taken; no timings.
+  output::RunSummary summary() const;
+
+ private:
+  scenario::Scenario scenario_;
+  dda::System system_;
+  double end_time_ = 0.0;
+  long long steps_ = 0;
+};
+
+}  // namespace hydrodda::run

@@ -1,0 +1,40 @@
+#pragma once
+// Opening a run folder to continue its coupled run (run --resume DIR): the checkpoint and the
+// copy of the scenario the run started with, both checked before anything is run.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "output/checkpoint.hpp"
+#include "scenario/scenario.hpp"
+
+namespace hydrodda::run {
+
+// What a coupled run's folder holds to continue it: its checkpoint and its scenario's text.
+struct SavedRun {
+  std::string scenario_text;
+  output::RunCheckpoint checkpoint;
+};
+
+struct ResumedRun {
+  std::filesystem::path folder;
+  scenario::Scenario scenario;  // read from DIR/scenario.toml, paths resolved as at the start
+  std::string scenario_text;
+  output::RunCheckpoint checkpoint;
+};
+
+// Reads DIR/checkpoint.bin and DIR/scenario.toml. Throws InputError saying why when there is no
+// checkpoint, when it is damaged, or when the scenario copy was edited since the start.
+SavedRun read_saved_run(const std::filesystem::path& directory);
+
+// Throws InputError when the run cannot be continued: it is not a coupled run, or it already
+// converged or used all its coupling iterations.
+void check_resumable(const std::filesystem::path& directory, const scenario::Scenario& scenario,
+                     const output::RunCheckpoint& checkpoint);
+
+// Both of the above, the scenario parsed as the original file (so that relative paths such as
+// mesh.file resolve as they did); a scenario copy that does not parse throws ScenarioError.
+ResumedRun open_resumed_run(const std::filesystem::path& directory);
+
+}  // namespace hydrodda::run

@@ -1,0 +1,105 @@
+#include "run/run.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "output/run_folder.hpp"
+#include "run/model_building.hpp"
+#include "run/runs.hpp"
+#include "scenario/diagnostics.hpp"
+
+namespace hydrodda::run {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+void write_summary(const output::RunFolder& folder, const output::RunSummary& summary) {
+  folder.write("summary.json", output::format_summary(summary));
+}
+
+// A run that stopped before its end: summary.json says so (converged = false, what happened).
+RunResult record_failure(const output::RunFolder& folder, RunStatus status, const std::string& what,
+                         output::RunSummary summary) {
+  summary.converged = false;
+  summary.status = "failed";
+  summary.message = what;
+  write_summary(folder, summary);
+  return {status, false, summary.iterations, what, summary, folder.path()};
+}
+
+RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output::ExistingFolder policy,
+                 const std::string& scenario_text, const output::RunCheckpoint* resume,
+                 std::optional<int> stop_after, const Callbacks& callbacks) {
+  if (stop_after && kind_of(s) != RunKind::coupled)
+    throw InputError("--stop-after: only coupled runs ([mechanics] and [flow]) stop after an iteration");
+  std::error_code ec;
+  const bool folder_is_new = !fs::exists(directory, ec);
+  const output::RunFolder folder(directory, policy);
+  const RunContext context{s, folder, callbacks, scenario_text, resume, stop_after};
+  try {
+    const RunKind kind = kind_of(s);
+    const output::RunSummary summary = kind == RunKind::coupled     ? run_coupled(context)
+                                       : kind == RunKind::mechanics ? run_mechanics(context)
+                                                                    : run_flow(context);
+    write_summary(folder, summary);
+    const RunStatus status = summary.status == "stopped" ? RunStatus::stopped : RunStatus::finished;
+    return {status, summary.converged, summary.iterations, summary.message, summary, folder.path()};
+  } catch (const scenario::ScenarioError&) {
+    // Found while building the model: still bad input, and bad input leaves no run folder
+    // behind. Nothing has been written by then; a folder this run made is removed.
+    if (folder_is_new) fs::remove_all(directory, ec);
+    throw;
+  } catch (const RunFailure& failure) {
+    return record_failure(folder, failure.status(), failure.what(), failure.summary());
+  } catch (const std::exception& e) {
+    // A failure before any result exists (meshing, a singular system): reported, never hidden.
+    output::RunSummary summary;
+    summary.title = s.title;
+    summary.scenario = s.file.string();
+    return record_failure(folder, RunStatus::failed, e.what(), summary);
+  }
+}
+
+}  // namespace
+
+std::optional<std::string> read_text_file(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) return std::nullopt;
+  return text.str();
+}
+
+RunKind kind_of(const scenario::Scenario& s) {
+  return s.mechanics && s.flow ? RunKind::coupled : s.mechanics ? RunKind::mechanics : RunKind::flow;
+}
+
+RunResult run(const scenario::Scenario& scenario, const RunOptions& options, const Callbacks& callbacks) {
+  std::optional<std::string> text = options.scenario_text;
+  if (!text) text = read_text_file(scenario.file);
+  if (!text) throw InputError(fmt::format("cannot read {}", scenario.file.string()));
+  return run_in(scenario, options.folder,
+                options.overwrite ? output::ExistingFolder::Overwrite : output::ExistingFolder::Refuse, *text,
+                nullptr, options.stop_after, callbacks);
+}
+
+RunResult resume(const ResumedRun& resumed, std::optional<int> stop_after, const Callbacks& callbacks) {
+  // The folder's own files, continued.
+  return run_in(resumed.scenario, resumed.folder, output::ExistingFolder::Overwrite, resumed.scenario_text,
+                &resumed.checkpoint, stop_after, callbacks);
+}
+
+void check_model(const scenario::Scenario& s) {
+  if (s.mechanics) build_mechanics_model(s, build_blocks(s));
+  if (s.mesh && s.mesh->file) {
+    const mesh::TriangleMesh mesh = read_mesh_file(s);
+    spdlog::debug("mesh.file: {} nodes, {} triangles", mesh.node_count(), mesh.triangle_count());
+  }
+}
+
+}  // namespace hydrodda::run

@@ -1,0 +1,105 @@
+#pragma once
+// The run layer's entry point: a scenario run into its run folder, and what happened.
+//
+// run() builds the model the scenario describes (flow only, mechanics only, or coupled, by the
+// sections it has), runs it and writes the run folder as it goes; resume() continues a coupled
+// run from its checkpoint. Nothing here prints or exits. Input that cannot be run is an
+// exception thrown before anything is run: scenario::ScenarioError (with its diagnostics),
+// InputError, output::RunFolderError. Everything after that is a RunResult, a failure included,
+// with summary.json written for the last good state.
+//
+// Logging: informational lines and warnings ("mesh: 7723 nodes, 15234 triangles", a loop that
+// did not converge) go to spdlog's default logger, which this layer never configures: the front
+// end owns it (its sink, pattern and level), or silences it.
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "output/summary.hpp"
+#include "run/resumed_run.hpp"
+#include "scenario/scenario.hpp"
+
+namespace hydrodda::run {
+
+// What a run reports as it goes: each DDA step of a mechanics-only run, each pass of a coupled
+// run, the one solve of a flow-only run.
+struct ProgressReport {
+  enum class Kind { flow_solve, mechanics_step, coupling_pass };
+  Kind kind = Kind::flow_solve;
+  long long count = 0;               // the step's or pass's number, from 1 (1 for the flow solve)
+  double time = 0.0;                 // mechanics time at its end (s)
+  double head_change = 0.0;          // passes: relative change of the heads from the last pass
+  double displacement_change = 0.0;  // passes: relative change of the block displacements
+  int contacts = 0;                  // steps: closed contacts at its end
+  double max_displacement = 0.0;     // steps: largest vertex displacement in it (m)
+  double balance_error = 0.0;        // the flow solve: relative mass-balance error
+  std::string message;               // all of it in one line, for people
+};
+
+struct Callbacks {
+  // Called after every step, pass or solve; unset: nothing is reported.
+  std::function<void(const ProgressReport&)> progress;
+  // Asked before every DDA step (in a pass too) and every pass: true stops the run there, with
+  // the run folder and summary.json at the last finished step or pass (RunStatus::interrupted).
+  // Unset: never. Called from the thread that runs, so a signal handler's flag will do.
+  std::function<bool()> stop_requested;
+};
+
+enum class RunStatus {
+  finished,     // ran to its end; `converged` says whether the coupling loop met its tolerance
+  stopped,      // a coupled run stopped after RunOptions::stop_after passes, to be resumed
+  interrupted,  // Callbacks::stop_requested stopped it
+  failed,       // a step, solve or pass failed; `message` says what and where
+};
+
+struct RunResult {
+  RunStatus status = RunStatus::finished;
+  bool converged = false;
+  int iterations = 0;             // coupling passes, DDA steps, or 1 for a flow solve
+  std::string message;            // why it stopped or failed; empty when finished
+  output::RunSummary summary;     // as written to summary.json
+  std::filesystem::path folder;
+};
+
+struct RunOptions {
+  std::filesystem::path folder;   // the run folder, made when missing
+  // A folder that already holds files is refused (output::RunFolderError), or with `overwrite`
+  // its files of the same names are replaced.
+  bool overwrite = false;
+  std::optional<int> stop_after{};  // coupled runs: stop after this pass, resumable
+  // The scenario's text, which a coupled run saves as scenario.toml (for resume); unset: read
+  // from scenario.file.
+  std::optional<std::string> scenario_text{};
+};
+
+// Input that is not the scenario file's: a run folder that cannot be resumed, an option the
+// scenario's kind of run does not take, a scenario file that cannot be read again.
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+enum class RunKind { flow, mechanics, coupled };
+// Coupled with [mechanics] and [flow], else whichever of the two the scenario has.
+RunKind kind_of(const scenario::Scenario& scenario);
+
+// Runs the scenario into options.folder. A scenario::ScenarioError found while building the
+// model (a fixed point in no block, a mesh.file Gmsh cannot read) is rethrown after removing
+// the folder if this call made it: bad input leaves no run folder behind.
+RunResult run(const scenario::Scenario& scenario, const RunOptions& options, const Callbacks& callbacks = {});
+
+// Continues the coupled run of open_resumed_run() in its folder after its last finished pass;
+// it ends where an uninterrupted run does, file for file.
+RunResult resume(const ResumedRun& resumed, std::optional<int> stop_after, const Callbacks& callbacks = {});
+
+// The whole content of a file, or nothing when it cannot be read.
+std::optional<std::string> read_text_file(const std::filesystem::path& file);
+
+// What only building the model shows (a fixed point in no block, a boundary the mesh file does
+// not name), short of meshing and running: throws scenario::ScenarioError listing it.
+void check_model(const scenario::Scenario& scenario);
+
+}  // namespace hydrodda::run

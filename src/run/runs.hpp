@@ -1,0 +1,51 @@
+#pragma once
+// The kinds of run, as run() dispatches them: each builds its model from the scenario, runs it,
+// and writes the run folder as it goes. They return the summary; run() writes it.
+
+#include <optional>
+#include <string>
+
+#include "output/checkpoint.hpp"
+#include "output/run_folder.hpp"
+#include "output/summary.hpp"
+#include "run/run.hpp"
+#include "scenario/scenario.hpp"
+
+namespace hydrodda::run {
+
+struct RunContext {
+  const scenario::Scenario& scenario;
+  const output::RunFolder& folder;
+  const Callbacks& callbacks;
+  // The scenario's text as read: coupled runs save it as scenario.toml for resume.
+  std::string scenario_text;
+  // A coupled run continued from its checkpoint (resume), or none.
+  const output::RunCheckpoint* resume = nullptr;
+  // Coupled runs: stop after this coupling iteration, or run to the end.
+  std::optional<int> stop_after;
+
+  void report(const ProgressReport& report) const {
+    if (callbacks.progress) callbacks.progress(report);
+  }
+  bool stop_requested() const { return callbacks.stop_requested && callbacks.stop_requested(); }
+};
+
+// A run that stopped before its end: what failed or stopped it, and where. The summary holds
+// the last good state and is written with converged = false.
+class RunFailure : public std::runtime_error {
+ public:
+  RunFailure(RunStatus status, const std::string& message, output::RunSummary summary)
+      : std::runtime_error(message), status_(status), summary_(std::move(summary)) {}
+  RunStatus status() const { return status_; }  // interrupted or failed
+  const output::RunSummary& summary() const { return summary_; }
+
+ private:
+  RunStatus status_;
+  output::RunSummary summary_;
+};
+
+output::RunSummary run_mechanics(const RunContext& context);
+output::RunSummary run_flow(const RunContext& context);
+output::RunSummary run_coupled(const RunContext& context);
+
+}  // namespace hydrodda::run
