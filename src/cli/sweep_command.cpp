@@ -6,8 +6,6 @@
 #include <spdlog/spdlog.h>
 
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <thread>
 
 #include "cli/app.hpp"
@@ -15,10 +13,10 @@
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/scenario_loading.hpp"
-#include "cli/sweep_plan.hpp"
-#include "cli/sweep_results.hpp"
 #include "output/run_folder.hpp"
 #include "run/run.hpp"
+#include "run/sweep_plan.hpp"
+#include "run/sweep_results.hpp"
 #include "scenario/diagnostics.hpp"
 #include "scenario/reader.hpp"
 
@@ -33,13 +31,6 @@ struct PreparedCase {
   std::string text;  // the case's scenario file
 };
 
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 void print_error(const std::string& message) { std::fputs(fmt::format("error: {}\n", message).c_str(), stderr); }
 
 std::string describe_case(const std::vector<scenario::Override>& overrides) {
@@ -53,7 +44,7 @@ std::string describe_case(const std::vector<scenario::Override>& overrides) {
 std::optional<std::vector<PreparedCase>> prepare_cases(const fs::path& file, const fs::path& directory,
                                                        const std::vector<std::vector<scenario::Override>>& cases,
                                                        std::vector<std::string>& region_names) {
-  const std::string original = read_text(file);
+  const std::string original = run::read_text_file(file).value_or("");
   std::vector<PreparedCase> prepared;
   bool ok = true;
   for (std::size_t i = 0; i < cases.size(); ++i) {
@@ -81,11 +72,11 @@ std::optional<std::vector<PreparedCase>> prepare_cases(const fs::path& file, con
 int sweep_command(const SweepOptions& options) {
   const auto base = load_scenario(options.scenario);
   if (!base) return kBadInput;
-  std::vector<SweepAxis> axes;
+  std::vector<run::SweepAxis> axes;
   std::vector<std::vector<scenario::Override>> cases;
   try {
-    for (const std::string& set : options.sets) axes.push_back(parse_sweep_axis(set));
-    cases = options.zip ? zip_cases(axes) : enumerate_cases(axes);
+    for (const std::string& set : options.sets) axes.push_back(run::parse_sweep_axis(set));
+    cases = options.zip ? run::zip_cases(axes) : run::enumerate_cases(axes);
   } catch (const std::invalid_argument& e) {
     print_error(e.what());
     return kBadInput;
@@ -128,7 +119,7 @@ int sweep_command(const SweepOptions& options) {
   spdlog::info("sweep of {}: {} case(s), {} at a time, in {}", options.scenario.string(), cases.size(), jobs,
                directory.string());
 
-  SweepResults results(axes, cases, columns, options.zip);
+  run::SweepResults results(axes, cases, columns, options.zip);
   for (std::size_t i = 0; i < prepared->size(); ++i) results.set_name(i, (*prepared)[i].name);
   install_interrupt_handlers();
   std::size_t finished = 0;
@@ -136,7 +127,7 @@ int sweep_command(const SweepOptions& options) {
   try {
     never_started = run_child_processes(commands, jobs, [&](std::size_t index, int exit_code) {
       const fs::path case_dir = directory / (*prepared)[index].name;
-      const CaseResult& r = results.record_run(index, case_dir, exit_code);
+      const run::CaseResult& r = results.record_run(index, case_dir, exit_code);
       ++finished;
       const std::string line = fmt::format("{} ({}): {}{}  [{}/{}]", (*prepared)[index].name,
                                            describe_case(cases[index]), r.status,

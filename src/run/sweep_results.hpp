@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/sweep_plan.hpp"
+#include "run/sweep_plan.hpp"
 
-namespace hydrodda::cli {
+namespace hydrodda::run {
 
 struct CaseResult {
   std::string name;                // case_000
@@ -46,4 +46,4 @@ class SweepResults {
   std::vector<CaseResult> results_;
 };
 
-}  // namespace hydrodda::cli
+}  // namespace hydrodda::run

@@ -1,10 +1,10 @@
-#include "cli/sweep_plan.hpp"
+#include "run/sweep_plan.hpp"
 
 #include <fmt/format.h>
 
 #include <stdexcept>
 
-namespace hydrodda::cli {
+namespace hydrodda::run {
 
 namespace {
 
@@ -85,4 +85,4 @@ std::vector<std::vector<scenario::Override>> zip_cases(const std::vector<SweepAx
   return cases;
 }
 
-}  // namespace hydrodda::cli
+}  // namespace hydrodda::run

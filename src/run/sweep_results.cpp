@@ -1,4 +1,4 @@
-#include "cli/sweep_results.hpp"
+#include "run/sweep_results.hpp"
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -10,7 +10,7 @@
 #include "output/plot_line.hpp"
 #include "output/summary_reading.hpp"
 
-namespace hydrodda::cli {
+namespace hydrodda::run {
 
 namespace {
 
@@ -151,4 +151,4 @@ std::size_t SweepResults::count_not_ok() const {
       std::count_if(results_.begin(), results_.end(), [](const CaseResult& r) { return r.status != "ok"; }));
 }
 
-}  // namespace hydrodda::cli
+}  // namespace hydrodda::run
