@@ -1,0 +1,261 @@
+// The run layer called directly, in this process: a flow-only, a mechanics-only and a coupled
+// run of small shipped verification scenarios against the analytic values their files state,
+// a stop request honoured between coupling passes, and a coupled model stepped by hand.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "../cli/run_folder_compare.hpp"
+#include "output/checkpoint.hpp"
+#include "run/coupled_model.hpp"
+#include "run/run.hpp"
+#include "scenario/overrides.hpp"
+#include "scenario/reader.hpp"
+
+namespace fs = std::filesystem;
+using hydrodda::testing::expect_same_results;
+using hydrodda::testing::read_file;
+namespace run = hydrodda::run;
+namespace scenario = hydrodda::scenario;
+
+namespace {
+
+const fs::path kVerification = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/verification";
+constexpr double kG = 9.81;
+constexpr double kRhoWater = 1000.0;
+constexpr double kRhoRock = 2500.0;
+
+// A run folder of its own for each test and process (ctest runs tests side by side); removed
+// at the end.
+struct Folder {
+  fs::path path;
+  explicit Folder(const std::string& name)
+      : path(fs::temp_directory_path() / ("hydrodda-run-layer-" + name + "-" + std::to_string(::getpid()))) {
+    fs::remove_all(path);
+  }
+  ~Folder() { fs::remove_all(path); }
+};
+
+// The progress reports of a run, and a stop request after `stop_after_reports` of them (never
+// when negative).
+struct Recorder {
+  std::vector<run::ProgressReport> reports;
+  int stop_after_reports = -1;
+  run::Callbacks callbacks() {
+    return {[this](const run::ProgressReport& r) { reports.push_back(r); },
+            [this] { return stop_after_reports >= 0 && static_cast<int>(reports.size()) >= stop_after_reports; }};
+  }
+};
+
+double boundary_flow(const hydrodda::output::RunSummary& summary, const std::string& name) {
+  for (const auto& b : summary.flow->boundaries)
+    if (b.name == name) return b.value;
+  ADD_FAILURE() << "no boundary " << name;
+  return NAN;
+}
+
+std::size_t count_lines(const fs::path& file) {
+  std::ifstream in(file);
+  std::size_t n = 0;
+  for (std::string line; std::getline(in, line);) ++n;
+  return n;
+}
+
+// The column settles elastically (coupled_hydrostatic_column.toml): with the dry column's
+//   s_dry(y) = rho_r g (H y - y^2 / 2) / E',  E' = E / (1 - nu^2),  H = 3 m (plane strain),
+// block k's settlement (at its centroid, y = k + 1/2) lies between the effective-stress value
+// (rho_r - rho_w) / rho_r * s_dry(y) and s_dry(y) + k * 1.5e-6 m (k contacts below it, each
+// allowed to penetrate 1e-4 of the allowed step displacement), and no block moves sideways
+// (under 1e-7 m).
+void expect_column_settled(const hydrodda::output::RunSummary& s) {
+  const double e_plane = 1.0e10 / (1.0 - 0.25 * 0.25), height = 3.0;
+  const auto s_dry = [&](double y) { return kRhoRock * kG * (height * y - 0.5 * y * y) / e_plane; };
+  const double effective = (kRhoRock - kRhoWater) / kRhoRock;
+  const double penetration = 1e-4 * 0.01 * 0.5 * height;
+  ASSERT_EQ(s.blocks.size(), 3u);
+  for (int k = 0; k < 3; ++k) {
+    const double settlement = -s.blocks[k].displacement[1], y = k + 0.5;
+    EXPECT_LT(std::abs(s.blocks[k].displacement[0]), 1e-7) << "block " << k;
+    EXPECT_GE(settlement, effective * s_dry(y)) << "block " << k;
+    EXPECT_LE(settlement, s_dry(y) + k * penetration) << "block " << k;
+  }
+}
+
+TEST(RunLayer, FlowOnlyRunOfLayersInSeriesGivesTheHarmonicMean) {
+  // flow_layers_series.toml: Q = dh / sum(L_i / K_i) = 1.961018510e-05 m2/s through the unit
+  // square, in on the left and out on the right, within 1e-8 relative (P1 is exact for a head
+  // linear in each layer; the rest is round-off and the ten digits of the stated value).
+  const scenario::Scenario s = scenario::read_scenario(kVerification / "flow_layers_series.toml");
+  Folder folder("flow");
+  Recorder recorder;
+  const run::RunResult result = run::run(s, {folder.path}, recorder.callbacks());
+
+  EXPECT_EQ(result.status, run::RunStatus::finished);
+  EXPECT_TRUE(result.converged);
+  EXPECT_EQ(result.iterations, 1);
+  EXPECT_TRUE(result.message.empty());
+  EXPECT_EQ(result.folder, folder.path);
+  const double exact = 1.961018510e-05;
+  ASSERT_TRUE(result.summary.flow);
+  EXPECT_NEAR(boundary_flow(result.summary, "left"), -exact, 1e-8 * exact);
+  EXPECT_NEAR(boundary_flow(result.summary, "right"), exact, 1e-8 * exact);
+  EXPECT_LT(result.summary.flow->balance, 1e-12);
+
+  ASSERT_EQ(recorder.reports.size(), 1u);
+  EXPECT_EQ(recorder.reports[0].kind, run::ProgressReport::Kind::flow_solve);
+  EXPECT_EQ(recorder.reports[0].balance_error, result.summary.flow->balance);
+  EXPECT_NE(recorder.reports[0].message.find("flow solved"), std::string::npos);
+
+  // The folder holds what the result says, and the series of a flow-only run.
+  EXPECT_EQ(read_file(folder.path / "summary.json"), hydrodda::output::format_summary(result.summary));
+  for (const char* file : {"fluid.pvd", "fluid_0000.vtu", "figures/head.png", "figures/permeability.png"})
+    EXPECT_TRUE(fs::exists(folder.path / file)) << file;
+  for (const char* file : {"blocks.pvd", "checkpoint.bin", "history.csv"})
+    EXPECT_FALSE(fs::exists(folder.path / file)) << file;
+}
+
+TEST(RunLayer, MechanicsOnlyRunOfAFreeFallFollowsHalfGTSquared) {
+  // free_fall.toml until t = 0.1 s (100 steps of 1 ms; no contact): d(t) = ½ g t² = 0.04905 m.
+  // The step's update (d = v Δt + ½ g Δt², v += g Δt) is exact under a constant force, so the
+  // tolerance is round-off over 100 steps: 1e-12 relative (measured 4e-16).
+  const fs::path file = kVerification / "free_fall.toml";
+  const std::string text = scenario::apply_overrides(read_file(file), file, {{"mechanics.end_time", "0.1"}});
+  const scenario::Scenario s = scenario::parse_scenario(text, file);
+  Folder folder("mechanics");
+  Recorder recorder;
+  const run::RunResult result = run::run(s, {folder.path, false, std::nullopt, text}, recorder.callbacks());
+
+  EXPECT_EQ(result.status, run::RunStatus::finished);
+  EXPECT_TRUE(result.converged);  // mechanics alone: it reached its end
+  EXPECT_EQ(result.iterations, 100);
+  ASSERT_EQ(result.summary.measures.size(), 1u);
+  const double drop = 0.5 * kG * 0.1 * 0.1;
+  EXPECT_NEAR(result.summary.measures[0].displacement[1], -drop, 1e-12 * drop);
+  EXPECT_NEAR(result.summary.measures[0].displacement[0], 0.0, 1e-12);
+
+  // One report a step, numbered, up to the end time.
+  ASSERT_EQ(recorder.reports.size(), 100u);
+  for (std::size_t i = 0; i < recorder.reports.size(); ++i) {
+    EXPECT_EQ(recorder.reports[i].kind, run::ProgressReport::Kind::mechanics_step);
+    EXPECT_EQ(recorder.reports[i].count, static_cast<long long>(i + 1));
+  }
+  EXPECT_NEAR(recorder.reports.back().time, 0.1, 1e-12);
+
+  EXPECT_EQ(count_lines(folder.path / "history.csv"), 101u);   // header and 100 steps
+  EXPECT_EQ(count_lines(folder.path / "measure.csv"), 101u);
+  for (const char* f : {"summary.json", "blocks.pvd", "blocks_0000.vtu", "blocks_0100.vtu", "contacts_0100.vtu"})
+    EXPECT_TRUE(fs::exists(folder.path / f)) << f;
+}
+
+TEST(RunLayer, CoupledRunOfABlockColumnInStillWaterConverges) {
+  // coupled_hydrostatic_column.toml: equal heads (3 m) on the bottom and the top, so no flow
+  // (under 1e-15 m2/s on both; a 1 mm head difference would drive 3e-12), and the blocks settle
+  // elastically under their buoyant weight (expect_column_settled).
+  const scenario::Scenario s = scenario::read_scenario(kVerification / "coupled_hydrostatic_column.toml");
+  Folder folder("coupled");
+  Recorder recorder;
+  const run::RunResult result = run::run(s, {folder.path}, recorder.callbacks());
+
+  EXPECT_EQ(result.status, run::RunStatus::finished);
+  EXPECT_TRUE(result.converged);
+  ASSERT_GE(result.iterations, 2);  // the first pass never converges (its changes are 1)
+  ASSERT_TRUE(result.summary.flow);
+  for (const char* boundary : {"bottom", "top"})
+    EXPECT_LE(std::abs(boundary_flow(result.summary, boundary)), 1e-15) << boundary;
+  expect_column_settled(result.summary);
+
+  // One report a pass, the last one's changes under the tolerance.
+  ASSERT_EQ(recorder.reports.size(), static_cast<std::size_t>(result.iterations));
+  EXPECT_EQ(recorder.reports.back().kind, run::ProgressReport::Kind::coupling_pass);
+  EXPECT_EQ(recorder.reports.back().count, result.iterations);
+  EXPECT_LT(recorder.reports.back().displacement_change, s.coupling.tolerance);
+  EXPECT_LT(recorder.reports.back().head_change, s.coupling.tolerance);
+
+  EXPECT_EQ(count_lines(folder.path / "history.csv"), static_cast<std::size_t>(result.iterations) + 1);
+  EXPECT_EQ(read_file(folder.path / "scenario.toml"), read_file(s.file));
+  const auto checkpoint = hydrodda::output::decode_checkpoint(read_file(folder.path / "checkpoint.bin"));
+  EXPECT_EQ(checkpoint.coupling.iterations, result.iterations);
+  EXPECT_TRUE(checkpoint.converged);
+}
+
+TEST(RunLayer, AStopRequestedAfterTheFirstPassLeavesTheFolderAtThatPass) {
+  // The stop request turns true once pass 1 has been reported: the run stops before pass 2,
+  // says so, and its folder holds pass 1's state, from which it resumes to the same end as a
+  // run never stopped, file for file.
+  const scenario::Scenario s = scenario::read_scenario(kVerification / "coupled_hydrostatic_column.toml");
+  Folder whole("whole"), parts("parts");
+  const run::RunResult uninterrupted = run::run(s, {whole.path});
+  ASSERT_EQ(uninterrupted.status, run::RunStatus::finished);
+  ASSERT_GE(uninterrupted.iterations, 2);  // so that 1 is mid-run
+
+  Recorder recorder;
+  recorder.stop_after_reports = 1;
+  const run::RunResult stopped = run::run(s, {parts.path}, recorder.callbacks());
+  EXPECT_EQ(stopped.status, run::RunStatus::interrupted);
+  EXPECT_FALSE(stopped.converged);
+  EXPECT_EQ(stopped.iterations, 1);
+  EXPECT_EQ(stopped.message, "interrupted after coupling iteration 1");
+  EXPECT_EQ(recorder.reports.size(), 1u);
+  EXPECT_EQ(stopped.summary.status, "failed");
+  EXPECT_EQ(read_file(parts.path / "summary.json"), hydrodda::output::format_summary(stopped.summary));
+  EXPECT_EQ(count_lines(parts.path / "history.csv"), 2u);  // header and pass 1
+  EXPECT_TRUE(fs::exists(parts.path / "fluid_0001.vtu"));
+  EXPECT_FALSE(fs::exists(parts.path / "fluid_0002.vtu"));
+  const auto checkpoint = hydrodda::output::decode_checkpoint(read_file(parts.path / "checkpoint.bin"));
+  EXPECT_EQ(checkpoint.coupling.iterations, 1);
+  EXPECT_FALSE(checkpoint.converged);
+  // The summary describes pass 1's state: the model's after one pass.
+  run::CoupledModel one_pass(s);
+  one_pass.run_pass();
+  const hydrodda::output::RunSummary expected = one_pass.summary();
+  ASSERT_EQ(stopped.summary.blocks.size(), expected.blocks.size());
+  for (std::size_t b = 0; b < expected.blocks.size(); ++b)
+    EXPECT_EQ(stopped.summary.blocks[b].displacement, expected.blocks[b].displacement) << "block " << b;
+
+  const run::ResumedRun resumed = run::open_resumed_run(parts.path);
+  EXPECT_EQ(resumed.checkpoint.coupling.iterations, 1);
+  const run::RunResult continued = run::resume(resumed, std::nullopt);
+  EXPECT_EQ(continued.status, run::RunStatus::finished);
+  EXPECT_EQ(continued.iterations, uninterrupted.iterations);
+  expect_same_results(whole.path, parts.path);
+}
+
+TEST(RunLayer, StopAfterIsForCoupledRunsOnlyAndLeavesNoFolder) {
+  const scenario::Scenario s = scenario::read_scenario(kVerification / "flow_linear_head.toml");
+  Folder folder("stop-after");
+  EXPECT_THROW(run::run(s, {folder.path, false, 1}), run::InputError);
+  EXPECT_FALSE(fs::exists(folder.path));
+}
+
+TEST(CoupledModel, PassesRunByHandEndWhereTheRunEnds) {
+  // The model alone, stepped pass by pass with no file written, reaches the run's blocks and
+  // flows bit for bit: the run folder is only a record of it.
+  const scenario::Scenario s = scenario::read_scenario(kVerification / "coupled_hydrostatic_column.toml");
+  Folder folder("by-hand");
+  const run::RunResult result = run::run(s, {folder.path});
+  ASSERT_EQ(result.status, run::RunStatus::finished);
+
+  run::CoupledModel model(s);
+  bool converged = false;
+  for (int pass = 0; pass < s.coupling.max_iterations && !converged; ++pass) converged = model.run_pass().converged;
+  EXPECT_TRUE(converged);
+  EXPECT_EQ(model.iterations(), result.iterations);
+  const hydrodda::output::RunSummary by_hand = model.summary();
+  ASSERT_EQ(by_hand.blocks.size(), result.summary.blocks.size());
+  for (std::size_t b = 0; b < by_hand.blocks.size(); ++b) {
+    EXPECT_EQ(by_hand.blocks[b].displacement, result.summary.blocks[b].displacement) << "block " << b;
+    EXPECT_EQ(by_hand.blocks[b].stress, result.summary.blocks[b].stress) << "block " << b;
+  }
+  ASSERT_TRUE(by_hand.flow);
+  EXPECT_EQ(by_hand.flow->balance, result.summary.flow->balance);
+  expect_column_settled(by_hand);
+}
+
+}  // namespace
