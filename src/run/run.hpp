@@ -42,9 +42,10 @@ struct ProgressReport {
 struct Callbacks {
   // Called after every step, pass or solve; unset: nothing is reported.
   std::function<void(const ProgressReport&)> progress;
-  // Asked before every DDA step (in a pass too) and every pass: true stops the run there, with
-  // the run folder and summary.json at the last finished step or pass (RunStatus::interrupted).
-  // Unset: never. Called from the thread that runs, so a signal handler's flag will do.
+  // Asked before every DDA step (those inside a coupling pass too) and every pass; a flow-only
+  // run's one solve is not stopped. True stops the run there, with the run folder and
+  // summary.json at the last finished step or pass (RunStatus::interrupted). Unset: never.
+  // Called on the thread that runs, so a flag a signal handler sets will do.
   std::function<bool()> stop_requested;
 };
 
@@ -57,6 +58,8 @@ enum class RunStatus {
 
 struct RunResult {
   RunStatus status = RunStatus::finished;
+  // The coupling loop met its tolerance; a flow-only or mechanics-only run that reached its end
+  // says true (as summary.json does).
   bool converged = false;
   int iterations = 0;             // coupling passes, DDA steps, or 1 for a flow solve
   std::string message;            // why it stopped or failed; empty when finished
