@@ -113,6 +113,25 @@ bool contains(std::span<const Point> polygon, Point p) {
   return inside;
 }
 
+std::vector<std::pair<double, double>> clip_segment_to_polygon(Point a, Point b, std::span<const Point> polygon,
+                                                               bool keep_inside) {
+  std::vector<double> cuts{0.0, 1.0};
+  const std::size_t n = polygon.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point c = polygon[i], d = polygon[(i + 1) % n];
+    if (!segments_intersect(a, b, c, d)) continue;
+    if (auto t = line_intersection_parameter(a, b, c, d)) cuts.push_back(std::clamp(*t, 0.0, 1.0));
+  }
+  std::sort(cuts.begin(), cuts.end());
+  std::vector<std::pair<double, double>> out;
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+    if (cuts[i + 1] - cuts[i] <= 1e-12) continue;
+    const Point mid = a + (0.5 * (cuts[i] + cuts[i + 1])) * (b - a);
+    if (contains(polygon, mid) == keep_inside) out.push_back({cuts[i], cuts[i + 1]});
+  }
+  return out;
+}
+
 Point closest_point_on_segment(Point p, Point a, Point b) {
   const Point ab = b - a;
   const double len2 = dot(ab, ab);

@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "geometry/point.hpp"
@@ -10,6 +11,12 @@
 namespace hydrodda::geometry {
 
 using Polygon = std::vector<Point>;
+
+// A straight segment, e.g. a fracture trace.
+struct Segment2 {
+  Point from;
+  Point to;
+};
 
 // Shoelace formula: A = ½ Σ (x_i y_{i+1} − x_{i+1} y_i); > 0 for counter-clockwise.
 double signed_area(std::span<const Point> polygon);
@@ -30,6 +37,12 @@ std::optional<std::pair<int, int>> find_self_intersection(std::span<const Point>
 
 // Point in polygon by the crossing-number rule; points on the boundary may go either way.
 bool contains(std::span<const Point> polygon, Point p);
+
+// The parts of segment ab inside the polygon (or outside it, keep_inside = false), as
+// parameter intervals [t0, t1] along ab (a + t (b − a)), in order: ab is cut where it crosses
+// the polygon's edges and each piece is kept or not by its midpoint.
+std::vector<std::pair<double, double>> clip_segment_to_polygon(Point a, Point b, std::span<const Point> polygon,
+                                                               bool keep_inside = true);
 
 // Distance from p to the closed segment ab.
 double distance_to_segment(Point p, Point a, Point b);
