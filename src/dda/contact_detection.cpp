@@ -91,21 +91,9 @@ bool is_entrance_edge(Point p, std::span<const Point> eb, int e, double depth, d
 // lies along the edge: the share of the face contact this vertex carries.
 double compute_tributary_length(Point p, Point before, Point after, Point a, Point b,
                                 double distance) {
-  const Point ab = b - a;
-  const double length = geometry::norm(ab);
-  const Point s = ab / length;
-  const double tp = dot(p - a, s);
+  const FacesAlongEdge faces = find_faces_along_edge(p, before, after, a, b, distance);
   double total = 0.0;
-  for (Point q : {before, after}) {
-    const Point pq = q - p;
-    const double lq = geometry::norm(pq);
-    if (std::abs(cross(s, pq)) > kParallelTolerance * lq) continue;
-    if (std::abs(compute_gap(q, a, b)) > distance) continue;
-    const double tq = dot(q - a, s);
-    const double lo = std::clamp(std::min(tp, tq), 0.0, length);
-    const double hi = std::clamp(std::max(tp, tq), 0.0, length);
-    total += 0.5 * (hi - lo);
-  }
+  for (int k = 0; k < faces.count; ++k) total += 0.5 * std::abs(faces.face[k].far - faces.face[k].near);
   return total;
 }
 
@@ -199,6 +187,23 @@ void find_one_way_combinations(std::span<const Point> va, std::span<const Point>
 }
 
 }  // namespace
+
+FacesAlongEdge find_faces_along_edge(Point p, Point before, Point after, Point a, Point b, double distance) {
+  const Point ab = b - a;
+  const double length = geometry::norm(ab);
+  const Point s = ab / length;
+  const double tp = dot(p - a, s);
+  FacesAlongEdge faces;
+  for (Point q : {before, after}) {
+    const Point pq = q - p;
+    const double lq = geometry::norm(pq);
+    if (std::abs(cross(s, pq)) > kParallelTolerance * lq) continue;
+    if (std::abs(compute_gap(q, a, b)) > distance) continue;
+    const double tq = dot(q - a, s);
+    faces.face[faces.count++] = {std::clamp(tp, 0.0, length), std::clamp(tq, 0.0, length)};
+  }
+  return faces;
+}
 
 std::size_t find_vertex_edge_combinations(std::span<const Point> polygon_a, std::span<const Point> polygon_b,
                                           double reach, std::vector<VertexEdge>& out) {

@@ -3,6 +3,7 @@
 // and a narrow phase finding vertex–edge contacts, vertex–vertex ones included through the
 // entrance-edge rule (Shi 1988, §4). Pure functions of polygons.
 
+#include <array>
 #include <compare>
 #include <span>
 #include <utility>
@@ -45,6 +46,21 @@ std::vector<std::pair<int, int>> find_block_pairs(std::span<const geometry::Box>
 // of the edge's line, and past an end within it of that end). A list of vertex–edge
 // combinations within this reach, round-off allowed for, holds all the pair's contacts.
 inline double contact_reach(double distance) { return distance * (1.0 + 1e-9); }
+
+// The faces incident to vertex p of a polygon (before → p and p → after) that lie along the
+// edge ab of another (parallel within a sine of 0.05, their far ends within `distance` of its
+// line), each as its part inside the edge: from p's projection (near) to the far end, in
+// metres along ab from a. A vertex–edge contact carries half of each (its tributary length).
+struct FaceAlongEdge {
+  double near = 0.0;
+  double far = 0.0;
+};
+struct FacesAlongEdge {
+  int count = 0;
+  std::array<FaceAlongEdge, 2> face{};
+};
+FacesAlongEdge find_faces_along_edge(geometry::Point p, geometry::Point before, geometry::Point after,
+                                     geometry::Point a, geometry::Point b, double distance);
 
 // A vertex of one polygon and an edge (edge → edge + 1) of another.
 struct VertexEdge {

@@ -3,6 +3,7 @@
 // loads. No scenario or output types: the scenario reader and the coupling loop fill these.
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "geometry/point.hpp"
@@ -95,6 +96,30 @@ struct MeasuredPoint {
   Point point;
 };
 
+// A block vertex held on a straight boundary: its displacement along `normal` is held at zero
+// by a stiff spring along the normal only (10 × the contact penalty, as a fixed point's), and
+// it slides freely along the boundary.
+struct Roller {
+  int block = 0;
+  int vertex = 0;
+  Point normal;          // unit, out of the model
+  double preload = 0.0;  // N/m: the force the boundary pushes the vertex in with from the start
+                         // (the initial stress's share on the vertex's faces along it)
+};
+
+// A stress field linear in y, as UDEC's insitu with ygradient: σ(y) = at_reference +
+// gradient (y − reference_y), components (σxx, σyy, τxy), Pa, compression negative.
+struct StressField {
+  std::array<double, 3> at_reference{0.0, 0.0, 0.0};
+  double reference_y = 0.0;                           // m
+  std::array<double, 3> gradient{0.0, 0.0, 0.0};      // Pa/m
+  std::array<double, 3> at(double y) const {
+    const double dy = y - reference_y;
+    return {at_reference[0] + gradient[0] * dy, at_reference[1] + gradient[1] * dy,
+            at_reference[2] + gradient[2] * dy};
+  }
+};
+
 // Everything the engine is built from.
 struct ModelDefinition {
   std::vector<BlockDefinition> blocks;
@@ -106,6 +131,10 @@ struct ModelDefinition {
   std::vector<PrescribedDisplacement> displacements;
   std::vector<EdgeTraction> tractions;
   std::vector<MeasuredPoint> measured_points;
+  std::vector<Roller> rollers;
+  // The in-situ stress: each block starts with it at its centroid (added to its own
+  // initial_stress), and the contacts that touch at the start carry it (initial_stress.hpp).
+  std::optional<StressField> initial_stress;
 };
 
 }  // namespace hydrodda::dda

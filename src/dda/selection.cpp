@@ -1,5 +1,7 @@
 #include "dda/selection.hpp"
 
+#include "dda/initial_stress.hpp"
+
 namespace hydrodda::dda {
 
 std::vector<VertexRef> select_vertices_on_segment(std::span<const BlockDefinition> blocks,
@@ -46,6 +48,29 @@ std::vector<EdgeTraction> make_tractions_on_segment(std::span<const BlockDefinit
     const Point p1 = p[(e.edge + 1) % p.size()];
     out.push_back({e.block, e.edge, at(p0, normal_a, normal_b), at(p1, normal_a, normal_b),
                    at(p0, shear_a, shear_b), at(p1, shear_a, shear_b)});
+  }
+  return out;
+}
+
+std::vector<Roller> make_rollers_on_segment(std::span<const BlockDefinition> blocks, Point a, Point b,
+                                            double tolerance, const std::optional<StressField>& initial_stress) {
+  const Point along = (b - a) / geometry::distance(a, b);
+  std::vector<Roller> out;
+  for (VertexRef v : select_vertices_on_segment(blocks, a, b, tolerance)) {
+    const Polygon& p = blocks[v.block].polygon;
+    const std::size_t n = p.size();
+    // The segment's normal that points away from the block.
+    Point normal{along.y, -along.x};
+    if (dot(geometry::centroid(p) - a, normal) > 0.0) normal = -1.0 * normal;
+    Roller roller{v.block, v.vertex, normal, 0.0};
+    if (initial_stress) {
+      // The field's push on the vertex's share of its faces along the boundary.
+      const Point here = p[v.vertex];
+      for (Point other : {p[(v.vertex + n - 1) % n], p[(v.vertex + 1) % n]})
+        if (geometry::distance_to_segment(other, a, b) <= tolerance)
+          roller.preload -= dot(compute_face_load(*initial_stress, here, other, normal), normal);
+    }
+    out.push_back(roller);
   }
   return out;
 }

@@ -2,6 +2,7 @@
 // Selecting block vertices and edges that lie on a segment: how "every block vertex on
 // boundary X" in a scenario becomes fixed points, displacements or tractions.
 
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -34,5 +35,11 @@ std::vector<EdgeTraction> make_tractions_on_segment(std::span<const BlockDefinit
                                                     Point a, Point b, double tolerance,
                                                     double normal_a, double normal_b,
                                                     double shear_a, double shear_b);
+
+// A roller at every block vertex on segment ab, its normal the segment's, pointing away from
+// the block. With an initial stress, each starts pushing its vertex in by the field's normal
+// traction over its share of the block's faces along the segment (compute_face_load).
+std::vector<Roller> make_rollers_on_segment(std::span<const BlockDefinition> blocks, Point a, Point b,
+                                            double tolerance, const std::optional<StressField>& initial_stress);
 
 }  // namespace hydrodda::dda

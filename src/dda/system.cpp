@@ -10,6 +10,7 @@
 
 #include "dda/anderson.hpp"
 #include "dda/array_growth.hpp"
+#include "dda/initial_stress.hpp"
 #include "dda/parallel.hpp"
 
 namespace hydrodda::dda {
@@ -65,6 +66,10 @@ System::System(ModelDefinition def, std::unique_ptr<LinearSolver> solver)
     blk.material = bd.material;
     blk.dof = bd.fixed ? -1 : unknown_count_++;
     blk.stress = Vector3(bd.initial_stress[0], bd.initial_stress[1], bd.initial_stress[2]);
+    if (def.initial_stress) {
+      const std::array<double, 3> in_situ = def.initial_stress->at(blk.moments.centroid.y);
+      blk.stress += Vector3(in_situ[0], in_situ[1], in_situ[2]);
+    }
     blk.velocity << bd.initial_velocity[0], bd.initial_velocity[1], bd.initial_velocity[2], 0,
         0, 0;
     if (bd.fixed) blk.velocity.setZero();
@@ -97,6 +102,15 @@ System::System(ModelDefinition def, std::unique_ptr<LinearSolver> solver)
     check_block(m.block);
     measured_.push_back({m.block, m.point, m.point});
   }
+  for (const Roller& r : def.rollers) {
+    check_block(r.block);
+    if (r.vertex < 0 || r.vertex >= static_cast<int>(blocks_[r.block].polygon.size()))
+      throw std::invalid_argument("DDA: roller on a missing vertex");
+    if (std::abs(geometry::norm(r.normal) - 1.0) > 1e-9) throw std::invalid_argument("DDA: a roller's normal must be a unit vector");
+    rollers_.push_back({r, blocks_[r.block].polygon[r.vertex]});
+  }
+  initial_stress_ = def.initial_stress;
+  preload_new_contacts_ = initial_stress_.has_value();
   // Shi's w0: half the model height sets the allowed step displacement.
   model_size_ = 0.5 * std::max(all.height(), 1e-3 * all.width());
   allowed_displacement_ = settings_.max_displacement_ratio * model_size_;
@@ -186,11 +200,24 @@ void System::detect_contacts() {
         a.record.state = c.penetration > -1e-2 * penetration_tolerance_ ? ContactState::locked
                                                                          : ContactState::open;
         a.record.reference_ratio = c.edge_ratio;
+        if (preload_new_contacts_ && a.record.state == ContactState::locked) preload_contact(a);
       }
       if (a.record.state == ContactState::open) a.record.reference_ratio = c.edge_ratio;
       linearise_contact(a);
     }
   });
+}
+
+void System::preload_contact(ActiveContact& c) const {
+  const Polygon& pj = blocks_[c.key.block_j].polygon;
+  const ContactPreload preload = compute_contact_preload(*initial_stress_, blocks_[c.key.block_i].polygon, c.key.vertex,
+                                                         pj, c.key.edge, contact_distance_);
+  c.record.multiplier = preload.normal;
+  c.record.normal_force = preload.normal;
+  // The locked spring pushes block i along the edge by −p s, s = (p1 − p0)·t: a reference
+  // point shear/p behind the vertex's projection makes it push by the shear from the start.
+  const double length = geometry::distance(pj[c.key.edge], pj[(c.key.edge + 1) % pj.size()]);
+  c.record.reference_ratio += preload.shear / (penalty_ * length);
 }
 
 void System::linearise_contact(ActiveContact& c) const {
@@ -263,6 +290,18 @@ void System::assemble_blocks(double dt, Matrix6Array& k, Eigen::VectorXd& f_base
     const TrackedPoint& tp = displacement_points_[i];
     const double ramp = std::min(1.0, (time_ + dt) / p.ramp_time);
     add_spring(tp.block, tp.position, tp.initial + ramp * p.value - tp.position);
+  }
+  for (const RollerPoint& r : rollers_) {
+    const Block& b = blocks_[r.roller.block];
+    if (b.dof < 0) continue;
+    const Point at = b.polygon[r.roller.vertex];
+    const Point n = r.roller.normal;
+    // ½ k (n·(x − x_initial + T D) + preload/k)², a spring along the normal only: stiffness
+    // k w wᵀ and load −w (k n·(x − x_initial) + preload), w = Tᵀ n. At the start it pushes the
+    // vertex in (along −n) by the preload.
+    const Vector6 w = compute_displacement_matrix(at, b.moments.centroid).transpose() * Eigen::Vector2d(n.x, n.y);
+    k[b.dof] += fixed_stiffness_ * w * w.transpose();
+    f_base.segment<6>(6 * b.dof) -= w * (fixed_stiffness_ * dot(n, at - r.initial) + r.roller.preload);
   }
   for (std::size_t i = 0; i < point_loads_.size(); ++i) {
     const Block& b = blocks_[load_points_[i].block];
@@ -698,6 +737,7 @@ void System::commit_step(const Eigen::VectorXd& d, double dt) {
     }
     records_[i] = {c.key, r};
   });
+  preload_new_contacts_ = false;
   time_ += dt;
 }
 

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -150,6 +151,9 @@ class System {
   bool many_contacts() const { return active_.size() >= 5000; }
   bool many_closed_contacts() const { return closed_.size() >= 5000; }  // loops over closed_
   void detect_contacts();
+  // A contact that touches at the start takes the initial stress's force across its faces: its
+  // multiplier the normal force, its shear reference moved so that its spring holds the shear.
+  void preload_contact(ActiveContact& c) const;
   void linearise_contact(ActiveContact& c) const;
   // Why a step's solve did not settle, if it did not.
   enum class Unsettled { no, contact_states, contact_forces };
@@ -193,6 +197,14 @@ class System {
   std::vector<TrackedPoint> displacement_points_;
   std::vector<EdgeTraction> tractions_;
   std::vector<TrackedPoint> measured_;
+  struct RollerPoint {
+    Roller roller;
+    Point initial;  // the vertex's position at the start
+  };
+  std::vector<RollerPoint> rollers_;
+  std::optional<StressField> initial_stress_;
+  // The contacts found touching at the first step start carrying the initial stress.
+  bool preload_new_contacts_ = false;
   std::vector<std::vector<Point>> vertex_forces_;
   std::unique_ptr<LinearSolver> solver_;
 

@@ -97,6 +97,8 @@ void System::import_state(const SystemState& s) {
   restore(displacement_points_, s.displacement_points);
   restore(measured_, s.measured_points);
   vertex_forces_ = s.vertex_forces;
+  // Contacts carry the initial stress from the first step only.
+  preload_new_contacts_ = initial_stress_ && s.time == 0.0 && s.contacts.empty();
   solver_->reset();
   contact_search_.forget();
 }
