@@ -14,13 +14,16 @@ namespace hydrodda::cli {
 int check_command(const std::filesystem::path& file) {
   const auto scenario = load_scenario(file);
   if (!scenario) return kBadInput;
+  std::string geometry;
   try {
-    run::check_model(*scenario);
+    geometry = run::check_model(*scenario);
   } catch (const scenario::ScenarioError& e) {
     print_scenario_errors(file, e);
     return kBadInput;
   }
-  std::fputs(fmt::format("{}: OK ({})\n", file.string(), describe(*scenario)).c_str(), stdout);
+  std::string description = describe(*scenario);
+  if (!geometry.empty()) description += ", " + geometry;
+  std::fputs(fmt::format("{}: OK ({})\n", file.string(), description).c_str(), stdout);
   return kSuccess;
 }
 

@@ -47,9 +47,8 @@ std::string describe(const scenario::Scenario& s) {
   const char* kind = s.mechanics && s.flow ? "coupled run" : s.mechanics ? "mechanics only" : "flow only";
   std::string text = kind;
   if (s.geometry) {
+    // A domain's traces and blocks are counted once it is cut (check_model).
     if (!s.geometry->blocks.empty()) text += fmt::format(", {} blocks", s.geometry->blocks.size());
-    if (!s.geometry->fractures.empty())
-      text += fmt::format(", {} fractures", s.geometry->fractures.size());
   }
   if (s.flow) text += fmt::format(", {} flow boundaries", s.flow->boundaries.size());
   return text;

@@ -195,6 +195,17 @@ BlockNetwork build_block_network(const BlockNetworkRequest& request) {
     const Point ca = centroids[a], cb = centroids[b];
     return ca.y != cb.y ? ca.y < cb.y : (ca.x != cb.x ? ca.x < cb.x : a < b);
   });
+  std::set<DirectedEdge> listed_faces;
+  for (std::size_t b : order) {
+    const Polygon& p = blocks[b].polygon;
+    for (std::size_t e = 0; e < p.size(); ++e) {
+      const Point a = p[e], c = p[(e + 1) % p.size()];
+      if (blocks[b].fractures[e] >= 0 && !listed_faces.contains(directed(c, a))) {
+        listed_faces.insert(directed(a, c));
+        network.faces.push_back({{a, c}, blocks[b].fractures[e]});
+      }
+    }
+  }
   for (std::size_t b : order) {
     ShrunkBlock& shrunk = *blocks[b].shrunk;
     std::vector<int> fractures;

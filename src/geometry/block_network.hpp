@@ -25,6 +25,12 @@ struct FractureTrace {
   TraceOrigin origin;
 };
 
+// A piece of a fracture between two blocks.
+struct FractureFace {
+  Segment2 segment;
+  int fracture = 0;  // its fracture id
+};
+
 struct BlockNetworkRequest {
   Polygon domain;                      // counter-clockwise
   std::vector<FractureTrace> traces;   // a trace's index is its fracture id
@@ -38,6 +44,9 @@ struct BlockNetwork {
   // Per block, per edge (vertex k → k + 1): the fracture id (index into the request's traces)
   // the edge lies on, −1 on the domain boundary.
   std::vector<std::vector<int>> edge_fractures;
+  // The fracture faces between the blocks before the aperture opened them, each once, with
+  // its fracture id: where the traces that remain run (mesh refinement, results per fracture).
+  std::vector<FractureFace> faces;
   std::vector<int> dropped_from;  // fracture ids with a piece that cut nothing, ascending
   double min_block_area = 0.0;    // the threshold used (m²)
   int cut_blocks = 0;             // blocks the cut made, before merging

@@ -6,10 +6,11 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "dda/selection.hpp"
 #include "mesh/mesh_request.hpp"
-#include "geometry/domain_cutting.hpp"
+#include "run/model_geometry.hpp"
 #include "hydro/permeability_law.hpp"
 #include "scenario/diagnostics.hpp"
 
@@ -42,6 +43,22 @@ int find_block(const std::vector<dda::BlockDefinition>& blocks, Point p, double 
   return -1;
 }
 
+// A mechanics-only model whose in-situ stress does not balance the rock's weight
+// (∂σyy/∂y + ρ g_y = 0, ∂τxy/∂y + ρ g_x = 0 for a field linear in y) does not start in
+// equilibrium: its blocks move at the first step. Said once, as the user may mean it.
+void note_unbalanced_initial_stress(const Scenario& s) {
+  if (s.flow || s.materials.size() != 1 || !s.materials[0].density) return;
+  const scenario::InitialStressDefinition& i = *s.mechanics->initial_stress;
+  const double rho = *s.materials[0].density;
+  const Point g = s.mechanics->gravity;
+  const double weight = rho * std::hypot(g.x, g.y);
+  const double off_y = i.gradient[1] + rho * g.y, off_x = i.gradient[2] + rho * g.x;
+  if (std::max(std::abs(off_x), std::abs(off_y)) > 0.01 * std::max(weight, 1e-300))
+    spdlog::warn("{}:{}: mechanics.initial_stress: the gradient [dσxx/dy, dσyy/dy, dτxy/dy] = [{:g}, {:g}, {:g}] Pa/m does "
+                 "not balance the rock's weight (dσyy/dy = {:g}, dτxy/dy = {:g} would): the blocks start out of equilibrium",
+                 s.file.string(), i.line, i.gradient[0], i.gradient[1], i.gradient[2], -rho * g.y, -rho * g.x);
+}
+
 int material_index(const Scenario& s, const std::string& name) {
   for (std::size_t i = 0; i < s.materials.size(); ++i)
     if (s.materials[i].name == name) return static_cast<int>(i);
@@ -50,19 +67,24 @@ int material_index(const Scenario& s, const std::string& name) {
 
 }  // namespace
 
+ModelGeometry build_and_log_geometry(const Scenario& s) {
+  ModelGeometry model = build_model_geometry(s);
+  for (const std::string& w : model.warnings) spdlog::warn("{}", w);
+  for (const std::string& n : model.notes) spdlog::info("{}", n);
+  spdlog::info("geometry: {}", model.summary);
+  return model;
+}
+
+std::vector<dda::BlockDefinition> blocks_of(const ModelGeometry& model) {
+  std::vector<dda::BlockDefinition> blocks;
+  for (const geometry::Polygon& p : model.network.blocks) blocks.push_back({p, 0, false});
+  return blocks;
+}
+
 std::vector<dda::BlockDefinition> build_blocks(const Scenario& s) {
   std::vector<dda::BlockDefinition> blocks;
   if (!s.geometry) return blocks;
-  if (!s.geometry->domain.empty()) {
-    std::vector<geometry::Segment2> fractures;
-    for (const scenario::Segment& f : s.geometry->fractures) fractures.push_back({f.from, f.to});
-    const geometry::CutResult cut = geometry::cut_domain(s.geometry->domain, fractures, s.geometry->welded);
-    for (const std::string& w : cut.warnings) spdlog::warn("{}: geometry.fractures: {}", s.file.string(), w);
-    for (const geometry::Polygon& p : geometry::shrink_blocks(cut.blocks, s.geometry->domain, s.geometry->initial_aperture))
-      blocks.push_back({p, 0, false});
-    spdlog::info("geometry: {} blocks cut from the domain by {} fractures", blocks.size(), fractures.size());
-    return blocks;
-  }
+  if (!s.geometry->domain.empty()) return blocks_of(build_and_log_geometry(s));
   for (const scenario::BlockDefinition& b : s.geometry->blocks) {
     dda::BlockDefinition block;
     block.polygon = b.vertices;
@@ -124,7 +146,8 @@ mesh::TriangleMesh build_mesh(const Scenario& s) {
   request.domain = s.geometry->domain;
   for (const scenario::BoundarySegment& b : s.boundaries)
     if (!b.is_default) request.boundaries.push_back({b.name, b.segment.from, b.segment.to});
-  for (const scenario::Segment& f : s.geometry->fractures) request.refinement_lines.push_back({f.from, f.to});
+  for (const geometry::FractureTrace& t : collect_fracture_traces(s))
+    request.refinement_lines.push_back({t.segment.from, t.segment.to});
   for (const scenario::FlowRegion& r : s.flow->regions) request.regions.push_back({r.name, r.polygon});
   request.size = m.size;
   request.fracture_size = m.fracture_size;
@@ -240,6 +263,19 @@ dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::B
     if (tractions.empty())
       errors.push_back({file, t.line, "mechanics.traction.boundary", fmt::format("no block edge lies on boundary \"{}\"", t.boundary)});
     model.tractions.insert(model.tractions.end(), tractions.begin(), tractions.end());
+  }
+  if (m.initial_stress) {
+    const scenario::InitialStressDefinition& i = *m.initial_stress;
+    model.initial_stress = dda::StressField{i.stress, i.reference_y, i.gradient};
+    note_unbalanced_initial_stress(s);
+  }
+  for (const scenario::RollerDefinition& r : m.rollers) {
+    const scenario::BoundarySegment* boundary = s.find_boundary(r.boundary);
+    const auto rollers = dda::make_rollers_on_segment(blocks, boundary->segment.from, boundary->segment.to, tolerance,
+                                                      model.initial_stress);
+    if (rollers.empty())
+      errors.push_back({file, r.line, "mechanics.roller.boundary", fmt::format("no block vertex lies on boundary \"{}\"", r.boundary)});
+    model.rollers.insert(model.rollers.end(), rollers.begin(), rollers.end());
   }
   for (const scenario::MeasurePoint& p : m.measures) {
     const int block = find_block(blocks, p.point, tolerance);

@@ -3,17 +3,25 @@
 // (a fixed point in no block, a boundary that touches no block) are input errors: they are
 // thrown as a ScenarioError naming the file, line and key, like the reader's.
 
+#include <string>
 #include <vector>
 
 #include "coupling/permeability_model.hpp"
 #include "dda/definitions.hpp"
 #include "hydro/darcy_solver.hpp"
 #include "mesh/triangle_mesh.hpp"
+#include "run/model_geometry.hpp"
 
 #include <optional>
 #include "scenario/scenario.hpp"
 
 namespace hydrodda::run {
+
+// The scenario's domain cut into blocks (model_geometry.hpp), its warnings and summary logged.
+ModelGeometry build_and_log_geometry(const scenario::Scenario& scenario);
+
+// The blocks of a cut domain: they take the only material and are free.
+std::vector<dda::BlockDefinition> blocks_of(const ModelGeometry& model);
 
 // The block polygons of the scenario (counter-clockwise), with their material index and
 // fixed flag, in the order the scenario defines them.

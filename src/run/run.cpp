@@ -94,12 +94,20 @@ RunResult resume(const ResumedRun& resumed, std::optional<int> stop_after, const
                 &resumed.checkpoint, stop_after, callbacks);
 }
 
-void check_model(const scenario::Scenario& s) {
-  if (s.mechanics) build_mechanics_model(s, build_blocks(s));
+std::string check_model(const scenario::Scenario& s) {
+  std::string geometry;
+  if (s.geometry && !s.geometry->domain.empty()) {
+    const ModelGeometry model = build_and_log_geometry(s);
+    geometry = model.summary;
+    if (s.mechanics) build_mechanics_model(s, blocks_of(model));
+  } else if (s.mechanics) {
+    build_mechanics_model(s, build_blocks(s));
+  }
   if (s.mesh && s.mesh->file) {
     const mesh::TriangleMesh mesh = read_mesh_file(s);
     spdlog::debug("mesh.file: {} nodes, {} triangles", mesh.node_count(), mesh.triangle_count());
   }
+  return geometry;
 }
 
 }  // namespace hydrodda::run

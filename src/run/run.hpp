@@ -102,7 +102,8 @@ RunResult resume(const ResumedRun& resumed, std::optional<int> stop_after, const
 std::optional<std::string> read_text_file(const std::filesystem::path& file);
 
 // What only building the model shows (a fixed point in no block, a boundary the mesh file does
-// not name), short of meshing and running: throws scenario::ScenarioError listing it.
-void check_model(const scenario::Scenario& scenario);
+// not name), short of meshing and running: throws scenario::ScenarioError listing it. Returns
+// the traces and blocks the domain is cut into ("" without a domain).
+std::string check_model(const scenario::Scenario& scenario);
 
 }  // namespace hydrodda::run

@@ -126,11 +126,12 @@ std::string apply_overrides(std::string_view text, const std::filesystem::path& 
                           "malformed TOML: " + std::string(e.description())}});
   }
   for (const Override& o : overrides) apply_override(file, document, o);
-  if (toml::table* mesh = document["mesh"].as_table())
-    if (const auto mesh_file = mesh->get_as<std::string>("file")) {
-      const std::filesystem::path path(mesh_file->get());
-      if (path.is_relative()) mesh->insert_or_assign("file", std::filesystem::absolute(file.parent_path() / path).string());
-    }
+  for (const auto& [section, key] : {std::pair{"mesh", "file"}, std::pair{"geometry", "fractures_file"}})
+    if (toml::table* table = document[section].as_table())
+      if (const auto named = table->get_as<std::string>(key)) {
+        const std::filesystem::path path(named->get());
+        if (path.is_relative()) table->insert_or_assign(key, std::filesystem::absolute(file.parent_path() / path).string());
+      }
   std::ostringstream out;
   out << toml::toml_formatter(document) << '\n';
   return out.str();

@@ -19,9 +19,10 @@ struct Override {
 
 // The scenario `text` (read from `file`) with every override applied, as TOML. A key may name
 // a value that is not in the file if its table is (the reader then checks the name); every
-// table and array element on the way must exist. A relative mesh.file is made absolute, so the
-// result can be written anywhere. Comments are not kept. Throws ScenarioError naming `file`
-// and the key when the text is not TOML or a key cannot be followed.
+// table and array element on the way must exist. A relative mesh.file or
+// geometry.fractures_file is made absolute, so the result can be written anywhere. Comments
+// are not kept. Throws ScenarioError naming `file` and the key when the text is not TOML or a
+// key cannot be followed.
 std::string apply_overrides(std::string_view text, const std::filesystem::path& file,
                             const std::vector<Override>& overrides);
 

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "scenario/fracture_sources.hpp"
+#include "scenario/rollers_and_initial_stress.hpp"
 #include "scenario/table_view.hpp"
 #include "scenario/validation.hpp"
 
@@ -36,7 +38,8 @@ void read_geometry(ReadContext& ctx, const TableView& root, Scenario& s) {
   const toml::table* t = root.table("geometry");
   if (!t) return;
   const TableView g(ctx, *t, "geometry",
-                    {"domain", "fractures", "welded", "initial_aperture", "block"});
+                    {"domain", "fractures", "welded", "initial_aperture", "block", "joint_set", "fractures_file",
+                     "min_block_area"});
   GeometryDefinition geometry;
   if (auto domain = g.points("domain")) {
     geometry.domain = std::move(*domain);
@@ -58,6 +61,13 @@ void read_geometry(ReadContext& ctx, const TableView& root, Scenario& s) {
     }
     geometry.fractures.push_back({line_points[0], line_points[1]});
   }
+  read_joint_sets(ctx, g, geometry);
+  read_fractures_file(ctx, g, s.file, geometry);
+  const bool has_traces = !geometry.fractures.empty() || !geometry.joint_sets.empty() || !geometry.file_fractures.empty();
+  if (auto area = g.number("min_block_area")) {
+    geometry.min_block_area = *area;
+    g.require("min_block_area", *area > 0.0, "must be > 0");
+  }
   for (auto& [polygon, line] : g.point_lists("welded")) {
     check_polygon(ctx, line, "geometry.welded", polygon);
     geometry.welded.push_back(std::move(polygon));
@@ -65,9 +75,10 @@ void read_geometry(ReadContext& ctx, const TableView& root, Scenario& s) {
   if (g.has("initial_aperture")) {
     geometry.initial_aperture = g.number("initial_aperture").value_or(0.0);
     g.require("initial_aperture", geometry.initial_aperture >= 0.0, "must be >= 0");
-  } else if (!geometry.fractures.empty()) {
+  } else if (has_traces) {
     geometry.initial_aperture = g.number_or("initial_aperture", 0.0);
   }
+  geometry.initial_aperture_line = g.line_of_key("initial_aperture");
   for (const toml::table* bt : g.tables("block")) {
     const TableView b(ctx, *bt, "geometry.block", {"vertices", "material", "fixed"});
     BlockDefinition block;
@@ -84,8 +95,8 @@ void read_geometry(ReadContext& ctx, const TableView& root, Scenario& s) {
   if (!geometry.domain.empty() && !geometry.blocks.empty())
     ctx.error(g.line(), "geometry.block",
               "give either a domain cut by fractures or blocks one by one, not both");
-  if (geometry.domain.empty() && (!geometry.fractures.empty() || !geometry.welded.empty()))
-    ctx.error(g.line(), "geometry.domain", "fractures and welded regions need a domain to cut");
+  if (geometry.domain.empty() && (has_traces || !geometry.welded.empty()))
+    ctx.error(g.line(), "geometry.domain", "fractures, joint sets and welded regions need a domain to cut");
   s.geometry = std::move(geometry);
 }
 
@@ -190,7 +201,7 @@ void read_mechanics(ReadContext& ctx, const TableView& root, Scenario& s) {
   const TableView m(ctx, *t, "mechanics",
                     {"analysis", "plane", "gravity", "time_step", "steps", "end_time",
                      "max_displacement_ratio", "contact", "penalty", "fixed", "load",
-                     "displacement", "traction", "measure"});
+                     "displacement", "traction", "measure", "roller", "initial_stress"});
   MechanicsDefinition mech;
   mech.analysis = m.choice("analysis", {"static", "dynamic"}, "static") == 1 ? Analysis::Dynamic
                                                                              : Analysis::Static;
@@ -279,6 +290,8 @@ void read_mechanics(ReadContext& ctx, const TableView& root, Scenario& s) {
                   fmt::format("\"{}\" is already used (line {})", measure.name, other.line));
     mech.measures.push_back(std::move(measure));
   }
+  read_rollers(ctx, m, mech);
+  read_initial_stress(ctx, m, mech);
   s.mechanics = std::move(mech);
 }
 

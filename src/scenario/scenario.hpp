@@ -2,6 +2,8 @@
 // The scenario as plain definition structs: what the user asked for, validated, in SI units.
 // Nothing here knows the engines; the run command turns these into engine inputs.
 
+#include <array>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -27,11 +29,38 @@ struct BlockDefinition {
   int line = 0;               // where it was defined, for messages
 };
 
+// A generated set of parallel joints ([[geometry.joint_set]]); see geometry/joint_sets.hpp.
+struct JointSetDefinition {
+  double angle = 0.0;               // degrees counter-clockwise from +x
+  double spacing = 0.0;             // m, along the set's normal
+  double angle_spread = 0.0;        // degrees (standard deviation)
+  double spacing_spread = 0.0;      // m
+  std::optional<double> length;     // m, mean trace length; empty: persistent
+  double length_spread = 0.0;       // m
+  std::optional<double> gap;        // m, mean rock bridge along a joint; empty: the length
+  double gap_spread = 0.0;          // m
+  std::optional<double> offset;     // m, first joint from the region's lowest corner; empty: spacing / 2
+  Polygon region;                   // empty: the domain
+  std::uint64_t seed = 0;
+  int line = 0;
+};
+
+// A trace read from geometry.fractures_file, with its line there.
+struct FileFracture {
+  Segment segment;
+  int line = 0;
+};
+
 struct GeometryDefinition {
   Polygon domain;                    // empty when blocks are given one by one
   std::vector<Segment> fractures;
+  std::vector<JointSetDefinition> joint_sets;
+  std::optional<std::filesystem::path> fractures_file;  // resolved against the scenario's folder
+  std::vector<FileFracture> file_fractures;             // its rows, in order
   std::vector<Polygon> welded;
   double initial_aperture = 0.0;     // m
+  int initial_aperture_line = 0;     // for messages about blocks too thin for it
+  std::optional<double> min_block_area;  // m2; empty: 1% of the mean block area of the cut
   std::vector<BlockDefinition> blocks;
 };
 
@@ -96,6 +125,20 @@ struct MeasurePoint {
   int line = 0;
 };
 
+// Every block vertex on a boundary held to it along its normal, free along it.
+struct RollerDefinition {
+  std::string boundary;
+  int line = 0;
+};
+
+// The in-situ stress, linear in y: stress + gradient (y − reference_y), each (σxx, σyy, τxy).
+struct InitialStressDefinition {
+  std::array<double, 3> stress{0.0, 0.0, 0.0};    // Pa, compression negative
+  double reference_y = 0.0;                        // m
+  std::array<double, 3> gradient{0.0, 0.0, 0.0};  // Pa/m
+  int line = 0;
+};
+
 struct MechanicsDefinition {
   Analysis analysis = Analysis::Static;
   Plane plane = Plane::Strain;
@@ -111,6 +154,8 @@ struct MechanicsDefinition {
   std::vector<PrescribedDisplacement> displacements;
   std::vector<Traction> tractions;
   std::vector<MeasurePoint> measures;
+  std::vector<RollerDefinition> rollers;
+  std::optional<InitialStressDefinition> initial_stress;
 };
 
 enum class PressureConvention { Overpressure, Hydrostatic };

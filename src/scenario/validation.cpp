@@ -174,11 +174,12 @@ void check_static_support(ReadContext& ctx, const TableView& root, const Scenari
   if (!s.mechanics || s.mechanics->analysis != Analysis::Static || !s.geometry) return;
   const bool fixed_block = std::any_of(s.geometry->blocks.begin(), s.geometry->blocks.end(),
                                        [](const BlockDefinition& b) { return b.fixed; });
-  if (fixed_block || !s.mechanics->fixed.empty() || !s.mechanics->displacements.empty()) return;
+  if (fixed_block || !s.mechanics->fixed.empty() || !s.mechanics->displacements.empty() || !s.mechanics->rollers.empty())
+    return;
   ctx.error(root.line_of_key("mechanics"), "mechanics.analysis",
             "static analysis with nothing to hold the blocks: no fixed block (geometry.block fixed = "
-            "true), no [[mechanics.fixed]] point and no [[mechanics.displacement]], so nothing stops "
-            "rigid-body motion; add a support or use analysis = \"dynamic\"");
+            "true), no [[mechanics.fixed]] point, no [[mechanics.displacement]] and no [[mechanics.roller]], "
+            "so nothing stops rigid-body motion; add a support or use analysis = \"dynamic\"");
 }
 
 }  // namespace
@@ -206,6 +207,8 @@ void validate_scenario(ReadContext& ctx, const TableView& root, Scenario& s) {
       check_boundary_reference(ctx, s, d.line, "mechanics.displacement.boundary", d.boundary);
     for (const Traction& t : s.mechanics->tractions)
       check_boundary_reference(ctx, s, t.line, "mechanics.traction.boundary", t.boundary);
+    for (const RollerDefinition& r : s.mechanics->rollers)
+      check_boundary_reference(ctx, s, r.line, "mechanics.roller.boundary", r.boundary);
   }
   if (s.flow) {
     bool head_fixed = false;

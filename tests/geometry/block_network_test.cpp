@@ -48,6 +48,12 @@ TEST(BlockNetwork, EachEdgeKnowsItsFracture) {
     }
   }
   EXPECT_EQ(net.merged_small, 0);
+  // The faces: the vertical trace in two pieces, the horizontal one in two, each listed once.
+  ASSERT_EQ(net.faces.size(), 4u);
+  double length[2] = {0, 0};
+  for (const FractureFace& f : net.faces) length[f.fracture] += distance(f.segment.from, f.segment.to);
+  EXPECT_NEAR(length[0], 4.0, 1e-15);
+  EXPECT_NEAR(length[1], 4.0, 1e-15);
 }
 
 TEST(BlockNetwork, AnIslandOfTracesIsDroppedNotLeftAsAHole) {

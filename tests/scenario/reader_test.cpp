@@ -58,6 +58,12 @@ TEST(ScenarioReader, ReadsEveryKeyOfTheContract) {
   EXPECT_DOUBLE_EQ(s.mechanics->tractions[0].normal_end, -5.0e6);  // defaults to `normal`
   ASSERT_EQ(s.mechanics->measures.size(), 1u);
   EXPECT_EQ(s.mechanics->measures[0].name, "A");
+  ASSERT_EQ(s.mechanics->rollers.size(), 1u);
+  EXPECT_EQ(s.mechanics->rollers[0].boundary, "left");
+  ASSERT_TRUE(s.mechanics->initial_stress);
+  EXPECT_EQ(s.mechanics->initial_stress->stress, (std::array<double, 3>{-5.0e6, -1.0e7, 0.0}));
+  EXPECT_EQ(s.mechanics->initial_stress->reference_y, 0.0);
+  EXPECT_EQ(s.mechanics->initial_stress->gradient, (std::array<double, 3>{1.2e4, 2.4e4, 0.0}));
 
   ASSERT_TRUE(s.flow);
   EXPECT_EQ(s.flow->pressure, PressureConvention::Overpressure);

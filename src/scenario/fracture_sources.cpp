@@ -1,0 +1,159 @@
+#include "scenario/fracture_sources.hpp"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "scenario/validation.hpp"
+
+namespace hydrodda::scenario {
+
+namespace {
+
+// More traces than the cutting handles in reasonable time (a few thousand take a second).
+constexpr double kMaxTracesPerSet = 100'000;
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  return s;
+}
+
+// The comma-separated numbers of a line, or empty when a field is not a finite number.
+std::optional<std::vector<double>> parse_numbers(std::string_view line) {
+  std::vector<double> values;
+  for (;;) {
+    const std::size_t comma = line.find(',');
+    const std::string_view field = trim(line.substr(0, comma));
+    double v = 0.0;
+    const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), v);
+    if (field.empty() || error != std::errc() || end != field.data() + field.size() || !std::isfinite(v))
+      return std::nullopt;
+    values.push_back(v);
+    if (comma == std::string_view::npos) return values;
+    line.remove_prefix(comma + 1);
+  }
+}
+
+}  // namespace
+
+void read_joint_sets(ReadContext& ctx, const TableView& g, GeometryDefinition& geometry) {
+  int index = 0;
+  for (const toml::table* table : g.tables("joint_set")) {
+    ++index;
+    const TableView j(ctx, *table, "geometry.joint_set",
+                      {"angle", "spacing", "angle_spread", "spacing_spread", "length", "length_spread", "gap",
+                       "gap_spread", "offset", "region", "seed"});
+    JointSetDefinition set;
+    set.line = j.line();
+    for (const char* key : {"angle", "spacing"})
+      if (!j.has(key)) ctx.error(j.line(), j.key_path(key), "required key is missing");
+    set.angle = j.number("angle").value_or(0.0);
+    set.spacing = j.number("spacing").value_or(0.0);
+    if (j.has("spacing")) j.require("spacing", set.spacing > 0.0, "must be > 0");
+    const auto spread = [&](const char* key) {
+      const double v = j.number(key).value_or(0.0);
+      j.require(key, v >= 0.0, "must be >= 0");
+      return v;
+    };
+    set.angle_spread = spread("angle_spread");
+    set.spacing_spread = spread("spacing_spread");
+    set.length_spread = spread("length_spread");
+    set.gap_spread = spread("gap_spread");
+    set.length = j.number("length");
+    if (set.length) j.require("length", *set.length > 0.0, "must be > 0");
+    set.gap = j.number("gap");
+    if (set.gap) j.require("gap", *set.gap > 0.0, "must be > 0");
+    for (const char* key : {"length_spread", "gap", "gap_spread"})
+      if (j.has(key) && !j.has("length"))
+        ctx.error(j.line_of_key(key), j.key_path(key), "applies to traces of a given length: give 'length' too");
+    set.offset = j.number("offset");
+    if (set.offset) j.require("offset", *set.offset >= 0.0, "must be >= 0");
+    if (auto region = j.points("region")) {
+      set.region = std::move(*region);
+      check_polygon(ctx, j.line_of_key("region"), j.key_path("region"), set.region);
+    }
+    if (auto seed = j.integer("seed")) {
+      j.require("seed", *seed >= 0, "must be a whole number >= 0");
+      set.seed = static_cast<std::uint64_t>(std::max(*seed, 0LL));
+    } else if (!j.has("seed")) {
+      ctx.defaults.push_back({fmt::format("geometry.joint_set[{}].seed", index - 1), "0"});
+    }
+    // A guard against a spacing meant in other units: the traces the set would make, roughly
+    // (joints across the region's box diagonal, each cut into traces and gaps along it).
+    const Polygon& region = set.region.empty() ? geometry.domain : set.region;
+    if (set.spacing > 0.0 && region.size() >= 3) {
+      const geometry::Box box = geometry::bounding_box(region);
+      const double diagonal = std::hypot(box.width(), box.height());
+      const double per_joint = set.length ? diagonal / (*set.length + set.gap.value_or(*set.length)) + 1.0 : 1.0;
+      const double traces = diagonal / set.spacing * per_joint;
+      if (traces > kMaxTracesPerSet)
+        ctx.error(j.line_of_key("spacing"), j.key_path("spacing"),
+                  fmt::format("the set would make some {:.3g} traces; at most {:g} can be cut into blocks", traces,
+                              kMaxTracesPerSet));
+    }
+    geometry.joint_sets.push_back(std::move(set));
+  }
+}
+
+void read_fractures_file(ReadContext& ctx, const TableView& g, const std::filesystem::path& scenario_file,
+                         GeometryDefinition& geometry) {
+  const auto name = g.string("fractures_file");
+  if (!name) return;
+  const int line = g.line_of_key("fractures_file");
+  const std::string key = g.key_path("fractures_file");
+  std::filesystem::path path(*name);
+  if (path.is_relative()) path = scenario_file.parent_path() / path;
+  geometry.fractures_file = path;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    ctx.error(line, key, fmt::format("cannot read {}", path.string()));
+    return;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  geometry.file_fractures = parse_fracture_rows(text.str(), path.string(), key, ctx.errors);
+  if (geometry.file_fractures.empty())
+    ctx.error(line, key, fmt::format("{} holds no fracture rows x1,y1,x2,y2", path.string()));
+}
+
+std::vector<FileFracture> parse_fracture_rows(std::string_view text, const std::string& file, const std::string& key,
+                                              std::vector<Diagnostic>& errors) {
+  std::vector<FileFracture> rows;
+  int line_number = 0;
+  bool first_content = true;
+  int reported = 0;
+  const auto error = [&](std::string message) {
+    if (++reported <= 20) errors.push_back({file, line_number, key, std::move(message)});
+    else if (reported == 21) errors.push_back({file, line_number, key, "more bad rows follow; fix these first"});
+  };
+  while (!text.empty()) {
+    const std::size_t end = text.find('\n');
+    const std::string_view line = trim(text.substr(0, end));
+    text.remove_prefix(end == std::string_view::npos ? text.size() : end + 1);
+    ++line_number;
+    if (line.empty() || line.front() == '#') continue;
+    const auto numbers = parse_numbers(line);
+    const bool header = first_content && !numbers &&
+                        std::any_of(line.begin(), line.end(), [](char c) { return std::isalpha(static_cast<unsigned char>(c)); });
+    first_content = false;
+    if (header) continue;
+    if (!numbers || numbers->size() != 4) {
+      error(fmt::format("expected four numbers x1,y1,x2,y2, got \"{}\"", line));
+      continue;
+    }
+    const Point from{(*numbers)[0], (*numbers)[1]}, to{(*numbers)[2], (*numbers)[3]};
+    if (from == to) {
+      error("the trace's two end points coincide");
+      continue;
+    }
+    rows.push_back({{from, to}, line_number});
+  }
+  return rows;
+}
+
+}  // namespace hydrodda::scenario
