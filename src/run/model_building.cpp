@@ -69,6 +69,8 @@ int material_index(const Scenario& s, const std::string& name) {
 
 ModelGeometry build_and_log_geometry(const Scenario& s) {
   ModelGeometry model = build_model_geometry(s);
+  if (!s.geometry->min_block_area)
+    spdlog::debug("default used: geometry.min_block_area = {:.3g} (1% of the mean block area)", model.network.min_block_area);
   for (const std::string& w : model.warnings) spdlog::warn("{}", w);
   for (const std::string& n : model.notes) spdlog::info("{}", n);
   spdlog::info("geometry: {}", model.summary);

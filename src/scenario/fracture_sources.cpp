@@ -73,6 +73,9 @@ void read_joint_sets(ReadContext& ctx, const TableView& g, GeometryDefinition& g
         ctx.error(j.line_of_key(key), j.key_path(key), "applies to traces of a given length: give 'length' too");
     set.offset = j.number("offset");
     if (set.offset) j.require("offset", *set.offset >= 0.0, "must be >= 0");
+    const std::string indexed = fmt::format("geometry.joint_set[{}]", index - 1);
+    if (!j.has("offset")) ctx.defaults.push_back({indexed + ".offset", format_number(0.5 * set.spacing) + " (spacing / 2)"});
+    if (set.length && !j.has("gap")) ctx.defaults.push_back({indexed + ".gap", format_number(*set.length) + " (length)"});
     if (auto region = j.points("region")) {
       set.region = std::move(*region);
       check_polygon(ctx, j.line_of_key("region"), j.key_path("region"), set.region);
@@ -81,7 +84,7 @@ void read_joint_sets(ReadContext& ctx, const TableView& g, GeometryDefinition& g
       j.require("seed", *seed >= 0, "must be a whole number >= 0");
       set.seed = static_cast<std::uint64_t>(std::max(*seed, 0LL));
     } else if (!j.has("seed")) {
-      ctx.defaults.push_back({fmt::format("geometry.joint_set[{}].seed", index - 1), "0"});
+      ctx.defaults.push_back({indexed + ".seed", "0"});
     }
     // A guard against a spacing meant in other units: the traces the set would make, roughly
     // (joints across the region's box diagonal, each cut into traces and gaps along it).
