@@ -8,7 +8,7 @@ namespace hydrodda::output {
 namespace {
 
 constexpr std::string_view kMagic = "hydrodda checkpoint\n";
-constexpr std::int64_t kVersion = 1;
+constexpr std::int64_t kVersion = 2;  // 2: measure.csv rows after history.csv's
 constexpr std::uint32_t kByteOrderMark = 0x01020304;
 // Any list longer than the file could hold is damage, not data; this bounds allocations.
 constexpr std::int64_t kMaxCount = std::int64_t{1} << 40;
@@ -231,6 +231,7 @@ std::string encode_checkpoint(const RunCheckpoint& c) {
   w.put(c.scenario_file);
   w.put(c.converged);
   w.put(c.history);
+  w.put(c.measure);
   w.put(c.written_iterations);
   w.put(static_cast<std::int64_t>(c.timings.size()));
   for (const auto& [name, seconds] : c.timings) {
@@ -270,6 +271,7 @@ RunCheckpoint decode_checkpoint(std::string_view bytes) {
   r.get(c.scenario_file);
   r.get(c.converged);
   r.get(c.history);
+  r.get(c.measure);
   r.get(c.written_iterations);
   std::int64_t timings = 0;
   r.get(timings);

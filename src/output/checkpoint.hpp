@@ -26,6 +26,7 @@ struct RunCheckpoint {
   std::string scenario_file;        // that scenario's absolute path (base of its relative paths)
   bool converged = false;
   std::vector<std::vector<std::string>> history;  // history.csv rows so far, header excluded
+  std::vector<std::vector<std::string>> measure;  // measure.csv rows so far, header excluded
   std::vector<int> written_iterations;            // iterations whose ParaView files exist
   std::vector<std::pair<std::string, double>> timings;  // seconds per phase so far
   dda::SystemState mechanics;

@@ -78,6 +78,10 @@ output::RunSummary CoupledModel::summary() const {
   return summary;
 }
 
+std::vector<std::optional<output::RegionSummary>> CoupledModel::region_flows() const {
+  return summarise_regions(scenario_, mesh_, loop_->flow(), matrix_flow_);
+}
+
 std::vector<output::NamedValue> CoupledModel::timings() const {
   return {{"mesh", mesh_seconds_}, {"porosity", porosity_seconds_}, {"flow", flow_seconds_},
           {"forces", forces_seconds_}, {"mechanics", mechanics_seconds_}};

@@ -60,6 +60,9 @@ class CoupledModel {
   // summary.json's blocks, measured points and flow (once a pass has solved it), iterations =
   // passes finished; no timings.
   output::RunSummary summary() const;
+  // Each [[flow.region]]'s flow and effective conductivity now (summarise_regions); needs a
+  // finished pass.
+  std::vector<std::optional<output::RegionSummary>> region_flows() const;
   // Seconds per phase: mesh, porosity, flow, forces, mechanics.
   std::vector<output::NamedValue> timings() const;
   // Adds the seconds of a run's earlier part (as its checkpoint holds them) to the phases of the

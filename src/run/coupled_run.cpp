@@ -2,6 +2,9 @@
 #include <spdlog/spdlog.h>
 
 #include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
 #include <utility>
 
 #include "run/coupled_model.hpp"
@@ -54,7 +57,13 @@ output::RunSummary run_coupled(const RunContext& context) {
   std::vector<std::string> columns{"iteration", "time", "head_change", "displacement_change",
                                    "largest_opening", "mean_porosity", "max_permeability"};
   for (const scenario::FlowBoundaryCondition& bc : s.flow->boundaries) columns.push_back("flow_" + bc.name);
+  for (const scenario::FlowRegion& r : s.flow->regions) {
+    columns.push_back("region_flow_" + r.name);
+    columns.push_back("region_conductivity_" + r.name);
+  }
   CsvTable history(columns);
+  const std::vector<scenario::MeasurePoint>& measures = s.mechanics->measures;
+  CsvTable measure({"iteration", "time", "name", "x", "y", "ux", "uy"});
 
   // What a checkpoint holds besides the engines' states; restored first when resuming.
   output::RunCheckpoint checkpoint;
@@ -65,6 +74,8 @@ output::RunSummary run_coupled(const RunContext& context) {
     const output::RunCheckpoint& saved = *context.resume;
     model.import_state({saved.mechanics, saved.coupling});
     checkpoint.history = saved.history;
+    checkpoint.measure = saved.measure;
+    for (const std::vector<std::string>& row : saved.measure) measure.add_row(row);
     checkpoint.written_iterations = saved.written_iterations;
     for (const std::vector<std::string>& row : saved.history) history.add_row(row);
     paraview.list_written(saved.written_iterations);
@@ -113,9 +124,25 @@ output::RunSummary run_coupled(const RunContext& context) {
                                    CsvTable::cell(r.max_permeability)};
       for (const scenario::FlowBoundaryCondition& bc : s.flow->boundaries)
         row.push_back(CsvTable::cell(loop.flow().boundary_flow(bc.name)));
+      // A region that holds no element has empty cells (summary.json's warning says why).
+      for (const std::optional<output::RegionSummary>& region : model.region_flows()) {
+        row.push_back(region ? CsvTable::cell(region->flow) : "");
+        row.push_back(region ? CsvTable::cell(region->effective_conductivity) : "");
+      }
       history.add_row(row);
       checkpoint.history.push_back(row);
       context.folder.write("history.csv", history.text());
+      const auto positions = system.measured_positions();
+      for (std::size_t i = 0; i < positions.size(); ++i) {
+        const geometry::Point p0 = measures[i].point;
+        std::vector<std::string> measured{CsvTable::cell(static_cast<long long>(r.iteration)), CsvTable::cell(r.time),
+                                          measures[i].name, CsvTable::cell(positions[i].x),
+                                          CsvTable::cell(positions[i].y), CsvTable::cell(positions[i].x - p0.x),
+                                          CsvTable::cell(positions[i].y - p0.y)};
+        measure.add_row(measured);
+        checkpoint.measure.push_back(std::move(measured));
+      }
+      if (!measures.empty()) context.folder.write("measure.csv", measure.text());
       context.report(report_pass(r));
       spdlog::debug("iteration {}: head change {:.3e}, displacement change {:.3e}", r.iteration, r.head_change,
                     r.displacement_change);

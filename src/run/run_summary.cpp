@@ -35,23 +35,36 @@ std::optional<hydro::FlowSolution> solve_matrix_flow(const scenario::Scenario& s
   return solver.solve(compute_matrix_permeability(s, mesh));
 }
 
+std::vector<std::optional<output::RegionSummary>> summarise_regions(const scenario::Scenario& s,
+                                                                  const mesh::TriangleMesh& mesh,
+                                                                  const hydro::FlowSolution& solution,
+                                                                  const std::optional<hydro::FlowSolution>& matrix) {
+  std::vector<std::optional<output::RegionSummary>> regions;
+  for (const scenario::FlowRegion& r : s.flow->regions) {
+    const std::vector<int> triangles = select_triangles_in(mesh, r.polygon);
+    if (triangles.empty()) {
+      regions.emplace_back();
+      continue;
+    }
+    const hydro::RegionFlow region = hydro::compute_region_flow(mesh, solution, triangles);
+    // What a run of the unfractured case reports for the region (its own flow direction).
+    const double k_matrix = hydro::compute_region_flow(mesh, *matrix, triangles).effective_conductivity;
+    regions.push_back(output::RegionSummary{r.name, region.flow, region.effective_conductivity, k_matrix,
+                                            region.effective_conductivity / k_matrix});
+  }
+  return regions;
+}
+
 output::FlowSummary summarise_flow(const scenario::Scenario& s, const mesh::TriangleMesh& mesh,
                                    const hydro::FlowSolution& solution,
                                    const std::optional<hydro::FlowSolution>& matrix) {
   output::FlowSummary flow;
   for (const hydro::BoundaryFlow& b : solution.boundary_flows) flow.boundaries.push_back({b.name, b.flow});
   flow.balance = solution.balance_error;
-  for (const scenario::FlowRegion& r : s.flow->regions) {
-    const std::vector<int> triangles = select_triangles_in(mesh, r.polygon);
-    if (triangles.empty()) {
-      spdlog::warn("flow region \"{}\" holds no element: nothing to report", r.name);
-      continue;
-    }
-    const hydro::RegionFlow region = hydro::compute_region_flow(mesh, solution, triangles);
-    // What a run of the unfractured case reports for the region (its own flow direction).
-    const double k_matrix = hydro::compute_region_flow(mesh, *matrix, triangles).effective_conductivity;
-    flow.regions.push_back({r.name, region.flow, region.effective_conductivity, k_matrix,
-                            region.effective_conductivity / k_matrix});
+  const auto regions = summarise_regions(s, mesh, solution, matrix);
+  for (std::size_t i = 0; i < regions.size(); ++i) {
+    if (regions[i]) flow.regions.push_back(*regions[i]);
+    else spdlog::warn("flow region \"{}\" holds no element: nothing to report", s.flow->regions[i].name);
   }
   return flow;
 }

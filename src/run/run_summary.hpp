@@ -2,6 +2,7 @@
 // The parts of summary.json that every kind of run fills the same way.
 
 #include <optional>
+#include <vector>
 
 #include "dda/system.hpp"
 #include "hydro/flow_solution.hpp"
@@ -18,6 +19,14 @@ output::RunSummary summarise_mechanics(const scenario::Scenario& scenario, const
 // conditions, the reference of each region's normalised conductivity; nothing when the
 // scenario has no flow region to report.
 std::optional<hydro::FlowSolution> solve_matrix_flow(const scenario::Scenario& scenario, const mesh::TriangleMesh& mesh);
+
+// Each [[flow.region]]'s flow and effective conductivity, with its conductivity in the
+// unfractured case (`matrix`) and their ratio, in the scenario's order; none for a region
+// that holds no element.
+std::vector<std::optional<output::RegionSummary>> summarise_regions(const scenario::Scenario& scenario,
+                                                                  const mesh::TriangleMesh& mesh,
+                                                                  const hydro::FlowSolution& solution,
+                                                                  const std::optional<hydro::FlowSolution>& matrix);
 
 // Boundary flows, mass balance, and each [[flow.region]]'s flow and effective conductivity,
 // with its conductivity in the unfractured case (`matrix`) and their ratio.

@@ -20,6 +20,7 @@ RunCheckpoint make_checkpoint() {
   c.scenario_file = "/data/runs/seal.toml";
   c.converged = false;
   c.history = {{"1", "0.10000000000000001", "1"}, {"2", "0.20000000000000001", "0.5"}};
+  c.measure = {{"1", "0.10000000000000001", "top", "0.5", "1", "0", "-1e-06"}};
   c.written_iterations = {1, 2};
   c.timings = {{"mesh", 0.25}, {"flow", 1.5}};
   dda::SystemState::BlockState block;
@@ -63,6 +64,7 @@ TEST(Checkpoint, DecodesToTheSameValuesBitForBit) {
   EXPECT_EQ(d.scenario_file, c.scenario_file);
   EXPECT_EQ(d.converged, c.converged);
   EXPECT_EQ(d.history, c.history);
+  EXPECT_EQ(d.measure, c.measure);
   EXPECT_EQ(d.written_iterations, c.written_iterations);
   EXPECT_EQ(d.timings, c.timings);
   ASSERT_EQ(d.mechanics.blocks.size(), 2u);
