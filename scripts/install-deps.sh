@@ -14,6 +14,7 @@ build_packages=(
   libfmt-dev libspdlog-dev # text and logs
   nlohmann-json3-dev       # summary.json
   libcairo2-dev            # figures
+  zlib1g-dev               # compressed arrays of the ParaView (.vtu) files
   libjemalloc-dev          # memory allocator, on transparent huge pages
   libgtest-dev libgmock-dev libbenchmark-dev
   libboost-dev             # Boost.Geometry: test oracle for clipping

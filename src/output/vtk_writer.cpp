@@ -7,8 +7,10 @@
 #include <iterator>
 #include <set>
 #include <stdexcept>
+#include <utility>
 
 #include "output/atomic_file.hpp"
+#include "output/zlib_blocks.hpp"
 
 namespace hydrodda::output {
 namespace {
@@ -26,28 +28,26 @@ struct CellBlock {
   int type = 0;
 };
 
-void require(bool ok, const std::string& message) {
-  if (!ok) throw std::invalid_argument(message);
+// The message is formatted only on failure: these checks run once per value and node.
+template <class... Args>
+void require(bool ok, fmt::format_string<Args...> message, Args&&... args) {
+  if (!ok) throw std::invalid_argument(fmt::format(message, std::forward<Args>(args)...));
 }
 
 void check_arrays(std::span<const DataArray> arrays, std::size_t count, const char* where) {
   std::set<std::string> names;
   for (const DataArray& a : arrays) {
-    require(!a.name.empty(), fmt::format("VTK {} array with an empty name", where));
-    require(names.insert(a.name).second,
-            fmt::format("VTK {} array '{}' appears twice", where, a.name));
-    require(a.components >= 1,
-            fmt::format("VTK {} array '{}' has {} components; need at least 1", where, a.name,
-                        a.components));
+    require(!a.name.empty(), "VTK {} array with an empty name", where);
+    require(names.insert(a.name).second, "VTK {} array '{}' appears twice", where, a.name);
+    require(a.components >= 1, "VTK {} array '{}' has {} components; need at least 1", where,
+            a.name, a.components);
     const std::size_t expected = count * static_cast<std::size_t>(a.components);
     require(a.values.size() == expected,
-            fmt::format("VTK {} array '{}' has {} values; expected {} ({} tuples x {} "
-                        "components)",
-                        where, a.name, a.values.size(), expected, count, a.components));
+            "VTK {} array '{}' has {} values; expected {} ({} tuples x {} components)", where,
+            a.name, a.values.size(), expected, count, a.components);
     for (std::size_t i = 0; i < a.values.size(); ++i) {
-      require(std::isfinite(a.values[i]),
-              fmt::format("VTK {} array '{}' has a non-finite value at index {}", where, a.name,
-                          i));
+      require(std::isfinite(a.values[i]), "VTK {} array '{}' has a non-finite value at index {}",
+              where, a.name, i);
     }
   }
 }
@@ -55,80 +55,105 @@ void check_arrays(std::span<const DataArray> arrays, std::size_t count, const ch
 void check_points(std::span<const Point> points) {
   for (std::size_t i = 0; i < points.size(); ++i) {
     require(std::isfinite(points[i].x) && std::isfinite(points[i].y),
-            fmt::format("VTK point {} has a non-finite coordinate", i));
+            "VTK point {} has a non-finite coordinate", i);
   }
 }
 
 using Out = std::back_insert_iterator<std::string>;
 
-// "{:.17g}": 17 significant digits are enough for every double to read back to itself.
-void write_data_array(std::string& out, const DataArray& a) {
-  const int written = a.components == 2 ? 3 : a.components;
-  fmt::format_to(Out(out),
-                 "        <DataArray type=\"Float64\" Name=\"{}\" NumberOfComponents=\"{}\" "
-                 "format=\"ascii\">\n",
-                 escape_xml(a.name), written);
-  const std::size_t c = static_cast<std::size_t>(a.components);
-  for (std::size_t t = 0; t * c < a.values.size(); ++t) {
-    out += "         ";
-    for (std::size_t k = 0; k < c; ++k) fmt::format_to(Out(out), " {:.17g}", a.values[t * c + k]);
-    if (a.components == 2) out += " 0";
-    out += '\n';
+// (x, y) pairs as (x, y, 0) triples: VTK's points have three coordinates, and ParaView treats
+// a 3-component array as a vector (glyphs, stream lines, magnitude).
+template <class XY>
+std::vector<double> with_zero_z(std::size_t count, XY xy) {
+  std::vector<double> xyz;
+  xyz.reserve(3 * count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const auto [x, y] = xy(i);
+    xyz.insert(xyz.end(), {x, y, 0.0});
   }
-  out += "        </DataArray>\n";
+  return xyz;
 }
 
-void write_field_section(std::string& out, const char* tag, std::span<const DataArray> arrays) {
-  fmt::format_to(Out(out), "      <{}>\n", tag);
-  for (const DataArray& a : arrays) write_data_array(out, a);
-  fmt::format_to(Out(out), "      </{}>\n", tag);
+// A VTK XML file with its arrays in one appended block: the XML lists each array with its offset
+// into that block, and the block holds each array compressed (zlib_blocks.hpp).
+class AppendedFile {
+ public:
+  explicit AppendedFile(int level) : level_(level) {}
+
+  // Adds an array's XML element to `xml` and its compressed bytes to the appended block.
+  void add_array(std::string& xml, std::string_view type, std::string_view name, int components,
+                 std::span<const std::byte> bytes) {
+    fmt::format_to(Out(xml),
+                   "        <DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" "
+                   "format=\"appended\" offset=\"{}\"/>\n",
+                   type, escape_xml(name), components, appended_.size());
+    append_zlib_blocks(appended_, bytes, level_);
+  }
+
+  // The whole file: `xml` (up to the end of the last <Piece>) and the appended block after an
+  // underscore, which marks where the raw bytes begin.
+  std::string finish(std::string xml) const {
+    xml.reserve(xml.size() + appended_.size() + 64);
+    xml += "  </UnstructuredGrid>\n";
+    xml += "  <AppendedData encoding=\"raw\">\n   _";
+    xml += appended_;
+    xml += "\n  </AppendedData>\n";
+    xml += "</VTKFile>\n";
+    return xml;
+  }
+
+ private:
+  int level_;
+  std::string appended_;
+};
+
+void add_data_array(std::string& xml, AppendedFile& file, const DataArray& a) {
+  if (a.components != 2) {
+    file.add_array(xml, "Float64", a.name, a.components, std::as_bytes(std::span(a.values)));
+    return;
+  }
+  const auto& v = a.values;
+  const auto xyz = with_zero_z(v.size() / 2, [&](std::size_t t) { return std::pair{v[2 * t], v[2 * t + 1]}; });
+  file.add_array(xml, "Float64", a.name, 3, std::as_bytes(std::span(xyz)));
 }
 
-void write_int_array(std::string& out, const char* type, const char* name,
-                     const std::vector<std::int64_t>& values) {
-  fmt::format_to(Out(out), "        <DataArray type=\"{}\" Name=\"{}\" format=\"ascii\">\n", type,
-                 name);
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    out += i % 12 == 0 ? "          " : " ";
-    fmt::format_to(Out(out), "{}", values[i]);
-    if (i % 12 == 11 || i + 1 == values.size()) out += '\n';
-  }
-  out += "        </DataArray>\n";
+void add_field_section(std::string& xml, AppendedFile& file, const char* tag,
+                       std::span<const DataArray> arrays) {
+  fmt::format_to(Out(xml), "      <{}>\n", tag);
+  for (const DataArray& a : arrays) add_data_array(xml, file, a);
+  fmt::format_to(Out(xml), "      </{}>\n", tag);
 }
 
 // Validates everything, then renders one <UnstructuredGrid> piece and writes it atomically.
 void write_unstructured_grid(const std::filesystem::path& path, std::span<const Point> points,
                              const CellBlock& cells, std::span<const DataArray> point_data,
-                             std::span<const DataArray> cell_data) {
+                             std::span<const DataArray> cell_data, VtuCompression compression) {
   check_points(points);
   check_arrays(point_data, points.size(), "point");
   check_arrays(cell_data, cells.offsets.size(), "cell");
 
-  std::string out;
-  out += "<?xml version=\"1.0\"?>\n";
-  out += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
-         "header_type=\"UInt64\">\n";
-  out += "  <UnstructuredGrid>\n";
-  fmt::format_to(Out(out), "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n",
+  AppendedFile file(compression.level);
+  std::string xml;
+  xml += "<?xml version=\"1.0\"?>\n";
+  xml += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+         "header_type=\"UInt64\" compressor=\"vtkZLibDataCompressor\">\n";
+  xml += "  <UnstructuredGrid>\n";
+  fmt::format_to(Out(xml), "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n",
                  points.size(), cells.offsets.size());
-  write_field_section(out, "PointData", point_data);
-  write_field_section(out, "CellData", cell_data);
-  out += "      <Points>\n";
-  out += "        <DataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\" "
-         "format=\"ascii\">\n";
-  for (const Point& p : points) fmt::format_to(Out(out), "          {:.17g} {:.17g} 0\n", p.x, p.y);
-  out += "        </DataArray>\n";
-  out += "      </Points>\n";
-  out += "      <Cells>\n";
-  write_int_array(out, "Int64", "connectivity", cells.connectivity);
-  write_int_array(out, "Int64", "offsets", cells.offsets);
-  const std::vector<std::int64_t> types(cells.offsets.size(), cells.type);
-  write_int_array(out, "UInt8", "types", types);
-  out += "      </Cells>\n";
-  out += "    </Piece>\n";
-  out += "  </UnstructuredGrid>\n";
-  out += "</VTKFile>\n";
-  write_file_atomically(path, out);
+  add_field_section(xml, file, "PointData", point_data);
+  add_field_section(xml, file, "CellData", cell_data);
+  xml += "      <Points>\n";
+  const auto xyz = with_zero_z(points.size(), [&](std::size_t i) { return std::pair{points[i].x, points[i].y}; });
+  file.add_array(xml, "Float64", "Points", 3, std::as_bytes(std::span(xyz)));
+  xml += "      </Points>\n";
+  xml += "      <Cells>\n";
+  file.add_array(xml, "Int64", "connectivity", 1, std::as_bytes(std::span(cells.connectivity)));
+  file.add_array(xml, "Int64", "offsets", 1, std::as_bytes(std::span(cells.offsets)));
+  const std::vector<std::uint8_t> types(cells.offsets.size(), static_cast<std::uint8_t>(cells.type));
+  file.add_array(xml, "UInt8", "types", 1, std::as_bytes(std::span(types)));
+  xml += "      </Cells>\n";
+  xml += "    </Piece>\n";
+  write_file_atomically(path, file.finish(std::move(xml)));
 }
 
 }  // namespace
@@ -152,7 +177,7 @@ std::string escape_xml(std::string_view text) {
 void write_vtu_triangles(const std::filesystem::path& path, std::span<const Point> nodes,
                          std::span<const std::array<int, 3>> triangles,
                          std::span<const DataArray> point_data,
-                         std::span<const DataArray> cell_data) {
+                         std::span<const DataArray> cell_data, VtuCompression compression) {
   CellBlock cells;
   cells.type = vtk_triangle;
   cells.connectivity.reserve(3 * triangles.size());
@@ -160,38 +185,36 @@ void write_vtu_triangles(const std::filesystem::path& path, std::span<const Poin
   const auto node_count = static_cast<std::int64_t>(nodes.size());
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     for (int n : triangles[t]) {
-      require(n >= 0 && n < node_count,
-              fmt::format("VTK triangle {} refers to node {}, outside 0..{}", t, n,
-                          node_count - 1));
+      require(n >= 0 && n < node_count, "VTK triangle {} refers to node {}, outside 0..{}", t, n,
+              node_count - 1);
       cells.connectivity.push_back(n);
     }
     cells.offsets.push_back(static_cast<std::int64_t>(cells.connectivity.size()));
   }
-  write_unstructured_grid(path, nodes, cells, point_data, cell_data);
+  write_unstructured_grid(path, nodes, cells, point_data, cell_data, compression);
 }
 
 void write_vtu_polygons(const std::filesystem::path& path,
                         std::span<const std::vector<Point>> polygons,
-                        std::span<const DataArray> cell_data) {
+                        std::span<const DataArray> cell_data, VtuCompression compression) {
   CellBlock cells;
   cells.type = vtk_polygon;
   std::vector<Point> points;
   for (std::size_t k = 0; k < polygons.size(); ++k) {
-    require(polygons[k].size() >= 3,
-            fmt::format("VTK polygon {} has {} vertices; need at least 3", k,
-                        polygons[k].size()));
+    require(polygons[k].size() >= 3, "VTK polygon {} has {} vertices; need at least 3", k,
+            polygons[k].size());
     for (const Point& p : polygons[k]) {
       cells.connectivity.push_back(static_cast<std::int64_t>(points.size()));
       points.push_back(p);
     }
     cells.offsets.push_back(static_cast<std::int64_t>(cells.connectivity.size()));
   }
-  write_unstructured_grid(path, points, cells, {}, cell_data);
+  write_unstructured_grid(path, points, cells, {}, cell_data, compression);
 }
 
 void write_vtu_segments(const std::filesystem::path& path,
                         std::span<const std::array<Point, 2>> segments,
-                        std::span<const DataArray> cell_data) {
+                        std::span<const DataArray> cell_data, VtuCompression compression) {
   CellBlock cells;
   cells.type = vtk_line;
   std::vector<Point> points;
@@ -203,7 +226,7 @@ void write_vtu_segments(const std::filesystem::path& path,
     }
     cells.offsets.push_back(static_cast<std::int64_t>(cells.connectivity.size()));
   }
-  write_unstructured_grid(path, points, cells, {}, cell_data);
+  write_unstructured_grid(path, points, cells, {}, cell_data, compression);
 }
 
 }  // namespace hydrodda::output

@@ -1,7 +1,13 @@
 #pragma once
 // VTK XML unstructured-grid (.vtu) files for ParaView: the fluid mesh, the blocks and the
-// contacts/fractures of one output step. Written by hand (ASCII, full double precision)
-// because the product does not depend on the VTK library for a few hundred lines of XML.
+// contacts/fractures of one output step, laid out as ParaView's own writer lays them out:
+// binary arrays (Float64 fields and points, Int64 cells, UInt8 types) appended raw after the
+// XML, each compressed with zlib in VTK's blocks (zlib_blocks.hpp), UInt64 headers.
+//
+// Written by hand rather than through VTK's vtkXMLUnstructuredGridWriter: benchmarks/
+// bench_output.cpp measures both on the same meshes (docs/performance.md, "Output"), and
+// VTK's writer is no smaller nor faster at the same zlib level, while libvtk9-dev brings 181
+// Debian packages (397 MB) into the build and cannot be installed beside python3-paraview.
 
 #include <array>
 #include <filesystem>
@@ -22,6 +28,15 @@ struct DataArray {
   std::vector<double> values;
 };
 
+// How the arrays are compressed: zlib's level, 0 (stored) to 9 (smallest). Level 1, measured
+// with benchmarks/bench_output.cpp on a 10^5-triangle fluid file: 3.94 MB in 0.70 × 10^9
+// instructions, where level 6 saves 2% (3.86 MB) for 2.2× the work and level 9 is no smaller
+// than 6 and 18× slower than 1: the full-mantissa doubles of a field barely compress at any
+// level (docs/performance.md, "Output").
+struct VtuCompression {
+  int level = 1;
+};
+
 // Triangles (VTK_TRIANGLE = 5) on shared nodes (x, y; z = 0 is written); each triangle is
 // three indices into `nodes`. point_data has one tuple per node, cell_data one per triangle.
 // Throws std::invalid_argument (naming the array or triangle) on any size or index mismatch,
@@ -30,19 +45,19 @@ void write_vtu_triangles(const std::filesystem::path& path,
                          std::span<const geometry::Point> nodes,
                          std::span<const std::array<int, 3>> triangles,
                          std::span<const DataArray> point_data,
-                         std::span<const DataArray> cell_data);
+                         std::span<const DataArray> cell_data, VtuCompression compression = {});
 
 // Polygons (VTK_POLYGON = 7), each with its own vertices (at least 3); cell_data one tuple per
 // polygon. Same validation as above.
 void write_vtu_polygons(const std::filesystem::path& path,
                         std::span<const std::vector<geometry::Point>> polygons,
-                        std::span<const DataArray> cell_data);
+                        std::span<const DataArray> cell_data, VtuCompression compression = {});
 
 // Line segments (VTK_LINE = 3), each with its own two end points; cell_data one tuple per
 // segment. Same validation as above.
 void write_vtu_segments(const std::filesystem::path& path,
                         std::span<const std::array<geometry::Point, 2>> segments,
-                        std::span<const DataArray> cell_data);
+                        std::span<const DataArray> cell_data, VtuCompression compression = {});
 
 // `text` with &, <, >, " and ' replaced by XML entities, for attribute values.
 std::string escape_xml(std::string_view text);

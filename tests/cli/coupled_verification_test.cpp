@@ -13,10 +13,12 @@
 #include <string>
 #include <vector>
 
+#include "../output/appended_arrays.hpp"
 #include "run_program.hpp"
 
 namespace fs = std::filesystem;
 using hydrodda::testing::read_csv;
+using hydrodda::testing::read_vtu_array;
 using hydrodda::testing::run_program;
 
 namespace {
@@ -49,17 +51,6 @@ struct RunResult {
   std::string contacts;                           // the last pass's contacts_NNNN.vtu
 };
 
-// The values of the named cell array of an ASCII .vtu file.
-std::vector<double> read_vtu_array(const std::string& vtu, const std::string& name) {
-  std::vector<double> values;
-  const std::size_t at = vtu.find("Name=\"" + name + "\"");
-  if (at == std::string::npos) return values;
-  const std::size_t first = vtu.find('>', at) + 1, last = vtu.find("</DataArray>", first);
-  std::stringstream numbers(vtu.substr(first, last - first));
-  for (double v; numbers >> v;) values.push_back(v);
-  return values;
-}
-
 // Runs a scenario file into a fresh temporary folder named `name`; exit code 0 expected.
 RunResult run_and_read(const fs::path& scenario, const std::string& name) {
   const fs::path out = fs::temp_directory_path() / ("hydrodda-coupled-verification-" + name);
@@ -72,7 +63,7 @@ RunResult run_and_read(const fs::path& scenario, const std::string& name) {
   if (r.summary.contains("iterations")) {
     char contacts[32];
     std::snprintf(contacts, sizeof contacts, "contacts_%04d.vtu", r.summary["iterations"].get<int>());
-    r.contacts = read_text(out / contacts);
+    r.contacts = hydrodda::testing::read_file_bytes(out / contacts);
   }
   fs::remove_all(out);
   return r;

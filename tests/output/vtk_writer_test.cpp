@@ -1,7 +1,7 @@
 // The .vtu/.pvd writers, checked by reading the files back with VTK's own XML readers
-// (python3-vtk9 through tests/output/check_vtu.py). Values printed with "{:.17g}" must read back
-// to the same double; the comparisons use a 1e-12 relative tolerance as the contract and an
-// exact check where the round trip itself is the point.
+// (python3-vtk9, or the VTK inside python3-paraview, through tests/output/check_vtu.py) and
+// with our own decoder of the compressed blocks. The arrays are raw IEEE doubles, and repr()
+// prints a double so that it reads back to itself, so every value must come back exactly.
 
 #include <gtest/gtest.h>
 
@@ -19,6 +19,9 @@
 
 #include "output/pvd_series.hpp"
 #include "output/vtk_writer.hpp"
+#include "output/zlib_blocks.hpp"
+
+#include "appended_arrays.hpp"
 
 namespace hydrodda::output {
 namespace {
@@ -129,9 +132,9 @@ Readback read_back(const std::string& python, const fs::path& file) {
   return result;
 }
 
-// |a - b| <= 1e-12 |b|, or exact when b is 0.
-void expect_close(double a, double b, const std::string& what) {
-  EXPECT_LE(std::abs(a - b), 1e-12 * std::abs(b)) << what << ": " << a << " vs " << b;
+// Binary Float64 reads back bit for bit.
+void expect_same(double a, double b, const std::string& what) {
+  EXPECT_EQ(a, b) << what;
 }
 
 class VtkWriter : public ::testing::Test {
@@ -172,7 +175,6 @@ TEST_F(VtkWriter, TrianglesRoundTripPointsCellsAndArrays) {
   EXPECT_EQ(r.cell(0), (std::vector<long>{5, 0, 1, 2}));
   EXPECT_EQ(r.cell(1), (std::vector<long>{5, 0, 2, 3}));
   for (int i = 0; i < 4; ++i) {
-    // Exact: "{:.17g}" must round-trip every double.
     EXPECT_EQ(r.point(i).x, nodes[i].x) << "node " << i;
     EXPECT_EQ(r.point(i).y, nodes[i].y) << "node " << i;
   }
@@ -183,18 +185,18 @@ TEST_F(VtkWriter, TrianglesRoundTripPointsCellsAndArrays) {
   EXPECT_EQ(r.components("cell", "flux"), 3);
   EXPECT_EQ(r.components("cell", "stress"), 3);
   for (int t = 0; t < 4; ++t) {
-    expect_close(r.value("point", "pressure", t, 0), point_data[0].values[t], "pressure");
-    expect_close(r.value("point", "velocity", t, 0), point_data[1].values[2 * t], "velocity x");
-    expect_close(r.value("point", "velocity", t, 1), point_data[1].values[2 * t + 1], "velocity y");
+    expect_same(r.value("point", "pressure", t, 0), point_data[0].values[t], "pressure");
+    expect_same(r.value("point", "velocity", t, 0), point_data[1].values[2 * t], "velocity x");
+    expect_same(r.value("point", "velocity", t, 1), point_data[1].values[2 * t + 1], "velocity y");
     EXPECT_EQ(r.value("point", "velocity", t, 2), 0.0);
   }
   for (int t = 0; t < 2; ++t) {
-    EXPECT_EQ(r.value("cell", "permeability", t, 0), cell_data[0].values[t]);  // exact
-    expect_close(r.value("cell", "flux", t, 0), cell_data[1].values[2 * t], "flux x");
-    expect_close(r.value("cell", "flux", t, 1), cell_data[1].values[2 * t + 1], "flux y");
+    expect_same(r.value("cell", "permeability", t, 0), cell_data[0].values[t], "permeability");
+    expect_same(r.value("cell", "flux", t, 0), cell_data[1].values[2 * t], "flux x");
+    expect_same(r.value("cell", "flux", t, 1), cell_data[1].values[2 * t + 1], "flux y");
     EXPECT_EQ(r.value("cell", "flux", t, 2), 0.0);
     for (int c = 0; c < 3; ++c) {
-      expect_close(r.value("cell", "stress", t, c), cell_data[2].values[3 * t + c], "stress");
+      expect_same(r.value("cell", "stress", t, c), cell_data[2].values[3 * t + c], "stress");
     }
   }
 }
@@ -223,8 +225,8 @@ TEST_F(VtkWriter, PolygonsKeepTheirOwnVertices) {
   EXPECT_EQ(r.components("cell", "displacement"), 3);
   for (int t = 0; t < 3; ++t) {
     EXPECT_EQ(r.value("cell", "block_id", t, 0), t);
-    expect_close(r.value("cell", "displacement", t, 0), cell_data[1].values[2 * t], "ux");
-    expect_close(r.value("cell", "displacement", t, 1), cell_data[1].values[2 * t + 1], "uy");
+    expect_same(r.value("cell", "displacement", t, 0), cell_data[1].values[2 * t], "ux");
+    expect_same(r.value("cell", "displacement", t, 1), cell_data[1].values[2 * t + 1], "uy");
   }
 }
 
@@ -245,8 +247,8 @@ TEST_F(VtkWriter, SegmentsAreLines) {
   EXPECT_EQ(r.point(5).y, 2.0);
   EXPECT_EQ(r.components("cell", "normal"), 3);
   for (int t = 0; t < 3; ++t) {
-    expect_close(r.value("cell", "aperture", t, 0), cell_data[0].values[t], "aperture");
-    expect_close(r.value("cell", "normal", t, 1), cell_data[1].values[2 * t + 1], "normal y");
+    expect_same(r.value("cell", "aperture", t, 0), cell_data[0].values[t], "aperture");
+    expect_same(r.value("cell", "normal", t, 1), cell_data[1].values[2 * t + 1], "normal y");
   }
 }
 
@@ -257,6 +259,54 @@ TEST_F(VtkWriter, EmptyGridIsReadable) {
   ASSERT_EQ(r.status, 0);
   EXPECT_EQ(r.count("points"), 0);
   EXPECT_EQ(r.count("cells"), 0);
+}
+
+// A strip of triangles over n nodes (i, i+1, i+2), so the arrays can be sized to VTK's 32 KiB
+// compression blocks: n = 4096 makes the point array exactly one full block (the header's
+// partial-block size is then 0) and the points (x, y, 0) exactly three.
+struct Strip {
+  std::vector<Point> nodes;
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<DataArray> point_data;
+  std::vector<DataArray> cell_data;
+};
+
+Strip make_strip(int n) {
+  Strip s;
+  DataArray head{"head", 1, {}}, stress{"stress", 3, {}};
+  for (int i = 0; i < n; ++i) {
+    s.nodes.push_back({i * 0.1, (i % 2) * std::sqrt(2.0) + i * 1e-7});
+    head.values.push_back(std::sin(i) * 1e3 + 1.0 / (i + 3));
+  }
+  for (int i = 0; i + 2 < n; ++i) {
+    s.triangles.push_back({i, i + 1, i + 2});
+    stress.values.insert(stress.values.end(), {-1e6 / (i + 1), 2e5 * std::cos(i), std::exp(-i * 1e-3)});
+  }
+  s.point_data = {head};
+  s.cell_data = {stress};
+  return s;
+}
+
+TEST_F(VtkWriter, ArraysAcrossCompressionBlocksReadBackAtEveryLevel) {
+  const Strip s = make_strip(4096);  // head: 1 full block; stress: 3 blocks, the last partial
+  ASSERT_EQ(s.point_data[0].values.size() * sizeof(double), zlib_block_size);
+  for (int level : {0, VtuCompression{}.level, 9}) {
+    const fs::path file = dir_ / ("strip_" + std::to_string(level) + ".vtu");
+    write_vtu_triangles(file, s.nodes, s.triangles, s.point_data, s.cell_data, {level});
+    const Readback r = read_back(python_, file);
+    ASSERT_EQ(r.status, 0) << "level " << level;
+    ASSERT_EQ(r.count("points"), 4096);
+    ASSERT_EQ(r.count("cells"), 4094);
+    for (int i : {0, 4095, 2048, 1365}) {  // 1365 × 24 bytes straddles the first block's end
+      EXPECT_EQ(r.point(i).x, s.nodes[i].x) << "level " << level << " node " << i;
+      EXPECT_EQ(r.point(i).y, s.nodes[i].y) << "level " << level << " node " << i;
+      expect_same(r.value("point", "head", i, 0), s.point_data[0].values[i], "head");
+    }
+    for (int t : {0, 1365, 4093}) {
+      EXPECT_EQ(r.cell(t), (std::vector<long>{5, t, t + 1, t + 2})) << "level " << level;
+      for (int c = 0; c < 3; ++c) expect_same(r.value("cell", "stress", t, c), s.cell_data[0].values[3 * t + c], "stress");
+    }
+  }
 }
 
 TEST_F(VtkWriter, PvdSeriesListsEveryStepWithExactTimes) {
@@ -282,6 +332,50 @@ TEST_F(VtkWriter, PvdSeriesListsEveryStepWithExactTimes) {
     EXPECT_EQ(datasets[i][3], "contacts_" + std::to_string(i) + ".vtu");
   }
   EXPECT_EQ(r.with("cells").size(), times.size());
+}
+
+// The layout, read with our own decoder (appended_arrays.hpp, no VTK needed): the attributes
+// ParaView's writer sets, every array appended raw after one underscore at the offset its
+// element names, compressed in VTK's blocks, holding exactly the bytes given.
+TEST(VtkWriterLayout, AppendedCompressedArraysAsParaViewWritesThem) {
+  const fs::path dir = fresh_dir("hydrodda-vtk-writer-layout");
+  const Strip s = make_strip(5000);
+  write_vtu_triangles(dir / "strip.vtu", s.nodes, s.triangles, s.point_data, s.cell_data);
+  const std::string file = testing::read_file_bytes(dir / "strip.vtu");
+  const std::string head = file.substr(0, file.find("<UnstructuredGrid>"));
+  EXPECT_NE(head.find("type=\"UnstructuredGrid\""), std::string::npos);
+  EXPECT_NE(head.find("byte_order=\"LittleEndian\""), std::string::npos);
+  EXPECT_NE(head.find("header_type=\"UInt64\""), std::string::npos);
+  EXPECT_NE(head.find("compressor=\"vtkZLibDataCompressor\""), std::string::npos);
+  EXPECT_EQ(file.find("format=\"ascii\""), std::string::npos);
+  EXPECT_TRUE(file.ends_with("\n  </AppendedData>\n</VTKFile>\n"));
+
+  const auto arrays = testing::decode_appended(file);
+  ASSERT_EQ(arrays.size(), 6u);  // head, stress, Points, connectivity, offsets, types
+  EXPECT_EQ(arrays[0].name, "head");
+  EXPECT_EQ(testing::values_of<double>(arrays[0].bytes), s.point_data[0].values);
+  EXPECT_EQ(arrays[1].name, "stress");
+  EXPECT_EQ(arrays[1].components, 3);
+  EXPECT_EQ(testing::values_of<double>(arrays[1].bytes), s.cell_data[0].values);
+  EXPECT_EQ(arrays[2].name, "Points");
+  const auto xyz = testing::values_of<double>(arrays[2].bytes);
+  ASSERT_EQ(xyz.size(), 3 * s.nodes.size());
+  for (std::size_t i = 0; i < s.nodes.size(); ++i) {
+    ASSERT_EQ(xyz[3 * i], s.nodes[i].x);
+    ASSERT_EQ(xyz[3 * i + 1], s.nodes[i].y);
+    ASSERT_EQ(xyz[3 * i + 2], 0.0);
+  }
+  EXPECT_EQ(arrays[3].type, "Int64");
+  const auto connectivity = testing::values_of<std::int64_t>(arrays[3].bytes);
+  const auto offsets = testing::values_of<std::int64_t>(arrays[4].bytes);
+  ASSERT_EQ(offsets.size(), s.triangles.size());
+  for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+    ASSERT_EQ(offsets[t], static_cast<std::int64_t>(3 * t + 3));
+    for (int k = 0; k < 3; ++k) ASSERT_EQ(connectivity[3 * t + k], s.triangles[t][k]);
+  }
+  EXPECT_EQ(arrays[5].type, "UInt8");
+  EXPECT_EQ(arrays[5].bytes, std::string(s.triangles.size(), '\x05'));  // VTK_TRIANGLE
+  fs::remove_all(dir);
 }
 
 // Validation needs no reader.
@@ -331,6 +425,10 @@ TEST(VtkWriterErrors, SizeMismatchesNameTheArray) {
   expect_mentions(
       message_of([&] { write_vtu_segments(dir / "s.vtu", segment, short_aperture); }),
       "'aperture' has 2 values; expected 1");
+
+  expect_mentions(
+      message_of([&] { write_vtu_segments(dir / "s.vtu", segment, {}, VtuCompression{10}); }),
+      "compression level 10");
 
   PvdSeries series(dir / "run.pvd");
   EXPECT_THROW(series.add(NAN, "a.vtu"), std::invalid_argument);
