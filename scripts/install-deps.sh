@@ -18,7 +18,10 @@ build_packages=(
   libjemalloc-dev          # memory allocator, on transparent huge pages
   libgtest-dev libgmock-dev libbenchmark-dev
   libboost-dev             # Boost.Geometry: test oracle for clipping
-  python3 python3-vtk9     # reading our VTU/PVD back in tests
+  # Reading our VTU/PVD back in tests: VTK's XML reader from python3 and ParaView's own reader
+  # under pvbatch (headless through xvfb-run). python3-paraview brings VTK's Python modules
+  # (vtkmodules) and conflicts with python3-vtk9, which provides the same modules alone.
+  python3 paraview python3-paraview xvfb xauth
   clang libclang-rt-14-dev # libFuzzer for the scenario reader
 )
 

@@ -1,6 +1,6 @@
 // The contacts of a mechanics run in ParaView's files, read back with VTK's own reader
-// (python3-vtk9 through tests/output/check_vtu.py): one contact data set per block data set,
-// the documented arrays, and forces that carry the column's weight.
+// (python3-paraview's or python3-vtk9's, through tests/output/check_vtu.py): one contact data
+// set per block data set, the documented arrays, and forces that carry the column's weight.
 
 #include <gtest/gtest.h>
 
@@ -24,7 +24,7 @@ using CellArrays = std::map<std::string, std::map<int, double>>;
 
 TEST(ContactOutput, StackedColumnContactsCarryTheWeight) {
   if (std::system("/usr/bin/python3 -c 'import vtkmodules.vtkIOXML' > /dev/null 2>&1") != 0)
-    GTEST_SKIP() << "python3-vtk9 is not installed: the ParaView files cannot be read back";
+    GTEST_SKIP() << "python3 cannot import vtk (python3-paraview or python3-vtk9): the ParaView files cannot be read back";
   const fs::path out = fs::temp_directory_path() / ("hydrodda-contacts-" + std::to_string(::getpid()));
   fs::remove_all(out);
   const auto run =

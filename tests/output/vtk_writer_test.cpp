@@ -37,7 +37,7 @@ fs::path fresh_dir(const std::string& name) {
 }
 
 // The first interpreter that can import vtk: $HYDRODDA_VTK_PYTHON, python3 on PATH, then
-// Debian's own python3 (where python3-vtk9 installs).
+// Debian's own python3 (where python3-vtk9 or python3-paraview installs VTK's modules).
 std::optional<std::string> find_vtk_python() {
   std::vector<std::string> candidates;
   if (const char* env = std::getenv("HYDRODDA_VTK_PYTHON")) candidates.emplace_back(env);
@@ -141,7 +141,7 @@ class VtkWriter : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto found = find_vtk_python();
-    if (!found) GTEST_SKIP() << "python3 cannot import vtk (Debian package python3-vtk9)";
+    if (!found) GTEST_SKIP() << "python3 cannot import vtk (Debian package python3-paraview or python3-vtk9)";
     python_ = *found;
     dir_ = fresh_dir("hydrodda-vtk-writer-" + std::string(
         ::testing::UnitTest::GetInstance()->current_test_info()->name()));
