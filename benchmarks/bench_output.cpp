@@ -198,8 +198,7 @@ void BM_Fluid(benchmark::State& state) {
 BENCHMARK(BM_Fluid)
     ->ArgsProduct({{224}, {0, 1, 2, 3, 4, 5, 6, 9}})
     ->ArgsProduct({{708}, {1, 2, 3, 6}})
-    ->Unit(benchmark::kMillisecond)
-    ->MinTime(2.0);
+    ->Unit(benchmark::kMillisecond);
 
 void BM_Blocks(benchmark::State& state) {
   const Wall& w = wall();
@@ -207,7 +206,7 @@ void BM_Blocks(benchmark::State& state) {
   time_writes(state, file, [&] { hydrodda::output::write_vtu_polygons(file, w.polygons, w.block_data, level_of(state, 0)); });
   state.counters["blocks"] = static_cast<double>(w.polygons.size());
 }
-BENCHMARK(BM_Blocks)->DenseRange(0, 6)->Arg(9)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_Blocks)->DenseRange(0, 6)->Arg(9)->Unit(benchmark::kMillisecond);
 
 void BM_Contacts(benchmark::State& state) {
   const Wall& w = wall();
@@ -215,7 +214,7 @@ void BM_Contacts(benchmark::State& state) {
   time_writes(state, file, [&] { hydrodda::output::write_vtu_segments(file, w.segments, w.contact_data, level_of(state, 0)); });
   state.counters["contacts"] = static_cast<double>(w.segments.size());
 }
-BENCHMARK(BM_Contacts)->DenseRange(0, 6)->Arg(9)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_Contacts)->DenseRange(0, 6)->Arg(9)->Unit(benchmark::kMillisecond);
 
 #ifdef HYDRODDA_BENCH_VTK
 // Our arrays copied into VTK's: 2-component vectors gain z = 0 as in our files.
@@ -288,8 +287,7 @@ void BM_VtkFluid(benchmark::State& state) {
 BENCHMARK(BM_VtkFluid)
     ->ArgsProduct({{224}, {1, 6}})
     ->ArgsProduct({{708}, {1, 6}})
-    ->Unit(benchmark::kMillisecond)
-    ->MinTime(2.0);
+    ->Unit(benchmark::kMillisecond);
 
 void BM_VtkBlocks(benchmark::State& state) {
   const Wall& w = wall();
@@ -299,7 +297,7 @@ void BM_VtkBlocks(benchmark::State& state) {
     write_with_vtk(file, points, cells, VTK_POLYGON, {}, w.block_data, static_cast<int>(state.range(0)));
   });
 }
-BENCHMARK(BM_VtkBlocks)->Arg(1)->Arg(6)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_VtkBlocks)->Arg(1)->Arg(6)->Unit(benchmark::kMillisecond);
 
 void BM_VtkContacts(benchmark::State& state) {
   const Wall& w = wall();
@@ -309,7 +307,7 @@ void BM_VtkContacts(benchmark::State& state) {
     write_with_vtk(file, points, cells, VTK_LINE, {}, w.contact_data, static_cast<int>(state.range(0)));
   });
 }
-BENCHMARK(BM_VtkContacts)->Arg(1)->Arg(6)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_VtkContacts)->Arg(1)->Arg(6)->Unit(benchmark::kMillisecond);
 #endif
 
 }  // namespace

@@ -74,54 +74,63 @@ std::vector<double> with_zero_z(std::size_t count, XY xy) {
   return xyz;
 }
 
-// A VTK XML file with its arrays in one appended block: the XML lists each array with its offset
-// into that block, and the block holds each array compressed (zlib_blocks.hpp).
-class AppendedFile {
- public:
-  explicit AppendedFile(int level) : level_(level) {}
-
-  // Adds an array's XML element to `xml` and its compressed bytes to the appended block.
-  void add_array(std::string& xml, std::string_view type, std::string_view name, int components,
-                 std::span<const std::byte> bytes) {
-    fmt::format_to(Out(xml),
-                   "        <DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" "
-                   "format=\"appended\" offset=\"{}\"/>\n",
-                   type, escape_xml(name), components, appended_.size());
-    append_zlib_blocks(appended_, bytes, level_);
-  }
-
-  // The whole file: `xml` (up to the end of the last <Piece>) and the appended block after an
-  // underscore, which marks where the raw bytes begin.
-  std::string finish(std::string xml) const {
-    xml.reserve(xml.size() + appended_.size() + 64);
-    xml += "  </UnstructuredGrid>\n";
-    xml += "  <AppendedData encoding=\"raw\">\n   _";
-    xml += appended_;
-    xml += "\n  </AppendedData>\n";
-    xml += "</VTKFile>\n";
-    return xml;
-  }
-
- private:
-  int level_;
-  std::string appended_;
+// One <DataArray> of a file and the bytes it stores.
+struct Array {
+  std::string_view type;
+  std::string_view name;
+  int components;
+  std::span<const std::byte> bytes;
 };
 
-void add_data_array(std::string& xml, AppendedFile& file, const DataArray& a) {
-  if (a.components != 2) {
-    file.add_array(xml, "Float64", a.name, a.components, std::as_bytes(std::span(a.values)));
-    return;
-  }
+// The arrays of one XML element of the piece (<PointData>, <CellData>, <Points>, <Cells>).
+struct Section {
+  const char* tag;
+  std::vector<Array> arrays;
+};
+
+// A field's array; a 2-component field's (x, y, 0) triples are kept in `padded`.
+Array field_array(const DataArray& a, std::vector<std::vector<double>>& padded) {
+  if (a.components != 2) return {"Float64", a.name, a.components, std::as_bytes(std::span(a.values))};
   const auto& v = a.values;
-  const auto xyz = with_zero_z(v.size() / 2, [&](std::size_t t) { return std::pair{v[2 * t], v[2 * t + 1]}; });
-  file.add_array(xml, "Float64", a.name, 3, std::as_bytes(std::span(xyz)));
+  padded.push_back(with_zero_z(v.size() / 2, [&](std::size_t t) { return std::pair{v[2 * t], v[2 * t + 1]}; }));
+  return {"Float64", a.name, 3, std::as_bytes(std::span(padded.back()))};
 }
 
-void add_field_section(std::string& xml, AppendedFile& file, const char* tag,
-                       std::span<const DataArray> arrays) {
-  fmt::format_to(Out(xml), "      <{}>\n", tag);
-  for (const DataArray& a : arrays) add_data_array(xml, file, a);
-  fmt::format_to(Out(xml), "      </{}>\n", tag);
+// The whole file: the XML, each array's element naming its offset into the appended data, then
+// the appended data after an underscore, which marks where the raw bytes begin.
+std::string render_file(std::size_t point_count, std::size_t cell_count, std::span<const Section> sections,
+                        int level) {
+  std::vector<std::span<const std::byte>> bytes;
+  for (const Section& s : sections)
+    for (const Array& a : s.arrays) bytes.push_back(a.bytes);
+  const std::vector<std::string> encoded = compress_zlib_blocks(bytes, level);
+
+  std::string xml;
+  xml += "<?xml version=\"1.0\"?>\n";
+  xml += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+         "header_type=\"UInt64\" compressor=\"vtkZLibDataCompressor\">\n";
+  xml += "  <UnstructuredGrid>\n";
+  fmt::format_to(Out(xml), "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", point_count, cell_count);
+  std::size_t index = 0, offset = 0;
+  for (const Section& s : sections) {
+    fmt::format_to(Out(xml), "      <{}>\n", s.tag);
+    for (const Array& a : s.arrays) {
+      fmt::format_to(Out(xml),
+                     "        <DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" "
+                     "format=\"appended\" offset=\"{}\"/>\n",
+                     a.type, escape_xml(a.name), a.components, offset);
+      offset += encoded[index++].size();
+    }
+    fmt::format_to(Out(xml), "      </{}>\n", s.tag);
+  }
+  xml += "    </Piece>\n";
+  xml += "  </UnstructuredGrid>\n";
+  xml += "  <AppendedData encoding=\"raw\">\n   _";
+  xml.reserve(xml.size() + offset + 32);
+  for (const std::string& e : encoded) xml += e;
+  xml += "\n  </AppendedData>\n";
+  xml += "</VTKFile>\n";
+  return xml;
 }
 
 // Validates everything, then renders one <UnstructuredGrid> piece and writes it atomically.
@@ -132,28 +141,19 @@ void write_unstructured_grid(const std::filesystem::path& path, std::span<const 
   check_arrays(point_data, points.size(), "point");
   check_arrays(cell_data, cells.offsets.size(), "cell");
 
-  AppendedFile file(compression.level);
-  std::string xml;
-  xml += "<?xml version=\"1.0\"?>\n";
-  xml += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
-         "header_type=\"UInt64\" compressor=\"vtkZLibDataCompressor\">\n";
-  xml += "  <UnstructuredGrid>\n";
-  fmt::format_to(Out(xml), "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n",
-                 points.size(), cells.offsets.size());
-  add_field_section(xml, file, "PointData", point_data);
-  add_field_section(xml, file, "CellData", cell_data);
-  xml += "      <Points>\n";
+  std::vector<std::vector<double>> padded;
+  padded.reserve(point_data.size() + cell_data.size());  // the spans into it stay valid
+  std::vector<Section> sections{{"PointData", {}}, {"CellData", {}}};
+  for (const DataArray& a : point_data) sections[0].arrays.push_back(field_array(a, padded));
+  for (const DataArray& a : cell_data) sections[1].arrays.push_back(field_array(a, padded));
   const auto xyz = with_zero_z(points.size(), [&](std::size_t i) { return std::pair{points[i].x, points[i].y}; });
-  file.add_array(xml, "Float64", "Points", 3, std::as_bytes(std::span(xyz)));
-  xml += "      </Points>\n";
-  xml += "      <Cells>\n";
-  file.add_array(xml, "Int64", "connectivity", 1, std::as_bytes(std::span(cells.connectivity)));
-  file.add_array(xml, "Int64", "offsets", 1, std::as_bytes(std::span(cells.offsets)));
+  sections.push_back({"Points", {{"Float64", "Points", 3, std::as_bytes(std::span(xyz))}}});
   const std::vector<std::uint8_t> types(cells.offsets.size(), static_cast<std::uint8_t>(cells.type));
-  file.add_array(xml, "UInt8", "types", 1, std::as_bytes(std::span(types)));
-  xml += "      </Cells>\n";
-  xml += "    </Piece>\n";
-  write_file_atomically(path, file.finish(std::move(xml)));
+  sections.push_back({"Cells",
+                      {{"Int64", "connectivity", 1, std::as_bytes(std::span(cells.connectivity))},
+                       {"Int64", "offsets", 1, std::as_bytes(std::span(cells.offsets))},
+                       {"UInt8", "types", 1, std::as_bytes(std::span(types))}}});
+  write_file_atomically(path, render_file(points.size(), cells.offsets.size(), sections, compression.level));
 }
 
 }  // namespace

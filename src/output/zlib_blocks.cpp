@@ -3,10 +3,12 @@
 #include <fmt/format.h>
 #include <zlib.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <cstring>
-#include <algorithm>
+#include <exception>
+#include <optional>
 #include <stdexcept>
 
 namespace hydrodda::output {
@@ -28,8 +30,8 @@ std::uint64_t get_word(std::span<const std::byte> data, std::size_t at) {
   return value;
 }
 
-// One deflate state reused (deflateReset) for every block: a fresh deflateInit per 32 KiB block
-// would allocate and clear its 256 KiB of tables each time.
+// One deflate state reused (deflateReset) for every block a thread compresses: a fresh
+// deflateInit per 32 KiB block would allocate and clear its 256 KiB of tables each time.
 class Deflater {
  public:
   explicit Deflater(int level) {
@@ -39,45 +41,77 @@ class Deflater {
   Deflater(const Deflater&) = delete;
   Deflater& operator=(const Deflater&) = delete;
 
-  // Appends `block` as one complete zlib stream; returns its compressed size.
-  std::size_t append(std::string& out, std::span<const std::byte> block) {
+  // `block` as one complete zlib stream.
+  std::string compress(std::span<const std::byte> block) {
     deflateReset(&stream_);
-    const std::size_t at = out.size();
-    const auto bound = deflateBound(&stream_, static_cast<uLong>(block.size()));
-    out.resize(at + bound);
+    std::string out(deflateBound(&stream_, static_cast<uLong>(block.size())), '\0');
     stream_.next_in = reinterpret_cast<Bytef*>(const_cast<std::byte*>(block.data()));
     stream_.avail_in = static_cast<uInt>(block.size());
-    stream_.next_out = reinterpret_cast<Bytef*>(out.data() + at);
-    stream_.avail_out = static_cast<uInt>(bound);
+    stream_.next_out = reinterpret_cast<Bytef*>(out.data());
+    stream_.avail_out = static_cast<uInt>(out.size());
     if (deflate(&stream_, Z_FINISH) != Z_STREAM_END) throw std::runtime_error("zlib: deflate failed");
-    const std::size_t size = bound - stream_.avail_out;
-    out.resize(at + size);
-    return size;
+    out.resize(out.size() - stream_.avail_out);
+    return out;
   }
 
  private:
   z_stream stream_{};
 };
 
+std::size_t block_count(std::size_t bytes) { return (bytes + zlib_block_size - 1) / zlib_block_size; }
+
 }  // namespace
 
-void append_zlib_blocks(std::string& out, std::span<const std::byte> bytes, int level) {
+std::vector<std::string> compress_zlib_blocks(std::span<const std::span<const std::byte>> arrays, int level) {
   if (level < 0 || level > 9) {
     throw std::invalid_argument(fmt::format("zlib compression level {}: need 0 to 9", level));
   }
-  const std::size_t blocks = (bytes.size() + zlib_block_size - 1) / zlib_block_size;
-  const std::size_t header_at = out.size();
-  out.resize(header_at + (3 + blocks) * word);
-  put_word(out, header_at, blocks);
-  put_word(out, header_at + word, zlib_block_size);
-  put_word(out, header_at + 2 * word, bytes.size() % zlib_block_size);
-  if (blocks == 0) return;
-  Deflater deflater(level);
-  for (std::size_t b = 0; b < blocks; ++b) {
-    const std::size_t first = b * zlib_block_size;
-    const std::size_t size = std::min(zlib_block_size, bytes.size() - first);
-    put_word(out, header_at + (3 + b) * word, deflater.append(out, bytes.subspan(first, size)));
+  struct Block {
+    std::size_t array;
+    std::span<const std::byte> bytes;
+  };
+  std::vector<Block> blocks;
+  for (std::size_t a = 0; a < arrays.size(); ++a) {
+    for (std::size_t first = 0; first < arrays[a].size(); first += zlib_block_size) {
+      blocks.push_back({a, arrays[a].subspan(first, std::min(zlib_block_size, arrays[a].size() - first))});
+    }
   }
+
+  std::vector<std::string> compressed(blocks.size());
+  std::exception_ptr failure;
+  const auto count = static_cast<std::ptrdiff_t>(blocks.size());
+#pragma omp parallel if (count > 2)
+  {
+    std::optional<Deflater> deflater;  // one per thread, made on its first block
+#pragma omp for schedule(dynamic)
+    for (std::ptrdiff_t b = 0; b < count; ++b) {
+      try {
+        if (!deflater) deflater.emplace(level);
+        compressed[b] = deflater->compress(blocks[b].bytes);
+      } catch (...) {
+#pragma omp critical(zlib_blocks_failure)
+        if (!failure) failure = std::current_exception();
+      }
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
+
+  std::vector<std::string> encoded(arrays.size());
+  std::size_t next = 0;  // blocks are in array order
+  for (std::size_t a = 0; a < arrays.size(); ++a) {
+    const std::size_t own = block_count(arrays[a].size());
+    std::string& out = encoded[a];
+    out.resize((3 + own) * word);
+    put_word(out, 0, own);
+    put_word(out, word, zlib_block_size);
+    put_word(out, 2 * word, arrays[a].size() % zlib_block_size);
+    for (std::size_t b = 0; b < own; ++b) {
+      put_word(out, (3 + b) * word, compressed[next + b].size());
+      out += compressed[next + b];
+    }
+    next += own;
+  }
+  return encoded;
 }
 
 std::string inflate_zlib_blocks(std::span<const std::byte> data, std::size_t& consumed) {

@@ -9,20 +9,23 @@
 #include <cstddef>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace hydrodda::output {
 
 // VTK's default block size, so the files are laid out as ParaView's own.
 inline constexpr std::size_t zlib_block_size = 32768;
 
-// Appends the header and the compressed blocks of `bytes` to `out`. `level` is zlib's, 0 (stored,
-// no compression) to 9 (smallest); throws std::invalid_argument outside that range and
-// std::runtime_error if zlib fails.
-void append_zlib_blocks(std::string& out, std::span<const std::byte> bytes, int level);
+// Each array's encoding (header, then its blocks). `level` is zlib's, 0 (stored, no
+// compression) to 9 (smallest); throws std::invalid_argument outside that range and
+// std::runtime_error if zlib fails. The blocks of all the arrays are shared among the OpenMP
+// threads: a file's arrays are many and small (a contact file of the 1,601-block wall: nine
+// of 9–450 kB), so sharing arrays instead would leave a thread idle.
+std::vector<std::string> compress_zlib_blocks(std::span<const std::span<const std::byte>> arrays, int level);
 
-// The inverse, for tests and tools: the bytes of the block sequence that starts at `data`
-// (header first); `consumed` is set to the number of bytes it took. Throws std::runtime_error
-// on a truncated or corrupt sequence.
+// The inverse for one array, for tests and tools: the bytes of the encoding that starts at
+// `data` (header first); `consumed` is set to the number of bytes it took. Throws
+// std::runtime_error on a truncated or corrupt encoding.
 std::string inflate_zlib_blocks(std::span<const std::byte> data, std::size_t& consumed);
 
 }  // namespace hydrodda::output
