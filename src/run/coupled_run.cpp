@@ -69,7 +69,7 @@ output::RunSummary run_coupled(const RunContext& context) {
   output::RunCheckpoint checkpoint;
   checkpoint.scenario_hash = output::hash_text(context.scenario_text);
   checkpoint.scenario_file = std::filesystem::absolute(s.file).string();
-  ParaviewOutput paraview(context.folder);
+  ParaviewOutput paraview(context.folder, s.output.fields);
   if (context.resume) {
     const output::RunCheckpoint& saved = *context.resume;
     model.import_state({saved.mechanics, saved.coupling});
@@ -147,7 +147,8 @@ output::RunSummary run_coupled(const RunContext& context) {
       spdlog::debug("iteration {}: head change {:.3e}, displacement change {:.3e}", r.iteration, r.head_change,
                     r.displacement_change);
       converged = r.converged;
-      if (r.iteration % s.output.every == 0 || converged || r.diverging) {
+      // The first pass, every `every`-th, and the last (written below if not here).
+      if (r.iteration == 1 || r.iteration % s.output.every == 0 || converged || r.diverging) {
         write_fields(r.iteration);
         last_written = r.iteration;
       }

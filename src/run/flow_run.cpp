@@ -22,7 +22,7 @@ output::RunSummary run_flow(const RunContext& context) {
   const std::vector<double> no_porosity;
   draw_figures(context.scenario, context.folder,
                {model.mesh(), solution, no_porosity, model.permeability(), model.blocks()});
-  ParaviewOutput(context.folder).write_fluid(0, 0.0, model.mesh(), solution, no_porosity, model.permeability());
+  ParaviewOutput(context.folder, context.scenario.output.fields).write_fluid(0, 0.0, model.mesh(), solution, no_porosity, model.permeability());
   summary.converged = true;  // one linear solve: nothing to iterate
   summary.iterations = 1;
   return summary;

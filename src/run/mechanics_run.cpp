@@ -33,7 +33,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
     if (!m.measures.empty()) context.folder.write("measure.csv", measure.text());
   };
 
-  ParaviewOutput paraview(context.folder);
+  ParaviewOutput paraview(context.folder, s.output.fields);
   paraview.write_blocks(0, 0.0, system);
   long long last_written = 0;
   try {

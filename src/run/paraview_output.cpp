@@ -12,11 +12,13 @@ namespace hydrodda::run {
 
 using output::DataArray;
 
-ParaviewOutput::ParaviewOutput(const output::RunFolder& folder) : folder_(folder) {}
+ParaviewOutput::ParaviewOutput(const output::RunFolder& folder, const scenario::OutputFields& fields)
+    : folder_(folder), fields_(fields) {}
 
 void ParaviewOutput::write_fluid(int step, double time, const mesh::TriangleMesh& mesh,
                                  const hydro::FlowSolution& flow, const std::vector<double>& porosity,
                                  const std::vector<double>& permeability) {
+  if (!fields_.fluid) return;
   std::vector<DataArray> points{{"head", 1, flow.head}, {"pressure", 1, flow.pressure}};
   std::vector<DataArray> cells{{"permeability", 1, permeability}};
   if (!porosity.empty()) cells.push_back({"porosity", 1, porosity});
@@ -31,17 +33,19 @@ void ParaviewOutput::write_fluid(int step, double time, const mesh::TriangleMesh
 }
 
 void ParaviewOutput::list_written(const std::vector<int>& steps) {
-  if (!fluid_) fluid_.emplace(folder_.file("fluid.pvd"));
-  if (!blocks_) blocks_.emplace(folder_.file("blocks.pvd"));
-  if (!contacts_) contacts_.emplace(folder_.file("contacts.pvd"));
+  if (fields_.fluid && !fluid_) fluid_.emplace(folder_.file("fluid.pvd"));
+  if (fields_.blocks && !blocks_) blocks_.emplace(folder_.file("blocks.pvd"));
+  if (fields_.contacts && !contacts_) contacts_.emplace(folder_.file("contacts.pvd"));
   for (int step : steps) {
-    fluid_->add(step, fmt::format("fluid_{:04d}.vtu", step));
-    blocks_->add(step, fmt::format("blocks_{:04d}.vtu", step));
-    contacts_->add(step, fmt::format("contacts_{:04d}.vtu", step));
+    if (fluid_) fluid_->add(step, fmt::format("fluid_{:04d}.vtu", step));
+    if (blocks_) blocks_->add(step, fmt::format("blocks_{:04d}.vtu", step));
+    if (contacts_) contacts_->add(step, fmt::format("contacts_{:04d}.vtu", step));
   }
 }
 
 void ParaviewOutput::write_blocks(int step, double time, const dda::System& system) {
+  if (fields_.contacts) write_contacts(step, time, system);
+  if (!fields_.blocks) return;
   std::vector<std::vector<geometry::Point>> polygons;
   DataArray id{"block", 1, {}}, displacement{"displacement", 2, {}}, rotation{"rotation", 1, {}},
       stress{"stress", 3, {}}, area{"area", 1, {}};
@@ -60,7 +64,6 @@ void ParaviewOutput::write_blocks(int step, double time, const dda::System& syst
   output::write_vtu_polygons(folder_.file(name), polygons, cells);
   if (!blocks_) blocks_.emplace(folder_.file("blocks.pvd"));
   blocks_->add(time, name);
-  write_contacts(step, time, system);
 }
 
 static_assert(static_cast<int>(dda::ContactState::open) == 0 && static_cast<int>(dda::ContactState::sliding) == 1 &&

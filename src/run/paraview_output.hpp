@@ -2,7 +2,7 @@
 // The run's ParaView series: fluid.pvd over the fluid mesh (head, pressure, porosity,
 // permeability, flux, region), blocks.pvd over the blocks (displacement, rotation, stress,
 // area) and contacts.pvd over the block contacts (state, normal force, penetration, aperture),
-// one .vtu of each per output step.
+// one .vtu of each per output step; only the series the scenario's output.fields names.
 
 #include <optional>
 #include <vector>
@@ -12,12 +12,13 @@
 #include "mesh/triangle_mesh.hpp"
 #include "output/pvd_series.hpp"
 #include "output/run_folder.hpp"
+#include "scenario/scenario.hpp"
 
 namespace hydrodda::run {
 
 class ParaviewOutput {
  public:
-  explicit ParaviewOutput(const output::RunFolder& folder);
+  ParaviewOutput(const output::RunFolder& folder, const scenario::OutputFields& fields);
 
   // `porosity` may be empty (flow-only runs without blocks).
   void write_fluid(int step, double time, const mesh::TriangleMesh& mesh, const hydro::FlowSolution& flow,
@@ -30,6 +31,7 @@ class ParaviewOutput {
 
  private:
   const output::RunFolder& folder_;
+  scenario::OutputFields fields_;
   std::optional<output::PvdSeries> fluid_;
   std::optional<output::PvdSeries> blocks_;
   std::optional<output::PvdSeries> contacts_;

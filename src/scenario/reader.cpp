@@ -419,10 +419,35 @@ void read_coupling(ReadContext& ctx, const TableView& root, Scenario& s) {
             "must lie in (0, 1]");
 }
 
+// output.fields: which of the series "fluid", "blocks" and "contacts" to write, each once.
+void read_output_fields(ReadContext& ctx, const toml::node& fields, OutputFields& chosen) {
+  const toml::array* a = fields.as_array();
+  if (!a) {
+    ctx.error(line_of(fields), "output.fields", "expected an array such as [\"fluid\", \"blocks\", \"contacts\"]");
+    return;
+  }
+  chosen = {false, false, false};
+  for (const toml::node& item : *a) {
+    const auto name = item.value<std::string>();
+    bool* series = !name                ? nullptr
+                   : *name == "fluid"    ? &chosen.fluid
+                   : *name == "blocks"   ? &chosen.blocks
+                   : *name == "contacts" ? &chosen.contacts
+                                         : nullptr;
+    if (!series) {
+      ctx.error(line_of(item), "output.fields", "each series must be \"fluid\", \"blocks\" or \"contacts\"");
+    } else if (*series) {
+      ctx.error(line_of(item), "output.fields", fmt::format("\"{}\" is listed twice", *name));
+    } else {
+      *series = true;
+    }
+  }
+}
+
 void read_output(ReadContext& ctx, const TableView& root, Scenario& s) {
   const toml::table* t = root.table("output");
   static const toml::table empty;
-  const TableView o(ctx, t ? *t : empty, "output", {"directory", "every", "figures"});
+  const TableView o(ctx, t ? *t : empty, "output", {"directory", "every", "fields", "figures"});
   if (auto dir = o.string("directory")) {
     s.output.directory = *dir;
     o.require("directory", !dir->empty(), "must not be empty");
@@ -432,8 +457,11 @@ void read_output(ReadContext& ctx, const TableView& root, Scenario& s) {
   }
   if (auto every = o.integer("every")) {
     s.output.every = static_cast<int>(*every);
-    o.require("every", *every >= 1, "must be a whole number >= 1");
+    o.require("every", *every >= 1 && *every <= 1'000'000'000, "must be a whole number >= 1");
+  } else {
+    ctx.defaults.push_back({"output.every", std::to_string(s.output.every)});
   }
+  if (const toml::node* fields = o.node("fields")) read_output_fields(ctx, *fields, s.output.fields);
   if (const toml::node* figures = o.node("figures")) {
     s.output.figures.clear();
     const toml::array* a = figures->as_array();

@@ -200,9 +200,20 @@ struct CouplingDefinition {
   double relaxation = 1.0;
 };
 
+// The ParaView series a run writes (output.fields).
+struct OutputFields {
+  bool fluid = true;     // fluid.pvd
+  bool blocks = true;    // blocks.pvd
+  bool contacts = true;  // contacts.pvd
+};
+
 struct OutputDefinition {
   std::filesystem::path directory;  // resolved: never empty after reading
-  int every = 1;
+  // Fields are written at the first and last state and every `every` passes or steps. 100, so
+  // that a mechanics run of thousands of steps writes tens of files, not thousands, and a
+  // coupled run of up to 100 passes its first and last.
+  int every = 100;
+  OutputFields fields;
   std::vector<std::string> figures{"png"};
 };
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -152,6 +153,54 @@ TEST(RunLayer, MechanicsOnlyRunOfAFreeFallFollowsHalfGTSquared) {
   EXPECT_EQ(count_lines(folder.path / "measure.csv"), 101u);
   for (const char* f : {"summary.json", "blocks.pvd", "blocks_0000.vtu", "blocks_0100.vtu", "contacts_0100.vtu"})
     EXPECT_TRUE(fs::exists(folder.path / f)) << f;
+}
+
+// The .vtu files of a series in the folder, by name, and the files its .pvd lists.
+std::vector<std::string> series_files(const fs::path& folder, const std::string& series) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    if (name.starts_with(series + "_") && name.ends_with(".vtu")) names.push_back(name);
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+std::vector<std::string> listed_in_pvd(const fs::path& pvd) {
+  std::vector<std::string> names;
+  const std::string text = read_file(pvd);
+  for (std::size_t at = text.find("file=\""); at != std::string::npos; at = text.find("file=\"", at + 1)) {
+    const std::size_t begin = at + 6;
+    names.push_back(text.substr(begin, text.find('"', begin) - begin));
+  }
+  return names;
+}
+
+TEST(RunLayer, FieldsAtTheFirstAndLastStateAndEveryNSteps) {
+  // 250 steps of the free fall. By default (every = 100): steps 0, 100, 200 and the last, 250.
+  const fs::path file = kVerification / "free_fall.toml";
+  const std::string text = scenario::apply_overrides(read_file(file), file, {{"mechanics.end_time", "0.25"}});
+  {
+    Folder folder("every-default");
+    const run::RunResult result = run::run(scenario::parse_scenario(text, file), {folder.path});
+    ASSERT_EQ(result.iterations, 250);
+    const std::vector<std::string> blocks{"blocks_0000.vtu", "blocks_0100.vtu", "blocks_0200.vtu", "blocks_0250.vtu"};
+    EXPECT_EQ(series_files(folder.path, "blocks"), blocks);
+    EXPECT_EQ(listed_in_pvd(folder.path / "blocks.pvd"), blocks);
+    EXPECT_EQ(series_files(folder.path, "contacts").size(), 4u);
+  }
+  // every = 60 and only the contacts: steps 0, 60, 120, 180, 240 and 250; no block files.
+  {
+    Folder folder("every-fields");
+    const std::string chosen = text + "\n[output]\nevery = 60\nfields = [\"contacts\"]\n";
+    const run::RunResult result = run::run(scenario::parse_scenario(chosen, file), {folder.path});
+    ASSERT_EQ(result.status, run::RunStatus::finished);
+    const std::vector<std::string> contacts{"contacts_0000.vtu", "contacts_0060.vtu", "contacts_0120.vtu",
+                                            "contacts_0180.vtu", "contacts_0240.vtu", "contacts_0250.vtu"};
+    EXPECT_EQ(series_files(folder.path, "contacts"), contacts);
+    EXPECT_EQ(listed_in_pvd(folder.path / "contacts.pvd"), contacts);
+    EXPECT_TRUE(series_files(folder.path, "blocks").empty());
+    EXPECT_FALSE(fs::exists(folder.path / "blocks.pvd"));
+  }
 }
 
 TEST(RunLayer, CoupledRunOfABlockColumnInStillWaterConverges) {

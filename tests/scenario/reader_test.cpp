@@ -102,11 +102,35 @@ head = 1.0
   EXPECT_TRUE(has_default("flow.permeability_law"));
   EXPECT_TRUE(has_default("mesh.size"));
   EXPECT_TRUE(has_default("output.directory"));
+  EXPECT_TRUE(has_default("output.every"));
+  EXPECT_EQ(s.output.every, 100);
+  EXPECT_TRUE(s.output.fields.fluid && s.output.fields.blocks && s.output.fields.contacts);
   // Mesh size defaults to 1/40 of the domain's larger side.
   EXPECT_DOUBLE_EQ(s.mesh->size, 0.1);
   EXPECT_DOUBLE_EQ(s.mesh->fracture_size, 0.01);
   EXPECT_EQ(s.output.directory, std::filesystem::path("out/flow"));
   EXPECT_FALSE(s.mechanics.has_value());
+}
+
+TEST(ScenarioReader, OutputFieldsPickTheSeries) {
+  const Scenario s = parse_scenario(R"(
+[geometry]
+domain = [[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]]
+[material.rock]
+matrix_porosity = 0.2
+grain_diameter = 1e-5
+[flow]
+[[flow.boundary]]
+name = "left"
+head = 1.0
+[output]
+every = 7
+fields = ["contacts", "fluid"]
+)", "flow.toml");
+  EXPECT_EQ(s.output.every, 7);
+  EXPECT_TRUE(s.output.fields.fluid);
+  EXPECT_FALSE(s.output.fields.blocks);
+  EXPECT_TRUE(s.output.fields.contacts);
 }
 
 TEST(ScenarioReader, MalformedTomlNamesTheLine) {
