@@ -1,8 +1,7 @@
 #include "geometry/clipping.hpp"
 
+#include <algorithm>
 #include <cmath>
-
-#include "geometry/polygon.hpp"
 
 namespace hydrodda::geometry {
 
@@ -71,6 +70,110 @@ double clipped_area(const std::array<Point, 3>& triangle, std::span<const Point>
   clip_by_half_plane(b, t[1], t[2], a);
   clip_by_half_plane(a, t[2], t[0], b);
   return area(b.view());
+}
+
+namespace {
+
+// Sutherland–Hodgman with the convex region as the clip polygon, the triangle as the subject.
+double clip_by_half_planes(const std::array<Point, 3>& triangle, std::span<const HalfPlane> edges) {
+  constexpr int kCapacity = 3 + kMaxConvexEdges;
+  std::array<Point, kCapacity> first, second;
+  std::array<double, kCapacity> d;
+  Point* in = first.data();
+  Point* out = second.data();
+  std::copy(triangle.begin(), triangle.end(), in);
+  int n = 3;
+  for (const HalfPlane& edge : edges) {
+    bool all_in = true, all_out = true;
+    for (int i = 0; i < n; ++i) {
+      d[i] = edge.distance(in[i]);
+      all_in &= d[i] >= 0.0;
+      all_out &= d[i] < 0.0;
+    }
+    if (all_in) continue;
+    if (all_out) return 0.0;
+    int kept = 0;
+    for (int i = 0, j = n - 1; i < n; j = i++) {  // the subject's edge in[j] → in[i]
+      if ((d[j] >= 0.0) != (d[i] >= 0.0)) out[kept++] = in[j] + (d[j] / (d[j] - d[i])) * (in[i] - in[j]);
+      if (d[i] >= 0.0) out[kept++] = in[i];
+    }
+    n = kept;
+    std::swap(in, out);
+  }
+  return area(std::span<const Point>(in, n));
+}
+
+}  // namespace
+
+bool append_half_planes(std::span<const Point> polygon, std::vector<HalfPlane>& out) {
+  const std::size_t n = polygon.size();
+  if (n < 3) return false;
+  const double orientation = signed_area(polygon);
+  if (orientation == 0.0) return false;
+  const double sign = orientation > 0.0 ? 1.0 : -1.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point before = polygon[(i + n - 1) % n], at = polygon[i], after = polygon[(i + 1) % n];
+    if (sign * cross(at - before, after - at) < 0.0) return false;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point a = polygon[i], b = polygon[(i + 1) % n];
+    // The edge a→b turned a quarter towards the inside: to its left when counter-clockwise.
+    out.push_back({a, {-sign * (b.y - a.y), sign * (b.x - a.x)}});
+  }
+  return true;
+}
+
+double clipped_area(const std::array<Point, 3>& triangle, double triangle_area, std::span<const HalfPlane> edges) {
+  // Which edges cut the triangle: the common case in a fractured layer is one (the element
+  // crosses a single fracture face), whose answer is closed-form; more go through the clip.
+  int cutting = 0;
+  std::array<double, 3> d{};
+  for (const HalfPlane& edge : edges) {
+    const std::array<double, 3> e{edge.distance(triangle[0]), edge.distance(triangle[1]), edge.distance(triangle[2])};
+    const int outside = (e[0] < 0.0) + (e[1] < 0.0) + (e[2] < 0.0);
+    if (outside == 3) return 0.0;
+    if (outside == 0) continue;
+    if (++cutting > 1) return clip_by_half_planes(triangle, edges);
+    d = e;
+  }
+  if (cutting == 0) return triangle_area;
+  // One line cuts: corner k alone on its side, at distances d_k and d_i, d_j from the line,
+  // cuts its two edges at fractions t = d_k / (d_k − d_i) from it, a corner triangle of
+  // t_i t_j of the whole (similar triangles). That corner is the part outside when k is the
+  // one corner outside, the part inside when k is the one corner inside.
+  const bool one_outside = (d[0] < 0.0) + (d[1] < 0.0) + (d[2] < 0.0) == 1;
+  const int k = one_outside ? (d[0] < 0.0 ? 0 : d[1] < 0.0 ? 1 : 2) : (d[0] >= 0.0 ? 0 : d[1] >= 0.0 ? 1 : 2);
+  const double di = d[(k + 1) % 3], dj = d[(k + 2) % 3];
+  const double corner = (d[k] / (d[k] - di)) * (d[k] / (d[k] - dj));
+  return one_outside ? triangle_area * (1.0 - corner) : triangle_area * corner;
+}
+
+bool contains_triangle(std::span<const HalfPlane> edges, const std::array<Point, 3>& triangle) {
+  for (const HalfPlane& edge : edges)
+    if (edge.distance(triangle[0]) < 0.0 || edge.distance(triangle[1]) < 0.0 || edge.distance(triangle[2]) < 0.0)
+      return false;
+  return true;
+}
+
+ClipPolygons::ClipPolygons(std::span<const Polygon> polygons) : polygons_(polygons) {
+  boxes_.reserve(polygons.size());
+  first_edge_.reserve(polygons.size() + 1);
+  first_edge_.push_back(0);
+  for (const Polygon& p : polygons) {
+    boxes_.push_back(bounding_box(p));
+    if (p.size() <= static_cast<std::size_t>(kMaxConvexEdges)) append_half_planes(p, edges_);
+    first_edge_.push_back(static_cast<int>(edges_.size()));
+  }
+}
+
+double ClipPolygons::covered_area(int i, const std::array<Point, 3>& triangle, double triangle_area) const {
+  const std::span<const HalfPlane> edges = edges_of(i);
+  return edges.empty() ? clipped_area(triangle, polygons_[i]) : clipped_area(triangle, triangle_area, edges);
+}
+
+bool ClipPolygons::holds(int i, const std::array<Point, 3>& triangle) const {
+  const std::span<const HalfPlane> edges = edges_of(i);
+  return !edges.empty() && contains_triangle(edges, triangle);
 }
 
 }  // namespace hydrodda::geometry

@@ -4,8 +4,10 @@
 
 #include <array>
 #include <span>
+#include <vector>
 
 #include "geometry/point.hpp"
+#include "geometry/polygon.hpp"
 
 namespace hydrodda::geometry {
 
@@ -23,5 +25,62 @@ namespace hydrodda::geometry {
 // this triangle-against-block case (DESIGN.md §5), and the coupling loop runs it for every
 // element at every pass. Boost.Geometry is the test oracle.
 double clipped_area(const std::array<Point, 3>& triangle, std::span<const Point> polygon);
+
+// The inside of one edge of a convex polygon: the points p with dot(normal, p − point) >= 0
+// (normal: the edge turned to the polygon's inside, not normalised).
+struct HalfPlane {
+  Point point;
+  Point normal;
+  double distance(Point p) const { return normal.x * (p.x - point.x) + normal.y * (p.y - point.y); }
+};
+
+// The half-planes of a polygon's edges (either orientation), appended to `out`; false, with
+// nothing appended, when the polygon is not convex (a turn against its orientation; collinear
+// vertices are allowed) or has fewer than three vertices.
+bool append_half_planes(std::span<const Point> polygon, std::vector<HalfPlane>& out);
+
+// Area of triangle ∩ the convex region inside every half-plane of `edges`, or `triangle_area`
+// itself, the triangle's area as the caller computed it, when no edge cuts the triangle (so a
+// triangle wholly inside counts exactly as covered). Sutherland–Hodgman with the region as the
+// clip polygon and the triangle as the subject, with early outs:
+//   subject = triangle
+//   for each edge: d_i = signed distances of the subject's vertices
+//                  all d_i >= 0: next edge;  all d_i < 0: return 0
+//                  else keep the vertices with d >= 0 and the crossings of the edges that change side
+//   return the shoelace area of the subject
+// At most kMaxConvexEdges edges (the subject then has at most 3 + kMaxConvexEdges vertices).
+inline constexpr int kMaxConvexEdges = 29;
+double clipped_area(const std::array<Point, 3>& triangle, double triangle_area, std::span<const HalfPlane> edges);
+
+// Whether every vertex of the triangle lies inside every half-plane (for a convex region: the
+// triangle lies in it, edges included).
+bool contains_triangle(std::span<const HalfPlane> edges, const std::array<Point, 3>& triangle);
+
+// Polygons prepared for clipping many triangles against them, as one coupling pass does with
+// its blocks: the convex ones (of at most kMaxConvexEdges edges) as their half-planes, the
+// others kept for the general clip above. Keeps a view of `polygons`, which must outlive it.
+class ClipPolygons {
+ public:
+  explicit ClipPolygons(std::span<const Polygon> polygons);
+
+  int size() const { return static_cast<int>(boxes_.size()); }
+  std::span<const Box> boxes() const { return boxes_; }
+  // Area of triangle ∩ polygon i; exactly `triangle_area` when the triangle lies wholly inside
+  // a convex polygon i.
+  double covered_area(int i, const std::array<Point, 3>& triangle, double triangle_area) const;
+  // Whether polygon i is convex and holds the whole triangle; false for a non-convex polygon,
+  // which covered_area then decides.
+  bool holds(int i, const std::array<Point, 3>& triangle) const;
+
+ private:
+  std::span<const HalfPlane> edges_of(int i) const {
+    return {edges_.data() + first_edge_[i], edges_.data() + first_edge_[i + 1]};
+  }
+
+  std::span<const Polygon> polygons_;
+  std::vector<Box> boxes_;
+  std::vector<int> first_edge_;  // polygon i's half-planes: edges_[first_edge_[i] .. first_edge_[i + 1])
+  std::vector<HalfPlane> edges_;  // none for a polygon that is not convex
+};
 
 }  // namespace hydrodda::geometry

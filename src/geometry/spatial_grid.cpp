@@ -6,7 +6,7 @@
 namespace hydrodda::geometry {
 
 SpatialGrid::SpatialGrid(std::span<const Box> boxes, double items_per_cell)
-    : boxes_(boxes.begin(), boxes.end()), stamp_(boxes.size(), 0u) {
+    : boxes_(boxes.begin(), boxes.end()) {
   for (const Box& b : boxes_) {
     bounds_.add(b.lo);
     bounds_.add(b.hi);
@@ -33,14 +33,6 @@ SpatialGrid::SpatialGrid(std::span<const Box> boxes, double items_per_cell)
   std::vector<int> fill(cell_start_.begin(), cell_start_.end() - 1);
   for (int id = 0; id < static_cast<int>(boxes_.size()); ++id)
     each_cell(boxes_[id], [&](int cell) { items_[fill[cell]++] = id; });
-}
-
-int SpatialGrid::column_of(double x) const {
-  return std::clamp(static_cast<int>((x - bounds_.lo.x) * inverse_width_), 0, columns_ - 1);
-}
-
-int SpatialGrid::row_of(double y) const {
-  return std::clamp(static_cast<int>((y - bounds_.lo.y) * inverse_height_), 0, rows_ - 1);
 }
 
 }  // namespace hydrodda::geometry

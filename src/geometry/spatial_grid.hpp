@@ -1,6 +1,7 @@
 #pragma once
 // A uniform grid over bounding boxes: which items may overlap a query box. Built once for a
-// fixed set (the fluid mesh's triangles), queried many times (each block, each pass).
+// set of boxes (the blocks of one coupling pass), queried many times (each fluid element).
+// Queries keep no state, so several threads may query one grid at once.
 
 #include <algorithm>
 #include <span>
@@ -16,7 +17,9 @@ class SpatialGrid {
   explicit SpatialGrid(std::span<const Box> boxes, double items_per_cell = 2.0);
 
   // Calls visit(id) once for each item whose box overlaps `query`, in increasing id order
-  // within a cell; an item spanning several cells is reported once (deduplicated by a stamp).
+  // within a cell, the cells row by row. An item in several of the cells the query covers is
+  // reported in the first of them, the cell holding the lower-left corner of the two boxes'
+  // overlap: the same order as a visit that skipped every id already seen.
   template <class Visit>
   void for_each_overlap(const Box& query, Visit&& visit) const;
 
@@ -31,30 +34,29 @@ class SpatialGrid {
   double inverse_height_ = 0.0;
   std::vector<int> cell_start_;  // CSR: the items of cell c are items_[start[c] .. start[c+1])
   std::vector<int> items_;
-  mutable std::vector<unsigned> stamp_;
-  mutable unsigned current_stamp_ = 0;
 
-  int column_of(double x) const;
-  int row_of(double y) const;
+  int column_of(double x) const {
+    return std::clamp(static_cast<int>((x - bounds_.lo.x) * inverse_width_), 0, columns_ - 1);
+  }
+  int row_of(double y) const {
+    return std::clamp(static_cast<int>((y - bounds_.lo.y) * inverse_height_), 0, rows_ - 1);
+  }
 };
 
 template <class Visit>
 void SpatialGrid::for_each_overlap(const Box& query, Visit&& visit) const {
   if (boxes_.empty() || !query.overlaps(bounds_)) return;
-  if (++current_stamp_ == 0) {  // wrapped: clear the stamps once every 2^32 queries
-    std::fill(stamp_.begin(), stamp_.end(), 0u);
-    current_stamp_ = 1;
-  }
   const int c0 = column_of(query.lo.x), c1 = column_of(query.hi.x);
   const int r0 = row_of(query.lo.y), r1 = row_of(query.hi.y);
+  const bool one_cell = c0 == c1 && r0 == r1;
   for (int r = r0; r <= r1; ++r)
     for (int c = c0; c <= c1; ++c) {
       const int cell = r * columns_ + c;
       for (int k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
         const int id = items_[k];
-        if (stamp_[id] == current_stamp_) continue;
-        stamp_[id] = current_stamp_;
-        if (boxes_[id].overlaps(query)) visit(id);
+        const Box& box = boxes_[id];
+        if (!box.overlaps(query)) continue;
+        if (one_cell || (std::max(c0, column_of(box.lo.x)) == c && std::max(r0, row_of(box.lo.y)) == r)) visit(id);
       }
     }
 }
