@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "geometry/clipping.hpp"
 #include "geometry/point.hpp"
 #include "geometry/polygon.hpp"
 #include "geometry/spatial_grid.hpp"
@@ -21,8 +22,8 @@ struct PorosityField {
   std::vector<double> porosity;       // φ per element
 };
 
-// Keeps the fixed mesh's element areas and a spatial index of its elements, so that each pass
-// of the coupling loop only clips the moved blocks.
+// Keeps the fixed mesh's element corners and areas; each pass clips every element against the
+// blocks as they are then.
 class PorosityMapper {
  public:
   PorosityMapper(std::span<const Point> nodes, std::span<const std::array<int, 3>> triangles);
@@ -33,9 +34,17 @@ class PorosityMapper {
   const std::vector<double>& element_areas() const { return areas_; }
 
  private:
+  // What one thread keeps from element to element.
+  struct Scratch {
+    int hint = -1;                // the last block that held a whole element: tried first
+    std::vector<int> candidates;  // the blocks over the element
+  };
+  // Σ_blocks |e ∩ block| for element e, or A_e as soon as one block holds the whole element.
+  double compute_covered_area(int e, const geometry::ClipPolygons& blocks, const geometry::SpatialGrid& grid,
+                              Scratch& scratch) const;
+
   std::vector<std::array<Point, 3>> triangles_;
   std::vector<double> areas_;
-  geometry::SpatialGrid grid_;
 };
 
 }  // namespace hydrodda::coupling
