@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "scenario/validation.hpp"
@@ -80,9 +81,8 @@ void read_joint_sets(ReadContext& ctx, const TableView& g, GeometryDefinition& g
       set.region = std::move(*region);
       check_polygon(ctx, j.line_of_key("region"), j.key_path("region"), set.region);
     }
-    if (auto seed = j.integer("seed")) {
-      j.require("seed", *seed >= 0, "must be a whole number >= 0");
-      set.seed = static_cast<std::uint64_t>(std::max(*seed, 0LL));
+    if (auto seed = j.integer("seed", 0, std::numeric_limits<int>::max())) {
+      set.seed = static_cast<std::uint64_t>(*seed);
     } else if (!j.has("seed")) {
       ctx.defaults.push_back({indexed + ".seed", "0"});
     }

@@ -210,13 +210,15 @@ void read_mechanics(ReadContext& ctx, const TableView& root, Scenario& s) {
   else if (!m.has("gravity")) ctx.defaults.push_back({"mechanics.gravity", "[0, -9.81]"});
   mech.time_step = m.number_or("time_step", mech.time_step);
   m.require("time_step", mech.time_step > 0.0, "must be > 0");
-  if (auto steps = m.integer("steps")) {
-    mech.steps = static_cast<int>(*steps);
-    m.require("steps", *steps >= 1 && *steps <= 100'000'000, "must be a whole number >= 1");
-  }
+  // A bad value is recorded as an error; 1 keeps 'steps' and 'end_time' exclusive meanwhile.
+  if (m.has("steps")) mech.steps = m.integer("steps", 1, kMaxSteps).value_or(1);
   if (auto end = m.number("end_time")) {
     mech.end_time = *end;
     m.require("end_time", *end > 0.0, "must be > 0");
+    if (*end > 0.0 && mech.time_step > 0.0 && *end / mech.time_step > kMaxSteps)
+      m.require("end_time", false,
+                fmt::format("end_time / time_step = {} steps; at most {} (a larger time_step, or a shorter end_time)",
+                            format_number(*end / mech.time_step), kMaxSteps));
   }
   if (mech.steps && mech.end_time)
     ctx.error(m.line_of_key("end_time"), "mechanics.end_time", "give 'steps' or 'end_time', not both");
@@ -408,9 +410,8 @@ void read_coupling(ReadContext& ctx, const TableView& root, Scenario& s) {
   const TableView c(ctx, *t, "coupling", {"tolerance", "max_iterations", "relaxation"});
   s.coupling.tolerance = c.number_or("tolerance", s.coupling.tolerance);
   c.require("tolerance", s.coupling.tolerance > 0.0, "must be > 0");
-  if (auto n = c.integer("max_iterations")) {
-    s.coupling.max_iterations = static_cast<int>(*n);
-    c.require("max_iterations", *n >= 1 && *n <= 1'000'000, "must be a whole number >= 1");
+  if (auto n = c.integer("max_iterations", 1, 1'000'000)) {
+    s.coupling.max_iterations = *n;
   } else if (!c.has("max_iterations")) {
     ctx.defaults.push_back({"coupling.max_iterations", "50"});
   }
@@ -455,9 +456,8 @@ void read_output(ReadContext& ctx, const TableView& root, Scenario& s) {
     s.output.directory = std::filesystem::path("out") / s.file.stem();
     ctx.defaults.push_back({"output.directory", fmt::format("\"{}\"", s.output.directory.string())});
   }
-  if (auto every = o.integer("every")) {
-    s.output.every = static_cast<int>(*every);
-    o.require("every", *every >= 1 && *every <= 1'000'000'000, "must be a whole number >= 1");
+  if (auto every = o.integer("every", 1, kMaxSteps)) {
+    s.output.every = *every;
   } else {
     ctx.defaults.push_back({"output.every", std::to_string(s.output.every)});
   }

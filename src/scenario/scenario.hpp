@@ -139,6 +139,9 @@ struct InitialStressDefinition {
   int line = 0;
 };
 
+// The most DDA steps a run (or a coupling pass) may take: `steps`, or end_time / time_step.
+inline constexpr int kMaxSteps = 100'000'000;
+
 struct MechanicsDefinition {
   Analysis analysis = Analysis::Static;
   Plane plane = Plane::Strain;

@@ -64,14 +64,20 @@ std::optional<double> TableView::number(std::string_view key) const {
   return v;
 }
 
-std::optional<long long> TableView::integer(std::string_view key) const {
+std::optional<int> TableView::integer(std::string_view key, int min, int max) const {
   const toml::node* n = table_.get(key);
   if (!n) return std::nullopt;
   if (!n->is_integer()) {
     context_.error(line_of(*n), key_path(key), "expected an integer, got " + type_name(*n));
     return std::nullopt;
   }
-  return *n->value<long long>();
+  const std::int64_t value = n->as_integer()->get();
+  if (value < min || value > max) {
+    context_.error(line_of(*n), key_path(key),
+                   fmt::format("must be a whole number from {} to {}, got {}", min, max, value));
+    return std::nullopt;
+  }
+  return static_cast<int>(value);
 }
 
 std::optional<bool> TableView::boolean(std::string_view key) const {

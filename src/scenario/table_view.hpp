@@ -41,7 +41,9 @@ class TableView {
   const toml::node* node(std::string_view key) const { return table_.get(key); }
 
   std::optional<double> number(std::string_view key) const;
-  std::optional<long long> integer(std::string_view key) const;
+  // A whole number in [min, max]; outside it, an error that states the range. Every integer key
+  // is read through this, so no value is narrowed to int unchecked.
+  std::optional<int> integer(std::string_view key, int min, int max) const;
   std::optional<bool> boolean(std::string_view key) const;
   std::optional<std::string> string(std::string_view key) const;
   std::optional<Point> point(std::string_view key) const;

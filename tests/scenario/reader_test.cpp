@@ -156,7 +156,7 @@ analysis = "dynamic"
   for (std::size_t i = 1; i < errors.size(); ++i) EXPECT_LE(errors[i - 1].line, errors[i].line);
   EXPECT_EQ(errors[0].key, "material.rock.density");
   EXPECT_EQ(errors[3].key, "mechanics.steps");
-  EXPECT_EQ(errors[3].format(), "case.toml:9: mechanics.steps: must be a whole number >= 1");
+  EXPECT_EQ(errors[3].format(), "case.toml:9: mechanics.steps: must be a whole number from 1 to 100000000, got 0");
 }
 
 TEST(ScenarioReader, BlocksTakeTheOnlyMaterial) {
