@@ -1,7 +1,11 @@
 #include "output/run_folder.hpp"
 
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
 
 #include "output/atomic_file.hpp"
@@ -25,10 +29,21 @@ void RunFolder::check_available(const fs::path& directory, ExistingFolder policy
 RunFolder::RunFolder(fs::path directory, ExistingFolder policy) : directory_(std::move(directory)) {
   check_available(directory_, policy);
   std::error_code ec;
-  if (fs::is_directory(directory_, ec)) return;
-  fs::create_directories(directory_, ec);
-  if (ec)
-    throw RunFolderError(fmt::format("cannot create {}: {}", directory_.string(), ec.message()));
+  if (!fs::is_directory(directory_, ec)) {
+    fs::create_directories(directory_, ec);
+    if (ec) throw RunFolderError(fmt::format("cannot create {}: {}", directory_.string(), ec.message()));
+  }
+  check_writable(directory_);
+}
+
+void RunFolder::check_writable(const fs::path& directory) {
+  // Tried rather than predicted from permission bits: ACLs, read-only mounts and root all
+  // decide differently.
+  const fs::path probe = directory / fmt::format(".write-test.{}", ::getpid());
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+  if (fd < 0) throw RunFolderError(fmt::format("cannot write in {}: {}", directory.string(), std::strerror(errno)));
+  ::close(fd);
+  ::unlink(probe.c_str());
 }
 
 fs::path RunFolder::figures() const {
@@ -40,7 +55,15 @@ fs::path RunFolder::figures() const {
 }
 
 void RunFolder::write(std::string_view name, std::string_view content) const {
-  write_file_atomically(directory_ / name, content);
+  const fs::path path = directory_ / name;
+  std::error_code ec;
+  if (fs::is_directory(path, ec))
+    throw RunFolderError(fmt::format("cannot write {}: a folder of that name is in the way", path.string()));
+  try {
+    write_file_atomically(path, content);
+  } catch (const std::runtime_error& e) {
+    throw RunFolderError(e.what());
+  }
 }
 
 }  // namespace hydrodda::output

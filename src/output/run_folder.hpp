@@ -22,17 +22,20 @@ class RunFolder {
   // The figures/ subfolder, created on first use.
   std::filesystem::path figures() const;
 
-  // Writes a file in the folder atomically (temporary name, then rename).
+  // Writes a file in the folder atomically (temporary name, then rename); RunFolderError
+  // naming the file when it cannot.
   void write(std::string_view name, std::string_view content) const;
 
  private:
   // Throws RunFolderError when the folder could not be used under `policy`; creates nothing.
   static void check_available(const std::filesystem::path& directory, ExistingFolder policy);
+  // Throws RunFolderError when no file can be created in the folder.
+  static void check_writable(const std::filesystem::path& directory);
 
   std::filesystem::path directory_;
 };
 
-// Thrown when the folder exists and holds files, or cannot be created.
+// Thrown when the folder exists and holds files, cannot be created, or cannot be written.
 class RunFolderError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;

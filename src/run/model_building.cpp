@@ -68,7 +68,16 @@ int material_index(const Scenario& s, const std::string& name) {
 }  // namespace
 
 ModelGeometry build_and_log_geometry(const Scenario& s) {
-  ModelGeometry model = build_model_geometry(s);
+  ModelGeometry model;
+  try {
+    model = build_model_geometry(s);
+  } catch (const scenario::ScenarioError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    // Blocks too small for the initial aperture: bad input, refused by `check` as by `run`.
+    throw scenario::ScenarioError({{s.file.string(), 0, "geometry.initial_aperture",
+                                    fmt::format("{}; make it smaller, or cut fewer blocks", e.what())}});
+  }
   if (!s.geometry->min_block_area)
     spdlog::debug("default used: geometry.min_block_area = {:.3g} (1% of the mean block area)", model.network.min_block_area);
   for (const std::string& w : model.warnings) spdlog::warn("{}", w);

@@ -27,7 +27,13 @@ RunResult record_failure(const output::RunFolder& folder, RunStatus status, cons
   summary.converged = false;
   summary.status = "failed";
   summary.message = what;
-  write_summary(folder, summary);
+  try {
+    write_summary(folder, summary);
+  } catch (const output::RunFolderError& e) {
+    // Nowhere left to record the failure: the caller says both (once when they are the same).
+    if (what == e.what()) throw;
+    throw output::RunFolderError(fmt::format("{}; and the failure could not be recorded: {}", what, e.what()));
+  }
   return {status, false, summary.iterations, what, summary, folder.path()};
 }
 

@@ -519,8 +519,20 @@ Scenario parse_scenario(std::string_view text, const std::filesystem::path& file
 }
 
 Scenario read_scenario(const std::filesystem::path& file) {
+  const auto refuse = [&](const std::string& why) { return ScenarioError({{file.string(), 0, "", why}}); };
+  // Only a regular file of sane size is read: a device (/dev/zero) or a fifo would be read
+  // without end, a folder would read as empty.
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(file, ec);
+  if (ec || !std::filesystem::exists(status)) throw refuse("cannot open the scenario file: no such file");
+  if (std::filesystem::is_directory(status)) throw refuse("is a folder, not a scenario file");
+  if (!std::filesystem::is_regular_file(status)) throw refuse("is not a regular file; give a scenario file (TOML)");
+  const std::uintmax_t size = std::filesystem::file_size(file, ec);
+  if (ec || size > kMaxScenarioBytes)
+    throw refuse(fmt::format("is larger than {} MiB; a scenario file is a few kilobytes (large inputs go in "
+                             "mesh.file)", kMaxScenarioBytes >> 20));
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw ScenarioError({{file.string(), 0, "", "cannot open the scenario file"}});
+  if (!in) throw refuse("cannot open the scenario file");
   std::ostringstream text;
   text << in.rdbuf();
   return parse_scenario(text.str(), file);
