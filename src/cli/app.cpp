@@ -6,6 +6,7 @@
 #include <spdlog/spdlog.h>
 
 #include "cli/commands.hpp"
+#include "cli/interrupt.hpp"
 #include "cli/progress.hpp"
 #include "cli/version.hpp"
 
@@ -132,6 +133,7 @@ int run_app(int argc, char** argv) {
   }
 
   if (*check_cmd) return check_command(check_file);
+  start_interrupt_thread();  // before any thread (OpenMP's, a sweep's) starts
   if (*sweep_cmd) {
     if (!sweep_output.empty()) sweep.output = sweep_output;
     return sweep_command(sweep);

@@ -47,7 +47,15 @@ pid_t start_child(const ChildCommand& command, std::vector<std::string> env) {
   std::vector<char*> argv = to_argv(arguments);
   std::vector<char*> envp = to_argv(env);
   pid_t pid = 0;
-  const int error = ::posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data());
+  // The sweep blocks SIGINT and SIGTERM (taken by its signal thread); a case starts with none blocked.
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  sigset_t none;
+  sigemptyset(&none);
+  posix_spawnattr_setsigmask(&attributes, &none);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK);
+  const int error = ::posix_spawn(&pid, argv[0], &actions, &attributes, argv.data(), envp.data());
+  posix_spawnattr_destroy(&attributes);
   posix_spawn_file_actions_destroy(&actions);
   if (error != 0)
     throw std::runtime_error(fmt::format("cannot start {}: {}", command.arguments[0], std::strerror(error)));

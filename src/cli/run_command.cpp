@@ -67,10 +67,11 @@ void choose_thread_count() {
 
 int run_command(const RunOptions& options) {
   choose_thread_count();
-  install_interrupt_handlers();
   Progress progress(options.verbosity, ::isatty(STDERR_FILENO) == 1);
+  std::filesystem::path folder;  // removed when an interrupt while building the model leaves it empty
   const run::Callbacks callbacks{[&](const run::ProgressReport& r) { progress.update(r.message); },
-                                 interrupt_requested};
+                                 interrupt_requested,
+                                 [&](bool unstoppable) { set_exit_on_interrupt(unstoppable, folder); }};
   try {
     std::optional<run::RunResult> result;
     if (options.resume) {
@@ -82,6 +83,8 @@ int run_command(const RunOptions& options) {
       if (!scenario) return kBadInput;
       const run::RunOptions run_options{options.output.value_or(scenario->output.directory), options.overwrite,
                                         options.stop_after, std::nullopt};
+      std::error_code ec;
+      if (!std::filesystem::exists(run_options.folder, ec)) folder = run_options.folder;
       result = run::run(*scenario, run_options, callbacks);
     }
     progress.finish();

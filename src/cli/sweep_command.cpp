@@ -121,7 +121,6 @@ int sweep_command(const SweepOptions& options) {
 
   run::SweepResults results(axes, cases, columns, options.zip);
   for (std::size_t i = 0; i < prepared->size(); ++i) results.set_name(i, (*prepared)[i].name);
-  install_interrupt_handlers();
   std::size_t finished = 0;
   std::vector<std::size_t> never_started;
   try {

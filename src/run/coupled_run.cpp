@@ -48,7 +48,9 @@ ProgressReport report_pass(const coupling::PassReport& r) {
 
 output::RunSummary run_coupled(const RunContext& context) {
   const scenario::Scenario& s = context.scenario;
+  std::optional<UnstoppableStage> building(context.callbacks);
   CoupledModel model(s);
+  building.reset();
   model.set_stop_request(context.callbacks.stop_requested);
   const mesh::TriangleMesh& mesh = model.mesh();
   const dda::System& system = model.mechanics();

@@ -8,8 +8,10 @@
 namespace hydrodda::run {
 
 output::RunSummary run_flow(const RunContext& context) {
+  std::optional<UnstoppableStage> building(context.callbacks);  // nothing is written before the solve ends
   FlowModel model(context.scenario);
   const hydro::FlowSolution& solution = model.solve();
+  building.reset();
   ProgressReport report;
   report.kind = ProgressReport::Kind::flow_solve;
   report.count = 1;

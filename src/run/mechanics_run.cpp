@@ -22,7 +22,9 @@ output::RunSummary run_mechanics(const RunContext& context) {
   const scenario::MechanicsDefinition& m = *s.mechanics;
   const auto start = std::chrono::steady_clock::now();
 
+  std::optional<UnstoppableStage> building(context.callbacks);
   MechanicsModel model(s);
+  building.reset();
   const dda::System& system = model.system();
 
   CsvTable history({"step", "time", "time_step", "open_close_iterations", "contacts",

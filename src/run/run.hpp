@@ -47,6 +47,10 @@ struct Callbacks {
   // summary.json at the last finished step or pass (RunStatus::interrupted). Unset: never.
   // Called on the thread that runs, so a flag a signal handler sets will do.
   std::function<bool()> stop_requested;
+  // Called with true before a stage that cannot stop at a stop request and leaves nothing to
+  // keep (building the model: meshing, the first flow solve), with false after it: a front end
+  // may end the process at once on an interrupt meanwhile. Unset: nothing is said.
+  std::function<void(bool)> unstoppable_stage;
 };
 
 enum class RunStatus {

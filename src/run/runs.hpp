@@ -30,6 +30,22 @@ struct RunContext {
   bool stop_requested() const { return callbacks.stop_requested && callbacks.stop_requested(); }
 };
 
+// Callbacks::unstoppable_stage told for as long as it lives.
+class UnstoppableStage {
+ public:
+  explicit UnstoppableStage(const Callbacks& callbacks) : tell_(callbacks.unstoppable_stage) {
+    if (tell_) tell_(true);
+  }
+  ~UnstoppableStage() {
+    if (tell_) tell_(false);
+  }
+  UnstoppableStage(const UnstoppableStage&) = delete;
+  UnstoppableStage& operator=(const UnstoppableStage&) = delete;
+
+ private:
+  const std::function<void(bool)>& tell_;
+};
+
 // A run that stopped before its end: what failed or stopped it, and where. The summary holds
 // the last good state and is written with converged = false.
 class RunFailure : public std::runtime_error {
