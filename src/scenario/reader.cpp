@@ -83,9 +83,12 @@ void read_geometry(ReadContext& ctx, const TableView& root, Scenario& s) {
     const TableView b(ctx, *bt, "geometry.block", {"vertices", "material", "fixed"});
     BlockDefinition block;
     block.line = b.line();
-    if (auto v = b.points("vertices")) block.vertices = std::move(*v);
-    else if (!b.has("vertices")) ctx.error(b.line(), "geometry.block.vertices", "required key is missing");
-    check_polygon(ctx, b.line_of_key("vertices"), "geometry.block.vertices", block.vertices);
+    if (auto v = b.points("vertices")) {
+      block.vertices = std::move(*v);
+      check_polygon(ctx, b.line_of_key("vertices"), "geometry.block.vertices", block.vertices);
+    } else if (!b.has("vertices")) {
+      ctx.error(b.line(), "geometry.block.vertices", "required key is missing");
+    }
     block.material = b.string("material").value_or("");
     block.fixed = b.boolean("fixed").value_or(false);
     geometry.blocks.push_back(std::move(block));
@@ -354,9 +357,12 @@ void read_flow(ReadContext& ctx, const TableView& root, Scenario& s) {
     region.line = r.line();
     region.name = r.string("name").value_or("");
     if (!r.has("name")) ctx.error(r.line(), "flow.region.name", "required key is missing");
-    if (auto p = r.points("polygon")) region.polygon = std::move(*p);
-    else if (!r.has("polygon")) ctx.error(r.line(), "flow.region.polygon", "required key is missing");
-    check_polygon(ctx, r.line_of_key("polygon"), "flow.region.polygon", region.polygon);
+    if (auto p = r.points("polygon")) {
+      region.polygon = std::move(*p);
+      check_polygon(ctx, r.line_of_key("polygon"), "flow.region.polygon", region.polygon);
+    } else if (!r.has("polygon")) {
+      ctx.error(r.line(), "flow.region.polygon", "required key is missing");
+    }
     if (auto k = r.number("permeability")) {
       region.permeability = *k;
       r.require("permeability", *k > 0.0, "must be > 0");

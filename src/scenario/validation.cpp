@@ -8,7 +8,11 @@
 namespace hydrodda::scenario {
 
 void check_polygon(ReadContext& ctx, int line, const std::string& key, const Polygon& polygon) {
-  if (polygon.empty()) return;  // a missing polygon is reported where it is read
+  if (polygon.size() > kMaxPolygonVertices) {
+    ctx.error(line, key, fmt::format("a polygon of {} vertices; at most {} (meshing time grows without bound "
+                                     "beyond: simplify the outline)", polygon.size(), kMaxPolygonVertices));
+    return;
+  }
   if (polygon.size() < 3) {
     ctx.error(line, key, fmt::format("a polygon needs at least 3 vertices, got {}", polygon.size()));
     return;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -72,4 +73,28 @@ TEST(HostileInput, AnUnwritableRunFolderIsRefusedBeforeRunning) {
   EXPECT_EQ(result.exit_code, 2) << result.output;
   EXPECT_NE(result.output.find("cannot write in " + out.string()), std::string::npos) << result.output;
   fs::remove_all(out);
+}
+
+TEST(HostileInput, APolygonTooDetailedToMeshInBoundedTimeIsRefusedByCheck) {
+  const fs::path dir = fresh_folder("detailed-region");
+  fs::create_directories(dir);
+  const fs::path file = dir / "detailed_region.toml";
+  std::ofstream out(file);
+  out << "[geometry]\ndomain = [[0.0, 0.0], [5.0, 0.0], [5.0, 5.0], [0.0, 5.0]]\n"
+         "[material.rock]\nmatrix_porosity = 0.1\ngrain_diameter = 1.0e-5\n"
+         "[flow]\n[[flow.boundary]]\nname = \"left\"\nhead = 1.0\n"
+         "[[flow.region]]\nname = \"core\"\npermeability = 1e-12\npolygon = [";
+  const int n = 100'000;  // a circle of radius 2 about (2.5, 2.5)
+  for (int i = 0; i < n; ++i) {
+    const double angle = 2.0 * 3.14159265358979 * i / n;
+    out << (i ? ", " : "") << "[" << 2.5 + 2.0 * std::cos(angle) << ", " << 2.5 + 2.0 * std::sin(angle) << "]";
+  }
+  out << "]\n";
+  out.close();
+  const auto result = run_program("check " + file.string());
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find(":13: flow.region.polygon: a polygon of 100000 vertices; at most 2000"),
+            std::string::npos)
+      << result.output;
+  fs::remove_all(dir);
 }
