@@ -19,6 +19,7 @@ from ._hydrodda import (  # noqa: F401
     RunFolderError,
     Scenario,
     ScenarioError,
+    Simulation,
     __version__,
     _resume,
     _run,
@@ -27,7 +28,7 @@ from .run_folder import read_history
 
 __all__ = [
     "Diagnostic", "InputError", "ProgressReport", "RunFolderError", "RunResult", "Scenario",
-    "ScenarioError", "__version__", "read_history", "resume", "run",
+    "ScenarioError", "Simulation", "__version__", "read_history", "resume", "run",
 ]
 
 

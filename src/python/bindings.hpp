@@ -27,6 +27,7 @@ PythonScenario read_python_scenario(std::string text, const std::filesystem::pat
 void bind_errors(py::module_& module);      // ScenarioError, InputError, RunFolderError
 void bind_scenario(py::module_& module);    // Scenario, Diagnostic
 void bind_run(py::module_& module);         // _run, _resume, ProgressReport
+void bind_simulation(py::module_& module);  // Simulation
 // spdlog's default logger → Python's logging, logger "hydrodda".
 void route_logging_to_python();
 

@@ -9,5 +9,6 @@ PYBIND11_MODULE(_hydrodda, module) {
   python::bind_errors(module);
   python::bind_scenario(module);
   python::bind_run(module);
+  python::bind_simulation(module);
   python::route_logging_to_python();
 }
