@@ -50,8 +50,8 @@ def log_lines(text, folder_names):
 
 def checkpoint_without_timings(data):
     """checkpoint.bin with the seconds of its timings zeroed: magic, version, byte-order mark,
-    scenario hash, scenario file, converged, history rows, written iterations, then the timings
-    (count, then name and seconds for each)."""
+    scenario hash, scenario file, converged, history rows, measure rows (format 2), written
+    iterations, then the timings (count, then name and seconds for each)."""
     data = bytearray(data)
     at = len("hydrodda checkpoint\n") + 8 + 4 + 8
 
@@ -68,9 +68,11 @@ def checkpoint_without_timings(data):
 
     skip_string()  # scenario file
     integer()  # converged
-    for _ in range(integer()):  # history rows
+    (version,) = struct.unpack_from("<q", data, len("hydrodda checkpoint\n"))
+    for _ in range(2 if version >= 2 else 1):  # history rows, then (format 2) measure rows
         for _ in range(integer()):
-            skip_string()
+            for _ in range(integer()):
+                skip_string()
     iterations = integer()  # written iterations
     at += 8 * iterations
     for _ in range(integer()):

@@ -22,6 +22,10 @@ build_packages=(
   # under pvbatch (headless through xvfb-run). python3-paraview brings VTK's Python modules
   # (vtkmodules) and conflicts with python3-vtk9, which provides the same modules alone.
   python3 paraview python3-paraview xvfb xauth
+  python3-dev pybind11-dev # the Python module (src/python/)
+  python3-numpy            # its fields and histories as arrays
+  python3-pytest           # its tests (tests/python/)
+  python3-matplotlib       # its examples (examples/python/), with the Agg backend
   clang libclang-rt-14-dev # libFuzzer for the scenario reader
 )
 

@@ -1,0 +1,72 @@
+"""hydrodda from Python: scenarios, runs into run folders, and their results as NumPy arrays.
+
+    import hydrodda
+    scenario = hydrodda.Scenario.load("scenarios/paper/four_blocks.toml")
+    scenario.set("flow.boundary[0].head", 30.0)
+    result = hydrodda.run(scenario, "runs/four_blocks_30m")
+    print(result.converged, result.summary["flow"]["boundaries"])
+
+See docs/python.md for every call.
+"""
+
+import json
+from pathlib import Path
+
+from ._hydrodda import (  # noqa: F401
+    Diagnostic,
+    InputError,
+    ProgressReport,
+    RunFolderError,
+    Scenario,
+    ScenarioError,
+    Simulation,
+    __version__,
+    _resume,
+    _run,
+)
+from .run_folder import read_history
+
+__all__ = [
+    "Diagnostic", "InputError", "ProgressReport", "RunFolderError", "RunResult", "Scenario",
+    "ScenarioError", "Simulation", "__version__", "read_history", "resume", "run",
+]
+
+
+class RunResult:
+    """What a run did: status ('finished', 'stopped', 'interrupted' or 'failed'), converged,
+    iterations, message, summary (summary.json as a dict) and folder; history reads the run
+    folder's history.csv into a dict of NumPy arrays, one per column."""
+
+    def __init__(self, fields):
+        self.status = fields["status"]
+        self.converged = fields["converged"]
+        self.iterations = fields["iterations"]
+        self.message = fields["message"]
+        self.summary = json.loads(fields["summary_json"])
+        self.folder = Path(fields["folder"])
+        self._history = None
+
+    @property
+    def history(self):
+        if self._history is None:
+            self._history = read_history(self.folder)
+        return self._history
+
+    def __repr__(self):
+        return (f"<RunResult {self.status}, converged={self.converged}, "
+                f"iterations={self.iterations}, folder={str(self.folder)!r}>")
+
+
+def run(scenario, folder=None, *, progress=None, overwrite=False, stop_after=None):
+    """Runs `scenario` into `folder` (default: the scenario's output.directory) as `hydrodda run`
+    does, file for file. `progress(report)` is called after every DDA step, coupling pass or
+    flow solve. A folder that holds files raises RunFolderError unless `overwrite`. Ctrl-C stops
+    the run after its current step or pass, with the folder at the last finished one, and then
+    raises KeyboardInterrupt; an exception in `progress` stops it likewise and is raised."""
+    return RunResult(_run(scenario, None if folder is None else Path(folder), overwrite, stop_after, progress))
+
+
+def resume(folder, *, progress=None, stop_after=None):
+    """Continues the coupled run in `folder` (stopped by stop_after or interrupted) after its last
+    finished pass, as `hydrodda run --resume` does."""
+    return RunResult(_resume(Path(folder), stop_after, progress))

@@ -1,0 +1,128 @@
+// hydrodda.run and hydrodda.resume: the run layer's run() and resume() with the GIL released,
+// progress reported to a Python callable and Ctrl-C honoured between steps and passes.
+
+#include <pybind11/functional.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "output/summary.hpp"
+#include "python/bindings.hpp"
+#include "python/python_callbacks.hpp"
+#include "run/resumed_run.hpp"
+#include "run/run.hpp"
+
+namespace hydrodda::python {
+
+namespace {
+
+const char* status_name(run::RunStatus status) {
+  switch (status) {
+    case run::RunStatus::finished: return "finished";
+    case run::RunStatus::stopped: return "stopped";
+    case run::RunStatus::interrupted: return "interrupted";
+    case run::RunStatus::failed: return "failed";
+  }
+  return "";
+}
+
+const char* kind_name(run::ProgressReport::Kind kind) {
+  switch (kind) {
+    case run::ProgressReport::Kind::flow_solve: return "flow_solve";
+    case run::ProgressReport::Kind::mechanics_step: return "mechanics_step";
+    case run::ProgressReport::Kind::coupling_pass: return "coupling_pass";
+  }
+  return "";
+}
+
+// What run() returned, for the package's RunResult; the summary as summary.json's text.
+py::dict result_fields(const run::RunResult& result) {
+  py::dict fields;
+  fields["status"] = status_name(result.status);
+  fields["converged"] = result.converged;
+  fields["iterations"] = result.iterations;
+  fields["message"] = result.message;
+  fields["summary_json"] = output::format_summary(result.summary);
+  fields["folder"] = result.folder;
+  return fields;
+}
+
+}  // namespace
+
+run::Callbacks PythonCallbacks::callbacks() {
+  run::Callbacks callbacks;
+  if (!progress_.is_none()) {
+    callbacks.progress = [this](const run::ProgressReport& report) {
+      if (pending_) return;
+      py::gil_scoped_acquire gil;
+      try {
+        progress_(report);
+      } catch (py::error_already_set& e) {
+        pending_.emplace(std::move(e));
+      }
+    };
+  }
+  callbacks.stop_requested = [this] {
+    if (pending_) return true;
+    py::gil_scoped_acquire gil;
+    // Runs Python's signal handlers here, on the main thread: Ctrl-C raises KeyboardInterrupt.
+    if (PyErr_CheckSignals() != 0) pending_.emplace();
+    return pending_.has_value();
+  };
+  return callbacks;
+}
+
+void PythonCallbacks::raise_pending() {
+  if (!pending_) return;
+  py::error_already_set error = std::move(*pending_);
+  pending_.reset();
+  throw error;
+}
+
+void bind_run(py::module_& module) {
+  py::class_<run::ProgressReport>(module, "ProgressReport", "What a run reports after each step, pass or solve.")
+      .def_property_readonly("kind", [](const run::ProgressReport& r) { return kind_name(r.kind); },
+                             "'flow_solve', 'mechanics_step' or 'coupling_pass'")
+      .def_readonly("count", &run::ProgressReport::count)
+      .def_readonly("time", &run::ProgressReport::time)
+      .def_readonly("head_change", &run::ProgressReport::head_change)
+      .def_readonly("displacement_change", &run::ProgressReport::displacement_change)
+      .def_readonly("contacts", &run::ProgressReport::contacts)
+      .def_readonly("max_displacement", &run::ProgressReport::max_displacement)
+      .def_readonly("balance_error", &run::ProgressReport::balance_error)
+      .def_readonly("message", &run::ProgressReport::message)
+      .def("__repr__", [](const run::ProgressReport& r) { return "<ProgressReport " + r.message + ">"; });
+
+  module.def(
+      "_run",
+      [](const PythonScenario& scenario, const std::optional<std::filesystem::path>& folder, bool overwrite,
+         std::optional<int> stop_after, py::object progress) {
+        const run::RunOptions options{folder.value_or(scenario.definition.output.directory), overwrite, stop_after,
+                                      scenario.text};
+        PythonCallbacks callbacks(std::move(progress));
+        std::optional<run::RunResult> result;
+        {
+          py::gil_scoped_release released;
+          result = run::run(scenario.definition, options, callbacks.callbacks());
+        }
+        callbacks.raise_pending();
+        return result_fields(*result);
+      },
+      py::arg("scenario"), py::arg("folder"), py::arg("overwrite"), py::arg("stop_after"), py::arg("progress"));
+
+  module.def(
+      "_resume",
+      [](const std::filesystem::path& folder, std::optional<int> stop_after, py::object progress) {
+        const run::ResumedRun resumed = run::open_resumed_run(folder);
+        PythonCallbacks callbacks(std::move(progress));
+        std::optional<run::RunResult> result;
+        {
+          py::gil_scoped_release released;
+          result = run::resume(resumed, stop_after, callbacks.callbacks());
+        }
+        callbacks.raise_pending();
+        return result_fields(*result);
+      },
+      py::arg("folder"), py::arg("stop_after"), py::arg("progress"));
+}
+
+}  // namespace hydrodda::python
