@@ -45,6 +45,8 @@ geometry::Box figure_box(const FieldFigure& f) {
   for (Point p : f.nodes) box.add(p);
   for (const auto& b : f.blocks)
     for (Point p : b) box.add(p);
+  for (const auto& s : f.segments)
+    for (Point p : s) box.add(p);
   return box;
 }
 
@@ -60,11 +62,13 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
 
   // Field range.
   const bool per_node = !f.node_field.empty();
-  std::vector<double> values = per_node ? f.node_field : f.element_field;
+  const bool lines_only = f.node_field.empty() && f.element_field.empty();
+  std::vector<double> values = per_node ? f.node_field : lines_only ? f.segment_values : f.element_field;
   if (f.logarithmic)
     for (double& v : values) v = std::log10(std::max(v, 1e-300));
   double lo = values.empty() ? 0.0 : *std::min_element(values.begin(), values.end());
   double hi = values.empty() ? 1.0 : *std::max_element(values.begin(), values.end());
+  if (lines_only) lo = std::min(lo, 0.0);  // lines carry sizes (apertures): the scale starts at zero
   if (!(hi > lo)) hi = lo + 1.0;
   const auto colour = [&](double v) { return viridis((v - lo) / (hi - lo)); };
 
@@ -100,9 +104,17 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
     }
   }
 
-  // Blocks.
+  // Blocks: filled light grey under coloured lines, so that the lines stand out.
+  if (!f.segments.empty()) {
+    cairo_set_source_rgb(cr, 0.9, 0.9, 0.9);
+    for (const auto& b : f.blocks) {
+      for (std::size_t i = 0; i < b.size(); ++i) cairo_line_to(cr, fr.px(b[i].x), fr.py(b[i].y));
+      cairo_close_path(cr);
+      cairo_fill(cr);
+    }
+  }
   cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-  cairo_set_line_width(cr, 1.2);
+  cairo_set_line_width(cr, f.segments.empty() ? 1.2 : 0.4);
   for (const auto& b : f.blocks) {
     for (std::size_t i = 0; i < b.size(); ++i) {
       if (i == 0) cairo_move_to(cr, fr.px(b[i].x), fr.py(b[i].y));
@@ -111,6 +123,22 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
     cairo_close_path(cr);
     cairo_stroke(cr);
   }
+
+  // Coloured lines: the highlighted ones thick, over the others.
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  for (int pass = 0; pass < 2; ++pass)
+    for (std::size_t i = 0; i < f.segments.size(); ++i) {
+      const bool highlighted = i < f.segment_highlighted.size() && f.segment_highlighted[i];
+      if (highlighted != (pass == 1)) continue;
+      const auto c = colour(f.segment_values[i]);
+      if (highlighted) cairo_set_source_rgb(cr, c[0], c[1], c[2]);
+      else cairo_set_source_rgb(cr, 0.55, 0.55, 0.55);
+      cairo_set_line_width(cr, highlighted ? 3.0 : 1.0);
+      cairo_move_to(cr, fr.px(f.segments[i][0].x), fr.py(f.segments[i][0].y));
+      cairo_line_to(cr, fr.px(f.segments[i][1].x), fr.py(f.segments[i][1].y));
+      cairo_stroke(cr);
+    }
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
 
   // Flux arrows: length ∝ |q| up to 4% of the plot's width; under 1% of the largest hidden.
   if (!f.element_flux.empty()) {

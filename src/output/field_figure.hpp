@@ -1,6 +1,6 @@
 #pragma once
 // A map of a run as the paper draws it (its Figs. 6, 8, 11): the fluid mesh coloured by a
-// field, head contours, the deformed blocks, and Darcy flux arrows (arrows under 1% of the
+// field (or the blocks with coloured lines over them), head contours, the deformed blocks, and Darcy flux arrows (arrows under 1% of the
 // largest hidden); a colour bar, axes in metres, a title. PNG, SVG or PDF by file extension.
 
 #include <array>
@@ -25,6 +25,12 @@ struct FieldFigure {
   int contour_levels = 10;                   // head contours of node_field; 0 for none
   std::vector<geometry::Polygon> blocks;     // outlines drawn over the field
   std::vector<geometry::Point> element_flux; // arrows at element centroids, or empty
+  // Lines coloured by a value (e.g. fracture apertures) drawn over the blocks, which are then
+  // filled light grey; the colour bar is theirs when there is no mesh field. Lines not
+  // `highlighted` are drawn thin and grey (e.g. closed fractures).
+  std::vector<std::array<geometry::Point, 2>> segments;
+  std::vector<double> segment_values;
+  std::vector<bool> segment_highlighted;
 };
 
 // Throws std::runtime_error naming the path when the file cannot be written.

@@ -9,6 +9,7 @@
 
 #include "run/coupled_model.hpp"
 #include "run/figures.hpp"
+#include "run/fracture_output.hpp"
 #include "run/paraview_output.hpp"
 #include "run/runs.hpp"
 #include "output/csv_table.hpp"
@@ -72,6 +73,13 @@ output::RunSummary run_coupled(const RunContext& context) {
   checkpoint.scenario_hash = output::hash_text(context.scenario_text);
   checkpoint.scenario_file = std::filesystem::absolute(s.file).string();
   ParaviewOutput paraview(context.folder, s.output.fields);
+  const std::optional<FractureMeter> meter = make_fracture_meter(s);
+  FractureOutput fractures(context.folder, /*with_flow=*/true);
+  std::optional<FractureState> fracture_state;  // of the last finished pass
+  const auto measure_fractures = [&] {
+    fracture_state = meter->measure(model.block_polygons(), system.penetration_tolerance());
+    meter->add_flow(*fracture_state, mesh, loop.flow());
+  };
   if (context.resume) {
     const output::RunCheckpoint& saved = *context.resume;
     model.import_state({saved.mechanics, saved.coupling});
@@ -81,6 +89,7 @@ output::RunSummary run_coupled(const RunContext& context) {
     checkpoint.written_iterations = saved.written_iterations;
     for (const std::vector<std::string>& row : saved.history) history.add_row(row);
     paraview.list_written(saved.written_iterations);
+    if (meter) fractures.continue_from(loop.iterations(), s.output.fields.fractures ? saved.written_iterations : std::vector<int>{});
     model.add_timings(saved.timings);
     spdlog::info("resuming after coupling iteration {}", loop.iterations());
   } else {
@@ -90,6 +99,10 @@ output::RunSummary run_coupled(const RunContext& context) {
   const auto write_fields = [&](int iteration) {
     paraview.write_fluid(iteration, iteration, mesh, loop.flow(), loop.porosity().porosity, loop.permeability());
     paraview.write_blocks(iteration, iteration, system);
+    if (meter && s.output.fields.fractures) {
+      if (!fracture_state) measure_fractures();
+      fractures.write_series(iteration, iteration, *fracture_state);
+    }
     checkpoint.written_iterations.push_back(iteration);
   };
   int last_written = checkpoint.written_iterations.empty() ? 0 : checkpoint.written_iterations.back();
@@ -145,6 +158,10 @@ output::RunSummary run_coupled(const RunContext& context) {
         checkpoint.measure.push_back(std::move(measured));
       }
       if (!measures.empty()) context.folder.write("measure.csv", measure.text());
+      if (meter) {
+        measure_fractures();
+        fractures.add_rows(r.iteration, r.time, *fracture_state);
+      }
       context.report(report_pass(r));
       spdlog::debug("iteration {}: head change {:.3e}, displacement change {:.3e}", r.iteration, r.head_change,
                     r.displacement_change);
@@ -189,6 +206,10 @@ output::RunSummary run_coupled(const RunContext& context) {
   }
   draw_figures(s, context.folder, {mesh, loop.flow(), loop.porosity().porosity, loop.permeability(), model.block_polygons()});
   draw_convergence(s, context.folder, read_convergence(checkpoint.history, s.coupling.tolerance));
+  if (meter && loop.iterations() > 0) {
+    if (!fracture_state) measure_fractures();
+    draw_aperture_figure(s, context.folder, model.block_polygons(), *fracture_state);
+  }
   output::RunSummary summary = current_summary();
   summary.converged = converged;
   if (!converged)

@@ -3,6 +3,7 @@
 
 #include <chrono>
 
+#include "run/fracture_output.hpp"
 #include "run/mechanics_model.hpp"
 #include "run/paraview_output.hpp"
 #include "run/runs.hpp"
@@ -36,7 +37,21 @@ output::RunSummary run_mechanics(const RunContext& context) {
   };
 
   ParaviewOutput paraview(context.folder, s.output.fields);
-  paraview.write_blocks(0, 0.0, system);
+  const std::optional<FractureMeter> meter = make_fracture_meter(s);
+  FractureOutput fractures(context.folder, /*with_flow=*/false);
+  std::vector<geometry::Polygon> polygons;
+  // Blocks and contacts, and the fractures' rows and lines, at an output step.
+  const auto write_step = [&](long long step, double time) {
+    paraview.write_blocks(static_cast<int>(step), time, system);
+    if (!meter) return;
+    polygons.clear();
+    for (int b = 0; b < system.block_count(); ++b) polygons.push_back(system.polygon(b));
+    const FractureState state = meter->measure(polygons, system.penetration_tolerance());
+    fractures.add_rows(step, time, state);
+    if (s.output.fields.fractures) fractures.write_series(static_cast<int>(step), time, state);
+    if (model.finished()) draw_aperture_figure(s, context.folder, polygons, state);
+  };
+  write_step(0, 0.0);
   long long last_written = 0;
   try {
     while (!model.finished()) {
@@ -61,7 +76,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
       }
       if (step % 100 == 0) write_tables();
       if (step % s.output.every == 0) {
-        paraview.write_blocks(static_cast<int>(step), r.time, system);
+        write_step(step, r.time);
         last_written = step;
       }
       ProgressReport report;
@@ -84,7 +99,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
                      model.summary());
   }
   write_tables();
-  if (last_written != model.steps()) paraview.write_blocks(static_cast<int>(model.steps()), system.time(), system);
+  if (last_written != model.steps()) write_step(model.steps(), system.time());
 
   output::RunSummary summary = model.summary();
   // Mechanics alone has no coupling loop: `converged` says the run reached its end.

@@ -426,23 +426,25 @@ void read_coupling(ReadContext& ctx, const TableView& root, Scenario& s) {
             "must lie in (0, 1]");
 }
 
-// output.fields: which of the series "fluid", "blocks" and "contacts" to write, each once.
+// output.fields: which of the series "fluid", "blocks", "contacts" and "fractures" to write, each once.
 void read_output_fields(ReadContext& ctx, const toml::node& fields, OutputFields& chosen) {
   const toml::array* a = fields.as_array();
   if (!a) {
     ctx.error(line_of(fields), "output.fields", "expected an array such as [\"fluid\", \"blocks\", \"contacts\"]");
     return;
   }
-  chosen = {false, false, false};
+  chosen = {false, false, false, false};
   for (const toml::node& item : *a) {
     const auto name = item.value<std::string>();
     bool* series = !name                ? nullptr
                    : *name == "fluid"    ? &chosen.fluid
                    : *name == "blocks"   ? &chosen.blocks
                    : *name == "contacts" ? &chosen.contacts
+                   : *name == "fractures" ? &chosen.fractures
                                          : nullptr;
     if (!series) {
-      ctx.error(line_of(item), "output.fields", "each series must be \"fluid\", \"blocks\" or \"contacts\"");
+      ctx.error(line_of(item), "output.fields",
+                "each series must be \"fluid\", \"blocks\", \"contacts\" or \"fractures\"");
     } else if (*series) {
       ctx.error(line_of(item), "output.fields", fmt::format("\"{}\" is listed twice", *name));
     } else {

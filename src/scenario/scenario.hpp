@@ -208,6 +208,7 @@ struct OutputFields {
   bool fluid = true;     // fluid.pvd
   bool blocks = true;    // blocks.pvd
   bool contacts = true;  // contacts.pvd
+  bool fractures = true; // fractures.pvd
 };
 
 struct OutputDefinition {

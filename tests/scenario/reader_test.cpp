@@ -104,7 +104,7 @@ head = 1.0
   EXPECT_TRUE(has_default("output.directory"));
   EXPECT_TRUE(has_default("output.every"));
   EXPECT_EQ(s.output.every, 100);
-  EXPECT_TRUE(s.output.fields.fluid && s.output.fields.blocks && s.output.fields.contacts);
+  EXPECT_TRUE(s.output.fields.fluid && s.output.fields.blocks && s.output.fields.contacts && s.output.fields.fractures);
   // Mesh size defaults to 1/40 of the domain's larger side.
   EXPECT_DOUBLE_EQ(s.mesh->size, 0.1);
   EXPECT_DOUBLE_EQ(s.mesh->fracture_size, 0.01);
@@ -131,6 +131,7 @@ fields = ["contacts", "fluid"]
   EXPECT_TRUE(s.output.fields.fluid);
   EXPECT_FALSE(s.output.fields.blocks);
   EXPECT_TRUE(s.output.fields.contacts);
+  EXPECT_FALSE(s.output.fields.fractures);
 }
 
 TEST(ScenarioReader, MalformedTomlNamesTheLine) {

@@ -1,0 +1,107 @@
+#include "run/fracture_output.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "output/field_figure.hpp"
+#include "output/vtk_writer.hpp"
+
+namespace hydrodda::run {
+
+using output::CsvTable;
+using output::DataArray;
+
+namespace {
+
+std::vector<std::string> columns(bool with_flow) {
+  std::vector<std::string> c{"step",          "time",          "fracture",     "origin",    "set",
+                             "number",        "length",        "open_length",  "open",      "mean_aperture",
+                             "max_aperture",  "max_shear"};
+  if (with_flow) c.push_back("flow");
+  return c;
+}
+
+}  // namespace
+
+FractureOutput::FractureOutput(const output::RunFolder& folder, bool with_flow)
+    : folder_(folder), with_flow_(with_flow), table_(columns(with_flow)) {}
+
+void FractureOutput::continue_from(int last_step, const std::vector<int>& written) {
+  std::ifstream in(folder_.file("fractures.csv"));
+  std::string line;
+  std::getline(in, line);  // the header
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::stringstream fields(line);
+    for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+    // Rows of a pass after the checkpoint (written before the run stopped) are left out.
+    if (cells.size() == columns(with_flow_).size() && std::stoll(cells[0]) <= last_step) table_.add_row(cells);
+  }
+  if (!series_) series_.emplace(folder_.file("fractures.pvd"));
+  for (int step : written) series_->add(step, fmt::format("fractures_{:04d}.vtu", step));
+}
+
+void FractureOutput::add_rows(long long step, double time, const FractureState& state) {
+  for (const FractureResult& r : state.fractures) {
+    const bool from_set = r.origin.source == geometry::TraceSource::joint_set;
+    std::vector<std::string> row{CsvTable::cell(step),
+                                 CsvTable::cell(time),
+                                 CsvTable::cell(static_cast<long long>(r.id)),
+                                 origin_name(r.origin.source),
+                                 from_set ? CsvTable::cell(static_cast<long long>(r.origin.set)) : "",
+                                 CsvTable::cell(static_cast<long long>(r.origin.number)),
+                                 CsvTable::cell(r.length),
+                                 CsvTable::cell(r.open_length),
+                                 CsvTable::cell(static_cast<long long>(r.open_length > 0.0 ? 1 : 0)),
+                                 CsvTable::cell(r.mean_aperture),
+                                 CsvTable::cell(r.max_aperture),
+                                 CsvTable::cell(r.max_shear)};
+    if (with_flow_) row.push_back(r.flow ? CsvTable::cell(*r.flow) : "");
+    table_.add_row(row);
+  }
+  folder_.write("fractures.csv", table_.text());
+}
+
+void FractureOutput::write_series(int step, double time, const FractureState& state) {
+  std::vector<std::array<geometry::Point, 2>> segments;
+  DataArray fracture{"fracture", 1, {}}, aperture{"aperture", 1, {}}, shear{"shear", 1, {}}, open{"open", 1, {}},
+      flow{"flow", 1, {}};
+  std::vector<double> flow_of(state.fractures.empty() ? 0 : state.fractures.back().id + 1, 0.0);
+  for (const FractureResult& r : state.fractures)
+    if (r.flow) flow_of[r.id] = *r.flow;
+  for (const FracturePiece& p : state.pieces) {
+    segments.push_back(p.segment);
+    fracture.values.push_back(p.fracture);
+    aperture.values.push_back(p.aperture);
+    shear.values.push_back(p.shear);
+    open.values.push_back(p.open ? 1.0 : 0.0);
+    flow.values.push_back(flow_of[p.fracture]);
+  }
+  std::vector<DataArray> cells{fracture, aperture, shear, open};
+  if (with_flow_) cells.push_back(flow);
+  const std::string name = fmt::format("fractures_{:04d}.vtu", step);
+  output::write_vtu_segments(folder_.file(name), segments, cells);
+  if (!series_) series_.emplace(folder_.file("fractures.pvd"));
+  series_->add(time, name);
+}
+
+void draw_aperture_figure(const scenario::Scenario& s, const output::RunFolder& folder,
+                          std::span<const geometry::Polygon> blocks, const FractureState& state) {
+  if (s.output.figures.empty() || state.pieces.empty()) return;
+  output::FieldFigure figure;
+  figure.title = "Fracture apertures (closed fractures in grey)";
+  figure.field_label = "mechanical aperture (mm)";
+  figure.blocks.assign(blocks.begin(), blocks.end());
+  for (const FracturePiece& p : state.pieces) {
+    figure.segments.push_back(p.segment);
+    figure.segment_values.push_back(p.aperture * 1e3);
+    figure.segment_highlighted.push_back(p.open);
+  }
+  for (const std::string& format : s.output.figures)
+    output::render_field_figure(folder.figures() / ("apertures." + format), figure);
+}
+
+}  // namespace hydrodda::run

@@ -1,0 +1,44 @@
+#pragma once
+// The run folder's per-fracture files: fractures.csv (one row per fracture per output step),
+// fractures.pvd with fractures_NNNN.vtu (each fracture as lines along its deformed faces, cut
+// where it opens or closes) and figures/apertures.* (the blocks with every fracture coloured
+// by its aperture). What they hold: docs/output.md.
+
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "output/csv_table.hpp"
+#include "output/pvd_series.hpp"
+#include "output/run_folder.hpp"
+#include "run/fracture_results.hpp"
+#include "scenario/scenario.hpp"
+
+namespace hydrodda::run {
+
+class FractureOutput {
+ public:
+  // `with_flow`: coupled runs, whose rows have the flow along each fracture.
+  FractureOutput(const output::RunFolder& folder, bool with_flow);
+
+  // A continued run: keeps the rows fractures.csv has for steps up to `last_step` and lists
+  // again the .vtu files an earlier part of the run wrote at `written` (time = step).
+  void continue_from(int last_step, const std::vector<int>& written);
+  // One step's rows, written at once.
+  void add_rows(long long step, double time, const FractureState& state);
+  // fractures_NNNN.vtu, listed in fractures.pvd at `time`.
+  void write_series(int step, double time, const FractureState& state);
+
+ private:
+  const output::RunFolder& folder_;
+  bool with_flow_;
+  output::CsvTable table_;
+  std::optional<output::PvdSeries> series_;
+};
+
+// figures/apertures.* for each format output.figures asks for: the blocks as they are, each
+// fracture piece coloured by its mechanical aperture (mm), closed pieces thin and grey.
+void draw_aperture_figure(const scenario::Scenario& scenario, const output::RunFolder& folder,
+                          std::span<const geometry::Polygon> blocks, const FractureState& state);
+
+}  // namespace hydrodda::run

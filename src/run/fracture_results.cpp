@@ -1,0 +1,213 @@
+#include "run/fracture_results.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "run/model_geometry.hpp"
+
+namespace hydrodda::run {
+
+using geometry::Point;
+
+namespace {
+
+Point unit_normal_left(Point d) { return Point{-d.y, d.x}; }
+
+Point normalised(Point p) { return p / geometry::norm(p); }
+
+}  // namespace
+
+Point FractureMeter::material_point(const SideRef& r, std::span<const geometry::Polygon> blocks) {
+  const geometry::Polygon& poly = blocks[r.block];
+  const Point a = poly[r.edge], c = poly[(r.edge + 1) % poly.size()];
+  return a + (c - a) * r.t;
+}
+
+Point FractureMeter::outward_normal(std::span<const geometry::Polygon> blocks, const SideRef& r) {
+  const geometry::Polygon& poly = blocks[r.block];
+  const Point along = poly[(r.edge + 1) % poly.size()] - poly[r.edge];
+  return normalised(Point{along.y, -along.x});  // counter-clockwise polygon: the edge's right
+}
+
+std::optional<FractureLayout> fracture_layout(const scenario::Scenario& s) {
+  if (!s.geometry || s.geometry->domain.empty()) return std::nullopt;
+  ModelGeometry model = build_model_geometry(s);
+  return FractureLayout{std::move(model.traces), std::move(model.network)};
+}
+
+std::string origin_name(geometry::TraceSource source) {
+  switch (source) {
+    case geometry::TraceSource::listed: return "listed";
+    case geometry::TraceSource::joint_set: return "set";
+    case geometry::TraceSource::file: return "file";
+  }
+  return "listed";
+}
+
+FractureMeter::FractureMeter(FractureLayout layout, double node_spacing) : layout_(std::move(layout)) {
+  const geometry::BlockNetwork& network = layout_.network;
+  // Per fracture, the block edges that lie on it.
+  std::vector<std::vector<std::pair<int, int>>> edges(layout_.traces.size());
+  for (std::size_t b = 0; b < network.blocks.size(); ++b)
+    for (std::size_t e = 0; e < network.edge_fractures[b].size(); ++e)
+      if (const int f = network.edge_fractures[b][e]; f >= 0) edges[f].push_back({static_cast<int>(b), static_cast<int>(e)});
+
+  for (const geometry::FractureFace& face : network.faces) {
+    const Point d0 = face.segment.to - face.segment.from;
+    const double length = geometry::norm(d0);
+    if (!(length > 0.0)) continue;
+    const Point d = d0 / length, n = unit_normal_left(d);
+    // The nearest edge of the fracture on one side of the face at p: a block on the +n side
+    // has its outward normal along −n there.
+    const auto side_at = [&](Point p, double side) {
+      SideRef best;
+      double best_distance = std::numeric_limits<double>::infinity();
+      for (const auto& [b, e] : edges[face.fracture]) {
+        const geometry::Polygon& poly = network.blocks[b];
+        const Point a = poly[e], c = poly[(e + 1) % poly.size()];
+        const Point along = c - a;
+        const double edge_length = geometry::norm(along);
+        if (!(edge_length > 0.0)) continue;
+        const Point outward{along.y / edge_length, -along.x / edge_length};
+        if (side * geometry::dot(outward, n) > -0.5) continue;
+        const double distance = geometry::distance_to_segment(p, a, c);
+        if (distance < best_distance) {
+          best_distance = distance;
+          best = {b, e, geometry::dot(p - a, along) / (edge_length * edge_length)};
+        }
+      }
+      return best;
+    };
+    Face measured{face.segment, face.fracture, {}};
+    const int pieces = std::max(1, static_cast<int>(std::ceil(length / node_spacing)));
+    for (int k = 0; k <= pieces; ++k) {
+      const double s = length * k / pieces;
+      const Point p = face.segment.from + d * s;
+      Node node{s, side_at(p, -1.0), side_at(p, +1.0)};
+      if (node.minus.block >= 0 && node.plus.block >= 0) measured.nodes.push_back(node);
+    }
+    if (measured.nodes.size() >= 2) faces_.push_back(std::move(measured));
+  }
+}
+
+FractureState FractureMeter::measure(std::span<const geometry::Polygon> blocks, double open_threshold) const {
+  const geometry::BlockNetwork& network = layout_.network;
+  if (blocks.size() != network.blocks.size())
+    throw std::invalid_argument(fmt::format("fracture results: {} blocks given, the network has {}", blocks.size(),
+                                            network.blocks.size()));
+  for (std::size_t b = 0; b < blocks.size(); ++b)
+    if (blocks[b].size() != network.blocks[b].size())
+      throw std::invalid_argument(fmt::format("fracture results: block {} has {} vertices, it was cut with {}", b,
+                                              blocks[b].size(), network.blocks[b].size()));
+
+  FractureState state;
+  std::vector<int> index(layout_.traces.size(), -1);
+  for (const Face& face : faces_) {
+    if (index[face.fracture] < 0) {
+      index[face.fracture] = static_cast<int>(state.fractures.size());
+      FractureResult r;
+      r.id = face.fracture;
+      r.origin = layout_.traces[face.fracture].origin;
+      state.fractures.push_back(r);
+    }
+    FractureResult& result = state.fractures[index[face.fracture]];
+    struct Measured {
+      double s, opening, shear;
+      Point midpoint;
+    };
+    std::vector<Measured> m;
+    for (const Node& node : face.nodes) {
+      const Point minus = material_point(node.minus, blocks), plus = material_point(node.plus, blocks);
+      // The frame of the two edges as they are now: their mean normal, from minus to plus
+      // (edges that have turned apart by θ make it ambiguous by θ/2 either way).
+      const Point normal = normalised(outward_normal(blocks, node.minus) - outward_normal(blocks, node.plus));
+      const Point tangent{-normal.y, normal.x};
+      const Point gap = plus - minus;
+      const Point initial_gap = material_point(node.plus, network.blocks) - material_point(node.minus, network.blocks);
+      m.push_back({node.s, geometry::dot(gap, normal), geometry::dot(gap - initial_gap, tangent), (plus + minus) * 0.5});
+    }
+    const auto add_piece = [&](const Measured& a, const Measured& b) {
+      const double ds = b.s - a.s;
+      if (!(ds > 0.0)) return;
+      // Pieces are cut where the opening crosses the threshold, so both ends lie on one side.
+      // Openings under it are the contacts' own tolerance, not a gap: no aperture.
+      const bool open = 0.5 * (a.opening + b.opening) > open_threshold;
+      const double aperture = open ? 0.5 * (a.opening + b.opening) : 0.0;
+      result.length += ds;
+      if (open) result.open_length += ds;
+      result.mean_aperture += aperture * ds;  // divided by the length below
+      state.pieces.push_back({{a.midpoint, b.midpoint}, face.fracture, aperture, 0.5 * (a.shear + b.shear), open});
+    };
+    for (std::size_t k = 0; k < m.size(); ++k) {
+      if (m[k].opening > open_threshold) result.max_aperture = std::max(result.max_aperture, m[k].opening);
+      result.max_shear = std::max(result.max_shear, std::abs(m[k].shear));
+      if (k == 0) continue;
+      const Measured& a = m[k - 1];
+      const Measured& b = m[k];
+      if ((a.opening - open_threshold) * (b.opening - open_threshold) < 0.0) {
+        // Cut where the opening crosses the threshold: the piece opens or closes there.
+        const double w = (open_threshold - a.opening) / (b.opening - a.opening);
+        const Measured cut{a.s + w * (b.s - a.s), open_threshold, a.shear + w * (b.shear - a.shear),
+                           a.midpoint + (b.midpoint - a.midpoint) * w};
+        add_piece(a, cut);
+        add_piece(cut, b);
+      } else {
+        add_piece(a, b);
+      }
+    }
+  }
+  for (FractureResult& r : state.fractures)
+    if (r.length > 0.0) r.mean_aperture /= r.length;
+  std::sort(state.fractures.begin(), state.fractures.end(),
+            [](const FractureResult& a, const FractureResult& b) { return a.id < b.id; });
+  return state;
+}
+
+void FractureMeter::add_flow(FractureState& state, const mesh::TriangleMesh& mesh,
+                             const hydro::FlowSolution& flow) const {
+  if (flow.flux.size() != static_cast<std::size_t>(mesh.triangle_count()))
+    throw std::invalid_argument("fracture results: the flow solution does not fit the mesh");
+  std::vector<double> integral(layout_.traces.size(), 0.0);  // Σ (q_e · t_f) A_e
+  std::vector<Point> direction(layout_.traces.size());
+  for (std::size_t f = 0; f < layout_.traces.size(); ++f) {
+    const Point d = layout_.traces[f].segment.to - layout_.traces[f].segment.from;
+    direction[f] = d / geometry::norm(d);
+  }
+  // Every element against every face: O(elements × faces), a fraction of a flow solve for
+  // the models this program meshes (a spatial index would pay off only for thousands of faces).
+  for (int t = 0; t < mesh.triangle_count(); ++t) {
+    const Point c = mesh::triangle_centroid(mesh, t);
+    int nearest = -1;
+    double nearest_distance = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < faces_.size(); ++k) {
+      const geometry::Segment2& seg = faces_[k].segment;
+      const Point d = seg.to - seg.from;
+      const double length2 = geometry::dot(d, d);
+      const double along = geometry::dot(c - seg.from, d);
+      if (along < 0.0 || along > length2) continue;
+      const double distance = std::abs(geometry::dot(c - seg.from, unit_normal_left(d))) / std::sqrt(length2);
+      if (distance < nearest_distance) {
+        nearest_distance = distance;
+        nearest = static_cast<int>(k);
+      }
+    }
+    if (nearest < 0) continue;
+    const int f = faces_[nearest].fracture;
+    integral[f] += geometry::dot(flow.flux[t], direction[f]) * mesh::triangle_area(mesh, t);
+  }
+  for (FractureResult& r : state.fractures)
+    r.flow = r.length > 0.0 ? integral[r.id] / r.length : 0.0;
+}
+
+std::optional<FractureMeter> make_fracture_meter(const scenario::Scenario& s) {
+  std::optional<FractureLayout> layout = fracture_layout(s);
+  if (!layout) return std::nullopt;
+  const geometry::Box box = geometry::bounding_box(s.geometry->domain);
+  return FractureMeter(std::move(*layout), std::max(box.width(), box.height()) / 50.0);
+}
+
+}  // namespace hydrodda::run

@@ -1,0 +1,115 @@
+#pragma once
+// Results per fracture: for each trace of the scenario (a listed fracture, a joint of a set, a
+// row of the fractures file), how far its faces have opened and slid, and how much fluid flows
+// along it. What fractures.csv, fractures.pvd and figures/apertures.* show (docs/output.md).
+//
+// The opening of a face is measured between the two blocks' edges that lie on it, along their
+// mean normal. A block moves affinely (DDA's first-order displacement field with its rotation
+// applied exactly), so each edge stays straight and its material points move linearly along
+// it: the separation of two edges is linear along the face, and its mean (trapezoid rule),
+// largest value (at a node) and open length (where the line crosses the threshold) are exact
+// between nodes, up to the frame: edges turned θ apart leave the opening ambiguous by a
+// factor cos(θ/2) and the shear by the gap × sin(θ/2).
+
+#include <array>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "geometry/block_network.hpp"
+#include "hydro/flow_solution.hpp"
+#include "mesh/triangle_mesh.hpp"
+#include "scenario/scenario.hpp"
+
+namespace hydrodda::run {
+
+// What a model's blocks were cut from: every trace (its index the fracture id) and the
+// network, whose block order is the DDA system's.
+struct FractureLayout {
+  std::vector<geometry::FractureTrace> traces;
+  geometry::BlockNetwork network;
+};
+
+// The layout of a scenario with a [geometry] domain (the same cut the model's blocks come
+// from: the cut is deterministic); none for a scenario that lists its blocks.
+std::optional<FractureLayout> fracture_layout(const scenario::Scenario& scenario);
+
+// "listed", "set", "file": a trace's origin as fractures.csv writes it.
+std::string origin_name(geometry::TraceSource source);
+
+struct FractureResult {
+  int id = 0;
+  geometry::TraceOrigin origin;
+  double length = 0.0;          // m, of its faces between blocks
+  double open_length = 0.0;     // m, where the opening exceeds the threshold
+  double mean_aperture = 0.0;   // m, mechanical: the opening where open, 0 where closed; mean over the length
+  double max_aperture = 0.0;    // m, the largest opening where open
+  double max_shear = 0.0;       // m, largest |relative displacement along the face|
+  std::optional<double> flow;   // m²/s per metre of thickness, along the trace (from → to)
+};
+
+// A piece of a fracture between nodes, on the deformed faces (the midline between the two
+// blocks), cut where it opens or closes.
+struct FracturePiece {
+  std::array<geometry::Point, 2> segment;
+  int fracture = 0;
+  double aperture = 0.0;  // m, mean over the piece
+  double shear = 0.0;     // m, mean over the piece
+  bool open = false;
+};
+
+struct FractureState {
+  std::vector<FractureResult> fractures;  // one per trace with a face, by id
+  std::vector<FracturePiece> pieces;
+};
+
+class FractureMeter {
+ public:
+  // `node_spacing`: the largest distance between measuring nodes along a face (m); a face gets
+  // at least one piece.
+  FractureMeter(FractureLayout layout, double node_spacing);
+
+  // The fractures with the blocks at `blocks` (current vertices, in the network's block
+  // order, each with its initial vertex count). A point of a face is open where its opening
+  // exceeds `open_threshold` (m). Throws std::invalid_argument when the blocks do not fit.
+  FractureState measure(std::span<const geometry::Polygon> blocks, double open_threshold) const;
+
+  // The flow along each fracture, from the fluid field on `mesh`:
+  //   Q_f = (1/L_f) Σ_{e ∈ Z_f} (q_e · t_f) A_e,
+  // q_e the element's Darcy flux, A_e its area, t_f the trace's unit direction (from → to),
+  // L_f the length of its faces, Z_f the elements whose centroid is nearer to a face of f
+  // than to any other face and projects onto that face (not beyond its ends). Q_f is the
+  // flux through a section across the fracture, averaged along it: in a tight matrix the flow
+  // through the aperture. For one fracture from an inflow to an outflow boundary it is the
+  // boundary's flow exactly (the P1 residual identity with the test function s/L).
+  void add_flow(FractureState& state, const mesh::TriangleMesh& mesh, const hydro::FlowSolution& flow) const;
+
+  const FractureLayout& layout() const { return layout_; }
+
+ private:
+  // A node along a face, with the material point of each side's edge it is measured at.
+  struct SideRef {
+    int block = -1, edge = -1;
+    double t = 0.0;  // along the edge, from its first vertex
+  };
+  struct Node {
+    double s = 0.0;  // m, along the face
+    SideRef minus, plus;
+  };
+  static geometry::Point material_point(const SideRef& r, std::span<const geometry::Polygon> blocks);
+  static geometry::Point outward_normal(std::span<const geometry::Polygon> blocks, const SideRef& r);
+  struct Face {
+    geometry::Segment2 segment;
+    int fracture = 0;
+    std::vector<Node> nodes;
+  };
+  FractureLayout layout_;
+  std::vector<Face> faces_;
+};
+
+// The meter of a scenario with a [geometry] domain, nodes at most 1/50 of the domain's larger
+// side apart; none for a scenario that lists its blocks.
+std::optional<FractureMeter> make_fracture_meter(const scenario::Scenario& scenario);
+
+}  // namespace hydrodda::run

@@ -1,0 +1,144 @@
+// The per-fracture files of a coupled run, through the real program: one fracture from the
+// inflow to the outflow boundary (tests/cli/scenarios/single_fracture_flow.toml), whose flow in
+// fractures.csv must equal the top's outflow in history.csv every pass (an exact identity of
+// the P1 solution, docs/output.md: round-off, 1e-9 relative), whose blocks are held so its
+// aperture stays near the initial 0.1 mm, and whose fractures.pvd VTK's own reader reads back
+// (python3-vtk9 through tests/output/check_vtu.py).
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "run_program.hpp"
+
+namespace fs = std::filesystem;
+using hydrodda::testing::read_csv;
+using hydrodda::testing::run_command;
+using hydrodda::testing::run_program;
+
+namespace {
+
+const fs::path kScenario = fs::path(HYDRODDA_SOURCE_DIR) / "tests/cli/scenarios/single_fracture_flow.toml";
+
+struct Folder {
+  fs::path path;
+  explicit Folder(const std::string& name)
+      : path(fs::temp_directory_path() / ("hydrodda-fractures-" + name + "-" + std::to_string(::getpid()))) {
+    fs::remove_all(path);
+  }
+  ~Folder() { fs::remove_all(path); }
+};
+
+int column(const std::vector<std::string>& header, const std::string& name) {
+  for (std::size_t i = 0; i < header.size(); ++i)
+    if (header[i] == name) return static_cast<int>(i);
+  ADD_FAILURE() << "no column " << name;
+  return 0;
+}
+
+TEST(FractureOutput, FlowAlongTheFractureIsTheBoundaryFlow) {
+  Folder out("flow");
+  const auto result = run_program("-q run " + kScenario.string() + " -o " + out.path.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+
+  const auto history = read_csv(out.path / "history.csv");
+  const auto fractures = read_csv(out.path / "fractures.csv");
+  ASSERT_GE(history.size(), 2u);
+  ASSERT_EQ(fractures.size(), history.size());  // one fracture: one row per pass
+  const auto& header = fractures[0];
+  EXPECT_EQ(header, (std::vector<std::string>{"step", "time", "fracture", "origin", "set", "number", "length",
+                                              "open_length", "open", "mean_aperture", "max_aperture", "max_shear",
+                                              "flow"}));
+  const int top = column(history[0], "flow_top");
+  for (std::size_t k = 1; k < fractures.size(); ++k) {
+    const auto& row = fractures[k];
+    EXPECT_EQ(row[0], history[k][0]);
+    EXPECT_EQ(row[2], "0");
+    EXPECT_EQ(row[3], "listed");
+    EXPECT_EQ(std::stod(row[6]), 2.0);  // the face runs the domain's height
+    // Q_f = (1/L) Σ (q_e · t) A_e over every element = the outflow through the top.
+    const double flow = std::stod(row[column(header, "flow")]);
+    const double outflow = std::stod(history[k][top]);
+    EXPECT_GT(outflow, 0.0);
+    EXPECT_NEAR(flow, outflow, 1e-9 * outflow) << "pass " << row[0];
+    // Blocks held at their bottom corners stay near the 0.1 mm they were cut with; the face is open.
+    EXPECT_NEAR(std::stod(row[column(header, "mean_aperture")]), 1e-4, 1e-5);
+    EXPECT_EQ(row[column(header, "open")], "1");
+    EXPECT_NEAR(std::stod(row[column(header, "open_length")]), 2.0, 1e-12);
+  }
+  EXPECT_TRUE(fs::exists(out.path / "figures" / "apertures.png"));
+
+  // fractures.pvd, read back: one data set per fluid data set, lines along the fracture whose
+  // lengths add up to its 2 m, the documented arrays one tuple per line.
+  if (std::system("/usr/bin/python3 -c 'import vtkmodules.vtkIOXML' > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "python3-vtk9 is not installed: the ParaView files cannot be read back";
+  const std::string check = "/usr/bin/python3 " + (fs::path(HYDRODDA_SOURCE_DIR) / "tests/output/check_vtu.py").string();
+  const auto count_datasets = [](const std::string& text) {
+    int n = 0;
+    std::stringstream lines(text);
+    for (std::string line; std::getline(lines, line);) n += line.rfind("dataset ", 0) == 0;
+    return n;
+  };
+  const auto series = run_command(check + " " + (out.path / "fractures.pvd").string());
+  ASSERT_EQ(series.exit_code, 0) << series.output.substr(0, 2000);
+  const auto fluid = run_command(check + " " + (out.path / "fluid.pvd").string());
+  EXPECT_EQ(count_datasets(series.output), count_datasets(fluid.output));
+  EXPECT_GE(count_datasets(series.output), 1);
+
+  std::string last;
+  for (const auto& entry : fs::directory_iterator(out.path))
+    if (entry.path().filename().string().rfind("fractures_", 0) == 0) last = std::max(last, entry.path().string());
+  const auto read = run_command(check + " " + last);
+  ASSERT_EQ(read.exit_code, 0);
+  std::stringstream lines(read.output);
+  std::string line, word, name;
+  int cells = -1;
+  std::map<int, std::array<double, 3>> points;
+  std::map<int, std::pair<int, int>> lines_of;
+  std::map<std::string, std::string> shapes;
+  std::map<std::string, std::map<int, double>> values;
+  while (std::getline(lines, line)) {
+    std::stringstream words(line);
+    words >> word;
+    if (word == "cells") words >> cells;
+    if (word == "point") {
+      int i = 0;
+      words >> i >> points[i][0] >> points[i][1] >> points[i][2];
+    }
+    if (word == "cell") {
+      int i = 0, type = 0;
+      words >> i >> type >> lines_of[i].first >> lines_of[i].second;
+      EXPECT_EQ(type, 3);  // VTK_LINE
+    }
+    if (word == "cell_array") {
+      words >> name;
+      std::getline(words, shapes[name]);
+    }
+    if (word == "cell_value") {
+      int tuple = 0, component = 0;
+      double value = 0.0;
+      words >> name >> tuple >> component >> value;
+      values[name][tuple] = value;
+    }
+  }
+  ASSERT_GT(cells, 0);
+  for (const char* array : {"fracture", "aperture", "shear", "open", "flow"})
+    EXPECT_EQ(shapes[array], " 1 " + std::to_string(cells)) << array;
+  double length = 0.0;
+  for (const auto& [cell, ends] : lines_of) {
+    const auto a = points[ends.first], b = points[ends.second];
+    length += std::hypot(b[0] - a[0], b[1] - a[1]);
+    EXPECT_EQ(values["open"][cell], 1.0);
+    EXPECT_NEAR(values["aperture"][cell], 1e-4, 1e-5);
+  }
+  // The midline of blocks that settle under their weight by about ρ g H² / (2 E) = 5e-6 m.
+  EXPECT_NEAR(length, 2.0, 1e-5);
+  EXPECT_LT(length, 2.0);
+}
+
+}  // namespace
