@@ -11,6 +11,7 @@
 #include <unistd.h>
 #include <sstream>
 
+#include "result_files.hpp"
 #include "run_program.hpp"
 
 namespace fs = std::filesystem;
@@ -18,9 +19,6 @@ using hydrodda::testing::run_command;
 using hydrodda::testing::run_program;
 
 namespace {
-
-// name → tuple → value, for the 1-component cell arrays check_vtu.py printed.
-using CellArrays = std::map<std::string, std::map<int, double>>;
 
 TEST(ContactOutput, StackedColumnContactsCarryTheWeight) {
   if (std::system("/usr/bin/python3 -c 'import vtkmodules.vtkIOXML' > /dev/null 2>&1") != 0)
@@ -54,26 +52,10 @@ TEST(ContactOutput, StackedColumnContactsCarryTheWeight) {
     if (entry.path().filename().string().rfind("contacts_", 0) == 0) last = std::max(last, entry.path().string());
   const auto read = run_command("/usr/bin/python3 " + check + " " + last);
   ASSERT_EQ(read.exit_code, 0);
-  std::stringstream lines(read.output);
-  std::string line, word, name;
-  int cells = -1;
-  CellArrays arrays;
-  std::map<std::string, std::string> shapes;
-  while (std::getline(lines, line)) {
-    std::stringstream words(line);
-    words >> word;
-    if (word == "cells") words >> cells;
-    if (word == "cell_array") {
-      words >> name;
-      std::getline(words, shapes[name]);
-    }
-    if (word == "cell_value") {
-      int tuple = 0, component = 0;
-      double value = 0.0;
-      words >> name >> tuple >> component >> value;
-      arrays[name][tuple] = value;
-    }
-  }
+  const hydrodda::testing::VtuDump dump = hydrodda::testing::parse_vtu_dump(read.output);
+  const int cells = dump.cells;
+  auto arrays = dump.cell_values;
+  auto shapes = dump.cell_shapes;
   ASSERT_GT(cells, 0);
   for (const char* array : {"state", "normal_force", "penetration", "aperture", "block_i", "block_j"})
     EXPECT_EQ(shapes[array], " 1 " + std::to_string(cells)) << array;

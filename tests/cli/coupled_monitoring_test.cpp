@@ -12,10 +12,12 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "result_files.hpp"
 #include "run_folder_compare.hpp"
 #include "run_program.hpp"
 
 namespace fs = std::filesystem;
+using hydrodda::testing::column;
 using hydrodda::testing::expect_same_results;
 using hydrodda::testing::read_csv;
 using hydrodda::testing::run_program;
@@ -25,20 +27,9 @@ namespace {
 // A coupled run with one measured point (A) and one flow region (core), 4 passes, a few seconds.
 const fs::path kContract = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/contract.toml";
 
-struct Folder {
-  fs::path path;
-  explicit Folder(const std::string& name) : path(fs::temp_directory_path() / ("hydrodda-monitoring-" + name)) {
-    fs::remove_all(path);
-  }
-  ~Folder() { fs::remove_all(path); }
+struct Folder : hydrodda::testing::TemporaryFolder {
+  explicit Folder(const std::string& name) : TemporaryFolder("hydrodda-monitoring-" + name) {}
 };
-
-int column(const std::vector<std::string>& header, const std::string& name) {
-  for (std::size_t i = 0; i < header.size(); ++i)
-    if (header[i] == name) return static_cast<int>(i);
-  ADD_FAILURE() << "no column " << name;
-  return 0;
-}
 
 TEST(CoupledMonitoring, MeasureAndRegionFlowsEveryPass) {
   Folder out("every-pass");

@@ -10,13 +10,14 @@
 
 #include <cmath>
 #include <filesystem>
-#include <map>
 #include <sstream>
 #include <string>
 
+#include "result_files.hpp"
 #include "run_program.hpp"
 
 namespace fs = std::filesystem;
+using hydrodda::testing::column;
 using hydrodda::testing::read_csv;
 using hydrodda::testing::run_command;
 using hydrodda::testing::run_program;
@@ -25,21 +26,10 @@ namespace {
 
 const fs::path kScenario = fs::path(HYDRODDA_SOURCE_DIR) / "tests/cli/scenarios/single_fracture_flow.toml";
 
-struct Folder {
-  fs::path path;
+struct Folder : hydrodda::testing::TemporaryFolder {
   explicit Folder(const std::string& name)
-      : path(fs::temp_directory_path() / ("hydrodda-fractures-" + name + "-" + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-  }
-  ~Folder() { fs::remove_all(path); }
+      : TemporaryFolder("hydrodda-fractures-" + name + "-" + std::to_string(::getpid())) {}
 };
-
-int column(const std::vector<std::string>& header, const std::string& name) {
-  for (std::size_t i = 0; i < header.size(); ++i)
-    if (header[i] == name) return static_cast<int>(i);
-  ADD_FAILURE() << "no column " << name;
-  return 0;
-}
 
 TEST(FractureOutput, FlowAlongTheFractureIsTheBoundaryFlow) {
   Folder out("flow");
@@ -95,46 +85,20 @@ TEST(FractureOutput, FlowAlongTheFractureIsTheBoundaryFlow) {
     if (entry.path().filename().string().rfind("fractures_", 0) == 0) last = std::max(last, entry.path().string());
   const auto read = run_command(check + " " + last);
   ASSERT_EQ(read.exit_code, 0);
-  std::stringstream lines(read.output);
-  std::string line, word, name;
-  int cells = -1;
-  std::map<int, std::array<double, 3>> points;
-  std::map<int, std::pair<int, int>> lines_of;
-  std::map<std::string, std::string> shapes;
-  std::map<std::string, std::map<int, double>> values;
-  while (std::getline(lines, line)) {
-    std::stringstream words(line);
-    words >> word;
-    if (word == "cells") words >> cells;
-    if (word == "point") {
-      int i = 0;
-      words >> i >> points[i][0] >> points[i][1] >> points[i][2];
-    }
-    if (word == "cell") {
-      int i = 0, type = 0;
-      words >> i >> type >> lines_of[i].first >> lines_of[i].second;
-      EXPECT_EQ(type, 3);  // VTK_LINE
-    }
-    if (word == "cell_array") {
-      words >> name;
-      std::getline(words, shapes[name]);
-    }
-    if (word == "cell_value") {
-      int tuple = 0, component = 0;
-      double value = 0.0;
-      words >> name >> tuple >> component >> value;
-      values[name][tuple] = value;
-    }
-  }
+  const hydrodda::testing::VtuDump dump = hydrodda::testing::parse_vtu_dump(read.output);
+  const int cells = dump.cells;
   ASSERT_GT(cells, 0);
   for (const char* array : {"fracture", "aperture", "shear", "open", "flow"})
-    EXPECT_EQ(shapes[array], " 1 " + std::to_string(cells)) << array;
+    EXPECT_EQ(dump.cell_shapes.at(array), " 1 " + std::to_string(cells)) << array;
   double length = 0.0;
-  for (const auto& [cell, ends] : lines_of) {
-    const auto a = points[ends.first], b = points[ends.second];
+  for (const auto& [cell, shape] : dump.cell_nodes) {
+    const auto& [type, nodes] = shape;
+    EXPECT_EQ(type, 3);  // VTK_LINE
+    ASSERT_EQ(nodes.size(), 2u);
+    const auto a = dump.points.at(nodes[0]), b = dump.points.at(nodes[1]);
     length += std::hypot(b[0] - a[0], b[1] - a[1]);
-    EXPECT_EQ(values["open"][cell], 1.0);
-    EXPECT_NEAR(values["aperture"][cell], 1e-4, 1e-5);
+    EXPECT_EQ(dump.cell_values.at("open").at(cell), 1.0);
+    EXPECT_NEAR(dump.cell_values.at("aperture").at(cell), 1e-4, 1e-5);
   }
   // The midline of blocks that settle under their weight by about ρ g H² / (2 E) = 5e-6 m.
   EXPECT_NEAR(length, 2.0, 1e-5);
