@@ -1,6 +1,6 @@
 // A coupled run's ParaView series opened by ParaView itself: pvbatch (Debian packages paraview
-// and python3-paraview) runs tests/output/check_paraview.py, which reads fluid.pvd, blocks.pvd
-// and contacts.pvd with ParaView's PVDReader and checks them against summary.json and the
+// and python3-paraview) runs tests/output/check_paraview.py, which reads fluid.pvd, blocks.pvd,
+// contacts.pvd and fractures.pvd with ParaView's PVDReader and checks them against summary.json and the
 // scenario's still water (every head 3 m, pressure ρ_w g (h − z)). Skipped only when pvbatch is
 // not installed; scripts/install-deps.sh installs it.
 

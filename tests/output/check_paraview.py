@@ -5,12 +5,13 @@
 (paraview.simple.OpenDataFile picks PVDReader for a .pvd, which reads each .vtu with VTK's XML
 reader). For the run of scenarios/verification/coupled_hydrostatic_column.toml, still water at
 head HEAD with the hydrostatic pressure p = RHO_G (h - z), it checks:
-  - fluid.pvd, blocks.pvd and contacts.pvd list the same coupling iterations, increasing, the
+  - fluid.pvd, blocks.pvd, contacts.pvd and fractures.pvd list the same coupling iterations, increasing, the
     last being summary.json's;
   - every array the docs name is there, one tuple per point or cell, vectors with 3 components;
   - at the last time, every head is HEAD and every pressure RHO_G (h - z) (to 1e-9 of RHO_G HEAD),
     and each block's id, area, rotation and displacement are summary.json's, exactly;
-  - aperture = max(0, -penetration) for every contact, and block_i, block_j name blocks.
+  - aperture = max(0, -penetration) for every contact, and block_i, block_j name blocks;
+  - fractures.pvd: the two fractures' lines, 1 m each, no aperture where closed.
 Prints one fact a line; exits 1 with a message at the first mismatch.
 """
 import json
@@ -106,6 +107,25 @@ def main():
         for side in ("block_i", "block_j"):
             expect(0 <= cell[side].GetValue(c) < len(summary["blocks"]), f"contact {c} {side}")
     print("contacts consistent")
+
+    # The column is cut by two 1 m fractures (ids 0 and 1): their lines add up to 1 m each (the
+    # blocks strain by ~1e-7), and a closed piece has no aperture.
+    fractures = open_series(folder, "fractures", iterations, times_seen)
+    cell = arrays(fractures, "cell", {"fracture": 1, "aperture": 1, "shear": 1, "open": 1, "flow": 1})
+    lengths = {}
+    for c in range(fractures.GetNumberOfCells()):
+        ids = fractures.GetCell(c).GetPointIds()
+        a, b = fractures.GetPoint(ids.GetId(0)), fractures.GetPoint(ids.GetId(1))
+        f = int(cell["fracture"].GetValue(c))
+        lengths[f] = lengths.get(f, 0.0) + ((b[0] - a[0]) ** 2 + (b[1] - a[1]) ** 2) ** 0.5
+        expect(cell["open"].GetValue(c) in (0.0, 1.0), f"fracture piece {c} open")
+        expect(cell["aperture"].GetValue(c) >= 0.0, f"fracture piece {c} aperture")
+        if cell["open"].GetValue(c) == 0.0:
+            expect(cell["aperture"].GetValue(c) == 0.0, f"closed fracture piece {c} has an aperture")
+    expect(sorted(lengths) == [0, 1], f"fracture ids {sorted(lengths)}, expected [0, 1]")
+    for f, length in lengths.items():
+        expect(abs(length - 1.0) <= 1e-6, f"fracture {f} is {length} m long, expected 1 m")
+    print("fractures consistent")
     print("ok")
 
 
