@@ -11,7 +11,10 @@ describe() {
   case "$1" in
     summary.json) echo "converged or not, block displacements and stresses, boundary flows" ;;
     history.csv) echo "the coupling loop's convergence norms and flows, one row per iteration" ;;
-    measure.csv) echo "measured points, one row per DDA step" ;;
+    measure.csv) echo "measured points, one row per coupling iteration (or DDA step)" ;;
+    fractures.csv) echo "each fracture's aperture, open length and flow, one row per iteration" ;;
+    checkpoint.bin) echo "the state a stopped run resumes from (run --resume)" ;;
+    scenario.toml) echo "the scenario as run" ;;
     *.pvd) echo "open in ParaView" ;;
     figures) echo "$(ls "$out/figures" | tr '\n' ' ')" ;;
     *) echo "" ;;
