@@ -19,6 +19,14 @@ geometry::Box box_of(const std::array<Point, 3>& t) {
   return {{std::min({t[0].x, t[1].x, t[2].x}), std::min({t[0].y, t[1].y, t[2].y})},
           {std::max({t[0].x, t[1].x, t[2].x}), std::max({t[0].y, t[1].y, t[2].y})}};
 }
+
+// The blocks over the triangle in block order, so that sums do not depend on the grid.
+void find_candidates(const std::array<Point, 3>& t, const geometry::SpatialGrid& grid, std::vector<int>& candidates) {
+  candidates.clear();
+  grid.for_each_overlap(box_of(t), [&](int b) {
+    candidates.insert(std::upper_bound(candidates.begin(), candidates.end(), b), b);
+  });
+}
 }  // namespace
 
 PorosityMapper::PorosityMapper(std::span<const Point> nodes, std::span<const std::array<int, 3>> triangles)
@@ -35,12 +43,8 @@ double PorosityMapper::compute_covered_area(int e, const geometry::ClipPolygons&
   // order follows space): then A_f = 0 whatever else overlaps, as the sum below would give.
   int& hint = scratch.hint;
   if (hint >= 0 && blocks.holds(hint, t)) return a;
-  // The blocks over the element in block order, so that the sum does not depend on the grid.
   std::vector<int>& candidates = scratch.candidates;
-  candidates.clear();
-  grid.for_each_overlap(box_of(t), [&](int b) {
-    candidates.insert(std::upper_bound(candidates.begin(), candidates.end(), b), b);
-  });
+  find_candidates(t, grid, candidates);
   double covered = 0.0;
   for (int b : candidates) {
     const double part = blocks.covered_area(b, t, a);
@@ -52,7 +56,25 @@ double PorosityMapper::compute_covered_area(int e, const geometry::ClipPolygons&
   return covered;
 }
 
-PorosityField PorosityMapper::compute(std::span<const geometry::Polygon> blocks, double matrix_porosity) const {
+double PorosityMapper::compute_pieces(int e, const geometry::ClipPolygons& blocks, const geometry::SpatialGrid& grid,
+                                      Scratch& scratch, std::vector<BlockPiece>& pieces) const {
+  const std::array<Point, 3>& t = triangles_[e];
+  const double a = areas_[e];
+  find_candidates(t, grid, scratch.candidates);
+  // Every block's part is wanted (the seepage force acts on overlapping blocks too), so no
+  // early out; the sum is compute_covered_area's, or A_e or more where that one stopped early,
+  // which leaves A_f = 0 either way.
+  double covered = 0.0;
+  for (int b : scratch.candidates) {
+    const geometry::ClippedPart part = blocks.covered_part(b, t, a);
+    if (part.area > 0.0) pieces.push_back({b, e, part.area, part.centroid});
+    covered += part.area;
+  }
+  return covered;
+}
+
+PorosityField PorosityMapper::compute(std::span<const geometry::Polygon> blocks, double matrix_porosity,
+                                      std::vector<BlockPiece>* pieces) const {
   if (!(matrix_porosity >= 0.0 && matrix_porosity < 1.0))
     throw std::invalid_argument("porosity: the matrix porosity must lie in [0, 1)");
   const std::size_t n = triangles_.size();
@@ -64,17 +86,28 @@ PorosityField PorosityMapper::compute(std::span<const geometry::Polygon> blocks,
   field.fracture_area.resize(n);
   field.porosity.resize(n);
   // Each element on its own: the halves side by side give the same field as one thread.
+  std::array<std::vector<BlockPiece>, 2> half_pieces;
   dda::run_two_parts(n >= 20000, [&](int part) {
     const auto [begin, end] = dda::half_range(part, n);
     Scratch scratch;
     for (std::size_t e = begin; e < end; ++e) {
       const double a = areas_[e];
-      const double covered = compute_covered_area(static_cast<int>(e), prepared, grid, scratch);
+      const int element = static_cast<int>(e);
+      const double covered = pieces ? compute_pieces(element, prepared, grid, scratch, half_pieces[part])
+                                    : compute_covered_area(element, prepared, grid, scratch);
       const double open = std::clamp(a - covered, 0.0, a);
       field.fracture_area[e] = open;
       field.porosity[e] = std::clamp((open / a) * (1.0 - matrix_porosity) + matrix_porosity, matrix_porosity, 1.0);
     }
   });
+  if (pieces) {
+    // Element order within each half, the halves in order: a stable sort by block then leaves
+    // them by block, then element, however many threads ran.
+    pieces->assign(half_pieces[0].begin(), half_pieces[0].end());
+    pieces->insert(pieces->end(), half_pieces[1].begin(), half_pieces[1].end());
+    std::stable_sort(pieces->begin(), pieces->end(),
+                     [](const BlockPiece& l, const BlockPiece& r) { return l.block < r.block; });
+  }
   return field;
 }
 

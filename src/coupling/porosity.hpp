@@ -22,14 +22,26 @@ struct PorosityField {
   std::vector<double> porosity;       // φ per element
 };
 
+// The part of a block over one fluid element, as the clip found it: the seepage force is
+// integrated over these (seepage_forces.hpp).
+struct BlockPiece {
+  int block = 0;
+  int element = 0;
+  double area = 0.0;  // m²
+  Point centroid;
+};
+
 // Keeps the fixed mesh's element corners and areas; each pass clips every element against the
 // blocks as they are then.
 class PorosityMapper {
  public:
   PorosityMapper(std::span<const Point> nodes, std::span<const std::array<int, 3>> triangles);
 
-  // Blocks: simple polygons in either orientation. matrix_porosity in [0, 1).
-  PorosityField compute(std::span<const geometry::Polygon> blocks, double matrix_porosity) const;
+  // Blocks: simple polygons in either orientation. matrix_porosity in [0, 1). With `pieces`,
+  // also every block ∩ element part of non-zero area, from the same clips, ordered by block
+  // then element (whatever the threads); the field is then the same, bit for bit.
+  PorosityField compute(std::span<const geometry::Polygon> blocks, double matrix_porosity,
+                        std::vector<BlockPiece>* pieces = nullptr) const;
 
   const std::vector<double>& element_areas() const { return areas_; }
 
@@ -42,6 +54,10 @@ class PorosityMapper {
   // Σ_blocks |e ∩ block| for element e, or A_e as soon as one block holds the whole element.
   double compute_covered_area(int e, const geometry::ClipPolygons& blocks, const geometry::SpatialGrid& grid,
                               Scratch& scratch) const;
+  // The same sum over every block over element e, without early outs, each part of non-zero
+  // area appended to `pieces`.
+  double compute_pieces(int e, const geometry::ClipPolygons& blocks, const geometry::SpatialGrid& grid,
+                        Scratch& scratch, std::vector<BlockPiece>& pieces) const;
 
   std::vector<std::array<Point, 3>> triangles_;
   std::vector<double> areas_;

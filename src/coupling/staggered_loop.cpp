@@ -50,11 +50,19 @@ StaggeredLoop::StaggeredLoop(const mesh::TriangleMesh& mesh, hydro::DarcyProblem
       settings_(std::move(settings)),
       darcy_(mesh, std::move(flow)),
       porosity_mapper_(mesh.nodes, mesh.triangles),
-      pressure_sampler_(mesh) {
+      face_loads_(mesh) {
   for (int t = 0; t < mesh.triangle_count(); ++t) centroids_.push_back(mesh::triangle_centroid(mesh, t));
   if (!settings_.fixed_permeability.empty() &&
       settings_.fixed_permeability.size() != static_cast<std::size_t>(mesh.triangle_count()))
     throw std::invalid_argument("coupling: one fixed-permeability entry per element is needed");
+  std::vector<double>& biot = settings_.biot_coefficients;
+  if (biot.empty()) biot.assign(mechanics.block_count(), 1.0);
+  if (biot.size() != static_cast<std::size_t>(mechanics.block_count()))
+    throw std::invalid_argument("coupling: one Biot coefficient per block is needed");
+  for (double alpha : biot) {
+    if (!(alpha >= 0.0 && alpha <= 1.0)) throw std::invalid_argument("coupling: a Biot coefficient must lie in [0, 1]");
+    seepage_ = seepage_ || alpha > 0.0;
+  }
 }
 
 std::vector<geometry::Polygon> StaggeredLoop::current_blocks() const {
@@ -77,7 +85,8 @@ PassReport StaggeredLoop::run_pass() {
   // Porosity and permeability from the blocks as they are now: recomputed every pass.
   auto start = Clock::now();
   const std::vector<geometry::Polygon> blocks = current_blocks();
-  porosity_ = porosity_mapper_.compute(blocks, settings_.permeability.matrix_porosity);
+  std::vector<BlockPiece> pieces;  // the blocks over each element, for the seepage force
+  porosity_ = porosity_mapper_.compute(blocks, settings_.permeability.matrix_porosity, seepage_ ? &pieces : nullptr);
   std::vector<double> apertures;
   if (settings_.permeability.law == PermeabilityLaw::cubic)
     apertures = compute_local_apertures(centroids_, porosity_.fracture_area, blocks, settings_.permeability.domain,
@@ -102,10 +111,17 @@ PassReport StaggeredLoop::run_pass() {
   solution_ = std::move(fresh);
   report.flow_seconds = seconds_since(start);
 
-  // Pressures to vertex forces on the blocks as they are now.
+  // The P1 pressure field to forces on the blocks as they are now: the faces' share (1 − α)
+  // of the pressure along them, and the seepage force −α ∇p inside.
   start = Clock::now();
-  const std::vector<double> element_pressure = hydro::compute_centroid_pressure(mesh_, solution_);
-  mechanics_.set_vertex_forces(compute_edge_load_forces(blocks, pressure_sampler_.sample(blocks, element_pressure)));
+  std::vector<std::vector<Point>> forces = face_loads_.compute(blocks, solution_.pressure, settings_.biot_coefficients);
+  if (seepage_) {
+    const std::vector<std::vector<Point>> seepage = compute_seepage_forces(
+        blocks, pieces, hydro::compute_pressure_gradients(mesh_, solution_.pressure), settings_.biot_coefficients);
+    for (std::size_t b = 0; b < forces.size(); ++b)
+      for (std::size_t v = 0; v < forces[b].size(); ++v) forces[b][v] += seepage[b][v];
+  }
+  mechanics_.set_vertex_forces(std::move(forces));
   report.forces_seconds = seconds_since(start);
 
   // Mechanics under the mechanical and fluid loads.

@@ -1,7 +1,8 @@
 #pragma once
 // The staggered HYDRO–DDA loop (the paper's Fig. 2, DESIGN.md §2.3). Each pass:
 //   porosity (clip the current blocks) → permeability → flow solve → pressures
-//   → vertex forces → mechanics (a set number of DDA steps) → converged?
+//   → fluid forces (faces: (1 − α) p, inside: −α ∇p) → mechanics (a set number of DDA steps)
+//   → converged?
 // The convergence norms are the relative changes between passes of the heads and of the
 // blocks' displacements; both are measured every pass, and `converged` is only ever set from
 // them. The caller bounds the number of passes and stops when a pass reports convergence.
@@ -17,6 +18,7 @@
 #include "coupling/permeability_model.hpp"
 #include "coupling/porosity.hpp"
 #include "coupling/pressure_forces.hpp"
+#include "coupling/seepage_forces.hpp"
 #include "dda/system.hpp"
 #include "hydro/darcy_solver.hpp"
 #include "mesh/triangle_mesh.hpp"
@@ -39,6 +41,8 @@ struct LoopSettings {
   std::function<bool()> stop_requested;
   // Per element: a permeability fixed by the scenario (flow regions), or none.
   std::vector<std::optional<double>> fixed_permeability;
+  // Per block: Biot's coefficient α in [0, 1] (seepage_forces.hpp). Empty: 1 for every block.
+  std::vector<double> biot_coefficients;
 };
 
 // Thrown by run_pass when LoopSettings::stop_requested says so; the pass is not counted and the
@@ -119,7 +123,8 @@ class StaggeredLoop {
   LoopSettings settings_;
   hydro::DarcySolver darcy_;
   PorosityMapper porosity_mapper_;
-  VertexPressureSampler pressure_sampler_;
+  FacePressureLoads face_loads_;
+  bool seepage_ = false;             // some block has α > 0
 
   std::vector<Point> centroids_;  // of the fixed mesh's elements
   int iteration_ = 0;   // passes started

@@ -57,9 +57,8 @@ void clip_by_half_plane(const VertexBuffer& in, Point a, Point b, VertexBuffer& 
   }
 }
 
-}  // namespace
-
-double clipped_area(const std::array<Point, 3>& triangle, std::span<const Point> polygon) {
+// triangle ∩ polygon as a polygon (in the polygon's orientation), in a buffer of this thread.
+std::span<const Point> clip(const std::array<Point, 3>& triangle, std::span<const Point> polygon) {
   std::array<Point, 3> t = triangle;
   if (orient(t[0], t[1], t[2]) < 0.0) std::swap(t[1], t[2]);
   thread_local VertexBuffer a;
@@ -69,13 +68,25 @@ double clipped_area(const std::array<Point, 3>& triangle, std::span<const Point>
   clip_by_half_plane(a, t[0], t[1], b);
   clip_by_half_plane(b, t[1], t[2], a);
   clip_by_half_plane(a, t[2], t[0], b);
-  return area(b.view());
+  return b.view();
+}
+}  // namespace
+
+double clipped_area(const std::array<Point, 3>& triangle, std::span<const Point> polygon) {
+  return area(clip(triangle, polygon));
+}
+
+ClippedPart clip_part(const std::array<Point, 3>& triangle, std::span<const Point> polygon) {
+  const std::span<const Point> part = clip(triangle, polygon);
+  return {area(part), centroid(part)};
 }
 
 namespace {
 
-// Sutherland–Hodgman with the convex region as the clip polygon, the triangle as the subject.
-double clip_by_half_planes(const std::array<Point, 3>& triangle, std::span<const HalfPlane> edges) {
+// Sutherland–Hodgman with the convex region as the clip polygon, the triangle as the subject;
+// the centroid only when asked (the area is the same either way, bit for bit).
+template <bool kCentroid>
+ClippedPart clip_by_half_planes(const std::array<Point, 3>& triangle, std::span<const HalfPlane> edges) {
   constexpr int kCapacity = 3 + kMaxConvexEdges;
   std::array<Point, kCapacity> first, second;
   std::array<double, kCapacity> d;
@@ -91,7 +102,7 @@ double clip_by_half_planes(const std::array<Point, 3>& triangle, std::span<const
       all_out &= d[i] < 0.0;
     }
     if (all_in) continue;
-    if (all_out) return 0.0;
+    if (all_out) return {};
     int kept = 0;
     for (int i = 0, j = n - 1; i < n; j = i++) {  // the subject's edge in[j] → in[i]
       if ((d[j] >= 0.0) != (d[i] >= 0.0)) out[kept++] = in[j] + (d[j] / (d[j] - d[i])) * (in[i] - in[j]);
@@ -100,7 +111,51 @@ double clip_by_half_planes(const std::array<Point, 3>& triangle, std::span<const
     n = kept;
     std::swap(in, out);
   }
-  return area(std::span<const Point>(in, n));
+  const std::span<const Point> part(in, n);
+  if constexpr (kCentroid) return {area(part), centroid(part)};
+  return {area(part), {}};
+}
+
+Point triangle_centroid(const std::array<Point, 3>& t) { return (1.0 / 3.0) * (t[0] + t[1] + t[2]); }
+
+// The convex clip of clipped_area below, with the part's centroid when kCentroid.
+template <bool kCentroid>
+ClippedPart clip_convex(const std::array<Point, 3>& triangle, double triangle_area, std::span<const HalfPlane> edges) {
+  // Which edges cut the triangle: the common case in a fractured layer is one (the element
+  // crosses a single fracture face), whose answer is closed-form; more go through the clip.
+  int cutting = 0;
+  std::array<double, 3> d{};
+  for (const HalfPlane& edge : edges) {
+    const std::array<double, 3> e{edge.distance(triangle[0]), edge.distance(triangle[1]), edge.distance(triangle[2])};
+    const int outside = (e[0] < 0.0) + (e[1] < 0.0) + (e[2] < 0.0);
+    if (outside == 3) return {};
+    if (outside == 0) continue;
+    if (++cutting > 1) return clip_by_half_planes<kCentroid>(triangle, edges);
+    d = e;
+  }
+  if (cutting == 0) {
+    if constexpr (kCentroid) return {triangle_area, triangle_centroid(triangle)};
+    return {triangle_area, {}};
+  }
+  // One line cuts: corner k alone on its side, at distances d_k and d_i, d_j from the line,
+  // cuts its two edges at fractions t = d_k / (d_k − d_i) from it, a corner triangle of
+  // t_i t_j of the whole (similar triangles). That corner is the part outside when k is the
+  // one corner outside, the part inside when k is the one corner inside.
+  const bool one_outside = (d[0] < 0.0) + (d[1] < 0.0) + (d[2] < 0.0) == 1;
+  const int k = one_outside ? (d[0] < 0.0 ? 0 : d[1] < 0.0 ? 1 : 2) : (d[0] >= 0.0 ? 0 : d[1] >= 0.0 ? 1 : 2);
+  const int i = (k + 1) % 3, j = (k + 2) % 3;
+  const double ti = d[k] / (d[k] - d[i]), tj = d[k] / (d[k] - d[j]);
+  const double corner = ti * tj;
+  const double part_area = one_outside ? triangle_area * (1.0 - corner) : triangle_area * corner;
+  if constexpr (!kCentroid) return {part_area, {}};
+  // The corner triangle's centroid is the mean of its corners; the rest's, by first moments:
+  // A c_T = A_corner c_corner + A_rest c_rest.
+  const Point pk = triangle[k];
+  const Point corner_centroid =
+      (1.0 / 3.0) * (pk + (pk + ti * (triangle[i] - pk)) + (pk + tj * (triangle[j] - pk)));
+  if (!one_outside) return {part_area, corner_centroid};
+  const double corner_area = triangle_area * corner;
+  return {part_area, (1.0 / part_area) * (triangle_area * triangle_centroid(triangle) - corner_area * corner_centroid)};
 }
 
 }  // namespace
@@ -124,28 +179,11 @@ bool append_half_planes(std::span<const Point> polygon, std::vector<HalfPlane>& 
 }
 
 double clipped_area(const std::array<Point, 3>& triangle, double triangle_area, std::span<const HalfPlane> edges) {
-  // Which edges cut the triangle: the common case in a fractured layer is one (the element
-  // crosses a single fracture face), whose answer is closed-form; more go through the clip.
-  int cutting = 0;
-  std::array<double, 3> d{};
-  for (const HalfPlane& edge : edges) {
-    const std::array<double, 3> e{edge.distance(triangle[0]), edge.distance(triangle[1]), edge.distance(triangle[2])};
-    const int outside = (e[0] < 0.0) + (e[1] < 0.0) + (e[2] < 0.0);
-    if (outside == 3) return 0.0;
-    if (outside == 0) continue;
-    if (++cutting > 1) return clip_by_half_planes(triangle, edges);
-    d = e;
-  }
-  if (cutting == 0) return triangle_area;
-  // One line cuts: corner k alone on its side, at distances d_k and d_i, d_j from the line,
-  // cuts its two edges at fractions t = d_k / (d_k − d_i) from it, a corner triangle of
-  // t_i t_j of the whole (similar triangles). That corner is the part outside when k is the
-  // one corner outside, the part inside when k is the one corner inside.
-  const bool one_outside = (d[0] < 0.0) + (d[1] < 0.0) + (d[2] < 0.0) == 1;
-  const int k = one_outside ? (d[0] < 0.0 ? 0 : d[1] < 0.0 ? 1 : 2) : (d[0] >= 0.0 ? 0 : d[1] >= 0.0 ? 1 : 2);
-  const double di = d[(k + 1) % 3], dj = d[(k + 2) % 3];
-  const double corner = (d[k] / (d[k] - di)) * (d[k] / (d[k] - dj));
-  return one_outside ? triangle_area * (1.0 - corner) : triangle_area * corner;
+  return clip_convex<false>(triangle, triangle_area, edges).area;
+}
+
+ClippedPart clip_part(const std::array<Point, 3>& triangle, double triangle_area, std::span<const HalfPlane> edges) {
+  return clip_convex<true>(triangle, triangle_area, edges);
 }
 
 bool contains_triangle(std::span<const HalfPlane> edges, const std::array<Point, 3>& triangle) {
@@ -169,6 +207,11 @@ ClipPolygons::ClipPolygons(std::span<const Polygon> polygons) : polygons_(polygo
 double ClipPolygons::covered_area(int i, const std::array<Point, 3>& triangle, double triangle_area) const {
   const std::span<const HalfPlane> edges = edges_of(i);
   return edges.empty() ? clipped_area(triangle, polygons_[i]) : clipped_area(triangle, triangle_area, edges);
+}
+
+ClippedPart ClipPolygons::covered_part(int i, const std::array<Point, 3>& triangle, double triangle_area) const {
+  const std::span<const HalfPlane> edges = edges_of(i);
+  return edges.empty() ? clip_part(triangle, polygons_[i]) : clip_part(triangle, triangle_area, edges);
 }
 
 bool ClipPolygons::holds(int i, const std::array<Point, 3>& triangle) const {

@@ -26,6 +26,15 @@ namespace hydrodda::geometry {
 // element at every pass. Boost.Geometry is the test oracle.
 double clipped_area(const std::array<Point, 3>& triangle, std::span<const Point> polygon);
 
+// Area and centroid of triangle ∩ polygon, by the same clip (the area is clipped_area's, bit
+// for bit; the centroid of an empty part is meaningless). The seepage force of the coupling
+// integrates over these parts of each block.
+struct ClippedPart {
+  double area = 0.0;
+  Point centroid;
+};
+ClippedPart clip_part(const std::array<Point, 3>& triangle, std::span<const Point> polygon);
+
 // The inside of one edge of a convex polygon: the points p with dot(normal, p − point) >= 0
 // (normal: the edge turned to the polygon's inside, not normalised).
 struct HalfPlane {
@@ -51,6 +60,8 @@ bool append_half_planes(std::span<const Point> polygon, std::vector<HalfPlane>& 
 // At most kMaxConvexEdges edges (the subject then has at most 3 + kMaxConvexEdges vertices).
 inline constexpr int kMaxConvexEdges = 29;
 double clipped_area(const std::array<Point, 3>& triangle, double triangle_area, std::span<const HalfPlane> edges);
+// The same part's area (bit for bit) and centroid; a triangle wholly inside has its own centroid.
+ClippedPart clip_part(const std::array<Point, 3>& triangle, double triangle_area, std::span<const HalfPlane> edges);
 
 // Whether every vertex of the triangle lies inside every half-plane (for a convex region: the
 // triangle lies in it, edges included).
@@ -68,6 +79,8 @@ class ClipPolygons {
   // Area of triangle ∩ polygon i; exactly `triangle_area` when the triangle lies wholly inside
   // a convex polygon i.
   double covered_area(int i, const std::array<Point, 3>& triangle, double triangle_area) const;
+  // The same area (bit for bit) with the part's centroid.
+  ClippedPart covered_part(int i, const std::array<Point, 3>& triangle, double triangle_area) const;
   // Whether polygon i is convex and holds the whole triangle; false for a non-convex polygon,
   // which covered_area then decides.
   bool holds(int i, const std::array<Point, 3>& triangle) const;

@@ -2,8 +2,9 @@
 // dlopen the first time a mesh is needed, so that a run without a fluid mesh does not load
 // Gmsh and OpenCASCADE at its start (see gmsh_mesher.cpp).
 #include <dlfcn.h>
-#include <link.h>
+#include <unistd.h>
 
+#include <array>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -16,21 +17,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The folder of the file this code was linked into: the program, or the Python module
-// (_hydrodda.so); their installs put the plugin beside them. The program's link map has an
-// empty name, so its folder comes from /proc/self/exe.
-fs::path own_folder() {
-  Dl_info info{};
-  link_map* map = nullptr;
-  std::error_code error;
-  if (::dladdr1(reinterpret_cast<const void*>(&own_folder), &info, reinterpret_cast<void**>(&map),
-                RTLD_DL_LINKMAP) != 0 &&
-      map != nullptr && map->l_name != nullptr && map->l_name[0] != '\0') {
-    const fs::path file = fs::canonical(map->l_name, error);
-    return error ? fs::path() : file.parent_path();
-  }
-  const fs::path program = fs::read_symlink("/proc/self/exe", error);
-  return error ? fs::path() : program.parent_path();
+// The program's own folder: the plugin is installed beside the executable.
+fs::path executable_folder() {
+  std::array<char, 4096> buffer{};
+  const ssize_t size = ::readlink("/proc/self/exe", buffer.data(), buffer.size() - 1);
+  return size > 0 ? fs::path(std::string(buffer.data(), static_cast<std::size_t>(size))).parent_path() : fs::path();
 }
 
 struct Plugin {
@@ -38,10 +29,10 @@ struct Plugin {
   decltype(&hydrodda_gmsh_read_msh) read = nullptr;
 };
 
-// Beside the program or module, else where the build made it (tests and benchmarks run from
-// other folders). Loaded once, never unloaded.
+// Beside the executable, else where the build made it (tests and benchmarks run from other
+// folders). Loaded once, never unloaded.
 Plugin load_plugin() {
-  const fs::path beside = own_folder() / "hydrodda_gmsh_mesher.so";
+  const fs::path beside = executable_folder() / "hydrodda_gmsh_mesher.so";
   const fs::path built = HYDRODDA_GMSH_MESHER;
   const fs::path path = fs::exists(beside) ? beside : built;
   void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);

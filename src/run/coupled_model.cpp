@@ -22,10 +22,12 @@ CoupledModel::CoupledModel(const scenario::Scenario& scenario) : scenario_(scena
   mesh_seconds_ = std::chrono::duration<double>(Clock::now() - start).count();
   spdlog::info("mesh: {} nodes, {} triangles", mesh_.node_count(), mesh_.triangle_count());
 
-  system_.emplace(build_mechanics_model(s, build_blocks(s)));
+  std::vector<dda::BlockDefinition> block_definitions = build_blocks(s);
+  coupling::LoopSettings settings;
+  settings.biot_coefficients = find_biot_coefficients(s, block_definitions);
+  system_.emplace(build_mechanics_model(s, std::move(block_definitions)));
   spdlog::info("mechanics: {} blocks", system_->block_count());
 
-  coupling::LoopSettings settings;
   settings.tolerance = s.coupling.tolerance;
   settings.relaxation = s.coupling.relaxation;
   settings.steps_per_pass = s.mechanics->steps.value_or(

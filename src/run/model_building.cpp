@@ -120,6 +120,12 @@ coupling::PermeabilityModel make_permeability_model(const Scenario& s) {
   return model;
 }
 
+std::vector<double> find_biot_coefficients(const Scenario& s, const std::vector<dda::BlockDefinition>& blocks) {
+  std::vector<double> biot;
+  for (const dda::BlockDefinition& b : blocks) biot.push_back(s.materials[b.material].biot_coefficient);
+  return biot;
+}
+
 mesh::TriangleMesh read_mesh_file(const Scenario& s) {
   const scenario::MeshDefinition& m = *s.mesh;
   const std::string file = s.file.string();

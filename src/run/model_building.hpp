@@ -34,6 +34,10 @@ dda::ModelDefinition build_mechanics_model(const scenario::Scenario& scenario,
 // The permeability law of [flow] with the (only) material's porosity and grain size.
 coupling::PermeabilityModel make_permeability_model(const scenario::Scenario& scenario);
 
+// Per block, the Biot coefficient of its material.
+std::vector<double> find_biot_coefficients(const scenario::Scenario& scenario,
+                                           const std::vector<dda::BlockDefinition>& blocks);
+
 // The user's mesh.file, read; a file Gmsh cannot read or without triangles is a ScenarioError
 // naming the mesh.file line, and a flow boundary the file does not name, one naming its line.
 mesh::TriangleMesh read_mesh_file(const scenario::Scenario& scenario);

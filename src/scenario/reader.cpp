@@ -161,7 +161,7 @@ void read_materials(ReadContext& ctx, const TableView& root, Scenario& s) {
       continue;
     }
     const TableView m(ctx, *mt, path,
-                      {"density", "young", "poisson", "matrix_porosity", "grain_diameter"});
+                      {"density", "young", "poisson", "matrix_porosity", "grain_diameter", "biot_coefficient"});
     MaterialDefinition material;
     material.name = name;
     material.density = m.number("density");
@@ -181,6 +181,9 @@ void read_materials(ReadContext& ctx, const TableView& root, Scenario& s) {
                 material.matrix_porosity >= 0.0 && material.matrix_porosity < 1.0,
                 "must lie in [0, 1)");
     }
+    material.biot_coefficient = m.number_or("biot_coefficient", material.biot_coefficient);
+    m.require("biot_coefficient", material.biot_coefficient >= 0.0 && material.biot_coefficient <= 1.0,
+              "must lie in [0, 1]");
     s.materials.push_back(std::move(material));
   }
 }

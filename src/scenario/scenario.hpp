@@ -78,6 +78,8 @@ struct MaterialDefinition {
   std::optional<double> poisson;          // (mechanics)
   double matrix_porosity = 0.0;
   std::optional<double> grain_diameter;   // m (Kozeny–Carman)
+  // Biot's α (coupling): the blocks' faces take (1 − α) p, their skeleton the seepage force −α ∇p.
+  double biot_coefficient = 1.0;
 };
 
 struct JointDefinition {

@@ -72,5 +72,41 @@ TEST(Porosity, EachPassRecomputesFromTheBlocksGiven) {
   EXPECT_EQ(changed, 200);  // every element flips between covered and open
 }
 
+TEST(Porosity, PiecesTileEachBlockInsideTheMesh) {
+  // The pieces of a block (one per element it covers) have the block's area and first moment:
+  // Σ A_k = A_block and Σ A_k c_k = A_block c_block, 1e-12 relative (of A L for the moment);
+  // the part of a block outside the mesh has no piece. The fracture areas are those of the
+  // field computed without pieces, bit for bit.
+  const auto mesh = testing::make_rectangle_mesh(0.0, 0.0, 4.0, 3.0, 37, 29);
+  PorosityMapper mapper(mesh.nodes, mesh.triangles);
+  const std::vector<Polygon> blocks{
+      rectangle(0.21, 0.13, 1.3, 1.45),
+      {{0.0, 1.5}, {2.0, 1.5}, {2.0, 2.2}, {1.0, 2.2}, {1.0, 3.0}, {0.0, 3.0}},  // L-shaped
+      {{2.5, 0.4}, {3.7, 0.9}, {3.1, 2.6}},
+      rectangle(3.5, 2.5, 4.5, 3.0)};  // half outside the mesh
+  std::vector<BlockPiece> pieces;
+  const PorosityField with = mapper.compute(blocks, 0.1, &pieces);
+  const PorosityField without = mapper.compute(blocks, 0.1);
+  EXPECT_EQ(with.fracture_area, without.fracture_area);
+  EXPECT_EQ(with.porosity, without.porosity);
+  std::vector<double> area(blocks.size(), 0.0);
+  std::vector<Point> moment(blocks.size());
+  for (const BlockPiece& piece : pieces) {
+    ASSERT_GE(piece.block, 0);
+    ASSERT_LT(piece.block, static_cast<int>(blocks.size()));
+    EXPECT_GT(piece.area, 0.0);
+    area[piece.block] += piece.area;
+    moment[piece.block] += piece.area * piece.centroid;
+  }
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    const Polygon inside = b < 3 ? blocks[b] : rectangle(3.5, 2.5, 4.0, 3.0);
+    const double a = geometry::area(inside);
+    const Point first_moment = a * geometry::centroid(inside);
+    EXPECT_NEAR(area[b], a, 1e-12 * a) << "block " << b;
+    EXPECT_NEAR(moment[b].x, first_moment.x, 1e-12 * a * 5.0) << "block " << b;
+    EXPECT_NEAR(moment[b].y, first_moment.y, 1e-12 * a * 5.0) << "block " << b;
+  }
+}
+
 }  // namespace
 }  // namespace hydrodda::coupling

@@ -33,4 +33,17 @@ inline double oracle_area(const std::array<Point, 3>& t, std::span<const Point> 
   return bg::area(result);
 }
 
+// The centroid of triangle ∩ polygon: the area-weighted mean of its pieces' centroids.
+inline Point oracle_centroid(const std::array<Point, 3>& t, std::span<const Point> polygon) {
+  BoostMulti result;
+  bg::intersection(to_boost(t), to_boost(polygon), result);
+  Point moment{};
+  for (const BoostPolygon& piece : result) {
+    BoostPoint c(0.0, 0.0);
+    bg::centroid(piece, c);
+    moment += bg::area(piece) * Point{c.x(), c.y()};
+  }
+  return moment / bg::area(result);
+}
+
 }  // namespace hydrodda::geometry::testing

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -65,6 +66,17 @@ inline std::vector<double> read_vtu_array(const std::string& file, const std::st
     if (a.name == name) {
       EXPECT_EQ(a.type, "Float64") << name;
       return values_of<double>(a.bytes);
+    }
+  }
+  return {};
+}
+
+// The values of the named Int64 array (a cell's connectivity, offsets); empty when there is none.
+inline std::vector<std::int64_t> read_vtu_int64_array(const std::string& file, const std::string& name) {
+  for (const AppendedArray& a : decode_appended(file)) {
+    if (a.name == name) {
+      EXPECT_EQ(a.type, "Int64") << name;
+      return values_of<std::int64_t>(a.bytes);
     }
   }
   return {};
