@@ -50,8 +50,9 @@ def log_lines(text, folder_names):
 
 def checkpoint_without_timings(data):
     """checkpoint.bin with the seconds of its timings zeroed: magic, version, byte-order mark,
-    scenario hash, scenario file, converged, history rows, measure rows (format 2), written
-    iterations, then the timings (count, then name and seconds for each)."""
+    scenario hash, scenario file, converged, history rows, measure rows (format 2 and later),
+    written iterations, then the timings (count, then name and seconds for each); what follows
+    the timings (format 3: the coupling loop's Aitken state) is compared as it is."""
     data = bytearray(data)
     at = len("hydrodda checkpoint\n") + 8 + 4 + 8
 

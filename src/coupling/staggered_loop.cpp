@@ -1,5 +1,6 @@
 #include "coupling/staggered_loop.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -43,6 +44,20 @@ double relative_change(const std::vector<double>& current, const std::vector<dou
   return std::sqrt(diff / norm);
 }
 
+double head_change(const std::vector<double>& current, const std::vector<double>& previous) {
+  if (current.empty()) return 0.0;
+  double diff = 0.0, low = current[0], high = current[0];
+  for (std::size_t i = 0; i < current.size(); ++i) {
+    const double d = current[i] - (i < previous.size() ? previous[i] : 0.0);
+    diff += d * d;
+    low = std::min(low, current[i]);
+    high = std::max(high, current[i]);
+  }
+  if (diff == 0.0) return 0.0;
+  if (high == low) return 1.0;
+  return std::sqrt(diff / static_cast<double>(current.size())) / (high - low);
+}
+
 StaggeredLoop::StaggeredLoop(const mesh::TriangleMesh& mesh, hydro::DarcyProblem flow, dda::System& mechanics,
                              LoopSettings settings)
     : mesh_(mesh),
@@ -59,6 +74,10 @@ StaggeredLoop::StaggeredLoop(const mesh::TriangleMesh& mesh, hydro::DarcyProblem
   if (biot.empty()) biot.assign(mechanics.block_count(), 1.0);
   if (biot.size() != static_cast<std::size_t>(mechanics.block_count()))
     throw std::invalid_argument("coupling: one Biot coefficient per block is needed");
+  if (!(settings_.relaxation > 0.0 && settings_.relaxation <= 1.0))
+    throw std::invalid_argument("coupling: the relaxation must lie in (0, 1]");
+  if (settings_.ramp_passes < 1) throw std::invalid_argument("coupling: ramp_passes must be at least 1");
+  relaxation_ = settings_.relaxation;
   for (double alpha : biot) {
     if (!(alpha >= 0.0 && alpha <= 1.0)) throw std::invalid_argument("coupling: a Biot coefficient must lie in [0, 1]");
     seepage_ = seepage_ || alpha > 0.0;
@@ -101,19 +120,17 @@ PassReport StaggeredLoop::run_pass() {
   start = Clock::now();
   hydro::FlowSolution fresh = darcy_.solve(permeability_);
   check_finite(fresh.head, "the head", iteration_);
-  if (!previous_heads_.empty() && settings_.relaxation < 1.0) {
-    const double w = settings_.relaxation;
-    for (std::size_t i = 0; i < fresh.head.size(); ++i) {
-      fresh.head[i] = w * fresh.head[i] + (1.0 - w) * previous_heads_[i];
-      fresh.pressure[i] = w * fresh.pressure[i] + (1.0 - w) * solution_.pressure[i];
-    }
-  }
+  relax(fresh);
+  report.relaxation = previous_heads_.empty() ? 1.0 : relaxation_;
   solution_ = std::move(fresh);
   report.flow_seconds = seconds_since(start);
 
   // The P1 pressure field to forces on the blocks as they are now: the faces' share (1 − α)
   // of the pressure along them, and the seepage force −α ∇p inside.
   start = Clock::now();
+  // Ramped over the first passes: the blocks meet the full load from a state near equilibrium
+  // under part of it, instead of all at once from the state as built.
+  report.load_factor = std::min(1.0, static_cast<double>(iteration_) / settings_.ramp_passes);
   std::vector<std::vector<Point>> forces = face_loads_.compute(blocks, solution_.pressure, settings_.biot_coefficients);
   if (seepage_) {
     const std::vector<std::vector<Point>> seepage = compute_seepage_forces(
@@ -121,6 +138,9 @@ PassReport StaggeredLoop::run_pass() {
     for (std::size_t b = 0; b < forces.size(); ++b)
       for (std::size_t v = 0; v < forces[b].size(); ++v) forces[b][v] += seepage[b][v];
   }
+  if (report.load_factor < 1.0)
+    for (std::vector<Point>& block : forces)
+      for (Point& f : block) f = report.load_factor * f;
   mechanics_.set_vertex_forces(std::move(forces));
   report.forces_seconds = seconds_since(start);
 
@@ -150,10 +170,13 @@ PassReport StaggeredLoop::run_pass() {
       throw std::runtime_error("the displacement of block " + std::to_string(i / 2) +
                                " is not finite in coupling iteration " + std::to_string(iteration_));
   for (Point p : previous_displacements_) u_previous.insert(u_previous.end(), {p.x, p.y});
-  report.head_change = previous_heads_.empty() ? 1.0 : relative_change(solution_.head, previous_heads_);
+  report.head_change = previous_heads_.empty() ? 1.0 : head_change(solution_.head, previous_heads_);
   report.displacement_change = previous_displacements_.empty() ? 1.0 : relative_change(u_flat, u_previous);
-  report.converged = iteration_ > 1 && report.head_change < settings_.tolerance &&
+  // Both norms compare this pass with the last, so both passes must have had the full load.
+  report.converged = iteration_ > settings_.ramp_passes && report.head_change < settings_.tolerance &&
                      report.displacement_change < settings_.tolerance;
+  report.head_change_two_passes = heads_two_back_.empty() ? 1.0 : head_change(solution_.head, heads_two_back_);
+  heads_two_back_ = std::move(previous_heads_);
   previous_heads_ = solution_.head;
   previous_displacements_ = u;
   const double change = std::max(report.head_change, report.displacement_change);
@@ -169,6 +192,39 @@ PassReport StaggeredLoop::run_pass() {
     report.largest_opening = std::max(report.largest_opening, -c.penetration);
   completed_ = iteration_;
   return report;
+}
+
+}  // namespace hydrodda::coupling
+
+namespace hydrodda::coupling {
+
+// Relaxes the fresh solution against the last pass's: h ← h_old + ω (h̃ − h_old), and the
+// pressures alike. With Aitken's Δ² method for vectors (Irons & Tuck 1969; Küttler & Wall 2008,
+// Comput. Mech. 43, eq. 44) ω follows the last two updates r = h̃ − h_old:
+//   ω_k = −ω_{k−1} r_{k−1}·(r_k − r_{k−1}) / ‖r_k − r_{k−1}‖²,  clipped to [0.05, 1]
+// (the secant estimate of the step that would land on the fixed point along r). A loop whose
+// updates flip sign pass after pass (cycling between two states) gets ω near 1/2 and settles;
+// one whose updates keep their direction keeps ω near 1.
+void StaggeredLoop::relax(hydro::FlowSolution& fresh) {
+  if (previous_heads_.empty()) return;
+  std::vector<double> update(fresh.head.size());
+  for (std::size_t i = 0; i < update.size(); ++i) update[i] = fresh.head[i] - previous_heads_[i];
+  if (settings_.acceleration == Acceleration::aitken && previous_update_.size() == update.size()) {
+    double numerator = 0.0, denominator = 0.0;
+    for (std::size_t i = 0; i < update.size(); ++i) {
+      const double change = update[i] - previous_update_[i];
+      numerator += previous_update_[i] * change;
+      denominator += change * change;
+    }
+    if (denominator > 0.0) relaxation_ = std::clamp(-relaxation_ * numerator / denominator, 0.05, 1.0);
+  }
+  previous_update_ = std::move(update);
+  const double w = relaxation_;
+  if (w == 1.0) return;
+  for (std::size_t i = 0; i < fresh.head.size(); ++i) {
+    fresh.head[i] = previous_heads_[i] + w * (fresh.head[i] - previous_heads_[i]);
+    fresh.pressure[i] = solution_.pressure[i] + w * (fresh.pressure[i] - solution_.pressure[i]);
+  }
 }
 
 }  // namespace hydrodda::coupling

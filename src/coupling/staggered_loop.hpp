@@ -3,9 +3,10 @@
 //   porosity (clip the current blocks) → permeability → flow solve → pressures
 //   → fluid forces (faces: (1 − α) p, inside: −α ∇p) → mechanics (a set number of DDA steps)
 //   → converged?
-// The convergence norms are the relative changes between passes of the heads and of the
-// blocks' displacements; both are measured every pass, and `converged` is only ever set from
-// them. The caller bounds the number of passes and stops when a pass reports convergence.
+// The convergence norms are the changes between passes of the heads (relative to the range of
+// the heads, so that no datum enters) and of the blocks' displacements; both are measured every
+// pass, and `converged` is only ever set from them, never while the fluid load is still being
+// ramped. The caller bounds the number of passes and stops when a pass reports convergence.
 // With relaxation, heads and pressures are relaxed; the fluxes and boundary flows reported are
 // those of the pass's own solve.
 
@@ -25,9 +26,16 @@
 
 namespace hydrodda::coupling {
 
+enum class Acceleration { none, aitken };
+
 struct LoopSettings {
   double tolerance = 1.0e-4;
-  double relaxation = 1.0;        // heads: h ← ω h_new + (1 − ω) h_old
+  double relaxation = 1.0;        // heads: h ← ω h_new + (1 − ω) h_old (with Aitken: the first ω)
+  // Aitken: ω adapted from pass to pass from the last two head updates (StaggeredLoop::relax).
+  Acceleration acceleration = Acceleration::none;
+  // The fluid forces of pass k are min(1, k / ramp_passes) of the full ones; no pass before
+  // the first at full load counts as converged.
+  int ramp_passes = 1;
   int steps_per_pass = 100;       // DDA steps run in each pass
   // A loop whose change (the larger of the two norms) grew this many passes in a row, and by
   // diverging_growth over them, is reported as diverging (0 passes: never). A converging
@@ -55,11 +63,16 @@ struct PassInterrupted : std::runtime_error {
 struct PassReport {
   int iteration = 0;              // 1-based
   double time = 0.0;              // mechanics time at the end of the pass
-  double head_change = 0.0;       // ‖h_k − h_{k−1}‖ / ‖h_k‖ (1 on the first pass)
+  double head_change = 0.0;       // rms(h_k − h_{k−1}) / (max h_k − min h_k) (1 on the first pass)
+  // The same against the heads of two passes back (1 before pass 3): far below head_change
+  // when the loop swings between two states.
+  double head_change_two_passes = 1.0;
   double displacement_change = 0.0;  // ‖u_k − u_{k−1}‖ / ‖u_k‖ over block centroids (1 first)
   double largest_opening = 0.0;   // widest open contact gap (m)
   double mean_porosity = 0.0;
   double max_permeability = 0.0;
+  double relaxation = 1.0;        // ω the heads were relaxed with in this pass
+  double load_factor = 1.0;       // of the fluid forces, below 1 while ramped
   bool converged = false;
   // The change has grown LoopSettings::diverging_passes passes in a row.
   bool diverging = false;
@@ -87,8 +100,12 @@ struct LoopState {
   int iterations = 0;                   // passes finished
   hydro::FlowSolution flow;             // the last pass's (relaxed) solution; empty before any
   std::vector<double> previous_heads;   // for the head norm (and relaxation)
+  std::vector<double> heads_two_back;   // for head_change_two_passes
   std::vector<Point> previous_displacements;  // for the displacement norm
   ChangeGrowth growth;                  // for the divergence rule
+  // Aitken's state: the last head update h̃ − h_old and the ω it was applied with.
+  std::vector<double> previous_update;
+  double relaxation = 1.0;
 };
 
 class StaggeredLoop {
@@ -116,6 +133,7 @@ class StaggeredLoop {
 
  private:
   std::vector<geometry::Polygon> current_blocks() const;
+  void relax(hydro::FlowSolution& fresh);
   std::vector<Point> block_displacements() const;
 
   const mesh::TriangleMesh& mesh_;
@@ -133,11 +151,20 @@ class StaggeredLoop {
   std::vector<double> permeability_;
   hydro::FlowSolution solution_;
   std::vector<double> previous_heads_;
+  std::vector<double> heads_two_back_;
   std::vector<Point> previous_displacements_;
   ChangeGrowth growth_;
+  std::vector<double> previous_update_;
+  double relaxation_ = 1.0;
 };
 
 // ‖a − b‖₂ / ‖a‖₂, 0 when both are zero, 1 when only `a` is.
 double relative_change(const std::vector<double>& current, const std::vector<double>& previous);
+
+// The head norm: the root mean square of a − b over the range of a (max a − min a), the head
+// drop the boundary conditions set (the discrete maximum principle puts the extremes on the
+// boundary). Adding a constant to every head changes neither. 0 when nothing changed, 1 when a
+// is uniform but changed.
+double head_change(const std::vector<double>& current, const std::vector<double>& previous);
 
 }  // namespace hydrodda::coupling

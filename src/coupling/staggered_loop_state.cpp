@@ -6,7 +6,8 @@
 namespace hydrodda::coupling {
 
 LoopState StaggeredLoop::export_state() const {
-  return {completed_, solution_, previous_heads_, previous_displacements_, growth_};
+  return {completed_, solution_,        previous_heads_, heads_two_back_, previous_displacements_, growth_,
+          previous_update_, relaxation_};
 }
 
 void StaggeredLoop::import_state(LoopState state) {
@@ -18,15 +19,20 @@ void StaggeredLoop::import_state(LoopState state) {
   const bool fits = started ? state.flow.head.size() == nodes && state.flow.pressure.size() == nodes &&
                                   state.flow.flux.size() == static_cast<std::size_t>(mesh_.triangle_count()) &&
                                   state.previous_heads.size() == nodes &&
-                                  state.previous_displacements.size() == blocks
+                                  state.previous_displacements.size() == blocks &&
+                                  (state.previous_update.empty() || state.previous_update.size() == nodes) &&
+                                  (state.heads_two_back.empty() || state.heads_two_back.size() == nodes)
                             : state.flow.head.empty() && state.previous_heads.empty() &&
                                   state.previous_displacements.empty();
   if (!fits) throw std::invalid_argument("coupling state: sizes do not fit the mesh and the blocks");
   iteration_ = completed_ = state.iterations;
   solution_ = std::move(state.flow);
   previous_heads_ = std::move(state.previous_heads);
+  heads_two_back_ = std::move(state.heads_two_back);
   previous_displacements_ = std::move(state.previous_displacements);
   growth_ = state.growth;
+  previous_update_ = std::move(state.previous_update);
+  relaxation_ = state.relaxation;
 }
 
 }  // namespace hydrodda::coupling

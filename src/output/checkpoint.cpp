@@ -8,7 +8,7 @@ namespace hydrodda::output {
 namespace {
 
 constexpr std::string_view kMagic = "hydrodda checkpoint\n";
-constexpr std::int64_t kVersion = 2;  // 2: measure.csv rows after history.csv's
+constexpr std::int64_t kVersion = 3;  // 2: measure.csv rows after history.csv's; 3: the coupling loop's Aitken state
 constexpr std::uint32_t kByteOrderMark = 0x01020304;
 // Any list longer than the file could hold is damage, not data; this bounds allocations.
 constexpr std::int64_t kMaxCount = std::int64_t{1} << 40;
@@ -252,6 +252,9 @@ std::string encode_checkpoint(const RunCheckpoint& c) {
   w.put(c.coupling.growth.passes);
   w.put(c.coupling.growth.base);
   w.put(c.coupling.growth.last);
+  w.put(c.coupling.heads_two_back);
+  w.put(c.coupling.previous_update);
+  w.put(c.coupling.relaxation);
   return w.take();
 }
 
@@ -300,6 +303,9 @@ RunCheckpoint decode_checkpoint(std::string_view bytes) {
   r.get(c.coupling.growth.passes);
   r.get(c.coupling.growth.base);
   r.get(c.coupling.growth.last);
+  r.get(c.coupling.heads_two_back);
+  r.get(c.coupling.previous_update);
+  r.get(c.coupling.relaxation);
   r.expect_end();
   return c;
 }

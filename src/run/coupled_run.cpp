@@ -7,6 +7,7 @@
 #include <vector>
 #include <utility>
 
+#include "coupling/convergence_diagnosis.hpp"
 #include "run/coupled_model.hpp"
 #include "run/figures.hpp"
 #include "run/fracture_output.hpp"
@@ -64,6 +65,7 @@ output::RunSummary run_coupled(const RunContext& context) {
     columns.push_back("region_flow_" + r.name);
     columns.push_back("region_conductivity_" + r.name);
   }
+  columns.insert(columns.end(), {"head_change_two_passes", "relaxation", "load_factor"});
   CsvTable history(columns);
   const std::vector<scenario::MeasurePoint>& measures = s.mechanics->measures;
   CsvTable measure({"iteration", "time", "name", "x", "y", "ux", "uy"});
@@ -144,6 +146,8 @@ output::RunSummary run_coupled(const RunContext& context) {
         row.push_back(region ? CsvTable::cell(region->flow) : "");
         row.push_back(region ? CsvTable::cell(region->effective_conductivity) : "");
       }
+      row.insert(row.end(), {CsvTable::cell(r.head_change_two_passes), CsvTable::cell(r.relaxation),
+                             CsvTable::cell(r.load_factor)});
       history.add_row(row);
       checkpoint.history.push_back(row);
       context.folder.write("history.csv", history.text());
@@ -212,9 +216,16 @@ output::RunSummary run_coupled(const RunContext& context) {
   }
   output::RunSummary summary = current_summary();
   summary.converged = converged;
-  if (!converged)
-    spdlog::warn("the coupling loop did not converge in {} iterations (tolerance {:g})", s.coupling.max_iterations,
-                 s.coupling.tolerance);
+  if (!converged) {
+    const ConvergenceHistory h = read_convergence(checkpoint.history, s.coupling.tolerance);
+    std::vector<double> two_passes;  // history.csv's third column from the end
+    for (const std::vector<std::string>& row : checkpoint.history) two_passes.push_back(std::stod(row[row.size() - 3]));
+    const coupling::ConvergenceDiagnosis why =
+        coupling::diagnose_non_convergence(h.head_change, h.displacement_change, two_passes, s.coupling.tolerance);
+    summary.message = fmt::format("the coupling loop did not converge in {} iterations (tolerance {:g}): {}",
+                                  s.coupling.max_iterations, s.coupling.tolerance, why.text);
+    spdlog::warn("{}", summary.message);
+  }
   return summary;
 }
 

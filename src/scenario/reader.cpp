@@ -416,7 +416,7 @@ void read_coupling(ReadContext& ctx, const TableView& root, Scenario& s) {
       ctx.defaults.push_back({"coupling", "{ tolerance = 1e-4, max_iterations = 50, relaxation = 1 }"});
     return;
   }
-  const TableView c(ctx, *t, "coupling", {"tolerance", "max_iterations", "relaxation"});
+  const TableView c(ctx, *t, "coupling", {"tolerance", "max_iterations", "relaxation", "acceleration", "ramp_passes"});
   s.coupling.tolerance = c.number_or("tolerance", s.coupling.tolerance);
   c.require("tolerance", s.coupling.tolerance > 0.0, "must be > 0");
   if (auto n = c.integer("max_iterations", 1, 1'000'000)) {
@@ -427,6 +427,8 @@ void read_coupling(ReadContext& ctx, const TableView& root, Scenario& s) {
   s.coupling.relaxation = c.number_or("relaxation", s.coupling.relaxation);
   c.require("relaxation", s.coupling.relaxation > 0.0 && s.coupling.relaxation <= 1.0,
             "must lie in (0, 1]");
+  s.coupling.aitken = c.choice("acceleration", {"none", "aitken"}, "none") == 1;
+  if (auto n = c.integer("ramp_passes", 1, 1'000'000)) s.coupling.ramp_passes = *n;
 }
 
 // output.fields: which of the series "fluid", "blocks", "contacts" and "fractures" to write, each once.

@@ -203,6 +203,8 @@ struct CouplingDefinition {
   double tolerance = 1.0e-4;
   int max_iterations = 50;
   double relaxation = 1.0;
+  bool aitken = false;   // acceleration = "aitken": the relaxation adapted from pass to pass
+  int ramp_passes = 1;   // the fluid load raised over the first passes
 };
 
 // The ParaView series a run writes (output.fields).

@@ -1,0 +1,111 @@
+#include "coupling/convergence_diagnosis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace hydrodda::coupling {
+
+namespace {
+
+std::string format_number(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2g", x);
+  return text;
+}
+
+// The least-squares slope of log c against the pass, as a factor per pass.
+double rate_per_pass(const std::vector<double>& c) {
+  const double n = static_cast<double>(c.size());
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const double x = static_cast<double>(i), y = std::log(std::max(c[i], 1e-300));
+    sx += x;
+    sy += y;
+    sxx += x * x;
+    sxy += x * y;
+  }
+  const double denominator = n * sxx - sx * sx;
+  return denominator > 0 ? std::exp((n * sxy - sx * sy) / denominator) : 1.0;
+}
+
+// The share of successive pass-to-pass changes of c that change sign.
+double alternation(const std::vector<double>& c) {
+  int turns = 0, pairs = 0;
+  for (std::size_t i = 2; i < c.size(); ++i) {
+    const double before = c[i - 1] - c[i - 2], after = c[i] - c[i - 1];
+    ++pairs;
+    turns += before * after < 0 ? 1 : 0;
+  }
+  return pairs > 0 ? static_cast<double>(turns) / pairs : 0.0;
+}
+
+}  // namespace
+
+// The median over the passes from `first` of two_back / change: small when the heads keep
+// returning to those of two passes before.
+double return_ratio(const std::vector<double>& change, const std::vector<double>& two_back, std::size_t first) {
+  std::vector<double> ratios;
+  for (std::size_t k = std::max<std::size_t>(first, 2); k < change.size(); ++k)
+    if (change[k] > 0) ratios.push_back(two_back[k] / change[k]);
+  if (ratios.size() < 3) return 1.0;
+  std::nth_element(ratios.begin(), ratios.begin() + static_cast<std::ptrdiff_t>(ratios.size() / 2), ratios.end());
+  return ratios[ratios.size() / 2];
+}
+
+ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_change,
+                                              const std::vector<double>& displacement_change,
+                                              const std::vector<double>& head_change_two_passes, double tolerance) {
+  if (head_change.empty() || head_change.size() != displacement_change.size() ||
+      head_change.size() != head_change_two_passes.size())
+    throw std::invalid_argument("convergence diagnosis: one head and one displacement change per pass are needed");
+  ConvergenceDiagnosis d;
+  d.head_failed = head_change.back() >= tolerance;
+  d.displacement_failed = displacement_change.back() >= tolerance;
+  const bool head_worse = head_change.back() / tolerance >= displacement_change.back() / tolerance;
+  const std::vector<double>& all = head_worse ? head_change : displacement_change;
+  const std::size_t first = std::max<std::size_t>(1, all.size() > 10 ? all.size() - 10 : 1);
+  std::vector<double> last(all.begin() + static_cast<std::ptrdiff_t>(std::min(first, all.size() - 1)), all.end());
+  d.rate = rate_per_pass(last);
+  const bool swinging = return_ratio(head_change, head_change_two_passes, first) < 0.1 || alternation(last) >= 0.6;
+  if (last.size() >= 4 && swinging && d.rate > 0.95) d.behaviour = NonConvergence::oscillating;
+  else if (d.rate > 1.05) d.behaviour = NonConvergence::diverging;
+  else if (d.rate < 0.95) d.behaviour = NonConvergence::still_converging;
+  else d.behaviour = NonConvergence::drifting;
+
+  std::string norms = d.head_failed && d.displacement_failed ? "the head and displacement changes"
+                      : d.head_failed                        ? "the head change"
+                                                             : "the displacement change";
+  if (!d.head_failed && !d.displacement_failed) norms = "neither change (the last pass could not count)";
+  const std::string name = head_worse ? "head" : "displacement";
+  const std::string level = format_number(all.back());
+  switch (d.behaviour) {
+    case NonConvergence::oscillating:
+      d.text = norms + " stayed above the tolerance: the loop oscillates (the " + name + " change near " + level +
+               ", the blocks swinging between two states pass after pass); try coupling.acceleration = "
+               "\"aitken\" or coupling.relaxation = 0.5";
+      break;
+    case NonConvergence::diverging:
+      d.text = norms + " stayed above the tolerance: the " + name + " change diverges (×" + format_number(d.rate) +
+               " a pass, to " + level + "); try coupling.ramp_passes = 5 and coupling.relaxation = 0.3; if it still "
+               "grows, the fluid load may exceed what the blocks' supports and contacts can hold";
+      break;
+    case NonConvergence::still_converging: {
+      d.passes_needed = static_cast<int>(std::ceil(std::log(tolerance / all.back()) / std::log(d.rate)));
+      d.text = norms + " stayed above the tolerance: the " + name + " change still falls (×" +
+               format_number(d.rate) + " a pass, at " + level + "); about " + std::to_string(d.passes_needed) +
+               " more passes would reach it: raise coupling.max_iterations, or try coupling.acceleration = "
+               "\"aitken\"";
+      break;
+    }
+    case NonConvergence::drifting:
+      d.text = norms + " stayed above the tolerance: the " + name + " change drifts (near " + level +
+               ", neither falling nor alternating): the blocks keep moving from pass to pass; try more "
+               "mechanics.steps per pass, or check that the fluid load leaves the blocks an equilibrium";
+      break;
+  }
+  return d;
+}
+
+}  // namespace hydrodda::coupling

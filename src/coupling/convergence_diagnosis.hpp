@@ -1,0 +1,39 @@
+#pragma once
+// Why a staggered loop that ran out of passes did not converge: which norm stayed above the
+// tolerance, how it behaved over the last passes, and what to try.
+
+#include <string>
+#include <vector>
+
+namespace hydrodda::coupling {
+
+enum class NonConvergence {
+  still_converging,  // falling steadily, too slowly for the passes allowed
+  oscillating,       // rising and falling by turns: the loop cycles between states
+  drifting,          // neither falling nor alternating: the blocks keep moving
+  diverging,         // rising
+};
+
+struct ConvergenceDiagnosis {
+  NonConvergence behaviour = NonConvergence::drifting;
+  bool head_failed = false;
+  bool displacement_failed = false;
+  double rate = 1.0;       // the failed norm's mean factor per pass over the last passes
+  int passes_needed = 0;   // still_converging: about how many more passes it needs
+  std::string text;        // one sentence: the norm, the behaviour, what to try
+};
+
+// From the norms of every pass (history.csv's head_change, displacement_change and
+// head_change_two_passes) and the tolerance. The failed norm is the larger of the two (relative
+// to the tolerance) at the last pass; its last passes (up to ten, the first left out) are
+// fitted by log c = a + k log r:
+//   oscillating when it falls by less than 5% a pass and either the heads come back to those of
+//   two passes before (the median of head_change_two_passes / head_change over those passes is
+//   under 0.1: a swing between two states shows a steady change) or the norm rises and falls by
+//   turns (its pass-to-pass changes alternate in sign at least 60% of the time);
+//   diverging when r > 1.05; still converging when r < 0.95; drifting otherwise.
+ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_change,
+                                              const std::vector<double>& displacement_change,
+                                              const std::vector<double>& head_change_two_passes, double tolerance);
+
+}  // namespace hydrodda::coupling

@@ -1,0 +1,99 @@
+// The staggered loop's head norm and the diagnosis of a loop that ran out of passes.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "coupling/convergence_diagnosis.hpp"
+#include "coupling/staggered_loop.hpp"
+
+namespace hydrodda::coupling {
+namespace {
+
+// rms(a − b) / (max a − min a): heads 0, 5, 10 changed by 0, 0.3, 0 → √(0.09/3) / 10.
+TEST(HeadChange, IsTheRmsChangeOverTheRangeOfHeads) {
+  EXPECT_NEAR(head_change({0.0, 5.0, 10.0}, {0.0, 4.7, 10.0}), std::sqrt(0.09 / 3.0) / 10.0, 1e-15);
+  EXPECT_EQ(head_change({1.0, 2.0}, {1.0, 2.0}), 0.0);
+  EXPECT_EQ(head_change({3.0, 3.0}, {3.0, 2.0}), 1.0);  // uniform heads that changed
+}
+
+// Adding a datum d to every head changes neither the change nor the range: the norm is the
+// same to round-off (1e-12 relative with d = 1000 m on heads of tens of metres), where the
+// norm relative to ‖h‖ falls by the ratio of the heads' sizes.
+TEST(HeadChange, DoesNotDependOnTheDatum) {
+  const std::vector<double> now{0.0, 12.5, 31.0, 50.0}, before{0.0, 12.0, 30.0, 50.0};
+  std::vector<double> now_shifted, before_shifted;
+  for (double h : now) now_shifted.push_back(h + 1000.0);
+  for (double h : before) before_shifted.push_back(h + 1000.0);
+  const double plain = head_change(now, before);
+  EXPECT_NEAR(head_change(now_shifted, before_shifted), plain, 1e-12 * plain);
+  EXPECT_LT(relative_change(now_shifted, before_shifted), 0.05 * relative_change(now, before));
+}
+
+std::vector<double> geometric(double first, double factor, int n) {
+  std::vector<double> c{1.0};  // pass 1 is 1 by definition
+  for (int k = 1; k < n; ++k) c.push_back(first * std::pow(factor, k - 1));
+  return c;
+}
+
+// A norm that rises and falls by turns (0.23, 0.26, ...: the cubic-law symmetric flexure at
+// 30 m on a norm relative to ‖h‖) is an oscillation.
+TEST(NonConvergence, AlternatingChangeIsOscillation) {
+  std::vector<double> head{1.0}, displacement{1.0}, two_back{1.0, 1.0};
+  for (int k = 2; k <= 50; ++k) {
+    head.push_back(k % 2 == 0 ? 0.23 : 0.26);
+    displacement.push_back(k % 2 == 0 ? 0.0025 : 0.0018);
+    if (k > 2) two_back.push_back(0.05);
+  }
+  const ConvergenceDiagnosis d = diagnose_non_convergence(head, displacement, two_back, 1e-4);
+  EXPECT_EQ(d.behaviour, NonConvergence::oscillating);
+  EXPECT_TRUE(d.head_failed);
+  EXPECT_TRUE(d.displacement_failed);
+  EXPECT_NE(d.text.find("loop oscillates (the head change"), std::string::npos) << d.text;
+  EXPECT_NE(d.text.find("aitken"), std::string::npos) << d.text;
+}
+
+// A swing between two states A, B, A, B, ...: the change is a steady |A − B| every pass, and
+// the heads come back to those of two passes before (measured: 0.126 a pass, 1e-5 two back).
+// A steady change with heads that do not come back is a drift.
+TEST(NonConvergence, SteadyChangeWithHeadsReturningIsOscillation) {
+  std::vector<double> head{1.0}, displacement{1.0}, returning{1.0, 1.0}, leaving{1.0, 1.0};
+  for (int k = 2; k <= 50; ++k) {
+    head.push_back(0.126);
+    displacement.push_back(0.027);
+    if (k > 2) returning.push_back(1e-5), leaving.push_back(0.25);
+  }
+  EXPECT_EQ(diagnose_non_convergence(head, displacement, returning, 1e-4).behaviour, NonConvergence::oscillating);
+  EXPECT_EQ(diagnose_non_convergence(head, displacement, leaving, 1e-4).behaviour, NonConvergence::drifting);
+}
+
+// c_k = c_2 r^(k−2): the fitted rate is r exactly, and from c_last it takes
+// ceil(log(tol / c_last) / log r) more passes to reach the tolerance.
+TEST(NonConvergence, GeometricDecayIsSlowConvergenceWithThePassesStillNeeded) {
+  const std::vector<double> head = geometric(0.1, 0.8, 20), displacement = geometric(1e-5, 0.5, 20);
+  const ConvergenceDiagnosis d = diagnose_non_convergence(head, displacement, std::vector<double>(head.size(), 1.0), 1e-4);
+  EXPECT_EQ(d.behaviour, NonConvergence::still_converging);
+  EXPECT_NEAR(d.rate, 0.8, 1e-12);
+  EXPECT_TRUE(d.head_failed);
+  EXPECT_FALSE(d.displacement_failed);
+  EXPECT_EQ(d.passes_needed, static_cast<int>(std::ceil(std::log(1e-4 / head.back()) / std::log(0.8))));
+  EXPECT_NE(d.text.find("the head change stayed"), std::string::npos) << d.text;
+}
+
+TEST(NonConvergence, GeometricGrowthIsDivergence) {
+  const ConvergenceDiagnosis d = diagnose_non_convergence(geometric(1e-3, 1.01, 12), geometric(1e-3, 1.3, 12), std::vector<double>(12, 1.0), 1e-4);
+  EXPECT_EQ(d.behaviour, NonConvergence::diverging);
+  EXPECT_NEAR(d.rate, 1.3, 1e-12);
+  EXPECT_NE(d.text.find("displacement change diverges"), std::string::npos) << d.text;
+}
+
+// Neither falling nor alternating: the same change pass after pass, rising slowly.
+TEST(NonConvergence, SteadyChangeIsDrift) {
+  const ConvergenceDiagnosis d = diagnose_non_convergence(geometric(1e-2, 1.001, 30), geometric(1e-6, 0.9, 30), std::vector<double>(30, 1.0), 1e-4);
+  EXPECT_EQ(d.behaviour, NonConvergence::drifting);
+  EXPECT_NE(d.text.find("drifts"), std::string::npos) << d.text;
+}
+
+}  // namespace
+}  // namespace hydrodda::coupling
