@@ -1,5 +1,5 @@
 #!/bin/bash
-# clip_side_by_side.sh [BUILD_DIR] [PEER_DIR] [ROUNDS]
+# clip_side_by_side.sh BUILD_DIR PEER_DIR [ROUNDS]
 # The porosity mapping beside the peer clipping benchmark (shared/peers/clip) on the same
 # triangles and blocks: the peer's clipbench builds a structured mesh of T triangles under B
 # rotated bricks; bench_porosity's BM_PeerBricks/T/B builds the same mesh and bricks from the
@@ -8,8 +8,12 @@
 # same inputs give the same porosity to round-off).
 #   needs: g++ and libboost-dev (the peer's oracle), build/bin/bench_porosity
 set -euo pipefail
-BUILD=${1:-build}
-PEER=${2:-/work/shared/peers/clip}
+if [ $# -lt 2 ]; then
+  echo "usage: $0 BUILD_DIR PEER_DIR [ROUNDS]   (PEER_DIR: the folder holding clipbench.cpp)" >&2
+  exit 2
+fi
+BUILD=$1
+PEER=$2
 ROUNDS=${3:-5}
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
