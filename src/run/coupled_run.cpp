@@ -76,11 +76,12 @@ output::RunSummary run_coupled(const RunContext& context) {
   checkpoint.scenario_file = std::filesystem::absolute(s.file).string();
   ParaviewOutput paraview(context.folder, s.output.fields);
   const std::optional<FractureMeter> meter = make_fracture_meter(s);
+  const FractureMeter::FlowZones flow_zones = meter ? meter->flow_zones(mesh) : FractureMeter::FlowZones{};
   FractureOutput fractures(context.folder, /*with_flow=*/true);
   std::optional<FractureState> fracture_state;  // of the last finished pass
   const auto measure_fractures = [&] {
     fracture_state = meter->measure(model.block_polygons(), system.penetration_tolerance());
-    meter->add_flow(*fracture_state, mesh, loop.flow());
+    meter->add_flow(*fracture_state, flow_zones, loop.flow());
   };
   if (context.resume) {
     const output::RunCheckpoint& saved = *context.resume;

@@ -167,19 +167,13 @@ FractureState FractureMeter::measure(std::span<const geometry::Polygon> blocks, 
   return state;
 }
 
-void FractureMeter::add_flow(FractureState& state, const mesh::TriangleMesh& mesh,
-                             const hydro::FlowSolution& flow) const {
-  if (flow.flux.size() != static_cast<std::size_t>(mesh.triangle_count()))
-    throw std::invalid_argument("fracture results: the flow solution does not fit the mesh");
-  std::vector<double> integral(layout_.traces.size(), 0.0);  // Σ (q_e · t_f) A_e
-  std::vector<Point> direction(layout_.traces.size());
-  for (std::size_t f = 0; f < layout_.traces.size(); ++f) {
-    const Point d = layout_.traces[f].segment.to - layout_.traces[f].segment.from;
-    direction[f] = d / geometry::norm(d);
-  }
-  // Every element against every face: O(elements × faces), a fraction of a flow solve for
-  // the models this program meshes (a spatial index would pay off only for thousands of faces).
+FractureMeter::FlowZones FractureMeter::flow_zones(const mesh::TriangleMesh& mesh) const {
+  FlowZones zones;
+  zones.fracture.assign(static_cast<std::size_t>(mesh.triangle_count()), -1);
+  zones.area.resize(static_cast<std::size_t>(mesh.triangle_count()));
+  // Every element against every face: O(elements × faces), once per run.
   for (int t = 0; t < mesh.triangle_count(); ++t) {
+    zones.area[t] = mesh::triangle_area(mesh, t);
     const Point c = mesh::triangle_centroid(mesh, t);
     int nearest = -1;
     double nearest_distance = std::numeric_limits<double>::infinity();
@@ -195,9 +189,23 @@ void FractureMeter::add_flow(FractureState& state, const mesh::TriangleMesh& mes
         nearest = static_cast<int>(k);
       }
     }
-    if (nearest < 0) continue;
-    const int f = faces_[nearest].fracture;
-    integral[f] += geometry::dot(flow.flux[t], direction[f]) * mesh::triangle_area(mesh, t);
+    if (nearest >= 0) zones.fracture[t] = faces_[nearest].fracture;
+  }
+  return zones;
+}
+
+void FractureMeter::add_flow(FractureState& state, const FlowZones& zones, const hydro::FlowSolution& flow) const {
+  if (flow.flux.size() != zones.fracture.size())
+    throw std::invalid_argument("fracture results: the flow solution does not fit the mesh");
+  std::vector<double> integral(layout_.traces.size(), 0.0);  // Σ (q_e · t_f) A_e
+  std::vector<Point> direction(layout_.traces.size());
+  for (std::size_t f = 0; f < layout_.traces.size(); ++f) {
+    const Point d = layout_.traces[f].segment.to - layout_.traces[f].segment.from;
+    direction[f] = d / geometry::norm(d);
+  }
+  for (std::size_t t = 0; t < zones.fracture.size(); ++t) {
+    const int f = zones.fracture[t];
+    if (f >= 0) integral[f] += geometry::dot(flow.flux[t], direction[f]) * zones.area[t];
   }
   for (FractureResult& r : state.fractures)
     r.flow = r.length > 0.0 ? integral[r.id] / r.length : 0.0;

@@ -83,7 +83,14 @@ class FractureMeter {
   // flux through a section across the fracture, averaged along it: in a tight matrix the flow
   // through the aperture. For one fracture from an inflow to an outflow boundary it is the
   // boundary's flow exactly (the P1 residual identity with the test function s/L).
-  void add_flow(FractureState& state, const mesh::TriangleMesh& mesh, const hydro::FlowSolution& flow) const;
+  // Z_f depends only on the fixed mesh and the traces, so it is found once per run
+  // (flow_zones) and each pass only sums the fluxes (add_flow).
+  struct FlowZones {
+    std::vector<int> fracture;  // per element: the f with e ∈ Z_f, or -1
+    std::vector<double> area;   // per element: A_e
+  };
+  FlowZones flow_zones(const mesh::TriangleMesh& mesh) const;
+  void add_flow(FractureState& state, const FlowZones& zones, const hydro::FlowSolution& flow) const;
 
   const FractureLayout& layout() const { return layout_; }
 
