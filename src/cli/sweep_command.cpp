@@ -129,10 +129,11 @@ int sweep_command(const SweepOptions& options) {
       const run::CaseResult& r = results.record_run(index, case_dir, exit_code);
       ++finished;
       const std::string line = fmt::format("{} ({}): {}{}  [{}/{}]", (*prepared)[index].name,
-                                           describe_case(cases[index]), r.status,
+                                           describe_case(cases[index]), run::status_name(r.status),
                                            r.message.empty() ? "" : ": " + r.message, finished, cases.size());
-      if (r.status == "failed") spdlog::error("{}", line);
-      else spdlog::info("{}", line);
+      if (r.status == run::CaseStatus::ok) spdlog::info("{}", line);
+      else if (r.status == run::CaseStatus::failed) spdlog::error("{}", line);
+      else spdlog::warn("{}", line);
       folder->write("sweep.csv", results.csv_text());
     });
   } catch (const std::exception& e) {
@@ -144,13 +145,15 @@ int sweep_command(const SweepOptions& options) {
   folder->write("sweep.csv", results.csv_text());
   results.plot(directory / "sweep.png", options.title.value_or(base->title));
 
-  const std::size_t failed = results.count_not_ok();
-  if (failed > 0) {
-    spdlog::error("{} of {} case(s) failed or did not run; see {}", failed, cases.size(),
-                  (directory / "sweep.csv").string());
+  // A case that did not converge counts as failed here: its numbers are not a result, and a
+  // script that checks the exit code must not take them for one.
+  const std::size_t not_ok = results.count_not_ok();
+  if (not_ok > 0) {
+    spdlog::error("{} of {} case(s) gave no converged result ({}); see {}", not_ok, cases.size(),
+                  results.describe_not_ok(), (directory / "sweep.csv").string());
     return kRunFailed;
   }
-  spdlog::info("all {} case(s) finished; results in {}", cases.size(), (directory / "sweep.csv").string());
+  spdlog::info("all {} case(s) converged; results in {}", cases.size(), (directory / "sweep.csv").string());
   return kSuccess;
 }
 

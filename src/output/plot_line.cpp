@@ -24,6 +24,14 @@ constexpr int kMarkers = 4;  // circle, square, triangle, diamond
 
 bool is_plottable(double v, bool log_axis) { return std::isfinite(v) && (!log_axis || v > 0.0); }
 
+bool is_open(const LineSeries& s, std::size_t i) { return !s.open.empty() && s.open[i]; }
+
+bool has_open_point(const LinePlotSpec& spec) {
+  return std::any_of(spec.series.begin(), spec.series.end(), [](const LineSeries& s) {
+    return std::find(s.open.begin(), s.open.end(), true) != s.open.end();
+  });
+}
+
 // One axis: data value → page coordinate, linear or log10.
 struct Axis {
   double lo, hi, page_lo, page_hi;
@@ -55,8 +63,9 @@ Axis make_axis(double lo, double hi, bool log_axis, double page_lo, double page_
   return {lo - pad, hi + pad, page_lo, page_hi, false};
 }
 
-void draw_marker(cairo_t* cr, int kind, double x, double y) {
-  const double r = 2.6;
+// A filled marker, or (open) a larger hollow one: white inside, outlined in the current colour.
+void draw_marker(cairo_t* cr, int kind, double x, double y, bool open = false) {
+  const double r = open ? 3.4 : 2.6;
   cairo_new_sub_path(cr);
   switch (kind % kMarkers) {
     case 0: cairo_arc(cr, x, y, r, 0.0, 2.0 * std::numbers::pi); break;
@@ -74,7 +83,18 @@ void draw_marker(cairo_t* cr, int kind, double x, double y) {
       cairo_line_to(cr, x - 1.1 * r, y);
       cairo_close_path(cr);
   }
-  cairo_fill(cr);
+  if (!open) {
+    cairo_fill(cr);
+    return;
+  }
+  cairo_pattern_t* colour = cairo_get_source(cr);
+  cairo_pattern_reference(colour);
+  cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
+  cairo_fill_preserve(cr);
+  cairo_set_source(cr, colour);
+  cairo_pattern_destroy(colour);
+  cairo_set_line_width(cr, 1.3);
+  cairo_stroke(cr);
 }
 
 // A decade label 10^e with a raised exponent; returns its width.
@@ -201,6 +221,11 @@ void draw_legend(cairo_t* cr, const LinePlotSpec& spec, const Axis& x, const Axi
       text_w = std::max(text_w, text_width(cr, s.name));
       ++rows;
     }
+  const bool open_row = !spec.open_label.empty() && has_open_point(spec);
+  if (open_row) {
+    text_w = std::max(text_w, text_width(cr, spec.open_label));
+    ++rows;
+  }
   if (rows == 0) return;
   const double row = 13.0, w = text_w + 36.0, h = row * rows + 6.0, inset = 8.0;
   const double left = x.page_lo, right = x.page_hi, top = y.page_hi, bottom = y.page_lo;
@@ -244,6 +269,12 @@ void draw_legend(cairo_t* cr, const LinePlotSpec& spec, const Axis& x, const Axi
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
     draw_text(cr, spec.series[k].name, bx + 31.0, y, 0.0, 0.5);
   }
+  if (open_row) {
+    const double y = by + 3.0 + row * (r + 0.5);
+    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+    draw_marker(cr, 0, bx + 16.0, y, true);
+    draw_text(cr, spec.open_label, bx + 31.0, y, 0.0, 0.5);
+  }
 }
 
 }  // namespace
@@ -251,9 +282,9 @@ void draw_legend(cairo_t* cr, const LinePlotSpec& spec, const Axis& x, const Axi
 void render_line_plot(const std::filesystem::path& path, const LinePlotSpec& spec) {
   double xlo = std::numeric_limits<double>::infinity(), xhi = -xlo, ylo = xlo, yhi = -xlo;
   for (const LineSeries& s : spec.series) {
-    if (s.x.size() != s.y.size())
-      throw std::invalid_argument(fmt::format("line plot {}: series '{}' has {} x and {} y values", path.string(),
-                                              s.name, s.x.size(), s.y.size()));
+    if (s.x.size() != s.y.size() || (!s.open.empty() && s.open.size() != s.x.size()))
+      throw std::invalid_argument(fmt::format("line plot {}: series '{}' has {} x, {} y and {} open values",
+                                              path.string(), s.name, s.x.size(), s.y.size(), s.open.size()));
     for (std::size_t i = 0; i < s.x.size(); ++i) {
       if (!is_plottable(s.x[i], spec.x_log) || !is_plottable(s.y[i], spec.y_log)) continue;
       xlo = std::min(xlo, s.x[i]);
@@ -307,6 +338,7 @@ void render_line_plot(const std::filesystem::path& path, const LinePlotSpec& spe
       cairo_set_line_width(cr, 1.4);
       bool pen_down = false;
       for (std::size_t i = 0; i < s.x.size(); ++i) {
+        if (is_open(s, i)) continue;  // off the line, which joins its neighbours
         const bool ok = is_plottable(s.x[i], spec.x_log) && is_plottable(s.y[i], spec.y_log);
         if (ok && pen_down) cairo_line_to(cr, x.to_page(s.x[i]), y.to_page(s.y[i]));
         if (ok && !pen_down) cairo_move_to(cr, x.to_page(s.x[i]), y.to_page(s.y[i]));
@@ -315,7 +347,7 @@ void render_line_plot(const std::filesystem::path& path, const LinePlotSpec& spe
       cairo_stroke(cr);
       for (std::size_t i = 0; i < s.x.size(); ++i)
         if (is_plottable(s.x[i], spec.x_log) && is_plottable(s.y[i], spec.y_log))
-          draw_marker(cr, static_cast<int>(k), x.to_page(s.x[i]), y.to_page(s.y[i]));
+          draw_marker(cr, static_cast<int>(k), x.to_page(s.x[i]), y.to_page(s.y[i]), is_open(s, i));
     }
     cairo_restore(cr);
 

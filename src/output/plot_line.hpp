@@ -12,6 +12,9 @@ namespace hydrodda::output {
 struct LineSeries {
   std::string name;  // legend entry; unnamed series are left out of the legend
   std::vector<double> x, y;
+  // Per point (empty: none): drawn as a hollow marker and left off the line, for a value that
+  // is not a result, such as a sweep case that did not converge.
+  std::vector<bool> open;
 };
 
 struct ReferenceLine {
@@ -25,11 +28,12 @@ struct LinePlotSpec {
   bool x_log = false, y_log = false;
   std::vector<LineSeries> series;
   std::vector<ReferenceLine> references;
+  std::string open_label;  // the legend entry of the hollow markers, shown when some point is open
   double width = 460.0, height = 320.0;  // points
 };
 
 // On a log axis non-positive values are skipped (the line breaks there). Throws
-// std::invalid_argument naming the path if a series' x and y differ in length or nothing is
+// std::invalid_argument naming the path if a series' x and y (or a non-empty open) differ in length or nothing is
 // plottable, std::runtime_error naming the path if the file cannot be written.
 void render_line_plot(const std::filesystem::path& path, const LinePlotSpec& spec);
 

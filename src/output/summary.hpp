@@ -47,7 +47,7 @@ struct RunSummary {
   std::string scenario;          // the scenario file as given
   bool converged = false;
   int iterations = 0;
-  std::string status = "ok";     // "ok", or what failed
+  std::string status = "ok";     // "ok", "stopped" (--stop-after), "interrupted" or "failed"
   std::string message;
   std::vector<BlockSummary> blocks;
   std::vector<MeasureSummary> measures;

@@ -21,11 +21,12 @@ void write_summary(const output::RunFolder& folder, const output::RunSummary& su
   folder.write("summary.json", output::format_summary(summary));
 }
 
-// A run that stopped before its end: summary.json says so (converged = false, what happened).
+// A run that stopped before its end: summary.json says so (converged = false, status
+// "interrupted" or "failed", what happened).
 RunResult record_failure(const output::RunFolder& folder, RunStatus status, const std::string& what,
                          output::RunSummary summary) {
   summary.converged = false;
-  summary.status = "failed";
+  summary.status = status == RunStatus::interrupted ? "interrupted" : "failed";
   summary.message = what;
   try {
     write_summary(folder, summary);

@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <csignal>
 #include <fstream>
 
 #include "output/csv_table.hpp"
@@ -33,7 +34,22 @@ std::string find_last_error(const std::filesystem::path& log) {
   return last;
 }
 
+// A child ended by SIGINT or SIGTERM before it could write its summary (128 + the signal).
+bool ended_by_interrupt(int exit_code) { return exit_code == 128 + SIGINT || exit_code == 128 + SIGTERM; }
+
 }  // namespace
+
+std::string_view status_name(CaseStatus status) {
+  switch (status) {
+    case CaseStatus::pending: return "pending";
+    case CaseStatus::ok: return "ok";
+    case CaseStatus::not_converged: return "not converged";
+    case CaseStatus::failed: return "failed";
+    case CaseStatus::interrupted: return "interrupted";
+    case CaseStatus::not_run: return "not run";
+  }
+  return "pending";
+}
 
 SweepResults::SweepResults(std::vector<SweepAxis> axes, std::vector<std::vector<scenario::Override>> cases,
                            std::vector<std::string> columns, bool zipped)
@@ -47,36 +63,45 @@ void SweepResults::set_name(std::size_t index, std::string name) { results_[inde
 
 const CaseResult& SweepResults::record_run(std::size_t index, const std::filesystem::path& case_dir, int exit_code) {
   CaseResult& r = results_[index];
-  r.status = "failed";
+  const std::string name = r.name;
+  r = CaseResult();
+  r.name = name;
+  r.status = ended_by_interrupt(exit_code) ? CaseStatus::interrupted : CaseStatus::failed;
   const std::filesystem::path summary = case_dir / "summary.json";
   if (std::filesystem::exists(summary)) {
     std::vector<std::string> paths{"status", "message", "converged", "iterations"};
     paths.insert(paths.end(), columns_.begin(), columns_.end());
     try {
       const auto values = output::read_summary_values(summary, paths);
-      if (exit_code == 0 && values[0] == "ok") r.status = "ok";
       r.message = values[1].value_or("");
       r.converged = values[2].value_or("");
       r.iterations = values[3].value_or("");
       r.columns.assign(values.begin() + 4, values.end());
+      if (values[0] == "interrupted") {
+        r.status = CaseStatus::interrupted;
+      } else if (exit_code == 0 && values[0] == "ok") {
+        r.status = r.converged == "true" ? CaseStatus::ok : CaseStatus::not_converged;
+        if (r.status == CaseStatus::not_converged && r.message.empty())
+          r.message = fmt::format("the coupling loop did not converge in {} iteration(s)", r.iterations);
+      }
     } catch (const std::exception& e) {
       r.message = e.what();
     }
   }
   if (r.columns.empty()) r.columns.assign(columns_.size(), std::nullopt);
-  if (r.status == "failed" && r.message.empty()) {
+  if (r.status != CaseStatus::ok && r.message.empty()) {
     const std::string error = find_last_error(case_dir / "run.log");
     r.message = fmt::format("exit code {}{}; see {}", exit_code, error.empty() ? "" : ": " + error,
                             (case_dir / "run.log").string());
   }
-  if (r.status == "ok")
+  if (r.status == CaseStatus::ok)
     for (std::size_t c = 0; c < columns_.size(); ++c)
       if (!r.columns[c]) spdlog::warn("{}: summary.json has no value at {}", r.name, columns_[c]);
   return r;
 }
 
 void SweepResults::record_not_run(std::size_t index) {
-  results_[index].status = "not run";
+  results_[index].status = CaseStatus::not_run;
   results_[index].message = "the sweep was interrupted before this case started";
   results_[index].columns.assign(columns_.size(), std::nullopt);
 }
@@ -90,10 +115,10 @@ std::string SweepResults::csv_text() const {
   output::CsvTable table(header);
   for (std::size_t i = 0; i < results_.size(); ++i) {
     const CaseResult& r = results_[i];
-    if (r.status == "pending") continue;
+    if (r.status == CaseStatus::pending) continue;
     std::vector<std::string> row{r.name};
     for (const scenario::Override& o : cases_[i]) row.push_back(o.value);
-    row.insert(row.end(), {r.status, r.converged, r.iterations});
+    row.insert(row.end(), {std::string(status_name(r.status)), r.converged, r.iterations});
     for (const auto& v : r.columns) row.push_back(v.value_or(""));
     row.push_back(r.message);
     table.add_row(row);
@@ -101,54 +126,86 @@ std::string SweepResults::csv_text() const {
   return table.text();
 }
 
-void SweepResults::plot(const std::filesystem::path& file, const std::string& title) const {
+SweepPlot SweepResults::plot_spec(const std::string& title) const {
+  SweepPlot plot;
   if (columns_.empty() || axes_.empty()) {
-    spdlog::info("no column to plot (choose one with --column): {} not drawn", file.string());
-    return;
+    plot.why_not = "no column to plot (choose one with --column)";
+    return plot;
   }
-  output::LinePlotSpec spec;
+  output::LinePlotSpec& spec = plot.spec;
   spec.title = title;
   spec.x_label = axes_[0].key;
   spec.y_label = columns_[0];
+  spec.open_label = "not converged";
   for (std::size_t i = 0; i < results_.size(); ++i) {
     const CaseResult& r = results_[i];
     const std::optional<double> x = to_number(cases_[i][0].value);
     if (!x) {
-      spdlog::info("{} takes values that are not numbers: {} not drawn", axes_[0].key, file.string());
-      return;
+      plot.why_not = fmt::format("{} takes values that are not numbers", axes_[0].key);
+      spec.series.clear();
+      return plot;
     }
-    const std::optional<double> y = r.status == "ok" && r.columns[0] ? to_number(*r.columns[0]) : std::nullopt;
+    const bool drawn = r.status == CaseStatus::ok || r.status == CaseStatus::not_converged;
+    const std::optional<double> y = drawn && r.columns[0] ? to_number(*r.columns[0]) : std::nullopt;
     if (!y) continue;
     std::string series;
     for (std::size_t k = 1; !zipped_ && k < cases_[i].size(); ++k)
       series += fmt::format("{}{} = {}", series.empty() ? "" : ", ", cases_[i][k].key, cases_[i][k].value);
     auto it = std::find_if(spec.series.begin(), spec.series.end(),
                            [&](const output::LineSeries& s) { return s.name == series; });
-    if (it == spec.series.end()) it = spec.series.insert(spec.series.end(), output::LineSeries{series, {}, {}});
+    if (it == spec.series.end()) it = spec.series.insert(spec.series.end(), output::LineSeries{series, {}, {}, {}});
     it->x.push_back(*x);
     it->y.push_back(*y);
+    it->open.push_back(r.status == CaseStatus::not_converged);
   }
   if (spec.series.empty()) {
-    spdlog::warn("no case gave a number for {}: {} not drawn", columns_[0], file.string());
-    return;
+    plot.why_not = fmt::format("no case gave a number for {}", columns_[0]);
+    return plot;
   }
   for (output::LineSeries& s : spec.series) {  // in x order, whatever order the values were given in
     std::vector<std::size_t> order(s.x.size());
     for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return s.x[a] < s.x[b]; });
-    output::LineSeries sorted{s.name, {}, {}};
+    output::LineSeries sorted{s.name, {}, {}, {}};
     for (std::size_t k : order) {
       sorted.x.push_back(s.x[k]);
       sorted.y.push_back(s.y[k]);
+      sorted.open.push_back(s.open[k]);
     }
     s = std::move(sorted);
   }
-  output::render_line_plot(file, spec);
+  return plot;
+}
+
+void SweepResults::plot(const std::filesystem::path& file, const std::string& title) const {
+  const SweepPlot plot = plot_spec(title);
+  if (plot.spec.series.empty()) {
+    if (columns_.empty()) spdlog::info("{}: {} not drawn", plot.why_not, file.string());
+    else spdlog::warn("{}: {} not drawn", plot.why_not, file.string());
+    return;
+  }
+  output::render_line_plot(file, plot.spec);
+}
+
+std::array<std::size_t, kCaseStatuses> SweepResults::count_by_status() const {
+  std::array<std::size_t, kCaseStatuses> counts{};
+  for (const CaseResult& r : results_) ++counts[static_cast<std::size_t>(r.status)];
+  return counts;
 }
 
 std::size_t SweepResults::count_not_ok() const {
-  return static_cast<std::size_t>(
-      std::count_if(results_.begin(), results_.end(), [](const CaseResult& r) { return r.status != "ok"; }));
+  const auto counts = count_by_status();
+  return results_.size() - counts[static_cast<std::size_t>(CaseStatus::ok)] -
+         counts[static_cast<std::size_t>(CaseStatus::pending)];
+}
+
+std::string SweepResults::describe_not_ok() const {
+  const auto counts = count_by_status();
+  std::string text;
+  for (CaseStatus s : {CaseStatus::not_converged, CaseStatus::failed, CaseStatus::interrupted, CaseStatus::not_run})
+    if (const std::size_t n = counts[static_cast<std::size_t>(s)])
+      text += fmt::format("{}{} {}", text.empty() ? "" : ", ", n, status_name(s));
+  return text;
 }
 
 }  // namespace hydrodda::run

@@ -1,20 +1,38 @@
 #pragma once
 // What the cases of a sweep gave: one row per case in sweep.csv, and the response plot.
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "output/plot_line.hpp"
 #include "run/sweep_plan.hpp"
 
 namespace hydrodda::run {
 
+// What became of a case. Only `ok` is a result: `not_converged` ran to its end without meeting
+// the coupling tolerance, `failed` stopped on an error (or left no summary), `interrupted`
+// stopped at a signal, `not_run` never started because the sweep was interrupted.
+enum class CaseStatus { pending, ok, not_converged, failed, interrupted, not_run };
+inline constexpr std::size_t kCaseStatuses = 6;
+
+// As sweep.csv writes it: "ok", "not converged", "failed", "interrupted", "not run".
+std::string_view status_name(CaseStatus status);
+
 struct CaseResult {
-  std::string name;                // case_000
-  std::string status = "pending";  // "ok", "failed" or "not run" once known
+  std::string name;  // case_000
+  CaseStatus status = CaseStatus::pending;
   std::string converged, iterations, message;
   std::vector<std::optional<std::string>> columns;  // the chosen summary.json values
+};
+
+// What sweep.png draws; no series when nothing can be drawn, and `why_not` says why.
+struct SweepPlot {
+  output::LinePlotSpec spec;
+  std::string why_not;
 };
 
 class SweepResults {
@@ -25,7 +43,9 @@ class SweepResults {
                std::vector<std::string> columns, bool zipped = false);
 
   void set_name(std::size_t index, std::string name);
-  // Reads the case's summary.json; a case is "ok" when its run exited with 0 and says so.
+  // Reads the case's summary.json: "ok" when the run exited with 0, says "ok" and converged;
+  // "not converged" when it exited with 0 but did not converge; "interrupted" when it says
+  // so or a signal ended it (exit code 130 or 143) before it wrote one; otherwise "failed".
   const CaseResult& record_run(std::size_t index, const std::filesystem::path& case_dir, int exit_code);
   void record_not_run(std::size_t index);
 
@@ -33,10 +53,19 @@ class SweepResults {
   // case with a result, in case order.
   std::string csv_text() const;
   // The first chosen column against the first swept key, one series per combination of the
-  // other keys' values; cases without a number there are left out. Logs why when nothing can
-  // be drawn.
+  // other keys' values; a case that did not converge is a hollow marker off the line (legend
+  // "not converged"); failed, interrupted and unstarted cases are left out. Logs why when
+  // nothing can be drawn.
   void plot(const std::filesystem::path& file, const std::string& title) const;
+  SweepPlot plot_spec(const std::string& title) const;
+
+  // How many cases ended each way, indexed by CaseStatus.
+  std::array<std::size_t, kCaseStatuses> count_by_status() const;
+  // The cases that gave no converged result (every status but ok and pending).
   std::size_t count_not_ok() const;
+  // "1 not converged, 1 failed": each status other than ok that some case has, in the order
+  // of CaseStatus; empty when none.
+  std::string describe_not_ok() const;
 
  private:
   std::vector<SweepAxis> axes_;

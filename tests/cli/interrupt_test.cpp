@@ -77,6 +77,7 @@ TEST(Interrupt, ALongCouplingPassStopsAtTheNextStepAndReportsTheLastFinishedStat
   EXPECT_EQ(WEXITSTATUS(status), 1);
 
   const auto summary = nlohmann::json::parse(std::ifstream(out / "summary.json"));
+  EXPECT_EQ(summary["status"], "interrupted");
   EXPECT_EQ(summary["converged"], false);
   EXPECT_EQ(summary["iterations"], 0);
   const std::string message = summary["message"];

@@ -58,17 +58,28 @@ inline nlohmann::json run_scenario_and_read(const std::string& relative_path) {
   return summary;
 }
 
-// Rows of a CSV file whose cells hold no quoted separators; a trailing empty cell is kept.
+// Rows of a CSV file; a cell in double quotes may hold commas, and "" inside it is one quote
+// (RFC 4180, as output::CsvTable writes it). A trailing empty cell is kept.
 inline std::vector<std::vector<std::string>> read_csv(const std::filesystem::path& file) {
   std::vector<std::vector<std::string>> rows;
   std::ifstream in(file);
   std::string line;
   while (std::getline(in, line)) {
-    std::vector<std::string> cells;
-    std::stringstream cells_in(line);
-    std::string cell;
-    while (std::getline(cells_in, cell, ',')) cells.push_back(cell);
-    if (!line.empty() && line.back() == ',') cells.emplace_back();
+    std::vector<std::string> cells(1);
+    bool quoted = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      const char c = line[i];
+      if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        cells.back() += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = !quoted;
+      } else if (c == ',' && !quoted) {
+        cells.emplace_back();
+      } else {
+        cells.back() += c;
+      }
+    }
     rows.push_back(cells);
   }
   return rows;

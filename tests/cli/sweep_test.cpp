@@ -84,7 +84,8 @@ TEST(Sweep, AFailedCaseIsReportedAndTheOthersFinish) {
                                   " --set mechanics.end_time=0.05 --set material.rock.density=2500,1e308"
                                   " --column measure.centre.displacement.1 -o " + out.string());
   EXPECT_EQ(result.exit_code, 1) << result.output;
-  EXPECT_NE(result.output.find("1 of 2 case(s) failed"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("1 of 2 case(s) gave no converged result (1 failed)"), std::string::npos)
+      << result.output;
   const auto rows = read_csv(out / "sweep.csv");
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[0], (std::vector<std::string>{"case", "mechanics.end_time", "material.rock.density", "status",
@@ -102,6 +103,30 @@ TEST(Sweep, AFailedCaseIsReportedAndTheOthersFinish) {
   EXPECT_EQ(rows[2][6], "0");  // the last good state's: the initial one
   EXPECT_NE(rows[2][7].find("mechanics failed at step 1"), std::string::npos) << rows[2][7];
   EXPECT_NE(rows[2][7].find("not finite"), std::string::npos) << rows[2][7];
+  fs::remove_all(out);
+}
+
+// A case that stops at coupling.max_iterations without meeting the tolerance is "not converged",
+// never "ok": the sweep says how many, exits with 1, and still gathers the other case.
+TEST(Sweep, AnUnconvergedCaseIsMarkedAndCounted) {
+  const fs::path out = fresh_dir("hydrodda-sweep-unconverged");
+  const auto result = run_program("sweep " + (kSource / "scenarios/verification/coupled_hydrostatic_column.toml").string() +
+                                  " --set flow.boundary[0].head=3,3.5 --set coupling.max_iterations=1,20 --zip"
+                                  " --column measure.top.displacement.1 -o " + out.string());
+  EXPECT_EQ(result.exit_code, 1) << result.output;
+  EXPECT_NE(result.output.find("1 of 2 case(s) gave no converged result (1 not converged)"), std::string::npos)
+      << result.output;
+  const auto rows = read_csv(out / "sweep.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  ASSERT_EQ(rows[1].size(), 8u);
+  EXPECT_EQ(rows[1][3], "not converged");
+  EXPECT_EQ(rows[1][4], "false");
+  EXPECT_EQ(rows[1][5], "1");
+  EXPECT_NE(rows[1][7].find("did not converge in 1 iteration"), std::string::npos) << rows[1][7];
+  ASSERT_EQ(rows[2].size(), 8u);
+  EXPECT_EQ(rows[2][3], "ok");
+  EXPECT_EQ(rows[2][4], "true");
+  EXPECT_TRUE(fs::exists(out / "sweep.png"));
   fs::remove_all(out);
 }
 
@@ -183,7 +208,7 @@ TEST(Sweep, InterruptStopsLaunchingAndReachesTheRunningCase) {
   EXPECT_EQ(WEXITSTATUS(status), 1);
   const auto rows = read_csv(out / "sweep.csv");
   ASSERT_EQ(rows.size(), 4u);
-  EXPECT_EQ(rows[1][2], "failed");  // the running case stopped at the interrupt ...
+  EXPECT_EQ(rows[1][2], "interrupted");  // the running case stopped at the interrupt ...
   EXPECT_NE(rows[1].back().find("interrupted"), std::string::npos) << rows[1].back();
   EXPECT_EQ(rows[2][2], "not run");  // ... and no further case started
   EXPECT_EQ(rows[3][2], "not run");

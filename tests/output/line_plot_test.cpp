@@ -30,7 +30,7 @@ LinePlotSpec make_convergence_spec() {
   spec.x_label = "coupling iteration";
   spec.y_label = "relative change";
   spec.y_log = true;
-  LineSeries head{"head", {}, {}}, displacement{"displacement", {}, {}};
+  LineSeries head{"head", {}, {}, {}}, displacement{"displacement", {}, {}, {}};
   for (int i = 1; i <= 12; ++i) {
     head.x.push_back(i);
     head.y.push_back(std::pow(0.35, i));
@@ -71,7 +71,7 @@ TEST_F(LinePlot, LinearAxesAndOneSeriesPerValue) {
   spec.x_label = "head differential (m)";
   spec.y_label = "K / K matrix";
   for (double load : {5.0, 10.0}) {
-    LineSeries s{"load " + std::to_string(static_cast<int>(load)), {}, {}};
+    LineSeries s{"load " + std::to_string(static_cast<int>(load)), {}, {}, {}};
     for (double dh = 5.0; dh <= 20.0; dh += 5.0) {
       s.x.push_back(dh);
       s.y.push_back(1.0 + 0.02 * dh * dh / load);
@@ -85,15 +85,20 @@ TEST_F(LinePlot, LinearAxesAndOneSeriesPerValue) {
 
 TEST_F(LinePlot, BadInputIsRejected) {
   LinePlotSpec spec;
-  spec.series = {LineSeries{"bad", {1, 2}, {1}}};
+  spec.series = {LineSeries{"bad", {1, 2}, {1}, {}}};
   EXPECT_THROW(render_line_plot(dir / "a.png", spec), std::invalid_argument);
   // Only non-positive values on a log axis: nothing to plot.
-  spec.series = {LineSeries{"zero", {1, 2}, {0, -1}}};
+  spec.series = {LineSeries{"zero", {1, 2}, {0, -1}, {}}};
   spec.y_log = true;
   EXPECT_THROW(render_line_plot(dir / "b.png", spec), std::invalid_argument);
-  spec.series = {LineSeries{"ok", {1, 2}, {1, 2}}};
+  // An open flag for each point, or none.
+  spec.y_log = false;
+  spec.series = {LineSeries{"open", {1, 2}, {1, 2}, {true}}};
+  EXPECT_THROW(render_line_plot(dir / "d.png", spec), std::invalid_argument);
+  spec.series = {LineSeries{"ok", {1, 2}, {1, 2}, {}}};
   EXPECT_THROW(render_line_plot(dir / "c.jpg", spec), std::runtime_error);
   EXPECT_FALSE(fs::exists(dir / "a.png"));
+  EXPECT_FALSE(fs::exists(dir / "d.png"));
 }
 
 }  // namespace

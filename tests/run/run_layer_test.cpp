@@ -252,7 +252,7 @@ TEST(RunLayer, AStopRequestedAfterTheFirstPassLeavesTheFolderAtThatPass) {
   EXPECT_EQ(stopped.iterations, 1);
   EXPECT_EQ(stopped.message, "interrupted after coupling iteration 1");
   EXPECT_EQ(recorder.reports.size(), 1u);
-  EXPECT_EQ(stopped.summary.status, "failed");
+  EXPECT_EQ(stopped.summary.status, "interrupted");
   EXPECT_EQ(read_file(parts.path / "summary.json"), hydrodda::output::format_summary(stopped.summary));
   EXPECT_EQ(count_lines(parts.path / "history.csv"), 2u);  // header and pass 1
   EXPECT_TRUE(fs::exists(parts.path / "fluid_0001.vtu"));
