@@ -72,10 +72,21 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
   if (!(hi > lo)) hi = lo + 1.0;
   const auto colour = [&](double v) { return viridis((v - lo) / (hi - lo)); };
 
-  // Elements: flat colour of the element (mean of nodes for a node field).
-  for (std::size_t t = 0; t < f.triangles.size(); ++t) {
+  // Elements: flat colour of the element (mean of nodes for a node field), painted from the
+  // smallest value up, so that the thin, high-valued elements along a joint are not covered
+  // by their neighbours' seam hairlines.
+  const auto element_value = [&](std::size_t t) {
     const auto& tri = f.triangles[t];
-    const double v = per_node ? (values[tri[0]] + values[tri[1]] + values[tri[2]]) / 3.0 : values[t];
+    return per_node ? (values[tri[0]] + values[tri[1]] + values[tri[2]]) / 3.0 : values[t];
+  };
+  std::vector<std::size_t> paint_order(f.triangles.size());
+  for (std::size_t t = 0; t < paint_order.size(); ++t) paint_order[t] = t;
+  if (!per_node)
+    std::stable_sort(paint_order.begin(), paint_order.end(),
+                     [&](std::size_t a, std::size_t b) { return element_value(a) < element_value(b); });
+  for (std::size_t t : paint_order) {
+    const auto& tri = f.triangles[t];
+    const double v = element_value(t);
     const auto c = colour(v);
     cairo_set_source_rgb(cr, c[0], c[1], c[2]);
     cairo_move_to(cr, fr.px(f.nodes[tri[0]].x), fr.py(f.nodes[tri[0]].y));
@@ -113,8 +124,13 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
       cairo_fill(cr);
     }
   }
-  cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-  cairo_set_line_width(cr, f.segments.empty() ? 1.2 : 0.4);
+  if (f.faint_blocks) {
+    cairo_set_source_rgba(cr, 0.6, 0.6, 0.6, 0.6);
+    cairo_set_line_width(cr, 0.4);
+  } else {
+    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+    cairo_set_line_width(cr, f.segments.empty() ? 1.2 : 0.4);
+  }
   for (const auto& b : f.blocks) {
     for (std::size_t i = 0; i < b.size(); ++i) {
       if (i == 0) cairo_move_to(cr, fr.px(b[i].x), fr.py(b[i].y));
@@ -140,39 +156,45 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
     }
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
 
-  // Flux arrows: length ∝ |q| up to 4% of the plot's width; under 1% of the largest hidden.
+  // Flux arrows: length ∝ |q|, the largest 8% of the plot's width; under 1% of the largest
+  // hidden, as the paper's Fig. 6. The arrows are thinned to one per cell of a 40 × 40 grid
+  // over the domain, each cell showing its largest flux.
+  double q_max = 0.0;
+  const double full = 0.08 * box.width() * fr.scale;
+  const auto draw_arrow = [&](double xc, double yc, Point q, double len) {
+    const double m = geometry::norm(q);
+    const double ux = q.x / m, uy = -q.y / m;  // page y points down
+    const double x0 = xc - 0.5 * len * ux, y0 = yc - 0.5 * len * uy;
+    const double x1 = x0 + len * ux, y1 = y0 + len * uy;
+    cairo_move_to(cr, x0, y0);
+    cairo_line_to(cr, x1, y1);
+    const double head = std::min(6.0, 0.35 * len);
+    cairo_move_to(cr, x1, y1);
+    cairo_line_to(cr, x1 - head * (ux * 0.87 - uy * 0.5), y1 - head * (uy * 0.87 + ux * 0.5));
+    cairo_move_to(cr, x1, y1);
+    cairo_line_to(cr, x1 - head * (ux * 0.87 + uy * 0.5), y1 - head * (uy * 0.87 - ux * 0.5));
+    cairo_stroke(cr);
+  };
   if (!f.element_flux.empty()) {
-    double q_max = 0.0;
     for (Point q : f.element_flux) q_max = std::max(q_max, geometry::norm(q));
-    const double full = 0.04 * box.width() * fr.scale;
-    // Thin the arrows to about one per (plot width / 40)² by a grid over centroids.
     const double cell = box.width() / 40.0;
-    std::vector<char> taken(41 * 41, 0);
-    cairo_set_source_rgb(cr, 0.85, 0.1, 0.1);
-    cairo_set_line_width(cr, 0.9);
+    std::vector<long> largest(41 * 41, -1);
     for (std::size_t t = 0; t < f.triangles.size() && q_max > 0.0; ++t) {
-      const Point q = f.element_flux[t];
-      const double m = geometry::norm(q);
-      if (m < 0.01 * q_max) continue;
+      if (geometry::norm(f.element_flux[t]) < 0.01 * q_max) continue;
       const auto& tri = f.triangles[t];
       const Point c = (f.nodes[tri[0]] + f.nodes[tri[1]] + f.nodes[tri[2]]) / 3.0;
       const int gx = std::clamp(static_cast<int>((c.x - box.lo.x) / cell), 0, 40);
       const int gy = std::clamp(static_cast<int>((c.y - box.lo.y) / cell), 0, 40);
-      char& slot = taken[static_cast<std::size_t>(gy) * 41 + gx];
-      if (slot) continue;
-      slot = 1;
-      const double len = full * m / q_max;
-      const double ux = q.x / m, uy = -q.y / m;  // page y points down
-      const double x0 = fr.px(c.x) - 0.5 * len * ux, y0 = fr.py(c.y) - 0.5 * len * uy;
-      const double x1 = x0 + len * ux, y1 = y0 + len * uy;
-      cairo_move_to(cr, x0, y0);
-      cairo_line_to(cr, x1, y1);
-      const double head = std::min(5.0, 0.4 * len);
-      cairo_move_to(cr, x1, y1);
-      cairo_line_to(cr, x1 - head * (ux * 0.87 - uy * 0.5), y1 - head * (uy * 0.87 + ux * 0.5));
-      cairo_move_to(cr, x1, y1);
-      cairo_line_to(cr, x1 - head * (ux * 0.87 + uy * 0.5), y1 - head * (uy * 0.87 - ux * 0.5));
-      cairo_stroke(cr);
+      long& slot = largest[static_cast<std::size_t>(gy) * 41 + gx];
+      if (slot < 0 || geometry::norm(f.element_flux[t]) > geometry::norm(f.element_flux[slot])) slot = static_cast<long>(t);
+    }
+    cairo_set_source_rgb(cr, 0.85, 0.1, 0.1);
+    cairo_set_line_width(cr, 1.1);
+    for (long t : largest) {
+      if (t < 0) continue;
+      const auto& tri = f.triangles[t];
+      const Point c = (f.nodes[tri[0]] + f.nodes[tri[1]] + f.nodes[tri[2]]) / 3.0;
+      draw_arrow(fr.px(c.x), fr.py(c.y), f.element_flux[t], full * geometry::norm(f.element_flux[t]) / q_max);
     }
   }
 
@@ -197,8 +219,21 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
   }
   draw_text(cr, "x (m)", fr.px(0.5 * (box.lo.x + box.hi.x)), fr.py(box.lo.y) + 28, 0.5, 0.0);
   draw_text(cr, "y (m)", fr.px(box.lo.x) - 48, fr.py(0.5 * (box.lo.y + box.hi.y)), 0.5, 0.5, -M_PI / 2);
+  // Title (shrunk to the page when long), then the quantity, or a warning in red.
   cairo_set_font_size(cr, 14);
-  draw_text(cr, f.title, 0.5 * width, 18, 0.5, 0.0);
+  const double title_width = text_width(cr, f.title);
+  if (title_width > width - 20) cairo_set_font_size(cr, 14 * (width - 20) / title_width);
+  draw_text(cr, f.title, 0.5 * width, 8, 0.5, 0.0);
+  cairo_set_font_size(cr, 11);
+  if (!f.warning.empty()) {
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+    cairo_set_source_rgb(cr, 0.8, 0.0, 0.0);
+    draw_text(cr, f.subtitle.empty() ? f.warning : f.subtitle + ": " + f.warning, 0.5 * width, 28, 0.5, 0.0);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  } else if (!f.subtitle.empty()) {
+    draw_text(cr, f.subtitle, 0.5 * width, 28, 0.5, 0.0);
+  }
 
   // Colour bar.
   const double bar_x = fr.px(box.hi.x) + 25, bar_top = fr.py(box.hi.y);
@@ -213,15 +248,38 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
   cairo_rectangle(cr, bar_x, bar_top, 16, bar_height);
   cairo_stroke(cr);
   cairo_set_font_size(cr, 10);
-  for (double v : nice_ticks(lo, hi, 6)) {
+  double widest_tick = 0.0;
+  // A log bar is ticked at values (decades, or 1, 2, 5 times them over a short range), placed
+  // at their log10, and labelled with the value itself.
+  std::vector<double> ticks = nice_ticks(lo, hi, 6);
+  if (f.logarithmic) {
+    ticks.clear();
+    for (double v : log_ticks(std::pow(10.0, lo), std::pow(10.0, hi))) ticks.push_back(std::log10(v));
+  }
+  for (double v : ticks) {
     const double y = bar_top + bar_height * (1.0 - (v - lo) / (hi - lo));
+    if (y < bar_top - 0.5 || y > bar_top + bar_height + 0.5) continue;
     cairo_move_to(cr, bar_x + 16, y);
     cairo_line_to(cr, bar_x + 20, y);
     cairo_stroke(cr);
-    draw_text(cr, f.logarithmic ? fmt::format("1e{:g}", v) : tick_label(v), bar_x + 23, y, 0.0, 0.5);
+    const std::string label = f.logarithmic ? fmt::format("{:.3g}", std::pow(10.0, v)) : tick_label(v);
+    widest_tick = std::max(widest_tick, text_width(cr, label));
+    draw_text(cr, label, bar_x + 23, y, 0.0, 0.5);
   }
+  // The bar's label just beside its tick labels.
   cairo_set_font_size(cr, 11);
-  draw_text(cr, f.field_label, bar_x + 85, bar_top + 0.5 * bar_height, 0.5, 0.5, -M_PI / 2);
+  draw_text(cr, f.field_label, bar_x + 23 + widest_tick + 6, bar_top + 0.5 * bar_height, 0.5, 0.0, -M_PI / 2);
+
+  // The key arrow under the colour bar: the largest flux's length, and its value.
+  if (q_max > 0.0) {
+    const double key_y = bar_top + bar_height + 28;
+    cairo_set_source_rgb(cr, 0.85, 0.1, 0.1);
+    cairo_set_line_width(cr, 1.1);
+    draw_arrow(bar_x + 0.5 * full, key_y, {1.0, 0.0}, full);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_set_font_size(cr, 10);
+    draw_text(cr, fmt::format("{:.3g} {}", q_max, f.flux_unit), bar_x, key_y + 8, 0.0, 0.0);
+  }
 }
 
 }  // namespace

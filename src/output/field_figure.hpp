@@ -1,7 +1,9 @@
 #pragma once
 // A map of a run as the paper draws it (its Figs. 6, 8, 11): the fluid mesh coloured by a
-// field (or the blocks with coloured lines over them), head contours, the deformed blocks, and Darcy flux arrows (arrows under 1% of the
-// largest hidden); a colour bar, axes in metres, a title. PNG, SVG or PDF by file extension.
+// field (or the blocks with coloured lines over them), head contours, the deformed blocks, and
+// Darcy flux arrows (the largest 8% of the plot's width, under 1% of the largest hidden, a key
+// arrow with its value); a colour bar labelled beside it, axes in metres, a title. PNG, SVG or
+// PDF by file extension.
 
 #include <array>
 #include <filesystem>
@@ -15,7 +17,9 @@
 namespace hydrodda::output {
 
 struct FieldFigure {
-  std::string title;
+  std::string title;                         // the case; shrunk to fit the page
+  std::string subtitle;                      // the quantity and state, under the title
+  std::string warning;                       // in red under the title, e.g. "not converged"
   std::string field_label;                   // the colour bar's label, e.g. "head (m)"
   std::span<const geometry::Point> nodes;
   std::span<const std::array<int, 3>> triangles;
@@ -24,6 +28,7 @@ struct FieldFigure {
   bool logarithmic = false;                  // colour by log10 of the element field
   int contour_levels = 10;                   // head contours of node_field; 0 for none
   std::vector<geometry::Polygon> blocks;     // outlines drawn over the field
+  bool faint_blocks = false;                 // thin grey outlines, so a field along the joints shows
   std::vector<geometry::Point> element_flux; // arrows at element centroids, or empty
   // Lines coloured by a value (e.g. fracture apertures) drawn over the blocks, which are then
   // filled light grey; the colour bar is theirs when there is no mesh field. Lines not
@@ -31,6 +36,7 @@ struct FieldFigure {
   std::vector<std::array<geometry::Point, 2>> segments;
   std::vector<double> segment_values;
   std::vector<bool> segment_highlighted;
+  std::string flux_unit = "m/s";             // of the key arrow's value
 };
 
 // Throws std::runtime_error naming the path when the file cannot be written.

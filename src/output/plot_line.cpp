@@ -304,7 +304,8 @@ void render_line_plot(const std::filesystem::path& path, const LinePlotSpec& spe
     cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
     cairo_set_font_size(cr, 9.5);
     // The left margin holds the widest y label and the y title beside it.
-    const double top = spec.title.empty() ? 14.0 : 32.0, bottom = spec.height - 42.0;
+    const double top = (spec.title.empty() ? 14.0 : 32.0) + (spec.warning.empty() ? 0.0 : 14.0);
+    const double bottom = spec.height - 42.0;
     const Axis y = make_axis(ylo, yhi, spec.y_log, bottom, top);
     const TickLabels y_ticks = make_tick_labels(y);
     const double widest = measure_widest_label(cr, y_ticks);
@@ -366,7 +367,15 @@ void render_line_plot(const std::filesystem::path& path, const LinePlotSpec& spe
     if (!spec.title.empty()) {
       cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
       cairo_set_font_size(cr, 11.5);
-      draw_text(cr, spec.title, 0.5 * (left + right), 10.0, 0.5, 0.0);
+      const double title_width = text_width(cr, spec.title);
+      if (title_width > spec.width - 16.0) cairo_set_font_size(cr, 11.5 * (spec.width - 16.0) / title_width);
+      draw_text(cr, spec.title, 0.5 * spec.width, 10.0, 0.5, 0.0);
+    }
+    if (!spec.warning.empty()) {
+      cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+      cairo_set_font_size(cr, 10.0);
+      cairo_set_source_rgb(cr, 0.8, 0.0, 0.0);
+      draw_text(cr, spec.warning, 0.5 * spec.width, spec.title.empty() ? 10.0 : 26.0, 0.5, 0.0);
     }
   });
 }

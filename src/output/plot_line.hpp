@@ -23,7 +23,8 @@ struct ReferenceLine {
 };
 
 struct LinePlotSpec {
-  std::string title;
+  std::string title;    // shrunk to fit the page when long
+  std::string warning;  // in red under the title, e.g. "NOT CONVERGED"
   std::string x_label, y_label;
   bool x_log = false, y_log = false;
   std::vector<LineSeries> series;

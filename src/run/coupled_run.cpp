@@ -209,8 +209,12 @@ output::RunSummary run_coupled(const RunContext& context) {
     summary.message = fmt::format("stopped after coupling iteration {} (--stop-after)", loop.iterations());
     return summary;
   }
-  draw_figures(s, context.folder, {mesh, loop.flow(), loop.porosity().porosity, loop.permeability(), model.block_polygons()});
-  draw_convergence(s, context.folder, read_convergence(checkpoint.history, s.coupling.tolerance));
+  draw_figures(s, context.folder,
+               {mesh, loop.flow(), loop.porosity().porosity, loop.permeability(), model.block_polygons(), converged,
+                loop.iterations()});
+  ConvergenceHistory convergence = read_convergence(checkpoint.history, s.coupling.tolerance);
+  convergence.converged = converged;
+  draw_convergence(s, context.folder, convergence);
   if (meter && loop.iterations() > 0) {
     if (!fracture_state) measure_fractures();
     draw_aperture_figure(s, context.folder, model.block_polygons(), *fracture_state);
@@ -218,11 +222,10 @@ output::RunSummary run_coupled(const RunContext& context) {
   output::RunSummary summary = current_summary();
   summary.converged = converged;
   if (!converged) {
-    const ConvergenceHistory h = read_convergence(checkpoint.history, s.coupling.tolerance);
     std::vector<double> two_passes;  // history.csv's third column from the end
     for (const std::vector<std::string>& row : checkpoint.history) two_passes.push_back(std::stod(row[row.size() - 3]));
     const coupling::ConvergenceDiagnosis why =
-        coupling::diagnose_non_convergence(h.head_change, h.displacement_change, two_passes, s.coupling.tolerance);
+        coupling::diagnose_non_convergence(convergence.head_change, convergence.displacement_change, two_passes, s.coupling.tolerance);
     summary.message = fmt::format("the coupling loop did not converge in {} iterations (tolerance {:g}): {}",
                                   s.coupling.max_iterations, s.coupling.tolerance, why.text);
     spdlog::warn("{}", summary.message);

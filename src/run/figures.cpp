@@ -7,12 +7,25 @@
 
 namespace hydrodda::run {
 
+namespace {
+
+// "coupling iteration 4" or nothing (flow-only run), and the warning of an unconverged run.
+std::string state_of(const FlowPicture& p) {
+  return p.iterations > 0 ? fmt::format(", coupling iteration {}", p.iterations) : std::string();
+}
+
+std::string warning_of(bool converged) { return converged ? std::string() : "NOT CONVERGED"; }
+
+}  // namespace
+
 void draw_figures(const scenario::Scenario& s, const output::RunFolder& folder, const FlowPicture& p) {
   if (s.output.figures.empty()) return;
   const std::filesystem::path dir = folder.figures();
   for (const std::string& format : s.output.figures) {
     output::FieldFigure head;
     head.title = s.title;
+    head.subtitle = "Hydraulic head and Darcy flux" + state_of(p);
+    head.warning = warning_of(p.converged);
     head.field_label = "hydraulic head (m)";
     head.nodes = p.mesh.nodes;
     head.triangles = p.mesh.triangles;
@@ -22,19 +35,22 @@ void draw_figures(const scenario::Scenario& s, const output::RunFolder& folder, 
     output::render_field_figure(dir / ("head." + format), head);
 
     output::FieldFigure map;
+    map.title = s.title;
+    map.warning = head.warning;
     map.nodes = p.mesh.nodes;
     map.triangles = p.mesh.triangles;
     map.blocks = p.blocks;
+    map.faint_blocks = true;
+    map.logarithmic = true;
     if (!p.porosity.empty()) {
-      map.title = "Equivalent porosity";
-      map.field_label = "porosity";
+      map.subtitle = "Equivalent porosity" + state_of(p);
+      map.field_label = "porosity (log scale)";
       map.element_field = p.porosity;
       output::render_field_figure(dir / ("porosity." + format), map);
     }
-    map.title = "Permeability";
-    map.field_label = "permeability (m2, log scale)";
+    map.subtitle = "Permeability" + state_of(p);
+    map.field_label = "permeability (m², log scale)";
     map.element_field = p.permeability;
-    map.logarithmic = true;
     output::render_field_figure(dir / ("permeability." + format), map);
   }
 }
@@ -42,11 +58,13 @@ void draw_figures(const scenario::Scenario& s, const output::RunFolder& folder, 
 void draw_convergence(const scenario::Scenario& s, const output::RunFolder& folder, const ConvergenceHistory& h) {
   if (s.output.figures.empty() || h.iteration.empty()) return;
   output::LinePlotSpec plot;
-  plot.title = "Convergence of the coupling loop";
+  plot.title = s.title;
+  plot.warning = h.converged ? "" : "NOT CONVERGED: the changes stayed above the tolerance";
   plot.x_label = "coupling iteration";
-  plot.y_label = "relative change between iterations";
+  plot.y_label = "relative change between coupling iterations";
   plot.y_log = true;
-  plot.series = {{"head", h.iteration, h.head_change}, {"block displacement", h.iteration, h.displacement_change}};
+  plot.series = {{"head", h.iteration, h.head_change, {}},
+                 {"block displacement", h.iteration, h.displacement_change, {}}};
   plot.references = {{fmt::format("tolerance {:g}", h.tolerance), h.tolerance}};
   for (const std::string& format : s.output.figures)
     output::render_line_plot(folder.figures() / ("convergence." + format), plot);

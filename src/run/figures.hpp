@@ -17,16 +17,21 @@ struct FlowPicture {
   const std::vector<double>& porosity;      // per element; may be empty
   const std::vector<double>& permeability;  // per element
   const std::vector<geometry::Polygon>& blocks;
+  // A coupled run that used all its iterations without converging: every figure says so.
+  bool converged = true;
+  int iterations = 0;  // of a coupled run; 0 for a flow-only run
 };
 
 // The relative changes of a coupled run's passes, as history.csv lists them.
 struct ConvergenceHistory {
   std::vector<double> iteration, head_change, displacement_change;
   double tolerance = 0.0;
+  bool converged = true;
 };
 
 // head.* (heads with contours, blocks, flux arrows under 1% of the largest hidden, as the
-// paper's Fig. 6), porosity.* (when given) and permeability.* (log scale).
+// paper's Fig. 6), porosity.* (when given) and permeability.* (both log scale, so that the
+// joints show), each titled with the scenario's title.
 void draw_figures(const scenario::Scenario& scenario, const output::RunFolder& folder, const FlowPicture& picture);
 
 // convergence.*: head and displacement change (log scale) against coupling iteration, with the

@@ -1,8 +1,12 @@
 #include "output/field_figure.hpp"
 
+#include <cairo.h>
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
+#include <string>
+#include <unistd.h>
 #include <fstream>
 
 namespace hydrodda::output {
@@ -55,6 +59,45 @@ TEST(FieldFigure, WritesPngSvgAndPdf) {
   EXPECT_NE(text.find("</svg>"), std::string::npos);
   EXPECT_FALSE(fs::exists(dir / "f.svg.tmp"));
   EXPECT_THROW(render_field_figure(dir / "f.jpg", f), std::runtime_error);
+  fs::remove_all(dir);
+}
+
+// Red pixels (the warning's colour) in the band above the plot, where the title and the line
+// under it are drawn: the PNG is at twice the page's resolution, the plot starts 50 points down.
+int red_pixels_above_plot(const fs::path& png) {
+  cairo_surface_t* image = cairo_image_surface_create_from_png(png.c_str());
+  EXPECT_EQ(cairo_surface_status(image), CAIRO_STATUS_SUCCESS);
+  const int width = cairo_image_surface_get_width(image), stride = cairo_image_surface_get_stride(image);
+  const unsigned char* data = cairo_image_surface_get_data(image);
+  int red = 0;
+  for (int y = 0; y < 2 * 48; ++y)
+    for (int x = 0; x < width; ++x) {
+      const auto* pixel = reinterpret_cast<const std::uint32_t*>(data + y * stride) + x;  // ARGB32
+      const unsigned r = (*pixel >> 16) & 0xff, g = (*pixel >> 8) & 0xff, b = *pixel & 0xff;
+      red += r > 180 && g < 40 && b < 40;
+    }
+  cairo_surface_destroy(image);
+  return red;
+}
+
+TEST(FieldFigure, AWarningIsWrittenInRedUnderTheTitle) {
+  const std::vector<Point> nodes{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const std::vector<std::array<int, 3>> triangles{{0, 1, 2}, {0, 2, 3}};
+  FieldFigure f;
+  f.title = "A case";
+  f.subtitle = "Hydraulic head, coupling iteration 2";
+  f.field_label = "head (m)";
+  f.nodes = nodes;
+  f.triangles = triangles;
+  f.node_field = {0.0, 1.0, 1.0, 0.0};
+  f.element_flux = {{-1.0, 0.0}, {-1.0, 0.0}};
+  const fs::path dir = fs::temp_directory_path() / ("hydrodda-figure-warning-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  render_field_figure(dir / "converged.png", f);
+  f.warning = "NOT CONVERGED";
+  render_field_figure(dir / "unconverged.png", f);
+  EXPECT_EQ(red_pixels_above_plot(dir / "converged.png"), 0);
+  EXPECT_GT(red_pixels_above_plot(dir / "unconverged.png"), 200);
   fs::remove_all(dir);
 }
 
