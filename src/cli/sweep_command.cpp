@@ -41,9 +41,38 @@ std::string describe_case(const std::vector<scenario::Override>& overrides) {
 
 // Every case's scenario file, each read and checked as `run` would; nothing when any fails
 // (after every problem has been printed).
+// A TOML basic string holding `text`.
+std::string toml_string(const std::string& text) {
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\') quoted += '\\';
+    quoted += c;
+  }
+  return quoted + "\"";
+}
+
+// "Six-block model — head at base = 5 m, density = 2000 kg/m³".
+std::string case_title(const std::string& base_title, const std::vector<scenario::Override>& values,
+                       const std::vector<std::string>& boundary_names) {
+  std::string text;
+  for (const scenario::Override& o : values)
+    text += fmt::format("{}{}", text.empty() ? "" : ", ", run::value_label(o, boundary_names));
+  return base_title.empty() ? text : base_title + " — " + text;
+}
+
+std::vector<std::string> boundary_names_of(const scenario::Scenario& s) {
+  std::vector<std::string> names;
+  if (s.flow)
+    for (const scenario::FlowBoundaryCondition& b : s.flow->boundaries) names.push_back(b.name);
+  return names;
+}
+
 std::optional<std::vector<PreparedCase>> prepare_cases(const fs::path& file, const fs::path& directory,
                                                        const std::vector<std::vector<scenario::Override>>& cases,
+                                                       const scenario::Scenario& base,
                                                        std::vector<std::string>& region_names) {
+  const std::string& base_title = base.title;
+  const std::vector<std::string> boundary_names = boundary_names_of(base);
   const std::string original = run::read_text_file(file).value_or("");
   std::vector<PreparedCase> prepared;
   bool ok = true;
@@ -51,7 +80,10 @@ std::optional<std::vector<PreparedCase>> prepare_cases(const fs::path& file, con
     const std::string name = fmt::format("case_{:03}", i);
     const fs::path case_file = directory / name / "scenario.toml";
     try {
-      std::string text = scenario::apply_overrides(original, file, cases[i]);
+      // The case's title names its values, so that its figures say which case they show.
+      std::vector<scenario::Override> overrides = cases[i];
+      overrides.push_back({"title", toml_string(case_title(base_title, cases[i], boundary_names))});
+      std::string text = scenario::apply_overrides(original, file, overrides);
       const scenario::Scenario s = scenario::parse_scenario(text, case_file);
       run::check_model(s);  // as `check` does
       if (i == 0 && s.flow)
@@ -84,7 +116,7 @@ int sweep_command(const SweepOptions& options) {
   const fs::path directory =
       options.output.value_or(fs::path("out") / (options.scenario.stem().string() + "-sweep"));
   std::vector<std::string> region_names;
-  const auto prepared = prepare_cases(options.scenario, directory, cases, region_names);
+  const auto prepared = prepare_cases(options.scenario, directory, cases, *base, region_names);
   if (!prepared) {
     std::fputs(fmt::format("{}: the sweep was not started\n", options.scenario.string()).c_str(), stderr);
     return kBadInput;
@@ -121,6 +153,7 @@ int sweep_command(const SweepOptions& options) {
 
   run::SweepResults results(axes, cases, columns, options.zip);
   for (std::size_t i = 0; i < prepared->size(); ++i) results.set_name(i, (*prepared)[i].name);
+  results.set_boundary_names(boundary_names_of(*base));
   std::size_t finished = 0;
   std::vector<std::size_t> never_started;
   try {

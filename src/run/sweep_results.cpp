@@ -37,7 +37,78 @@ std::string find_last_error(const std::filesystem::path& log) {
 // A child ended by SIGINT or SIGTERM before it could write its summary (128 + the signal).
 bool ended_by_interrupt(int exit_code) { return exit_code == 128 + SIGINT || exit_code == 128 + SIGTERM; }
 
+bool ends_with(const std::string& text, std::string_view end) {
+  return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
+}
+
 }  // namespace
+
+namespace {
+
+struct Quantity {
+  std::string name;  // "head at base"; the path itself when not known
+  std::string_view unit;
+};
+
+Quantity name_quantity(const std::string& path, const std::vector<std::string>& boundary_names) {
+  // The last part of the path names the quantity; the unit is the scenario's (SI) or summary.json's.
+  struct Known {
+    std::string_view ending, quantity, unit;
+  };
+  static constexpr Known known[] = {
+      {".normalised_conductivity", "K_eff / K_matrix", ""},
+      {".effective_conductivity", "K_eff", "m/s"},
+      {".displacement.0", "x displacement", "m"},
+      {".displacement.1", "y displacement", "m"},
+      {".rotation", "rotation", "rad"},
+      {".head", "head", "m"},
+      {".pressure", "pressure", "Pa"},
+      {".flux", "normal flux", "m/s"},
+      {".permeability", "permeability", "m²"},
+      {".normal_end", "normal traction at the end", "Pa"},
+      {".normal", "normal traction", "Pa"},
+      {".shear", "shear traction", "Pa"},
+      {".density", "density", "kg/m³"},
+      {".young", "Young's modulus", "Pa"},
+      {".poisson", "Poisson's ratio", ""},
+      {".friction_angle", "friction angle", "°"},
+      {".cohesion", "cohesion", "Pa"},
+      {".tensile_strength", "tensile strength", "Pa"},
+      {".viscosity", "viscosity", "Pa s"},
+      {"initial_aperture", "initial aperture", "m"},
+      {"coupling.max_iterations", "coupling iterations allowed", ""},
+      {"coupling.relaxation", "relaxation factor", ""},
+      {"mechanics.time_step", "time step", "s"},
+      {"mechanics.end_time", "end time", "s"},
+  };
+  for (const Known& k : known) {
+    if (!ends_with(path, k.ending)) continue;
+    // What the quantity belongs to: a named boundary, region or measure point.
+    std::string owner;
+    const std::string rest = path.substr(0, path.size() - k.ending.size());
+    const std::size_t open = rest.rfind('['), dot = rest.rfind('.');
+    if (rest.rfind("flow.boundary[", 0) == 0 && open != std::string::npos) {
+      const std::size_t index = std::stoul(rest.substr(open + 1));
+      owner = index < boundary_names.size() ? " at " + boundary_names[index] : "";
+    } else if ((rest.rfind("flow.regions.", 0) == 0 || rest.rfind("measure.", 0) == 0) && dot != std::string::npos) {
+      owner = " of " + rest.substr(dot + 1);
+    }
+    return {fmt::format("{}{}", k.quantity, owner), k.unit};
+  }
+  return {path, ""};
+}
+
+}  // namespace
+
+std::string quantity_label(const std::string& path, const std::vector<std::string>& boundary_names) {
+  const Quantity q = name_quantity(path, boundary_names);
+  return q.unit.empty() ? q.name : fmt::format("{} ({})", q.name, q.unit);
+}
+
+std::string value_label(const scenario::Override& value, const std::vector<std::string>& boundary_names) {
+  const Quantity q = name_quantity(value.key, boundary_names);
+  return fmt::format("{} = {}{}", q.name, value.value, q.unit.empty() ? "" : fmt::format(" {}", q.unit));
+}
 
 std::string_view status_name(CaseStatus status) {
   switch (status) {
@@ -134,8 +205,8 @@ SweepPlot SweepResults::plot_spec(const std::string& title) const {
   }
   output::LinePlotSpec& spec = plot.spec;
   spec.title = title;
-  spec.x_label = axes_[0].key;
-  spec.y_label = columns_[0];
+  spec.x_label = quantity_label(axes_[0].key, boundary_names_);
+  spec.y_label = quantity_label(columns_[0], boundary_names_);
   spec.open_label = "not converged";
   for (std::size_t i = 0; i < results_.size(); ++i) {
     const CaseResult& r = results_[i];
@@ -150,7 +221,7 @@ SweepPlot SweepResults::plot_spec(const std::string& title) const {
     if (!y) continue;
     std::string series;
     for (std::size_t k = 1; !zipped_ && k < cases_[i].size(); ++k)
-      series += fmt::format("{}{} = {}", series.empty() ? "" : ", ", cases_[i][k].key, cases_[i][k].value);
+      series += fmt::format("{}{}", series.empty() ? "" : ", ", value_label(cases_[i][k], boundary_names_));
     auto it = std::find_if(spec.series.begin(), spec.series.end(),
                            [&](const output::LineSeries& s) { return s.name == series; });
     if (it == spec.series.end()) it = spec.series.insert(spec.series.end(), output::LineSeries{series, {}, {}, {}});
@@ -162,6 +233,8 @@ SweepPlot SweepResults::plot_spec(const std::string& title) const {
     plot.why_not = fmt::format("no case gave a number for {}", columns_[0]);
     return plot;
   }
+  // A lone series needs no legend entry (a second key with one value would name it).
+  if (spec.series.size() == 1) spec.series[0].name.clear();
   for (output::LineSeries& s : spec.series) {  // in x order, whatever order the values were given in
     std::vector<std::size_t> order(s.x.size());
     for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;

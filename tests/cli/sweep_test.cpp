@@ -127,6 +127,13 @@ TEST(Sweep, AnUnconvergedCaseIsMarkedAndCounted) {
   EXPECT_EQ(rows[2][3], "ok");
   EXPECT_EQ(rows[2][4], "true");
   EXPECT_TRUE(fs::exists(out / "sweep.png"));
+  // Each case's title (its figures' and summary's) names its values.
+  std::ifstream summary(out / "case_001/summary.json");
+  std::stringstream text;
+  text << summary.rdbuf();
+  EXPECT_NE(text.str().find("block column in still water — head at bottom = 3.5 m, coupling iterations allowed = 20"),
+            std::string::npos)
+      << text.str();
   fs::remove_all(out);
 }
 

@@ -89,6 +89,8 @@ def test_set_matches_sweep_overrides(in_tmp):
     path = VERIFICATION / "flow_layers_series.toml"
     scenario = hydrodda.Scenario.load(path)
     scenario.set("flow.boundary[0].head", 2.5)
+    # The sweep also titles each case with its values (flow.boundary[0] is named "left").
+    scenario.set("title", scenario.title + " — head at left = 2.5 m")
     code, _, err = run_program("sweep", path, "--set", "flow.boundary[0].head=2.5", "--jobs", "1", "-o", "sweep",
                                cwd=in_tmp)
     assert code == 0, err
