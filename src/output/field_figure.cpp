@@ -7,6 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <map>
+#include <utility>
 #include <stdexcept>
 
 namespace hydrodda::output {
@@ -39,6 +42,8 @@ std::string tick_label(double v) { return fmt::format("{:g}", v); }
 
 constexpr double kMarginLeft = 70, kMarginRight = 120, kMarginTop = 50, kMarginBottom = 60;
 constexpr double kMinColourBarHeight = 120;  // room for a colour bar's ticks under a flat domain
+constexpr double kKeyArrowRoom = 45;         // under the colour bar: the key arrow and its value
+constexpr double kArrowCells = 30;           // flux arrows: grid cells along the larger side
 
 geometry::Box figure_box(const FieldFigure& f) {
   geometry::Box box;
@@ -48,6 +53,19 @@ geometry::Box figure_box(const FieldFigure& f) {
   for (const auto& s : f.segments)
     for (Point p : s) box.add(p);
   return box;
+}
+
+// Elements with an edge on the mesh's boundary (an edge no other element shares).
+std::vector<bool> touches_boundary(std::span<const std::array<int, 3>> triangles) {
+  std::map<std::pair<int, int>, int> edge_count;
+  const auto edge = [](int a, int b) { return std::pair(std::min(a, b), std::max(a, b)); };
+  for (const auto& t : triangles)
+    for (int i = 0; i < 3; ++i) ++edge_count[edge(t[i], t[(i + 1) % 3])];
+  std::vector<bool> out(triangles.size(), false);
+  for (std::size_t k = 0; k < triangles.size(); ++k)
+    for (int i = 0; i < 3; ++i)
+      if (edge_count[edge(triangles[k][i], triangles[k][(i + 1) % 3])] == 1) out[k] = true;
+  return out;
 }
 
 void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f) {
@@ -69,6 +87,21 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
   double lo = values.empty() ? 0.0 : *std::min_element(values.begin(), values.end());
   double hi = values.empty() ? 1.0 : *std::max_element(values.begin(), values.end());
   if (lines_only) lo = std::min(lo, 0.0);  // lines carry sizes (apertures): the scale starts at zero
+  // An element field's scale ends at the largest value inside the mesh: elements on its
+  // boundary, where the blocks part from the fixed domain edge, hold gaps far wider than the
+  // joints' and would leave the joints the colour of intact rock. Values above are painted
+  // the top colour, and the colour bar ends in a triangle to say so.
+  bool clipped_above = false;
+  if (!per_node && !lines_only) {
+    const std::vector<bool> on_boundary = touches_boundary(f.triangles);
+    double inside_hi = -std::numeric_limits<double>::infinity();
+    for (std::size_t t = 0; t < values.size(); ++t)
+      if (!on_boundary[t]) inside_hi = std::max(inside_hi, values[t]);
+    if (inside_hi > lo && inside_hi < hi) {
+      hi = inside_hi;
+      clipped_above = true;
+    }
+  }
   if (!(hi > lo)) hi = lo + 1.0;
   const auto colour = [&](double v) { return viridis((v - lo) / (hi - lo)); };
 
@@ -156,11 +189,14 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
     }
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
 
-  // Flux arrows: length ∝ |q|, the largest 8% of the plot's width; under 1% of the largest
-  // hidden, as the paper's Fig. 6. The arrows are thinned to one per cell of a 40 × 40 grid
-  // over the domain, each cell showing its largest flux.
+  // Flux arrows: length ∝ |q|; under 1% of the largest hidden, as the paper's Fig. 6. The
+  // arrows are thinned to one per cell of a square grid, kArrowCells cells along the domain's
+  // larger side, each cell showing its largest flux; the largest arrow is 0.9 of a cell, so
+  // that neighbours do not overlap on a flat layer (8% of the width drew 1.6 m arrows over a
+  // 6 m seal). They are clipped to the plot.
   double q_max = 0.0;
-  const double full = 0.08 * box.width() * fr.scale;
+  const double cell = std::max(box.width(), box.height()) / kArrowCells;
+  const double full = 0.9 * cell * fr.scale;
   const auto draw_arrow = [&](double xc, double yc, Point q, double len) {
     const double m = geometry::norm(q);
     const double ux = q.x / m, uy = -q.y / m;  // page y points down
@@ -177,17 +213,20 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
   };
   if (!f.element_flux.empty()) {
     for (Point q : f.element_flux) q_max = std::max(q_max, geometry::norm(q));
-    const double cell = box.width() / 40.0;
-    std::vector<long> largest(41 * 41, -1);
+    const int nx = static_cast<int>(box.width() / cell) + 1, ny = static_cast<int>(box.height() / cell) + 1;
+    std::vector<long> largest(static_cast<std::size_t>(nx) * ny, -1);
     for (std::size_t t = 0; t < f.triangles.size() && q_max > 0.0; ++t) {
       if (geometry::norm(f.element_flux[t]) < 0.01 * q_max) continue;
       const auto& tri = f.triangles[t];
       const Point c = (f.nodes[tri[0]] + f.nodes[tri[1]] + f.nodes[tri[2]]) / 3.0;
-      const int gx = std::clamp(static_cast<int>((c.x - box.lo.x) / cell), 0, 40);
-      const int gy = std::clamp(static_cast<int>((c.y - box.lo.y) / cell), 0, 40);
-      long& slot = largest[static_cast<std::size_t>(gy) * 41 + gx];
+      const int gx = std::clamp(static_cast<int>((c.x - box.lo.x) / cell), 0, nx - 1);
+      const int gy = std::clamp(static_cast<int>((c.y - box.lo.y) / cell), 0, ny - 1);
+      long& slot = largest[static_cast<std::size_t>(gy) * nx + gx];
       if (slot < 0 || geometry::norm(f.element_flux[t]) > geometry::norm(f.element_flux[slot])) slot = static_cast<long>(t);
     }
+    cairo_save(cr);
+    cairo_rectangle(cr, fr.px(box.lo.x), fr.py(box.hi.y), box.width() * fr.scale, box.height() * fr.scale);
+    cairo_clip(cr);
     cairo_set_source_rgb(cr, 0.85, 0.1, 0.1);
     cairo_set_line_width(cr, 1.1);
     for (long t : largest) {
@@ -196,6 +235,7 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
       const Point c = (f.nodes[tri[0]] + f.nodes[tri[1]] + f.nodes[tri[2]]) / 3.0;
       draw_arrow(fr.px(c.x), fr.py(c.y), f.element_flux[t], full * geometry::norm(f.element_flux[t]) / q_max);
     }
+    cairo_restore(cr);
   }
 
   // Axes with ticks in metres.
@@ -205,13 +245,16 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
   cairo_stroke(cr);
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, 11);
-  for (double x : nice_ticks(box.lo.x, box.hi.x, 6)) {
+  // Ticks reach a hair beyond the box, so that a domain whose blocks moved a few microns in from
+  // its edge (0.00001 to 5.99999 m) is still ticked at 0 and 6.
+  const double reach = 1e-3 * std::max(box.width(), box.height());
+  for (double x : nice_ticks(box.lo.x - reach, box.hi.x + reach, 6)) {
     cairo_move_to(cr, fr.px(x), fr.py(box.lo.y));
     cairo_line_to(cr, fr.px(x), fr.py(box.lo.y) + 5);
     cairo_stroke(cr);
     draw_text(cr, tick_label(x), fr.px(x), fr.py(box.lo.y) + 8, 0.5, 0.0);
   }
-  for (double y : nice_ticks(box.lo.y, box.hi.y, 6)) {
+  for (double y : nice_ticks(box.lo.y - reach, box.hi.y + reach, 6)) {
     cairo_move_to(cr, fr.px(box.lo.x), fr.py(y));
     cairo_line_to(cr, fr.px(box.lo.x) - 5, fr.py(y));
     cairo_stroke(cr);
@@ -247,6 +290,17 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
   cairo_set_source_rgb(cr, 0, 0, 0);
   cairo_rectangle(cr, bar_x, bar_top, 16, bar_height);
   cairo_stroke(cr);
+  if (clipped_above) {  // values above the bar's top: a triangle in the top colour
+    const auto c = viridis(1.0);
+    cairo_move_to(cr, bar_x, bar_top);
+    cairo_line_to(cr, bar_x + 8, bar_top - 12);
+    cairo_line_to(cr, bar_x + 16, bar_top);
+    cairo_close_path(cr);
+    cairo_set_source_rgb(cr, c[0], c[1], c[2]);
+    cairo_fill_preserve(cr);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_stroke(cr);
+  }
   cairo_set_font_size(cr, 10);
   double widest_tick = 0.0;
   // A log bar is ticked at values (decades, or 1, 2, 5 times them over a short range), placed
@@ -292,7 +346,8 @@ void render_field_figure(const std::filesystem::path& path, const FieldFigure& f
   const double plot_width = width - kMarginLeft - kMarginRight;
   const double plot_height = box.width() > 0 ? plot_width * box.height() / box.width() : plot_width;
   const double height = std::min(
-      largest_height, kMarginTop + std::max(plot_height + kMarginBottom, kMinColourBarHeight + 15));
+      largest_height, kMarginTop + std::max(plot_height + kMarginBottom,
+                                            kMinColourBarHeight + 15 + (figure.element_flux.empty() ? 0 : kKeyArrowRoom)));
   draw_to_file(path, width, height, [&](cairo_t* cr) { draw_figure(cr, width, height, figure); });
 }
 

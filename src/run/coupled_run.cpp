@@ -217,7 +217,8 @@ output::RunSummary run_coupled(const RunContext& context) {
   draw_convergence(s, context.folder, convergence);
   if (meter && loop.iterations() > 0) {
     if (!fracture_state) measure_fractures();
-    draw_aperture_figure(s, context.folder, model.block_polygons(), *fracture_state);
+    draw_aperture_figure(s, context.folder, model.block_polygons(), *fracture_state,
+                         {fmt::format("coupling iteration {}", loop.iterations()), converged});
   }
   output::RunSummary summary = current_summary();
   summary.converged = converged;

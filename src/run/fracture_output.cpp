@@ -89,10 +89,13 @@ void FractureOutput::write_series(int step, double time, const FractureState& st
 }
 
 void draw_aperture_figure(const scenario::Scenario& s, const output::RunFolder& folder,
-                          std::span<const geometry::Polygon> blocks, const FractureState& state) {
+                          std::span<const geometry::Polygon> blocks, const FractureState& state,
+                          const FigureState& shown) {
   if (s.output.figures.empty() || state.pieces.empty()) return;
   output::FieldFigure figure;
-  figure.title = "Fracture apertures (closed fractures in grey)";
+  figure.title = s.title;
+  figure.subtitle = "Fracture apertures (closed fractures in grey), " + shown.when;
+  if (!shown.converged) figure.warning = "NOT CONVERGED";
   figure.field_label = "mechanical aperture (mm)";
   figure.blocks.assign(blocks.begin(), blocks.end());
   for (const FracturePiece& p : state.pieces) {

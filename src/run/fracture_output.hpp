@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "output/csv_table.hpp"
@@ -36,9 +37,18 @@ class FractureOutput {
   std::optional<output::PvdSeries> series_;
 };
 
+// What a figure shows: at which coupling iteration or DDA step, and whether the coupled run it
+// ends converged (an unconverged one is marked "NOT CONVERGED").
+struct FigureState {
+  std::string when;  // e.g. "coupling iteration 4", "DDA step 200"
+  bool converged = true;
+};
+
 // figures/apertures.* for each format output.figures asks for: the blocks as they are, each
-// fracture piece coloured by its mechanical aperture (mm), closed pieces thin and grey.
+// fracture piece coloured by its mechanical aperture (mm), closed pieces thin and grey; titled
+// with the scenario's title.
 void draw_aperture_figure(const scenario::Scenario& scenario, const output::RunFolder& folder,
-                          std::span<const geometry::Polygon> blocks, const FractureState& state);
+                          std::span<const geometry::Polygon> blocks, const FractureState& state,
+                          const FigureState& shown);
 
 }  // namespace hydrodda::run

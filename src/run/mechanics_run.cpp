@@ -49,7 +49,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
     const FractureState state = meter->measure(polygons, system.penetration_tolerance());
     fractures.add_rows(step, time, state);
     if (s.output.fields.fractures) fractures.write_series(static_cast<int>(step), time, state);
-    if (model.finished()) draw_aperture_figure(s, context.folder, polygons, state);
+    if (model.finished()) draw_aperture_figure(s, context.folder, polygons, state, {fmt::format("DDA step {}", step)});
   };
   write_step(0, 0.0);
   long long last_written = 0;

@@ -3,6 +3,7 @@
 #include <cairo.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -62,23 +63,29 @@ TEST(FieldFigure, WritesPngSvgAndPdf) {
   fs::remove_all(dir);
 }
 
-// Red pixels (the warning's colour) in the band above the plot, where the title and the line
-// under it are drawn: the PNG is at twice the page's resolution, the plot starts 50 points down.
-int red_pixels_above_plot(const fs::path& png) {
+// Red pixels (the warning's and the flux arrows' colour) in the rows [y0, y1) of a PNG, in page
+// points (the PNG is at twice the page's resolution).
+int red_pixels_in_rows(const fs::path& png, int y0, int y1) {
   cairo_surface_t* image = cairo_image_surface_create_from_png(png.c_str());
   EXPECT_EQ(cairo_surface_status(image), CAIRO_STATUS_SUCCESS);
   const int width = cairo_image_surface_get_width(image), stride = cairo_image_surface_get_stride(image);
+  const int height = cairo_image_surface_get_height(image);
   const unsigned char* data = cairo_image_surface_get_data(image);
   int red = 0;
-  for (int y = 0; y < 2 * 48; ++y)
+  for (int y = 2 * y0; y < std::min(2 * y1, height); ++y)
     for (int x = 0; x < width; ++x) {
       const auto* pixel = reinterpret_cast<const std::uint32_t*>(data + y * stride) + x;  // ARGB32
       const unsigned r = (*pixel >> 16) & 0xff, g = (*pixel >> 8) & 0xff, b = *pixel & 0xff;
-      red += r > 180 && g < 40 && b < 40;
+      red += r > 180 && g < 60 && b < 60;
     }
   cairo_surface_destroy(image);
   return red;
 }
+
+
+// Red pixels in the band above the plot, where the title and the line under it are drawn (the
+// plot starts 50 points down).
+int red_pixels_above_plot(const fs::path& png) { return red_pixels_in_rows(png, 0, 48); }
 
 TEST(FieldFigure, AWarningIsWrittenInRedUnderTheTitle) {
   const std::vector<Point> nodes{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
@@ -98,6 +105,43 @@ TEST(FieldFigure, AWarningIsWrittenInRedUnderTheTitle) {
   render_field_figure(dir / "unconverged.png", f);
   EXPECT_EQ(red_pixels_above_plot(dir / "converged.png"), 0);
   EXPECT_GT(red_pixels_above_plot(dir / "unconverged.png"), 200);
+  fs::remove_all(dir);
+}
+
+// A flat layer (20 m × 2 m, the shape of a seal) with a uniform upward flux: the arrows stay
+// inside the plot (none reach the title band above it, where 8% of the width drew them 1.6 m
+// long over a 2 m layer), and the key arrow under the colour bar is on the page (it fell off
+// a page this flat).
+TEST(FieldFigure, FluxArrowsStayInAFlatPlotAndTheKeyArrowIsOnThePage) {
+  std::vector<Point> nodes;
+  std::vector<std::array<int, 3>> triangles;
+  const int nx = 40, ny = 4;
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) nodes.push_back({20.0 * i / nx, 2.0 * j / ny});
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int a = j * (nx + 1) + i, b = a + 1, c = a + nx + 2, d = a + nx + 1;
+      triangles.push_back({a, b, c});
+      triangles.push_back({a, c, d});
+    }
+  FieldFigure f;
+  f.title = "A flat layer";
+  f.field_label = "head (m)";
+  f.nodes = nodes;
+  f.triangles = triangles;
+  for (Point p : nodes) f.node_field.push_back(2.0 - p.y);
+  f.element_flux.assign(triangles.size(), Point{0.0, 1e-6});
+  const fs::path dir = fs::temp_directory_path() / ("hydrodda-figure-arrows-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  render_field_figure(dir / "flat.png", f);
+  cairo_surface_t* image = cairo_image_surface_create_from_png((dir / "flat.png").c_str());
+  const int page_height = cairo_image_surface_get_height(image) / 2;
+  cairo_surface_destroy(image);
+  // The plot is 570 points wide for 20 m: 57 points high, from 50 points down.
+  EXPECT_EQ(red_pixels_in_rows(dir / "flat.png", 0, 48), 0);
+  EXPECT_GT(red_pixels_in_rows(dir / "flat.png", 50, 107), 100);
+  // The key arrow: under the 120-point colour bar that starts at the plot's top.
+  EXPECT_GT(red_pixels_in_rows(dir / "flat.png", 50 + 120, page_height), 10);
   fs::remove_all(dir);
 }
 
