@@ -81,6 +81,9 @@ Quantity name_quantity(const std::string& path, const std::vector<std::string>& 
       {"mechanics.time_step", "time step", "s"},
       {"mechanics.end_time", "end time", "s"},
   };
+  // summary.json's flow through a named boundary, outward (m²/s per metre of thickness).
+  if (path.rfind("flow.boundaries.", 0) == 0 && path.find('.', 16) == std::string::npos)
+    return {"flow out of " + path.substr(16), "m²/s"};
   for (const Known& k : known) {
     if (!ends_with(path, k.ending)) continue;
     // What the quantity belongs to: a named boundary, region or measure point.

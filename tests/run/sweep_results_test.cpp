@@ -129,6 +129,7 @@ TEST(QuantityLabel, NamesTheQuantityAndItsUnit) {
   EXPECT_EQ(run::quantity_label("flow.boundary[0].head", boundaries), "head at base (m)");
   EXPECT_EQ(run::quantity_label("flow.boundary[1].pressure", boundaries), "pressure at top (Pa)");
   EXPECT_EQ(run::quantity_label("flow.regions.fractured.normalised_conductivity"), "K_eff / K_matrix of fractured");
+  EXPECT_EQ(run::quantity_label("flow.boundaries.top"), "flow out of top (m²/s)");
   EXPECT_EQ(run::quantity_label("flow.regions.core.effective_conductivity"), "K_eff of core (m/s)");
   EXPECT_EQ(run::quantity_label("measure.top.displacement.1"), "y displacement of top (m)");
   EXPECT_EQ(run::quantity_label("mechanics.traction[0].normal_end"), "normal traction at the end (Pa)");
