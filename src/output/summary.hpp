@@ -1,5 +1,5 @@
 #pragma once
-// summary.json: the run's results in one machine-readable file (SCENARIO.md, "Run folder").
+// summary.json: the run's results in one machine-readable file (docs/scenario.md, "The run folder").
 
 #include <array>
 #include <optional>

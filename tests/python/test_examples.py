@@ -20,7 +20,7 @@ def run_example(name, *arguments, cwd):
 
 def test_fig9_loop_then_post_processing(in_tmp):
     out = run_example("fig9_heads.py", "--heads", "5", "20", "--out", "fig9", cwd=in_tmp)
-    # The README's Fig. 9 table, from `hydrodda sweep` over the same heads: 1.0108 at 5 m,
+    # docs/paper.md's Fig. 9 table, from `hydrodda sweep` over the same heads: 1.0108 at 5 m,
     # 1.0436 at 20 m (printed to 4 decimals).
     ratios = [float(r) for r in re.findall(r"K_eff / K_matrix = ([0-9.]+)", out)]
     assert ratios == [1.0108, 1.0436]
