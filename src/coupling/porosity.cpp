@@ -73,6 +73,10 @@ double PorosityMapper::compute_pieces(int e, const geometry::ClipPolygons& block
   return covered;
 }
 
+double equivalent_porosity(double open_area, double element_area, double matrix_porosity) {
+  return std::clamp((open_area / element_area) * (1.0 - matrix_porosity) + matrix_porosity, matrix_porosity, 1.0);
+}
+
 PorosityField PorosityMapper::compute(std::span<const geometry::Polygon> blocks, double matrix_porosity,
                                       std::vector<BlockPiece>* pieces) const {
   if (!(matrix_porosity >= 0.0 && matrix_porosity < 1.0))
@@ -97,7 +101,7 @@ PorosityField PorosityMapper::compute(std::span<const geometry::Polygon> blocks,
                                     : compute_covered_area(element, prepared, grid, scratch);
       const double open = std::clamp(a - covered, 0.0, a);
       field.fracture_area[e] = open;
-      field.porosity[e] = std::clamp((open / a) * (1.0 - matrix_porosity) + matrix_porosity, matrix_porosity, 1.0);
+      field.porosity[e] = equivalent_porosity(open, a, matrix_porosity);
     }
   });
   if (pieces) {

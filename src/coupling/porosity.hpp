@@ -22,6 +22,9 @@ struct PorosityField {
   std::vector<double> porosity;       // φ per element
 };
 
+// The paper's eq. 8 for one element: (open / area)(1 − φ_m) + φ_m, clamped to [φ_m, 1].
+double equivalent_porosity(double open_area, double element_area, double matrix_porosity);
+
 // The part of a block over one fluid element, as the clip found it: the seepage force is
 // integrated over these (seepage_forces.hpp).
 struct BlockPiece {

@@ -65,6 +65,7 @@ StaggeredLoop::StaggeredLoop(const mesh::TriangleMesh& mesh, hydro::DarcyProblem
       settings_(std::move(settings)),
       darcy_(mesh, std::move(flow)),
       porosity_mapper_(mesh.nodes, mesh.triangles),
+      boundary_gaps_(mesh.nodes, mesh.triangles, settings_.permeability.domain, current_blocks()),
       face_loads_(mesh) {
   for (int t = 0; t < mesh.triangle_count(); ++t) centroids_.push_back(mesh::triangle_centroid(mesh, t));
   if (!settings_.fixed_permeability.empty() &&
@@ -106,6 +107,9 @@ PassReport StaggeredLoop::run_pass() {
   const std::vector<geometry::Polygon> blocks = current_blocks();
   std::vector<BlockPiece> pieces;  // the blocks over each element, for the seepage force
   porosity_ = porosity_mapper_.compute(blocks, settings_.permeability.matrix_porosity, seepage_ ? &pieces : nullptr);
+  // A block moved off the domain boundary leaves a strip that is no fracture (boundary_gaps.hpp).
+  exclude_boundary_gaps(porosity_, boundary_gaps_.compute_gap_areas(blocks), porosity_mapper_.element_areas(),
+                        settings_.permeability.matrix_porosity);
   std::vector<double> apertures;
   if (settings_.permeability.law == PermeabilityLaw::cubic)
     apertures = compute_local_apertures(centroids_, porosity_.fracture_area, blocks, settings_.permeability.domain,
@@ -160,6 +164,7 @@ PassReport StaggeredLoop::run_pass() {
   }
   report.mechanics_seconds = seconds_since(start);
   report.time = mechanics_.time();
+  report.outside_mesh = outside_mesh();
 
   // Convergence norms.
   const std::vector<Point> u = block_displacements();

@@ -16,6 +16,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "coupling/boundary_gaps.hpp"
 #include "coupling/permeability_model.hpp"
 #include "coupling/porosity.hpp"
 #include "coupling/pressure_forces.hpp"
@@ -73,6 +74,7 @@ struct PassReport {
   double max_permeability = 0.0;
   double relaxation = 1.0;        // ω the heads were relaxed with in this pass
   double load_factor = 1.0;       // of the fluid forces, below 1 while ramped
+  MeshExcursion outside_mesh;     // how far the blocks had left the fluid mesh after the pass
   bool converged = false;
   // The change has grown LoopSettings::diverging_passes passes in a row.
   bool diverging = false;
@@ -126,6 +128,8 @@ class StaggeredLoop {
   const hydro::FlowSolution& flow() const { return solution_; }
   const PorosityField& porosity() const { return porosity_; }
   const std::vector<double>& permeability() const { return permeability_; }
+  // How far the blocks have left the fluid mesh now.
+  MeshExcursion outside_mesh() const { return boundary_gaps_.find_excursion(current_blocks()); }
   // Passes run to their end (a pass that threw is not counted).
   int iterations() const { return completed_; }
   // A flow solution exists (false until the first pass's solve succeeds).
@@ -141,6 +145,7 @@ class StaggeredLoop {
   LoopSettings settings_;
   hydro::DarcySolver darcy_;
   PorosityMapper porosity_mapper_;
+  BoundaryGaps boundary_gaps_;      // the faces that lay on the domain boundary as built
   FacePressureLoads face_loads_;
   bool seepage_ = false;             // some block has α > 0
 

@@ -38,6 +38,7 @@ RegionFlow compute_region_flow(const mesh::TriangleMesh& mesh, const FlowSolutio
       lo_across = std::min(lo_across, c), hi_across = std::max(hi_across, c);
     }
   out.direction = d;
+  out.mean_head_gradient = -1.0 * gradient_integral / out.area;
   out.length = hi - lo;
   out.width = hi_across - lo_across;
   out.flow = geometry::dot(flux_integral, d) / out.length;

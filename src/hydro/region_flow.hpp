@@ -27,6 +27,9 @@ struct RegionFlow {
   double flow = 0.0;              // Q
   double head_gradient = 0.0;     // G
   double effective_conductivity = 0.0;  // K_eff; NaN when G = 0
+  // −(1/A) ∫_R ∇h dA: the mean head gradient's vector (its component along d is G). In the
+  // unfractured case it points along the gradient the boundary conditions impose.
+  geometry::Point mean_head_gradient;
 };
 
 // Over the given triangles. Without a direction, d is the direction of the region's mean

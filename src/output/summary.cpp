@@ -37,9 +37,20 @@ std::string format_summary(const RunSummary& s) {
       regions[r.name] = {{"flow", r.flow},
                          {"effective_conductivity", r.effective_conductivity},
                          {"matrix_conductivity", r.matrix_conductivity},
-                         {"normalised_conductivity", r.normalised_conductivity}};
+                         {"normalised_conductivity", r.normalised_conductivity},
+                         {"direction", r.direction},
+                         {"conductivity_tensor",
+                          {{"xx", r.tensor[0]},
+                           {"xy", r.tensor[1]},
+                           {"yy", r.tensor[2]},
+                           {"principal_values", r.principal_values},
+                           {"principal_directions", r.principal_directions}}}};
     out["flow"] = {{"boundaries", boundaries}, {"balance", s.flow->balance}, {"regions", regions}};
   }
+  if (s.outside_mesh)
+    out["outside_mesh"] = {{"largest_distance", s.outside_mesh->largest_distance},
+                           {"block", s.outside_mesh->block},
+                           {"blocks", s.outside_mesh->blocks}};
   return out.dump(2) + "\n";
 }
 

@@ -34,6 +34,19 @@ struct RegionSummary {
   double effective_conductivity = 0.0;
   double matrix_conductivity = 0.0;      // the same region in the unfractured case
   double normalised_conductivity = 0.0;  // effective / matrix
+  std::array<double, 2> direction{};     // the imposed head gradient's, along which both are measured
+  // The region's full effective conductivity tensor (m/s, region_tensor.hpp): xx, xy, yy, its
+  // principal values (largest first) and their unit directions.
+  std::array<double, 3> tensor{};
+  std::array<double, 2> principal_values{};
+  std::array<std::array<double, 2>, 2> principal_directions{};
+};
+
+// How far the blocks had left the fluid mesh at the end of a coupled run.
+struct OutsideMeshSummary {
+  double largest_distance = 0.0;  // m: the block vertex farthest outside the mesh
+  int block = -1;                 // its block, −1 when none is outside
+  int blocks = 0;                 // blocks with a vertex outside
 };
 
 struct FlowSummary {
@@ -52,6 +65,7 @@ struct RunSummary {
   std::vector<BlockSummary> blocks;
   std::vector<MeasureSummary> measures;
   std::optional<FlowSummary> flow;
+  std::optional<OutsideMeshSummary> outside_mesh;  // coupled runs
   std::vector<NamedValue> timings;  // seconds per phase
 };
 

@@ -77,13 +77,17 @@ std::vector<geometry::Polygon> CoupledModel::block_polygons() const {
 
 output::RunSummary CoupledModel::summary() const {
   output::RunSummary summary = summarise_mechanics(scenario_, *system_);
-  if (loop_->has_flow()) summary.flow = summarise_flow(scenario_, mesh_, loop_->flow(), matrix_flow_);
+  if (loop_->has_flow()) {
+    summary.flow = summarise_flow(scenario_, mesh_, loop_->flow(), matrix_flow_, loop_->permeability());
+    const coupling::MeshExcursion outside = loop_->outside_mesh();
+    summary.outside_mesh = output::OutsideMeshSummary{outside.distance, outside.block, outside.blocks_outside};
+  }
   summary.iterations = loop_->iterations();
   return summary;
 }
 
 std::vector<std::optional<output::RegionSummary>> CoupledModel::region_flows() const {
-  return summarise_regions(scenario_, mesh_, loop_->flow(), matrix_flow_);
+  return summarise_regions(scenario_, mesh_, loop_->flow(), matrix_flow_, {});
 }
 
 std::vector<output::NamedValue> CoupledModel::timings() const {

@@ -60,7 +60,8 @@ class CoupledModel {
   // summary.json's blocks, measured points and flow (once a pass has solved it), iterations =
   // passes finished; no timings.
   output::RunSummary summary() const;
-  // Each [[flow.region]]'s flow and effective conductivity now (summarise_regions); needs a
+  // Each [[flow.region]]'s flow and effective conductivity now (summarise_regions, without the
+  // tensor, which summary() gives); needs a
   // finished pass.
   std::vector<std::optional<output::RegionSummary>> region_flows() const;
   // Seconds per phase: mesh, porosity, flow, forces, mechanics.

@@ -222,6 +222,10 @@ output::RunSummary run_coupled(const RunContext& context) {
   }
   output::RunSummary summary = current_summary();
   summary.converged = converged;
+  if (summary.outside_mesh && summary.outside_mesh->blocks > 0)
+    spdlog::warn("{} block(s) reach outside the fluid mesh, block {} farthest, by {:.3g} m: their parts outside "
+                 "take the pressure of the mesh boundary there",
+                 summary.outside_mesh->blocks, summary.outside_mesh->block, summary.outside_mesh->largest_distance);
   if (!converged) {
     std::vector<double> two_passes;  // history.csv's third column from the end
     for (const std::vector<std::string>& row : checkpoint.history) two_passes.push_back(std::stod(row[row.size() - 3]));

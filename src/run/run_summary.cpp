@@ -5,6 +5,7 @@
 #include "run/model_building.hpp"
 #include "hydro/darcy_solver.hpp"
 #include "hydro/region_flow.hpp"
+#include "hydro/region_tensor.hpp"
 
 namespace hydrodda::run {
 
@@ -38,30 +39,46 @@ std::optional<hydro::FlowSolution> solve_matrix_flow(const scenario::Scenario& s
 std::vector<std::optional<output::RegionSummary>> summarise_regions(const scenario::Scenario& s,
                                                                   const mesh::TriangleMesh& mesh,
                                                                   const hydro::FlowSolution& solution,
-                                                                  const std::optional<hydro::FlowSolution>& matrix) {
+                                                                  const std::optional<hydro::FlowSolution>& matrix,
+                                                                  std::span<const double> permeability) {
   std::vector<std::optional<output::RegionSummary>> regions;
+  std::vector<hydro::Conductivity> conductivity;
+  const double per_permeability = build_flow_problem(*s.flow).fluid.conductivity_per_permeability();
+  for (double k : permeability) conductivity.push_back({k * per_permeability, 0.0, k * per_permeability});
   for (const scenario::FlowRegion& r : s.flow->regions) {
     const std::vector<int> triangles = select_triangles_in(mesh, r.polygon);
     if (triangles.empty()) {
       regions.emplace_back();
       continue;
     }
-    const hydro::RegionFlow region = hydro::compute_region_flow(mesh, solution, triangles);
-    // What a run of the unfractured case reports for the region (its own flow direction).
-    const double k_matrix = hydro::compute_region_flow(mesh, *matrix, triangles).effective_conductivity;
-    regions.push_back(output::RegionSummary{r.name, region.flow, region.effective_conductivity, k_matrix,
-                                            region.effective_conductivity / k_matrix});
+    // Both measured along the head gradient the boundary conditions impose: the unfractured
+    // case's mean gradient over the region. Along the mean flux instead, the flux's tilt by the
+    // fractures would change what is measured.
+    const geometry::Point imposed = hydro::compute_region_flow(mesh, *matrix, triangles).mean_head_gradient;
+    const hydro::RegionFlow region = hydro::compute_region_flow(mesh, solution, triangles, imposed);
+    const double k_matrix = hydro::compute_region_flow(mesh, *matrix, triangles, imposed).effective_conductivity;
+    output::RegionSummary summary{r.name, region.flow, region.effective_conductivity, k_matrix,
+                                  region.effective_conductivity / k_matrix};
+    summary.direction = {region.direction.x, region.direction.y};
+    if (!conductivity.empty()) {
+      const hydro::EffectiveTensor t = hydro::compute_region_tensor(mesh, conductivity, triangles);
+      summary.tensor = {t.tensor.xx, t.tensor.xy, t.tensor.yy};
+      summary.principal_values = t.principal;
+      for (int i = 0; i < 2; ++i) summary.principal_directions[i] = {t.directions[i].x, t.directions[i].y};
+    }
+    regions.push_back(summary);
   }
   return regions;
 }
 
 output::FlowSummary summarise_flow(const scenario::Scenario& s, const mesh::TriangleMesh& mesh,
                                    const hydro::FlowSolution& solution,
-                                   const std::optional<hydro::FlowSolution>& matrix) {
+                                   const std::optional<hydro::FlowSolution>& matrix,
+                                   std::span<const double> permeability) {
   output::FlowSummary flow;
   for (const hydro::BoundaryFlow& b : solution.boundary_flows) flow.boundaries.push_back({b.name, b.flow});
   flow.balance = solution.balance_error;
-  const auto regions = summarise_regions(s, mesh, solution, matrix);
+  const auto regions = summarise_regions(s, mesh, solution, matrix, permeability);
   for (std::size_t i = 0; i < regions.size(); ++i) {
     if (regions[i]) flow.regions.push_back(*regions[i]);
     else spdlog::warn("flow region \"{}\" holds no element: nothing to report", s.flow->regions[i].name);

@@ -2,6 +2,7 @@
 // The parts of summary.json that every kind of run fills the same way.
 
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "dda/system.hpp"
@@ -20,18 +21,22 @@ output::RunSummary summarise_mechanics(const scenario::Scenario& scenario, const
 // scenario has no flow region to report.
 std::optional<hydro::FlowSolution> solve_matrix_flow(const scenario::Scenario& scenario, const mesh::TriangleMesh& mesh);
 
-// Each [[flow.region]]'s flow and effective conductivity, with its conductivity in the
-// unfractured case (`matrix`) and their ratio, in the scenario's order; none for a region
-// that holds no element.
+// Each [[flow.region]]'s flow and effective conductivity along the head gradient the boundary
+// conditions impose (the unfractured case's mean gradient over the region), with its
+// conductivity in the unfractured case (`matrix`) along the same direction and their ratio, and
+// its full effective tensor from the element permeabilities (m², one per triangle; none when
+// empty), in the scenario's order; none for a region that holds no element.
 std::vector<std::optional<output::RegionSummary>> summarise_regions(const scenario::Scenario& scenario,
                                                                   const mesh::TriangleMesh& mesh,
                                                                   const hydro::FlowSolution& solution,
-                                                                  const std::optional<hydro::FlowSolution>& matrix);
+                                                                  const std::optional<hydro::FlowSolution>& matrix,
+                                                                  std::span<const double> permeability);
 
 // Boundary flows, mass balance, and each [[flow.region]]'s flow and effective conductivity,
 // with its conductivity in the unfractured case (`matrix`) and their ratio.
 output::FlowSummary summarise_flow(const scenario::Scenario& scenario, const mesh::TriangleMesh& mesh,
                                    const hydro::FlowSolution& solution,
-                                   const std::optional<hydro::FlowSolution>& matrix);
+                                   const std::optional<hydro::FlowSolution>& matrix,
+                                   std::span<const double> permeability);
 
 }  // namespace hydrodda::run
