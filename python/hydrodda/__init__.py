@@ -35,7 +35,12 @@ __all__ = [
 class RunResult:
     """What a run did: status ('finished', 'stopped', 'interrupted' or 'failed'), converged,
     iterations, message, summary (summary.json as a dict) and folder; history reads the run
-    folder's history.csv into a dict of NumPy arrays, one per column."""
+    folder's history.csv into a dict of NumPy arrays, one per column.
+
+    The model's fields as the run ended, from memory (no file is read), as dicts of NumPy
+    arrays like Simulation's: fluid (flow and coupled runs), blocks and contacts (mechanics and
+    coupled runs), fractures (runs of a scenario with a [geometry] domain that measured them);
+    None where the run has none."""
 
     def __init__(self, fields):
         self.status = fields["status"]
@@ -44,6 +49,11 @@ class RunResult:
         self.message = fields["message"]
         self.summary = json.loads(fields["summary_json"])
         self.folder = Path(fields["folder"])
+        model = fields["fields"]
+        self.fluid = model.get("fluid")
+        self.blocks = model.get("blocks")
+        self.contacts = model.get("contacts")
+        self.fractures = model.get("fractures")
         self._history = None
 
     @property

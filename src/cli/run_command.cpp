@@ -69,9 +69,10 @@ int run_command(const RunOptions& options) {
   choose_thread_count();
   Progress progress(options.verbosity, ::isatty(STDERR_FILENO) == 1);
   std::filesystem::path folder;  // removed when an interrupt while building the model leaves it empty
-  const run::Callbacks callbacks{[&](const run::ProgressReport& r) { progress.update(r.message); },
-                                 interrupt_requested,
-                                 [&](bool unstoppable) { set_exit_on_interrupt(unstoppable, folder); }};
+  run::Callbacks callbacks;
+  callbacks.progress = [&](const run::ProgressReport& r) { progress.update(r.message); };
+  callbacks.stop_requested = interrupt_requested;
+  callbacks.unstoppable_stage = [&](bool unstoppable) { set_exit_on_interrupt(unstoppable, folder); };
   try {
     std::optional<run::RunResult> result;
     if (options.resume) {

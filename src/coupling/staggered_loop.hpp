@@ -125,6 +125,12 @@ class StaggeredLoop {
   LoopState export_state() const;
   void import_state(LoopState state);
 
+  // New values of the flow boundary conditions (DarcySolver::set_boundary_values), taken from
+  // the next pass on: a loading path scripted between passes.
+  void set_flow_boundary_values(std::span<const hydro::BoundaryCondition> boundaries) {
+    darcy_.set_boundary_values(boundaries);
+  }
+
   const hydro::FlowSolution& flow() const { return solution_; }
   const PorosityField& porosity() const { return porosity_; }
   const std::vector<double>& permeability() const { return permeability_; }

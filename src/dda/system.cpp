@@ -93,11 +93,7 @@ System::System(ModelDefinition def, std::unique_ptr<LinearSolver> solver)
     if (p.ramp_time <= 0) throw std::invalid_argument("DDA: ramp_time must be > 0");
     displacement_points_.push_back({p.block, p.point, p.point});
   }
-  for (const EdgeTraction& t : tractions_) {
-    check_block(t.block);
-    if (t.edge < 0 || t.edge >= static_cast<int>(blocks_[t.block].polygon.size()))
-      throw std::invalid_argument("DDA: traction on a missing edge");
-  }
+  check_tractions(tractions_);
   for (const MeasuredPoint& m : def.measured_points) {
     check_block(m.block);
     measured_.push_back({m.block, m.point, m.point});
@@ -131,6 +127,19 @@ System::System(ModelDefinition def, std::unique_ptr<LinearSolver> solver)
                                   settings_.contact_skin >= 0 ? settings_.contact_skin : 0.2 * contact_distance_);
   for (const Block& b : blocks_) detection_.fixed.push_back(b.dof < 0);
   if (many_blocks()) start_second_thread();
+}
+
+void System::check_tractions(std::span<const EdgeTraction> tractions) const {
+  for (const EdgeTraction& t : tractions) {
+    if (t.block < 0 || t.block >= block_count()) throw std::invalid_argument("DDA: load on a missing block");
+    if (t.edge < 0 || t.edge >= static_cast<int>(blocks_[t.block].polygon.size()))
+      throw std::invalid_argument("DDA: traction on a missing edge");
+  }
+}
+
+void System::set_tractions(std::vector<EdgeTraction> tractions) {
+  check_tractions(tractions);
+  tractions_ = std::move(tractions);
 }
 
 void System::set_vertex_forces(std::vector<std::vector<Point>> forces) {

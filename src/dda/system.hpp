@@ -87,6 +87,9 @@ class System {
   // External forces per block per vertex (N per metre), e.g. fluid forces; replaces the last.
   // forces[b] must be empty or hold one force per vertex of block b.
   void set_vertex_forces(std::vector<std::vector<Point>> forces);
+  // Replaces the edge tractions from the next step on (a loading path changed between steps);
+  // throws std::invalid_argument for a block or edge that does not exist.
+  void set_tractions(std::vector<EdgeTraction> tractions);
 
   // The evolving state, and its restoration into a System built from the same definition
   // (import throws std::invalid_argument when the counts do not fit). Importing also restarts
@@ -150,6 +153,7 @@ class System {
   bool many_contacts_to_linearise() const { return active_.size() >= 2000; }
   bool many_contacts() const { return active_.size() >= 5000; }
   bool many_closed_contacts() const { return closed_.size() >= 5000; }  // loops over closed_
+  void check_tractions(std::span<const EdgeTraction> tractions) const;
   void detect_contacts();
   // A contact that touches at the start takes the initial stress's force across its faces: its
   // multiplier the normal force, its shear reference moved so that its spring holds the shear.

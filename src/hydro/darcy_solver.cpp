@@ -67,6 +67,29 @@ DarcySolver::DarcySolver(const mesh::TriangleMesh& mesh, DarcyProblem problem,
   setup_seconds_ = seconds_since(start);
 }
 
+void DarcySolver::set_boundary_values(std::span<const BoundaryCondition> boundaries) {
+  const auto same_condition = [](const BoundaryCondition& a, const BoundaryCondition& b) {
+    return a.boundary == b.boundary && a.kind == b.kind;
+  };
+  if (!std::equal(boundaries.begin(), boundaries.end(), problem_.boundaries.begin(), problem_.boundaries.end(),
+                  same_condition))
+    throw std::invalid_argument(
+        "flow: only the values of the boundary conditions may change, not which boundaries they name or "
+        "their kind");
+  const std::vector<int> free_before = free_nodes_;
+  const std::vector<BoundaryCondition> before = problem_.boundaries;
+  problem_.boundaries.assign(boundaries.begin(), boundaries.end());
+  try {
+    setup_boundary_conditions();
+  } catch (...) {
+    problem_.boundaries = before;
+    setup_boundary_conditions();
+    throw;
+  }
+  // The same conditions on the same edges fix the same nodes.
+  if (free_nodes_ != free_before) throw std::logic_error("flow: new boundary values changed the fixed nodes");
+}
+
 void DarcySolver::setup_boundary_conditions() {
   const int node_count = mesh_.node_count();
   const double rho_g = problem_.fluid.unit_weight();

@@ -38,6 +38,12 @@ class DarcySolver {
   // Solves with a permeability tensor (m²) per triangle.
   FlowSolution solve(std::span<const PermeabilityTensor> permeability);
 
+  // New values for the same conditions (the same boundaries, kinds and order), e.g. a head
+  // raised between coupling passes: the fixed nodes stay, so the pattern and its analysis are
+  // kept. Throws std::invalid_argument when the conditions differ in anything but their values.
+  void set_boundary_values(std::span<const BoundaryCondition> boundaries);
+  const std::vector<BoundaryCondition>& boundary_conditions() const { return problem_.boundaries; }
+
   int unknown_count() const { return static_cast<int>(free_nodes_.size()); }
   long long stored_nonzeros() const { return matrix_.nonZeros(); }
   double reference_head() const { return reference_head_; }

@@ -24,6 +24,10 @@ struct PythonScenario {
 // Reads `text` as `file` holds it; throws scenario::ScenarioError listing every problem.
 PythonScenario read_python_scenario(std::string text, const std::filesystem::path& file);
 
+// The scenario with the value at a key path set (as `sweep --set`), read again; throws
+// scenario::ScenarioError when the result is not a valid scenario.
+PythonScenario with_value(const PythonScenario& scenario, const std::string& key, const py::handle& value);
+
 void bind_errors(py::module_& module);      // ScenarioError, InputError, RunFolderError
 void bind_scenario(py::module_& module);    // Scenario, Diagnostic
 void bind_run(py::module_& module);         // _run, _resume, ProgressReport

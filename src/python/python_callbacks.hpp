@@ -13,16 +13,23 @@ namespace hydrodda::python {
 
 class PythonCallbacks {
  public:
-  explicit PythonCallbacks(py::object progress) : progress_(std::move(progress)) {}
+  // `keep_fields`: keep the model's fields at the run's end (fields_at_end).
+  explicit PythonCallbacks(py::object progress, bool keep_fields = false)
+      : progress_(std::move(progress)), keep_fields_(keep_fields) {}
 
   // Valid while this object lives; call the run with the GIL released.
   run::Callbacks callbacks();
   // Raises the pending Python error, if any (with the GIL held).
   void raise_pending();
+  // The model's fields as the run ended (model_fields.hpp: fields_at_end); an empty dict when
+  // the run built no model.
+  py::dict fields_at_end() const { return fields_at_end_ ? *fields_at_end_ : py::dict(); }
 
  private:
   py::object progress_;
+  bool keep_fields_ = false;
   std::optional<py::error_already_set> pending_;
+  std::optional<py::dict> fields_at_end_;
 };
 
 }  // namespace hydrodda::python

@@ -7,6 +7,7 @@
 
 #include "output/summary.hpp"
 #include "python/bindings.hpp"
+#include "python/model_fields.hpp"
 #include "python/python_callbacks.hpp"
 #include "run/resumed_run.hpp"
 #include "run/run.hpp"
@@ -35,7 +36,7 @@ const char* kind_name(run::ProgressReport::Kind kind) {
 }
 
 // What run() returned, for the package's RunResult; the summary as summary.json's text.
-py::dict result_fields(const run::RunResult& result) {
+py::dict result_fields(const run::RunResult& result, const PythonCallbacks& callbacks) {
   py::dict fields;
   fields["status"] = status_name(result.status);
   fields["converged"] = result.converged;
@@ -43,6 +44,7 @@ py::dict result_fields(const run::RunResult& result) {
   fields["message"] = result.message;
   fields["summary_json"] = output::format_summary(result.summary);
   fields["folder"] = result.folder;
+  fields["fields"] = callbacks.fields_at_end();
   return fields;
 }
 
@@ -58,6 +60,16 @@ run::Callbacks PythonCallbacks::callbacks() {
         progress_(report);
       } catch (py::error_already_set& e) {
         pending_.emplace(std::move(e));
+      }
+    };
+  }
+  if (keep_fields_) {
+    callbacks.model_at_end = [this](const run::ModelAtEnd& end) {
+      py::gil_scoped_acquire gil;
+      try {
+        fields_at_end_ = python::fields_at_end(end);
+      } catch (py::error_already_set& e) {
+        if (!pending_) pending_.emplace(std::move(e));
       }
     };
   }
@@ -98,14 +110,14 @@ void bind_run(py::module_& module) {
          std::optional<int> stop_after, py::object progress) {
         const run::RunOptions options{folder.value_or(scenario.definition.output.directory), overwrite, stop_after,
                                       scenario.text};
-        PythonCallbacks callbacks(std::move(progress));
+        PythonCallbacks callbacks(std::move(progress), /*keep_fields=*/true);
         std::optional<run::RunResult> result;
         {
           py::gil_scoped_release released;
           result = run::run(scenario.definition, options, callbacks.callbacks());
         }
         callbacks.raise_pending();
-        return result_fields(*result);
+        return result_fields(*result, callbacks);
       },
       py::arg("scenario"), py::arg("folder"), py::arg("overwrite"), py::arg("stop_after"), py::arg("progress"));
 
@@ -113,14 +125,14 @@ void bind_run(py::module_& module) {
       "_resume",
       [](const std::filesystem::path& folder, std::optional<int> stop_after, py::object progress) {
         const run::ResumedRun resumed = run::open_resumed_run(folder);
-        PythonCallbacks callbacks(std::move(progress));
+        PythonCallbacks callbacks(std::move(progress), /*keep_fields=*/true);
         std::optional<run::RunResult> result;
         {
           py::gil_scoped_release released;
           result = run::resume(resumed, stop_after, callbacks.callbacks());
         }
         callbacks.raise_pending();
-        return result_fields(*result);
+        return result_fields(*result, callbacks);
       },
       py::arg("folder"), py::arg("stop_after"), py::arg("progress"));
 }

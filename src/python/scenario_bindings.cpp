@@ -75,6 +75,11 @@ PythonScenario read_python_scenario(std::string text, const std::filesystem::pat
   return PythonScenario{std::move(text), file, std::move(definition)};
 }
 
+PythonScenario with_value(const PythonScenario& scenario, const std::string& key, const py::handle& value) {
+  std::string text = scenario::apply_overrides(scenario.text, scenario.file, {{key, toml_value(value)}});
+  return read_python_scenario(std::move(text), scenario.file);
+}
+
 void bind_errors(py::module_& module) {
   static py::exception<scenario::ScenarioError> scenario_error(module, "ScenarioError", PyExc_ValueError);
   static py::exception<run::InputError> input_error(module, "InputError", PyExc_ValueError);
@@ -122,8 +127,7 @@ void bind_scenario(py::module_& module) {
       .def(
           "set",
           [](PythonScenario& self, const std::string& key, const py::handle& value) {
-            std::string text = scenario::apply_overrides(self.text, self.file, {{key, toml_value(value)}});
-            self = read_python_scenario(std::move(text), self.file);  // unchanged if this throws
+            self = with_value(self, key, value);  // unchanged if this throws
           },
           py::arg("key"), py::arg("value"),
           "Sets the value at a key path (as `sweep --set`): 'flow.boundary[0].head', 30.0.")

@@ -7,14 +7,17 @@
 
 #include <memory>
 #include <optional>
+#include <regex>
 #include <stdexcept>
 #include <variant>
 
 #include "coupling/staggered_loop.hpp"
 #include "output/summary.hpp"
 #include "python/bindings.hpp"
+#include "python/model_fields.hpp"
 #include "python/python_callbacks.hpp"
 #include "run/coupled_model.hpp"
+#include "run/fracture_results.hpp"
 #include "run/flow_model.hpp"
 #include "run/mechanics_model.hpp"
 #include "run/run.hpp"
@@ -23,100 +26,6 @@ namespace hydrodda::python {
 
 namespace {
 
-using Array = py::array_t<double>;
-
-// An (n, width) array of `n` rows that `row(i, j)` fills.
-template <class Row>
-Array table(std::size_t n, std::size_t width, Row row) {
-  Array array(std::vector<py::ssize_t>{static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(width)});
-  auto view = array.mutable_unchecked<2>();
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < width; ++j) view(i, j) = row(i, j);
-  return array;
-}
-
-Array column(const std::vector<double>& values) { return Array(static_cast<py::ssize_t>(values.size()), values.data()); }
-
-Array points(const std::vector<geometry::Point>& values) {
-  return table(values.size(), 2, [&](std::size_t i, std::size_t j) { return j == 0 ? values[i].x : values[i].y; });
-}
-
-// The fluid mesh and, once solved, its fields: nodes (N, 2) m, triangles (T, 3) node indices,
-// head and pressure per node, flux (T, 2) m/s and permeability (T) m² per triangle.
-py::dict fluid_fields(const mesh::TriangleMesh& mesh, const hydro::FlowSolution* flow,
-                      const std::vector<double>& permeability) {
-  py::dict fields;
-  fields["nodes"] = points(mesh.nodes);
-  py::array_t<int> triangles(std::vector<py::ssize_t>{mesh.triangle_count(), 3});
-  auto view = triangles.mutable_unchecked<2>();
-  for (int t = 0; t < mesh.triangle_count(); ++t)
-    for (int k = 0; k < 3; ++k) view(t, k) = mesh.triangles[t][k];
-  fields["triangles"] = triangles;
-  fields["permeability"] = column(permeability);
-  if (flow != nullptr && !flow->head.empty()) {
-    fields["head"] = column(flow->head);
-    fields["pressure"] = column(flow->pressure);
-    fields["flux"] = points(flow->flux);
-  }
-  return fields;
-}
-
-// The blocks as they stand: polygons (a list of (n, 2) arrays, m), centroid and displacement
-// (B, 2) m, rotation (B) rad, stress (B, 3) σxx, σyy, τxy Pa, area (B) m².
-py::dict block_fields(const dda::System& system) {
-  const auto n = static_cast<std::size_t>(system.block_count());
-  py::list polygons;
-  for (int b = 0; b < system.block_count(); ++b) polygons.append(points(system.polygon(b)));
-  py::dict fields;
-  fields["polygons"] = polygons;
-  fields["centroid"] = table(n, 2, [&](std::size_t b, std::size_t j) {
-    const geometry::Point c = system.centroid(static_cast<int>(b));
-    return j == 0 ? c.x : c.y;
-  });
-  fields["displacement"] = table(n, 2, [&](std::size_t b, std::size_t j) {
-    const geometry::Point d = system.displacement(static_cast<int>(b));
-    return j == 0 ? d.x : d.y;
-  });
-  fields["rotation"] = table(n, 1, [&](std::size_t b, std::size_t) { return system.rotation(static_cast<int>(b)); })
-                           .attr("reshape")(n);
-  fields["stress"] = table(n, 3, [&](std::size_t b, std::size_t j) { return system.stress(static_cast<int>(b))[j]; });
-  fields["area"] = table(n, 1, [&](std::size_t b, std::size_t) { return system.area(static_cast<int>(b)); })
-                       .attr("reshape")(n);
-  return fields;
-}
-
-// Every contact: block_i, vertex, block_j, edge (int arrays: vertex `vertex` of block_i against
-// edge `edge` of block_j), state ("open", "sliding", "locked"), penetration (m, > 0 overlap) and
-// normal_force (N/m, compression positive).
-py::dict contact_fields(const dda::System& system) {
-  const std::vector<dda::ContactInfo> contacts = system.contacts();
-  const auto n = static_cast<py::ssize_t>(contacts.size());
-  py::array_t<int> block_i(n), vertex(n), block_j(n), edge(n);
-  Array penetration(n), normal_force(n);
-  py::list state;
-  for (py::ssize_t c = 0; c < n; ++c) {
-    const dda::ContactInfo& info = contacts[static_cast<std::size_t>(c)];
-    block_i.mutable_at(c) = info.key.block_i;
-    vertex.mutable_at(c) = info.key.vertex;
-    block_j.mutable_at(c) = info.key.block_j;
-    edge.mutable_at(c) = info.key.edge;
-    penetration.mutable_at(c) = info.penetration;
-    normal_force.mutable_at(c) = info.normal_force;
-    state.append(info.state == dda::ContactState::open      ? "open"
-                 : info.state == dda::ContactState::sliding ? "sliding"
-                                                            : "locked");
-  }
-  py::dict fields;
-  fields["block_i"] = block_i;
-  fields["vertex"] = vertex;
-  fields["block_j"] = block_j;
-  fields["edge"] = edge;
-  fields["state"] = py::array(state);
-  fields["penetration"] = penetration;
-  fields["normal_force"] = normal_force;
-  return fields;
-}
-
 py::object summary_dict(const output::RunSummary& summary) {
   return py::module_::import("json").attr("loads")(output::format_summary(summary));
 }
@@ -124,7 +33,7 @@ py::object summary_dict(const output::RunSummary& summary) {
 // A scenario's model, stepped by hand.
 class Simulation {
  public:
-  explicit Simulation(const PythonScenario& scenario) {
+  explicit Simulation(const PythonScenario& scenario) : scenario_(scenario) {
     py::gil_scoped_release released;
     switch (run::kind_of(scenario.definition)) {
       case run::RunKind::flow: model_ = std::make_unique<run::FlowModel>(scenario.definition); break;
@@ -202,10 +111,55 @@ class Simulation {
       return fluid_fields((*f)->mesh(), &(*f)->flow(), (*f)->permeability());
     const run::CoupledModel& model = *expect_const<Coupled>("fluid");
     const coupling::StaggeredLoop& loop = model.loop();
-    py::dict fields = fluid_fields(model.mesh(), &loop.flow(), loop.permeability());
-    if (!loop.porosity().porosity.empty()) fields["porosity"] = column(loop.porosity().porosity);
-    return fields;
+    return fluid_fields(model.mesh(), &loop.flow(), loop.permeability(), &loop.porosity().porosity);
   }
+
+  // The fractures as the blocks stand (with their flow once a coupled pass has solved it);
+  // None for a scenario that lists its blocks.
+  py::object fractures() {
+    const dda::System& blocks = system("fractures");
+    if (!meter_) {
+      meter_ = run::make_fracture_meter(scenario_.definition);
+      if (!meter_) return py::none();
+    }
+    std::vector<geometry::Polygon> polygons;
+    for (int b = 0; b < blocks.block_count(); ++b) polygons.push_back(blocks.polygon(b));
+    run::FractureState state = meter_->measure(polygons, blocks.penetration_tolerance());
+    if (const auto* coupled = std::get_if<Coupled>(&model_); coupled && (*coupled)->loop().has_flow()) {
+      if (!flow_zones_) flow_zones_ = meter_->flow_zones((*coupled)->mesh());
+      meter_->add_flow(state, *flow_zones_, (*coupled)->loop().flow());
+    }
+    return fracture_fields(state);
+  }
+
+  // A loading path: a new value of a flow boundary condition or of a traction, from the next
+  // solve, step or pass on (the key paths of Scenario.set).
+  void set(const std::string& key, const py::handle& value) {
+    static const std::regex flow_key(R"(flow\.boundary\[\d+\]\.(head|pressure|flux))");
+    static const std::regex traction_key(R"(mechanics\.traction\[\d+\]\.(normal|normal_end|shear|shear_end))");
+    const bool flow = std::regex_match(key, flow_key);
+    if (!flow && !std::regex_match(key, traction_key))
+      throw py::value_error("Simulation.set changes a boundary's head, pressure or flux "
+                            "(flow.boundary[i].head, ...) or a traction (mechanics.traction[i].normal, "
+                            "normal_end, shear, shear_end) between steps or passes, not '" + key +
+                            "': change the Scenario and build a new Simulation for anything else");
+    PythonScenario changed = with_value(scenario_, key, value);
+    if (flow) {
+      if (!changed.definition.flow) throw py::value_error(key + ": this simulation has no [flow]");
+      auto boundaries = changed.definition.flow->boundaries;
+      if (auto* f = std::get_if<Flow>(&model_)) (*f)->set_flow_boundaries(std::move(boundaries));
+      else expect<Coupled>("set('flow...')")->set_flow_boundaries(std::move(boundaries));
+    } else {
+      if (!changed.definition.mechanics) throw py::value_error(key + ": this simulation has no [mechanics]");
+      auto tractions = changed.definition.mechanics->tractions;
+      if (auto* m = std::get_if<Mechanics>(&model_)) (*m)->set_tractions(std::move(tractions));
+      else expect<Coupled>("set('mechanics...')")->set_tractions(std::move(tractions));
+    }
+    scenario_ = std::move(changed);
+    converged_ = false;
+  }
+
+  PythonScenario scenario() const { return scenario_; }  // a copy: changing it changes no model
 
   py::dict blocks() const { return block_fields(system("blocks")); }
   py::dict contacts() const { return contact_fields(system("contacts")); }
@@ -234,8 +188,11 @@ class Simulation {
     return expect_const<Coupled>(what)->mechanics();
   }
 
+  PythonScenario scenario_;  // as built, with the changes set() made since
   std::variant<Flow, Mechanics, Coupled> model_;
   bool converged_ = false;  // coupled: the last pass met the tolerance
+  std::optional<run::FractureMeter> meter_;                  // made on the first call of fractures
+  std::optional<run::FractureMeter::FlowZones> flow_zones_;  // likewise, for a coupled model
 };
 
 }  // namespace
@@ -253,6 +210,11 @@ void bind_simulation(py::module_& module) {
       .def_property_readonly("fluid", &Simulation::fluid)
       .def_property_readonly("blocks", &Simulation::blocks)
       .def_property_readonly("contacts", &Simulation::contacts)
+      .def_property_readonly("fractures", &Simulation::fractures,
+                             "Per fracture, as fractures.csv's columns (a dict of arrays); None without a [geometry] domain")
+      .def("set", &Simulation::set, py::arg("key"), py::arg("value"),
+           "Changes a flow boundary's head, pressure or flux, or a traction, from the next step or pass on.")
+      .def_property_readonly("scenario", &Simulation::scenario, "The scenario as built, with the changes set() made")
       .def_property_readonly("summary", &Simulation::summary, "summary.json's content for the state now (no timings)");
 }
 

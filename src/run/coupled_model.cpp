@@ -25,6 +25,7 @@ CoupledModel::CoupledModel(const scenario::Scenario& scenario) : scenario_(scena
   std::vector<dda::BlockDefinition> block_definitions = build_blocks(s);
   coupling::LoopSettings settings;
   settings.biot_coefficients = find_biot_coefficients(s, block_definitions);
+  initial_blocks_ = block_definitions;
   system_.emplace(build_mechanics_model(s, std::move(block_definitions)));
   spdlog::info("mechanics: {} blocks", system_->block_count());
 
@@ -61,6 +62,21 @@ coupling::PassReport CoupledModel::run_pass() {
   last_pass_ = {system_->export_state(), loop_->export_state()};
   system_->import_state(last_pass_.mechanics);
   return r;
+}
+
+void CoupledModel::set_flow_boundaries(std::vector<scenario::FlowBoundaryCondition> boundaries) {
+  scenario::Scenario changed = scenario_;
+  changed.flow->boundaries = std::move(boundaries);
+  loop_->set_flow_boundary_values(build_flow_problem(*changed.flow).boundaries);
+  scenario_ = std::move(changed);
+  matrix_flow_ = solve_matrix_flow(scenario_, mesh_);
+}
+
+void CoupledModel::set_tractions(std::vector<scenario::Traction> tractions) {
+  scenario::Scenario changed = scenario_;
+  changed.mechanics->tractions = std::move(tractions);
+  system_->set_tractions(build_tractions(changed, initial_blocks_));
+  scenario_ = std::move(changed);
 }
 
 void CoupledModel::import_state(const CoupledState& state) {

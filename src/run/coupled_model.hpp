@@ -44,6 +44,14 @@ class CoupledModel {
   // Asked before every DDA step of a pass; unset: never.
   void set_stop_request(std::function<bool()> stop_requested) { stop_requested_ = std::move(stop_requested); }
 
+  // A loading path scripted between passes, taken from the next pass on: new values of the
+  // [[flow.boundary]] conditions (the same boundaries and kinds; throws std::invalid_argument
+  // otherwise), and new [[mechanics.traction]] loads (placed on the blocks as built; throws
+  // scenario::ScenarioError for a boundary on which no block edge lies). The unfractured
+  // reference the regions' conductivity is normalised by is solved again for new heads.
+  void set_flow_boundaries(std::vector<scenario::FlowBoundaryCondition> boundaries);
+  void set_tractions(std::vector<scenario::Traction> tractions);
+
   // The state after the last finished pass (as built before the first), and its restoration
   // into a model built from the same scenario (continuing a run); throws std::invalid_argument
   // when it does not fit.
@@ -75,6 +83,7 @@ class CoupledModel {
   double mesh_seconds_ = 0.0, porosity_seconds_ = 0.0, flow_seconds_ = 0.0, forces_seconds_ = 0.0,
          mechanics_seconds_ = 0.0;
   mesh::TriangleMesh mesh_;
+  std::vector<dda::BlockDefinition> initial_blocks_;  // where the tractions' edges are found
   std::optional<dda::System> system_;
   std::optional<coupling::StaggeredLoop> loop_;
   std::optional<hydro::FlowSolution> matrix_flow_;  // the unfractured case; none without regions

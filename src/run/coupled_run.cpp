@@ -79,6 +79,7 @@ output::RunSummary run_coupled(const RunContext& context) {
   const FractureMeter::FlowZones flow_zones = meter ? meter->flow_zones(mesh) : FractureMeter::FlowZones{};
   FractureOutput fractures(context.folder, /*with_flow=*/true);
   std::optional<FractureState> fracture_state;  // of the last finished pass
+  const TellModelAtEnd tell_model_at_end(context.callbacks, model, fracture_state);
   const auto measure_fractures = [&] {
     fracture_state = meter->measure(model.block_polygons(), system.penetration_tolerance());
     meter->add_flow(*fracture_state, flow_zones, loop.flow());

@@ -73,6 +73,11 @@ FlowModel::FlowModel(const scenario::Scenario& scenario) : scenario_(scenario) {
   timings_.push_back({"permeability", seconds_since(start)});
 }
 
+void FlowModel::set_flow_boundaries(std::vector<scenario::FlowBoundaryCondition> boundaries) {
+  scenario_.flow->boundaries = std::move(boundaries);
+  solution_ = {};
+}
+
 const hydro::FlowSolution& FlowModel::solve() {
   const auto start = Clock::now();
   hydro::DarcySolver solver(mesh_, build_flow_problem(*scenario_.flow));

@@ -21,6 +21,8 @@ class FlowModel {
 
   // The heads under the scenario's boundary conditions.
   const hydro::FlowSolution& solve();
+  // New [[flow.boundary]] conditions for the next solve(); the last solution is dropped.
+  void set_flow_boundaries(std::vector<scenario::FlowBoundaryCondition> boundaries);
 
   const scenario::Scenario& scenario() const { return scenario_; }
   const mesh::TriangleMesh& mesh() const { return mesh_; }

@@ -11,7 +11,8 @@ namespace hydrodda::run {
 
 MechanicsModel::MechanicsModel(const scenario::Scenario& scenario)
     : scenario_(scenario),
-      system_(build_mechanics_model(scenario_, build_blocks(scenario_))),
+      initial_blocks_(build_blocks(scenario_)),
+      system_(build_mechanics_model(scenario_, initial_blocks_)),
       end_time_(mechanics_duration(*scenario_.mechanics)) {
   spdlog::info("mechanics: {} blocks, penalty {:.3g} N/m, allowed step displacement {:.3g} m",
                system_.block_count(), system_.penalty(), system_.allowed_step_displacement());
@@ -28,6 +29,13 @@ dda::StepReport MechanicsModel::step() {
       m.steps ? system_.step() : system_.run_until(std::min(end_time_, system_.time() + m.time_step));
   ++steps_;
   return r;
+}
+
+void MechanicsModel::set_tractions(std::vector<scenario::Traction> tractions) {
+  scenario::Scenario changed = scenario_;
+  changed.mechanics->tractions = std::move(tractions);
+  system_.set_tractions(build_tractions(changed, initial_blocks_));
+  scenario_ = std::move(changed);
 }
 
 output::RunSummary MechanicsModel::summary() const {

@@ -2,6 +2,8 @@
 // A mechanics-only model: the DDA system of the scenario's blocks and loads, stepped until the
 // scenario's `steps` or `end_time`. It writes no file; run() drives it into a run folder.
 
+#include <vector>
+
 #include "dda/system.hpp"
 #include "output/summary.hpp"
 #include "scenario/scenario.hpp"
@@ -20,6 +22,9 @@ class MechanicsModel {
   // pass it (time-step control may shorten steps, so such a run takes as many as it needs).
   dda::StepReport step();
   long long steps() const { return steps_; }
+  // New [[mechanics.traction]] loads from the next step on, placed on the blocks as built; throws
+  // scenario::ScenarioError for a boundary on which no block edge lies.
+  void set_tractions(std::vector<scenario::Traction> tractions);
 
   const scenario::Scenario& scenario() const { return scenario_; }
   const dda::System& system() const { return system_; }
@@ -28,6 +33,7 @@ class MechanicsModel {
 
  private:
   scenario::Scenario scenario_;
+  std::vector<dda::BlockDefinition> initial_blocks_;  // where the tractions' edges are found
   dda::System system_;
   double end_time_ = 0.0;
   long long steps_ = 0;

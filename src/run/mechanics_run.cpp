@@ -40,13 +40,16 @@ output::RunSummary run_mechanics(const RunContext& context) {
   const std::optional<FractureMeter> meter = make_fracture_meter(s);
   FractureOutput fractures(context.folder, /*with_flow=*/false);
   std::vector<geometry::Polygon> polygons;
+  std::optional<FractureState> fracture_state;  // at the last output step
+  const TellModelAtEnd tell_model_at_end(context.callbacks, model, fracture_state);
   // Blocks and contacts, and the fractures' rows and lines, at an output step.
   const auto write_step = [&](long long step, double time) {
     paraview.write_blocks(static_cast<int>(step), time, system);
     if (!meter) return;
     polygons.clear();
     for (int b = 0; b < system.block_count(); ++b) polygons.push_back(system.polygon(b));
-    const FractureState state = meter->measure(polygons, system.penetration_tolerance());
+    fracture_state = meter->measure(polygons, system.penetration_tolerance());
+    const FractureState& state = *fracture_state;
     fractures.add_rows(step, time, state);
     if (s.output.fields.fractures) fractures.write_series(static_cast<int>(step), time, state);
     if (model.finished()) draw_aperture_figure(s, context.folder, polygons, state, {fmt::format("DDA step {}", step)});
@@ -62,6 +65,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
                          model.summary());
       }
       const dda::StepReport r = model.step();
+      fracture_state.reset();  // no longer the blocks' state: measured again at an output step
       const long long step = model.steps();
       history.add_row({CsvTable::cell(step), CsvTable::cell(r.time), CsvTable::cell(r.time_step),
                        CsvTable::cell(static_cast<long long>(r.open_close_iterations)),

@@ -226,6 +226,35 @@ double mechanics_duration(const scenario::MechanicsDefinition& m) {
   return m.end_time ? *m.end_time : m.time_step * static_cast<double>(m.steps.value_or(1));
 }
 
+namespace {
+
+// The edge loads of every [[mechanics.traction]]; a boundary on which no block edge lies adds
+// an error.
+std::vector<dda::EdgeTraction> edge_tractions(const Scenario& s, const std::vector<dda::BlockDefinition>& blocks,
+                                              std::vector<Diagnostic>& errors) {
+  const double tolerance = geometric_tolerance(blocks);
+  std::vector<dda::EdgeTraction> all;
+  for (const scenario::Traction& t : s.mechanics->tractions) {
+    const scenario::BoundarySegment* boundary = s.find_boundary(t.boundary);
+    auto tractions = dda::make_tractions_on_segment(blocks, boundary->segment.from, boundary->segment.to, tolerance,
+                                                    t.normal, t.normal_end, t.shear, t.shear_end);
+    if (tractions.empty())
+      errors.push_back({s.file.string(), t.line, "mechanics.traction.boundary",
+                        fmt::format("no block edge lies on boundary \"{}\"", t.boundary)});
+    all.insert(all.end(), tractions.begin(), tractions.end());
+  }
+  return all;
+}
+
+}  // namespace
+
+std::vector<dda::EdgeTraction> build_tractions(const Scenario& scenario, const std::vector<dda::BlockDefinition>& blocks) {
+  std::vector<Diagnostic> errors;
+  std::vector<dda::EdgeTraction> tractions = edge_tractions(scenario, blocks, errors);
+  if (!errors.empty()) throw scenario::ScenarioError(std::move(errors));
+  return tractions;
+}
+
 dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::BlockDefinition> blocks) {
   const scenario::MechanicsDefinition& m = *s.mechanics;
   const std::string file = s.file.string();
@@ -273,14 +302,7 @@ dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::B
     for (const dda::VertexRef& v : vertices)
       model.displacements.push_back({v.block, blocks[v.block].polygon[v.vertex], d.value, ramp_time});
   }
-  for (const scenario::Traction& t : m.tractions) {
-    const scenario::BoundarySegment* boundary = s.find_boundary(t.boundary);
-    auto tractions = dda::make_tractions_on_segment(blocks, boundary->segment.from, boundary->segment.to, tolerance,
-                                                    t.normal, t.normal_end, t.shear, t.shear_end);
-    if (tractions.empty())
-      errors.push_back({file, t.line, "mechanics.traction.boundary", fmt::format("no block edge lies on boundary \"{}\"", t.boundary)});
-    model.tractions.insert(model.tractions.end(), tractions.begin(), tractions.end());
-  }
+  model.tractions = edge_tractions(s, blocks, errors);
   if (m.initial_stress) {
     const scenario::InitialStressDefinition& i = *m.initial_stress;
     model.initial_stress = dda::StressField{i.stress, i.reference_y, i.gradient};

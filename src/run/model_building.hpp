@@ -3,6 +3,7 @@
 // (a fixed point in no block, a boundary that touches no block) are input errors: they are
 // thrown as a ScenarioError naming the file, line and key, like the reader's.
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,10 @@ std::vector<dda::BlockDefinition> build_blocks(const scenario::Scenario& scenari
 dda::ModelDefinition build_mechanics_model(const scenario::Scenario& scenario,
                                            std::vector<dda::BlockDefinition> blocks);
 
+// The edge loads of the scenario's [[mechanics.traction]] on the blocks as built (initial
+// positions); throws a ScenarioError for a boundary on which no block edge lies.
+std::vector<dda::EdgeTraction> build_tractions(const scenario::Scenario& scenario,
+                                               const std::vector<dda::BlockDefinition>& blocks);
 // The permeability law of [flow] with the (only) material's porosity and grain size.
 coupling::PermeabilityModel make_permeability_model(const scenario::Scenario& scenario);
 

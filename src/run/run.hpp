@@ -17,6 +17,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <variant>
 
 #include "output/summary.hpp"
 #include "run/resumed_run.hpp"
@@ -39,6 +40,19 @@ struct ProgressReport {
   std::string message;               // all of it in one line, for people
 };
 
+class FlowModel;
+class MechanicsModel;
+class CoupledModel;
+struct FractureState;
+
+// A run's model as the run ends, for a front end that reads its fields from memory (the Python
+// module): the model in its last state (a coupled run's last finished pass) and, when the
+// scenario has fracture traces and the run measured them, the fractures' results then.
+struct ModelAtEnd {
+  std::variant<const FlowModel*, const MechanicsModel*, const CoupledModel*> model;
+  const FractureState* fractures = nullptr;
+};
+
 struct Callbacks {
   // Called after every step, pass or solve; unset: nothing is reported.
   std::function<void(const ProgressReport&)> progress;
@@ -51,6 +65,9 @@ struct Callbacks {
   // keep (building the model: meshing, the first flow solve), with false after it: a front end
   // may end the process at once on an interrupt meanwhile. Unset: nothing is said.
   std::function<void(bool)> unstoppable_stage;
+  // Called once when a run that built its model ends, whether finished, stopped, interrupted or
+  // failed, before the model is destroyed; what it throws is ignored. Unset: nothing is said.
+  std::function<void(const ModelAtEnd&)> model_at_end;
 };
 
 enum class RunStatus {

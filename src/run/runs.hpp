@@ -8,6 +8,7 @@
 #include "output/checkpoint.hpp"
 #include "output/run_folder.hpp"
 #include "output/summary.hpp"
+#include "run/fracture_results.hpp"
 #include "run/run.hpp"
 #include "scenario/scenario.hpp"
 
@@ -44,6 +45,30 @@ class UnstoppableStage {
 
  private:
   const std::function<void(bool)>& tell_;
+};
+
+// Callbacks::model_at_end told when it goes out of scope: declared after the model (and the
+// fractures' results), so that it is told before they are destroyed, on every way out.
+template <class Model>
+class TellModelAtEnd {
+ public:
+  TellModelAtEnd(const Callbacks& callbacks, const Model& model, const std::optional<FractureState>& fractures)
+      : tell_(callbacks.model_at_end), model_(model), fractures_(fractures) {}
+  ~TellModelAtEnd() {
+    if (!tell_) return;
+    try {
+      tell_(ModelAtEnd{&model_, fractures_ ? &*fractures_ : nullptr});
+    } catch (...) {
+      // A front end's failure to read the fields must not turn a finished run into a crash.
+    }
+  }
+  TellModelAtEnd(const TellModelAtEnd&) = delete;
+  TellModelAtEnd& operator=(const TellModelAtEnd&) = delete;
+
+ private:
+  const std::function<void(const ModelAtEnd&)>& tell_;
+  const Model& model_;
+  const std::optional<FractureState>& fractures_;
 };
 
 // A run that stopped before its end: what failed or stopped it, and where. The summary holds

@@ -102,6 +102,34 @@ TEST(DarcySolver, RepeatedSolvesAreBitIdentical) {
   EXPECT_LE(sa.balance_error, 1e-10);
 }
 
+// New boundary values on a solver already set up give the heads a solver built with them
+// gives, bit for bit (the same fixed nodes, pattern and factorisation order); a change of the
+// kind or of the boundaries named is refused, and the solver keeps its conditions.
+TEST(DarcySolver, NewBoundaryValuesSolveAsAFreshSolver) {
+  std::vector<double> k(square().triangles.size());
+  for (std::size_t t = 0; t < k.size(); ++t) k[t] = 1e-12 * (1.0 + static_cast<double>(t % 5));
+  DarcySolver changed(square(), make_problem({{"left", BoundaryKind::head, 1.0}, {"right", BoundaryKind::pressure, 0.0}}));
+  changed.solve(k);
+  const std::vector<BoundaryCondition> raised{{"left", BoundaryKind::head, 7.5}, {"right", BoundaryKind::pressure, 2e4}};
+  changed.set_boundary_values(raised);
+  DarcySolver fresh(square(), make_problem(raised));
+  const FlowSolution a = changed.solve(k), b = fresh.solve(k);
+  EXPECT_EQ(a.head, b.head);
+  EXPECT_EQ(a.pressure, b.pressure);
+  EXPECT_EQ(changed.reference_head(), 7.5);
+
+  const std::string kind = message_of([&] {
+    changed.set_boundary_values(std::vector<BoundaryCondition>{{"left", BoundaryKind::flux, 1e-6},
+                                                               {"right", BoundaryKind::pressure, 0.0}});
+  });
+  EXPECT_NE(kind.find("only the values"), std::string::npos) << kind;
+  const std::string fewer = message_of([&] {
+    changed.set_boundary_values(std::vector<BoundaryCondition>{{"left", BoundaryKind::head, 1.0}});
+  });
+  EXPECT_NE(fewer.find("only the values"), std::string::npos) << fewer;
+  EXPECT_EQ(changed.solve(k).head, b.head);
+}
+
 }  // namespace
 }  // namespace hydrodda::hydro
 

@@ -82,3 +82,121 @@ def test_coupled_passes_reach_the_runs_results(in_tmp):
     # The stacked blocks press on each other: the closed contacts carry compression.
     closed = contacts["state"] != "open"
     assert closed.any() and (contacts["normal_force"][closed] > 0).all()
+
+
+def test_run_result_keeps_the_models_last_fields(in_tmp):
+    """hydrodda.run's result holds the fields of its model's last state, from memory: the same
+    arrays a Simulation stepped to the same pass shows, bit for bit, and the fractures as
+    fractures.csv's last rows give them."""
+    scenario = hydrodda.Scenario.load(VERIFICATION / "coupled_hydrostatic_column.toml")
+    result = hydrodda.run(scenario, "run")
+    sim = hydrodda.Simulation(scenario)
+    while not sim.finished:
+        sim.run_pass()
+    for name in ("nodes", "triangles", "head", "pressure", "flux", "permeability", "porosity"):
+        np.testing.assert_array_equal(result.fluid[name], sim.fluid[name])
+    for name in ("displacement", "rotation", "stress", "area"):
+        np.testing.assert_array_equal(result.blocks[name], sim.blocks[name])
+    np.testing.assert_array_equal(result.contacts["normal_force"], sim.contacts["normal_force"])
+
+    rows = np.genfromtxt("run/fractures.csv", delimiter=",", names=True, dtype=None, encoding=None)
+    last = rows[rows["step"] == result.iterations]
+    fractures = result.fractures
+    assert len(fractures["id"]) == len(last) > 0
+    np.testing.assert_array_equal(fractures["id"], last["fracture"])
+    # fractures.csv prints 10 significant digits.
+    np.testing.assert_allclose(fractures["length"], last["length"], rtol=1e-9)
+    np.testing.assert_allclose(fractures["mean_aperture"], last["mean_aperture"], rtol=1e-9, atol=1e-15)
+    np.testing.assert_allclose(fractures["flow"], last["flow"], rtol=1e-9, atol=1e-20)
+    # The Simulation measures the same fractures.
+    np.testing.assert_array_equal(sim.fractures["mean_aperture"], fractures["mean_aperture"])
+    np.testing.assert_array_equal(sim.fractures["flow"], fractures["flow"])
+
+
+def test_run_result_fields_by_kind_of_run(in_tmp):
+    """A flow-only run has a fluid and no blocks; a mechanics-only run of listed blocks has
+    blocks and contacts, and no fractures (it has no traces)."""
+    flow = hydrodda.run(hydrodda.Scenario.load(VERIFICATION / "flow_linear_head.toml"), "flow")
+    assert flow.blocks is None and flow.contacts is None and flow.fractures is None
+    np.testing.assert_allclose(flow.fluid["head"], 3.0 - flow.fluid["nodes"][:, 0], rtol=1e-9, atol=1e-9)
+    fall = hydrodda.run(hydrodda.Scenario.load(VERIFICATION / "free_fall.toml"), "fall")
+    assert fall.fluid is None and fall.fractures is None
+    np.testing.assert_array_equal(fall.blocks["displacement"], [b["displacement"] for b in fall.summary["blocks"]])
+
+
+def test_a_loading_path_lifts_the_block_and_lets_it_down():
+    """coupled_hydraulic_jacking.toml: a 1 m block over an open fracture lifts when the head in
+    the fracture passes H* = rho_r h / rho_w = 2.5 m (overpressure), and rests on the lower
+    block below it. One Simulation: the mouths at 2.6 m for two passes lift it by millimetres;
+    lowered to 2.0 m it comes back down and converges resting where a Simulation held at 2.0 m
+    from the start rests, within 1e-6 m (the DDA's penetration tolerance, 1e-4 of the allowed
+    step displacement of 1e-2 m, which is how far the resting contact's overlap may differ)."""
+    held = hydrodda.Scenario.load(VERIFICATION / "coupled_hydraulic_jacking.toml")
+    held.set("flow.boundary[0].head", 2.0)
+    held.set("flow.boundary[1].head", 2.0)
+    direct = hydrodda.Simulation(held)
+    while not direct.finished:
+        direct.run_pass()
+    rest = direct.summary["measure"]["lift"]["displacement"][1]
+    assert -6e-5 < rest < 0.0  # down by the initial aperture, 5e-5 m, and the contact's overlap
+
+    sim = hydrodda.Simulation(held)
+    sim.set("flow.boundary[0].head", 2.6)
+    sim.set("flow.boundary[1].head", 2.6)
+    assert sim.scenario.to_toml().count("head = 2.6") == 2
+    sim.run_pass()
+    sim.run_pass()
+    assert sim.summary["measure"]["lift"]["displacement"][1] > 4e-3
+    # The flow solved in those passes has the new heads on the mouths.
+    nodes, head = sim.fluid["nodes"], sim.fluid["head"]
+    mouth = (np.abs(nodes[:, 0]) < 1e-12) & (np.abs(nodes[:, 1] - 1.0) < 0.004)
+    assert mouth.any()
+    np.testing.assert_allclose(head[mouth], 2.6, rtol=1e-12)
+
+    sim.set("flow.boundary[0].head", 2.0)
+    sim.set("flow.boundary[1].head", 2.0)
+    assert not sim.finished
+    for _ in range(8):
+        if sim.run_pass()["converged"]:
+            break
+    assert sim.finished
+    assert sim.summary["measure"]["lift"]["displacement"][1] == pytest.approx(rest, abs=1e-6)
+
+
+def test_a_loading_path_changes_the_traction():
+    """elastic_block_plane_strain.toml: a free block on a fixed base under a top traction p has
+    sigma_yy = -p in equilibrium (the stress is uniform in a DDA block: 1e-6 relative after
+    200 steps). Stepped to equilibrium at 1 MPa, then the traction set to 3 MPa and stepped
+    again: sigma_yy = -3 MPa."""
+    sim = hydrodda.Simulation(hydrodda.Scenario.load(VERIFICATION / "elastic_block_plane_strain.toml"))
+    sim.step(100)
+    assert sim.blocks["stress"][1, 1] == pytest.approx(-1.0e6, rel=1e-6)
+    sim.set("mechanics.traction[0].normal", -3.0e6)
+    sim.step(100)
+    assert sim.blocks["stress"][1, 1] == pytest.approx(-3.0e6, rel=1e-6)
+
+
+def test_set_refuses_what_is_not_a_load():
+    """Only boundary values and tractions change between passes: the mesh, the blocks and the
+    kind of a condition are fixed when the Simulation is built."""
+    sim = hydrodda.Simulation(hydrodda.Scenario.load(VERIFICATION / "coupled_hydraulic_jacking.toml"))
+    with pytest.raises(ValueError, match="not 'mesh.size'"):
+        sim.set("mesh.size", 0.1)
+    with pytest.raises(hydrodda.ScenarioError):
+        sim.set("flow.boundary[2].pressure", 0.0)   # a head boundary given a pressure as well
+    with pytest.raises(hydrodda.ScenarioError):
+        sim.set("flow.boundary[7].head", 1.0)       # no such condition
+    before = sim.scenario.to_toml()
+    assert "head = 2.4" in before                   # nothing changed by the refusals
+
+
+def test_a_flow_simulation_solves_again_with_a_new_head():
+    """flow_linear_head.toml (x from 0 to 2): h = 3 - x; with the left head set to 5 m, the
+    next solve gives h = 5 - 2x, exact in P1 (1e-9)."""
+    sim = hydrodda.Simulation(hydrodda.Scenario.load(VERIFICATION / "flow_linear_head.toml"))
+    sim.solve()
+    sim.set("flow.boundary[0].head", 5.0)
+    assert not sim.finished and "head" not in sim.fluid
+    sim.solve()
+    x = sim.fluid["nodes"][:, 0]
+    np.testing.assert_allclose(sim.fluid["head"], 5.0 - 2.0 * x, rtol=1e-9, atol=1e-9)

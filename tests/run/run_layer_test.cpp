@@ -50,8 +50,12 @@ struct Recorder {
   std::vector<run::ProgressReport> reports;
   int stop_after_reports = -1;
   run::Callbacks callbacks() {
-    return {[this](const run::ProgressReport& r) { reports.push_back(r); },
-            [this] { return stop_after_reports >= 0 && static_cast<int>(reports.size()) >= stop_after_reports; }};
+    run::Callbacks callbacks;
+    callbacks.progress = [this](const run::ProgressReport& r) { reports.push_back(r); };
+    callbacks.stop_requested = [this] {
+      return stop_after_reports >= 0 && static_cast<int>(reports.size()) >= stop_after_reports;
+    };
+    return callbacks;
   }
 };
 
