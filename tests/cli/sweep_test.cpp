@@ -173,24 +173,32 @@ TEST(Sweep, AKeyGivenTwiceIsRefused) {
   }
 }
 
+// Starts a sweep of the six-block model over `heads` in its own process group (so that the
+// signal reaches the sweep only, which must pass it on to its cases), sends SIGINT once
+// `wait_for` exists, and returns sweep.csv's rows after the sweep exited with 1.
+std::vector<std::vector<std::string>> interrupt_sweep(const fs::path& out, const std::string& heads, const std::string& jobs,
+                                                      const fs::path& wait_for, std::chrono::milliseconds poll) {
+  const std::string scenario = (kSource / "scenarios/paper/six_block_lr_rl.toml").string();
+  const pid_t pid = start_program_silently(
+      {"sweep", scenario, "--set", "flow.boundary[0].head=" + heads, "--jobs", jobs, "-o", out.string()}, true);
+  EXPECT_GE(pid, 0);
+  for (auto waited = std::chrono::milliseconds(0); waited < std::chrono::seconds(30) && !fs::exists(wait_for);
+       waited += poll)
+    std::this_thread::sleep_for(poll);
+  ::kill(pid, SIGINT);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << status;
+  return read_csv(out / "sweep.csv");
+}
+
 // A case interrupted while its program still loads (the sweep passes the interrupt on at
 // once) says it was interrupted: it starts with SIGINT and SIGTERM blocked, so the signal waits
 // for its signal thread instead of killing it with an empty run.log ("exit code 130").
 TEST(Sweep, ACaseInterruptedAtStartUpSaysInterrupted) {
   const fs::path out = fresh_dir("hydrodda-sweep-startup");
-  const std::string scenario = (kSource / "scenarios/paper/six_block_lr_rl.toml").string();
-  const pid_t pid = start_program_silently(
-      {"sweep", scenario, "--set", "flow.boundary[0].head=5,10", "--jobs", "2", "-o", out.string()}, true);
-  ASSERT_GE(pid, 0);
   // The cases' logs are opened as they are started, before their program has loaded.
-  for (int i = 0; i < 4000 && !fs::exists(out / "case_001/run.log"); ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  ::kill(pid, SIGINT);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 1);
-  const auto rows = read_csv(out / "sweep.csv");
+  const auto rows = interrupt_sweep(out, "5,10", "2", out / "case_001/run.log", std::chrono::milliseconds(1));
   ASSERT_EQ(rows.size(), 3u);
   for (std::size_t r = 1; r < rows.size(); ++r) {
     EXPECT_EQ(rows[r][2], "failed");
@@ -202,21 +210,8 @@ TEST(Sweep, ACaseInterruptedAtStartUpSaysInterrupted) {
 
 TEST(Sweep, InterruptStopsLaunchingAndReachesTheRunningCase) {
   const fs::path out = fresh_dir("hydrodda-sweep-interrupt");
-  const std::string scenario = (kSource / "scenarios/paper/six_block_lr_rl.toml").string();
-  // Its own process group, so the signal below reaches the sweep only; the sweep must pass it
-  // on to its running case.
-  const pid_t pid = start_program_silently(
-      {"sweep", scenario, "--set", "flow.boundary[0].head=5,10,15", "--jobs", "1", "-o", out.string()}, true);
-  ASSERT_GE(pid, 0);
-  // Wait until the first case has written its first coupling iteration, then interrupt.
-  for (int i = 0; i < 600 && !fs::exists(out / "case_000/history.csv"); ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  ::kill(pid, SIGINT);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 1);
-  const auto rows = read_csv(out / "sweep.csv");
+  // Once the first case has written its first coupling iteration.
+  const auto rows = interrupt_sweep(out, "5,10,15", "1", out / "case_000/history.csv", std::chrono::milliseconds(50));
   ASSERT_EQ(rows.size(), 4u);
   EXPECT_EQ(rows[1][2], "failed");  // the running case stopped at the interrupt ...
   EXPECT_NE(rows[1].back().find("interrupted"), std::string::npos) << rows[1].back();
