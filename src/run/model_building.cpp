@@ -323,7 +323,8 @@ dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::B
     else model.measured_points.push_back({block, p.point});
   }
   model.blocks = std::move(blocks);
-  if (settings.analysis == dda::Analysis::static_) report_unsupported_blocks(s, model, errors);
+  // Only on supports that all resolved: one in no block is its own error, not a missing support.
+  if (errors.empty() && settings.analysis == dda::Analysis::static_) report_unsupported_blocks(s, model, errors);
   if (!errors.empty()) throw scenario::ScenarioError(std::move(errors));
   return model;
 }

@@ -103,6 +103,7 @@ double length_along_outline(const Segment& given, const Polygon& outline) {
 void check_flow_boundary_on_domain(ReadContext& ctx, const Scenario& s, const FlowBoundaryCondition& bc) {
   const BoundarySegment* boundary = s.find_boundary(bc.name);
   if (!boundary || !s.geometry || s.geometry->domain.size() < 3) return;
+  if (boundary->segment.from == boundary->segment.to) return;  // refused for its length already
   if (length_along_outline(boundary->segment, s.geometry->domain) > 1e-9) return;
   const Segment& g = boundary->segment;
   ctx.error(bc.line, "flow.boundary.name",
