@@ -279,7 +279,7 @@ RunCheckpoint decode_checkpoint(std::string_view file) {
   std::uint64_t checksum = 0;
   std::memcpy(&checksum, file.data() + bytes.size(), kChecksumSize);
   if (checksum != hash_text(bytes))
-    throw CheckpointError("the checkpoint's checksum does not match its contents: it is damaged");
+    throw CheckpointError("the checkpoint is damaged or cut short: its checksum does not match its contents");
   Reader r(bytes);
   r.expect(kMagic);
   std::int64_t version = 0;
