@@ -60,6 +60,22 @@ void configure_logging(Verbosity verbosity) {
 }
 }  // namespace
 
+// For counts that start at 1 (--jobs, --stop-after): CLI11's PositiveNumber said "Value 0 not
+// in range 0.000000 to 1.79e308".
+const CLI::Validator kWholeNumberFromOne(
+    [](std::string& value) -> std::string {
+      std::size_t used = 0;
+      long long n = 0;
+      try {
+        n = std::stoll(value, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != value.size() || used == 0 || n < 1) return "must be a whole number >= 1, got " + value;
+      return {};
+    },
+    "INT>=1");
+
 int run_app(int argc, char** argv) {
   CLI::App app{"hydrodda: fluid flow through deforming, fractured, blocky rock (HYDRO-DDA)"};
   app.set_version_flag("--version", std::string("hydrodda ") + kVersion);
@@ -84,7 +100,7 @@ int run_app(int argc, char** argv) {
   int stop_after = 0;
   run_cmd->add_option("--stop-after", stop_after,
                       "Coupled runs: stop after this coupling iteration, resumable with --resume")
-      ->check(CLI::PositiveNumber);
+      ->check(kWholeNumberFromOne);
   resume_opt->excludes(scenario_opt)->excludes(output_opt)->excludes(overwrite_opt);
 
   std::filesystem::path check_file;
@@ -98,9 +114,10 @@ int run_app(int argc, char** argv) {
   sweep_cmd->add_option("--set", sweep.sets, "KEY=V1,V2,...: a key path of the scenario and its values (repeatable)")
       ->required()
       ->allow_extra_args(false);
-  sweep_cmd->add_option("-o,--output", sweep_output, "Sweep folder (default: out/<scenario name>-sweep)");
+  CLI::Option* sweep_output_opt =
+      sweep_cmd->add_option("-o,--output", sweep_output, "Sweep folder (default: out/<scenario name>-sweep)");
   sweep_cmd->add_option("--jobs", sweep.jobs, "Cases run at a time (default: the hardware threads)")
-      ->check(CLI::PositiveNumber);
+      ->check(kWholeNumberFromOne);
   sweep_cmd->add_option("--column", sweep.columns,
                         "A summary.json path to gather, e.g. flow.regions.core.effective_conductivity (repeatable)")
       ->allow_extra_args(false);
@@ -124,6 +141,11 @@ int run_app(int argc, char** argv) {
 
   run.verbosity = quiet ? Verbosity::Quiet : verbose ? Verbosity::Verbose : Verbosity::Normal;
   configure_logging(run.verbosity);
+  for (const CLI::Option* o : {output_opt, sweep_output_opt})
+    if (o->count() > 0 && o->as<std::string>().empty()) {
+      spdlog::error("{}: the folder's path is empty", o->get_name());
+      return kBadInput;
+    }
   if (!output.empty()) run.output = output;
   if (!resume.empty()) run.resume = resume;
   if (stop_after > 0) run.stop_after = stop_after;
@@ -132,8 +154,11 @@ int run_app(int argc, char** argv) {
     return kBadInput;
   }
 
-  if (*check_cmd) return check_command(check_file);
   start_interrupt_thread();  // before any thread (OpenMP's, a sweep's) starts
+  if (*check_cmd) {
+    set_exit_on_interrupt(true);  // check writes nothing: an interrupt ends it at once
+    return check_command(check_file);
+  }
   if (*sweep_cmd) {
     if (!sweep_output.empty()) sweep.output = sweep_output;
     return sweep_command(sweep);

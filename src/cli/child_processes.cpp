@@ -47,12 +47,16 @@ pid_t start_child(const ChildCommand& command, std::vector<std::string> env) {
   std::vector<char*> argv = to_argv(arguments);
   std::vector<char*> envp = to_argv(env);
   pid_t pid = 0;
-  // The sweep blocks SIGINT and SIGTERM (taken by its signal thread); a case starts with none blocked.
+  // A case starts with SIGINT and SIGTERM blocked, as the sweep has them: one forwarded while
+  // the case's program is still loading waits, pending, for its signal thread, so the case ends
+  // as interrupted instead of being killed before it can say so.
   posix_spawnattr_t attributes;
   posix_spawnattr_init(&attributes);
-  sigset_t none;
-  sigemptyset(&none);
-  posix_spawnattr_setsigmask(&attributes, &none);
+  sigset_t interrupts;
+  sigemptyset(&interrupts);
+  sigaddset(&interrupts, SIGINT);
+  sigaddset(&interrupts, SIGTERM);
+  posix_spawnattr_setsigmask(&attributes, &interrupts);
   posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK);
   const int error = ::posix_spawn(&pid, argv[0], &actions, &attributes, argv.data(), envp.data());
   posix_spawnattr_destroy(&attributes);

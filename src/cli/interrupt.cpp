@@ -31,7 +31,7 @@ sigset_t interrupt_signals() {
 [[noreturn]] void exit_now() {
   std::error_code ec;
   if (!empty_folder_to_remove.empty()) std::filesystem::remove(empty_folder_to_remove, ec);  // only if empty
-  static const char message[] = "\nerror: interrupted while building the model; nothing was written\n";
+  static const char message[] = "\nerror: interrupted before any result was written; nothing was kept\n";
   [[maybe_unused]] const ssize_t n = ::write(STDERR_FILENO, message, sizeof message - 1);
   ::_exit(kRunFailed);
 }
@@ -48,9 +48,13 @@ void take_signals() {
 }
 }  // namespace
 
-void start_interrupt_thread() {
+void block_interrupt_signals() {
   const sigset_t set = interrupt_signals();
   ::pthread_sigmask(SIG_BLOCK, &set, nullptr);
+}
+
+void start_interrupt_thread() {
+  block_interrupt_signals();
   std::thread(take_signals).detach();
 }
 

@@ -10,6 +10,10 @@
 
 namespace hydrodda::cli {
 
+// First thing in main: from then on an interrupt waits, pending, for the signal thread instead
+// of ending the process by the default action (before main, while the dynamic loader maps the
+// program's libraries, nothing of ours can take it; a sweep starts its cases with both blocked).
+void block_interrupt_signals();
 // Call before any other thread starts: threads inherit the blocked set.
 void start_interrupt_thread();
 bool interrupt_requested();

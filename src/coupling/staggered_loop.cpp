@@ -124,6 +124,9 @@ PassReport StaggeredLoop::run_pass() {
   start = Clock::now();
   hydro::FlowSolution fresh = darcy_.solve(permeability_);
   check_finite(fresh.head, "the head", iteration_);
+  // Judged on the fresh (unrelaxed) heads: the relaxed change is ω times this, so a small ω
+  // would freeze the heads and fake convergence.
+  const double unrelaxed_head_change = previous_heads_.empty() ? 1.0 : head_change(fresh.head, previous_heads_);
   relax(fresh);
   report.relaxation = previous_heads_.empty() ? 1.0 : relaxation_;
   solution_ = std::move(fresh);
@@ -175,7 +178,7 @@ PassReport StaggeredLoop::run_pass() {
       throw std::runtime_error("the displacement of block " + std::to_string(i / 2) +
                                " is not finite in coupling iteration " + std::to_string(iteration_));
   for (Point p : previous_displacements_) u_previous.insert(u_previous.end(), {p.x, p.y});
-  report.head_change = previous_heads_.empty() ? 1.0 : head_change(solution_.head, previous_heads_);
+  report.head_change = unrelaxed_head_change;
   report.displacement_change = previous_displacements_.empty() ? 1.0 : relative_change(u_flat, u_previous);
   // Both norms compare this pass with the last, so both passes must have had the full load.
   report.converged = iteration_ > settings_.ramp_passes && report.head_change < settings_.tolerance &&

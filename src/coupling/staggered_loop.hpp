@@ -64,7 +64,7 @@ struct PassInterrupted : std::runtime_error {
 struct PassReport {
   int iteration = 0;              // 1-based
   double time = 0.0;              // mechanics time at the end of the pass
-  double head_change = 0.0;       // rms(h_k − h_{k−1}) / (max h_k − min h_k) (1 on the first pass)
+  double head_change = 0.0;       // rms(h̃_k − h_{k−1}) / (max h̃_k − min h̃_k), h̃_k unrelaxed (1 on pass 1)
   // The same against the heads of two passes back (1 before pass 3): far below head_change
   // when the loop swings between two states.
   double head_change_two_passes = 1.0;

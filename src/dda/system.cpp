@@ -171,6 +171,16 @@ std::vector<ContactInfo> System::contacts() const {
   return out;
 }
 
+std::vector<System::PrescribedProgress> System::prescribed_progress() const {
+  std::vector<PrescribedProgress> out;
+  for (std::size_t i = 0; i < displacements_.size(); ++i) {
+    const TrackedPoint& tp = displacement_points_[i];
+    const double ramp = std::min(1.0, time_ / displacements_[i].ramp_time);
+    out.push_back({tp.initial, ramp * displacements_[i].value, tp.position - tp.initial});
+  }
+  return out;
+}
+
 std::vector<Point> System::measured_positions() const {
   std::vector<Point> out;
   for (const TrackedPoint& m : measured_) out.push_back(m.position);

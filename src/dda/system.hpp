@@ -111,6 +111,14 @@ class System {
   std::array<double, 3> strain(int block) const;
   std::vector<ContactInfo> contacts() const;
   std::vector<Point> measured_positions() const;
+  // Each prescribed displacement's point: where the ramp wants it now, and where it is, both
+  // as displacements from its start.
+  struct PrescribedProgress {
+    Point point;    // where it started
+    Point target;   // min(1, t / ramp_time) · value
+    Point reached;  // its displacement now
+  };
+  std::vector<PrescribedProgress> prescribed_progress() const;
   double penalty() const { return penalty_; }
   double penetration_tolerance() const { return penetration_tolerance_; }
   double allowed_step_displacement() const { return allowed_displacement_; }

@@ -8,7 +8,12 @@ namespace hydrodda::output {
 namespace {
 
 constexpr std::string_view kMagic = "hydrodda checkpoint\n";
-constexpr std::int64_t kVersion = 3;  // 2: measure.csv rows after history.csv's; 3: the coupling loop's Aitken state
+// 2: measure.csv rows after history.csv's; 3: the coupling loop's Aitken state; 4: a checksum
+// and no timings (so that identical runs write identical checkpoints)
+constexpr std::int64_t kVersion = 4;
+// The last 8 bytes: hash_text() of every byte before them. FNV-1a steps are bijective in the
+// state, so any one changed byte changes the sum: a flipped bit is refused, not resumed from.
+constexpr std::size_t kChecksumSize = sizeof(std::uint64_t);
 constexpr std::uint32_t kByteOrderMark = 0x01020304;
 // Any list longer than the file could hold is damage, not data; this bounds allocations.
 constexpr std::int64_t kMaxCount = std::int64_t{1} << 40;
@@ -233,11 +238,6 @@ std::string encode_checkpoint(const RunCheckpoint& c) {
   w.put(c.history);
   w.put(c.measure);
   w.put(c.written_iterations);
-  w.put(static_cast<std::int64_t>(c.timings.size()));
-  for (const auto& [name, seconds] : c.timings) {
-    w.put(name);
-    w.put(seconds);
-  }
   write_mechanics(w, c.mechanics);
   w.put(c.coupling.iterations);
   hydro::FlowSolution flow = c.coupling.flow;
@@ -255,18 +255,35 @@ std::string encode_checkpoint(const RunCheckpoint& c) {
   w.put(c.coupling.heads_two_back);
   w.put(c.coupling.previous_update);
   w.put(c.coupling.relaxation);
-  return w.take();
+  std::string bytes = w.take();
+  const std::uint64_t checksum = hash_text(bytes);
+  char sum[kChecksumSize];
+  std::memcpy(sum, &checksum, kChecksumSize);
+  bytes.append(sum, kChecksumSize);
+  return bytes;
 }
 
-RunCheckpoint decode_checkpoint(std::string_view bytes) {
+RunCheckpoint decode_checkpoint(std::string_view file) {
+  if (file.substr(0, kMagic.size()) != kMagic) throw CheckpointError("not a hydrodda checkpoint");
+  {
+    Reader header(file);
+    header.expect(kMagic);
+    std::int64_t version = 0;
+    header.get(version);
+    if (version != kVersion)
+      throw CheckpointError("checkpoint format " + std::to_string(version) + "; this hydrodda reads format " +
+                            std::to_string(kVersion));
+  }
+  if (file.size() < kMagic.size() + kChecksumSize) throw CheckpointError("the checkpoint is damaged or cut short");
+  const std::string_view bytes = file.substr(0, file.size() - kChecksumSize);
+  std::uint64_t checksum = 0;
+  std::memcpy(&checksum, file.data() + bytes.size(), kChecksumSize);
+  if (checksum != hash_text(bytes))
+    throw CheckpointError("the checkpoint is damaged or cut short: its checksum does not match its contents");
   Reader r(bytes);
-  if (bytes.substr(0, kMagic.size()) != kMagic) throw CheckpointError("not a hydrodda checkpoint");
   r.expect(kMagic);
   std::int64_t version = 0;
   r.get(version);
-  if (version != kVersion)
-    throw CheckpointError("checkpoint format " + std::to_string(version) + "; this hydrodda reads format " +
-                          std::to_string(kVersion));
   if (r.get_raw<std::uint32_t>() != kByteOrderMark)
     throw CheckpointError("the checkpoint was written on a machine of another byte order");
   RunCheckpoint c;
@@ -276,16 +293,6 @@ RunCheckpoint decode_checkpoint(std::string_view bytes) {
   r.get(c.history);
   r.get(c.measure);
   r.get(c.written_iterations);
-  std::int64_t timings = 0;
-  r.get(timings);
-  if (timings < 0 || timings > kMaxCount) r.fail();
-  for (std::int64_t i = 0; i < timings; ++i) {
-    std::string name;
-    double seconds = 0;
-    r.get(name);
-    r.get(seconds);
-    c.timings.emplace_back(std::move(name), seconds);
-  }
   read_mechanics(r, c.mechanics);
   r.get(c.coupling.iterations);
   visit_flow([&](auto& v) { r.get(v); }, c.coupling.flow);

@@ -1,13 +1,15 @@
 #pragma once
 // The checkpoint of a coupled run (checkpoint.bin in the run folder): everything needed to
 // continue the run after its last finished coupling iteration and reach the same results, bit
-// for bit, as a run that was never stopped.
+// for bit, as a run that was never stopped. No wall-clock timings: two identical runs write
+// identical checkpoints (a resumed run's summary.json times its own part only).
 //
 // Format: the magic line "hydrodda checkpoint\n", a format version, a byte-order mark, then
 // the fields below in order; numbers as raw 8-byte integers and IEEE doubles in the writing
 // machine's byte order (a checkpoint is read back where it was written, not exchanged), strings
-// and lists prefixed with their length. A file of another version or byte order, or a cut or
-// damaged one, is refused with CheckpointError.
+// and lists prefixed with their length; last, a 64-bit FNV-1a checksum of all the bytes before
+// it. A file of another version or byte order, or a cut or damaged one (any byte changed), is
+// refused with CheckpointError.
 
 #include <cstdint>
 #include <stdexcept>
@@ -28,7 +30,6 @@ struct RunCheckpoint {
   std::vector<std::vector<std::string>> history;  // history.csv rows so far, header excluded
   std::vector<std::vector<std::string>> measure;  // measure.csv rows so far, header excluded
   std::vector<int> written_iterations;            // iterations whose ParaView files exist
-  std::vector<std::pair<std::string, double>> timings;  // seconds per phase so far
   dda::SystemState mechanics;
   coupling::LoopState coupling;
 };

@@ -30,6 +30,9 @@ RunFolder::RunFolder(fs::path directory, ExistingFolder policy) : directory_(std
   check_available(directory_, policy);
   std::error_code ec;
   if (!fs::is_directory(directory_, ec)) {
+    if (fs::is_symlink(fs::symlink_status(directory_, ec)))  // create_directories said only "File exists"
+      throw RunFolderError(fmt::format("cannot create {}: it is a symbolic link to {}, which does not exist",
+                                       directory_.string(), fs::read_symlink(directory_, ec).string()));
     fs::create_directories(directory_, ec);
     if (ec) throw RunFolderError(fmt::format("cannot create {}: {}", directory_.string(), ec.message()));
   }

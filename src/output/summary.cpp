@@ -2,10 +2,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
+
 namespace hydrodda::output {
 
-std::string format_summary(const RunSummary& s) {
-  using nlohmann::json;
+namespace {
+
+using nlohmann::json;
+
+json to_json(const RunSummary& s) {
   json blocks = json::array();
   for (const BlockSummary& b : s.blocks)
     blocks.push_back({{"id", b.id},
@@ -51,7 +56,27 @@ std::string format_summary(const RunSummary& s) {
     out["outside_mesh"] = {{"largest_distance", s.outside_mesh->largest_distance},
                            {"block", s.outside_mesh->block},
                            {"blocks", s.outside_mesh->blocks}};
-  return out.dump(2) + "\n";
+  return out;
+}
+
+void collect_non_finite(const json& value, const std::string& path, std::vector<std::string>& found) {
+  if (value.is_number_float() && !std::isfinite(value.get<double>())) {
+    found.push_back(path);
+  } else if (value.is_object()) {
+    for (const auto& [key, item] : value.items()) collect_non_finite(item, path.empty() ? key : path + "." + key, found);
+  } else if (value.is_array()) {
+    for (std::size_t i = 0; i < value.size(); ++i) collect_non_finite(value[i], path + "[" + std::to_string(i) + "]", found);
+  }
+}
+
+}  // namespace
+
+std::string format_summary(const RunSummary& s) { return to_json(s).dump(2) + "\n"; }
+
+std::vector<std::string> find_non_finite_values(const RunSummary& s) {
+  std::vector<std::string> found;
+  collect_non_finite(to_json(s), "", found);
+  return found;
 }
 
 }  // namespace hydrodda::output

@@ -111,13 +111,4 @@ std::vector<output::NamedValue> CoupledModel::timings() const {
           {"forces", forces_seconds_}, {"mechanics", mechanics_seconds_}};
 }
 
-void CoupledModel::add_timings(const std::vector<std::pair<std::string, double>>& earlier) {
-  for (const auto& [phase, seconds] : earlier) {
-    for (auto [name, total] : {std::pair{"mesh", &mesh_seconds_}, std::pair{"porosity", &porosity_seconds_},
-                               std::pair{"flow", &flow_seconds_}, std::pair{"forces", &forces_seconds_},
-                               std::pair{"mechanics", &mechanics_seconds_}})
-      if (phase == name) *total += seconds;
-  }
-}
-
 }  // namespace hydrodda::run

@@ -74,10 +74,6 @@ class CoupledModel {
   std::vector<std::optional<output::RegionSummary>> region_flows() const;
   // Seconds per phase: mesh, porosity, flow, forces, mechanics.
   std::vector<output::NamedValue> timings() const;
-  // Adds the seconds of a run's earlier part (as its checkpoint holds them) to the phases of the
-  // same names.
-  void add_timings(const std::vector<std::pair<std::string, double>>& earlier);
-
  private:
   scenario::Scenario scenario_;
   double mesh_seconds_ = 0.0, porosity_seconds_ = 0.0, flow_seconds_ = 0.0, forces_seconds_ = 0.0,

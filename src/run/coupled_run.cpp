@@ -12,6 +12,7 @@
 #include "run/figures.hpp"
 #include "run/fracture_output.hpp"
 #include "run/paraview_output.hpp"
+#include "run/run_summary.hpp"
 #include "run/runs.hpp"
 #include "output/csv_table.hpp"
 
@@ -94,7 +95,6 @@ output::RunSummary run_coupled(const RunContext& context) {
     for (const std::vector<std::string>& row : saved.history) history.add_row(row);
     paraview.list_written(saved.written_iterations);
     if (meter) fractures.continue_from(loop.iterations(), s.output.fields.fractures ? saved.written_iterations : std::vector<int>{});
-    model.add_timings(saved.timings);
     spdlog::info("resuming after coupling iteration {}", loop.iterations());
   } else {
     context.folder.write("scenario.toml", context.scenario_text);
@@ -121,8 +121,6 @@ output::RunSummary run_coupled(const RunContext& context) {
   // (CoupledModel::run_pass), which a resumed run continues from too.
   const auto save_checkpoint = [&] {
     checkpoint.converged = converged;
-    checkpoint.timings.clear();
-    for (const auto& [phase, seconds] : model.timings()) checkpoint.timings.emplace_back(phase, seconds);
     checkpoint.mechanics = model.export_state().mechanics;
     checkpoint.coupling = model.export_state().coupling;
     context.folder.write("checkpoint.bin", output::encode_checkpoint(checkpoint));
@@ -210,17 +208,10 @@ output::RunSummary run_coupled(const RunContext& context) {
     summary.message = fmt::format("stopped after coupling iteration {} (--stop-after)", loop.iterations());
     return summary;
   }
-  draw_figures(s, context.folder,
-               {mesh, loop.flow(), loop.porosity().porosity, loop.permeability(), model.block_polygons(), converged,
-                loop.iterations()});
+  if (const std::string unreached = describe_unreached_displacement(s, system); !unreached.empty())
+    throw RunFailure(RunStatus::failed, unreached, current_summary());
   ConvergenceHistory convergence = read_convergence(checkpoint.history, s.coupling.tolerance);
   convergence.converged = converged;
-  draw_convergence(s, context.folder, convergence);
-  if (meter && loop.iterations() > 0) {
-    if (!fracture_state) measure_fractures();
-    draw_aperture_figure(s, context.folder, model.block_polygons(), *fracture_state,
-                         {fmt::format("coupling iteration {}", loop.iterations()), converged});
-  }
   output::RunSummary summary = current_summary();
   summary.converged = converged;
   if (summary.outside_mesh && summary.outside_mesh->blocks > 0)
@@ -235,6 +226,16 @@ output::RunSummary run_coupled(const RunContext& context) {
     summary.message = fmt::format("the coupling loop did not converge in {} iterations (tolerance {:g}): {}",
                                   s.coupling.max_iterations, s.coupling.tolerance, why.text);
     spdlog::warn("{}", summary.message);
+  }
+  context.write_summary(summary);  // the run's result is on disk before the figures are drawn
+  draw_figures(s, context.folder,
+               {mesh, loop.flow(), loop.porosity().porosity, loop.permeability(), model.block_polygons(), converged,
+                loop.iterations()});
+  draw_convergence(s, context.folder, convergence);
+  if (meter && loop.iterations() > 0) {
+    if (!fracture_state) measure_fractures();
+    draw_aperture_figure(s, context.folder, model.block_polygons(), *fracture_state,
+                         {fmt::format("coupling iteration {}", loop.iterations()), converged});
   }
   return summary;
 }

@@ -6,6 +6,7 @@
 #include "run/fracture_output.hpp"
 #include "run/mechanics_model.hpp"
 #include "run/paraview_output.hpp"
+#include "run/run_summary.hpp"
 #include "run/runs.hpp"
 #include "output/csv_table.hpp"
 
@@ -104,6 +105,8 @@ output::RunSummary run_mechanics(const RunContext& context) {
   }
   write_tables();
   if (last_written != model.steps()) write_step(model.steps(), system.time());
+  if (const std::string unreached = describe_unreached_displacement(s, system); !unreached.empty())
+    throw RunFailure(RunStatus::failed, unreached, model.summary());
 
   output::RunSummary summary = model.summary();
   // Mechanics alone has no coupling loop: `converged` says the run reached its end.

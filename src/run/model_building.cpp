@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "dda/selection.hpp"
+#include "dda/support.hpp"
 #include "mesh/mesh_request.hpp"
 #include "run/model_geometry.hpp"
 #include "hydro/permeability_law.hpp"
@@ -57,6 +58,28 @@ void note_unbalanced_initial_stress(const Scenario& s) {
     spdlog::warn("{}:{}: mechanics.initial_stress: the gradient [dσxx/dy, dσyy/dy, dτxy/dy] = [{:g}, {:g}, {:g}] Pa/m does "
                  "not balance the rock's weight (dσyy/dy = {:g}, dτxy/dy = {:g} would): the blocks start out of equilibrium",
                  s.file.string(), i.line, i.gradient[0], i.gradient[1], i.gradient[2], -rho * g.y, -rho * g.x);
+}
+
+// Static analysis needs every group of touching blocks held (dda/support.hpp); "some support
+// somewhere" let a floating block creep under a point load and the run report success.
+void report_unsupported_blocks(const Scenario& s, const dda::ModelDefinition& model, std::vector<Diagnostic>& errors) {
+  const double touching = dda::initial_contact_distance(model.blocks, model.settings);
+  const bool given_one_by_one = s.geometry && s.geometry->domain.empty();
+  for (const std::vector<int>& group : dda::find_unsupported_groups(model, touching)) {
+    const int first = group.front();
+    const int line = given_one_by_one ? s.geometry->blocks[first].line : 0;
+    std::string which = fmt::format("block {}", first);
+    if (group.size() > 1)
+      which = fmt::format("the group of {} touching blocks {}{}", group.size(),
+                          fmt::join(group.begin(), group.begin() + std::min<std::size_t>(group.size(), 5), ", "),
+                          group.size() > 5 ? ", ..." : "");
+    errors.push_back({s.file.string(), line, "mechanics.analysis",
+                      fmt::format("static analysis: {} has no support (no fixed block, [[mechanics.fixed]] point, "
+                                  "[[mechanics.displacement]] or [[mechanics.roller]] holds it or a block within "
+                                  "{:g} m of it, the contact distance), so a load moves it without end; add a "
+                                  "support or use analysis = \"dynamic\"",
+                                  which, touching)});
+  }
 }
 
 int material_index(const Scenario& s, const std::string& name) {
@@ -321,8 +344,10 @@ dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::B
     if (block < 0) errors.push_back({file, p.line, "mechanics.measure.point", fmt::format("{} lies in no block", point_text(p.point))});
     else model.measured_points.push_back({block, p.point});
   }
-  if (!errors.empty()) throw scenario::ScenarioError(std::move(errors));
   model.blocks = std::move(blocks);
+  // Only on supports that all resolved: one in no block is its own error, not a missing support.
+  if (errors.empty() && settings.analysis == dda::Analysis::static_) report_unsupported_blocks(s, model, errors);
+  if (!errors.empty()) throw scenario::ScenarioError(std::move(errors));
   return model;
 }
 

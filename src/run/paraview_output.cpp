@@ -1,8 +1,10 @@
 #include "run/paraview_output.hpp"
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <filesystem>
 
 #include "geometry/polygon.hpp"
 
@@ -36,10 +38,18 @@ void ParaviewOutput::list_written(const std::vector<int>& steps) {
   if (fields_.fluid && !fluid_) fluid_.emplace(folder_.file("fluid.pvd"));
   if (fields_.blocks && !blocks_) blocks_.emplace(folder_.file("blocks.pvd"));
   if (fields_.contacts && !contacts_) contacts_.emplace(folder_.file("contacts.pvd"));
+  // A file deleted since it was written leaves the series (rewritten with the next step), so
+  // that the .pvd never lists what is not there.
+  const auto add_existing = [&](std::optional<output::PvdSeries>& series, int step, const std::string& name) {
+    std::error_code ec;
+    if (!series) return;
+    if (std::filesystem::is_regular_file(folder_.file(name), ec)) series->add(step, name);
+    else spdlog::warn("{} is missing from {}: left out of {}", name, folder_.path().string(), series->path().filename().string());
+  };
   for (int step : steps) {
-    if (fluid_) fluid_->add(step, fmt::format("fluid_{:04d}.vtu", step));
-    if (blocks_) blocks_->add(step, fmt::format("blocks_{:04d}.vtu", step));
-    if (contacts_) contacts_->add(step, fmt::format("contacts_{:04d}.vtu", step));
+    add_existing(fluid_, step, fmt::format("fluid_{:04d}.vtu", step));
+    add_existing(blocks_, step, fmt::format("blocks_{:04d}.vtu", step));
+    add_existing(contacts_, step, fmt::format("contacts_{:04d}.vtu", step));
   }
 }
 

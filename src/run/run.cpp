@@ -1,6 +1,7 @@
 #include "run/run.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <spdlog/spdlog.h>
 
 #include <fstream>
@@ -38,6 +39,18 @@ RunResult record_failure(const output::RunFolder& folder, RunStatus status, cons
   return {status, false, summary.iterations, what, summary, folder.path()};
 }
 
+// Results that overflowed (a conductivity of k ρ g / μ with μ = 1e-300) or came out NaN: the
+// run failed, whatever its loop said, naming each value (the first few).
+std::string describe_non_finite(const output::RunSummary& summary) {
+  const std::vector<std::string> paths = output::find_non_finite_values(summary);
+  if (paths.empty()) return {};
+  constexpr std::size_t kNamed = 5;
+  std::string names = fmt::format("{}", fmt::join(paths.begin(), paths.begin() + std::min(paths.size(), kNamed), ", "));
+  if (paths.size() > kNamed) names += fmt::format(" and {} more", paths.size() - kNamed);
+  return fmt::format("{} result(s) not finite (overflow or 0/0; written as null in summary.json): {}", paths.size(),
+                     names);
+}
+
 RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output::ExistingFolder policy,
                  const std::string& scenario_text, const output::RunCheckpoint* resume,
                  std::optional<int> stop_after, const Callbacks& callbacks) {
@@ -46,13 +59,18 @@ RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output:
   std::error_code ec;
   const bool folder_is_new = !fs::exists(directory, ec);
   const output::RunFolder folder(directory, policy);
-  const RunContext context{s, folder, callbacks, scenario_text, resume, stop_after};
+  const auto write_final_summary = [&folder](const output::RunSummary& summary) {
+    if (const std::string failure = describe_non_finite(summary); !failure.empty())
+      throw RunFailure(RunStatus::failed, failure, summary);
+    write_summary(folder, summary);
+  };
+  const RunContext context{s, folder, callbacks, scenario_text, resume, stop_after, write_final_summary};
   try {
     const RunKind kind = kind_of(s);
     const output::RunSummary summary = kind == RunKind::coupled     ? run_coupled(context)
                                        : kind == RunKind::mechanics ? run_mechanics(context)
                                                                     : run_flow(context);
-    write_summary(folder, summary);
+    write_final_summary(summary);
     const RunStatus status = summary.status == "stopped" ? RunStatus::stopped : RunStatus::finished;
     return {status, summary.converged, summary.iterations, summary.message, summary, folder.path()};
   } catch (const scenario::ScenarioError&) {

@@ -1,6 +1,9 @@
 #include "run/run_summary.hpp"
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
+
+#include <algorithm>
 
 #include "run/model_building.hpp"
 #include "hydro/darcy_solver.hpp"
@@ -10,6 +13,23 @@
 namespace hydrodda::run {
 
 using geometry::Point;
+
+std::string describe_unreached_displacement(const scenario::Scenario& s, const dda::System& system) {
+  // 1% of the prescribed value, or the penetration tolerance (the precision contacts are held
+  // to; a point held at zero drifts by the springs' error, 1e-8 m in the six-block model).
+  constexpr double kReached = 0.01;
+  for (const dda::System::PrescribedProgress& p : system.prescribed_progress()) {
+    const double asked = geometry::norm(p.target);
+    const double off = geometry::norm(p.reached - p.target);
+    if (off <= std::max(kReached * asked, system.penetration_tolerance())) continue;
+    return fmt::format("the prescribed displacement at ({:g}, {:g}) was not reached: asked ({:.4g}, {:.4g}) m at "
+                       "t = {:g} s, reached ({:.4g}, {:.4g}) m; with mechanics.time_step = {:g} s the blocks' inertia "
+                       "outweighs the springs that impose it: use a larger time_step",
+                       p.point.x, p.point.y, p.target.x, p.target.y, system.time(), p.reached.x, p.reached.y,
+                       s.mechanics->time_step);
+  }
+  return {};
+}
 
 output::RunSummary summarise_mechanics(const scenario::Scenario& s, const dda::System& system) {
   output::RunSummary summary;

@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "dda/system.hpp"
@@ -15,6 +16,12 @@ namespace hydrodda::run {
 
 // Title, blocks (centroid, displacement, rotation, stress, area) and measured points.
 output::RunSummary summarise_mechanics(const scenario::Scenario& scenario, const dda::System& system);
+
+// A prescribed displacement the blocks did not follow: empty when every point reached its
+// ramped value to within 1% of it (or the penetration tolerance), else what was asked and what was reached at the first that
+// did not (a time step so small that inertia, 2ρA/Δt², outweighs the springs that impose it
+// leaves the points where they were). A run that did not do what was asked has not finished.
+std::string describe_unreached_displacement(const scenario::Scenario& scenario, const dda::System& system);
 
 // The flow of the unfractured case (compute_matrix_permeability) under the same boundary
 // conditions, the reference of each region's normalised conductivity; nothing when the

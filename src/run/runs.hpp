@@ -2,6 +2,7 @@
 // The kinds of run, as run() dispatches them: each builds its model from the scenario, runs it,
 // and writes the run folder as it goes. They return the summary; run() writes it.
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -24,6 +25,10 @@ struct RunContext {
   const output::RunCheckpoint* resume = nullptr;
   // Coupled runs: stop after this coupling iteration, or run to the end.
   std::optional<int> stop_after;
+  // Writes summary.json for a run that reached its end (throws RunFailure when a result is not
+  // finite). Called before the figures are drawn, so that a run killed while drawing them
+  // leaves a finished folder, not a converged checkpoint with no summary.
+  std::function<void(const output::RunSummary&)> write_summary;
 
   void report(const ProgressReport& report) const {
     if (callbacks.progress) callbacks.progress(report);

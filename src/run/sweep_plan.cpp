@@ -40,6 +40,17 @@ std::string trim(const std::string& s) {
   return s.substr(first, s.find_last_not_of(" \t") - first + 1);
 }
 
+// The same key twice would run with its last value only and give sweep.csv two columns of
+// that name: refused.
+void check_distinct_keys(const std::vector<SweepAxis>& axes) {
+  for (std::size_t i = 0; i < axes.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (axes[i].key == axes[j].key)
+        throw std::invalid_argument(fmt::format("--set {}: the key is given twice; list all its values in one --set "
+                                                "({}=V1,V2,...)",
+                                                axes[i].key, axes[i].key));
+}
+
 }  // namespace
 
 SweepAxis parse_sweep_axis(const std::string& option) {
@@ -57,6 +68,7 @@ SweepAxis parse_sweep_axis(const std::string& option) {
 }
 
 std::vector<std::vector<scenario::Override>> enumerate_cases(const std::vector<SweepAxis>& axes) {
+  check_distinct_keys(axes);
   std::vector<std::vector<scenario::Override>> cases{{}};
   for (const SweepAxis& axis : axes) {
     std::vector<std::vector<scenario::Override>> longer;
@@ -71,6 +83,7 @@ std::vector<std::vector<scenario::Override>> enumerate_cases(const std::vector<S
 }
 
 std::vector<std::vector<scenario::Override>> zip_cases(const std::vector<SweepAxis>& axes) {
+  check_distinct_keys(axes);
   std::vector<std::vector<scenario::Override>> cases;
   if (axes.empty()) return {{}};
   for (const SweepAxis& axis : axes)

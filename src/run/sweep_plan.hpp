@@ -20,7 +20,8 @@ struct SweepAxis {
 SweepAxis parse_sweep_axis(const std::string& option);
 
 // The Cartesian product of the axes' values, the first axis varying slowest: case i sets
-// axes[k].key to its value in each.
+// axes[k].key to its value in each. Both this and zip_cases throw std::invalid_argument when
+// a key is given twice.
 std::vector<std::vector<scenario::Override>> enumerate_cases(const std::vector<SweepAxis>& axes);
 
 // The axes' values taken together (--zip): case i sets every axis's key to its i-th value, so

@@ -69,7 +69,9 @@ void read_geometry(ReadContext& ctx, const TableView& root, Scenario& s) {
     g.require("min_block_area", *area > 0.0, "must be > 0");
   }
   for (auto& [polygon, line] : g.point_lists("welded")) {
-    check_polygon(ctx, line, "geometry.welded", polygon);
+    if (check_polygon(ctx, line, "geometry.welded", polygon) && geometry.domain.size() >= 3 &&
+        !polygons_overlap(polygon, geometry.domain))
+      ctx.error(line, "geometry.welded", "the welded region lies wholly outside geometry.domain");
     geometry.welded.push_back(std::move(polygon));
   }
   if (g.has("initial_aperture")) {
@@ -360,9 +362,18 @@ void read_flow(ReadContext& ctx, const TableView& root, Scenario& s) {
     region.line = r.line();
     region.name = r.string("name").value_or("");
     if (!r.has("name")) ctx.error(r.line(), "flow.region.name", "required key is missing");
+    for (const FlowRegion& other : flow.regions)
+      if (r.has("name") && other.name == region.name)
+        ctx.error(r.line_of_key("name"), "flow.region.name",
+                  fmt::format("a region named \"{}\" is already defined at line {}: give each its own name",
+                              region.name, other.line));
     if (auto p = r.points("polygon")) {
       region.polygon = std::move(*p);
-      check_polygon(ctx, r.line_of_key("polygon"), "flow.region.polygon", region.polygon);
+      const Polygon* domain = s.geometry ? &s.geometry->domain : nullptr;
+      if (check_polygon(ctx, r.line_of_key("polygon"), "flow.region.polygon", region.polygon) && domain &&
+          domain->size() >= 3 && !polygons_overlap(region.polygon, *domain))
+        ctx.error(r.line_of_key("polygon"), "flow.region.polygon",
+                  "the region lies wholly outside geometry.domain, so it would hold no element");
     } else if (!r.has("polygon")) {
       ctx.error(r.line(), "flow.region.polygon", "required key is missing");
     }

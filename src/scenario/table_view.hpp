@@ -2,6 +2,7 @@
 // Typed, checked access to one TOML table: every read records the key as known, every wrong
 // type or missing required key becomes a Diagnostic with the file, line and dotted key path.
 
+#include <algorithm>
 #include <functional>
 #include <optional>
 #include <string>
@@ -22,6 +23,10 @@ struct ReadContext {
 
   void error(int line, std::string key, std::string message) {
     errors.push_back({file, line, std::move(key), std::move(message)});
+  }
+  // Whether `key` has had an error already (a value given but refused is not also "missing").
+  bool has_error(std::string_view key) const {
+    return std::any_of(errors.begin(), errors.end(), [&](const Diagnostic& d) { return d.key == key; });
   }
 };
 

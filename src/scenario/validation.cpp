@@ -7,33 +7,36 @@
 
 namespace hydrodda::scenario {
 
-void check_polygon(ReadContext& ctx, int line, const std::string& key, const Polygon& polygon) {
+bool check_polygon(ReadContext& ctx, int line, const std::string& key, const Polygon& polygon) {
   if (polygon.size() > kMaxPolygonVertices) {
     ctx.error(line, key, fmt::format("a polygon of {} vertices; at most {} (meshing time grows without bound "
                                      "beyond: simplify the outline)", polygon.size(), kMaxPolygonVertices));
-    return;
+    return false;
   }
   if (polygon.size() < 3) {
     ctx.error(line, key, fmt::format("a polygon needs at least 3 vertices, got {}", polygon.size()));
-    return;
+    return false;
   }
   const geometry::Box box = geometry::bounding_box(polygon);
   const double scale = std::max(box.width(), box.height());
   for (std::size_t i = 0; i < polygon.size(); ++i) {
     if (polygon[i] == polygon[(i + 1) % polygon.size()]) {
       ctx.error(line, key, fmt::format("vertex {} repeats the vertex before it", (i + 1) % polygon.size() + 1));
-      return;
+      return false;
     }
   }
-  // Degenerate: every vertex on one line through the first vertex and the one farthest from it.
+  // Degenerate: every vertex on one line through the first vertex and the one farthest from it
+  // (measured on coordinates over the polygon's size, which cannot overflow: at 1e308 m the
+  // squares did, and every polygon looked flat).
+  const auto scaled = [&](Point p) { return (p - polygon[0]) * (1.0 / scale); };
   std::size_t far = 0;
   for (std::size_t i = 1; i < polygon.size(); ++i)
-    if (geometry::distance(polygon[0], polygon[i]) > geometry::distance(polygon[0], polygon[far])) far = i;
+    if (geometry::norm(scaled(polygon[i])) > geometry::norm(scaled(polygon[far]))) far = i;
   double spread = 0.0;
-  for (Point p : polygon) spread = std::max(spread, std::abs(geometry::orient(polygon[0], polygon[far], p)));
-  if (!(spread > 1e-12 * scale * scale)) {
+  for (Point p : polygon) spread = std::max(spread, std::abs(geometry::orient({0.0, 0.0}, scaled(polygon[far]), scaled(p))));
+  if (!(spread > 1e-12)) {
     ctx.error(line, key, "degenerate polygon: its vertices lie on one line, so its area is zero");
-    return;
+    return false;
   }
   if (auto crossing = geometry::find_self_intersection(polygon)) {
     ctx.error(line, key,
@@ -43,9 +46,13 @@ void check_polygon(ReadContext& ctx, int line, const std::string& key, const Pol
                           crossing->first + 1 == static_cast<int>(polygon.size()) ? 1 : crossing->first + 2,
                           crossing->second + 1, crossing->second + 1,
                           crossing->second + 1 == static_cast<int>(polygon.size()) ? 1 : crossing->second + 2));
-    return;
+    return false;
   }
-  if (geometry::signed_area(polygon) < 0.0) ctx.error(line, key, "vertices run clockwise: list them counter-clockwise");
+  if (geometry::signed_area(polygon) < 0.0) {
+    ctx.error(line, key, "vertices run clockwise: list them counter-clockwise");
+    return false;
+  }
+  return true;
 }
 
 namespace {
@@ -67,9 +74,49 @@ void check_boundary_reference(ReadContext& ctx, const Scenario& s, int line, con
   ctx.error(line, key, message);
 }
 
-// Two blocks overlap when an edge of one properly crosses an edge of the other, or a vertex or
-// the centroid of one lies strictly inside the other; touching along edges is allowed.
-bool blocks_overlap(const Polygon& a, const Polygon& b) {
+// The length of `segment` that runs along the polygon's edges (collinear within a relative 1e-9
+// of the polygon's size, as the mesh's boundary edges are named): the flow can only take a
+// condition where this is more than nothing.
+// Measured on coordinates over the outline's size (no overflow at 1e308 m); in those units.
+double length_along_outline(const Segment& given, const Polygon& outline) {
+  const geometry::Box box = geometry::bounding_box(outline);
+  const double scale = std::max(box.width(), box.height());
+  const auto scaled = [&](Point p) { return (p - box.lo) * (1.0 / scale); };
+  const Segment segment{scaled(given.from), scaled(given.to)};
+  const double tolerance = 1e-9;
+  double length = 0.0;
+  for (std::size_t i = 0; i < outline.size(); ++i) {
+    const Point a = scaled(outline[i]), b = scaled(outline[(i + 1) % outline.size()]);
+    const double edge = geometry::distance(a, b);
+    const auto off_line = [&](Point p) { return std::abs(geometry::orient(a, b, p)) / edge > tolerance; };
+    if (off_line(segment.from) || off_line(segment.to)) continue;
+    const Point along = (b - a) * (1.0 / edge);
+    const double s0 = geometry::dot(segment.from - a, along), s1 = geometry::dot(segment.to - a, along);
+    length += std::max(0.0, std::min(edge, std::max(s0, s1)) - std::max(0.0, std::min(s0, s1)));
+  }
+  return length;
+}
+
+// A [[flow.boundary]] on a [boundaries] segment that does not run along the domain's outline
+// (drawn inside or outside it, or a default such as `bottom` redefined off it) has no mesh
+// edges to take the condition: refused here, not after meshing.
+void check_flow_boundary_on_domain(ReadContext& ctx, const Scenario& s, const FlowBoundaryCondition& bc) {
+  const BoundarySegment* boundary = s.find_boundary(bc.name);
+  if (!boundary || !s.geometry || s.geometry->domain.size() < 3) return;
+  if (boundary->segment.from == boundary->segment.to) return;  // refused for its length already
+  if (length_along_outline(boundary->segment, s.geometry->domain) > 1e-9) return;
+  const Segment& g = boundary->segment;
+  ctx.error(bc.line, "flow.boundary.name",
+            fmt::format("boundary \"{}\" (from ({:g}, {:g}) to ({:g}, {:g})) does not run along the edge of "
+                        "geometry.domain, so no mesh edge can take its condition",
+                        bc.name, g.from.x, g.from.y, g.to.x, g.to.y));
+}
+
+}  // namespace
+
+// Two polygons overlap when an edge of one properly crosses an edge of the other, or a vertex,
+// a piece of an edge or the centroid of one lies strictly inside the other.
+bool polygons_overlap(const Polygon& a, const Polygon& b) {
   // Coordinates in a file carry a dozen digits, so touching blocks may overlap by round-off:
   // depths under a relative 1e-9 of the blocks' size count as touching.
   geometry::Box box = geometry::bounding_box(a);
@@ -99,7 +146,58 @@ bool blocks_overlap(const Polygon& a, const Polygon& b) {
     if (strictly_inside(b, p)) return true;
   for (Point p : b)
     if (strictly_inside(a, p)) return true;
+  // With no proper crossing, an edge enters the other block only between the other's vertices
+  // that lie on it: cut each edge there and test the pieces' midpoints (two squares offset by
+  // half a side have every vertex and both centroids on the other's boundary).
+  const auto piece_inside = [&](const Polygon& cut, const Polygon& other) {
+    for (std::size_t i = 0; i < cut.size(); ++i) {
+      const Point p = cut[i], q = cut[(i + 1) % cut.size()];
+      const double length = geometry::distance(p, q);
+      std::vector<double> at{0.0, 1.0};
+      for (Point r : other)
+        if (geometry::distance_to_segment(r, p, q) <= tolerance)
+          at.push_back(std::clamp(geometry::dot(r - p, q - p) / (length * length), 0.0, 1.0));
+      std::sort(at.begin(), at.end());
+      for (std::size_t k = 0; k + 1 < at.size(); ++k)
+        if ((at[k + 1] - at[k]) * length > tolerance && strictly_inside(other, p + (0.5 * (at[k] + at[k + 1])) * (q - p)))
+          return true;
+    }
+    return false;
+  };
+  if (piece_inside(a, b) || piece_inside(b, a)) return true;
   return strictly_inside(b, geometry::centroid(a)) || strictly_inside(a, geometry::centroid(b));
+}
+
+namespace {
+
+// The model's size and place (12, 15 of the robustness list): Gmsh merges points closer than
+// its tolerance of 1e-8 m, so a model under a millimetre fails inside it; and a position of
+// magnitude |x| resolves displacements only to 2.2e-16 |x|, so coordinates far from the origin
+// (1e9 m for a metre-sized model) lose the answer. Within 1e6 sizes of the origin that
+// resolution stays 2,000 times below the penetration tolerance (5e-7 of the model's height).
+void check_model_extent(ReadContext& ctx, const TableView& root, const GeometryDefinition& g) {
+  geometry::Box box;
+  for (Point p : g.domain) box.add(p);
+  for (const BlockDefinition& b : g.blocks)
+    for (Point p : b.vertices) box.add(p);
+  if (box.empty()) return;
+  const double size = std::max(box.width(), box.height());
+  const int line = root.line_of_key("geometry");
+  if (!(size >= kMinModelSize && size <= kMaxModelSize)) {
+    ctx.error(line, "geometry",
+              fmt::format("the model spans {:g} m; the supported size is {:g} m to {:g} m (Gmsh merges points "
+                          "closer than 1e-8 m): give lengths in metres",
+                          size, kMinModelSize, kMaxModelSize));
+    return;
+  }
+  const double reach = std::max({std::abs(box.lo.x), std::abs(box.lo.y), std::abs(box.hi.x), std::abs(box.hi.y)});
+  if (reach > kMaxOriginDistance * size)
+    ctx.error(line, "geometry",
+              fmt::format("coordinates reach {:g} m from the origin, {:.3g} times the model's size of {:g} m; at most "
+                          "{:g} times, or positions lose the digits displacements need: move the origin into the "
+                          "model (subtract ({:.12g}, {:.12g}))",
+                          reach, reach / size, size, kMaxOriginDistance, 0.5 * (box.lo.x + box.hi.x),
+                          0.5 * (box.lo.y + box.hi.y)));
 }
 
 void check_block_overlaps(ReadContext& ctx, const std::vector<BlockDefinition>& blocks) {
@@ -118,7 +216,7 @@ void check_block_overlaps(ReadContext& ctx, const std::vector<BlockDefinition>& 
       const std::size_t j = order[oj];
       if (boxes[j].lo.x > boxes[i].hi.x) break;
       if (blocks[j].vertices.size() < 3 || !boxes[i].overlaps(boxes[j])) continue;
-      if (blocks_overlap(blocks[i].vertices, blocks[j].vertices)) {
+      if (polygons_overlap(blocks[i].vertices, blocks[j].vertices)) {
         const auto [first, second] = std::minmax(blocks[i].line, blocks[j].line);
         ctx.error(second, "geometry.block",
                   fmt::format("this block overlaps the block defined at line {}", first));
@@ -160,10 +258,14 @@ void resolve_materials(ReadContext& ctx, const TableView& root, Scenario& s) {
 void check_material_fields(ReadContext& ctx, const TableView& root, const Scenario& s) {
   for (const MaterialDefinition& m : s.materials) {
     const int line = root.line_of_key("material");
+    const auto require = [&](const std::optional<double>& value, const std::string& key) {
+      const std::string path = "material." + m.name + "." + key;
+      if (!value && !ctx.has_error(path)) ctx.error(line, path, "required by [mechanics]");
+    };
     if (s.mechanics) {
-      if (!m.density) ctx.error(line, "material." + m.name + ".density", "required by [mechanics]");
-      if (!m.young) ctx.error(line, "material." + m.name + ".young", "required by [mechanics]");
-      if (!m.poisson) ctx.error(line, "material." + m.name + ".poisson", "required by [mechanics]");
+      require(m.density, "density");
+      require(m.young, "young");
+      require(m.poisson, "poisson");
     }
     if (s.flow && s.flow->permeability_law == PermeabilityLaw::KozenyCarman && !m.grain_diameter)
       ctx.error(line, "material." + m.name + ".grain_diameter",
@@ -202,6 +304,7 @@ void validate_scenario(ReadContext& ctx, const TableView& root, Scenario& s) {
   resolve_materials(ctx, root, s);
   check_material_fields(ctx, root, s);
   if (s.geometry) {
+    check_model_extent(ctx, root, *s.geometry);
     check_block_overlaps(ctx, s.geometry->blocks);
   }
 
@@ -220,7 +323,10 @@ void validate_scenario(ReadContext& ctx, const TableView& root, Scenario& s) {
     // mesh is read: the flow solver checks those names then.
     const bool names_from_mesh_file = s.mesh && s.mesh->file;
     for (const FlowBoundaryCondition& bc : s.flow->boundaries) {
-      if (!names_from_mesh_file) check_boundary_reference(ctx, s, bc.line, "flow.boundary.name", bc.name);
+      if (!names_from_mesh_file) {
+        check_boundary_reference(ctx, s, bc.line, "flow.boundary.name", bc.name);
+        check_flow_boundary_on_domain(ctx, s, bc);
+      }
       head_fixed = head_fixed || bc.kind != FlowConditionKind::Flux;
     }
     if (!head_fixed)

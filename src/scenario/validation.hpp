@@ -13,9 +13,20 @@ namespace hydrodda::scenario {
 // stopped); at 10^5 many minutes.
 inline constexpr std::size_t kMaxPolygonVertices = 2'000;
 
+// The model's extent (geometry.domain and the blocks, m) and how far from the origin it may
+// lie, in sizes (validation.cpp, check_model_extent, says why).
+inline constexpr double kMinModelSize = 1e-3;
+inline constexpr double kMaxModelSize = 1e7;
+inline constexpr double kMaxOriginDistance = 1e6;
+
 // A polygon the engines can use (an empty one given is refused too): at least 3 and at most
 // kMaxPolygonVertices vertices, non-zero area, counter-clockwise, simple.
-void check_polygon(ReadContext& context, int line, const std::string& key, const Polygon& polygon);
+// True when it passed.
+bool check_polygon(ReadContext& context, int line, const std::string& key, const Polygon& polygon);
+
+// Do the interiors of two simple polygons share area? Touching along edges or at vertices is
+// not overlap (to a relative 1e-9 of their size: coordinates in a file carry a dozen digits).
+bool polygons_overlap(const Polygon& a, const Polygon& b);
 
 // Cross-section checks, after every section has been read.
 void validate_scenario(ReadContext& context, const TableView& root, Scenario& scenario);

@@ -98,3 +98,31 @@ TEST(HostileInput, APolygonTooDetailedToMeshInBoundedTimeIsRefusedByCheck) {
       << result.output;
   fs::remove_all(dir);
 }
+
+// Item 18's command-line messages: each says what is wanted, in the user's terms.
+TEST(HostileInput, CommandLineMistakesSayWhatIsWanted) {
+  const std::string sweep = "sweep " + kLoadedBlock.string() + " --set mechanics.steps=10,20";
+  for (const std::string& arguments : {sweep + " --jobs 0", "run " + kLoadedBlock.string() + " --stop-after 0"}) {
+    const auto result = run_program(arguments);
+    EXPECT_EQ(result.exit_code, 2) << result.output;
+    EXPECT_NE(result.output.find("must be a whole number >= 1, got 0"), std::string::npos) << result.output;
+    EXPECT_EQ(result.output.find("1.79"), std::string::npos) << result.output;
+  }
+  // -o '' was ignored: the run went to output.directory.
+  for (const std::string& arguments : {"run " + kLoadedBlock.string() + " -o ''", sweep + " -o ''"}) {
+    const auto result = run_program(arguments);
+    EXPECT_EQ(result.exit_code, 2) << result.output;
+    EXPECT_NE(result.output.find("--output: the folder's path is empty"), std::string::npos) << result.output;
+  }
+  // -o at a symbolic link to nothing said "File exists".
+  const fs::path dir = fresh_folder("dangling");
+  fs::create_directories(dir);
+  fs::create_symlink(dir / "gone", dir / "link");
+  const auto dangling = run_program("run " + kLoadedBlock.string() + " -o " + (dir / "link").string());
+  EXPECT_EQ(dangling.exit_code, 2) << dangling.output;
+  EXPECT_NE(dangling.output.find("is a symbolic link to " + (dir / "gone").string() + ", which does not exist"),
+            std::string::npos)
+      << dangling.output;
+  EXPECT_FALSE(fs::exists(dir / "gone"));
+  fs::remove_all(dir);
+}

@@ -16,8 +16,10 @@
 #include <thread>
 
 #include "run_program.hpp"
+#include "spawn_program.hpp"
 
 namespace fs = std::filesystem;
+using hydrodda::testing::start_program_silently;
 
 namespace {
 
@@ -147,5 +149,80 @@ TEST(Interrupt, SigtermAtAnyMomentOfACoupledRunEndsItCleanly) {
       resumed_one = true;
     }
   }
+  fs::remove_all(out);
+}
+
+namespace {
+
+// Whether `pid` has SIGTERM in its blocked set (/proc/PID/status, SigBlk: a hex mask, bit
+// SIGTERM − 1).
+bool blocks_sigterm(pid_t pid) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("SigBlk:", 0) == 0) return (std::stoull(line.substr(7), nullptr, 16) >> (SIGTERM - 1)) & 1u;
+  return false;
+}
+
+}  // namespace
+
+// An interrupt in the first moments of the program, for every command: main blocks SIGINT and
+// SIGTERM first thing, so from then on one waits for the signal thread instead of ending the
+// process by the default action. `check` had no signal thread at all and died of the signal.
+TEST(Interrupt, AnInterruptRightAfterStartIsAMessageNotASignal) {
+  const fs::path scenario = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/jointed_seal.toml";
+  const fs::path out = fs::temp_directory_path() / ("hydrodda-early-" + std::to_string(::getpid()));
+  for (const char* command : {"check", "run"}) {
+    for (int delay_ms : {0, 2, 5, 10, 20, 40}) {
+      SCOPED_TRACE(std::string(command) + ", SIGTERM " + std::to_string(delay_ms) + " ms after main began");
+      fs::remove_all(out);
+      const pid_t pid = std::string(command) == "check"
+                            ? start_program_silently({"check", scenario.string()})
+                            : start_program_silently({"run", scenario.string(), "-o", out.string()});
+      ASSERT_GE(pid, 0);
+      // Before main (the dynamic loader mapping the libraries) nothing of ours can take a
+      // signal; main's first act shows in the blocked set.
+      int status = 0;
+      bool blocked = false, ended = false;
+      for (int i = 0; i < 20000 && !blocked && !ended; ++i) {
+        blocked = blocks_sigterm(pid);
+        if (!blocked && ::waitpid(pid, &status, WNOHANG) == pid) ended = true;
+        else if (!blocked) std::this_thread::sleep_for(std::chrono::microseconds(250));
+      }
+      ASSERT_TRUE(blocked) << "the program never blocked SIGTERM (ended: " << ended << ")";
+      std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
+      ::kill(pid, SIGTERM);
+      ASSERT_TRUE(wait_for_exit(pid, std::chrono::seconds(60), status));
+      ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
+      // 1 interrupted; 0 when it ended before the signal came (check on an idle machine).
+      EXPECT_TRUE(WEXITSTATUS(status) == 1 || WEXITSTATUS(status) == 0) << WEXITSTATUS(status);
+    }
+  }
+  fs::remove_all(out);
+}
+
+// Item 17: SIGKILL while the figures are drawn after convergence left the fields and a
+// converged checkpoint but no summary.json, and --resume refused ("already converged"): the
+// summary is written first, so whenever figures/ exists, so does summary.json.
+TEST(Interrupt, ARunKilledWhileDrawingItsFiguresHasItsSummary) {
+  const fs::path scenario = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/paper/six_block_lr_rl.toml";
+  const fs::path out = fs::temp_directory_path() / ("hydrodda-killed-figures-" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  const pid_t pid = start_program_silently({"run", scenario.string(), "-o", out.string()});
+  ASSERT_GE(pid, 0);
+  int status = 0;
+  bool ended = false;
+  for (int i = 0; i < 600000 && !fs::exists(out / "figures"); ++i) {
+    if (::waitpid(pid, &status, WNOHANG) == pid) {
+      ended = true;
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  ASSERT_FALSE(ended) << "the run ended before drawing its figures";
+  ::kill(pid, SIGKILL);
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(fs::exists(out / "summary.json"));
+  EXPECT_EQ(nlohmann::json::parse(std::ifstream(out / "summary.json"))["converged"], true);
   fs::remove_all(out);
 }

@@ -15,10 +15,12 @@
 #include <thread>
 
 #include "run_program.hpp"
+#include "spawn_program.hpp"
 
 namespace fs = std::filesystem;
 using hydrodda::testing::read_csv;
 using hydrodda::testing::run_program;
+using hydrodda::testing::start_program_silently;
 
 namespace {
 
@@ -189,31 +191,59 @@ TEST(Sweep, ZipTakesTheListsTogether) {
   EXPECT_FALSE(fs::exists(out));
 }
 
-TEST(Sweep, InterruptStopsLaunchingAndReachesTheRunningCase) {
-  const fs::path out = fresh_dir("hydrodda-sweep-interrupt");
-  const std::string scenario = (kSource / "scenarios/paper/six_block_lr_rl.toml").string();
-  const pid_t pid = ::fork();
-  ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    // Its own process group, so the signal below reaches the sweep only; the sweep must pass
-    // it on to its running case.
-    ::setpgid(0, 0);
-    const int null = ::open("/dev/null", O_WRONLY);
-    ::dup2(null, STDOUT_FILENO);
-    ::dup2(null, STDERR_FILENO);
-    ::execl(HYDRODDA_BINARY, HYDRODDA_BINARY, "sweep", scenario.c_str(), "--set", "flow.boundary[0].head=5,10,15",
-            "--jobs", "1", "-o", out.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
+// The same key twice ran with its last value and gave sweep.csv the column twice.
+TEST(Sweep, AKeyGivenTwiceIsRefused) {
+  const fs::path out = fresh_dir("hydrodda-sweep-twice");
+  const std::string scenario = (kSource / "scenarios/verification/flow_linear_head.toml").string();
+  for (const char* zip : {"", " --zip"}) {
+    const auto result = run_program("sweep " + scenario + " --set flow.boundary[0].head=3,5 --set flow.boundary[0].head=7,9" +
+                                    zip + " -o " + out.string());
+    EXPECT_EQ(result.exit_code, 2) << result.output;
+    EXPECT_NE(result.output.find("--set flow.boundary[0].head: the key is given twice"), std::string::npos)
+        << result.output;
+    EXPECT_FALSE(fs::exists(out));
   }
-  // Wait until the first case has written its first coupling iteration, then interrupt.
-  for (int i = 0; i < 600 && !fs::exists(out / "case_000/history.csv"); ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+}
+
+// Starts a sweep of the six-block model over `heads` in its own process group (so that the
+// signal reaches the sweep only, which must pass it on to its cases), sends SIGINT once
+// `wait_for` exists, and returns sweep.csv's rows after the sweep exited with 1.
+std::vector<std::vector<std::string>> interrupt_sweep(const fs::path& out, const std::string& heads, const std::string& jobs,
+                                                      const fs::path& wait_for, std::chrono::milliseconds poll) {
+  const std::string scenario = (kSource / "scenarios/paper/six_block_lr_rl.toml").string();
+  const pid_t pid = start_program_silently(
+      {"sweep", scenario, "--set", "flow.boundary[0].head=" + heads, "--jobs", jobs, "-o", out.string()}, true);
+  EXPECT_GE(pid, 0);
+  for (auto waited = std::chrono::milliseconds(0); waited < std::chrono::seconds(30) && !fs::exists(wait_for);
+       waited += poll)
+    std::this_thread::sleep_for(poll);
   ::kill(pid, SIGINT);
   int status = 0;
   ::waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 1);
-  const auto rows = read_csv(out / "sweep.csv");
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << status;
+  return read_csv(out / "sweep.csv");
+}
+
+// A case interrupted while its program still loads (the sweep passes the interrupt on at
+// once) says it was interrupted: it starts with SIGINT and SIGTERM blocked, so the signal waits
+// for its signal thread instead of killing it with an empty run.log ("exit code 130").
+TEST(Sweep, ACaseInterruptedAtStartUpSaysInterrupted) {
+  const fs::path out = fresh_dir("hydrodda-sweep-startup");
+  // The cases' logs are opened as they are started, before their program has loaded.
+  const auto rows = interrupt_sweep(out, "5,10", "2", out / "case_001/run.log", std::chrono::milliseconds(1));
+  ASSERT_EQ(rows.size(), 3u);
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    EXPECT_EQ(rows[r][2], "failed");
+    EXPECT_NE(rows[r].back().find("interrupted"), std::string::npos) << rows[r].back();
+    EXPECT_EQ(rows[r].back().find("exit code 13"), std::string::npos) << rows[r].back();
+  }
+  fs::remove_all(out);
+}
+
+TEST(Sweep, InterruptStopsLaunchingAndReachesTheRunningCase) {
+  const fs::path out = fresh_dir("hydrodda-sweep-interrupt");
+  // Once the first case has written its first coupling iteration.
+  const auto rows = interrupt_sweep(out, "5,10,15", "1", out / "case_000/history.csv", std::chrono::milliseconds(50));
   ASSERT_EQ(rows.size(), 4u);
   EXPECT_EQ(rows[1][2], "interrupted");  // the running case stopped at the interrupt ...
   EXPECT_NE(rows[1].back().find("interrupted"), std::string::npos) << rows[1].back();

@@ -22,7 +22,6 @@ RunCheckpoint make_checkpoint() {
   c.history = {{"1", "0.10000000000000001", "1"}, {"2", "0.20000000000000001", "0.5"}};
   c.measure = {{"1", "0.10000000000000001", "top", "0.5", "1", "0", "-1e-06"}};
   c.written_iterations = {1, 2};
-  c.timings = {{"mesh", 0.25}, {"flow", 1.5}};
   dda::SystemState::BlockState block;
   block.polygon = {{0.0, 0.0}, {1.0 / 3.0, 0.0}, {0.0, 0.1}};
   block.velocity = {1e-300, -0.0, std::numeric_limits<double>::denorm_min(), 4, 5, 6};
@@ -66,7 +65,6 @@ TEST(Checkpoint, DecodesToTheSameValuesBitForBit) {
   EXPECT_EQ(d.history, c.history);
   EXPECT_EQ(d.measure, c.measure);
   EXPECT_EQ(d.written_iterations, c.written_iterations);
-  EXPECT_EQ(d.timings, c.timings);
   ASSERT_EQ(d.mechanics.blocks.size(), 2u);
   const auto& b = d.mechanics.blocks[1];
   const auto& e = c.mechanics.blocks[1];
@@ -113,6 +111,19 @@ TEST(Checkpoint, ACutOrDamagedFileIsRefused) {
   std::string other_version = bytes;
   other_version[std::string_view("hydrodda checkpoint\n").size()] = 9;
   EXPECT_THROW(decode_checkpoint(other_version), CheckpointError);
+}
+
+// Every single bit flipped anywhere is refused by the checksum: a flip in the payload's last
+// fifth (a double of the loop's state) was decoded and resumed from, to a head change of 5.7e74.
+TEST(Checkpoint, AnyFlippedBitIsRefused) {
+  const std::string bytes = encode_checkpoint(make_checkpoint());
+  for (std::size_t at = 0; at < bytes.size(); ++at) {
+    for (int bit = 0; bit < 8; ++bit) {
+      std::string damaged = bytes;
+      damaged[at] = static_cast<char>(damaged[at] ^ (1 << bit));
+      EXPECT_THROW(decode_checkpoint(damaged), CheckpointError) << "byte " << at << " bit " << bit;
+    }
+  }
 }
 
 TEST(Checkpoint, TheScenarioHashTellsAnEditedText) {
