@@ -52,7 +52,8 @@ def checkpoint_without_timings(data):
     """checkpoint.bin with the seconds of its timings zeroed: magic, version, byte-order mark,
     scenario hash, scenario file, converged, history rows, measure rows (format 2 and later),
     written iterations, then the timings (count, then name and seconds for each); what follows
-    the timings (format 3: the coupling loop's Aitken state) is compared as it is."""
+    the timings (format 3: the coupling loop's Aitken state; format 4: the flow solver's kept
+    factor) is compared as it is."""
     data = bytearray(data)
     at = len("hydrodda checkpoint\n") + 8 + 4 + 8
 

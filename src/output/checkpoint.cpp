@@ -8,7 +8,12 @@ namespace hydrodda::output {
 namespace {
 
 constexpr std::string_view kMagic = "hydrodda checkpoint\n";
-constexpr std::int64_t kVersion = 3;  // 2: measure.csv rows after history.csv's; 3: the coupling loop's Aitken state
+// 2: measure.csv rows after history.csv's. 3: the coupling loop's Aitken state. 4: the flow
+// solver's kept factor (its permeability) at the end. Formats 2 and 3 are still read: a format-2
+// run resumes without Aitken's state (ω = 1), and without a kept factor its first flow solve
+// factors afresh.
+constexpr std::int64_t kVersion = 4;
+constexpr std::int64_t kOldestVersion = 2;
 constexpr std::uint32_t kByteOrderMark = 0x01020304;
 // Any list longer than the file could hold is damage, not data; this bounds allocations.
 constexpr std::int64_t kMaxCount = std::int64_t{1} << 40;
@@ -255,6 +260,7 @@ std::string encode_checkpoint(const RunCheckpoint& c) {
   w.put(c.coupling.heads_two_back);
   w.put(c.coupling.previous_update);
   w.put(c.coupling.relaxation);
+  w.put(c.coupling.kept_factor_permeability);
   return w.take();
 }
 
@@ -264,9 +270,9 @@ RunCheckpoint decode_checkpoint(std::string_view bytes) {
   r.expect(kMagic);
   std::int64_t version = 0;
   r.get(version);
-  if (version != kVersion)
-    throw CheckpointError("checkpoint format " + std::to_string(version) + "; this hydrodda reads format " +
-                          std::to_string(kVersion));
+  if (version < kOldestVersion || version > kVersion)
+    throw CheckpointError("checkpoint format " + std::to_string(version) + "; this hydrodda reads formats " +
+                          std::to_string(kOldestVersion) + " to " + std::to_string(kVersion));
   if (r.get_raw<std::uint32_t>() != kByteOrderMark)
     throw CheckpointError("the checkpoint was written on a machine of another byte order");
   RunCheckpoint c;
@@ -303,9 +309,12 @@ RunCheckpoint decode_checkpoint(std::string_view bytes) {
   r.get(c.coupling.growth.passes);
   r.get(c.coupling.growth.base);
   r.get(c.coupling.growth.last);
-  r.get(c.coupling.heads_two_back);
-  r.get(c.coupling.previous_update);
-  r.get(c.coupling.relaxation);
+  if (version >= 3) {
+    r.get(c.coupling.heads_two_back);
+    r.get(c.coupling.previous_update);
+    r.get(c.coupling.relaxation);
+  }
+  if (version >= 4) r.get(c.coupling.kept_factor_permeability);
   r.expect_end();
   return c;
 }

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 
@@ -54,6 +55,10 @@ RunCheckpoint make_checkpoint() {
   c.coupling.flow.refinement_steps = 1;
   c.coupling.previous_heads = c.coupling.flow.head;
   c.coupling.previous_displacements = {{1e-3, 0.0}, {0.0, -2e-3}};
+  c.coupling.heads_two_back = {19.0, 3.0, 0.0};
+  c.coupling.previous_update = {0.5, -0.25, 0.0};
+  c.coupling.relaxation = 0.7;
+  c.coupling.kept_factor_permeability = {1e-15, 3.7e-9};
   return c;
 }
 
@@ -101,6 +106,7 @@ TEST(Checkpoint, DecodesToTheSameValuesBitForBit) {
   EXPECT_EQ(d.coupling.flow.balance_error, 1e-15);
   EXPECT_EQ(d.coupling.flow.refinement_steps, 1);
   EXPECT_EQ(d.coupling.previous_displacements[1].y, -2e-3);
+  EXPECT_EQ(d.coupling.kept_factor_permeability, c.coupling.kept_factor_permeability);
 }
 
 TEST(Checkpoint, ACutOrDamagedFileIsRefused) {
@@ -113,6 +119,43 @@ TEST(Checkpoint, ACutOrDamagedFileIsRefused) {
   std::string other_version = bytes;
   other_version[std::string_view("hydrodda checkpoint\n").size()] = 9;
   EXPECT_THROW(decode_checkpoint(other_version), CheckpointError);
+}
+
+// The bytes of an older format: this format's encoding of `c`, whose lists added since are
+// empty and whose relaxation is 1 (the decoder's defaults), cut before the fields that format
+// lacks (`dropped` bytes at the end), with the version set to `version`.
+std::string older_format(const RunCheckpoint& c, std::int64_t version, std::size_t dropped) {
+  std::string bytes = encode_checkpoint(c);
+  bytes.resize(bytes.size() - dropped);
+  bytes[std::string_view("hydrodda checkpoint\n").size()] = static_cast<char>(version);
+  return bytes;
+}
+
+TEST(Checkpoint, AFormatThreeFileIsReadWithNoKeptFactor) {
+  // Format 3 ended before the kept factor's permeability (a count and its values).
+  RunCheckpoint c = make_checkpoint();
+  c.coupling.kept_factor_permeability.clear();
+  const RunCheckpoint d = decode_checkpoint(older_format(c, 3, sizeof(std::int64_t)));
+  EXPECT_TRUE(d.coupling.kept_factor_permeability.empty());
+  EXPECT_EQ(d.coupling.previous_update, c.coupling.previous_update);
+  EXPECT_EQ(d.coupling.relaxation, 0.7);
+  EXPECT_EQ(encode_checkpoint(d), encode_checkpoint(c));
+}
+
+TEST(Checkpoint, AFormatTwoFileIsReadWithNoAitkenStateAndNoKeptFactor) {
+  // Format 2 also lacked Aitken's state: two lists (their counts) and the relaxation factor.
+  RunCheckpoint c = make_checkpoint();
+  c.coupling.kept_factor_permeability.clear();
+  c.coupling.heads_two_back.clear();
+  c.coupling.previous_update.clear();
+  c.coupling.relaxation = 1.0;
+  const RunCheckpoint d = decode_checkpoint(older_format(c, 2, 3 * sizeof(std::int64_t) + sizeof(double)));
+  EXPECT_TRUE(d.coupling.kept_factor_permeability.empty());
+  EXPECT_TRUE(d.coupling.previous_update.empty());
+  EXPECT_EQ(d.coupling.relaxation, 1.0);
+  EXPECT_EQ(d.coupling.previous_heads, c.coupling.previous_heads);
+  EXPECT_EQ(d.coupling.growth.last, c.coupling.growth.last);
+  EXPECT_EQ(encode_checkpoint(d), encode_checkpoint(c));
 }
 
 TEST(Checkpoint, TheScenarioHashTellsAnEditedText) {
