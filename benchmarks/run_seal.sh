@@ -2,7 +2,8 @@
 # run_seal.sh [BUILD_DIR] [seal_scenario.py options...]
 # Times a coupled run of the fractured seal that seal_scenario.py writes (by default about
 # 1,000 blocks over about 2 x 10^5 triangles, 3 passes of 20 DDA steps) with the real program,
-# and prints its size and the seconds of each phase from summary.json.
+# and prints its size, each pass's seconds of porosity, flow (with whether it factored afresh or
+# ran CG on the kept factor) and mechanics, and the seconds of each phase from summary.json.
 set -euo pipefail
 HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 BUILD=${1:-build}
@@ -12,9 +13,10 @@ trap 'rm -rf "$WORK"' EXIT
 
 python3 "$HERE/seal_scenario.py" "$@" > "$WORK/seal.toml"
 start=$(date +%s.%N)
-"$BUILD/bin/hydrodda" run "$WORK/seal.toml" -o "$WORK/out" 2> "$WORK/log" || { cat "$WORK/log" >&2; exit 1; }
+"$BUILD/bin/hydrodda" -v run "$WORK/seal.toml" -o "$WORK/out" 2> "$WORK/log" || { cat "$WORK/log" >&2; exit 1; }
 end=$(date +%s.%N)
 grep -E "^(mesh|geometry|mechanics):" "$WORK/log" || true
+grep -oE "iteration [0-9]+: head change.*mechanics [0-9.]+ s" "$WORK/log" || true
 python3 - "$WORK/out/summary.json" "$start" "$end" <<'EOF'
 import json, sys
 summary = json.load(open(sys.argv[1]))
