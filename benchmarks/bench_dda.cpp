@@ -58,6 +58,7 @@ BENCHMARK(BM_BrickWall)
     ->Args({20, 40})
     ->Args({40, 40})
     ->Args({100, 100})
+    ->Args({100, 1000})  // 100,001 blocks: the growth from 10^4
     ->Iterations(20)
     ->Unit(benchmark::kMillisecond);
 

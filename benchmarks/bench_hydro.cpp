@@ -5,6 +5,8 @@
 // 0.75 with k = 1e-9 m² in a matrix of 1e-15 m² (contrast 1e6).
 //
 //   build/bin/bench_hydro                         # our own meshes, 1e4 to 1e6 triangles
+//   OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 build/bin/bench_hydro --benchmark_filter=LatePass
+//                                                 # a late coupling pass, afresh or on the kept factor
 //   HYDRODDA_PEER_MESH=case/mesh.msh build/bin/bench_hydro --benchmark_filter=PeerMesh
 //                                                 # the peer benchmark's own mesh file
 // Run with OMP_THREAD_LIMIT=1 OPENBLAS_NUM_THREADS=1 to compare with one-thread peers.
@@ -12,6 +14,7 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <map>
 #include <memory>
@@ -144,6 +147,79 @@ void BM_Solve(benchmark::State& state, const mesh::TriangleMesh& m) {
   state.counters["flow_rel_err"] = flow / ((3 * kStripWidth * kStripK + (1 - 3 * kStripWidth) * kMatrixK) *
                                            hydro::Fluid{}.conductivity_per_permeability()) - 1.0;
 }
+
+// A layer like the seal of benchmarks/seal_scenario.py over a structured mesh of 1600 × 320
+// cells (1,024,000 triangles, 0.0625 m): h = 50 m at the base, 0 at the top; beds every 0.2 m
+// and joints every 1 m as strips of k = 1e-8 m² in a matrix of 1e-15 m².
+const mesh::TriangleMesh& layer_mesh() {
+  static const mesh::TriangleMesh m = [] {
+    constexpr int nx = 1600, ny = 320;
+    mesh::TriangleMesh out;
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 0; i <= nx; ++i) out.nodes.push_back({100.0 * i / nx, 20.0 * j / ny});
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        const int a = j * (nx + 1) + i, b = a + 1, d = a + nx + 1, c = d + 1;
+        out.triangles.push_back({a, b, c});
+        out.triangles.push_back({a, c, d});
+      }
+    out.region.assign(out.triangles.size(), 0);
+    out.region_names = {"domain"};
+    mesh::name_boundary_edges(out, {}, geometry::bounding_box(out.nodes));
+    return out;
+  }();
+  return m;
+}
+
+// The layer's permeability at a pass: each fracture element's k moved by up to ±`spread` from
+// the kept factor's (a fixed pattern, its phase changing with the pass).
+std::vector<double> layer_permeability(double spread, int pass) {
+  const mesh::TriangleMesh& m = layer_mesh();
+  std::vector<double> k(m.triangles.size(), kMatrixK);
+  for (std::size_t e = 0; e < k.size(); ++e) {
+    const auto& t = m.triangles[e];
+    const geometry::Point c = (m.nodes[t[0]] + m.nodes[t[1]] + m.nodes[t[2]]) / 3.0;
+    const bool bed = std::abs(std::fmod(c.y, 0.2) - 0.1) > 0.07, joint = std::abs(std::fmod(c.x, 1.0) - 0.5) > 0.47;
+    if (bed || joint) k[e] = 1e-8 * (1.0 + spread * std::sin(0.7 * static_cast<double>(e) + pass));
+  }
+  return k;
+}
+
+// A late coupling pass's flow solve on the layer: the permeability of the fractures moved by
+// up to ±(arg / 1000) since the pass that factored. Afresh (arg 0 of the second argument): the
+// exact solve, factor and refinement, as every pass did before; on the kept factor (1): CG
+// preconditioned by it. CPU time; run with OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1.
+void BM_LatePassFlow(benchmark::State& state) {
+  const double spread = state.range(0) * 1e-3;
+  const bool reuse = state.range(1) == 1;
+  hydro::DarcyProblem problem;
+  problem.boundaries = {{"bottom", hydro::BoundaryKind::head, 50.0}, {"top", hydro::BoundaryKind::head, 0.0}};
+  hydro::DarcySolver solver(layer_mesh(), problem, make_solver());
+  std::vector<std::vector<double>> passes;
+  for (int pass = 0; pass < 4; ++pass) passes.push_back(layer_permeability(spread, pass + 1));
+  std::vector<double> heads = solver.solve(layer_permeability(0.0, 0)).head;  // the pass that factored
+  double balance = 0.0, iterations = 0.0, afresh = 0.0;
+  long count = 0;
+  for (auto _ : state) {
+    const auto& k = passes[count % passes.size()];
+    const hydro::FlowSolution s = reuse ? solver.solve_reusing_factor(k, heads) : solver.solve(k);
+    balance = std::max(balance, s.balance_error);
+    iterations += s.cg_iterations;
+    afresh += s.factorised;
+    ++count;
+    if (reuse && s.factorised) {  // the pass that factored anew: the kept factor is back to k0
+      state.PauseTiming();
+      heads = solver.solve(layer_permeability(0.0, 0)).head;
+      state.ResumeTiming();
+    }
+  }
+  set_mesh_counters(state, layer_mesh());
+  state.counters["cg_iterations"] = iterations / count;
+  state.counters["factored_afresh"] = afresh / count;
+  state.counters["balance"] = balance;
+}
+
+BENCHMARK(BM_LatePassFlow)->Args({10, 0})->Args({10, 1})->Args({100, 1})->Unit(benchmark::kSecond)->Iterations(4);
 
 void register_own_meshes() {
   // Far-field sizes (µm) giving about 1e4, 1e5 and 1e6 triangles.

@@ -120,9 +120,11 @@ PassReport StaggeredLoop::run_pass() {
   check_finite(permeability_, "the permeability", iteration_);
   report.porosity_seconds = seconds_since(start);
 
-  // Flow, with the heads under-relaxed against the last pass.
+  // Flow, with the heads under-relaxed against the last pass. The permeability changes little
+  // from pass to pass: the factor of an earlier pass serves as CG's preconditioner from the
+  // last heads while it converges fast (hydro::DarcySolver::solve_reusing_factor).
   start = Clock::now();
-  hydro::FlowSolution fresh = darcy_.solve(permeability_);
+  hydro::FlowSolution fresh = darcy_.solve_reusing_factor(permeability_, solution_.head);
   check_finite(fresh.head, "the head", iteration_);
   // Judged on the fresh (unrelaxed) heads: the relaxed change is ω times this, so a small ω
   // would freeze the heads and fake convergence.

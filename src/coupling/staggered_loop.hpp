@@ -108,6 +108,8 @@ struct LoopState {
   // Aitken's state: the last head update h̃ − h_old and the ω it was applied with.
   std::vector<double> previous_update;
   double relaxation = 1.0;
+  // The permeability whose factor the flow solver keeps for the next pass (empty: none).
+  std::vector<double> kept_factor_permeability;
 };
 
 class StaggeredLoop {

@@ -6,8 +6,8 @@
 namespace hydrodda::coupling {
 
 LoopState StaggeredLoop::export_state() const {
-  return {completed_, solution_,        previous_heads_, heads_two_back_, previous_displacements_, growth_,
-          previous_update_, relaxation_};
+  return {completed_,       solution_,   previous_heads_, heads_two_back_, previous_displacements_, growth_,
+          previous_update_, relaxation_, darcy_.kept_factor_permeability()};
 }
 
 void StaggeredLoop::import_state(LoopState state) {
@@ -24,7 +24,12 @@ void StaggeredLoop::import_state(LoopState state) {
                                   (state.heads_two_back.empty() || state.heads_two_back.size() == nodes)
                             : state.flow.head.empty() && state.previous_heads.empty() &&
                                   state.previous_displacements.empty();
-  if (!fits) throw std::invalid_argument("coupling state: sizes do not fit the mesh and the blocks");
+  const std::size_t kept = state.kept_factor_permeability.size();
+  if (!fits || (kept != 0 && kept != static_cast<std::size_t>(mesh_.triangle_count())))
+    throw std::invalid_argument("coupling state: sizes do not fit the mesh and the blocks");
+  // The flow solver's kept factor, made again from its permeability: the next pass's solve
+  // then starts from the very factor it had.
+  darcy_.restore_kept_factor(state.kept_factor_permeability);
   iteration_ = completed_ = state.iterations;
   solution_ = std::move(state.flow);
   previous_heads_ = std::move(state.previous_heads);

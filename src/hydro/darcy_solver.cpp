@@ -162,6 +162,9 @@ void DarcySolver::setup_boundary_conditions() {
         "named boundary); the problem has no unique solution");
 
   check_every_part_is_fixed();
+  fixed_head_range_ = {INFINITY, -INFINITY};
+  for (double h : fixed_head_)
+    if (!std::isnan(h)) fixed_head_range_ = {std::min(fixed_head_range_[0], h), std::max(fixed_head_range_[1], h)};
   unknown_of_node_.assign(node_count, -1);
   free_nodes_.clear();
   for (int v = 0; v < node_count; ++v)
@@ -310,7 +313,7 @@ std::vector<double> DarcySolver::expand_heads(const Eigen::VectorXd& x) const {
 // |Σ_i r_i| over the nodal flows through the boundary, (Σ_fixed |reaction| + Σ|q_N L|) / 2.
 DarcySolver::Residual DarcySolver::compute_residual(const Eigen::VectorXd& x) const {
   const std::vector<long double> ah = compute_a_times_h(expand_heads(x));
-  Residual out{Eigen::VectorXd(unknown_count()), 0.0};
+  Residual out{Eigen::VectorXd(unknown_count()), 0.0, 0.0};
   long double sum = 0.0L, boundary = 0.0L;
   for (int u = 0; u < unknown_count(); ++u) {
     const int v = free_nodes_[u];
@@ -322,10 +325,11 @@ DarcySolver::Residual DarcySolver::compute_residual(const Eigen::VectorXd& x) co
     if (unknown_of_node_[v] < 0) boundary += std::abs(ah[v] + static_cast<long double>(neumann_outflow_[v]));
   for (double q : prescribed_flow_) boundary += std::abs(q);
   out.balance = boundary > 0.0L ? static_cast<double>(std::abs(sum) / (0.5L * boundary)) : 0.0;
+  out.boundary = static_cast<double>(0.5L * boundary);
   return out;
 }
 
-FlowSolution DarcySolver::solve(std::span<const double> permeability) {
+std::vector<Conductivity> DarcySolver::to_isotropic_conductivity(std::span<const double> permeability) const {
   if (permeability.size() != mesh_.triangles.size())
     throw std::runtime_error("flow: " + std::to_string(permeability.size()) +
                              " permeabilities for " + std::to_string(mesh_.triangles.size()) +
@@ -338,7 +342,13 @@ FlowSolution DarcySolver::solve(std::span<const double> permeability) {
     if (!(p > 0.0)) throw std::runtime_error("permeability of triangle " + std::to_string(t) + " is not positive");
     k[t] = {p * factor, 0.0, p * factor};
   }
-  return solve_with(k);
+  return k;
+}
+
+FlowSolution DarcySolver::solve(std::span<const double> permeability) {
+  FlowSolution out = solve_with(to_isotropic_conductivity(permeability));
+  kept_permeability_.assign(permeability.begin(), permeability.end());
+  return out;
 }
 
 FlowSolution DarcySolver::solve(std::span<const PermeabilityTensor> permeability) {
@@ -346,47 +356,201 @@ FlowSolution DarcySolver::solve(std::span<const PermeabilityTensor> permeability
     throw std::runtime_error("flow: " + std::to_string(permeability.size()) +
                              " permeabilities for " + std::to_string(mesh_.triangles.size()) +
                              " triangles");
+  kept_permeability_.clear();  // its factor is not of an isotropic permeability
   return solve_with(to_conductivity(permeability, problem_.fluid.conductivity_per_permeability()));
 }
 
+void DarcySolver::factorize_system(SolveTimings& timings) {
+  const auto clock = Clock::now();
+  try {
+    solver_->factorize(matrix_);
+  } catch (const SingularSystem& e) {
+    throw SingularSystem(std::string(e.what()) +
+                         " (flow: is every part of the mesh connected to a fixed-head boundary?)");
+  }
+  timings.factorize = seconds_since(clock);
+}
+
+Eigen::VectorXd DarcySolver::solve_directly(int& refinement_steps) const {
+  Eigen::VectorXd x = solver_->solve(rhs_);
+  double last_residual = INFINITY;
+  // Iterative refinement with the residual in extended precision, x += A⁻¹(f − A x): the
+  // contrast of fracture-like strips (1e5–1e6) makes the plain solve lose as many digits,
+  // and the mass balance needs them back. One back-substitution and one product a step,
+  // until the balance is 1e4 times inside its 1e-10 bound or the residual stops shrinking.
+  for (int step = 0; step < kMaxRefinementSteps; ++step) {
+    const Residual residual = compute_residual(x);
+    const double r_norm = residual.r.lpNorm<Eigen::Infinity>();
+    if (r_norm == 0.0 || residual.balance <= kTargetBalance || (step > 0 && r_norm >= 0.5 * last_residual))
+      break;
+    last_residual = r_norm;
+    x += solver_->solve(residual.r);
+    ++refinement_steps;
+  }
+  if (!x.allFinite()) throw SingularSystem("flow: the solution is not finite (singular system?)");
+  return x;
+}
+
 FlowSolution DarcySolver::solve_with(std::span<const Conductivity> conductivity) {
-  FlowSolution out;
+  SolveTimings timings;
   auto clock = Clock::now();
   assemble_system(conductivity);
-  out.timings.assemble = seconds_since(clock);
+  timings.assemble = seconds_since(clock);
 
   Eigen::VectorXd x(unknown_count());
+  int refinement_steps = 0;
   if (unknown_count() > 0) {
+    factorize_system(timings);
     clock = Clock::now();
-    try {
-      solver_->factorize(matrix_);
-    } catch (const SingularSystem& e) {
-      throw SingularSystem(std::string(e.what()) +
-                           " (flow: is every part of the mesh connected to a fixed-head boundary?)");
-    }
-    out.timings.factorize = seconds_since(clock);
-    clock = Clock::now();
-    x = solver_->solve(rhs_);
-    double last_residual = INFINITY;
-    // Iterative refinement with the residual in extended precision, x += A⁻¹(f − A x): the
-    // contrast of fracture-like strips (1e5–1e6) makes the plain solve lose as many digits,
-    // and the mass balance needs them back. One back-substitution and one product a step,
-    // until the balance is 1e4 times inside its 1e-10 bound or the residual stops shrinking.
-    for (int step = 0; step < kMaxRefinementSteps; ++step) {
-      const Residual residual = compute_residual(x);
-      const double r_norm = residual.r.lpNorm<Eigen::Infinity>();
-      if (r_norm == 0.0 || residual.balance <= kTargetBalance ||
-          (step > 0 && r_norm >= 0.5 * last_residual))
-        break;
-      last_residual = r_norm;
-      x += solver_->solve(residual.r);
-      ++out.refinement_steps;
-    }
-    out.timings.solve = seconds_since(clock);
-    if (!x.allFinite()) throw SingularSystem("flow: the solution is not finite (singular system?)");
+    x = solve_directly(refinement_steps);
+    timings.solve = seconds_since(clock);
   }
-
   clock = Clock::now();
+  FlowSolution out = make_solution(x, conductivity);
+  timings.postprocess = seconds_since(clock);
+  out.timings = timings;
+  out.refinement_steps = refinement_steps;
+  return out;
+}
+
+FlowSolution DarcySolver::solve_reusing_factor(std::span<const double> permeability,
+                                               std::span<const double> start_heads) {
+  if (!start_heads.empty() && start_heads.size() != mesh_.nodes.size())
+    throw std::invalid_argument("flow: the starting heads must be one per node");
+  const std::vector<Conductivity> conductivity = to_isotropic_conductivity(permeability);
+  if (unknown_count() == 0 || bound_iterations(permeability) > kHopelessIterations) return solve(permeability);
+
+  SolveTimings timings;
+  auto clock = Clock::now();
+  assemble_system(conductivity);
+  timings.assemble = seconds_since(clock);
+  clock = Clock::now();
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(unknown_count());
+  if (!start_heads.empty())
+    for (int u = 0; u < unknown_count(); ++u) x[u] = start_heads[free_nodes_[u]];
+  // CG until its estimates of the head error and of the mass balance are inside their
+  // tolerances, then the balance as reported; once more from the true residual if that is
+  // not there yet (the recurrence's residual drifts from the true one by round-off), within
+  // the one budget of iterations.
+  int taken = 0;
+  FlowSolution out;
+  for (int round = 0; round < 2; ++round) {
+    if (!solve_by_conjugate_gradients(x, kMaxIterations - taken, taken)) break;
+    timings.solve = seconds_since(clock);
+    clock = Clock::now();
+    out = make_solution(x, conductivity);
+    timings.postprocess += seconds_since(clock);
+    clock = Clock::now();
+    if (out.balance_error <= kBalanceTolerance) {
+      out.timings = timings;
+      out.factorised = false;
+      out.cg_iterations = taken;
+      // Drifted far enough that CG costs more than it saves: a fresh factor next time.
+      if (taken > kRefactorAfter) kept_permeability_.clear();
+      return out;
+    }
+  }
+  // CG did not get there: factor afresh and solve exactly, as solve() does.
+  out = solve(permeability);
+  out.timings.assemble += timings.assemble;
+  out.cg_iterations = taken;
+  return out;
+}
+
+// The kept factor is M = Σ_e k⁰_e K_e (K_e the element matrix at unit permeability), the new
+// matrix A = Σ_e ρ_e k⁰_e K_e with ρ_e = k_e / k⁰_e. Elements with ρ_e in [1/c, c] keep the
+// eigenvalues of M⁻¹A in [1/c, c] (Rayleigh quotients of sums of semidefinite terms); each
+// element outside moves at most two eigenvalues out (its K_e has rank two). CG then needs
+// at most 2 · #outside + log(ε/2) / log((c − 1)/(c + 1)) iterations to cut the error by ε
+// (Saad, Iterative Methods, §6.11.3, with the outlying eigenvalues removed first; Axelsson
+// and Lindskog, Numer. Math. 48, 1986). The least over a ladder of c, with ε = kHeadTolerance.
+int DarcySolver::bound_iterations(std::span<const double> permeability) const {
+  constexpr std::array<double, 8> kSpreads{1.001, 1.003, 1.01, 1.03, 1.1, 1.3, 2.0, 10.0};
+  constexpr int kNone = std::numeric_limits<int>::max();
+  if (kept_permeability_.size() != permeability.size()) return kNone;
+  std::array<long, kSpreads.size()> outside{};
+  for (std::size_t e = 0; e < permeability.size(); ++e) {
+    const double rho = permeability[e] / kept_permeability_[e];
+    const double spread = rho >= 1.0 ? rho : 1.0 / rho;
+    for (std::size_t i = 0; i < kSpreads.size() && spread > kSpreads[i]; ++i) ++outside[i];
+  }
+  long best = kNone;
+  for (std::size_t i = 0; i < kSpreads.size(); ++i) {
+    const double c = kSpreads[i];
+    const double chebyshev = std::ceil(std::log(0.5 * kHeadTolerance) / std::log((c - 1.0) / (c + 1.0)));
+    best = std::min(best, 2 * outside[i] + static_cast<long>(chebyshev));
+  }
+  return static_cast<int>(std::min<long>(best, kNone));
+}
+
+void DarcySolver::restore_kept_factor(std::span<const double> permeability) {
+  if (permeability.empty()) {
+    kept_permeability_.clear();
+    return;
+  }
+  assemble_system(to_isotropic_conductivity(permeability));
+  SolveTimings timings;
+  if (unknown_count() > 0) factorize_system(timings);
+  kept_permeability_.assign(permeability.begin(), permeability.end());
+}
+
+// Pseudocode (Saad, alg. 9.1), M the kept factor: r = f − A x; z = M⁻¹ r; p = z;
+// repeat: α = rᵀz / pᵀAp; x += α p; r −= α A p; z = M⁻¹ r; stop when converged;
+// β = r'ᵀz' / rᵀz; p = z + β p.
+// Converged: |z|∞ ≤ kHeadTolerance · range(h), z = M⁻¹ r being the error A⁻¹ r as far as M
+// is A; and |Σ r| ≤ kBalanceTolerance / 10 of the boundary flow at the start, Σ r being what
+// the boundary flows fail to balance by (compute_boundary_flows). Gives up past `budget`
+// iterations, as soon as the rate so far says the budget will not do, or when CG breaks down.
+bool DarcySolver::solve_by_conjugate_gradients(Eigen::VectorXd& x, int budget, int& iterations) const {
+  const auto multiply = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd {
+    return matrix_.selfadjointView<Eigen::Lower>() * v;
+  };
+  // The heads' range, fixed ones included: the scale of the head error that counts.
+  const auto head_tolerance = [&] {
+    const double lo = std::min(x.minCoeff(), fixed_head_range_[0]), hi = std::max(x.maxCoeff(), fixed_head_range_[1]);
+    const double scale = hi > lo ? hi - lo : std::max({std::abs(lo), std::abs(hi), 1e-300});
+    return kHeadTolerance * scale;
+  };
+  // The starting residual in extended precision, as the refinement takes it.
+  const Residual start = compute_residual(x);
+  const double balance_tolerance = 0.1 * kBalanceTolerance * start.boundary;
+  Eigen::VectorXd r = start.r;
+  Eigen::VectorXd z = solver_->solve(r);
+  const auto converged = [&](double error) {
+    return error <= head_tolerance() && std::abs(r.sum()) <= balance_tolerance;
+  };
+  double error = z.lpNorm<Eigen::Infinity>();
+  const double first_error = error;
+  if (converged(error)) return true;
+  Eigen::VectorXd p = z;
+  double rz = r.dot(z);
+  for (int it = 1; it <= budget; ++it) {
+    ++iterations;
+    const Eigen::VectorXd q = multiply(p);
+    const double curvature = p.dot(q);
+    if (!(curvature > 0.0) || !(rz > 0.0)) return false;
+    const double alpha = rz / curvature;
+    x += alpha * p;
+    r -= alpha * q;
+    z = solver_->solve(r);
+    error = z.lpNorm<Eigen::Infinity>();
+    if (converged(error)) return true;
+    // At the mean rate so far CG would need more than the budget: give up now rather than
+    // at its end (a fracture that opened or closed changed the matrix too much for the old
+    // factor). Not before four iterations: CG often starts slowly, then speeds up.
+    if (it >= 4) {
+      const double rate = std::pow(error / first_error, 1.0 / it);
+      if (!(rate < 1.0) || it + std::log(head_tolerance() / error) / std::log(rate) > budget) return false;
+    }
+    const double rz_new = r.dot(z);
+    p = z + (rz_new / rz) * p;
+    rz = rz_new;
+  }
+  return false;
+}
+
+FlowSolution DarcySolver::make_solution(const Eigen::VectorXd& x, std::span<const Conductivity> conductivity) const {
+  FlowSolution out;
   const int node_count = mesh_.node_count();
   out.reference_head = reference_head_;
   out.head.resize(node_count);
@@ -408,7 +572,6 @@ FlowSolution DarcySolver::solve_with(std::span<const Conductivity> conductivity)
     out.flux[t] = {-(k.xx * grad.x + k.xy * grad.y), -(k.xy * grad.x + k.yy * grad.y)};
   }
   compute_boundary_flows(out);
-  out.timings.postprocess = seconds_since(clock);
   return out;
 }
 

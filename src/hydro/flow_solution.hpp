@@ -30,6 +30,8 @@ struct FlowSolution {
   // |Σ boundary flows| / max(total inflow, total outflow); 0 when nothing flows.
   double balance_error = 0.0;
   int refinement_steps = 0;               // iterative-refinement steps the solve took
+  bool factorised = true;                 // factored afresh (false: CG on a kept factor)
+  int cg_iterations = 0;                  // CG iterations on the kept factor
   SolveTimings timings;
 
   // Outward flow through a named boundary; throws when the name is unknown.

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 
@@ -53,6 +54,10 @@ RunCheckpoint make_checkpoint() {
   c.coupling.flow.refinement_steps = 1;
   c.coupling.previous_heads = c.coupling.flow.head;
   c.coupling.previous_displacements = {{1e-3, 0.0}, {0.0, -2e-3}};
+  c.coupling.heads_two_back = {19.0, 3.0, 0.0};
+  c.coupling.previous_update = {0.5, -0.25, 0.0};
+  c.coupling.relaxation = 0.7;
+  c.coupling.kept_factor_permeability = {1e-15, 3.7e-9};
   return c;
 }
 
@@ -99,6 +104,7 @@ TEST(Checkpoint, DecodesToTheSameValuesBitForBit) {
   EXPECT_EQ(d.coupling.flow.balance_error, 1e-15);
   EXPECT_EQ(d.coupling.flow.refinement_steps, 1);
   EXPECT_EQ(d.coupling.previous_displacements[1].y, -2e-3);
+  EXPECT_EQ(d.coupling.kept_factor_permeability, c.coupling.kept_factor_permeability);
 }
 
 TEST(Checkpoint, ACutOrDamagedFileIsRefused) {

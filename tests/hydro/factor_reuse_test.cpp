@@ -1,0 +1,172 @@
+// DarcySolver::solve_reusing_factor: conjugate gradients preconditioned by the factor of an
+// earlier matrix, against the exact solve of the same matrix (solve(), a fresh factor and
+// refinement). Both solve the same linear system, so their heads differ by the solvers'
+// errors alone: the CG stopping rule bounds the head error by kHeadTolerance (1e-13) of the
+// heads' range as far as the kept factor is the matrix, and the tests allow 1e-11 of the
+// range (1 m here). Mass balance: at most kBalanceTolerance (1e-12) whenever CG's answer is
+// kept, by construction, and never above the 1e-10 that every solve must meet.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "hydro/darcy_solver.hpp"
+#include "mesh/mesh_request.hpp"
+
+namespace hydrodda::hydro {
+namespace {
+
+constexpr double kHeadAgreement = 1e-11;  // of the heads' range, 1 m
+constexpr double kBalance = 1e-10;        // the bound every solve meets
+
+// A fractured layer: the unit square, h = 1 at the bottom and 0 at the top, crossed by three
+// horizontal and two vertical strips 4 mm wide ("fractures", k_f) in a matrix of 1e-14 m²:
+// the flow crosses fractures and runs along them, so the heads depend on every strip.
+struct Layer {
+  mesh::TriangleMesh mesh;
+  std::vector<int> fracture;  // per triangle: the strip it lies in (0–4), −1 in the matrix
+};
+
+const Layer& layer() {
+  static const Layer l = [] {
+    constexpr double w = 0.004;
+    mesh::MeshRequest request;
+    request.domain = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    request.size = 0.03;
+    request.fracture_size = 0.004;
+    request.refine_distance = 0.06;
+    for (double y : {0.25, 0.5, 0.75}) request.refinement_lines.push_back({{0, y}, {1, y}});
+    for (double x : {0.3, 0.7}) request.refinement_lines.push_back({{x, 0}, {x, 1}});
+    Layer out;
+    out.mesh = mesh::generate_mesh(request);
+    out.fracture.assign(out.mesh.triangles.size(), -1);
+    for (int t = 0; t < out.mesh.triangle_count(); ++t) {
+      const geometry::Point c = mesh::triangle_centroid(out.mesh, t);
+      for (int s = 0; s < 3; ++s)
+        if (std::abs(c.y - 0.25 * (s + 1)) < w) out.fracture[t] = s;
+      for (int s = 0; s < 2; ++s)
+        if (std::abs(c.x - (s == 0 ? 0.3 : 0.7)) < w) out.fracture[t] = 3 + s;
+    }
+    return out;
+  }();
+  return l;
+}
+
+DarcyProblem bottom_to_top() {
+  DarcyProblem p;
+  p.boundaries = {{"bottom", BoundaryKind::head, 1.0}, {"top", BoundaryKind::head, 0.0}};
+  return p;
+}
+
+// Fracture permeability per strip; every element of a strip varies around it by ±`spread`
+// (a fixed pattern scaled by `phase`), as apertures do from pass to pass.
+std::vector<double> permeability(const std::vector<double>& strip_k, double spread, double phase) {
+  const Layer& l = layer();
+  std::vector<double> k(l.mesh.triangles.size(), 1e-14);
+  for (std::size_t t = 0; t < k.size(); ++t)
+    if (l.fracture[t] >= 0) k[t] = strip_k[l.fracture[t]] * (1.0 + spread * std::sin(0.37 * t + phase));
+  return k;
+}
+
+double largest_head_difference(const FlowSolution& a, const FlowSolution& b) {
+  double d = 0.0;
+  for (std::size_t v = 0; v < a.head.size(); ++v) d = std::max(d, std::abs(a.head[v] - b.head[v]));
+  return d;
+}
+
+void expect_same_solution(const FlowSolution& reused, const FlowSolution& exact) {
+  EXPECT_LE(largest_head_difference(reused, exact), kHeadAgreement);
+  EXPECT_LE(reused.balance_error, kBalance);
+  if (!reused.factorised) {
+    EXPECT_LE(reused.balance_error, DarcySolver::kBalanceTolerance);
+  }
+  const double inflow = exact.boundary_flow("bottom");
+  EXPECT_NEAR(reused.boundary_flow("bottom"), inflow, 1e-9 * std::abs(inflow));
+}
+
+TEST(FactorReuse, TheFirstSolveFactorsAndIsTheExactOne) {
+  const Layer& l = layer();
+  DarcySolver reusing(l.mesh, bottom_to_top()), exact(l.mesh, bottom_to_top());
+  const auto k = permeability({1e-9, 2e-9, 1e-9, 3e-9, 1e-9}, 0.0, 0.0);
+  EXPECT_TRUE(reusing.kept_factor_permeability().empty());
+  const FlowSolution a = reusing.solve_reusing_factor(k, {});
+  const FlowSolution b = exact.solve(k);
+  EXPECT_TRUE(a.factorised);
+  EXPECT_EQ(a.cg_iterations, 0);
+  EXPECT_EQ(a.head, b.head);  // the same code path, bit for bit
+  EXPECT_EQ(reusing.kept_factor_permeability(), k);
+}
+
+TEST(FactorReuse, SmallChangesSolveOnTheKeptFactorToTheExactHeads) {
+  // Ten passes whose fracture permeabilities wander by up to ±2% about their strip's value
+  // (up to 4% from one pass to another): every pass after the first runs CG on a kept factor,
+  // which drifts from the matrix pass by pass until a solve takes more than kRefactorAfter
+  // iterations; the pass after that one factors afresh.
+  const Layer& l = layer();
+  DarcySolver reusing(l.mesh, bottom_to_top()), exact(l.mesh, bottom_to_top());
+  const std::vector<double> strips{1e-9, 2e-9, 1e-9, 3e-9, 1e-9};
+  FlowSolution last;
+  int on_kept_factor = 0;
+  bool refactor_due = true;  // no factor yet
+  for (int pass = 0; pass < 10; ++pass) {
+    const auto k = permeability(strips, 0.02, 0.3 * pass);
+    const FlowSolution a = reusing.solve_reusing_factor(k, last.head);
+    expect_same_solution(a, exact.solve(k));
+    EXPECT_EQ(a.factorised, refactor_due) << "pass " << pass;
+    if (!a.factorised) {
+      ++on_kept_factor;
+      EXPECT_LE(a.cg_iterations, DarcySolver::kMaxIterations) << "pass " << pass;
+    }
+    refactor_due = a.factorised ? false : a.cg_iterations > DarcySolver::kRefactorAfter;
+    EXPECT_EQ(reusing.kept_factor_permeability().empty(), refactor_due) << "pass " << pass;
+    last = a;
+  }
+  EXPECT_GE(on_kept_factor, 7);
+}
+
+TEST(FactorReuse, AFractureThatOpensIsSolvedWithinTheBoundOrFactoredAfresh) {
+  // Contrast 1e5: one strip closed to the matrix's permeability (1e-14 m²), then opened to
+  // 1e-9 m², then another closed, and so on; the old factor misses each change by 1e5. CG
+  // either gets there within kMaxIterations or the matrix is factored afresh; the heads are
+  // the exact ones either way.
+  const Layer& l = layer();
+  DarcySolver reusing(l.mesh, bottom_to_top()), exact(l.mesh, bottom_to_top());
+  std::vector<double> strips{1e-9, 1e-14, 1e-9, 1e-9, 1e-9};
+  FlowSolution last;
+  int factorised = 0;
+  for (int pass = 0; pass < 8; ++pass) {
+    if (pass > 0) std::swap(strips[pass % 5], strips[(pass + 1) % 5]);
+    const auto k = permeability(strips, 0.01, pass);
+    const FlowSolution a = reusing.solve_reusing_factor(k, last.head);
+    expect_same_solution(a, exact.solve(k));
+    EXPECT_LE(a.cg_iterations, DarcySolver::kMaxIterations);
+    factorised += a.factorised;
+    last = a;
+  }
+  EXPECT_GE(factorised, 2);  // the first solve, and at least one jump the old factor could not follow
+}
+
+TEST(FactorReuse, ARestoredFactorGivesTheSameSolutionBitForBit) {
+  // What a resumed run does: a new solver restores the factor the old one kept, and the next
+  // solve from the same heads gives the same heads, bit for bit.
+  const Layer& l = layer();
+  const std::vector<double> strips{1e-9, 2e-9, 1e-9, 3e-9, 1e-9};
+  const auto k0 = permeability(strips, 0.02, 0.0), k1 = permeability(strips, 0.02, 1.0);
+  DarcySolver running(l.mesh, bottom_to_top());
+  const FlowSolution first = running.solve_reusing_factor(k0, {});
+  DarcySolver resumed(l.mesh, bottom_to_top());
+  resumed.restore_kept_factor(running.kept_factor_permeability());
+  const FlowSolution a = running.solve_reusing_factor(k1, first.head);
+  const FlowSolution b = resumed.solve_reusing_factor(k1, first.head);
+  EXPECT_FALSE(a.factorised);
+  EXPECT_EQ(a.cg_iterations, b.cg_iterations);
+  ASSERT_EQ(a.head.size(), b.head.size());
+  EXPECT_EQ(std::memcmp(a.head.data(), b.head.data(), a.head.size() * sizeof(double)), 0);
+  EXPECT_EQ(running.kept_factor_permeability(), resumed.kept_factor_permeability());
+}
+
+}  // namespace
+}  // namespace hydrodda::hydro
