@@ -2,6 +2,7 @@
 // The kinds of run, as run() dispatches them: each builds its model from the scenario, runs it,
 // and writes the run folder as it goes. They return the summary; run() writes it.
 
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -23,6 +24,8 @@ struct RunContext {
   const output::RunCheckpoint* resume = nullptr;
   // Coupled runs: stop after this coupling iteration, or run to the end.
   std::optional<int> stop_after;
+  // A folder of meshes shared with other runs (a sweep's), or none: mesh anew.
+  std::optional<std::filesystem::path> mesh_cache;
 
   void report(const ProgressReport& report) const {
     if (callbacks.progress) callbacks.progress(report);

@@ -17,6 +17,12 @@ struct CaseResult {
   std::vector<std::optional<std::string>> columns;  // the chosen summary.json values
 };
 
+// A finished case's result from its folder: "ok" when its run exited with 0 and summary.json
+// says so, with the chosen columns (dotted paths into summary.json); else "failed" with what
+// the summary or the end of run.log says. Warns of a column an ok case lacks.
+CaseResult read_case_result(const std::string& name, const std::filesystem::path& case_dir, int exit_code,
+                            const std::vector<std::string>& columns);
+
 class SweepResults {
  public:
   // `columns` are dotted paths into each case's summary.json; `zipped`: the keys moved
@@ -25,9 +31,9 @@ class SweepResults {
                std::vector<std::string> columns, bool zipped = false);
 
   void set_name(std::size_t index, std::string name);
-  // Reads the case's summary.json; a case is "ok" when its run exited with 0 and says so.
-  const CaseResult& record_run(std::size_t index, const std::filesystem::path& case_dir, int exit_code);
   void record_not_run(std::size_t index);
+  // A case's result, as read_case_result gives it (on this rank, or on another under MPI).
+  void set_result(std::size_t index, CaseResult result);
 
   // case, each swept key, status, converged, iterations, the chosen columns, message; one row per
   // case with a result, in case order.
