@@ -43,3 +43,10 @@ endif()
 if(HYDRODDA_BUILD_BENCHMARKS)
   find_package(benchmark REQUIRED)
 endif()
+
+# Open MPI (libopenmpi-dev), optional: sweeps spread over the ranks of `mpirun hydrodda sweep`
+# (src/cli/mpi/). Without it the program is built without MPI and says so in --version.
+option(HYDRODDA_MPI "Build MPI sweeps when MPI is found" ON)
+if(HYDRODDA_MPI)
+  find_package(MPI COMPONENTS C)
+endif()

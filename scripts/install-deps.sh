@@ -27,6 +27,9 @@ build_packages=(
   python3-pytest           # its tests (tests/python/)
   python3-matplotlib       # its examples (examples/python/), with the Agg backend
   clang libclang-rt-14-dev # libFuzzer for the scenario reader
+  # Open MPI: `mpirun hydrodda sweep` spreads a sweep's cases over ranks on one host or many
+  # (optional in CMake; the MPI sweep test needs mpirun from openmpi-bin)
+  libopenmpi-dev openmpi-bin
 )
 
 missing=()

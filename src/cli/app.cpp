@@ -1,6 +1,8 @@
 #include "cli/app.hpp"
 
 #include <CLI/CLI.hpp>
+
+#include <optional>
 #include <spdlog/pattern_formatter.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
@@ -8,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/progress.hpp"
+#include "cli/sweep_ranks.hpp"
 #include "cli/version.hpp"
 
 namespace hydrodda::cli {
@@ -78,7 +81,7 @@ const CLI::Validator kWholeNumberFromOne(
 
 int run_app(int argc, char** argv) {
   CLI::App app{"hydrodda: fluid flow through deforming, fractured, blocky rock (HYDRO-DDA)"};
-  app.set_version_flag("--version", std::string("hydrodda ") + kVersion);
+  app.set_version_flag("--version", std::string("hydrodda ") + kVersion + ", sweeps " + SweepRanks::build_description());
   app.require_subcommand(1);
   bool quiet = false;
   bool verbose = false;
@@ -101,7 +104,12 @@ int run_app(int argc, char** argv) {
   run_cmd->add_option("--stop-after", stop_after,
                       "Coupled runs: stop after this coupling iteration, resumable with --resume")
       ->check(kWholeNumberFromOne);
-  resume_opt->excludes(scenario_opt)->excludes(output_opt)->excludes(overwrite_opt);
+  std::string mesh_cache;
+  CLI::Option* mesh_cache_opt = run_cmd->add_option(
+      "--mesh-cache", mesh_cache,
+      "A folder of meshes shared between runs: the mesh is read from it when a run with the same geometry and "
+      "mesh settings left it there, else stored there (a sweep's cases share one)");
+  resume_opt->excludes(scenario_opt)->excludes(output_opt)->excludes(overwrite_opt)->excludes(mesh_cache_opt);
 
   std::filesystem::path check_file;
   CLI::App* check_cmd = app.add_subcommand("check", "Validate a scenario without running it");
@@ -148,6 +156,7 @@ int run_app(int argc, char** argv) {
     }
   if (!output.empty()) run.output = output;
   if (!resume.empty()) run.resume = resume;
+  if (!mesh_cache.empty()) run.mesh_cache = mesh_cache;
   if (stop_after > 0) run.stop_after = stop_after;
   if (*run_cmd && run.scenario.empty() && !run.resume) {
     spdlog::error("run: give a SCENARIO file, or --resume DIR to continue a run");
@@ -161,7 +170,23 @@ int run_app(int argc, char** argv) {
   }
   if (*sweep_cmd) {
     if (!sweep_output.empty()) sweep.output = sweep_output;
-    return sweep_command(sweep);
+    std::optional<SweepRanks> ranks;
+    try {
+      ranks.emplace();
+    } catch (const std::runtime_error& e) {
+      spdlog::error("sweep: {}", e.what());
+      return kBadInput;
+    }
+    if (ranks->rank() != 0) return ranks->serve();
+    if (ranks->size() > 1 && sweep.jobs) {
+      spdlog::error("sweep: --jobs does not apply under mpirun, where each of the {} ranks runs one case at a time; "
+                    "set the number of ranks with mpirun -n", ranks->size());
+      ranks->finish(kBadInput);
+      return kBadInput;
+    }
+    const int code = sweep_command(sweep, *ranks);
+    ranks->finish(code);
+    return code;
   }
   return run_command(run);
 }

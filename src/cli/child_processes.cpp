@@ -23,9 +23,18 @@ namespace hydrodda::cli {
 
 namespace {
 
+// The launcher's variables stay with the sweep's rank: a case is a program of its own, not
+// another process of the MPI job.
+bool is_mpi_launch_variable(const char* entry) {
+  for (const char* prefix : {"OMPI_", "PMIX_", "PMI_"})
+    if (std::strncmp(entry, prefix, std::strlen(prefix)) == 0) return true;
+  return false;
+}
+
 std::vector<std::string> child_environment() {
   std::vector<std::string> env;
-  for (char** e = environ; *e; ++e) env.emplace_back(*e);
+  for (char** e = environ; *e; ++e)
+    if (!is_mpi_launch_variable(*e)) env.emplace_back(*e);
   if (!std::getenv("OMP_NUM_THREADS")) env.emplace_back("OMP_NUM_THREADS=1");
   return env;
 }
@@ -73,6 +82,17 @@ int exit_code_of(int status) {
 }
 
 }  // namespace
+
+int start_child_process(const ChildCommand& command) { return start_child(command, child_environment()); }
+
+std::optional<int> poll_child_process(int pid) {
+  int status = 0;
+  const pid_t ended = ::waitpid(pid, &status, WNOHANG);
+  if (ended == pid) return exit_code_of(status);
+  if (ended < 0 && errno != EINTR)
+    throw std::runtime_error(fmt::format("waiting for a case's process failed: {}", std::strerror(errno)));
+  return std::nullopt;
+}
 
 std::vector<std::size_t> run_child_processes(const std::vector<ChildCommand>& commands, int jobs,
                                              const std::function<void(std::size_t, int)>& on_finish) {

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,5 +23,12 @@ struct ChildCommand {
 // be started.
 std::vector<std::size_t> run_child_processes(const std::vector<ChildCommand>& commands, int jobs,
                                              const std::function<void(std::size_t, int)>& on_finish);
+
+// One child started as run_child_processes starts them (a sweep's rank under MPI runs its
+// cases one at a time with it); throws std::runtime_error if it cannot be started.
+int start_child_process(const ChildCommand& command);
+// The child's exit code (128 + the signal for one killed by a signal) once it has ended, or
+// nothing while it runs; throws std::runtime_error if it cannot be waited for.
+std::optional<int> poll_child_process(int pid);
 
 }  // namespace hydrodda::cli

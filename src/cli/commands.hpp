@@ -16,6 +16,7 @@ struct RunOptions {
   std::optional<std::filesystem::path> output;  // -o: overrides output.directory
   bool overwrite = false;
   std::optional<int> stop_after;  // --stop-after N: a coupled run stops after iteration N, resumable
+  std::optional<std::filesystem::path> mesh_cache;  // --mesh-cache DIR: meshes shared with other runs
   Verbosity verbosity = Verbosity::Normal;
 };
 
@@ -32,6 +33,8 @@ struct SweepOptions {
 
 int check_command(const std::filesystem::path& scenario);
 int run_command(const RunOptions& options);
-int sweep_command(const SweepOptions& options);
+class SweepRanks;
+// Under mpirun, rank 0's sweep (the other ranks serve it, cli/sweep_ranks.hpp).
+int sweep_command(const SweepOptions& options, SweepRanks& ranks);
 
 }  // namespace hydrodda::cli

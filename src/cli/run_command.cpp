@@ -83,7 +83,7 @@ int run_command(const RunOptions& options) {
       const std::optional<scenario::Scenario> scenario = load_scenario(options.scenario);
       if (!scenario) return kBadInput;
       const run::RunOptions run_options{options.output.value_or(scenario->output.directory), options.overwrite,
-                                        options.stop_after, std::nullopt};
+                                        options.stop_after, std::nullopt, options.mesh_cache};
       std::error_code ec;
       if (!std::filesystem::exists(run_options.folder, ec)) folder = run_options.folder;
       result = run::run(*scenario, run_options, callbacks);

@@ -1,6 +1,7 @@
 // `hydrodda sweep`: a scenario run once per combination of swept values, each case a child
-// `hydrodda run` of this same program in its own folder, several at a time; their results
-// gathered into sweep.csv and plotted in sweep.png.
+// `hydrodda run` of this same program in its own folder, several at a time (or one per MPI
+// rank under mpirun, cli/sweep_ranks.hpp); their results gathered into sweep.csv and plotted
+// in sweep.png.
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -13,6 +14,7 @@
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/scenario_loading.hpp"
+#include "cli/sweep_ranks.hpp"
 #include "output/run_folder.hpp"
 #include "run/run.hpp"
 #include "run/sweep_plan.hpp"
@@ -25,6 +27,9 @@ namespace hydrodda::cli {
 namespace fs = std::filesystem;
 
 namespace {
+
+// The cases' shared meshes (run --mesh-cache): cases of one geometry and mesh settings mesh once.
+constexpr const char* kMeshCache = "mesh-cache";
 
 struct PreparedCase {
   std::string name;  // case_000
@@ -101,7 +106,7 @@ std::optional<std::vector<PreparedCase>> prepare_cases(const fs::path& file, con
 
 }  // namespace
 
-int sweep_command(const SweepOptions& options) {
+int sweep_command(const SweepOptions& options, SweepRanks& ranks) {
   const auto base = load_scenario(options.scenario);
   if (!base) return kBadInput;
   std::vector<run::SweepAxis> axes;
@@ -129,6 +134,8 @@ int sweep_command(const SweepOptions& options) {
   std::optional<output::RunFolder> folder;
   try {
     folder.emplace(directory, options.overwrite ? output::ExistingFolder::Overwrite : output::ExistingFolder::Refuse);
+    // Meshes live as long as the sweep: none made by an earlier sweep (an older program) is read.
+    fs::remove_all(directory / kMeshCache);
     for (const PreparedCase& c : *prepared) {
       const output::RunFolder case_folder(directory / c.name, output::ExistingFolder::Overwrite);
       case_folder.write("scenario.toml", c.text);
@@ -144,12 +151,12 @@ int sweep_command(const SweepOptions& options) {
   for (const PreparedCase& c : *prepared) {
     const fs::path case_dir = directory / c.name;
     commands.push_back({{program.string(), "-q", "run", (case_dir / "scenario.toml").string(), "-o",
-                         case_dir.string(), "--overwrite"},
+                         case_dir.string(), "--overwrite", "--mesh-cache", (directory / kMeshCache).string()},
                         case_dir / "run.log"});
   }
-  const int jobs = options.jobs.value_or(std::max(1u, std::thread::hardware_concurrency()));
-  spdlog::info("sweep of {}: {} case(s), {} at a time, in {}", options.scenario.string(), cases.size(), jobs,
-               directory.string());
+  const int jobs = ranks.size() > 1 ? ranks.size() : options.jobs.value_or(std::max(1u, std::thread::hardware_concurrency()));
+  spdlog::info("sweep of {}: {} case(s), {} at a time{}, in {}", options.scenario.string(), cases.size(), jobs,
+               ranks.size() > 1 ? " (one per MPI rank)" : "", directory.string());
 
   run::SweepResults results(axes, cases, columns, options.zip);
   for (std::size_t i = 0; i < prepared->size(); ++i) results.set_name(i, (*prepared)[i].name);
@@ -157,18 +164,27 @@ int sweep_command(const SweepOptions& options) {
   std::size_t finished = 0;
   std::vector<std::size_t> never_started;
   try {
-    never_started = run_child_processes(commands, jobs, [&](std::size_t index, int exit_code) {
-      const fs::path case_dir = directory / (*prepared)[index].name;
-      const run::CaseResult& r = results.record_run(index, case_dir, exit_code);
+    const auto case_finished = [&](std::size_t index, const run::CaseResult& r, int rank) {
+      results.set_result(index, r);
       ++finished;
-      const std::string line = fmt::format("{} ({}): {}{}  [{}/{}]", (*prepared)[index].name,
+      const std::string line = fmt::format("{} ({}): {}{}  [{}/{}{}]", (*prepared)[index].name,
                                            describe_case(cases[index]), run::status_name(r.status),
-                                           r.message.empty() ? "" : ": " + r.message, finished, cases.size());
+                                           r.message.empty() ? "" : ": " + r.message, finished, cases.size(),
+                                           ranks.size() > 1 ? fmt::format(", rank {}", rank) : "");
       if (r.status == run::CaseStatus::ok) spdlog::info("{}", line);
       else if (r.status == run::CaseStatus::failed) spdlog::error("{}", line);
       else spdlog::warn("{}", line);
       folder->write("sweep.csv", results.csv_text());
-    });
+    };
+    SweepPlan plan{commands, {}, columns};
+    for (const PreparedCase& c : *prepared) plan.folders.push_back(directory / c.name);
+    if (ranks.size() > 1) {
+      never_started = ranks.run_cases(plan, case_finished);
+    } else {
+      never_started = run_child_processes(commands, jobs, [&](std::size_t index, int exit_code) {
+        case_finished(index, run::read_case_result((*prepared)[index].name, plan.folders[index], exit_code, columns), 0);
+      });
+    }
   } catch (const std::exception& e) {
     print_error(e.what());
     folder->write("sweep.csv", results.csv_text());

@@ -15,10 +15,11 @@ namespace {
 using Clock = std::chrono::steady_clock;
 }  // namespace
 
-CoupledModel::CoupledModel(const scenario::Scenario& scenario) : scenario_(scenario) {
+CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::optional<std::filesystem::path>& mesh_cache)
+    : scenario_(scenario) {
   const scenario::Scenario& s = scenario_;
   const auto start = Clock::now();
-  mesh_ = build_mesh(s);
+  mesh_ = build_mesh(s, mesh_cache);
   mesh_seconds_ = std::chrono::duration<double>(Clock::now() - start).count();
   spdlog::info("mesh: {} nodes, {} triangles", mesh_.node_count(), mesh_.triangle_count());
 

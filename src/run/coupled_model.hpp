@@ -3,6 +3,7 @@
 // owned together and advanced one coupling pass at a time. It writes no file; run() drives it
 // into a run folder (history, ParaView series, checkpoint after every pass).
 
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
@@ -29,7 +30,9 @@ class CoupledModel {
   // Meshes the domain (or reads mesh.file), builds the DDA system and the loop, and solves the
   // unfractured case once (the reference of the regions' normalised conductivity). Throws
   // scenario::ScenarioError for what only building shows.
-  explicit CoupledModel(const scenario::Scenario& scenario);
+  // `mesh_cache`: a folder of meshes shared with other runs (build_mesh).
+  explicit CoupledModel(const scenario::Scenario& scenario,
+                        const std::optional<std::filesystem::path>& mesh_cache = std::nullopt);
   // The loop keeps references to the mesh and the system: the model stays where it was built.
   CoupledModel(const CoupledModel&) = delete;
   CoupledModel& operator=(const CoupledModel&) = delete;

@@ -52,7 +52,7 @@ ProgressReport report_pass(const coupling::PassReport& r) {
 output::RunSummary run_coupled(const RunContext& context) {
   const scenario::Scenario& s = context.scenario;
   std::optional<UnstoppableStage> building(context.callbacks);
-  CoupledModel model(s);
+  CoupledModel model(s, context.mesh_cache);
   building.reset();
   model.set_stop_request(context.callbacks.stop_requested);
   const mesh::TriangleMesh& mesh = model.mesh();

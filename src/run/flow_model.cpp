@@ -61,9 +61,10 @@ std::vector<double> assign_permeability(const scenario::Scenario& s, const mesh:
 
 }  // namespace
 
-FlowModel::FlowModel(const scenario::Scenario& scenario) : scenario_(scenario) {
+FlowModel::FlowModel(const scenario::Scenario& scenario, const std::optional<std::filesystem::path>& mesh_cache)
+    : scenario_(scenario) {
   auto start = Clock::now();
-  mesh_ = build_mesh(scenario_);
+  mesh_ = build_mesh(scenario_, mesh_cache);
   timings_.push_back({"mesh", seconds_since(start)});
   spdlog::info("mesh: {} nodes, {} triangles", mesh_.node_count(), mesh_.triangle_count());
 

@@ -2,6 +2,8 @@
 // A flow-only model: the fixed mesh, the blocks' geometry and the permeability it gives, and
 // one steady Darcy solve. It writes no file; run() drives it into a run folder.
 
+#include <filesystem>
+#include <optional>
 #include <vector>
 
 #include "geometry/polygon.hpp"
@@ -17,7 +19,9 @@ class FlowModel {
   // Meshes the domain (or reads mesh.file), cuts the blocks and gives every element its
   // permeability: a flow region's fixed value, else the porosity law's from the space the blocks
   // leave open. Throws scenario::ScenarioError for a mesh.file that cannot be used.
-  explicit FlowModel(const scenario::Scenario& scenario);
+  // `mesh_cache`: a folder of meshes shared with other runs (build_mesh).
+  explicit FlowModel(const scenario::Scenario& scenario,
+                     const std::optional<std::filesystem::path>& mesh_cache = std::nullopt);
 
   // The heads under the scenario's boundary conditions.
   const hydro::FlowSolution& solve();

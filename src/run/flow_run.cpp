@@ -9,7 +9,7 @@ namespace hydrodda::run {
 
 output::RunSummary run_flow(const RunContext& context) {
   std::optional<UnstoppableStage> building(context.callbacks);  // nothing is written before the solve ends
-  FlowModel model(context.scenario);
+  FlowModel model(context.scenario, context.mesh_cache);
   const std::optional<FractureState> no_fractures;
   const TellModelAtEnd tell_model_at_end(context.callbacks, model, no_fractures);
   const hydro::FlowSolution& solution = model.solve();

@@ -10,7 +10,9 @@
 
 #include "dda/selection.hpp"
 #include "dda/support.hpp"
+#include "mesh/mesh_cache.hpp"
 #include "mesh/mesh_request.hpp"
+#include "run/mesh_budget.hpp"
 #include "run/model_geometry.hpp"
 #include "hydro/permeability_law.hpp"
 #include "scenario/diagnostics.hpp"
@@ -179,9 +181,8 @@ mesh::TriangleMesh read_mesh_file(const Scenario& s) {
   return mesh;
 }
 
-mesh::TriangleMesh build_mesh(const Scenario& s) {
+mesh::MeshRequest make_mesh_request(const Scenario& s) {
   const scenario::MeshDefinition& m = *s.mesh;
-  if (m.file) return read_mesh_file(s);
   mesh::MeshRequest request;
   request.domain = s.geometry->domain;
   for (const scenario::BoundarySegment& b : s.boundaries)
@@ -192,7 +193,17 @@ mesh::TriangleMesh build_mesh(const Scenario& s) {
   request.size = m.size;
   request.fracture_size = m.fracture_size;
   request.refine_distance = m.refine_distance;
-  return mesh::generate_mesh(request);
+  return request;
+}
+
+mesh::TriangleMesh build_mesh(const Scenario& s, const std::optional<std::filesystem::path>& mesh_cache) {
+  if (s.mesh->file) return read_mesh_file(s);
+  const mesh::MeshRequest request = make_mesh_request(s);
+  spdlog::info("mesh: {} expected", check_mesh_budget(s, request));
+  if (!mesh_cache) return mesh::generate_mesh(request);
+  mesh::CachedMesh cached = mesh::generate_or_reuse_mesh(request, *mesh_cache);
+  spdlog::info("mesh: {} {}", cached.reused ? "read from" : "made and stored in", cached.file.string());
+  return std::move(cached.mesh);
 }
 
 // Triangles whose centroid lies in the polygon: the mesh honours region boundaries, so this is

@@ -10,10 +10,13 @@
 #include "coupling/permeability_model.hpp"
 #include "dda/definitions.hpp"
 #include "hydro/darcy_solver.hpp"
+#include "mesh/mesh_request.hpp"
 #include "mesh/triangle_mesh.hpp"
 #include "run/model_geometry.hpp"
 
+#include <filesystem>
 #include <optional>
+
 #include "scenario/scenario.hpp"
 
 namespace hydrodda::run {
@@ -47,9 +50,15 @@ std::vector<double> find_biot_coefficients(const scenario::Scenario& scenario,
 // naming the mesh.file line, and a flow boundary the file does not name, one naming its line.
 mesh::TriangleMesh read_mesh_file(const scenario::Scenario& scenario);
 
+// What Gmsh is asked to mesh: the domain, its named boundaries, the fracture traces to refine
+// along, the flow regions and the [mesh] sizes (a scenario without mesh.file).
+mesh::MeshRequest make_mesh_request(const scenario::Scenario& scenario);
+
 // The fixed fluid mesh: generated with Gmsh (refined along the fractures, honouring the flow
-// regions) or read from mesh.file.
-mesh::TriangleMesh build_mesh(const scenario::Scenario& scenario);
+// regions) or read from mesh.file. With `mesh_cache`, a generated mesh is taken from that
+// folder when a run with the same request has left it there, else left there (mesh_cache.hpp).
+mesh::TriangleMesh build_mesh(const scenario::Scenario& scenario,
+                              const std::optional<std::filesystem::path>& mesh_cache = std::nullopt);
 
 // Triangles whose centroid lies in the polygon: the mesh honours region boundaries, so this is
 // exact, and overlapping regions each keep all of their triangles.

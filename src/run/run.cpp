@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "output/run_folder.hpp"
+#include "run/mesh_budget.hpp"
 #include "run/model_building.hpp"
 #include "run/runs.hpp"
 #include "scenario/diagnostics.hpp"
@@ -53,7 +54,8 @@ std::string describe_non_finite(const output::RunSummary& summary) {
 
 RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output::ExistingFolder policy,
                  const std::string& scenario_text, const output::RunCheckpoint* resume,
-                 std::optional<int> stop_after, const Callbacks& callbacks) {
+                 std::optional<int> stop_after, const Callbacks& callbacks,
+                 const std::optional<fs::path>& mesh_cache = std::nullopt) {
   if (stop_after && kind_of(s) != RunKind::coupled)
     throw InputError("--stop-after: only coupled runs ([mechanics] and [flow]) stop after an iteration");
   std::error_code ec;
@@ -64,7 +66,7 @@ RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output:
       throw RunFailure(RunStatus::failed, failure, summary);
     write_summary(folder, summary);
   };
-  const RunContext context{s, folder, callbacks, scenario_text, resume, stop_after, write_final_summary};
+  const RunContext context{s, folder, callbacks, scenario_text, resume, stop_after, write_final_summary, mesh_cache};
   try {
     const RunKind kind = kind_of(s);
     const output::RunSummary summary = kind == RunKind::coupled     ? run_coupled(context)
@@ -110,7 +112,7 @@ RunResult run(const scenario::Scenario& scenario, const RunOptions& options, con
   if (!text) throw InputError(fmt::format("cannot read {}", scenario.file.string()));
   return run_in(scenario, options.folder,
                 options.overwrite ? output::ExistingFolder::Overwrite : output::ExistingFolder::Refuse, *text,
-                nullptr, options.stop_after, callbacks);
+                nullptr, options.stop_after, callbacks, options.mesh_cache);
 }
 
 RunResult resume(const ResumedRun& resumed, std::optional<int> stop_after, const Callbacks& callbacks) {
@@ -127,6 +129,10 @@ std::string check_model(const scenario::Scenario& s) {
     if (s.mechanics) build_mechanics_model(s, blocks_of(model));
   } else if (s.mechanics) {
     build_mechanics_model(s, build_blocks(s));
+  }
+  if (s.flow && s.mesh && !s.mesh->file && s.geometry && !s.geometry->domain.empty()) {
+    const std::string triangles = check_mesh_budget(s, make_mesh_request(s));
+    geometry += (geometry.empty() ? "" : ", ") + std::string("mesh of ") + triangles;
   }
   if (s.mesh && s.mesh->file) {
     const mesh::TriangleMesh mesh = read_mesh_file(s);

@@ -97,6 +97,10 @@ struct RunOptions {
   // The scenario's text, which a coupled run saves as scenario.toml (for resume); unset: read
   // from scenario.file.
   std::optional<std::string> scenario_text{};
+  // A folder of meshes shared with other runs: a generated mesh is read from it when a run with
+  // the same geometry and mesh settings has left it there, else stored there (a sweep's cases
+  // share one, so that a sweep over heads or loads meshes once).
+  std::optional<std::filesystem::path> mesh_cache{};
 };
 
 // Input that is not the scenario file's: a run folder that cannot be resumed, an option the
@@ -123,8 +127,9 @@ RunResult resume(const ResumedRun& resumed, std::optional<int> stop_after, const
 std::optional<std::string> read_text_file(const std::filesystem::path& file);
 
 // What only building the model shows (a fixed point in no block, a boundary the mesh file does
-// not name), short of meshing and running: throws scenario::ScenarioError listing it. Returns
-// the traces and blocks the domain is cut into ("" without a domain).
+// not name, a mesh too large for this machine), short of meshing and running: throws
+// scenario::ScenarioError listing it. Returns the traces and blocks the domain is cut into and
+// the triangles the mesh is expected to have ("" without a domain).
 std::string check_model(const scenario::Scenario& scenario);
 
 }  // namespace hydrodda::run

@@ -3,6 +3,7 @@
 // and writes the run folder as it goes. They return the summary; run() writes it.
 
 #include <functional>
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -29,6 +30,8 @@ struct RunContext {
   // finite). Called before the figures are drawn, so that a run killed while drawing them
   // leaves a finished folder, not a converged checkpoint with no summary.
   std::function<void(const output::RunSummary&)> write_summary;
+  // A folder of meshes shared with other runs (a sweep's), or none: mesh anew.
+  std::optional<std::filesystem::path> mesh_cache;
 
   void report(const ProgressReport& report) const {
     if (callbacks.progress) callbacks.progress(report);

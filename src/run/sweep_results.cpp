@@ -125,6 +125,12 @@ std::string_view status_name(CaseStatus status) {
   return "pending";
 }
 
+CaseStatus status_from_name(std::string_view name) {
+  for (std::size_t i = 0; i < kCaseStatuses; ++i)
+    if (const auto status = static_cast<CaseStatus>(i); status_name(status) == name) return status;
+  throw std::invalid_argument("not a case status: " + std::string(name));
+}
+
 SweepResults::SweepResults(std::vector<SweepAxis> axes, std::vector<std::vector<scenario::Override>> cases,
                            std::vector<std::string> columns, bool zipped)
     : axes_(std::move(axes)),
@@ -135,16 +141,15 @@ SweepResults::SweepResults(std::vector<SweepAxis> axes, std::vector<std::vector<
 
 void SweepResults::set_name(std::size_t index, std::string name) { results_[index].name = std::move(name); }
 
-const CaseResult& SweepResults::record_run(std::size_t index, const std::filesystem::path& case_dir, int exit_code) {
-  CaseResult& r = results_[index];
-  const std::string name = r.name;
-  r = CaseResult();
+CaseResult read_case_result(const std::string& name, const std::filesystem::path& case_dir, int exit_code,
+                            const std::vector<std::string>& columns) {
+  CaseResult r;
   r.name = name;
   r.status = ended_by_interrupt(exit_code) ? CaseStatus::interrupted : CaseStatus::failed;
   const std::filesystem::path summary = case_dir / "summary.json";
   if (std::filesystem::exists(summary)) {
     std::vector<std::string> paths{"status", "message", "converged", "iterations"};
-    paths.insert(paths.end(), columns_.begin(), columns_.end());
+    paths.insert(paths.end(), columns.begin(), columns.end());
     try {
       const auto values = output::read_summary_values(summary, paths);
       r.message = values[1].value_or("");
@@ -162,16 +167,21 @@ const CaseResult& SweepResults::record_run(std::size_t index, const std::filesys
       r.message = e.what();
     }
   }
-  if (r.columns.empty()) r.columns.assign(columns_.size(), std::nullopt);
+  if (r.columns.empty()) r.columns.assign(columns.size(), std::nullopt);
   if (r.status != CaseStatus::ok && r.message.empty()) {
     const std::string error = find_last_error(case_dir / "run.log");
     r.message = fmt::format("exit code {}{}; see {}", exit_code, error.empty() ? "" : ": " + error,
                             (case_dir / "run.log").string());
   }
   if (r.status == CaseStatus::ok)
-    for (std::size_t c = 0; c < columns_.size(); ++c)
-      if (!r.columns[c]) spdlog::warn("{}: summary.json has no value at {}", r.name, columns_[c]);
+    for (std::size_t c = 0; c < columns.size(); ++c)
+      if (!r.columns[c]) spdlog::warn("{}: summary.json has no value at {}", r.name, columns[c]);
   return r;
+}
+
+void SweepResults::set_result(std::size_t index, CaseResult result) {
+  result.name = results_[index].name;
+  results_[index] = std::move(result);
 }
 
 void SweepResults::record_not_run(std::size_t index) {

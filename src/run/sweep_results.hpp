@@ -21,6 +21,8 @@ inline constexpr std::size_t kCaseStatuses = 6;
 
 // As sweep.csv writes it: "ok", "not converged", "failed", "interrupted", "not run".
 std::string_view status_name(CaseStatus status);
+// The status of that name; std::invalid_argument for any other text.
+CaseStatus status_from_name(std::string_view name);
 
 struct CaseResult {
   std::string name;  // case_000
@@ -43,6 +45,14 @@ std::string quantity_label(const std::string& path, const std::vector<std::strin
 // A swept value in words, for titles and legends: "head at base = 5 m".
 std::string value_label(const scenario::Override& value, const std::vector<std::string>& boundary_names = {});
 
+// A finished case's result from its folder: "ok" when its run exited with 0, its summary.json
+// says "ok" and it converged; "not converged" when it exited with 0 but did not converge;
+// "interrupted" when it says so or a signal ended it (exit code 130 or 143) before it wrote
+// one; otherwise "failed", with what the summary or the end of run.log says. Warns of a column
+// an ok case lacks.
+CaseResult read_case_result(const std::string& name, const std::filesystem::path& case_dir, int exit_code,
+                            const std::vector<std::string>& columns);
+
 class SweepResults {
  public:
   // `columns` are dotted paths into each case's summary.json; `zipped`: the keys moved
@@ -51,11 +61,9 @@ class SweepResults {
                std::vector<std::string> columns, bool zipped = false);
 
   void set_name(std::size_t index, std::string name);
-  // Reads the case's summary.json: "ok" when the run exited with 0, says "ok" and converged;
-  // "not converged" when it exited with 0 but did not converge; "interrupted" when it says
-  // so or a signal ended it (exit code 130 or 143) before it wrote one; otherwise "failed".
-  const CaseResult& record_run(std::size_t index, const std::filesystem::path& case_dir, int exit_code);
   void record_not_run(std::size_t index);
+  // A case's result, as read_case_result gives it (on this rank, or on another under MPI).
+  void set_result(std::size_t index, CaseResult result);
 
   // case, each swept key, status, converged, iterations, the chosen columns, message; one row per
   // case with a result, in case order.
