@@ -49,22 +49,28 @@ class SweepResultsTest : public ::testing::Test {
   void SetUp() override {
     std::vector<std::vector<hydrodda::scenario::Override>> cases;
     for (const std::string& v : axis.values) cases.push_back({{axis.key, v}});
-    results.emplace(std::vector<run::SweepAxis>{axis}, cases,
-                    std::vector<std::string>{"flow.regions.seal.normalised_conductivity"});
+    results.emplace(std::vector<run::SweepAxis>{axis}, cases, columns);
     for (std::size_t i = 0; i < cases.size(); ++i) results->set_name(i, "case_00" + std::to_string(i));
     const fs::path& root = folder.path;
-    results->record_run(0, write_case(root, "case_000", summary("ok", true, 4, 1.25)), 0);
+    record(0, write_case(root, "case_000", summary("ok", true, 4, 1.25)), 0);
     // Ran to max_iterations without meeting the tolerance: the program exits with 0.
-    results->record_run(1, write_case(root, "case_001", summary("ok", false, 1, 1.5)), 0);
-    results->record_run(2, write_case(root, "case_002", summary("ok", true, 5, 2.0)), 0);
-    results->record_run(
+    record(1, write_case(root, "case_001", summary("ok", false, 1, 1.5)), 0);
+    record(2, write_case(root, "case_002", summary("ok", true, 5, 2.0)), 0);
+    record(
         3, write_case(root, "case_003", summary("failed", false, 2, 1.75, "coupling iteration 3 failed: singular")), 1);
-    results->record_run(4,
+    record(4,
                         write_case(root, "case_004",
                                    summary("interrupted", false, 1, 1.1, "interrupted after coupling iteration 1")),
                         1);
     results->record_not_run(5);
   }
+  // A finished case read from its folder and recorded, as the sweep does; what was read.
+  run::CaseResult record(std::size_t index, const fs::path& case_dir, int exit_code) {
+    run::CaseResult r = run::read_case_result("case_00" + std::to_string(index), case_dir, exit_code, columns);
+    results->set_result(index, r);
+    return r;
+  }
+  const std::vector<std::string> columns{"flow.regions.seal.normalised_conductivity"};
   run::SweepAxis axis{"flow.boundary[0].head", {"5", "10", "15", "20", "25", "30"}};
   Folder folder;
   std::optional<run::SweepResults> results;
@@ -95,14 +101,14 @@ TEST_F(SweepResultsTest, EachCaseSaysHowItEnded) {
 // summary is a failure, whose message points at the log.
 TEST_F(SweepResultsTest, ACaseWithoutSummaryIsInterruptedOrFailed) {
   const fs::path killed = write_case(folder.path, "case_003", "");
-  EXPECT_EQ(results->record_run(3, killed, 128 + SIGTERM).status, run::CaseStatus::interrupted);
+  EXPECT_EQ(record(3, killed, 128 + SIGTERM).status, run::CaseStatus::interrupted);
   const fs::path crashed = write_case(folder.path, "case_004", "", "error: cannot mesh the domain\n");
-  const run::CaseResult& r = results->record_run(4, crashed, 128 + SIGSEGV);
+  const run::CaseResult r = record(4, crashed, 128 + SIGSEGV);
   EXPECT_EQ(r.status, run::CaseStatus::failed);
   EXPECT_NE(r.message.find("exit code 139: cannot mesh the domain"), std::string::npos) << r.message;
   // A summary that says "ok" from a run that exited with an error is not taken as a result.
   const fs::path odd = write_case(folder.path, "case_000", summary("ok", true, 4, 1.25));
-  EXPECT_EQ(results->record_run(0, odd, 1).status, run::CaseStatus::failed);
+  EXPECT_EQ(record(0, odd, 1).status, run::CaseStatus::failed);
 }
 
 // The converged cases make the line; the unconverged one is a hollow marker off it; the failed,
