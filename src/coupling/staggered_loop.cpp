@@ -33,15 +33,17 @@ void ChangeGrowth::add(double change, int iteration) {
   last = change;
 }
 
-double relative_change(const std::vector<double>& current, const std::vector<double>& previous) {
-  double diff = 0.0, norm = 0.0;
-  for (std::size_t i = 0; i < current.size(); ++i) {
-    const double d = current[i] - (i < previous.size() ? previous[i] : 0.0);
-    diff += d * d;
-    norm += current[i] * current[i];
+double displacement_change(const std::vector<Point>& current, const std::vector<Point>& previous,
+                           double reference_length) {
+  double moved = 0.0, largest = 0.0;
+  for (std::size_t b = 0; b < current.size(); ++b) {
+    const Point before = b < previous.size() ? previous[b] : Point{0.0, 0.0};
+    moved = std::max(moved, std::hypot(current[b].x - before.x, current[b].y - before.y));
+    largest = std::max(largest, std::hypot(current[b].x, current[b].y));
   }
-  if (norm == 0.0) return diff == 0.0 ? 0.0 : 1.0;
-  return std::sqrt(diff / norm);
+  if (moved == 0.0) return 0.0;
+  const double scale = std::max(largest, reference_length);
+  return scale > 0.0 ? moved / scale : 1.0;
 }
 
 double head_change(const std::vector<double>& current, const std::vector<double>& previous) {
@@ -173,15 +175,15 @@ PassReport StaggeredLoop::run_pass() {
 
   // Convergence norms.
   const std::vector<Point> u = block_displacements();
-  std::vector<double> u_flat, u_previous;
-  for (Point p : u) u_flat.insert(u_flat.end(), {p.x, p.y});
-  for (std::size_t i = 0; i < u_flat.size(); ++i)
-    if (!std::isfinite(u_flat[i]))
-      throw std::runtime_error("the displacement of block " + std::to_string(i / 2) +
+  for (std::size_t b = 0; b < u.size(); ++b)
+    if (!std::isfinite(u[b].x) || !std::isfinite(u[b].y))
+      throw std::runtime_error("the displacement of block " + std::to_string(b) +
                                " is not finite in coupling iteration " + std::to_string(iteration_));
-  for (Point p : previous_displacements_) u_previous.insert(u_previous.end(), {p.x, p.y});
   report.head_change = unrelaxed_head_change;
-  report.displacement_change = previous_displacements_.empty() ? 1.0 : relative_change(u_flat, u_previous);
+  report.displacement_change = previous_displacements_.empty()
+                                   ? 1.0
+                                   : displacement_change(u, previous_displacements_,
+                                                         mechanics_.allowed_step_displacement());
   // Both norms compare this pass with the last, so both passes must have had the full load.
   report.converged = iteration_ > settings_.ramp_passes && report.head_change < settings_.tolerance &&
                      report.displacement_change < settings_.tolerance;

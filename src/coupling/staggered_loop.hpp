@@ -68,7 +68,9 @@ struct PassReport {
   // The same against the heads of two passes back (1 before pass 3): far below head_change
   // when the loop swings between two states.
   double head_change_two_passes = 1.0;
-  double displacement_change = 0.0;  // ‖u_k − u_{k−1}‖ / ‖u_k‖ over block centroids (1 first)
+  // max_b |u_k − u_{k−1}| / max(max_b |u_k|, ℓ) over block centroids, ℓ DDA's allowed step
+  // displacement (displacement_change below; 1 on the first pass)
+  double displacement_change = 0.0;
   double largest_opening = 0.0;   // widest open contact gap (m)
   double mean_porosity = 0.0;
   double max_permeability = 0.0;
@@ -171,8 +173,17 @@ class StaggeredLoop {
   double relaxation_ = 1.0;
 };
 
-// ‖a − b‖₂ / ‖a‖₂, 0 when both are zero, 1 when only `a` is.
-double relative_change(const std::vector<double>& current, const std::vector<double>& previous);
+// The displacement norm: the largest distance a block's centroid moved between the passes over
+// the larger of the largest displacement and a reference length ℓ (the loop passes DDA's
+// allowed step displacement, max_displacement_ratio × half the model height):
+//   max_b |u_b − u'_b| / max(max_b |u_b|, ℓ).
+// Against the displacement alone a model that starts in equilibrium (in-situ stress, rollers)
+// has no scale: u is tiny, and the ratio of two tiny numbers never falls. UDEC and 3DEC judge
+// equilibrium by the unbalanced force against the applied forces, not against what has moved;
+// ℓ plays that part, and with the default tolerance 1e-4 a pass whose blocks move less than
+// 1e-4 ℓ (DDA's own contact penetration tolerance) has settled. 0 when nothing moved.
+double displacement_change(const std::vector<Point>& current, const std::vector<Point>& previous,
+                           double reference_length);
 
 // The head norm: the root mean square of a − b over the range of a (max a − min a), the head
 // drop the boundary conditions set (the discrete maximum principle puts the extremes on the

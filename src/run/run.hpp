@@ -33,7 +33,7 @@ struct ProgressReport {
   long long count = 0;               // the step's or pass's number, from 1 (1 for the flow solve)
   double time = 0.0;                 // mechanics time at its end (s)
   double head_change = 0.0;          // passes: relative change of the heads from the last pass
-  double displacement_change = 0.0;  // passes: relative change of the block displacements
+  double displacement_change = 0.0;  // passes: the blocks' largest move against max(largest displacement, ℓ)
   int contacts = 0;                  // steps: closed contacts at its end
   double max_displacement = 0.0;     // steps: largest vertex displacement in it (m)
   double balance_error = 0.0;        // the flow solve: relative mass-balance error

@@ -321,7 +321,7 @@ void read_flow(ReadContext& ctx, const TableView& root, Scenario& s) {
   } else if (!f.has("fluid")) {
     ctx.defaults.push_back({"flow.fluid", "{ density = 1000, viscosity = 0.001 }"});
   }
-  flow.pressure = f.choice("pressure", {"overpressure", "hydrostatic"}, "overpressure") == 1
+  flow.pressure = f.choice("pressure", {"overpressure", "hydrostatic"}, "hydrostatic") == 1
                       ? PressureConvention::Hydrostatic
                       : PressureConvention::Overpressure;
   flow.permeability_law =

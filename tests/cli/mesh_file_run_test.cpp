@@ -50,6 +50,7 @@ TEST(MeshFileRun, IntactRockWithoutBlockGeometry) {
 matrix_porosity = 0.1
 grain_diameter = 1.2e-5
 [flow]
+pressure = "overpressure"
 [[flow.boundary]]
 name = "inlet"
 head = 1.0

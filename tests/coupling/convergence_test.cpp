@@ -28,7 +28,35 @@ TEST(HeadChange, DoesNotDependOnTheDatum) {
   for (double h : before) before_shifted.push_back(h + 1000.0);
   const double plain = head_change(now, before);
   EXPECT_NEAR(head_change(now_shifted, before_shifted), plain, 1e-12 * plain);
-  EXPECT_LT(relative_change(now_shifted, before_shifted), 0.05 * relative_change(now, before));
+  // The norm relative to ‖h‖, ‖a − b‖ / ‖a‖, falls with the datum.
+  const auto relative_to_heads = [](const std::vector<double>& a, const std::vector<double>& b) {
+    double diff = 0.0, norm = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i) diff += (a[i] - b[i]) * (a[i] - b[i]), norm += a[i] * a[i];
+    return std::sqrt(diff / norm);
+  };
+  EXPECT_LT(relative_to_heads(now_shifted, before_shifted), 0.05 * relative_to_heads(now, before));
+}
+
+// The displacement norm: the largest move between passes over max(largest displacement, ℓ).
+// Blocks displaced by metres that moved 1 mm: 1e-3 / 2 (the displacement is the scale).
+TEST(DisplacementChange, IsTheLargestMoveOverTheLargestDisplacementOrTheReferenceLength) {
+  const std::vector<Point> before{{1.0, 0.0}, {0.0, 2.0}}, after{{1.001, 0.0}, {0.0, 2.0}};
+  EXPECT_NEAR(displacement_change(after, before, 0.04), 1e-3 / 2.0, 1e-15);
+  EXPECT_EQ(displacement_change(after, after, 0.04), 0.0);
+  // Nothing displaced, nothing to compare with: the change is all there is.
+  EXPECT_EQ(displacement_change({{1e-9, 0.0}}, {{0.0, 0.0}}, 0.0), 1.0);
+}
+
+// A model that starts in equilibrium (the 30 m × 8 m seal in its in-situ stress on rollers):
+// its blocks have moved 3e-7 m in all and 2.6e-7 m since the last pass. Against the
+// displacement alone the change is 0.87 for ever; against ℓ = 0.04 m (DDA's allowed step
+// displacement, 1% of half the 8 m height) it is 6.5e-6, under the tolerance 1e-4. A block
+// still moving 1 mm a pass stays far above it (0.025).
+TEST(DisplacementChange, SettledModelNearEquilibriumIsJudgedAgainstTheReferenceLength) {
+  const double l = 0.01 * 4.0;
+  EXPECT_NEAR(displacement_change({{0.0, 3.0e-7}}, {{0.0, 0.4e-7}}, l), 2.6e-7 / l, 1e-18);
+  EXPECT_LT(displacement_change({{0.0, 3.0e-7}}, {{0.0, 0.4e-7}}, l), 1e-4);
+  EXPECT_GT(displacement_change({{0.0, 3.0e-3}}, {{0.0, 2.0e-3}}, l), 1e-4);
 }
 
 std::vector<double> geometric(double first, double factor, int n) {

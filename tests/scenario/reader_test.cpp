@@ -99,6 +99,7 @@ head = 1.0
     return false;
   };
   EXPECT_TRUE(has_default("flow.pressure"));
+  EXPECT_EQ(s.flow->pressure, PressureConvention::Hydrostatic);  // p = ρ g (h − z) unless named
   EXPECT_TRUE(has_default("flow.permeability_law"));
   EXPECT_TRUE(has_default("mesh.size"));
   EXPECT_TRUE(has_default("output.directory"));
