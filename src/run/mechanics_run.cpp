@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "run/fracture_output.hpp"
+#include "run/model_building.hpp"
 #include "run/mechanics_model.hpp"
 #include "run/paraview_output.hpp"
 #include "run/runs.hpp"
@@ -38,6 +39,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
 
   ParaviewOutput paraview(context.folder, s.output.fields);
   const std::optional<FractureMeter> meter = make_fracture_meter(s);
+  const hydro::JointApertureLaw joint_law = make_joint_aperture_law(s);
   FractureOutput fractures(context.folder, /*with_flow=*/false);
   std::vector<geometry::Polygon> polygons;
   // Blocks and contacts, and the fractures' rows and lines, at an output step.
@@ -46,7 +48,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
     if (!meter) return;
     polygons.clear();
     for (int b = 0; b < system.block_count(); ++b) polygons.push_back(system.polygon(b));
-    const FractureState state = meter->measure(polygons, system.penetration_tolerance());
+    const FractureState state = meter->measure(polygons, system.penetration_tolerance(), system.contacts(), joint_law);
     fractures.add_rows(step, time, state);
     if (s.output.fields.fractures) fractures.write_series(static_cast<int>(step), time, state);
     if (model.finished()) draw_aperture_figure(s, context.folder, polygons, state);
