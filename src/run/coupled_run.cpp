@@ -116,6 +116,7 @@ output::RunSummary run_coupled(const RunContext& context) {
   const auto current_summary = [&] {
     output::RunSummary summary = model.summary();
     summary.timings = model.timings();
+    if (fracture_state) summary.fractures = summarise_fractures(*fracture_state);
     return summary;
   };
   // After every finished pass: the checkpoint of the state the model continues from

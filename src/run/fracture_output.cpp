@@ -91,6 +91,27 @@ void FractureOutput::write_series(int step, double time, const FractureState& st
   series_->add(time, name);
 }
 
+output::FractureSummary summarise_fractures(const FractureState& state) {
+  output::FractureSummary summary;
+  for (const FractureResult& r : state.fractures) {
+    output::FractureRow row;
+    row.id = r.id;
+    row.origin = origin_name(r.origin.source);
+    if (r.origin.source == geometry::TraceSource::joint_set) row.set = r.origin.set;
+    row.number = r.origin.number;
+    row.length = r.length;
+    row.open_length = r.open_length;
+    row.mean_aperture = r.mean_aperture;
+    row.max_aperture = r.max_aperture;
+    row.hydraulic_aperture = r.hydraulic_aperture;
+    row.normal_stress = r.normal_stress;
+    row.max_shear = r.max_shear;
+    row.flow = r.flow;
+    summary.rows.push_back(row);
+  }
+  return summary;
+}
+
 void draw_aperture_figure(const scenario::Scenario& s, const output::RunFolder& folder,
                           std::span<const geometry::Polygon> blocks, const FractureState& state) {
   if (s.output.figures.empty() || state.pieces.empty()) return;

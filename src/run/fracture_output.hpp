@@ -10,6 +10,7 @@
 
 #include "output/csv_table.hpp"
 #include "output/pvd_series.hpp"
+#include "output/summary.hpp"
 #include "output/run_folder.hpp"
 #include "run/fracture_results.hpp"
 #include "scenario/scenario.hpp"
@@ -35,6 +36,9 @@ class FractureOutput {
   output::CsvTable table_;
   std::optional<output::PvdSeries> series_;
 };
+
+// summary.json's `fractures` section from a step's results (docs/output.md).
+output::FractureSummary summarise_fractures(const FractureState& state);
 
 // figures/apertures.* for each format output.figures asks for: the blocks as they are, each
 // fracture piece coloured by its mechanical aperture (mm), closed pieces thin and grey.

@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <optional>
 
 #include "run/fracture_output.hpp"
 #include "run/model_building.hpp"
@@ -42,6 +43,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
   const hydro::JointApertureLaw joint_law = make_joint_aperture_law(s);
   FractureOutput fractures(context.folder, /*with_flow=*/false);
   std::vector<geometry::Polygon> polygons;
+  std::optional<FractureState> last_state;  // of the last output step, for summary.json
   // Blocks and contacts, and the fractures' rows and lines, at an output step.
   const auto write_step = [&](long long step, double time) {
     paraview.write_blocks(static_cast<int>(step), time, system);
@@ -52,6 +54,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
     fractures.add_rows(step, time, state);
     if (s.output.fields.fractures) fractures.write_series(static_cast<int>(step), time, state);
     if (model.finished()) draw_aperture_figure(s, context.folder, polygons, state);
+    last_state = state;
   };
   write_step(0, 0.0);
   long long last_written = 0;
@@ -104,6 +107,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
   if (last_written != model.steps()) write_step(model.steps(), system.time());
 
   output::RunSummary summary = model.summary();
+  if (last_state) summary.fractures = summarise_fractures(*last_state);
   // Mechanics alone has no coupling loop: `converged` says the run reached its end.
   summary.converged = true;
   summary.timings.push_back(

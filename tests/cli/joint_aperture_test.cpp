@@ -131,6 +131,12 @@ TEST(JointApertures, LoadedJointFollowsBartonBandisClosure) {
     EXPECT_NEAR(last_fracture_value(r, "hydraulic_aperture"), a, 0.005 * a) << sigma;
     std::printf("sigma %4.0f MPa: a %.4e m, outflow %.6e m2/s, expected %.6e (%+.3f%%), sigma_n %.6e Pa\n",
                 sigma / 1e6, a, q, expected, 100.0 * (q / expected - 1.0), last_fracture_value(r, "normal_stress"));
+    // summary.json's fractures section says the same at a glance.
+    const nlohmann::json& f = r.summary["fractures"];
+    EXPECT_EQ(f["count"].get<int>(), 1);
+    EXPECT_EQ(f["open"].get<int>(), 0);
+    EXPECT_NEAR(f["by_id"]["0"]["hydraulic_aperture"].get<double>(), last_fracture_value(r, "hydraulic_aperture"),
+                1e-15);
   }
 }
 
