@@ -26,6 +26,8 @@ struct PermeabilityModel {
   // paper's device for Kozeny–Carman and does not apply to the cubic law.
   std::vector<double> compute(const PorosityField& porosity, std::span<const double> element_areas,
                               std::span<const double> apertures = {}) const;
+  // k_m: what both laws give an element with no open area (Kozeny–Carman of the matrix porosity).
+  double matrix_permeability() const;
 };
 
 }  // namespace hydrodda::coupling

@@ -81,6 +81,8 @@ StaggeredLoop::StaggeredLoop(const mesh::TriangleMesh& mesh, hydro::DarcyProblem
     throw std::invalid_argument("coupling: the relaxation must lie in (0, 1]");
   if (settings_.ramp_passes < 1) throw std::invalid_argument("coupling: ramp_passes must be at least 1");
   relaxation_ = settings_.relaxation;
+  if (settings_.joints)
+    joints_.emplace(mesh, std::move(settings_.joints->network), settings_.joints->law);
   for (double alpha : biot) {
     if (!(alpha >= 0.0 && alpha <= 1.0)) throw std::invalid_argument("coupling: a Biot coefficient must lie in [0, 1]");
     seepage_ = seepage_ || alpha > 0.0;
@@ -92,6 +94,33 @@ std::vector<geometry::Polygon> StaggeredLoop::current_blocks() const {
   blocks.reserve(mechanics_.block_count());
   for (int b = 0; b < mechanics_.block_count(); ++b) blocks.push_back(mechanics_.polygon(b));
   return blocks;
+}
+
+// The permeability as the porosity law gives it, the scenario's fixed values over it; with
+// joints, the elements along them at the matrix permeability plus the joints' transmissivity
+// (one transmissivity per joint: embedded_joints.hpp), solved as tensors.
+hydro::FlowSolution StaggeredLoop::solve_flow(const std::vector<geometry::Polygon>& blocks) {
+  const auto fixed = [&](std::size_t e) {
+    return e < settings_.fixed_permeability.size() && settings_.fixed_permeability[e].has_value();
+  };
+  if (!joints_) {
+    for (std::size_t e = 0; e < permeability_.size(); ++e)
+      if (fixed(e)) permeability_[e] = *settings_.fixed_permeability[e];
+    check_finite(permeability_, "the permeability", iteration_);
+    return darcy_.solve_reusing_factor(permeability_, solution_.head);
+  }
+  const double k_matrix = settings_.permeability.matrix_permeability();
+  for (std::size_t e = 0; e < permeability_.size(); ++e)
+    if (joints_->zone()[e]) permeability_[e] = k_matrix;
+  joint_apertures_ = joints_->apertures(blocks, mechanics_.contacts(), mechanics_.penetration_tolerance());
+  check_finite(joint_apertures_, "a joint's hydraulic aperture", iteration_);
+  std::vector<hydro::PermeabilityTensor> k = joints_->permeability(permeability_, joint_apertures_);
+  for (std::size_t e = 0; e < k.size(); ++e) {
+    if (fixed(e)) k[e] = {*settings_.fixed_permeability[e], 0.0, *settings_.fixed_permeability[e]};
+    permeability_[e] = largest_principal_value(k[e]);
+  }
+  check_finite(permeability_, "the permeability", iteration_);
+  return darcy_.solve(k);
 }
 
 std::vector<Point> StaggeredLoop::block_displacements() const {
@@ -117,16 +146,13 @@ PassReport StaggeredLoop::run_pass() {
     apertures = compute_local_apertures(centroids_, porosity_.fracture_area, blocks, settings_.permeability.domain,
                                         settings_.permeability.aperture_reach);
   permeability_ = settings_.permeability.compute(porosity_, porosity_mapper_.element_areas(), apertures);
-  for (std::size_t e = 0; e < settings_.fixed_permeability.size(); ++e)
-    if (settings_.fixed_permeability[e]) permeability_[e] = *settings_.fixed_permeability[e];
-  check_finite(permeability_, "the permeability", iteration_);
   report.porosity_seconds = seconds_since(start);
 
   // Flow, with the heads under-relaxed against the last pass. The permeability changes little
   // from pass to pass: the factor of an earlier pass serves as CG's preconditioner from the
   // last heads while it converges fast (hydro::DarcySolver::solve_reusing_factor).
   start = Clock::now();
-  hydro::FlowSolution fresh = darcy_.solve_reusing_factor(permeability_, solution_.head);
+  hydro::FlowSolution fresh = solve_flow(blocks);
   check_finite(fresh.head, "the head", iteration_);
   // Judged on the fresh (unrelaxed) heads: the relaxed change is ω times this, so a small ω
   // would freeze the heads and fake convergence.

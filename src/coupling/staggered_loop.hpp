@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "coupling/boundary_gaps.hpp"
+#include "coupling/embedded_joints.hpp"
 #include "coupling/permeability_model.hpp"
 #include "coupling/porosity.hpp"
 #include "coupling/pressure_forces.hpp"
@@ -52,6 +53,13 @@ struct LoopSettings {
   std::vector<std::optional<double>> fixed_permeability;
   // Per block: Biot's coefficient α in [0, 1] (seepage_forces.hpp). Empty: 1 for every block.
   std::vector<double> biot_coefficients;
+  // Joints as embedded fractures (embedded_joints.hpp), when the scenario gives their hydraulic
+  // aperture: the network the blocks were cut as (the DDA system's block order) and the law.
+  struct Joints {
+    geometry::BlockNetwork network;
+    hydro::JointApertureLaw law;
+  };
+  std::optional<Joints> joints;
 };
 
 // Thrown by run_pass when LoopSettings::stop_requested says so; the pass is not counted and the
@@ -137,9 +145,13 @@ class StaggeredLoop {
 
   const hydro::FlowSolution& flow() const { return solution_; }
   const PorosityField& porosity() const { return porosity_; }
+  // Per element: k (m²), or with joints the tensor's largest principal value (k where isotropic).
   const std::vector<double>& permeability() const { return permeability_; }
   // How far the blocks have left the fluid mesh now.
   MeshExcursion outside_mesh() const { return boundary_gaps_.find_excursion(current_blocks()); }
+  // The joints' hydraulic aperture at each crossing of the last pass (none without joints).
+  const std::optional<EmbeddedJoints>& joints() const { return joints_; }
+  const std::vector<double>& joint_apertures() const { return joint_apertures_; }
   // Passes run to their end (a pass that threw is not counted).
   int iterations() const { return completed_; }
   // A flow solution exists (false until the first pass's solve succeeds).
@@ -147,6 +159,7 @@ class StaggeredLoop {
 
  private:
   std::vector<geometry::Polygon> current_blocks() const;
+  hydro::FlowSolution solve_flow(const std::vector<geometry::Polygon>& blocks);
   void relax(hydro::FlowSolution& fresh);
   std::vector<Point> block_displacements() const;
 
@@ -158,6 +171,8 @@ class StaggeredLoop {
   BoundaryGaps boundary_gaps_;      // the faces that lay on the domain boundary as built
   FacePressureLoads face_loads_;
   bool seepage_ = false;             // some block has α > 0
+  std::optional<EmbeddedJoints> joints_;
+  std::vector<double> joint_apertures_;
 
   std::vector<Point> centroids_;  // of the fixed mesh's elements
   int iteration_ = 0;   // passes started

@@ -20,4 +20,18 @@ double cubic_law_permeability(double fracture_fraction, double aperture, double 
   return matrix_permeability + fracture_fraction * aperture * aperture / 12.0;
 }
 
+double JointApertureLaw::closed(double normal_stress) const {
+  const double sigma = std::max(normal_stress, 0.0);  // a joint in tension is not squeezed
+  if (!(max_closure > 0.0)) return residual_aperture;
+  return residual_aperture + max_closure - sigma * max_closure / (normal_stiffness * max_closure + sigma);
+}
+
+PermeabilityTensor embedded_fracture_permeability(double aperture, double length, double area,
+                                                  geometry::Point direction) {
+  if (!(area > 0.0)) throw std::invalid_argument("embedded fracture: the element area must be positive");
+  const double t2 = geometry::dot(direction, direction);
+  const double scale = aperture * aperture * aperture / 12.0 * length / area / t2;  // t normalised
+  return {scale * direction.x * direction.x, scale * direction.x * direction.y, scale * direction.y * direction.y};
+}
+
 }  // namespace hydrodda::hydro

@@ -1,5 +1,8 @@
 #pragma once
-// Permeability from porosity.
+// Permeability from porosity, and the hydraulic aperture and transmissivity of a joint.
+
+#include "geometry/point.hpp"
+#include "hydro/fluid.hpp"
 
 namespace hydrodda::hydro {
 
@@ -12,5 +15,29 @@ double kozeny_carman_permeability(double porosity, double grain_diameter, double
 // width b across the fracture holding it has the equivalent permeability w³/(12 b) on top of
 // its matrix permeability, k = k_m + (A_f/A_e) w²/12 with A_f/A_e = w/b, whatever b is.
 double cubic_law_permeability(double fracture_fraction, double aperture, double matrix_permeability);
+
+// The hydraulic aperture of a joint (Barton, Bandis & Bakhtar 1985, the hyperbolic closure of
+// Bandis et al. 1983). Closed under an effective normal stress σn ≥ 0 (compression positive):
+//   a(σn) = a_r + V_m − σn V_m / (k_ni V_m + σn),
+// from a_r + V_m at σn = 0 down to a_r as σn → ∞ (the closure σn V_m/(k_ni V_m + σn) tends to
+// V_m, its initial slope is 1/k_ni). Open by a mechanical opening w: a(0) + w. Without a
+// closure (V_m = 0) a closed joint keeps a_r at every stress.
+struct JointApertureLaw {
+  double residual_aperture = 0.0;  // a_r, m
+  double normal_stiffness = 0.0;   // k_ni, Pa/m (> 0 when max_closure > 0)
+  double max_closure = 0.0;        // V_m, m
+
+  double closed(double normal_stress) const;
+  double at_zero_stress() const { return residual_aperture + max_closure; }
+  double open(double opening) const { return at_zero_stress() + opening; }
+};
+
+// A fracture of hydraulic aperture a embedded in an element (Lee, Lough & Jensen 2001; the
+// embedded discrete fracture models): its transmissivity a³/12 (m³) along its direction t over
+// the length L of it inside the element of area A, as the element permeability tensor
+//   k = (a³/12)(L/A) t ⊗ t   (m²),
+// which carries a³/12 × ∇h·t along the fracture whatever the element's size or shape.
+PermeabilityTensor embedded_fracture_permeability(double aperture, double length, double area,
+                                                  geometry::Point direction);
 
 }  // namespace hydrodda::hydro

@@ -10,6 +10,40 @@ namespace {
 
 using nlohmann::json;
 
+// count, open (how many have an open part), open_ids, open_length (m, summed), the widest
+// opening and its fracture, and `by_id`: each fracture's row as fractures.csv has it.
+json format_fractures(const FractureSummary& f) {
+  json by_id = json::object(), open_ids = json::array();
+  double open_length = 0.0, widest = 0.0;
+  json widest_id = nullptr;
+  for (const FractureRow& r : f.rows) {
+    json row = {{"origin", r.origin},
+                {"number", r.number},
+                {"length", r.length},
+                {"open_length", r.open_length},
+                {"open", r.open_length > 0.0 ? 1 : 0},
+                {"mean_aperture", r.mean_aperture},
+                {"max_aperture", r.max_aperture},
+                {"hydraulic_aperture", r.hydraulic_aperture},
+                {"normal_stress", r.normal_stress},
+                {"max_shear", r.max_shear}};
+    if (r.set) row["set"] = *r.set;
+    if (r.flow) row["flow"] = *r.flow;
+    by_id[std::to_string(r.id)] = row;
+    if (r.open_length > 0.0) {
+      open_ids.push_back(r.id);
+      open_length += r.open_length;
+    }
+    if (r.max_aperture > widest) {
+      widest = r.max_aperture;
+      widest_id = r.id;
+    }
+  }
+  return {{"count", f.rows.size()},       {"open", open_ids.size()},     {"open_ids", open_ids},
+          {"open_length", open_length},   {"max_aperture", widest},      {"max_aperture_id", widest_id},
+          {"by_id", by_id}};
+}
+
 json to_json(const RunSummary& s) {
   json blocks = json::array();
   for (const BlockSummary& b : s.blocks)
@@ -56,6 +90,7 @@ json to_json(const RunSummary& s) {
     out["outside_mesh"] = {{"largest_distance", s.outside_mesh->largest_distance},
                            {"block", s.outside_mesh->block},
                            {"blocks", s.outside_mesh->blocks}};
+  if (s.fractures) out["fractures"] = format_fractures(*s.fractures);
   return out;
 }
 

@@ -55,6 +55,22 @@ struct FlowSummary {
   std::vector<RegionSummary> regions;
 };
 
+// One fracture's row (fractures.csv's columns at the run's last step).
+struct FractureRow {
+  int id = 0;
+  std::string origin;           // "listed", "set", "file"
+  std::optional<int> set;       // the joint set, for "set"
+  int number = 0;
+  double length = 0.0, open_length = 0.0, mean_aperture = 0.0, max_aperture = 0.0, hydraulic_aperture = 0.0,
+         normal_stress = 0.0, max_shear = 0.0;
+  std::optional<double> flow;   // coupled runs
+};
+
+// The fractures at a glance: how many, which are open, the widest, and every row by id.
+struct FractureSummary {
+  std::vector<FractureRow> rows;  // by id
+};
+
 struct RunSummary {
   std::string title;
   std::string scenario;          // the scenario file as given
@@ -66,6 +82,7 @@ struct RunSummary {
   std::vector<MeasureSummary> measures;
   std::optional<FlowSummary> flow;
   std::optional<OutsideMeshSummary> outside_mesh;  // coupled runs
+  std::optional<FractureSummary> fractures;  // runs of a domain cut by fractures
   std::vector<NamedValue> timings;  // seconds per phase
 };
 

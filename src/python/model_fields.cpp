@@ -109,7 +109,8 @@ py::dict fracture_fields(const run::FractureState& state) {
   const auto n = static_cast<py::ssize_t>(state.fractures.size());
   py::array_t<int> id(n), set(n), number(n);
   py::array_t<bool> open(n);
-  Array length(n), open_length(n), mean_aperture(n), max_aperture(n), max_shear(n), flow(n);
+  Array length(n), open_length(n), mean_aperture(n), max_aperture(n), max_shear(n), hydraulic_aperture(n),
+      normal_stress(n), flow(n);
   py::list origin;
   for (py::ssize_t i = 0; i < n; ++i) {
     const run::FractureResult& r = state.fractures[static_cast<std::size_t>(i)];
@@ -123,6 +124,8 @@ py::dict fracture_fields(const run::FractureState& state) {
     mean_aperture.mutable_at(i) = r.mean_aperture;
     max_aperture.mutable_at(i) = r.max_aperture;
     max_shear.mutable_at(i) = r.max_shear;
+    hydraulic_aperture.mutable_at(i) = r.hydraulic_aperture;
+    normal_stress.mutable_at(i) = r.normal_stress;
     flow.mutable_at(i) = r.flow ? *r.flow : std::numeric_limits<double>::quiet_NaN();
   }
   py::dict fields;
@@ -136,6 +139,8 @@ py::dict fracture_fields(const run::FractureState& state) {
   fields["mean_aperture"] = mean_aperture;
   fields["max_aperture"] = max_aperture;
   fields["max_shear"] = max_shear;
+  fields["hydraulic_aperture"] = hydraulic_aperture;
+  fields["normal_stress"] = normal_stress;
   fields["flow"] = flow;
   return fields;
 }

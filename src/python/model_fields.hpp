@@ -29,7 +29,8 @@ py::dict block_fields(const dda::System& system);
 py::dict contact_fields(const dda::System& system);
 // One entry per fracture, as fractures.csv's columns: id, origin ("listed", "set", "file"),
 // set (-1 unless from a set), number, length, open_length (m), open (bool), mean_aperture,
-// max_aperture, max_shear (m), flow (m²/s, NaN where not computed).
+// max_aperture, max_shear (m), hydraulic_aperture (m), normal_stress (Pa), flow (m²/s, NaN
+// where not computed).
 py::dict fracture_fields(const run::FractureState& state);
 // {"fluid", "blocks", "contacts", "fractures"} of a run's model at its end, each present when
 // the kind of run has it (fractures: when the run measured them).

@@ -18,6 +18,7 @@
 #include "python/python_callbacks.hpp"
 #include "run/coupled_model.hpp"
 #include "run/fracture_results.hpp"
+#include "run/model_building.hpp"
 #include "run/flow_model.hpp"
 #include "run/mechanics_model.hpp"
 #include "run/run.hpp"
@@ -124,7 +125,9 @@ class Simulation {
     }
     std::vector<geometry::Polygon> polygons;
     for (int b = 0; b < blocks.block_count(); ++b) polygons.push_back(blocks.polygon(b));
-    run::FractureState state = meter_->measure(polygons, blocks.penetration_tolerance());
+    if (!joint_law_) joint_law_ = run::make_joint_aperture_law(scenario_.definition);
+    run::FractureState state =
+        meter_->measure(polygons, blocks.penetration_tolerance(), blocks.contacts(), *joint_law_);
     if (const auto* coupled = std::get_if<Coupled>(&model_); coupled && (*coupled)->loop().has_flow()) {
       if (!flow_zones_) flow_zones_ = meter_->flow_zones((*coupled)->mesh());
       meter_->add_flow(state, *flow_zones_, (*coupled)->loop().flow());
@@ -193,6 +196,7 @@ class Simulation {
   bool converged_ = false;  // coupled: the last pass met the tolerance
   std::optional<run::FractureMeter> meter_;                  // made on the first call of fractures
   std::optional<run::FractureMeter::FlowZones> flow_zones_;  // likewise, for a coupled model
+  std::optional<hydro::JointApertureLaw> joint_law_;         // likewise
 };
 
 }  // namespace

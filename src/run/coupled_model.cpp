@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "run/model_building.hpp"
+#include "run/model_geometry.hpp"
 #include "run/run_summary.hpp"
 
 namespace hydrodda::run {
@@ -38,6 +39,8 @@ CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::option
       static_cast<int>(std::ceil(*s.mechanics->end_time / s.mechanics->time_step)));
   settings.permeability = make_permeability_model(s);
   settings.fixed_permeability = find_fixed_permeability(s, mesh_);
+  if (s.joint.hydraulic())
+    settings.joints = coupling::LoopSettings::Joints{build_model_geometry(s).network, make_joint_aperture_law(s)};
   settings.stop_requested = [this] { return stop_requested_ && stop_requested_(); };
   loop_.emplace(mesh_, build_flow_problem(*s.flow), *system_, std::move(settings));
   // The unfractured case does not change between passes: solved once.

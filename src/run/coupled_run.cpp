@@ -11,6 +11,7 @@
 #include "run/coupled_model.hpp"
 #include "run/figures.hpp"
 #include "run/fracture_output.hpp"
+#include "run/model_building.hpp"
 #include "run/paraview_output.hpp"
 #include "run/run_summary.hpp"
 #include "run/runs.hpp"
@@ -77,12 +78,13 @@ output::RunSummary run_coupled(const RunContext& context) {
   checkpoint.scenario_file = std::filesystem::absolute(s.file).string();
   ParaviewOutput paraview(context.folder, s.output.fields);
   const std::optional<FractureMeter> meter = make_fracture_meter(s);
+  const hydro::JointApertureLaw joint_law = make_joint_aperture_law(s);
   const FractureMeter::FlowZones flow_zones = meter ? meter->flow_zones(mesh) : FractureMeter::FlowZones{};
   FractureOutput fractures(context.folder, /*with_flow=*/true);
   std::optional<FractureState> fracture_state;  // of the last finished pass
   const TellModelAtEnd tell_model_at_end(context.callbacks, model, fracture_state);
   const auto measure_fractures = [&] {
-    fracture_state = meter->measure(model.block_polygons(), system.penetration_tolerance());
+    fracture_state = meter->measure(model.block_polygons(), system.penetration_tolerance(), system.contacts(), joint_law);
     meter->add_flow(*fracture_state, flow_zones, loop.flow());
   };
   if (context.resume) {
@@ -115,6 +117,7 @@ output::RunSummary run_coupled(const RunContext& context) {
   const auto current_summary = [&] {
     output::RunSummary summary = model.summary();
     summary.timings = model.timings();
+    if (fracture_state) summary.fractures = summarise_fractures(*fracture_state);
     return summary;
   };
   // After every finished pass: the checkpoint of the state the model continues from

@@ -19,7 +19,7 @@ namespace {
 std::vector<std::string> columns(bool with_flow) {
   std::vector<std::string> c{"step",          "time",          "fracture",     "origin",    "set",
                              "number",        "length",        "open_length",  "open",      "mean_aperture",
-                             "max_aperture",  "max_shear"};
+                             "max_aperture",  "hydraulic_aperture", "normal_stress", "max_shear"};
   if (with_flow) c.push_back("flow");
   return c;
 }
@@ -58,6 +58,8 @@ void FractureOutput::add_rows(long long step, double time, const FractureState& 
                                  CsvTable::cell(static_cast<long long>(r.open_length > 0.0 ? 1 : 0)),
                                  CsvTable::cell(r.mean_aperture),
                                  CsvTable::cell(r.max_aperture),
+                                 CsvTable::cell(r.hydraulic_aperture),
+                                 CsvTable::cell(r.normal_stress),
                                  CsvTable::cell(r.max_shear)};
     if (with_flow_) row.push_back(r.flow ? CsvTable::cell(*r.flow) : "");
     table_.add_row(row);
@@ -68,7 +70,7 @@ void FractureOutput::add_rows(long long step, double time, const FractureState& 
 void FractureOutput::write_series(int step, double time, const FractureState& state) {
   std::vector<std::array<geometry::Point, 2>> segments;
   DataArray fracture{"fracture", 1, {}}, aperture{"aperture", 1, {}}, shear{"shear", 1, {}}, open{"open", 1, {}},
-      flow{"flow", 1, {}};
+      hydraulic{"hydraulic_aperture", 1, {}}, flow{"flow", 1, {}};
   std::vector<double> flow_of(state.fractures.empty() ? 0 : state.fractures.back().id + 1, 0.0);
   for (const FractureResult& r : state.fractures)
     if (r.flow) flow_of[r.id] = *r.flow;
@@ -78,14 +80,36 @@ void FractureOutput::write_series(int step, double time, const FractureState& st
     aperture.values.push_back(p.aperture);
     shear.values.push_back(p.shear);
     open.values.push_back(p.open ? 1.0 : 0.0);
+    hydraulic.values.push_back(p.hydraulic_aperture);
     flow.values.push_back(flow_of[p.fracture]);
   }
-  std::vector<DataArray> cells{fracture, aperture, shear, open};
+  std::vector<DataArray> cells{fracture, aperture, shear, open, hydraulic};
   if (with_flow_) cells.push_back(flow);
   const std::string name = fmt::format("fractures_{:04d}.vtu", step);
   output::write_vtu_segments(folder_.file(name), segments, cells);
   if (!series_) series_.emplace(folder_.file("fractures.pvd"));
   series_->add(time, name);
+}
+
+output::FractureSummary summarise_fractures(const FractureState& state) {
+  output::FractureSummary summary;
+  for (const FractureResult& r : state.fractures) {
+    output::FractureRow row;
+    row.id = r.id;
+    row.origin = origin_name(r.origin.source);
+    if (r.origin.source == geometry::TraceSource::joint_set) row.set = r.origin.set;
+    row.number = r.origin.number;
+    row.length = r.length;
+    row.open_length = r.open_length;
+    row.mean_aperture = r.mean_aperture;
+    row.max_aperture = r.max_aperture;
+    row.hydraulic_aperture = r.hydraulic_aperture;
+    row.normal_stress = r.normal_stress;
+    row.max_shear = r.max_shear;
+    row.flow = r.flow;
+    summary.rows.push_back(row);
+  }
+  return summary;
 }
 
 void draw_aperture_figure(const scenario::Scenario& s, const output::RunFolder& folder,

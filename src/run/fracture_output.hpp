@@ -11,6 +11,7 @@
 
 #include "output/csv_table.hpp"
 #include "output/pvd_series.hpp"
+#include "output/summary.hpp"
 #include "output/run_folder.hpp"
 #include "run/fracture_results.hpp"
 #include "scenario/scenario.hpp"
@@ -43,6 +44,9 @@ struct FigureState {
   std::string when;  // e.g. "coupling iteration 4", "DDA step 200"
   bool converged = true;
 };
+
+// summary.json's `fractures` section from a step's results (docs/output.md).
+output::FractureSummary summarise_fractures(const FractureState& state);
 
 // figures/apertures.* for each format output.figures asks for: the blocks as they are, each
 // fracture piece coloured by its mechanical aperture (mm), closed pieces thin and grey; titled

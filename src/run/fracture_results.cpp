@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
+#include "coupling/embedded_joints.hpp"
 #include "run/model_geometry.hpp"
 
 namespace hydrodda::run {
@@ -17,21 +19,7 @@ namespace {
 
 Point unit_normal_left(Point d) { return Point{-d.y, d.x}; }
 
-Point normalised(Point p) { return p / geometry::norm(p); }
-
 }  // namespace
-
-Point FractureMeter::material_point(const SideRef& r, std::span<const geometry::Polygon> blocks) {
-  const geometry::Polygon& poly = blocks[r.block];
-  const Point a = poly[r.edge], c = poly[(r.edge + 1) % poly.size()];
-  return a + (c - a) * r.t;
-}
-
-Point FractureMeter::outward_normal(std::span<const geometry::Polygon> blocks, const SideRef& r) {
-  const geometry::Polygon& poly = blocks[r.block];
-  const Point along = poly[(r.edge + 1) % poly.size()] - poly[r.edge];
-  return normalised(Point{along.y, -along.x});  // counter-clockwise polygon: the edge's right
-}
 
 std::optional<FractureLayout> fracture_layout(const scenario::Scenario& s) {
   if (!s.geometry || s.geometry->domain.empty()) return std::nullopt;
@@ -49,52 +37,25 @@ std::string origin_name(geometry::TraceSource source) {
 }
 
 FractureMeter::FractureMeter(FractureLayout layout, double node_spacing) : layout_(std::move(layout)) {
-  const geometry::BlockNetwork& network = layout_.network;
-  // Per fracture, the block edges that lie on it.
-  std::vector<std::vector<std::pair<int, int>>> edges(layout_.traces.size());
-  for (std::size_t b = 0; b < network.blocks.size(); ++b)
-    for (std::size_t e = 0; e < network.edge_fractures[b].size(); ++e)
-      if (const int f = network.edge_fractures[b][e]; f >= 0) edges[f].push_back({static_cast<int>(b), static_cast<int>(e)});
-
-  for (const geometry::FractureFace& face : network.faces) {
+  const geometry::FaceGaugeFinder finder(layout_.network);
+  for (const geometry::FractureFace& face : layout_.network.faces) {
     const Point d0 = face.segment.to - face.segment.from;
     const double length = geometry::norm(d0);
     if (!(length > 0.0)) continue;
-    const Point d = d0 / length, n = unit_normal_left(d);
-    // The nearest edge of the fracture on one side of the face at p: a block on the +n side
-    // has its outward normal along −n there.
-    const auto side_at = [&](Point p, double side) {
-      SideRef best;
-      double best_distance = std::numeric_limits<double>::infinity();
-      for (const auto& [b, e] : edges[face.fracture]) {
-        const geometry::Polygon& poly = network.blocks[b];
-        const Point a = poly[e], c = poly[(e + 1) % poly.size()];
-        const Point along = c - a;
-        const double edge_length = geometry::norm(along);
-        if (!(edge_length > 0.0)) continue;
-        const Point outward{along.y / edge_length, -along.x / edge_length};
-        if (side * geometry::dot(outward, n) > -0.5) continue;
-        const double distance = geometry::distance_to_segment(p, a, c);
-        if (distance < best_distance) {
-          best_distance = distance;
-          best = {b, e, geometry::dot(p - a, along) / (edge_length * edge_length)};
-        }
-      }
-      return best;
-    };
+    const Point d = d0 / length;
     Face measured{face.segment, face.fracture, {}};
     const int pieces = std::max(1, static_cast<int>(std::ceil(length / node_spacing)));
     for (int k = 0; k <= pieces; ++k) {
       const double s = length * k / pieces;
-      const Point p = face.segment.from + d * s;
-      Node node{s, side_at(p, -1.0), side_at(p, +1.0)};
-      if (node.minus.block >= 0 && node.plus.block >= 0) measured.nodes.push_back(node);
+      if (const auto gauge = finder.find(face, face.segment.from + d * s)) measured.nodes.push_back({s, *gauge});
     }
     if (measured.nodes.size() >= 2) faces_.push_back(std::move(measured));
   }
 }
 
-FractureState FractureMeter::measure(std::span<const geometry::Polygon> blocks, double open_threshold) const {
+FractureState FractureMeter::measure(std::span<const geometry::Polygon> blocks, double open_threshold,
+                                     std::span<const dda::ContactInfo> contacts,
+                                     const hydro::JointApertureLaw& law) const {
   const geometry::BlockNetwork& network = layout_.network;
   if (blocks.size() != network.blocks.size())
     throw std::invalid_argument(fmt::format("fracture results: {} blocks given, the network has {}", blocks.size(),
@@ -106,7 +67,12 @@ FractureState FractureMeter::measure(std::span<const geometry::Polygon> blocks, 
 
   FractureState state;
   std::vector<int> index(layout_.traces.size(), -1);
+  std::vector<coupling::FaceKey> piece_face;  // per piece: the face it lies on
+  std::vector<double> piece_length;           // per piece: m along the face
+  std::map<coupling::FaceKey, double> closed_length;
   for (const Face& face : faces_) {
+    const coupling::FaceKey key{face.fracture, std::min(face.nodes[0].gauge.minus.block, face.nodes[0].gauge.plus.block),
+                                std::max(face.nodes[0].gauge.minus.block, face.nodes[0].gauge.plus.block)};
     if (index[face.fracture] < 0) {
       index[face.fracture] = static_cast<int>(state.fractures.size());
       FractureResult r;
@@ -121,14 +87,8 @@ FractureState FractureMeter::measure(std::span<const geometry::Polygon> blocks, 
     };
     std::vector<Measured> m;
     for (const Node& node : face.nodes) {
-      const Point minus = material_point(node.minus, blocks), plus = material_point(node.plus, blocks);
-      // The frame of the two edges as they are now: their mean normal, from minus to plus
-      // (edges that have turned apart by θ make it ambiguous by θ/2 either way).
-      const Point normal = normalised(outward_normal(blocks, node.minus) - outward_normal(blocks, node.plus));
-      const Point tangent{-normal.y, normal.x};
-      const Point gap = plus - minus;
-      const Point initial_gap = material_point(node.plus, network.blocks) - material_point(node.minus, network.blocks);
-      m.push_back({node.s, geometry::dot(gap, normal), geometry::dot(gap - initial_gap, tangent), (plus + minus) * 0.5});
+      const geometry::GaugeReading g = geometry::read_gauge(node.gauge, blocks, network.blocks);
+      m.push_back({node.s, g.opening, g.shear, g.midpoint});
     }
     const auto add_piece = [&](const Measured& a, const Measured& b) {
       const double ds = b.s - a.s;
@@ -140,7 +100,10 @@ FractureState FractureMeter::measure(std::span<const geometry::Polygon> blocks, 
       result.length += ds;
       if (open) result.open_length += ds;
       result.mean_aperture += aperture * ds;  // divided by the length below
+      if (!open) closed_length[key] += ds;
       state.pieces.push_back({{a.midpoint, b.midpoint}, face.fracture, aperture, 0.5 * (a.shear + b.shear), open});
+      piece_face.push_back(key);
+      piece_length.push_back(ds);
     };
     for (std::size_t k = 0; k < m.size(); ++k) {
       if (m[k].opening > open_threshold) result.max_aperture = std::max(result.max_aperture, m[k].opening);
@@ -160,8 +123,32 @@ FractureState FractureMeter::measure(std::span<const geometry::Polygon> blocks, 
       }
     }
   }
-  for (FractureResult& r : state.fractures)
-    if (r.length > 0.0) r.mean_aperture /= r.length;
+  // The hydraulic aperture of each piece (hydro::JointApertureLaw): open, a(0) + its opening;
+  // closed, the closure under its face's effective normal stress, the compressive contact
+  // forces on the face over the face's closed length.
+  const std::map<coupling::FaceKey, double> forces = coupling::contact_forces_by_face(contacts, network.edge_fractures);
+  std::vector<double> fracture_force(layout_.traces.size(), 0.0);
+  for (const auto& [key, force] : forces)
+    if (key.fracture < static_cast<int>(fracture_force.size())) fracture_force[key.fracture] += force;
+  for (std::size_t p = 0; p < state.pieces.size(); ++p) {
+    FracturePiece& piece = state.pieces[p];
+    if (piece.open) {
+      piece.hydraulic_aperture = law.open(piece.aperture);
+    } else {
+      const auto force = forces.find(piece_face[p]);
+      piece.hydraulic_aperture = law.closed(force == forces.end() ? 0.0 : force->second / closed_length.at(piece_face[p]));
+    }
+    FractureResult& r = state.fractures[index[piece.fracture]];
+    r.hydraulic_aperture += piece.hydraulic_aperture * piece_length[p];
+  }
+  for (FractureResult& r : state.fractures) {
+    const double closed = r.length - r.open_length;
+    if (closed > 0.0) r.normal_stress = fracture_force[r.id] / closed;
+    if (r.length > 0.0) {
+      r.mean_aperture /= r.length;
+      r.hydraulic_aperture /= r.length;
+    }
+  }
   std::sort(state.fractures.begin(), state.fractures.end(),
             [](const FractureResult& a, const FractureResult& b) { return a.id < b.id; });
   return state;

@@ -18,7 +18,10 @@
 #include <vector>
 
 #include "geometry/block_network.hpp"
+#include "geometry/face_gauge.hpp"
+#include "dda/system.hpp"
 #include "hydro/flow_solution.hpp"
+#include "hydro/permeability_law.hpp"
 #include "mesh/triangle_mesh.hpp"
 #include "scenario/scenario.hpp"
 
@@ -46,6 +49,8 @@ struct FractureResult {
   double mean_aperture = 0.0;   // m, mechanical: the opening where open, 0 where closed; mean over the length
   double max_aperture = 0.0;    // m, the largest opening where open
   double max_shear = 0.0;       // m, largest |relative displacement along the face|
+  double hydraulic_aperture = 0.0;  // m, mean over the length (hydro::JointApertureLaw)
+  double normal_stress = 0.0;   // Pa, compressive contact forces on it over its closed length (0 when open)
   std::optional<double> flow;   // m²/s per metre of thickness, along the trace (from → to)
 };
 
@@ -57,6 +62,7 @@ struct FracturePiece {
   double aperture = 0.0;  // m, mean over the piece
   double shear = 0.0;     // m, mean over the piece
   bool open = false;
+  double hydraulic_aperture = 0.0;  // m
 };
 
 struct FractureState {
@@ -72,8 +78,12 @@ class FractureMeter {
 
   // The fractures with the blocks at `blocks` (current vertices, in the network's block
   // order, each with its initial vertex count). A point of a face is open where its opening
-  // exceeds `open_threshold` (m). Throws std::invalid_argument when the blocks do not fit.
-  FractureState measure(std::span<const geometry::Polygon> blocks, double open_threshold) const;
+  // exceeds `open_threshold` (m). The hydraulic apertures follow `law` with the effective normal
+  // stress of the DDA's `contacts` (none: unloaded). Throws std::invalid_argument when the
+  // blocks do not fit.
+  FractureState measure(std::span<const geometry::Polygon> blocks, double open_threshold,
+                        std::span<const dda::ContactInfo> contacts = {},
+                        const hydro::JointApertureLaw& law = {}) const;
 
   // The flow along each fracture, from the fluid field on `mesh`:
   //   Q_f = (1/L_f) Σ_{e ∈ Z_f} (q_e · t_f) A_e,
@@ -95,17 +105,11 @@ class FractureMeter {
   const FractureLayout& layout() const { return layout_; }
 
  private:
-  // A node along a face, with the material point of each side's edge it is measured at.
-  struct SideRef {
-    int block = -1, edge = -1;
-    double t = 0.0;  // along the edge, from its first vertex
-  };
+  // A node along a face, with the gauge across it there.
   struct Node {
     double s = 0.0;  // m, along the face
-    SideRef minus, plus;
+    geometry::FaceGauge gauge;
   };
-  static geometry::Point material_point(const SideRef& r, std::span<const geometry::Polygon> blocks);
-  static geometry::Point outward_normal(std::span<const geometry::Polygon> blocks, const SideRef& r);
   struct Face {
     geometry::Segment2 segment;
     int fracture = 0;

@@ -2,8 +2,10 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <optional>
 
 #include "run/fracture_output.hpp"
+#include "run/model_building.hpp"
 #include "run/mechanics_model.hpp"
 #include "run/paraview_output.hpp"
 #include "run/run_summary.hpp"
@@ -39,6 +41,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
 
   ParaviewOutput paraview(context.folder, s.output.fields);
   const std::optional<FractureMeter> meter = make_fracture_meter(s);
+  const hydro::JointApertureLaw joint_law = make_joint_aperture_law(s);
   FractureOutput fractures(context.folder, /*with_flow=*/false);
   std::vector<geometry::Polygon> polygons;
   std::optional<FractureState> fracture_state;  // at the last output step
@@ -49,7 +52,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
     if (!meter) return;
     polygons.clear();
     for (int b = 0; b < system.block_count(); ++b) polygons.push_back(system.polygon(b));
-    fracture_state = meter->measure(polygons, system.penetration_tolerance());
+    fracture_state = meter->measure(polygons, system.penetration_tolerance(), system.contacts(), joint_law);
     const FractureState& state = *fracture_state;
     fractures.add_rows(step, time, state);
     if (s.output.fields.fractures) fractures.write_series(static_cast<int>(step), time, state);
@@ -109,6 +112,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
     throw RunFailure(RunStatus::failed, unreached, model.summary());
 
   output::RunSummary summary = model.summary();
+  if (fracture_state) summary.fractures = summarise_fractures(*fracture_state);
   // Mechanics alone has no coupling loop: `converged` says the run reached its end.
   summary.converged = true;
   summary.timings.push_back(

@@ -131,6 +131,11 @@ std::vector<dda::BlockDefinition> build_blocks(const Scenario& s) {
   return blocks;
 }
 
+hydro::JointApertureLaw make_joint_aperture_law(const Scenario& s) {
+  return {s.joint.residual_aperture.value_or(0.0), s.joint.normal_stiffness.value_or(0.0),
+          s.joint.max_closure.value_or(0.0)};
+}
+
 coupling::PermeabilityModel make_permeability_model(const Scenario& s) {
   coupling::PermeabilityModel model;
   const scenario::MaterialDefinition& material = s.materials.front();

@@ -11,6 +11,7 @@
 #include "dda/definitions.hpp"
 #include "hydro/darcy_solver.hpp"
 #include "mesh/mesh_request.hpp"
+#include "hydro/permeability_law.hpp"
 #include "mesh/triangle_mesh.hpp"
 #include "run/model_geometry.hpp"
 
@@ -40,6 +41,9 @@ dda::ModelDefinition build_mechanics_model(const scenario::Scenario& scenario,
 std::vector<dda::EdgeTraction> build_tractions(const scenario::Scenario& scenario,
                                                const std::vector<dda::BlockDefinition>& blocks);
 // The permeability law of [flow] with the (only) material's porosity and grain size.
+// The joints' hydraulic aperture law from [joint] (all zero when it gives none: an open joint
+// then has its opening, a closed one nothing).
+hydro::JointApertureLaw make_joint_aperture_law(const scenario::Scenario& scenario);
 coupling::PermeabilityModel make_permeability_model(const scenario::Scenario& scenario);
 
 // Per block, the Biot coefficient of its material.

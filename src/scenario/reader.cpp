@@ -193,7 +193,9 @@ void read_materials(ReadContext& ctx, const TableView& root, Scenario& s) {
 void read_joint(ReadContext& ctx, const TableView& root, Scenario& s) {
   const toml::table* t = root.table("joint");
   if (!t) return;
-  const TableView j(ctx, *t, "joint", {"friction_angle", "cohesion", "tensile_strength"});
+  const TableView j(ctx, *t, "joint",
+                    {"friction_angle", "cohesion", "tensile_strength", "residual_aperture", "normal_stiffness",
+                     "max_closure"});
   s.joint.friction_angle = j.number_or("friction_angle", s.joint.friction_angle);
   s.joint.cohesion = j.number_or("cohesion", s.joint.cohesion);
   s.joint.tensile_strength = j.number_or("tensile_strength", s.joint.tensile_strength);
@@ -201,6 +203,23 @@ void read_joint(ReadContext& ctx, const TableView& root, Scenario& s) {
             "must lie in [0, 90) degrees");
   j.require("cohesion", s.joint.cohesion >= 0.0, "must be >= 0");
   j.require("tensile_strength", s.joint.tensile_strength >= 0.0, "must be >= 0");
+  JointDefinition& joint = s.joint;
+  joint.residual_aperture = j.number("residual_aperture");
+  joint.normal_stiffness = j.number("normal_stiffness");
+  joint.max_closure = j.number("max_closure");
+  for (const char* key : {"residual_aperture", "normal_stiffness", "max_closure"})
+    if (j.has(key) && joint.hydraulic_line == 0) joint.hydraulic_line = j.line_of_key(key);
+  if (joint.residual_aperture)
+    j.require("residual_aperture", *joint.residual_aperture >= 0.0 && *joint.residual_aperture < 1.0,
+              "must lie in [0, 1) m");
+  if (joint.normal_stiffness) j.require("normal_stiffness", *joint.normal_stiffness > 0.0, "must be > 0 (Pa/m)");
+  if (joint.max_closure) j.require("max_closure", *joint.max_closure > 0.0 && *joint.max_closure < 1.0,
+                                   "must lie in (0, 1) m");
+  // The Barton–Bandis closure needs both its stiffness and its largest closure.
+  if (joint.normal_stiffness && !joint.max_closure)
+    ctx.error(j.line_of_key("normal_stiffness"), "joint.max_closure", "required with joint.normal_stiffness");
+  if (joint.max_closure && !joint.normal_stiffness)
+    ctx.error(j.line_of_key("max_closure"), "joint.normal_stiffness", "required with joint.max_closure");
 }
 
 void read_mechanics(ReadContext& ctx, const TableView& root, Scenario& s) {

@@ -86,6 +86,13 @@ struct JointDefinition {
   double friction_angle = 30.0;   // degrees
   double cohesion = 0.0;          // Pa
   double tensile_strength = 0.0;  // Pa
+  // The joints' hydraulic aperture (docs/coupling.md, "Joint hydraulic apertures"): with any
+  // of these given, joints carry a³/12 along their traces, closed or open.
+  std::optional<double> residual_aperture;  // m, a closed joint's aperture (default 0)
+  std::optional<double> normal_stiffness;   // k_ni, Pa/m: Barton–Bandis closure, with max_closure
+  std::optional<double> max_closure;        // V_m, m
+  int hydraulic_line = 0;                   // where the first of them is, for messages
+  bool hydraulic() const { return residual_aperture || normal_stiffness || max_closure; }
 };
 
 enum class Analysis { Static, Dynamic };

@@ -309,6 +309,15 @@ void validate_scenario(ReadContext& ctx, const TableView& root, Scenario& s) {
   }
 
   check_static_support(ctx, root, s);
+  // Joint hydraulic apertures belong to the traces a domain is cut along, and are measured on
+  // the blocks' contacts.
+  if (s.joint.hydraulic() && !(s.geometry && !s.geometry->domain.empty()))
+    ctx.error(s.joint.hydraulic_line, "joint.residual_aperture",
+              "joint hydraulic apertures need a geometry.domain cut by fractures (joints are its traces)");
+  if (s.joint.hydraulic() && s.flow && !s.mechanics)
+    ctx.error(s.joint.hydraulic_line, "joint.residual_aperture",
+              "joint hydraulic apertures are measured on the blocks' contacts: they need a [mechanics] section "
+              "(a flow-only run keeps the porosity law)");
   if (s.mechanics) {
     for (const PrescribedDisplacement& d : s.mechanics->displacements)
       check_boundary_reference(ctx, s, d.line, "mechanics.displacement.boundary", d.boundary);

@@ -111,7 +111,8 @@ def main():
     # The column is cut by two 1 m fractures (ids 0 and 1): their lines add up to 1 m each (the
     # blocks strain by ~1e-7), and a closed piece has no aperture.
     fractures = open_series(folder, "fractures", iterations, times_seen)
-    cell = arrays(fractures, "cell", {"fracture": 1, "aperture": 1, "shear": 1, "open": 1, "flow": 1})
+    cell = arrays(fractures, "cell",
+                  {"fracture": 1, "aperture": 1, "shear": 1, "open": 1, "hydraulic_aperture": 1, "flow": 1})
     lengths = {}
     for c in range(fractures.GetNumberOfCells()):
         ids = fractures.GetCell(c).GetPointIds()
@@ -122,6 +123,9 @@ def main():
         expect(cell["aperture"].GetValue(c) >= 0.0, f"fracture piece {c} aperture")
         if cell["open"].GetValue(c) == 0.0:
             expect(cell["aperture"].GetValue(c) == 0.0, f"closed fracture piece {c} has an aperture")
+        # No [joint] hydraulic keys: the hydraulic aperture is the mechanical one.
+        expect(cell["hydraulic_aperture"].GetValue(c) == cell["aperture"].GetValue(c),
+               f"fracture piece {c} hydraulic aperture")
     expect(sorted(lengths) == [0, 1], f"fracture ids {sorted(lengths)}, expected [0, 1]")
     for f, length in lengths.items():
         expect(abs(length - 1.0) <= 1e-6, f"fracture {f} is {length} m long, expected 1 m")

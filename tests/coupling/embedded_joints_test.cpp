@@ -1,0 +1,158 @@
+// Joints as embedded fractures (coupling/embedded_joints.hpp, hydro::JointApertureLaw):
+// - the Barton–Bandis law's values, a(σ) = a_r + V_m − σ V_m / (k_ni V_m + σ) (1e-15 relative);
+// - the pieces of a face inside the elements add up to the face (1e-12 relative), along
+//   element edges too, where each of the two elements takes half;
+// - a joint in an all but impermeable matrix carries (ρg/μ)(a³/12) Δh/L exactly for a head
+//   linear along it (the P1 identity Σ_e L_e ∂φ_i/∂s = 0 at every node off its ends): 1e-6
+//   relative, the matrix's own share being 1e-8 of it;
+// - its aperture follows the gauge (open: a(0) + opening) and the contact forces (closed:
+//   σn = Σ F / closed length);
+// - isotropic tensors solve bit for bit as the scalar permeabilities.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "coupling/embedded_joints.hpp"
+#include "geometry/block_network.hpp"
+#include "hydro/darcy_solver.hpp"
+#include "hydro/permeability_law.hpp"
+#include "structured_mesh.hpp"
+
+namespace hydrodda::coupling {
+namespace {
+
+using geometry::Point;
+using geometry::Polygon;
+
+constexpr double kRhoGOverMu = 1000.0 * 9.81 / 1.0e-3;
+
+TEST(JointApertureLaw, BartonBandisClosure) {
+  const hydro::JointApertureLaw law{1.0e-5, 2.0e11, 1.0e-4};
+  EXPECT_DOUBLE_EQ(law.at_zero_stress(), 1.1e-4);
+  EXPECT_DOUBLE_EQ(law.closed(0.0), 1.1e-4);
+  EXPECT_DOUBLE_EQ(law.closed(-5.0e6), 1.1e-4);  // tension does not squeeze it
+  for (const double sigma : {1.0e5, 5.0e6, 2.0e7, 1.0e9}) {
+    const double expected = 1.0e-5 + 1.0e-4 - sigma * 1.0e-4 / (2.0e11 * 1.0e-4 + sigma);
+    EXPECT_NEAR(law.closed(sigma), expected, 1e-15 * expected) << sigma;
+  }
+  EXPECT_NEAR(law.closed(2.0e7), 6.0e-5, 1e-18);  // half the closure at σ = k_ni V_m
+  // Towards the residual aperture: a − a_r = V_m k_ni V_m / (k_ni V_m + σ), 2e-12 m at 1e15 Pa.
+  EXPECT_NEAR(law.closed(1.0e15) - 1.0e-5, 1.0e-4 * 2.0e7 / (2.0e7 + 1.0e15), 1e-17);
+  EXPECT_DOUBLE_EQ(law.open(2.0e-4), 3.1e-4);
+  const hydro::JointApertureLaw residual_only{1.0e-4, 0.0, 0.0};
+  EXPECT_EQ(residual_only.closed(1.0e8), 1.0e-4);
+  EXPECT_EQ(residual_only.open(1.0e-3), 1.1e-3);
+}
+
+struct Model {
+  mesh::TriangleMesh mesh;
+  geometry::BlockNetwork network;
+};
+
+// A unit square on a structured n × n mesh, cut by one joint from (0, y0) to (1, y1), no
+// initial aperture; boundaries "left" and "right" named.
+Model make_model(int n, double y0, double y1) {
+  Model m;
+  m.mesh = testing::make_rectangle_mesh(0.0, 0.0, 1.0, 1.0, n, n);
+  m.mesh.boundary_names = {"left", "right"};
+  for (const auto& e : mesh::find_boundary_edges(m.mesh.triangles)) {
+    const Point a = m.mesh.nodes[e[0]], b = m.mesh.nodes[e[1]];
+    int name = mesh::BoundaryEdge::kUnnamed;
+    if (a.x == 0.0 && b.x == 0.0) name = 0;
+    if (a.x == 1.0 && b.x == 1.0) name = 1;
+    m.mesh.boundary_edges.push_back({e, name});
+  }
+  geometry::BlockNetworkRequest request;
+  request.domain = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  request.traces = {{{{0.0, y0}, {1.0, y1}}, {}}};
+  m.network = geometry::build_block_network(request);
+  return m;
+}
+
+double crossed_length(const EmbeddedJoints& joints) {
+  double total = 0.0;
+  for (const JointCrossing& c : joints.crossings()) total += c.length;
+  return total;
+}
+
+TEST(EmbeddedJoints, PiecesAddUpToTheFaceAcrossAndAlongElements) {
+  for (const auto& [y0, y1] : {std::pair{0.3, 0.7}, std::pair{0.5, 0.5}, std::pair{0.05, 0.95}}) {
+    const Model m = make_model(10, y0, y1);
+    ASSERT_EQ(m.network.faces.size(), 1u);
+    const EmbeddedJoints joints(m.mesh, m.network, {1.0e-4, 0.0, 0.0});
+    const double length = std::hypot(1.0, y1 - y0);
+    EXPECT_NEAR(crossed_length(joints), length, 1e-12 * length) << y0 << " " << y1;
+    // The zone holds every crossed element.
+    for (const JointCrossing& c : joints.crossings()) EXPECT_TRUE(joints.zone()[c.element]);
+  }
+  // y = 0.5 runs along element edges: every piece is half of an edge in each of two elements.
+  const Model along = make_model(10, 0.5, 0.5);
+  const EmbeddedJoints joints(along.mesh, along.network, {1.0e-4, 0.0, 0.0});
+  EXPECT_EQ(joints.crossings().size(), 20u);
+  for (const JointCrossing& c : joints.crossings()) EXPECT_NEAR(c.length, 0.05, 1e-14);
+}
+
+// Outflow through the right side of the joint's flow, heads 1 and 0 on the left and right.
+double joint_outflow(const Model& m, double aperture, double k_matrix) {
+  const EmbeddedJoints joints(m.mesh, m.network, {aperture, 0.0, 0.0});
+  std::vector<double> iso(m.mesh.triangles.size(), k_matrix);
+  const std::vector<double> apertures(joints.crossings().size(), aperture);
+  hydro::DarcySolver solver(m.mesh, {{}, {{"left", hydro::BoundaryKind::head, 1.0}, {"right", hydro::BoundaryKind::head, 0.0}}});
+  return solver.solve(joints.permeability(iso, apertures)).boundary_flow("right");
+}
+
+TEST(EmbeddedJoints, JointCarriesTheCubicLawOnEveryMesh) {
+  const double a = 1.0e-4, k_matrix = 1.0e-25;
+  for (const auto& [y0, y1] : {std::pair{0.3, 0.7}, std::pair{0.5, 0.5}, std::pair{0.37, 0.41}})
+    for (const int n : {4, 9, 20}) {
+      const Model m = make_model(n, y0, y1);
+      const double length = std::hypot(1.0, y1 - y0);
+      // Q = (ρg/μ)(a³/12) Δh / L, plus the matrix's (ρg/μ) k_m Δh (1e-8 of it).
+      const double expected = kRhoGOverMu * (a * a * a / 12.0 / length + k_matrix);
+      EXPECT_NEAR(joint_outflow(m, a, k_matrix), expected, 1e-6 * expected) << n << " " << y0 << " " << y1;
+    }
+}
+
+TEST(EmbeddedJoints, ApertureFollowsTheGaugeAndTheContactForces) {
+  const Model m = make_model(8, 0.5, 0.5);
+  const hydro::JointApertureLaw law{1.0e-5, 2.0e11, 1.0e-4};
+  const EmbeddedJoints joints(m.mesh, m.network, law);
+  std::vector<Polygon> blocks = m.network.blocks;
+  // Closed and unloaded: a(0).
+  for (double a : joints.apertures(blocks, {}, 1e-9)) EXPECT_DOUBLE_EQ(a, law.at_zero_stress());
+  // Closed under 3 kN on the 1 m face, shared by two contacts: σn = 3 MPa.
+  int upper = -1, edge = -1;
+  for (std::size_t b = 0; b < blocks.size(); ++b)
+    for (std::size_t e = 0; e < m.network.edge_fractures[b].size(); ++e)
+      if (m.network.edge_fractures[b][e] == 0 && geometry::centroid(blocks[b]).y > 0.5) {
+        upper = static_cast<int>(b);
+        edge = static_cast<int>(e);
+      }
+  ASSERT_GE(upper, 0);
+  const int lower = 1 - upper;
+  std::vector<dda::ContactInfo> contacts{{{lower, 0, upper, edge}, dda::ContactState::locked, 0.0, 1.0e6},
+                                         {{lower, 1, upper, edge}, dda::ContactState::locked, 0.0, 2.0e6},
+                                         {{lower, 2, upper, edge}, dda::ContactState::open, -1e-3, 5.0e6}};
+  for (double a : joints.apertures(blocks, contacts, 1e-9)) EXPECT_DOUBLE_EQ(a, law.closed(3.0e6));
+  // The upper block lifted by 0.2 mm: open, a(0) + 0.2 mm, whatever the contacts say.
+  for (Point& p : blocks[upper]) p.y += 2.0e-4;
+  for (double a : joints.apertures(blocks, contacts, 1e-9)) EXPECT_NEAR(a, law.open(2.0e-4), 1e-15);
+}
+
+TEST(EmbeddedJoints, IsotropicTensorsSolveBitForBitAsScalars) {
+  const Model m = make_model(9, 0.3, 0.7);
+  std::vector<double> k(m.mesh.triangles.size());
+  for (std::size_t t = 0; t < k.size(); ++t) k[t] = 1.0e-12 * (1.0 + 0.37 * std::sin(3.0 * t));
+  std::vector<hydro::PermeabilityTensor> tensors;
+  for (double v : k) tensors.push_back({v, 0.0, v});
+  hydro::DarcySolver solver(m.mesh, {{}, {{"left", hydro::BoundaryKind::head, 1.0}, {"right", hydro::BoundaryKind::head, 0.0}}});
+  const hydro::FlowSolution scalar = solver.solve(k);
+  const hydro::FlowSolution tensor = solver.solve(tensors);
+  EXPECT_EQ(scalar.head, tensor.head);
+  EXPECT_EQ(scalar.boundary_flow("right"), tensor.boundary_flow("right"));
+  for (const hydro::PermeabilityTensor& t : tensors) EXPECT_EQ(largest_principal_value(t), t.xx);
+}
+
+}  // namespace
+}  // namespace hydrodda::coupling
