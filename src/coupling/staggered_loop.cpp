@@ -114,7 +114,8 @@ hydro::FlowSolution StaggeredLoop::solve_flow(const std::vector<geometry::Polygo
     if (joints_->zone()[e]) permeability_[e] = k_matrix;
   joint_apertures_ = joints_->apertures(blocks, mechanics_.contacts(), mechanics_.penetration_tolerance());
   check_finite(joint_apertures_, "a joint's hydraulic aperture", iteration_);
-  std::vector<hydro::PermeabilityTensor> k = joints_->permeability(permeability_, joint_apertures_);
+  std::vector<hydro::PermeabilityTensor>& k = permeability_tensors_;
+  k = joints_->permeability(permeability_, joint_apertures_);
   for (std::size_t e = 0; e < k.size(); ++e) {
     if (fixed(e)) k[e] = {*settings_.fixed_permeability[e], 0.0, *settings_.fixed_permeability[e]};
     permeability_[e] = largest_principal_value(k[e]);

@@ -147,6 +147,8 @@ class StaggeredLoop {
   const PorosityField& porosity() const { return porosity_; }
   // Per element: k (m²), or with joints the tensor's largest principal value (k where isotropic).
   const std::vector<double>& permeability() const { return permeability_; }
+  // With joints, the tensors the flow was solved with (one per element); empty without.
+  const std::vector<hydro::PermeabilityTensor>& permeability_tensors() const { return permeability_tensors_; }
   // How far the blocks have left the fluid mesh now.
   MeshExcursion outside_mesh() const { return boundary_gaps_.find_excursion(current_blocks()); }
   // The joints' hydraulic aperture at each crossing of the last pass (none without joints).
@@ -173,6 +175,7 @@ class StaggeredLoop {
   bool seepage_ = false;             // some block has α > 0
   std::optional<EmbeddedJoints> joints_;
   std::vector<double> joint_apertures_;
+  std::vector<hydro::PermeabilityTensor> permeability_tensors_;  // with joints: the last pass's
 
   std::vector<Point> centroids_;  // of the fixed mesh's elements
   int iteration_ = 0;   // passes started

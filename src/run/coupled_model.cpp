@@ -44,7 +44,7 @@ CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::option
   settings.stop_requested = [this] { return stop_requested_ && stop_requested_(); };
   loop_.emplace(mesh_, build_flow_problem(*s.flow), *system_, std::move(settings));
   // The unfractured case does not change between passes: solved once.
-  matrix_flow_ = solve_matrix_flow(s, mesh_);
+  region_references_ = reference_regions(s, mesh_);
   last_pass_ = {system_->export_state(), loop_->export_state()};
 }
 
@@ -73,7 +73,7 @@ void CoupledModel::set_flow_boundaries(std::vector<scenario::FlowBoundaryConditi
   changed.flow->boundaries = std::move(boundaries);
   loop_->set_flow_boundary_values(build_flow_problem(*changed.flow).boundaries);
   scenario_ = std::move(changed);
-  matrix_flow_ = solve_matrix_flow(scenario_, mesh_);
+  region_references_ = reference_regions(scenario_, mesh_);
 }
 
 void CoupledModel::set_tractions(std::vector<scenario::Traction> tractions) {
@@ -98,7 +98,9 @@ std::vector<geometry::Polygon> CoupledModel::block_polygons() const {
 output::RunSummary CoupledModel::summary() const {
   output::RunSummary summary = summarise_mechanics(scenario_, *system_);
   if (loop_->has_flow()) {
-    summary.flow = summarise_flow(scenario_, mesh_, loop_->flow(), matrix_flow_, loop_->permeability());
+    summary.flow = summarise_flow(scenario_, mesh_, loop_->flow(), region_references_,
+                                  loop_->permeability_tensors().empty() ? isotropic_tensors(loop_->permeability())
+                                                                        : loop_->permeability_tensors());
     const coupling::MeshExcursion outside = loop_->outside_mesh();
     summary.outside_mesh = output::OutsideMeshSummary{outside.distance, outside.block, outside.blocks_outside};
   }
@@ -107,7 +109,7 @@ output::RunSummary CoupledModel::summary() const {
 }
 
 std::vector<std::optional<output::RegionSummary>> CoupledModel::region_flows() const {
-  return summarise_regions(scenario_, mesh_, loop_->flow(), matrix_flow_, {});
+  return summarise_regions(scenario_, mesh_, loop_->flow(), region_references_, {});
 }
 
 std::vector<output::NamedValue> CoupledModel::timings() const {

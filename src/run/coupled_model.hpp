@@ -15,6 +15,7 @@
 #include "hydro/flow_solution.hpp"
 #include "mesh/triangle_mesh.hpp"
 #include "output/summary.hpp"
+#include "run/run_summary.hpp"
 #include "scenario/scenario.hpp"
 
 namespace hydrodda::run {
@@ -85,7 +86,9 @@ class CoupledModel {
   std::vector<dda::BlockDefinition> initial_blocks_;  // where the tractions' edges are found
   std::optional<dda::System> system_;
   std::optional<coupling::StaggeredLoop> loop_;
-  std::optional<hydro::FlowSolution> matrix_flow_;  // the unfractured case; none without regions
+  // What each flow region is measured against (the unfractured case): found once, and again for
+  // new boundary values.
+  std::vector<RegionReference> region_references_;
   std::function<bool()> stop_requested_;
   CoupledState last_pass_;
 };

@@ -94,7 +94,8 @@ output::RunSummary FlowModel::summary() const {
   output::RunSummary summary;
   summary.title = scenario_.title;
   summary.scenario = scenario_.file.string();
-  summary.flow = summarise_flow(scenario_, mesh_, solution_, solve_matrix_flow(scenario_, mesh_), permeability_);
+  summary.flow = summarise_flow(scenario_, mesh_, solution_, reference_regions(scenario_, mesh_),
+                                isotropic_tensors(permeability_));
   return summary;
 }
 

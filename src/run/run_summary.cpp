@@ -50,41 +50,59 @@ output::RunSummary summarise_mechanics(const scenario::Scenario& s, const dda::S
   return summary;
 }
 
-std::optional<hydro::FlowSolution> solve_matrix_flow(const scenario::Scenario& s, const mesh::TriangleMesh& mesh) {
-  if (s.flow->regions.empty()) return std::nullopt;
+std::vector<hydro::PermeabilityTensor> isotropic_tensors(std::span<const double> permeability) {
+  std::vector<hydro::PermeabilityTensor> tensors;
+  tensors.reserve(permeability.size());
+  for (double k : permeability) tensors.push_back({k, 0.0, k});
+  return tensors;
+}
+
+std::vector<RegionReference> reference_regions(const scenario::Scenario& s, const mesh::TriangleMesh& mesh) {
+  std::vector<RegionReference> references;
+  if (s.flow->regions.empty()) return references;
   hydro::DarcySolver solver(mesh, build_flow_problem(*s.flow));
-  return solver.solve(compute_matrix_permeability(s, mesh));
+  const hydro::FlowSolution matrix = solver.solve(compute_matrix_permeability(s, mesh));
+  for (const scenario::FlowRegion& r : s.flow->regions) {
+    RegionReference reference;
+    reference.triangles = select_triangles_in(mesh, r.polygon);
+    if (!reference.triangles.empty()) {
+      // Measured along the head gradient the boundary conditions impose: along the mean flux
+      // instead, the flux's tilt by the fractures would change what is measured.
+      reference.imposed = hydro::compute_region_flow(mesh, matrix, reference.triangles).mean_head_gradient;
+      reference.matrix_conductivity =
+          hydro::compute_region_flow(mesh, matrix, reference.triangles, reference.imposed).effective_conductivity;
+    }
+    references.push_back(std::move(reference));
+  }
+  return references;
 }
 
 std::vector<std::optional<output::RegionSummary>> summarise_regions(const scenario::Scenario& s,
                                                                   const mesh::TriangleMesh& mesh,
                                                                   const hydro::FlowSolution& solution,
-                                                                  const std::optional<hydro::FlowSolution>& matrix,
-                                                                  std::span<const double> permeability) {
+                                                                  std::span<const RegionReference> references,
+                                                                  std::span<const hydro::PermeabilityTensor> permeability) {
   std::vector<std::optional<output::RegionSummary>> regions;
   std::vector<hydro::Conductivity> conductivity;
   const double per_permeability = build_flow_problem(*s.flow).fluid.conductivity_per_permeability();
-  for (double k : permeability) conductivity.push_back({k * per_permeability, 0.0, k * per_permeability});
-  for (const scenario::FlowRegion& r : s.flow->regions) {
-    const std::vector<int> triangles = select_triangles_in(mesh, r.polygon);
-    if (triangles.empty()) {
+  for (const hydro::PermeabilityTensor& k : permeability)
+    conductivity.push_back({k.xx * per_permeability, k.xy * per_permeability, k.yy * per_permeability});
+  for (std::size_t i = 0; i < references.size(); ++i) {
+    const RegionReference& reference = references[i];
+    if (reference.triangles.empty()) {
       regions.emplace_back();
       continue;
     }
-    // Both measured along the head gradient the boundary conditions impose: the unfractured
-    // case's mean gradient over the region. Along the mean flux instead, the flux's tilt by the
-    // fractures would change what is measured.
-    const geometry::Point imposed = hydro::compute_region_flow(mesh, *matrix, triangles).mean_head_gradient;
-    const hydro::RegionFlow region = hydro::compute_region_flow(mesh, solution, triangles, imposed);
-    const double k_matrix = hydro::compute_region_flow(mesh, *matrix, triangles, imposed).effective_conductivity;
-    output::RegionSummary summary{r.name, region.flow, region.effective_conductivity, k_matrix,
-                                  region.effective_conductivity / k_matrix};
+    const hydro::RegionFlow region = hydro::compute_region_flow(mesh, solution, reference.triangles, reference.imposed);
+    output::RegionSummary summary{s.flow->regions[i].name, region.flow, region.effective_conductivity,
+                                  reference.matrix_conductivity,
+                                  region.effective_conductivity / reference.matrix_conductivity};
     summary.direction = {region.direction.x, region.direction.y};
     if (!conductivity.empty()) {
-      const hydro::EffectiveTensor t = hydro::compute_region_tensor(mesh, conductivity, triangles);
+      const hydro::EffectiveTensor t = hydro::compute_region_tensor(mesh, conductivity, reference.triangles);
       summary.tensor = {t.tensor.xx, t.tensor.xy, t.tensor.yy};
       summary.principal_values = t.principal;
-      for (int i = 0; i < 2; ++i) summary.principal_directions[i] = {t.directions[i].x, t.directions[i].y};
+      for (int j = 0; j < 2; ++j) summary.principal_directions[j] = {t.directions[j].x, t.directions[j].y};
     }
     regions.push_back(summary);
   }
@@ -92,13 +110,12 @@ std::vector<std::optional<output::RegionSummary>> summarise_regions(const scenar
 }
 
 output::FlowSummary summarise_flow(const scenario::Scenario& s, const mesh::TriangleMesh& mesh,
-                                   const hydro::FlowSolution& solution,
-                                   const std::optional<hydro::FlowSolution>& matrix,
-                                   std::span<const double> permeability) {
+                                   const hydro::FlowSolution& solution, std::span<const RegionReference> references,
+                                   std::span<const hydro::PermeabilityTensor> permeability) {
   output::FlowSummary flow;
   for (const hydro::BoundaryFlow& b : solution.boundary_flows) flow.boundaries.push_back({b.name, b.flow});
   flow.balance = solution.balance_error;
-  const auto regions = summarise_regions(s, mesh, solution, matrix, permeability);
+  const auto regions = summarise_regions(s, mesh, solution, references, permeability);
   for (std::size_t i = 0; i < regions.size(); ++i) {
     if (regions[i]) flow.regions.push_back(*regions[i]);
     else spdlog::warn("flow region \"{}\" holds no element: nothing to report", s.flow->regions[i].name);

@@ -8,6 +8,7 @@
 
 #include "dda/system.hpp"
 #include "hydro/flow_solution.hpp"
+#include "hydro/fluid.hpp"
 #include "mesh/triangle_mesh.hpp"
 #include "output/summary.hpp"
 #include "scenario/scenario.hpp"
@@ -23,27 +24,36 @@ output::RunSummary summarise_mechanics(const scenario::Scenario& scenario, const
 // leaves the points where they were). A run that did not do what was asked has not finished.
 std::string describe_unreached_displacement(const scenario::Scenario& scenario, const dda::System& system);
 
-// The flow of the unfractured case (compute_matrix_permeability) under the same boundary
-// conditions, the reference of each region's normalised conductivity; nothing when the
-// scenario has no flow region to report.
-std::optional<hydro::FlowSolution> solve_matrix_flow(const scenario::Scenario& scenario, const mesh::TriangleMesh& mesh);
+// What a [[flow.region]] is measured against, which depends only on the fixed mesh and the
+// boundary conditions: its triangles (none when it holds no element), the head gradient the
+// boundary conditions impose on it (the unfractured case's mean gradient over it) and its
+// effective conductivity along that direction in the unfractured case. Found once per model,
+// and again when the boundary values change.
+struct RegionReference {
+  std::vector<int> triangles;
+  geometry::Point imposed;
+  double matrix_conductivity = 0.0;
+};
 
-// Each [[flow.region]]'s flow and effective conductivity along the head gradient the boundary
-// conditions impose (the unfractured case's mean gradient over the region), with its
-// conductivity in the unfractured case (`matrix`) along the same direction and their ratio, and
-// its full effective tensor from the element permeabilities (m², one per triangle; none when
-// empty), in the scenario's order; none for a region that holds no element.
+// The references of the scenario's regions, in its order, from one solve of the unfractured
+// case (compute_matrix_permeability) under the same boundary conditions; none without regions.
+std::vector<RegionReference> reference_regions(const scenario::Scenario& scenario, const mesh::TriangleMesh& mesh);
+
+// Each [[flow.region]]'s flow and effective conductivity along its imposed gradient, with its
+// conductivity in the unfractured case and their ratio, and its full effective tensor from the
+// element permeability tensors (m², one per triangle; none when empty), in the scenario's
+// order; none for a region that holds no element.
 std::vector<std::optional<output::RegionSummary>> summarise_regions(const scenario::Scenario& scenario,
                                                                   const mesh::TriangleMesh& mesh,
                                                                   const hydro::FlowSolution& solution,
-                                                                  const std::optional<hydro::FlowSolution>& matrix,
-                                                                  std::span<const double> permeability);
+                                                                  std::span<const RegionReference> references,
+                                                                  std::span<const hydro::PermeabilityTensor> permeability);
 
-// Boundary flows, mass balance, and each [[flow.region]]'s flow and effective conductivity,
-// with its conductivity in the unfractured case (`matrix`) and their ratio.
 output::FlowSummary summarise_flow(const scenario::Scenario& scenario, const mesh::TriangleMesh& mesh,
-                                   const hydro::FlowSolution& solution,
-                                   const std::optional<hydro::FlowSolution>& matrix,
-                                   std::span<const double> permeability);
+                                   const hydro::FlowSolution& solution, std::span<const RegionReference> references,
+                                   std::span<const hydro::PermeabilityTensor> permeability);
+
+// Isotropic permeabilities (m²) as tensors k I.
+std::vector<hydro::PermeabilityTensor> isotropic_tensors(std::span<const double> permeability);
 
 }  // namespace hydrodda::run

@@ -105,6 +105,32 @@ TEST(JointApertures, ClosedJointCarriesItsResidualApertureOnEveryMesh) {
   }
 }
 
+// The same closed joint seen by a [[flow.region]] over the whole square: the region's tensor
+// comes from the tensors the flow was solved with. A straight joint of transmissivity
+// T = (ρg/μ) a³/12 crossing the region leaves the linear heads of the tensor's two solves
+// exact, so K = K_m I + T (L/A) t⊗t: its larger principal value K_m + T L (L = √1.16 m, A = 1 m²)
+// along t = (1, 0.4)/L, its smaller the matrix's (1e-6 relative; the joint elements' largest
+// principal value taken as an isotropic k had made both large).
+TEST(JointApertures, ARegionsTensorFollowsTheJoint) {
+  Folder folder("tensor");
+  const std::string text = read_text(kVerification / "coupled_closed_joint.toml") +
+                           "\n[[flow.region]]\nname = \"square\"\npolygon = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]\n";
+  const JointRun r = run_text(text, folder, "tensor");
+  ASSERT_TRUE(r.summary["converged"].get<bool>());
+  const auto& region = r.summary["flow"]["regions"]["square"];
+  const double k_m = region["matrix_conductivity"];
+  const double a = 1.0e-4, length = std::sqrt(1.16);
+  const double along = k_m + kConductivityPerPermeability * a * a * a / 12.0 * length;
+  const auto& tensor = region["conductivity_tensor"];
+  const double larger = std::max(double(tensor["principal_values"][0]), double(tensor["principal_values"][1]));
+  const double smaller = std::min(double(tensor["principal_values"][0]), double(tensor["principal_values"][1]));
+  EXPECT_NEAR(larger, along, 1e-6 * along);
+  EXPECT_NEAR(smaller, k_m, 1e-6 * k_m);
+  const int major = double(tensor["principal_values"][0]) >= double(tensor["principal_values"][1]) ? 0 : 1;
+  const double dx = tensor["principal_directions"][major][0], dy = tensor["principal_directions"][major][1];
+  EXPECT_NEAR(std::abs(dx * 0.4 - dy * 1.0) / length, 0.0, 1e-6);  // parallel to (1, 0.4)
+}
+
 // One joint loaded normally by σ = 0, 5, 10, 15, 20 MPa on the top (rollers elsewhere): its
 // effective normal stress is σ, its hydraulic aperture the Barton–Bandis
 //   a(σ) = a_r + V_m − σ V_m / (k_ni V_m + σ),   a_r = 1e-5 m, V_m = 1e-4 m, k_ni = 2e11 Pa/m,
