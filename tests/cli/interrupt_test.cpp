@@ -42,6 +42,20 @@ bool wait_for_exit(pid_t pid, std::chrono::seconds limit, int& status) {
   return false;
 }
 
+// `hydrodda run SCENARIO -o OUT` started in a child process, its output discarded.
+pid_t start_run(const fs::path& scenario, const fs::path& out) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, STDOUT_FILENO);
+    ::dup2(null, STDERR_FILENO);
+    ::execl(HYDRODDA_BINARY, HYDRODDA_BINARY, "run", scenario.c_str(), "-o", out.c_str(),
+            static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  return pid;
+}
+
 }  // namespace
 
 TEST(Interrupt, ALongCouplingPassStopsAtTheNextStepAndReportsTheLastFinishedState) {
@@ -58,16 +72,8 @@ TEST(Interrupt, ALongCouplingPassStopsAtTheNextStepAndReportsTheLastFinishedStat
   std::ofstream(scenario) << text;
   const fs::path out = dir / "run";
 
-  const pid_t pid = ::fork();
+  const pid_t pid = start_run(scenario, out);
   ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    const int null = ::open("/dev/null", O_WRONLY);
-    ::dup2(null, STDOUT_FILENO);
-    ::dup2(null, STDERR_FILENO);
-    ::execl(HYDRODDA_BINARY, HYDRODDA_BINARY, "run", scenario.c_str(), "-o", out.c_str(),
-            static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
   // scenario.toml is written just before the first pass starts.
   for (int i = 0; i < 600 && !fs::exists(out / "scenario.toml"); ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
@@ -104,16 +110,8 @@ TEST(Interrupt, SigtermAtAnyMomentOfACoupledRunEndsItCleanly) {
   for (int delay_ms = 0; delay_ms <= 600; delay_ms += 60) {
     SCOPED_TRACE("SIGTERM " + std::to_string(delay_ms) + " ms after the run folder appeared");
     fs::remove_all(out);
-    const pid_t pid = ::fork();
+    const pid_t pid = start_run(scenario, out);
     ASSERT_GE(pid, 0);
-    if (pid == 0) {
-      const int null = ::open("/dev/null", O_WRONLY);
-      ::dup2(null, STDOUT_FILENO);
-      ::dup2(null, STDERR_FILENO);
-      ::execl(HYDRODDA_BINARY, HYDRODDA_BINARY, "run", scenario.c_str(), "-o", out.c_str(),
-              static_cast<char*>(nullptr));
-      ::_exit(127);
-    }
     // Loading the program's libraries takes up to a second on a busy machine, before any code
     // of ours runs; the run folder appearing says the signal thread is up.
     int status = 0;
