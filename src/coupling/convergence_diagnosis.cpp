@@ -56,7 +56,8 @@ double return_ratio(const std::vector<double>& change, const std::vector<double>
 
 ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_change,
                                               const std::vector<double>& displacement_change,
-                                              const std::vector<double>& head_change_two_passes, double tolerance) {
+                                              const std::vector<double>& head_change_two_passes, double tolerance,
+                                              std::string_view acceleration) {
   if (head_change.empty() || head_change.size() != displacement_change.size() ||
       head_change.size() != head_change_two_passes.size())
     throw std::invalid_argument("convergence diagnosis: one head and one displacement change per pass are needed");
@@ -74,6 +75,7 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
   else if (d.rate < 0.95) d.behaviour = NonConvergence::still_converging;
   else d.behaviour = NonConvergence::drifting;
 
+  const bool accelerated = acceleration != "none";
   std::string norms = d.head_failed && d.displacement_failed ? "the head and displacement changes"
                       : d.head_failed                        ? "the head change"
                                                              : "the displacement change";
@@ -83,8 +85,13 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
   switch (d.behaviour) {
     case NonConvergence::oscillating:
       d.text = norms + " stayed above the tolerance: the loop oscillates (the " + name + " change near " + level +
-               ", the blocks swinging between two states pass after pass); try coupling.acceleration = "
-               "\"aitken\" or coupling.relaxation = 0.5";
+               ", the blocks swinging between two states pass after pass); " +
+               (accelerated ? "the " + std::string(acceleration) +
+                                  " acceleration did not settle it: add coupling.relaxation = 0.5, or more "
+                                  "mechanics.steps per pass; a joint that jacks open and shut from pass to pass "
+                                  "(history.csv's largest_opening) may have no steady state under this load"
+                            : std::string("try coupling.acceleration = \"anderson\" (or \"aitken\"), or "
+                                          "coupling.relaxation = 0.5"));
       break;
     case NonConvergence::diverging:
       d.text = norms + " stayed above the tolerance: the " + name + " change diverges (×" + format_number(d.rate) +
@@ -95,8 +102,8 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
       d.passes_needed = static_cast<int>(std::ceil(std::log(tolerance / all.back()) / std::log(d.rate)));
       d.text = norms + " stayed above the tolerance: the " + name + " change still falls (×" +
                format_number(d.rate) + " a pass, at " + level + "); about " + std::to_string(d.passes_needed) +
-               " more passes would reach it: raise coupling.max_iterations, or try coupling.acceleration = "
-               "\"aitken\"";
+               " more passes would reach it: raise coupling.max_iterations" +
+               (accelerated ? std::string() : std::string(", or try coupling.acceleration = \"anderson\""));
       break;
     }
     case NonConvergence::drifting:

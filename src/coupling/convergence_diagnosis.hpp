@@ -3,6 +3,7 @@
 // tolerance, how it behaved over the last passes, and what to try.
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace hydrodda::coupling {
@@ -32,8 +33,11 @@ struct ConvergenceDiagnosis {
 //   under 0.1: a swing between two states shows a steady change) or the norm rises and falls by
 //   turns (its pass-to-pass changes alternate in sign at least 60% of the time);
 //   diverging when r > 1.05; still converging when r < 0.95; drifting otherwise.
+// `acceleration` is coupling.acceleration as run ("none", "aitken", "anderson"): the advice
+// names an acceleration only to a loop that had none.
 ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_change,
                                               const std::vector<double>& displacement_change,
-                                              const std::vector<double>& head_change_two_passes, double tolerance);
+                                              const std::vector<double>& head_change_two_passes, double tolerance,
+                                              std::string_view acceleration = "none");
 
 }  // namespace hydrodda::coupling

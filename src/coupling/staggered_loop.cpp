@@ -68,8 +68,10 @@ StaggeredLoop::StaggeredLoop(const mesh::TriangleMesh& mesh, hydro::DarcyProblem
       darcy_(mesh, std::move(flow)),
       porosity_mapper_(mesh.nodes, mesh.triangles),
       boundary_gaps_(mesh.nodes, mesh.triangles, settings_.permeability.domain, current_blocks()),
-      face_loads_(mesh) {
+      face_loads_(mesh),
+      anderson_(settings_.anderson_depth) {
   for (int t = 0; t < mesh.triangle_count(); ++t) centroids_.push_back(mesh::triangle_centroid(mesh, t));
+  for (int b = 0; b < mechanics.block_count(); ++b) block_sizes_.push_back(std::sqrt(mechanics.area(b)));
   if (!settings_.fixed_permeability.empty() &&
       settings_.fixed_permeability.size() != static_cast<std::size_t>(mesh.triangle_count()))
     throw std::invalid_argument("coupling: one fixed-permeability entry per element is needed");
@@ -79,6 +81,7 @@ StaggeredLoop::StaggeredLoop(const mesh::TriangleMesh& mesh, hydro::DarcyProblem
     throw std::invalid_argument("coupling: one Biot coefficient per block is needed");
   if (!(settings_.relaxation > 0.0 && settings_.relaxation <= 1.0))
     throw std::invalid_argument("coupling: the relaxation must lie in (0, 1]");
+  if (settings_.anderson_depth < 1) throw std::invalid_argument("coupling: the Anderson depth must be at least 1");
   if (settings_.ramp_passes < 1) throw std::invalid_argument("coupling: ramp_passes must be at least 1");
   relaxation_ = settings_.relaxation;
   if (settings_.joints)
@@ -122,6 +125,18 @@ hydro::FlowSolution StaggeredLoop::solve_flow(const std::vector<geometry::Polygo
   }
   check_finite(permeability_, "the permeability", iteration_);
   return darcy_.solve(k);
+}
+
+std::vector<EscapingBlock> StaggeredLoop::blocks_beyond_their_size() const {
+  std::vector<EscapingBlock> beyond;
+  for (int b = 0; b < mechanics_.block_count(); ++b) {
+    const Point u = mechanics_.displacement(b);
+    const double distance = std::hypot(u.x, u.y);
+    if (distance > block_sizes_[b]) beyond.push_back({b, distance, block_sizes_[b]});
+  }
+  std::sort(beyond.begin(), beyond.end(),
+            [](const EscapingBlock& a, const EscapingBlock& b) { return a.distance > b.distance; });
+  return beyond;
 }
 
 std::vector<Point> StaggeredLoop::block_displacements() const {
@@ -214,6 +229,7 @@ PassReport StaggeredLoop::run_pass() {
   // Both norms compare this pass with the last, so both passes must have had the full load.
   report.converged = iteration_ > settings_.ramp_passes && report.head_change < settings_.tolerance &&
                      report.displacement_change < settings_.tolerance;
+  if (!report.converged) report.escaping = blocks_beyond_their_size();
   report.head_change_two_passes = heads_two_back_.empty() ? 1.0 : head_change(solution_.head, heads_two_back_);
   heads_two_back_ = std::move(previous_heads_);
   previous_heads_ = solution_.head;
@@ -246,6 +262,10 @@ namespace hydrodda::coupling {
 // one whose updates keep their direction keeps ω near 1.
 void StaggeredLoop::relax(hydro::FlowSolution& fresh) {
   if (previous_heads_.empty()) return;
+  if (settings_.acceleration == Acceleration::anderson) {
+    accelerate_by_anderson(fresh);
+    return;
+  }
   std::vector<double> update(fresh.head.size());
   for (std::size_t i = 0; i < update.size(); ++i) update[i] = fresh.head[i] - previous_heads_[i];
   if (settings_.acceleration == Acceleration::aitken && previous_update_.size() == update.size()) {
@@ -263,6 +283,34 @@ void StaggeredLoop::relax(hydro::FlowSolution& fresh) {
   for (std::size_t i = 0; i < fresh.head.size(); ++i) {
     fresh.head[i] = previous_heads_[i] + w * (fresh.head[i] - previous_heads_[i]);
     fresh.pressure[i] = solution_.pressure[i] + w * (fresh.pressure[i] - solution_.pressure[i]);
+  }
+}
+
+// Anderson acceleration of the loop's fixed point x = G(x) (dda::AndersonAccelerator: Walker &
+// Ni 2011, alg. AA), x the heads and pressures a pass's forces come from and G(x) the next
+// pass's solve on the blocks those forces moved:
+//   f_k = G(x_k) − x_k;  γ = argmin ‖f_k − ΔF γ‖₂ over the last anderson_depth passes;
+//   x_{k+1} = G(x_k) − ΔG γ,  then x_old + ω (x_{k+1} − x_old) with relaxation ω.
+// Heads and pressures go in one vector: the pressure is ρ_w g h plus a fixed term at each node
+// (either convention), so its part of every difference is ρ_w g times the heads' and γ is the
+// one the heads alone give, while the pressures take exactly the same mix. The mix has weights
+// summing to one, so fixed heads on the boundary stay as set. A jacked joint that fills with
+// pressure and closes again swings the plain loop between two states; the secant information
+// of the last few passes lands between them.
+void StaggeredLoop::accelerate_by_anderson(hydro::FlowSolution& fresh) {
+  const auto n = static_cast<Eigen::Index>(fresh.head.size());
+  Eigen::VectorXd x(2 * n), g(2 * n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    x[i] = previous_heads_[i];
+    x[n + i] = solution_.pressure[i];
+    g[i] = fresh.head[i];
+    g[n + i] = fresh.pressure[i];
+  }
+  const Eigen::VectorXd mixed = anderson_.next(x, g);
+  const double w = settings_.relaxation;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    fresh.head[i] = x[i] + w * (mixed[i] - x[i]);
+    fresh.pressure[i] = x[n + i] + w * (mixed[n + i] - x[n + i]);
   }
 }
 

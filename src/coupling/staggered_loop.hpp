@@ -22,19 +22,22 @@
 #include "coupling/porosity.hpp"
 #include "coupling/pressure_forces.hpp"
 #include "coupling/seepage_forces.hpp"
+#include "dda/anderson.hpp"
 #include "dda/system.hpp"
 #include "hydro/darcy_solver.hpp"
 #include "mesh/triangle_mesh.hpp"
 
 namespace hydrodda::coupling {
 
-enum class Acceleration { none, aitken };
+enum class Acceleration { none, aitken, anderson };
 
 struct LoopSettings {
   double tolerance = 1.0e-4;
   double relaxation = 1.0;        // heads: h ← ω h_new + (1 − ω) h_old (with Aitken: the first ω)
-  // Aitken: ω adapted from pass to pass from the last two head updates (StaggeredLoop::relax).
+  // Aitken: ω adapted from pass to pass from the last two head updates; Anderson: the heads
+  // mixed from the last anderson_depth passes (StaggeredLoop::relax).
   Acceleration acceleration = Acceleration::none;
+  int anderson_depth = 5;
   // The fluid forces of pass k are min(1, k / ramp_passes) of the full ones; no pass before
   // the first at full load counts as converged.
   int ramp_passes = 1;
@@ -68,6 +71,16 @@ struct PassInterrupted : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A block that has moved farther than its own size, √(its area), while the loop still moves
+// it: in a static analysis blocks in equilibrium move by their strains and by sliding to a new
+// seat, not by their own size, so the load has no equilibrium the contacts and supports can
+// give it.
+struct EscapingBlock {
+  int block = 0;
+  double distance = 0.0;  // of its centroid from where it was built (m)
+  double size = 0.0;      // √(its area) (m)
+};
+
 // What one pass did and measured.
 struct PassReport {
   int iteration = 0;              // 1-based
@@ -88,6 +101,8 @@ struct PassReport {
   bool converged = false;
   // The change has grown LoopSettings::diverging_passes passes in a row.
   bool diverging = false;
+  // Not converged and some blocks escape (farthest first): no equilibrium to converge to.
+  std::vector<EscapingBlock> escaping;
   int growing_passes = 0;         // passes in a row whose change grew
   // Seconds per phase in this pass.
   double porosity_seconds = 0.0, flow_seconds = 0.0, forces_seconds = 0.0, mechanics_seconds = 0.0;
@@ -118,6 +133,9 @@ struct LoopState {
   // Aitken's state: the last head update h̃ − h_old and the ω it was applied with.
   std::vector<double> previous_update;
   double relaxation = 1.0;
+  // Anderson's history, oldest first: each pass's residual G(x) − x and image G(x), x the heads
+  // and pressures the pass started from, G(x) its solve (dda::AndersonAccelerator::Pass).
+  std::vector<std::vector<double>> anderson_residuals, anderson_images;
   // The permeability whose factor the flow solver keeps for the next pass (empty: none).
   std::vector<double> kept_factor_permeability;
 };
@@ -154,6 +172,8 @@ class StaggeredLoop {
   // The joints' hydraulic aperture at each crossing of the last pass (none without joints).
   const std::optional<EmbeddedJoints>& joints() const { return joints_; }
   const std::vector<double>& joint_apertures() const { return joint_apertures_; }
+  // The blocks farther from where they were built than their own size, farthest first.
+  std::vector<EscapingBlock> blocks_beyond_their_size() const;
   // Passes run to their end (a pass that threw is not counted).
   int iterations() const { return completed_; }
   // A flow solution exists (false until the first pass's solve succeeds).
@@ -163,6 +183,7 @@ class StaggeredLoop {
   std::vector<geometry::Polygon> current_blocks() const;
   hydro::FlowSolution solve_flow(const std::vector<geometry::Polygon>& blocks);
   void relax(hydro::FlowSolution& fresh);
+  void accelerate_by_anderson(hydro::FlowSolution& fresh);
   std::vector<Point> block_displacements() const;
 
   const mesh::TriangleMesh& mesh_;
@@ -178,6 +199,7 @@ class StaggeredLoop {
   std::vector<hydro::PermeabilityTensor> permeability_tensors_;  // with joints: the last pass's
 
   std::vector<Point> centroids_;  // of the fixed mesh's elements
+  std::vector<double> block_sizes_;  // √(area) of each block as built
   int iteration_ = 0;   // passes started
   int completed_ = 0;   // passes finished
   PorosityField porosity_;
@@ -189,6 +211,7 @@ class StaggeredLoop {
   ChangeGrowth growth_;
   std::vector<double> previous_update_;
   double relaxation_ = 1.0;
+  dda::AndersonAccelerator anderson_;
 };
 
 // The displacement norm: the largest distance a block's centroid moved between the passes over

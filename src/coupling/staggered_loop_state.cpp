@@ -1,4 +1,5 @@
 // Export and import of the staggered loop's state between passes (see LoopState).
+#include <deque>
 #include <stdexcept>
 
 #include "coupling/staggered_loop.hpp"
@@ -6,8 +7,13 @@
 namespace hydrodda::coupling {
 
 LoopState StaggeredLoop::export_state() const {
-  return {completed_,       solution_,   previous_heads_, heads_two_back_, previous_displacements_, growth_,
-          previous_update_, relaxation_, darcy_.kept_factor_permeability()};
+  LoopState state{completed_,       solution_,   previous_heads_, heads_two_back_, previous_displacements_, growth_,
+                  previous_update_, relaxation_, {},              {},              darcy_.kept_factor_permeability()};
+  for (const dda::AndersonAccelerator::Pass& pass : anderson_.history()) {
+    state.anderson_residuals.emplace_back(pass.residual.begin(), pass.residual.end());
+    state.anderson_images.emplace_back(pass.image.begin(), pass.image.end());
+  }
+  return state;
 }
 
 void StaggeredLoop::import_state(LoopState state) {
@@ -24,8 +30,11 @@ void StaggeredLoop::import_state(LoopState state) {
                                   (state.heads_two_back.empty() || state.heads_two_back.size() == nodes)
                             : state.flow.head.empty() && state.previous_heads.empty() &&
                                   state.previous_displacements.empty();
+  bool anderson_fits = state.anderson_residuals.size() == state.anderson_images.size();
+  for (std::size_t i = 0; anderson_fits && i < state.anderson_residuals.size(); ++i)
+    anderson_fits = state.anderson_residuals[i].size() == 2 * nodes && state.anderson_images[i].size() == 2 * nodes;
   const std::size_t kept = state.kept_factor_permeability.size();
-  if (!fits || (kept != 0 && kept != static_cast<std::size_t>(mesh_.triangle_count())))
+  if (!fits || !anderson_fits || (kept != 0 && kept != static_cast<std::size_t>(mesh_.triangle_count())))
     throw std::invalid_argument("coupling state: sizes do not fit the mesh and the blocks");
   // The flow solver's kept factor, made again from its permeability: the next pass's solve
   // then starts from the very factor it had.
@@ -38,6 +47,13 @@ void StaggeredLoop::import_state(LoopState state) {
   growth_ = state.growth;
   previous_update_ = std::move(state.previous_update);
   relaxation_ = state.relaxation;
+  std::deque<dda::AndersonAccelerator::Pass> history;
+  for (std::size_t i = 0; i < state.anderson_residuals.size(); ++i)
+    history.push_back({Eigen::Map<const Eigen::VectorXd>(state.anderson_residuals[i].data(),
+                                                         static_cast<Eigen::Index>(state.anderson_residuals[i].size())),
+                       Eigen::Map<const Eigen::VectorXd>(state.anderson_images[i].data(),
+                                                         static_cast<Eigen::Index>(state.anderson_images[i].size()))});
+  anderson_.restore(std::move(history));
 }
 
 }  // namespace hydrodda::coupling

@@ -33,11 +33,15 @@ class AndersonAccelerator {
   // of two maps would aim at neither's fixed point.
   void reset() { history_.clear(); }
 
- private:
+  // The passes remembered, oldest first, and their restoration (for checkpoints).
   struct Pass {
     Eigen::VectorXd residual;  // G(x) − x
     Eigen::VectorXd image;     // G(x)
   };
+  const std::deque<Pass>& history() const { return history_; }
+  void restore(std::deque<Pass> history) { history_ = std::move(history); }
+
+ private:
   int depth_;
   std::deque<Pass> history_;
 };

@@ -12,7 +12,7 @@ constexpr std::string_view kMagic = "hydrodda checkpoint\n";
 // and no timings (so that identical runs write identical checkpoints); 5: the flow solver's kept
 // factor (its permeability) at the end. Only the current format is read: a run stopped by an
 // older hydrodda is run again.
-constexpr std::int64_t kVersion = 5;
+constexpr std::int64_t kVersion = 6;
 // The last 8 bytes: hash_text() of every byte before them. FNV-1a steps are bijective in the
 // state, so any one changed byte changes the sum: a flipped bit is refused, not resumed from.
 constexpr std::size_t kChecksumSize = sizeof(std::uint64_t);
@@ -257,6 +257,8 @@ std::string encode_checkpoint(const RunCheckpoint& c) {
   w.put(c.coupling.heads_two_back);
   w.put(c.coupling.previous_update);
   w.put(c.coupling.relaxation);
+  w.put(c.coupling.anderson_residuals);
+  w.put(c.coupling.anderson_images);
   w.put(c.coupling.kept_factor_permeability);
   std::string bytes = w.take();
   const std::uint64_t checksum = hash_text(bytes);
@@ -316,6 +318,8 @@ RunCheckpoint decode_checkpoint(std::string_view file) {
   r.get(c.coupling.heads_two_back);
   r.get(c.coupling.previous_update);
   r.get(c.coupling.relaxation);
+  r.get(c.coupling.anderson_residuals);
+  r.get(c.coupling.anderson_images);
   r.get(c.coupling.kept_factor_permeability);
   r.expect_end();
   return c;

@@ -1,9 +1,11 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 #include <utility>
 
@@ -46,6 +48,28 @@ ProgressReport report_pass(const coupling::PassReport& r) {
   report.message = fmt::format("iteration {}: head change {:.2e}, displacement change {:.2e}", r.iteration,
                                r.head_change, r.displacement_change);
   return report;
+}
+
+// coupling.acceleration as the scenario spells it.
+std::string_view acceleration_name(scenario::LoopAcceleration a) {
+  return a == scenario::LoopAcceleration::anderson ? "anderson"
+         : a == scenario::LoopAcceleration::aitken ? "aitken"
+                                                   : "none";
+}
+
+// "no mechanical equilibrium ...: blocks 12 (moved 2.91 m, size 1 m), ...", the farthest eight.
+std::string describe_escape(const std::vector<coupling::EscapingBlock>& escaping, int iteration) {
+  std::string blocks;
+  const std::size_t named = std::min<std::size_t>(escaping.size(), 8);
+  for (std::size_t i = 0; i < named; ++i)
+    blocks += fmt::format("{}block {} (moved {:.3g} m, size {:.3g} m)", i == 0 ? "" : ", ", escaping[i].block,
+                          escaping[i].distance, escaping[i].size);
+  if (named < escaping.size()) blocks += fmt::format(" and {} more", escaping.size() - named);
+  return fmt::format(
+      "no mechanical equilibrium under this load: at coupling iteration {}, {} block(s) have moved farther than "
+      "their own size (the square root of their area) and the loop still moves them: {}; the fluid load exceeds "
+      "what the blocks' weight, their contacts and the supports can hold",
+      iteration, escaping.size(), blocks);
 }
 
 }  // namespace
@@ -178,7 +202,7 @@ output::RunSummary run_coupled(const RunContext& context) {
           r.mechanics_seconds);
       converged = r.converged;
       // The first pass, every `every`-th, and the last (written below if not here).
-      if (r.iteration == 1 || r.iteration % s.output.every == 0 || converged || r.diverging) {
+      if (r.iteration == 1 || r.iteration % s.output.every == 0 || converged || r.diverging || !r.escaping.empty()) {
         write_fields(r.iteration);
         last_written = r.iteration;
       }
@@ -190,6 +214,8 @@ output::RunSummary run_coupled(const RunContext& context) {
                                      r.growing_passes, r.head_change, r.displacement_change, r.iteration),
                          current_summary());
       }
+      if (!r.escaping.empty())
+        throw RunFailure(RunStatus::failed, describe_escape(r.escaping, r.iteration), current_summary());
     }
     // The last state's fields, unless the run is to be continued (it writes them at its end).
     if (!stopped && loop.iterations() > 0 && last_written != loop.iterations()) {
@@ -206,7 +232,11 @@ output::RunSummary run_coupled(const RunContext& context) {
                                  loop.iterations()),
                      current_summary());
   } catch (const std::exception& e) {
-    throw RunFailure(RunStatus::failed, fmt::format("coupling iteration {} failed: {}", loop.iterations() + 1, e.what()),
+    // A DDA step that fails while blocks fly off is the escape, not the step, to report.
+    const std::vector<coupling::EscapingBlock> escaping = loop.blocks_beyond_their_size();
+    throw RunFailure(RunStatus::failed,
+                     fmt::format("coupling iteration {} failed: {}{}", loop.iterations() + 1, e.what(),
+                                 escaping.empty() ? "" : "; " + describe_escape(escaping, loop.iterations() + 1)),
                      current_summary());
   }
   if (stopped) {
@@ -232,7 +262,8 @@ output::RunSummary run_coupled(const RunContext& context) {
     std::vector<double> two_passes;  // history.csv's third column from the end
     for (const std::vector<std::string>& row : checkpoint.history) two_passes.push_back(std::stod(row[row.size() - 3]));
     const coupling::ConvergenceDiagnosis why =
-        coupling::diagnose_non_convergence(convergence.head_change, convergence.displacement_change, two_passes, s.coupling.tolerance);
+        coupling::diagnose_non_convergence(convergence.head_change, convergence.displacement_change, two_passes,
+                                           s.coupling.tolerance, acceleration_name(s.coupling.acceleration));
     summary.message = fmt::format("the coupling loop did not converge in {} iterations (tolerance {:g}): {}",
                                   s.coupling.max_iterations, s.coupling.tolerance, why.text);
     spdlog::warn("{}", summary.message);

@@ -457,7 +457,8 @@ void read_coupling(ReadContext& ctx, const TableView& root, Scenario& s) {
   s.coupling.relaxation = c.number_or("relaxation", s.coupling.relaxation);
   c.require("relaxation", s.coupling.relaxation > 0.0 && s.coupling.relaxation <= 1.0,
             "must lie in (0, 1]");
-  s.coupling.aitken = c.choice("acceleration", {"none", "aitken"}, "none") == 1;
+  s.coupling.acceleration =
+      static_cast<LoopAcceleration>(c.choice("acceleration", {"none", "aitken", "anderson"}, "none"));
   if (auto n = c.integer("ramp_passes", 1, 1'000'000)) s.coupling.ramp_passes = *n;
 }
 

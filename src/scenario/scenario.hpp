@@ -206,11 +206,15 @@ struct MeshDefinition {
   int file_line = 0;                          // line of mesh.file, for messages about it
 };
 
+// coupling.acceleration: none; "aitken", the relaxation adapted from pass to pass; "anderson",
+// the heads mixed from the last passes.
+enum class LoopAcceleration { none, aitken, anderson };
+
 struct CouplingDefinition {
   double tolerance = 1.0e-4;
   int max_iterations = 50;
   double relaxation = 1.0;
-  bool aitken = false;   // acceleration = "aitken": the relaxation adapted from pass to pass
+  LoopAcceleration acceleration = LoopAcceleration::none;
   int ramp_passes = 1;   // the fluid load raised over the first passes
 };
 

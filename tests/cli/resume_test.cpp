@@ -65,6 +65,31 @@ TEST(Resume, StoppedAndResumedRunMatchesAnUninterruptedOneBitForBit) {
   EXPECT_NE(again.output.find("already converged"), std::string::npos) << again.output;
 }
 
+// Anderson's mixing reads the passes before it: the checkpoint keeps them, so a run stopped
+// after pass 2 (one pass in the history) and resumed mixes pass 3 as the whole run does.
+TEST(Resume, AndersonAcceleratedRunResumesBitForBit) {
+  Folders f("anderson");
+  std::ifstream in(kSixBlock);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string scenario = text.str();
+  const auto at = scenario.find("[coupling]\n");
+  ASSERT_NE(at, std::string::npos);
+  scenario.insert(at + 11, "acceleration = \"anderson\"\n");
+  const fs::path file = fs::temp_directory_path() / "hydrodda-resume-anderson.toml";
+  std::ofstream(file) << scenario;
+
+  const auto whole = run_program("run " + file.string() + " -o " + f.whole.string());
+  ASSERT_EQ(whole.exit_code, 0) << whole.output;
+  ASSERT_GE(read_summary_without_timings(f.whole)["iterations"].get<int>(), 4);  // mixing before and after 2
+  const auto first = run_program("run " + file.string() + " -o " + f.parts.string() + " --stop-after 2");
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  const auto second = run_program("run --resume " + f.parts.string());
+  ASSERT_EQ(second.exit_code, 0) << second.output;
+  expect_same_results(f.whole, f.parts);
+  fs::remove(file);
+}
+
 TEST(Resume, FoldersThatCannotBeResumedAreRefused) {
   Folders f("refused");
   // No folder at all, and a folder without a checkpoint.

@@ -79,7 +79,12 @@ TEST(NonConvergence, AlternatingChangeIsOscillation) {
   EXPECT_TRUE(d.head_failed);
   EXPECT_TRUE(d.displacement_failed);
   EXPECT_NE(d.text.find("loop oscillates (the head change"), std::string::npos) << d.text;
-  EXPECT_NE(d.text.find("aitken"), std::string::npos) << d.text;
+  EXPECT_NE(d.text.find("anderson"), std::string::npos) << d.text;
+  // A loop that oscillated under an acceleration is not sent back to one.
+  const ConvergenceDiagnosis accelerated = diagnose_non_convergence(head, displacement, two_back, 1e-4, "anderson");
+  EXPECT_EQ(accelerated.behaviour, NonConvergence::oscillating);
+  EXPECT_EQ(accelerated.text.find("try coupling.acceleration"), std::string::npos) << accelerated.text;
+  EXPECT_NE(accelerated.text.find("the anderson acceleration did not settle it"), std::string::npos) << accelerated.text;
 }
 
 // A swing between two states A, B, A, B, ...: the change is a steady |A − B| every pass, and

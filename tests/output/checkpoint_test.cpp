@@ -57,6 +57,8 @@ RunCheckpoint make_checkpoint() {
   c.coupling.heads_two_back = {19.0, 3.0, 0.0};
   c.coupling.previous_update = {0.5, -0.25, 0.0};
   c.coupling.relaxation = 0.7;
+  c.coupling.anderson_residuals = {{0.1, -0.2, 0.0, 1e3, -2e3, 0.0}, {0.05, -0.1, 0.0, 5e2, -1e3, 0.0}};
+  c.coupling.anderson_images = {{20.1, 3.1, 0.0, 2.01e5, 0.99e5, 0.0}, {20.0, 3.3, 0.0, 2e5, 1e5, 0.0}};
   c.coupling.kept_factor_permeability = {1e-15, 3.7e-9};
   return c;
 }
@@ -104,6 +106,8 @@ TEST(Checkpoint, DecodesToTheSameValuesBitForBit) {
   EXPECT_EQ(d.coupling.flow.balance_error, 1e-15);
   EXPECT_EQ(d.coupling.flow.refinement_steps, 1);
   EXPECT_EQ(d.coupling.previous_displacements[1].y, -2e-3);
+  EXPECT_EQ(d.coupling.anderson_residuals, c.coupling.anderson_residuals);
+  EXPECT_EQ(d.coupling.anderson_images, c.coupling.anderson_images);
   EXPECT_EQ(d.coupling.kept_factor_permeability, c.coupling.kept_factor_permeability);
 }
 
