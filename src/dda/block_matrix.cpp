@@ -9,11 +9,16 @@ namespace hydrodda::dda {
 
 void BlockMatrix::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
   y.resize(size());
-  for (int b = 0; b < block_count; ++b) y.segment<6>(6 * b).noalias() = diagonal[b] * x.segment<6>(6 * b);
+  multiply_rows(x, y, 0, block_count);
+}
+
+void BlockMatrix::multiply_rows(const Eigen::VectorXd& x, Eigen::VectorXd& y, int first, int last) const {
+  const auto mine = [&](int b) { return b >= first && b < last; };
+  for (int b = first; b < last; ++b) y.segment<6>(6 * b).noalias() = diagonal[b] * x.segment<6>(6 * b);
   for (std::size_t p = 0; p < pairs.size(); ++p) {
     const auto [col, row] = pairs[p];
-    y.segment<6>(6 * row).noalias() += off[p] * x.segment<6>(6 * col);
-    y.segment<6>(6 * col).noalias() += off[p].transpose() * x.segment<6>(6 * row);
+    if (mine(row)) y.segment<6>(6 * row).noalias() += off[p] * x.segment<6>(6 * col);
+    if (mine(col)) y.segment<6>(6 * col).noalias() += off[p].transpose() * x.segment<6>(6 * row);
   }
 }
 

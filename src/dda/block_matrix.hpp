@@ -26,6 +26,10 @@ struct BlockMatrix {
   int size() const { return 6 * block_count; }
   // y = A x.
   void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
+  // The block rows first … last − 1 of y = A x, y already of A's size: each block row gets
+  // its terms in the order multiply adds them, so that rows split between threads come out
+  // bit for bit as one multiply makes them.
+  void multiply_rows(const Eigen::VectorXd& x, Eigen::VectorXd& y, int first, int last) const;
   bool all_finite() const;
   // The compressed lower triangle, for solvers that take a scalar sparse matrix.
   SparseMatrix lower_triangle() const;

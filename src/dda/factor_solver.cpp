@@ -93,6 +93,7 @@ class BlockFactorSolver final : public KeptFactorSolver {
     }
     base_ = &base;
     terms_ = &terms;
+    product_.reset(base, terms);
     if (!factor_.empty() && !stale_ && !follow_terms()) stale_ = true;
   }
 
@@ -197,7 +198,7 @@ class BlockFactorSolver final : public KeptFactorSolver {
   int run_preconditioned_cg(const Eigen::VectorXd& b, const Eigen::VectorXd& guess, double tolerance,
                             Eigen::VectorXd& x) const {
     return solve_by_conjugate_gradients(
-        [this](const Eigen::VectorXd& v, Eigen::VectorXd& y) { multiply_with_springs(*base_, *terms_, v, y); },
+        [this](const Eigen::VectorXd& v, Eigen::VectorXd& y) { product_.multiply(v, y); },
         [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { apply_preconditioner(r, z); }, b, guess,
         tolerance, max_iterations_, x, counts_.iterations);
   }
@@ -224,6 +225,7 @@ class BlockFactorSolver final : public KeptFactorSolver {
   // and own_terms_ (factor).
   const BlockMatrix* base_ = nullptr;
   const RankOneTerms* terms_ = nullptr;
+  SpringMatrixProduct product_;  // y = (*base_ + *terms_) x
   BlockMatrix own_base_;
   RankOneTerms own_terms_;
   int block_count_ = -1;  // of the last matrix

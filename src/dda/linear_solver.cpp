@@ -156,6 +156,45 @@ void multiply_with_springs(const BlockMatrix& base, const RankOneTerms& springs,
   }
 }
 
+void SpringMatrixProduct::reset(const BlockMatrix& base, const RankOneTerms& springs) {
+  base_ = &base;
+  springs_ = &springs;
+  split_ = worth_two_threads(springs.size()) && two_threads_available();
+  if (!split_) return;
+  run_two_parts(true, [&](int part) {
+    const auto [begin, end] = half_range(part, static_cast<std::size_t>(base.block_count));
+    const auto inside = [&](int block) { return block >= static_cast<int>(begin) && block < static_cast<int>(end); };
+    std::vector<int>& touching = touching_[part];
+    touching.clear();
+    for (std::size_t i = 0; i < springs.size(); ++i) {
+      const RankOneTerm& t = springs[i];
+      const int ends = (inside(t.block_a) ? kEndA : 0) | (inside(t.block_b) ? kEndB : 0);
+      if (ends != 0) touching.push_back(static_cast<int>(i) << 2 | ends);
+    }
+  });
+}
+
+void SpringMatrixProduct::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+  if (!split_) {
+    multiply_with_springs(*base_, *springs_, x, y);
+    return;
+  }
+  y.resize(base_->size());
+  run_two_parts(true, [&](int part) {
+    const auto [begin, end] = half_range(part, static_cast<std::size_t>(base_->block_count));
+    base_->multiply_rows(x, y, static_cast<int>(begin), static_cast<int>(end));
+    for (const int entry : touching_[part]) {
+      const RankOneTerm& t = (*springs_)[static_cast<std::size_t>(entry >> 2)];
+      // As multiply_with_springs, for this half's ends of the spring only.
+      double s = 0.0;
+      if (t.block_a >= 0) s += t.w_a.dot(x.segment<6>(6 * t.block_a));
+      if (t.block_b >= 0) s += t.w_b.dot(x.segment<6>(6 * t.block_b));
+      if (entry & kEndA) y.segment<6>(6 * t.block_a).noalias() += s * t.w_a;
+      if (entry & kEndB) y.segment<6>(6 * t.block_b).noalias() += s * t.w_b;
+    }
+  });
+}
+
 // Pseudocode (Saad, Iterative Methods, alg. 9.1): r = b − A x; z = M⁻¹ r; p = z;
 // repeat: α = rᵀz / pᵀAp; x += α p; r −= α A p; z = M⁻¹ r; β = r'ᵀz' / rᵀz; p = z + β p.
 int solve_by_conjugate_gradients(const VectorOperator& multiply, const VectorOperator& precondition,

@@ -27,6 +27,9 @@ void run_two_parts(bool parallel, Task&& task) {
   for (int part = 0; part < 2; ++part) task(part);
 }
 
+// Whether run_two_parts(true, …) would use two threads.
+inline bool two_threads_available() { return omp_get_max_threads() >= 2; }
+
 // Has the OpenMP runtime make its second thread now, with the model, rather than inside the
 // first step: a process's first parallel region takes from half a millisecond to ten on a
 // virtual machine, the time to create the thread and to have the host run it.

@@ -5,6 +5,7 @@
 #include "dda/linear_solver.hpp"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <iterator>
@@ -171,6 +172,38 @@ TEST(LinearSolver, SpringsAddUpToTheDenseMatrix) {
   Eigen::VectorXd y;
   multiply_with_springs(chain.base_blocks(), springs, x, y);
   EXPECT_LT((y - dense * x).norm(), 1e-12 * (dense * x).norm());
+}
+
+// The product split by block rows between two threads (SpringMatrixProduct) is the one-thread
+// product bit for bit: each row sums the same terms in the same order. 12,000 springs (past
+// the split's threshold of 10,000) between random blocks, across the middle of the chain,
+// within one block, at one end only, the same block at both ends.
+TEST(LinearSolver, SplitSpringProductIsTheSerialOneBitForBit) {
+  ChainWithSprings chain;
+  std::uniform_int_distribution<int> block(-1, 29);
+  RankOneTerms springs;
+  for (int i = 0; i < 12000; ++i) {
+    int a = block(chain.rng), b = block(chain.rng);
+    if (a < 0 && b < 0) a = 14;
+    springs.push_back(chain.make_term(i, a, b));
+  }
+  springs.push_back(chain.make_term(12000, 14, 15));  // across the split of 30 blocks at 15
+  springs.push_back(chain.make_term(12001, 15, 15));
+  const BlockMatrix base = chain.base_blocks();
+  const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(180, -3.0, 1.0);
+  Eigen::VectorXd serial;
+  multiply_with_springs(base, springs, x, serial);
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(2);
+  SpringMatrixProduct product;
+  product.reset(base, springs);
+  EXPECT_TRUE(product.splits());
+  Eigen::VectorXd split = Eigen::VectorXd::Constant(180, 1e300);  // every entry must be written
+  product.multiply(x, split);
+  omp_set_num_threads(threads);
+  ASSERT_EQ(split.size(), serial.size());
+  for (Eigen::Index i = 0; i < serial.size(); ++i) EXPECT_EQ(split[i], serial[i]) << "entry " << i;
+  EXPECT_LT((serial - chain.dense_with(springs) * x).norm(), 1e-12 * serial.norm());
 }
 
 // Springs that come and go: A = B + Σ w wᵀ over the listed terms. After factor(B, T1) and a
