@@ -45,14 +45,18 @@ json format_fractures(const FractureSummary& f) {
 }
 
 json to_json(const RunSummary& s) {
+  // Each block's object filled in place: a json built from nested braces copies every
+  // element it is made of (initializer lists hold constants), and a summary lists every block.
   json blocks = json::array();
-  for (const BlockSummary& b : s.blocks)
-    blocks.push_back({{"id", b.id},
-                      {"centroid", b.centroid},
-                      {"displacement", b.displacement},
-                      {"rotation", b.rotation},
-                      {"stress", b.stress},
-                      {"area", b.area}});
+  for (const BlockSummary& b : s.blocks) {
+    json& block = blocks.emplace_back(json::object());
+    block["id"] = b.id;
+    block["centroid"] = b.centroid;
+    block["displacement"] = b.displacement;
+    block["rotation"] = b.rotation;
+    block["stress"] = b.stress;
+    block["area"] = b.area;
+  }
   json measure = json::object();
   for (const MeasureSummary& m : s.measures)
     measure[m.name] = {{"position", m.position}, {"displacement", m.displacement}};
@@ -94,24 +98,59 @@ json to_json(const RunSummary& s) {
   return out;
 }
 
-void collect_non_finite(const json& value, const std::string& path, std::vector<std::string>& found) {
-  if (value.is_number_float() && !std::isfinite(value.get<double>())) {
-    found.push_back(path);
+// One step of the path from the summary's root to a value: a key of an object, or else an
+// index into an array.
+struct PathStep {
+  const std::string* key = nullptr;
+  std::size_t index = 0;
+};
+
+// The path as find_non_finite_values names it: keys joined by '.', indices as "[i]".
+std::string join_path(const std::vector<PathStep>& path) {
+  std::string joined;
+  for (const PathStep& step : path) {
+    if (step.key) {
+      if (!joined.empty()) joined += '.';
+      joined += *step.key;
+    } else {
+      joined += '[' + std::to_string(step.index) + ']';
+    }
+  }
+  return joined;
+}
+
+// The path is joined only for a value found: the walk visits every number of the summary.
+void collect_non_finite(const json& value, std::vector<PathStep>& path, std::vector<std::string>& found) {
+  if (value.is_number_float()) {
+    if (!std::isfinite(value.get<double>())) found.push_back(join_path(path));
   } else if (value.is_object()) {
-    for (const auto& [key, item] : value.items()) collect_non_finite(item, path.empty() ? key : path + "." + key, found);
+    for (auto item = value.begin(); item != value.end(); ++item) {
+      path.push_back({&item.key(), 0});
+      collect_non_finite(item.value(), path, found);
+      path.pop_back();
+    }
   } else if (value.is_array()) {
-    for (std::size_t i = 0; i < value.size(); ++i) collect_non_finite(value[i], path + "[" + std::to_string(i) + "]", found);
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      path.push_back({nullptr, i});
+      collect_non_finite(value[i], path, found);
+      path.pop_back();
+    }
   }
 }
 
+std::string dump(const json& summary) { return summary.dump(2) + "\n"; }
+
 }  // namespace
 
-std::string format_summary(const RunSummary& s) { return to_json(s).dump(2) + "\n"; }
+std::string format_summary(const RunSummary& s) { return dump(to_json(s)); }
 
-std::vector<std::string> find_non_finite_values(const RunSummary& s) {
-  std::vector<std::string> found;
-  collect_non_finite(to_json(s), "", found);
-  return found;
+CheckedSummary format_checked_summary(const RunSummary& s) {
+  const json summary = to_json(s);
+  CheckedSummary checked;
+  std::vector<PathStep> path;
+  collect_non_finite(summary, path, checked.non_finite);
+  checked.text = dump(summary);
+  return checked;
 }
 
 }  // namespace hydrodda::output

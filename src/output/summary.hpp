@@ -89,8 +89,13 @@ struct RunSummary {
 // The summary as JSON text, pretty-printed, full double precision.
 std::string format_summary(const RunSummary& summary);
 
-// The summary.json paths of values that are infinite or NaN (written as null), e.g.
-// "flow.regions.core.effective_conductivity": a result that overflowed is no result.
-std::vector<std::string> find_non_finite_values(const RunSummary& summary);
+// The summary as format_summary writes it, and the summary.json paths of its values that are
+// infinite or NaN (written as null), e.g. "flow.regions.core.effective_conductivity": a
+// result that overflowed is no result. The JSON is built once for both.
+struct CheckedSummary {
+  std::string text;
+  std::vector<std::string> non_finite;
+};
+CheckedSummary format_checked_summary(const RunSummary& summary);
 
 }  // namespace hydrodda::output

@@ -42,9 +42,7 @@ RunResult record_failure(const output::RunFolder& folder, RunStatus status, cons
 
 // Results that overflowed (a conductivity of k ρ g / μ with μ = 1e-300) or came out NaN: the
 // run failed, whatever its loop said, naming each value (the first few).
-std::string describe_non_finite(const output::RunSummary& summary) {
-  const std::vector<std::string> paths = output::find_non_finite_values(summary);
-  if (paths.empty()) return {};
+std::string describe_non_finite(const std::vector<std::string>& paths) {
   constexpr std::size_t kNamed = 5;
   std::string names = fmt::format("{}", fmt::join(paths.begin(), paths.begin() + std::min(paths.size(), kNamed), ", "));
   if (paths.size() > kNamed) names += fmt::format(" and {} more", paths.size() - kNamed);
@@ -62,9 +60,10 @@ RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output:
   const bool folder_is_new = !fs::exists(directory, ec);
   const output::RunFolder folder(directory, policy);
   const auto write_final_summary = [&folder](const output::RunSummary& summary) {
-    if (const std::string failure = describe_non_finite(summary); !failure.empty())
-      throw RunFailure(RunStatus::failed, failure, summary);
-    write_summary(folder, summary);
+    const output::CheckedSummary checked = output::format_checked_summary(summary);
+    if (!checked.non_finite.empty())
+      throw RunFailure(RunStatus::failed, describe_non_finite(checked.non_finite), summary);
+    folder.write("summary.json", checked.text);
   };
   const RunContext context{s, folder, callbacks, scenario_text, resume, stop_after, write_final_summary, mesh_cache};
   try {
