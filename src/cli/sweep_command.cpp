@@ -44,8 +44,6 @@ std::string describe_case(const std::vector<scenario::Override>& overrides) {
   return text;
 }
 
-// Every case's scenario file, each read and checked as `run` would; nothing when any fails
-// (after every problem has been printed).
 // A TOML basic string holding `text`.
 std::string toml_string(const std::string& text) {
   std::string quoted = "\"";
@@ -72,6 +70,8 @@ std::vector<std::string> boundary_names_of(const scenario::Scenario& s) {
   return names;
 }
 
+// Every case's scenario file, each read and checked as `run` would; nothing when any fails
+// (after every problem has been printed).
 std::optional<std::vector<PreparedCase>> prepare_cases(const fs::path& file, const fs::path& directory,
                                                        const std::vector<std::vector<scenario::Override>>& cases,
                                                        const scenario::Scenario& base,
@@ -84,11 +84,12 @@ std::optional<std::vector<PreparedCase>> prepare_cases(const fs::path& file, con
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const std::string name = fmt::format("case_{:03}", i);
     const fs::path case_file = directory / name / "scenario.toml";
+    std::string text;
     try {
       // The case's title names its values, so that its figures say which case they show.
       std::vector<scenario::Override> overrides = cases[i];
       overrides.push_back({"title", toml_string(case_title(base_title, cases[i], boundary_names))});
-      std::string text = scenario::apply_overrides(original, file, overrides);
+      text = scenario::apply_overrides(original, file, overrides);
       const scenario::Scenario s = scenario::parse_scenario(text, case_file);
       run::check_model(s);  // as `check` does
       if (i == 0 && s.flow)
@@ -96,7 +97,9 @@ std::optional<std::vector<PreparedCase>> prepare_cases(const fs::path& file, con
       prepared.push_back({name, std::move(text)});
     } catch (const scenario::ScenarioError& e) {
       print_error(fmt::format("{} ({}):", name, describe_case(cases[i])));
-      for (const scenario::Diagnostic& d : e.diagnostics()) print_error(d.format());
+      // Cited in the scenario file and the --set the user wrote: the case's file is not kept.
+      for (const scenario::Diagnostic& d : scenario::locate_in_original(e.diagnostics(), text, case_file, original, file, cases[i]))
+        print_error(d.format());
       ok = false;
     }
   }

@@ -23,12 +23,13 @@ output::RunSummary run_flow(const RunContext& context) {
 
   output::RunSummary summary = model.summary();
   summary.timings = model.timings();
-  const std::vector<double> no_porosity;
-  draw_figures(context.scenario, context.folder,
-               {model.mesh(), solution, no_porosity, model.permeability(), model.blocks()});
-  ParaviewOutput(context.folder, context.scenario.output.fields).write_fluid(0, 0.0, model.mesh(), solution, no_porosity, model.permeability());
   summary.converged = true;  // one linear solve: nothing to iterate
   summary.iterations = 1;
+  const std::vector<double> no_porosity;
+  ParaviewOutput(context.folder, context.scenario.output.fields).write_fluid(0, 0.0, model.mesh(), solution, no_porosity, model.permeability());
+  context.write_summary(summary);  // the run's result is on disk before the figures are drawn
+  draw_figures(context.scenario, context.folder,
+               {model.mesh(), solution, no_porosity, model.permeability(), model.blocks()});
   return summary;
 }
 

@@ -8,6 +8,7 @@
 
 #include "output/field_figure.hpp"
 #include "output/vtk_writer.hpp"
+#include "run/paraview_output.hpp"
 
 namespace hydrodda::run {
 
@@ -41,7 +42,7 @@ void FractureOutput::continue_from(int last_step, const std::vector<int>& writte
     if (cells.size() == columns(with_flow_).size() && std::stoll(cells[0]) <= last_step) table_.add_row(cells);
   }
   if (!series_) series_.emplace(folder_.file("fractures.pvd"));
-  for (int step : written) series_->add(step, fmt::format("fractures_{:04d}.vtu", step));
+  for (int step : written) list_if_present(*series_, folder_, step, fmt::format("fractures_{:04d}.vtu", step));
 }
 
 void FractureOutput::add_rows(long long step, double time, const FractureState& state) {

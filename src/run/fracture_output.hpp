@@ -24,7 +24,8 @@ class FractureOutput {
   FractureOutput(const output::RunFolder& folder, bool with_flow);
 
   // A continued run: keeps the rows fractures.csv has for steps up to `last_step` and lists
-  // again the .vtu files an earlier part of the run wrote at `written` (time = step).
+  // again the .vtu files an earlier part of the run wrote at `written` (time = step) that are
+  // still there.
   void continue_from(int last_step, const std::vector<int>& written);
   // One step's rows, written at once.
   void add_rows(long long step, double time, const FractureState& state);

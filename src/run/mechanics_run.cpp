@@ -56,7 +56,6 @@ output::RunSummary run_mechanics(const RunContext& context) {
     const FractureState& state = *fracture_state;
     fractures.add_rows(step, time, state);
     if (s.output.fields.fractures) fractures.write_series(static_cast<int>(step), time, state);
-    if (model.finished()) draw_aperture_figure(s, context.folder, polygons, state, {fmt::format("DDA step {}", step)});
   };
   write_step(0, 0.0);
   long long last_written = 0;
@@ -117,6 +116,9 @@ output::RunSummary run_mechanics(const RunContext& context) {
   summary.converged = true;
   summary.timings.push_back(
       {"mechanics", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
+  context.write_summary(summary);  // the run's result is on disk before the figure is drawn
+  if (fracture_state)  // measured at the last step, written just above or in the loop
+    draw_aperture_figure(s, context.folder, polygons, *fracture_state, {fmt::format("DDA step {}", model.steps())});
   return summary;
 }
 

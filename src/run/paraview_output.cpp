@@ -14,6 +14,12 @@ namespace hydrodda::run {
 
 using output::DataArray;
 
+void list_if_present(output::PvdSeries& series, const output::RunFolder& folder, double time, const std::string& name) {
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(folder.file(name), ec)) series.add(time, name);
+  else spdlog::warn("{} is missing from {}: left out of {}", name, folder.path().string(), series.path().filename().string());
+}
+
 ParaviewOutput::ParaviewOutput(const output::RunFolder& folder, const scenario::OutputFields& fields)
     : folder_(folder), fields_(fields) {}
 
@@ -38,13 +44,8 @@ void ParaviewOutput::list_written(const std::vector<int>& steps) {
   if (fields_.fluid && !fluid_) fluid_.emplace(folder_.file("fluid.pvd"));
   if (fields_.blocks && !blocks_) blocks_.emplace(folder_.file("blocks.pvd"));
   if (fields_.contacts && !contacts_) contacts_.emplace(folder_.file("contacts.pvd"));
-  // A file deleted since it was written leaves the series (rewritten with the next step), so
-  // that the .pvd never lists what is not there.
   const auto add_existing = [&](std::optional<output::PvdSeries>& series, int step, const std::string& name) {
-    std::error_code ec;
-    if (!series) return;
-    if (std::filesystem::is_regular_file(folder_.file(name), ec)) series->add(step, name);
-    else spdlog::warn("{} is missing from {}: left out of {}", name, folder_.path().string(), series->path().filename().string());
+    if (series) list_if_present(*series, folder_, step, name);
   };
   for (int step : steps) {
     add_existing(fluid_, step, fmt::format("fluid_{:04d}.vtu", step));

@@ -5,6 +5,7 @@
 // one .vtu of each per output step; only the series the scenario's output.fields names.
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "dda/system.hpp"
@@ -15,6 +16,11 @@
 #include "scenario/scenario.hpp"
 
 namespace hydrodda::run {
+
+// A continued run's series: lists `name`, a .vtu an earlier part of the run wrote, at `time` if
+// it is still in the folder; one deleted since is left out, with a warning, so that the .pvd
+// never lists what is not there (the next output step writes its own anew).
+void list_if_present(output::PvdSeries& series, const output::RunFolder& folder, double time, const std::string& name);
 
 class ParaviewOutput {
  public:

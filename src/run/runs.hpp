@@ -1,6 +1,7 @@
 #pragma once
 // The kinds of run, as run() dispatches them: each builds its model from the scenario, runs it,
-// and writes the run folder as it goes. They return the summary; run() writes it.
+// and writes the run folder as it goes. They return the summary, which run() writes; one that reached
+// its end writes it first itself (RunContext::write_summary), before drawing its figures.
 
 #include <functional>
 #include <filesystem>

@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <charconv>
+#include <map>
 #include <sstream>
 
 #include "scenario/diagnostics.hpp"
@@ -114,7 +116,90 @@ void apply_override(const std::filesystem::path& file, toml::table& document, co
   array->replace(array->cbegin() + static_cast<std::ptrdiff_t>(index), std::move(replacement));
 }
 
+// The key path of every value and table of `node` by the line it starts on; where several start
+// on one line (an inline array and its elements), the shortest.
+void map_lines(const toml::node& node, const std::string& path, std::map<int, std::string>& path_of_line) {
+  const int line = static_cast<int>(node.source().begin.line);
+  if (line > 0 && !path.empty()) {
+    const auto [at, inserted] = path_of_line.try_emplace(line, path);
+    if (!inserted && path.size() < at->second.size()) at->second = path;
+  }
+  if (const toml::table* table = node.as_table()) {
+    for (auto&& [key, value] : *table)
+      map_lines(value, path.empty() ? std::string(key.str()) : fmt::format("{}.{}", path, key.str()), path_of_line);
+  } else if (const toml::array* array = node.as_array()) {
+    for (std::size_t i = 0; i < array->size(); ++i) map_lines(*array->get(i), fmt::format("{}[{}]", path, i), path_of_line);
+  }
+}
+
+// `path` is `key` or lies under it ("flow.boundary[0].head" under "flow.boundary[0]").
+bool lies_under(const std::string& path, const std::string& key) {
+  return path.starts_with(key) && (path.size() == key.size() || path[key.size()] == '.' || path[key.size()] == '[');
+}
+
+// "flow.boundary[0].head" as a diagnostic names it: "flow.boundary.head".
+std::string without_indices(const std::string& key) {
+  std::string out;
+  bool in_index = false;
+  for (char c : key) {
+    if (c == '[') in_index = true;
+    if (!in_index) out += c;
+    if (c == ']') in_index = false;
+  }
+  return out;
+}
+
+// The line of `path` in `document`, or of the nearest table or array above it that is there; 0
+// when none is.
+int line_in(const toml::table& document, std::string path) {
+  while (!path.empty()) {
+    if (const toml::node* node = toml::at_path(document, path).node()) return static_cast<int>(node->source().begin.line);
+    const std::size_t cut = path.find_last_of(".[");
+    path = cut == std::string::npos ? std::string() : path.substr(0, cut);
+  }
+  return 0;
+}
+
+toml::table parse_or_empty(std::string_view text) {
+  try {
+    return toml::parse(text);
+  } catch (const toml::parse_error&) {
+    return {};
+  }
+}
+
 }  // namespace
+
+std::vector<Diagnostic> locate_in_original(const std::vector<Diagnostic>& diagnostics, std::string_view made,
+                                           const std::filesystem::path& made_file, std::string_view text,
+                                           const std::filesystem::path& file, const std::vector<Override>& overrides) {
+  std::map<int, std::string> path_of_line;
+  map_lines(parse_or_empty(made), "", path_of_line);
+  const toml::table original = parse_or_empty(text);
+  std::vector<Diagnostic> located;
+  for (Diagnostic d : diagnostics) {
+    if (d.file != made_file.string()) {
+      located.push_back(std::move(d));
+      continue;
+    }
+    const auto at = path_of_line.find(d.line);
+    const std::string path = d.line > 0 && at != path_of_line.end() ? at->second : std::string();
+    const auto set_by = std::find_if(overrides.begin(), overrides.end(), [&](const Override& o) {
+      const bool names_it = !d.key.empty() && without_indices(o.key) == d.key;
+      // At the value the override set, or named and cited at a table that holds it.
+      return path.empty() ? names_it : lies_under(path, o.key) || (names_it && lies_under(o.key, path));
+    });
+    if (set_by != overrides.end()) {
+      d.file = fmt::format("--set {}={}", set_by->key, set_by->value);
+      d.line = 0;
+    } else {
+      d.file = file.string();
+      d.line = path.empty() ? 0 : line_in(original, path);
+    }
+    located.push_back(std::move(d));
+  }
+  return located;
+}
 
 std::string apply_overrides(std::string_view text, const std::filesystem::path& file,
                             const std::vector<Override>& overrides) {

@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "scenario/diagnostics.hpp"
+
 namespace hydrodda::scenario {
 
 // One change: `key` a path of dotted keys with array indices, e.g. "coupling.relaxation",
@@ -25,5 +27,13 @@ struct Override {
 // key cannot be followed.
 std::string apply_overrides(std::string_view text, const std::filesystem::path& file,
                             const std::vector<Override>& overrides);
+
+// Diagnostics of a scenario that apply_overrides made (`made`, read as `made_file`, a file that
+// may never exist) told against what the user wrote: one at a value an override set names the
+// override ("--set KEY=VALUE"), any other `file` at the line of the same key in `text`.
+// Diagnostics of other files (a fractures_file, a mesh file) are kept as they are.
+std::vector<Diagnostic> locate_in_original(const std::vector<Diagnostic>& diagnostics, std::string_view made,
+                                           const std::filesystem::path& made_file, std::string_view text,
+                                           const std::filesystem::path& file, const std::vector<Override>& overrides);
 
 }  // namespace hydrodda::scenario

@@ -131,8 +131,9 @@ TEST(Resume, FoldersThatCannotBeResumedAreRefused) {
 namespace {
 
 // Item 20: a .vtu the user deleted between the stop and the resume stayed listed in the .pvd
-// (ParaView then fails on the series); it is left out, with a warning. Item 16: one flipped
-// bit in the checkpoint is refused by its checksum, not resumed from.
+// (ParaView then fails on the series); it is left out, with a warning, in every series
+// (fractures.pvd kept listing it). Item 16: one flipped bit in the checkpoint is refused by its
+// checksum, not resumed from.
 TEST(Resume, ADeletedVtuLeavesTheSeriesAndAFlippedBitIsRefused) {
   Folders f("deleted-vtu");
   const auto first = run_program("run " + kSixBlock.string() + " -o " + f.parts.string() + " --stop-after 2");
@@ -140,13 +141,25 @@ TEST(Resume, ADeletedVtuLeavesTheSeriesAndAFlippedBitIsRefused) {
   fs::copy(f.parts, f.whole, fs::copy_options::recursive);  // a second copy, for the damaged checkpoint
 
   ASSERT_TRUE(fs::exists(f.parts / "blocks_0001.vtu"));
+  ASSERT_TRUE(fs::exists(f.parts / "fractures_0002.vtu"));
   fs::remove(f.parts / "blocks_0001.vtu");
+  fs::remove(f.parts / "fractures_0002.vtu");
   const auto resumed = run_program("run --resume " + f.parts.string());
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
   EXPECT_NE(resumed.output.find("blocks_0001.vtu is missing"), std::string::npos) << resumed.output;
+  EXPECT_NE(resumed.output.find("fractures_0002.vtu is missing"), std::string::npos) << resumed.output;
   const std::string blocks = read_file(f.parts / "blocks.pvd");
   EXPECT_EQ(blocks.find("blocks_0001.vtu"), std::string::npos) << blocks;
   EXPECT_NE(read_file(f.parts / "fluid.pvd").find("fluid_0001.vtu"), std::string::npos);
+  // fractures.pvd likewise: the deleted step left out, the others and the resumed run's listed.
+  const std::string fractures = read_file(f.parts / "fractures.pvd");
+  EXPECT_EQ(fractures.find("fractures_0002.vtu"), std::string::npos) << fractures;
+  EXPECT_NE(fractures.find("fractures_0001.vtu"), std::string::npos) << fractures;
+  EXPECT_NE(fractures.find("fractures_0003.vtu"), std::string::npos) << fractures;
+  for (std::size_t at = fractures.find("file=\""); at != std::string::npos; at = fractures.find("file=\"", at + 1)) {
+    const std::size_t end = fractures.find('"', at + 6);
+    EXPECT_TRUE(fs::exists(f.parts / fractures.substr(at + 6, end - at - 6))) << fractures.substr(at, end - at);
+  }
 
   // A bit of a double in the checkpoint's last fifth, where the loop's state lies.
   std::string bytes = read_file(f.whole / "checkpoint.bin");

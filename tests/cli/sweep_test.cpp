@@ -165,6 +165,37 @@ TEST(Sweep, BadInputIsRefusedBeforeAnythingRuns) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+// Item 18: a case's errors cited case_001/scenario.toml:LINE, the rewritten file of a case that
+// is never written (the sweep does not start). A value a --set made is cited by the --set; any
+// other by the line of the same key in the scenario file.
+TEST(Sweep, ErrorsCiteTheSetAndTheScenarioFileNotTheCasesFile) {
+  const fs::path out = fresh_dir("hydrodda-sweep-cite");
+  const fs::path flow = kSource / "scenarios/verification/flow_linear_head.toml";
+  const auto value = run_program("sweep " + flow.string() + " --set flow.fluid.viscosity=1e-3,-1 -o " + out.string());
+  EXPECT_EQ(value.exit_code, 2);
+  EXPECT_NE(value.output.find("error: --set flow.fluid.viscosity=-1: flow.fluid.viscosity: must be > 0"),
+            std::string::npos)
+      << value.output;
+  EXPECT_EQ(value.output.find("scenario.toml"), std::string::npos) << value.output;
+
+  // time_step = 1e-12 makes end_time = 1 s too many steps: the error is end_time's, at its line.
+  const fs::path fall = kSource / "scenarios/verification/free_fall.toml";
+  std::ifstream in(fall);
+  int end_time_line = 0;
+  std::string line;
+  for (int n = 1; std::getline(in, line) && end_time_line == 0; ++n)
+    if (line.rfind("end_time", 0) == 0) end_time_line = n;
+  ASSERT_GT(end_time_line, 0);
+  const auto steps = run_program("sweep " + fall.string() + " --set mechanics.time_step=1e-3,1e-12 -o " + out.string());
+  EXPECT_EQ(steps.exit_code, 2);
+  EXPECT_NE(steps.output.find("case_001 (mechanics.time_step=1e-12)"), std::string::npos) << steps.output;
+  EXPECT_NE(steps.output.find(fall.string() + ":" + std::to_string(end_time_line) + ": mechanics.end_time: "),
+            std::string::npos)
+      << steps.output;
+  EXPECT_EQ(steps.output.find("scenario.toml"), std::string::npos) << steps.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
 // --zip takes the lists together: two cases, not four, each key at the same position; lists of
 // different lengths are refused before anything runs.
 TEST(Sweep, ZipTakesTheListsTogether) {

@@ -93,3 +93,45 @@ TEST(ScenarioOverrides, RelativeMeshFileBecomesAbsolute) {
 
 }  // namespace
 }  // namespace hydrodda::scenario
+
+namespace hydrodda::scenario {
+namespace {
+
+// The 1-based line of the first line of `text` after line `after` that starts with `start`
+// (indentation aside).
+int line_starting(const std::string& text, const std::string& start, int after = 0) {
+  std::istringstream in(text);
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n)
+    if (n > after && line.find_first_not_of(' ') != std::string::npos &&
+        line.compare(line.find_first_not_of(' '), start.size(), start) == 0)
+      return n;
+  return 0;
+}
+
+// A case's diagnostics told against what the user wrote (item 18 of the robustness list): the
+// value an override set is cited by the override, even in the second of two [[flow.boundary]]
+// tables; the first table's value, which no override set, at its own line of the original.
+TEST(ScenarioOverrides, DiagnosticsOfACaseCiteTheOverrideOrTheOriginalLine) {
+  const std::string original = read_text(kSixBlock);
+  const std::vector<Override> overrides{{"flow.boundary[1].head", "-7"}};
+  const std::string made = apply_overrides(original, kSixBlock, overrides);
+  const std::filesystem::path case_file = "out/case_000/scenario.toml";
+  const int made_second = line_starting(made, "head", line_starting(made, "head"));
+  const int made_first = line_starting(made, "head");
+  ASSERT_GT(made_second, made_first);
+  const std::vector<Diagnostic> found{{case_file.string(), made_second, "flow.boundary.head", "as set"},
+                                      {case_file.string(), made_first, "flow.boundary.head", "as written"},
+                                      {case_file.string(), 0, "coupling.tolerance", "no line"},
+                                      {"fractures.csv", 3, "geometry.fractures_file", "another file"}};
+  const std::vector<Diagnostic> cited = locate_in_original(found, made, case_file, original, kSixBlock, overrides);
+  ASSERT_EQ(cited.size(), 4u);
+  EXPECT_EQ(cited[0].format(), "--set flow.boundary[1].head=-7: flow.boundary.head: as set");
+  EXPECT_EQ(cited[1].file, kSixBlock.string());
+  EXPECT_EQ(cited[1].line, line_starting(original, "head"));
+  EXPECT_EQ(cited[2].format(), kSixBlock.string() + ": coupling.tolerance: no line");
+  EXPECT_EQ(cited[3].format(), "fractures.csv:3: geometry.fractures_file: another file");
+}
+
+}  // namespace
+}  // namespace hydrodda::scenario

@@ -161,6 +161,27 @@ analysis = "dynamic"
   EXPECT_EQ(errors[3].format(), "case.toml:9: mechanics.steps: must be a whole number from 1 to 100000000, got 0");
 }
 
+// Item 18 of the robustness list: a value that is there but not a number (nan, inf) is one
+// error, that value's; it had also been reported missing ("required by [mechanics]").
+TEST(ScenarioReader, ANonFiniteValueIsOneErrorNotAlsoAMissingKey) {
+  for (const char* value : {"nan", "inf", "-inf"}) {
+    SCOPED_TRACE(value);
+    const auto errors = errors_of(std::string(R"([geometry]
+[[geometry.block]]
+vertices = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
+fixed = true
+[material.rock]
+density = 2500.0
+young = )") + value + R"(
+poisson = 0.25
+[mechanics]
+steps = 1
+)");
+    ASSERT_EQ(errors.size(), 1u) << errors.back().format();
+    EXPECT_EQ(errors[0].format(), "case.toml:7: material.rock.young: must be a finite number");
+  }
+}
+
 TEST(ScenarioReader, BlocksTakeTheOnlyMaterial) {
   const Scenario s = parse_scenario(R"([geometry]
 [[geometry.block]]
