@@ -130,7 +130,8 @@ std::string canonical_request_text(const MeshRequest& r) {
     key << '\n';
   }
   key << "size " << exact(r.size) << "\nfracture_size " << exact(r.fracture_size) << "\nrefine_distance "
-      << exact(r.refine_distance) << "\nalgorithm " << r.algorithm << "\nthreads " << r.threads << '\n';
+      << exact(r.refine_distance) << "\nalgorithm " << r.algorithm << "\nthreads " << r.threads
+      << "\ntile_triangles " << r.tile_triangles << '\n';
   return key.str();
 }
 

@@ -37,8 +37,13 @@ struct MeshRequest {
   // Gmsh's 2D algorithm: 5 "Delaunay" (default: fastest measured, docs/performance.md),
   // 6 "Frontal-Delaunay", 1 "MeshAdapt".
   int algorithm = 5;
-  // Gmsh threads: 2 roughly halves the meshing of a domain split into several surfaces
-  // (regions), but the node numbering then varies from run to run; 1 is reproducible.
+  // Triangles per surface Gmsh meshes: a request of ten times this many or more is cut into a
+  // grid of rectangular tiles of about this many (gmsh_mesher.cpp: Gmsh's cost per triangle grows
+  // with the triangles of a surface); 0 keeps the domain one surface.
+  int tile_triangles = 5000;
+  // Gmsh threads: Gmsh meshes surfaces (regions, tiles) in parallel, but the mesh itself then
+  // varies from run to run (the 10^5-triangle seal over 20 tiles: 101,196 to 101,228
+  // triangles on 2 threads, 101,194 every time on 1); 1 is reproducible.
   int threads = 1;
   bool verbose = false;                  // let Gmsh print to the terminal
 };
