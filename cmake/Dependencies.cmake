@@ -8,12 +8,6 @@ find_package(spdlog REQUIRED)
 find_package(nlohmann_json 3.10 REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(tomlplusplus REQUIRED)
-# toml++'s headers only: its parser is compiled into the scenario module
-# (src/scenario/toml_implementation.cpp, which says why), reading numbers by std::from_chars.
-add_library(hydrodda_toml INTERFACE)
-target_include_directories(hydrodda_toml SYSTEM INTERFACE
-                           $<TARGET_PROPERTY:tomlplusplus::tomlplusplus,INTERFACE_INCLUDE_DIRECTORIES>)
-target_compile_definitions(hydrodda_toml INTERFACE TOML_HEADER_ONLY=0 TOML_FLOAT_CHARCONV=1)
 find_package(ZLIB REQUIRED)          # compressed arrays of the .vtu files (zlib1g-dev)
 
 # SuiteSparse 5 on Debian 12 ships no CMake package: locate CHOLMOD by hand.
