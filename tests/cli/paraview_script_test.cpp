@@ -34,8 +34,18 @@ TEST(ParaviewScript, RendersARunFolderHeadless) {
   const int iterations = summary.at("iterations").get<int>();
 
   const fs::path png = out / "pressure.png";
-  const auto drawn = run_command("xvfb-run -a pvbatch " + (source / "examples/paraview/render_run.py").string() + " " +
-                                 out.string() + " pressure " + png.string());
+  // xvfb-run -a picks its display by looking for lock files, without taking one: X servers
+  // started at the same moment (another suite on the host) pick the same display, and all but
+  // one client then fail to connect (3 of 6 started 0.3 s apart, measured); it was also seen
+  // once in a whole suite with no other X server running. Either way the X server failed, not
+  // the script: it is tried again, up to three times, and only for that message.
+  const std::string draw = "xvfb-run -a pvbatch " + (source / "examples/paraview/render_run.py").string() + " " +
+                           out.string() + " pressure " + png.string();
+  auto drawn = run_command(draw);
+  for (int retry = 0; retry < 2 && drawn.exit_code != 0 &&
+                      drawn.output.find("bad X server connection") != std::string::npos;
+       ++retry)
+    drawn = run_command(draw);
   ASSERT_EQ(drawn.exit_code, 0) << drawn.output;
   EXPECT_NE(drawn.output.find("drew fluid, blocks, fractures at time " + std::to_string(iterations) +
                               ", coloured by pressure"),
