@@ -11,8 +11,12 @@ HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 BUILD=$(cd "${1:-build}" && pwd)
 NTDDA=${2:-/tmp/ntdda-build/ntdda_bench}
 ROUNDS=${3:-7}
+# The peers folder (brickwall.py, ntdda) beside the project's checkout, or HYDRODDA_PEERS.
 PEERS=${HYDRODDA_PEERS:-$HERE/../../shared/peers}
-[ -d "$PEERS" ] || PEERS=/work/shared/peers
+if [ ! -f "$PEERS/brickwall.py" ]; then
+  echo "wall_vs_ntdda.sh: no brickwall.py in $PEERS; set HYDRODDA_PEERS to the peers folder" >&2
+  exit 2
+fi
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 cd "$WORK"
