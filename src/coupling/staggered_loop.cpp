@@ -124,7 +124,7 @@ hydro::FlowSolution StaggeredLoop::solve_flow(const std::vector<geometry::Polygo
     permeability_[e] = largest_principal_value(k[e]);
   }
   check_finite(permeability_, "the permeability", iteration_);
-  return darcy_.solve(k);
+  return darcy_.solve_reusing_factor(k, solution_.head);
 }
 
 std::vector<EscapingBlock> StaggeredLoop::blocks_beyond_their_size() const {

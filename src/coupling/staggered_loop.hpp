@@ -136,8 +136,9 @@ struct LoopState {
   // Anderson's history, oldest first: each pass's residual G(x) − x and image G(x), x the heads
   // and pressures the pass started from, G(x) its solve (dda::AndersonAccelerator::Pass).
   std::vector<std::vector<double>> anderson_residuals, anderson_images;
-  // The permeability whose factor the flow solver keeps for the next pass (empty: none).
-  std::vector<double> kept_factor_permeability;
+  // The permeability whose factor the flow solver keeps for the next pass, as tensors (empty:
+  // none).
+  std::vector<hydro::PermeabilityTensor> kept_factor_permeability;
 };
 
 class StaggeredLoop {

@@ -313,7 +313,7 @@ std::vector<double> DarcySolver::expand_heads(const Eigen::VectorXd& x) const {
 // |Σ_i r_i| over the nodal flows through the boundary, (Σ_fixed |reaction| + Σ|q_N L|) / 2.
 DarcySolver::Residual DarcySolver::compute_residual(const Eigen::VectorXd& x) const {
   const std::vector<long double> ah = compute_a_times_h(expand_heads(x));
-  Residual out{Eigen::VectorXd(unknown_count()), 0.0, 0.0};
+  Residual out{Eigen::VectorXd(unknown_count()), 0.0, 0.0, 0.0};
   long double sum = 0.0L, boundary = 0.0L;
   for (int u = 0; u < unknown_count(); ++u) {
     const int v = free_nodes_[u];
@@ -326,6 +326,13 @@ DarcySolver::Residual DarcySolver::compute_residual(const Eigen::VectorXd& x) co
   for (double q : prescribed_flow_) boundary += std::abs(q);
   out.balance = boundary > 0.0L ? static_cast<double>(std::abs(sum) / (0.5L * boundary)) : 0.0;
   out.boundary = static_cast<double>(0.5L * boundary);
+  // Per boundary, as compute_boundary_flows() adds them up: the larger of inflow and outflow.
+  std::vector<long double> flow(prescribed_flow_.begin(), prescribed_flow_.end());
+  for (const FixedShare& s : fixed_shares_)
+    flow[s.boundary] += s.weight * (-ah[s.node] - static_cast<long double>(neumann_outflow_[s.node]));
+  long double inflow = 0.0L, outflow = 0.0L;
+  for (long double q : flow) (q < 0 ? inflow : outflow) += std::abs(q);
+  out.net = static_cast<double>(std::max(inflow, outflow));
   return out;
 }
 
@@ -345,19 +352,38 @@ std::vector<Conductivity> DarcySolver::to_isotropic_conductivity(std::span<const
   return k;
 }
 
-FlowSolution DarcySolver::solve(std::span<const double> permeability) {
-  FlowSolution out = solve_with(to_isotropic_conductivity(permeability));
-  kept_permeability_.assign(permeability.begin(), permeability.end());
+namespace {
+
+std::vector<PermeabilityTensor> as_tensors(std::span<const double> permeability) {
+  std::vector<PermeabilityTensor> out(permeability.size());
+  for (std::size_t t = 0; t < out.size(); ++t) out[t] = {permeability[t], 0.0, permeability[t]};
   return out;
 }
 
-FlowSolution DarcySolver::solve(std::span<const PermeabilityTensor> permeability) {
+}  // namespace
+
+std::vector<Conductivity> DarcySolver::to_tensor_conductivity(std::span<const PermeabilityTensor> permeability) const {
   if (permeability.size() != mesh_.triangles.size())
     throw std::runtime_error("flow: " + std::to_string(permeability.size()) +
                              " permeabilities for " + std::to_string(mesh_.triangles.size()) +
                              " triangles");
-  kept_permeability_.clear();  // its factor is not of an isotropic permeability
-  return solve_with(to_conductivity(permeability, problem_.fluid.conductivity_per_permeability()));
+  return to_conductivity(permeability, problem_.fluid.conductivity_per_permeability());
+}
+
+FlowSolution DarcySolver::solve_and_keep(std::span<const Conductivity> conductivity,
+                                         std::span<const PermeabilityTensor> permeability) {
+  FlowSolution out = solve_with(conductivity);
+  kept_permeability_.assign(permeability.begin(), permeability.end());
+  return out;
+}
+
+FlowSolution DarcySolver::solve(std::span<const double> permeability) {
+  const std::vector<Conductivity> conductivity = to_isotropic_conductivity(permeability);
+  return solve_and_keep(conductivity, as_tensors(permeability));
+}
+
+FlowSolution DarcySolver::solve(std::span<const PermeabilityTensor> permeability) {
+  return solve_and_keep(to_tensor_conductivity(permeability), permeability);
 }
 
 void DarcySolver::factorize_system(SolveTimings& timings) {
@@ -415,10 +441,22 @@ FlowSolution DarcySolver::solve_with(std::span<const Conductivity> conductivity)
 
 FlowSolution DarcySolver::solve_reusing_factor(std::span<const double> permeability,
                                                std::span<const double> start_heads) {
+  const std::vector<Conductivity> conductivity = to_isotropic_conductivity(permeability);
+  return reuse_factor(conductivity, as_tensors(permeability), start_heads);
+}
+
+FlowSolution DarcySolver::solve_reusing_factor(std::span<const PermeabilityTensor> permeability,
+                                               std::span<const double> start_heads) {
+  return reuse_factor(to_tensor_conductivity(permeability), permeability, start_heads);
+}
+
+FlowSolution DarcySolver::reuse_factor(std::span<const Conductivity> conductivity,
+                                       std::span<const PermeabilityTensor> permeability,
+                                       std::span<const double> start_heads) {
   if (!start_heads.empty() && start_heads.size() != mesh_.nodes.size())
     throw std::invalid_argument("flow: the starting heads must be one per node");
-  const std::vector<Conductivity> conductivity = to_isotropic_conductivity(permeability);
-  if (unknown_count() == 0 || bound_iterations(permeability) > kHopelessIterations) return solve(permeability);
+  if (unknown_count() == 0 || bound_iterations(permeability) > kHopelessIterations)
+    return solve_and_keep(conductivity, permeability);
 
   SolveTimings timings;
   auto clock = Clock::now();
@@ -431,7 +469,13 @@ FlowSolution DarcySolver::solve_reusing_factor(std::span<const double> permeabil
   // CG until its estimates of the head error and of the mass balance are inside their
   // tolerances, then the balance as reported; once more from the true residual if that is
   // not there yet (the recurrence's residual drifts from the true one by round-off), within
-  // the one budget of iterations.
+  // the one budget of iterations. Converged again from the true residual, the heads are
+  // within kHeadTolerance of the exact ones and what is left of the balance is the round-off
+  // of the heads themselves, as in the exact solve's: where a joint crosses a head boundary
+  // obliquely, flow enters and leaves by that boundary, and the net flow the balance is
+  // relative to is tens of times smaller than the nodal flows whose round-off it carries
+  // (FactorReuse.JointTensorsSolveOnTheKeptFactorToTheExactHeads: 2e-12 to 1e-11, exact
+  // solve and CG alike). That answer is kept within kBalanceBound, as every solve's is.
   int taken = 0;
   FlowSolution out;
   for (int round = 0; round < 2; ++round) {
@@ -441,7 +485,7 @@ FlowSolution DarcySolver::solve_reusing_factor(std::span<const double> permeabil
     out = make_solution(x, conductivity);
     timings.postprocess += seconds_since(clock);
     clock = Clock::now();
-    if (out.balance_error <= kBalanceTolerance) {
+    if (out.balance_error <= (round == 0 ? kBalanceTolerance : kBalanceBound)) {
       out.timings = timings;
       out.factorised = false;
       out.cg_iterations = taken;
@@ -451,28 +495,47 @@ FlowSolution DarcySolver::solve_reusing_factor(std::span<const double> permeabil
     }
   }
   // CG did not get there: factor afresh and solve exactly, as solve() does.
-  out = solve(permeability);
+  out = solve_and_keep(conductivity, permeability);
   out.timings.assemble += timings.assemble;
   out.cg_iterations = taken;
   return out;
 }
 
-// The kept factor is M = Σ_e k⁰_e K_e (K_e the element matrix at unit permeability), the new
-// matrix A = Σ_e ρ_e k⁰_e K_e with ρ_e = k_e / k⁰_e. Elements with ρ_e in [1/c, c] keep the
-// eigenvalues of M⁻¹A in [1/c, c] (Rayleigh quotients of sums of semidefinite terms); each
-// element outside moves at most two eigenvalues out (its K_e has rank two). CG then needs
-// at most 2 · #outside + log(ε/2) / log((c − 1)/(c + 1)) iterations to cut the error by ε
-// (Saad, Iterative Methods, §6.11.3, with the outlying eigenvalues removed first; Axelsson
-// and Lindskog, Numer. Math. 48, 1986). The least over a ladder of c, with ε = kHeadTolerance.
-int DarcySolver::bound_iterations(std::span<const double> permeability) const {
+// The kept factor is M = Σ_e K_e(k⁰_e), the new matrix A = Σ_e K_e(k_e), with
+// K_e(k) = area_e Bᵀ k B the element matrix of a permeability tensor k (B the shape
+// gradients). For any x, with g = B x, xᵀK_e(k)x / xᵀK_e(k⁰)x = gᵀ k g / gᵀ k⁰ g lies between
+// the generalised eigenvalues of the pencil (k, k⁰), the roots λ of det(k − λ k⁰) = 0:
+//   λ² det k⁰ − λ (k⁰xx kyy + k⁰yy kxx − 2 k⁰xy kxy) + det k = 0;
+// for isotropic or axis-aligned tensors simply kxx/k⁰xx and kyy/k⁰yy. An element's spread is
+// the larger of λ_max and 1/λ_min. Elements with spread ≤ c keep the eigenvalues of M⁻¹A in
+// [1/c, c] (Rayleigh quotients of sums of semidefinite terms); each element outside moves at
+// most two eigenvalues out (its K_e has rank two). CG then needs at most
+// 2 · #outside + log(ε/2) / log((c − 1)/(c + 1)) iterations to cut the error by ε (Saad,
+// Iterative Methods, §6.11.3, with the outlying eigenvalues removed first; Axelsson and
+// Lindskog, Numer. Math. 48, 1986). The least over a ladder of c, with ε = kHeadTolerance.
+int DarcySolver::bound_iterations(std::span<const PermeabilityTensor> permeability) const {
   constexpr std::array<double, 8> kSpreads{1.001, 1.003, 1.01, 1.03, 1.1, 1.3, 2.0, 10.0};
   constexpr int kNone = std::numeric_limits<int>::max();
   if (kept_permeability_.size() != permeability.size()) return kNone;
+  const auto spread_of = [](const PermeabilityTensor& k, const PermeabilityTensor& k0) {
+    double lo = 0.0, hi = 0.0;
+    if (k.xy == 0.0 && k0.xy == 0.0) {  // diagonal pencil: exact ratios
+      lo = std::min(k.xx / k0.xx, k.yy / k0.yy);
+      hi = std::max(k.xx / k0.xx, k.yy / k0.yy);
+    } else {
+      const double a = k0.xx * k0.yy - k0.xy * k0.xy;
+      const double b = k0.xx * k.yy + k0.yy * k.xx - 2.0 * k0.xy * k.xy;
+      const double c = k.xx * k.yy - k.xy * k.xy;
+      const double root = std::sqrt(std::max(b * b - 4.0 * a * c, 0.0));
+      hi = (b + root) / (2.0 * a);
+      lo = c / (a * hi);  // λ_min λ_max = det k / det k⁰, without the cancellation of b − root
+    }
+    return std::max(hi, 1.0 / lo);
+  };
   std::array<long, kSpreads.size()> outside{};
   for (std::size_t e = 0; e < permeability.size(); ++e) {
-    const double rho = permeability[e] / kept_permeability_[e];
-    const double spread = rho >= 1.0 ? rho : 1.0 / rho;
-    for (std::size_t i = 0; i < kSpreads.size() && spread > kSpreads[i]; ++i) ++outside[i];
+    const double spread = spread_of(permeability[e], kept_permeability_[e]);
+    for (std::size_t i = 0; i < kSpreads.size() && !(spread <= kSpreads[i]); ++i) ++outside[i];
   }
   long best = kNone;
   for (std::size_t i = 0; i < kSpreads.size(); ++i) {
@@ -483,12 +546,12 @@ int DarcySolver::bound_iterations(std::span<const double> permeability) const {
   return static_cast<int>(std::min<long>(best, kNone));
 }
 
-void DarcySolver::restore_kept_factor(std::span<const double> permeability) {
+void DarcySolver::restore_kept_factor(std::span<const PermeabilityTensor> permeability) {
   if (permeability.empty()) {
     kept_permeability_.clear();
     return;
   }
-  assemble_system(to_isotropic_conductivity(permeability));
+  assemble_system(to_tensor_conductivity(permeability));
   SolveTimings timings;
   if (unknown_count() > 0) factorize_system(timings);
   kept_permeability_.assign(permeability.begin(), permeability.end());
@@ -513,7 +576,10 @@ bool DarcySolver::solve_by_conjugate_gradients(Eigen::VectorXd& x, int budget, i
   };
   // The starting residual in extended precision, as the refinement takes it.
   const Residual start = compute_residual(x);
-  const double balance_tolerance = 0.1 * kBalanceTolerance * start.boundary;
+  // Relative to the smaller of the nodal and the net boundary flow: where flow enters and
+  // leaves by one boundary (a joint crossing it obliquely), the net flow that the reported
+  // balance is relative to is the smaller.
+  const double balance_tolerance = 0.1 * kBalanceTolerance * std::min(start.boundary, start.net);
   Eigen::VectorXd r = start.r;
   Eigen::VectorXd z = solver_->solve(r);
   const auto converged = [&](double error) {

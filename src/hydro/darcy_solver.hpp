@@ -47,20 +47,24 @@ class DarcySolver {
   void set_boundary_values(std::span<const BoundaryCondition> boundaries);
   const std::vector<BoundaryCondition>& boundary_conditions() const { return problem_.boundaries; }
 
-  // Solves with an isotropic permeability, the factor of an earlier matrix serving as the
+  // Solves with a permeability, isotropic or a tensor, the factor of an earlier matrix serving as the
   // preconditioner of conjugate gradients on this one (Saad, Iterative Methods, alg. 9.1),
   // started from `start_heads` (one per node; empty: from zero). CG stops when the head error
   // it estimates, |M⁻¹ r|∞, is under kHeadTolerance of the heads' range and the mass balance
   // it estimates is a tenth of kBalanceTolerance; its answer is kept only when its mass
   // balance as reported (FlowSolution::balance_error) is at most kBalanceTolerance, else it
-  // goes on once from the true residual. The matrix is factored afresh, and solved exactly as
+  // goes on once from the true residual, whose answer is kept within kBalanceBound (the
+  // round-off of the heads, as in solve()'s). The matrix is factored afresh, and solved exactly as
   // by solve(), when no factor is kept; when the permeability has moved so far from the kept
   // factor's that CG could need more than kHopelessIterations (bound_iterations); when CG has
   // not got there in kMaxIterations (or will not, at the rate it goes); and at the solve
   // after one that needed more than kRefactorAfter iterations.
   FlowSolution solve_reusing_factor(std::span<const double> permeability, std::span<const double> start_heads);
+  FlowSolution solve_reusing_factor(std::span<const PermeabilityTensor> permeability,
+                                    std::span<const double> start_heads);
   static constexpr double kHeadTolerance = 1e-13;
   static constexpr double kBalanceTolerance = 1e-12;
+  static constexpr double kBalanceBound = 1e-10;  // the mass balance every solve meets
   static constexpr int kMaxIterations = 12;
   static constexpr int kRefactorAfter = 6;
   static constexpr int kHopelessIterations = 3 * kMaxIterations;
@@ -68,13 +72,14 @@ class DarcySolver {
   // A bound on the CG iterations solve_reusing_factor() would need with the kept factor, in
   // exact arithmetic, from how far each element's permeability is from the kept one (see
   // the .cpp); a large number when no factor is kept.
-  int bound_iterations(std::span<const double> permeability) const;
+  int bound_iterations(std::span<const PermeabilityTensor> permeability) const;
 
-  // The permeability whose factor solve_reusing_factor() would use next (empty: it will
-  // factor afresh). A checkpoint holds it; restore_kept_factor() factors it again, so that a
-  // resumed run goes on with the very factor, bit for bit, of the run it continues.
-  const std::vector<double>& kept_factor_permeability() const { return kept_permeability_; }
-  void restore_kept_factor(std::span<const double> permeability);
+  // The permeability whose factor solve_reusing_factor() would use next, as tensors (an
+  // isotropic k as {k, 0, k}; empty: it will factor afresh). A checkpoint holds it;
+  // restore_kept_factor() factors it again, so that a resumed run goes on with the very
+  // factor, bit for bit, of the run it continues.
+  const std::vector<PermeabilityTensor>& kept_factor_permeability() const { return kept_permeability_; }
+  void restore_kept_factor(std::span<const PermeabilityTensor> permeability);
 
   int unknown_count() const { return static_cast<int>(free_nodes_.size()); }
   long long stored_nonzeros() const { return matrix_.nonZeros(); }
@@ -92,12 +97,19 @@ class DarcySolver {
     Eigen::VectorXd r;  // f − A x over the unknowns
     double balance;     // the relative mass-balance error it implies
     double boundary;    // the flow it is relative to: Σ |nodal flow through the boundary| / 2
+    double net;         // the larger of the boundaries' total inflow and total outflow
   };
   Residual compute_residual(const Eigen::VectorXd& x) const;
   std::vector<long double> compute_a_times_h(const std::vector<double>& h) const;
   std::vector<double> expand_heads(const Eigen::VectorXd& x) const;
   std::vector<Conductivity> to_isotropic_conductivity(std::span<const double> permeability) const;
+  std::vector<Conductivity> to_tensor_conductivity(std::span<const PermeabilityTensor> permeability) const;
   FlowSolution solve_with(std::span<const Conductivity> conductivity);
+  // solve_with(), keeping `permeability` as the factor's for the next solve_reusing_factor().
+  FlowSolution solve_and_keep(std::span<const Conductivity> conductivity,
+                              std::span<const PermeabilityTensor> permeability);
+  FlowSolution reuse_factor(std::span<const Conductivity> conductivity,
+                            std::span<const PermeabilityTensor> permeability, std::span<const double> start_heads);
   // Factorises the assembled matrix (SingularSystem, with a hint, when it cannot).
   void factorize_system(SolveTimings& timings);
   // x = A⁻¹ f with the fresh factor, refined in extended precision (see solve_with).
@@ -132,7 +144,7 @@ class DarcySolver {
   std::vector<double> element_coupling_;  // per triangle, K_e(0,1), K_e(0,2), K_e(1,2)
   SparseMatrix matrix_;                   // lower triangle over the unknowns
   Eigen::VectorXd rhs_;
-  std::vector<double> kept_permeability_;  // whose factor solver_ holds, for reuse (empty: none)
+  std::vector<PermeabilityTensor> kept_permeability_;  // whose factor solver_ holds, for reuse (empty: none)
 };
 
 }  // namespace hydrodda::hydro

@@ -19,6 +19,7 @@ struct PermeabilityTensor {
   double xx = 0.0;
   double xy = 0.0;
   double yy = 0.0;
+  bool operator==(const PermeabilityTensor&) const = default;
 };
 
 }  // namespace hydrodda::hydro

@@ -10,9 +10,10 @@ namespace {
 constexpr std::string_view kMagic = "hydrodda checkpoint\n";
 // 2: measure.csv rows after history.csv's; 3: the coupling loop's Aitken state; 4: a checksum
 // and no timings (so that identical runs write identical checkpoints); 5: the flow solver's kept
-// factor (its permeability) at the end. Only the current format is read: a run stopped by an
-// older hydrodda is run again.
-constexpr std::int64_t kVersion = 6;
+// factor (its permeability) at the end; 6: Anderson's history; 7: the kept factor's
+// permeability as tensors (xx, xy, yy), joint apertures' included. Only the current format is
+// read: a run stopped by an older hydrodda is run again.
+constexpr std::int64_t kVersion = 7;
 // The last 8 bytes: hash_text() of every byte before them. FNV-1a steps are bijective in the
 // state, so any one changed byte changes the sum: a flipped bit is refused, not resumed from.
 constexpr std::size_t kChecksumSize = sizeof(std::uint64_t);
@@ -43,6 +44,11 @@ class Writer {
   void put(Point p) {
     put(p.x);
     put(p.y);
+  }
+  void put(const hydro::PermeabilityTensor& k) {
+    put(k.xx);
+    put(k.xy);
+    put(k.yy);
   }
   template <class T, std::size_t N>
   void put(const std::array<T, N>& a) {
@@ -94,6 +100,11 @@ class Reader {
   void get(Point& p) {
     get(p.x);
     get(p.y);
+  }
+  void get(hydro::PermeabilityTensor& k) {
+    get(k.xx);
+    get(k.xy);
+    get(k.yy);
   }
   template <class T, std::size_t N>
   void get(std::array<T, N>& a) {

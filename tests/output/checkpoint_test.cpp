@@ -59,7 +59,7 @@ RunCheckpoint make_checkpoint() {
   c.coupling.relaxation = 0.7;
   c.coupling.anderson_residuals = {{0.1, -0.2, 0.0, 1e3, -2e3, 0.0}, {0.05, -0.1, 0.0, 5e2, -1e3, 0.0}};
   c.coupling.anderson_images = {{20.1, 3.1, 0.0, 2.01e5, 0.99e5, 0.0}, {20.0, 3.3, 0.0, 2e5, 1e5, 0.0}};
-  c.coupling.kept_factor_permeability = {1e-15, 3.7e-9};
+  c.coupling.kept_factor_permeability = {{1e-15, 0.0, 1e-15}, {3.7e-9, -1.2e-10, 2.5e-11}};
   return c;
 }
 
