@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "geometry/block_network.hpp"
+#include "mesh/triangle_mesh.hpp"
 #include "run/fracture_results.hpp"
 
 namespace geometry = hydrodda::geometry;
@@ -104,6 +105,59 @@ TEST(FractureResults, BlocksThatDoNotFitTheNetworkAreRefused) {
   std::vector<geometry::Polygon> blocks = meter.layout().network.blocks;
   blocks.pop_back();
   EXPECT_THROW(meter.measure(blocks, 0.0), std::invalid_argument);
+}
+
+// The flow zones (FractureMeter::flow_zones, through a spatial grid) against the loop over every
+// face that defines them: each element's centroid goes to the nearest face it projects onto, the
+// lower face index on a tie. A 10 m × 4 m domain cut by tilted joints, beds and two long oblique
+// traces, over a structured mesh of 32,000 triangles: the same zone for every element.
+TEST(FractureResults, FlowZonesAreTheNearestProjectingFace) {
+  geometry::BlockNetworkRequest request;
+  request.domain = {{0, 0}, {10, 0}, {10, 4}, {0, 4}};
+  const geometry::TraceOrigin joint{geometry::TraceSource::joint_set, 1, 0};
+  for (int i = 1; i < 10; ++i) request.traces.push_back({{{i + 0.03 * (i % 3), 0}, {i - 0.02 * (i % 2), 4}}, joint});
+  for (int j = 1; j < 4; ++j) request.traces.push_back({{{0, j + 0.01 * j}, {10, j - 0.02}}, joint});
+  request.traces.push_back({{{0.2, 0}, {9.7, 4}}, joint});
+  request.traces.push_back({{{0, 3.6}, {7.3, 0}}, joint});
+  request.aperture = 1e-3;
+  run::FractureLayout layout{request.traces, geometry::build_block_network(request)};
+  const std::vector<geometry::FractureFace> faces = layout.network.faces;
+  const run::FractureMeter meter(std::move(layout), 0.1);
+
+  hydrodda::mesh::TriangleMesh mesh;
+  constexpr int nx = 200, ny = 80;
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) mesh.nodes.push_back({10.0 * i / nx, 4.0 * j / ny});
+  const auto node = [&](int i, int j) { return j * (nx + 1) + i; };
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      mesh.triangles.push_back({node(i, j), node(i + 1, j), node(i + 1, j + 1)});
+      mesh.triangles.push_back({node(i, j), node(i + 1, j + 1), node(i, j + 1)});
+    }
+  const run::FractureMeter::FlowZones zones = meter.flow_zones(mesh);
+  ASSERT_EQ(zones.fracture.size(), mesh.triangles.size());
+  int in_a_zone = 0;
+  for (int t = 0; t < mesh.triangle_count(); ++t) {
+    const Point c = hydrodda::mesh::triangle_centroid(mesh, t);
+    int nearest = -1;
+    double nearest_distance = INFINITY;
+    for (std::size_t k = 0; k < faces.size(); ++k) {
+      const Point d = faces[k].segment.to - faces[k].segment.from;
+      const double length2 = geometry::dot(d, d);
+      const double along = geometry::dot(c - faces[k].segment.from, d);
+      if (!(length2 > 0.0) || along < 0.0 || along > length2) continue;
+      const double distance = std::abs(geometry::dot(c - faces[k].segment.from, Point{-d.y, d.x})) / std::sqrt(length2);
+      if (distance < nearest_distance) {
+        nearest_distance = distance;
+        nearest = static_cast<int>(k);
+      }
+    }
+    const int expected = nearest >= 0 ? faces[nearest].fracture : -1;
+    ASSERT_EQ(zones.fracture[t], expected) << "triangle " << t << " at (" << c.x << ", " << c.y << ")";
+    EXPECT_DOUBLE_EQ(zones.area[t], hydrodda::mesh::triangle_area(mesh, t));
+    in_a_zone += expected >= 0;
+  }
+  EXPECT_GT(in_a_zone, mesh.triangle_count() * 9 / 10);
 }
 
 }  // namespace

@@ -10,11 +10,13 @@
 #include <cstdint>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <stdexcept>
 #include <string>
 
 #include "mesh/gmsh/gmsh_plugin.hpp"
+#include "mesh/line_distance.hpp"
 #include "mesh/mesh_estimate.hpp"
 #include "mesh/mesh_request.hpp"
 
@@ -301,14 +303,12 @@ TriangleMesh generate_mesh_with_gmsh(const MeshRequest& request) {
     gmsh::option::setNumber("General.NumThreads", request.threads);
     if (!request.refinement_lines.empty()) {
       // Gmsh's Distance + Threshold fields, evaluated with the exact distance to the lines
-      // (a Distance field would sample them; its sample nodes would also join the mesh).
-      const std::vector<Segment> lines = request.refinement_lines;
+      // (a Distance field would sample them; its sample nodes would also join the mesh),
+      // through an index of the lines: only those within refine_distance set the size.
+      const auto lines = std::make_shared<const LineDistance>(request.refinement_lines, request.refine_distance);
       gmsh::model::mesh::setSizeCallback(
           [lines, request](int, int, double x, double y, double) {
-            double d = INFINITY;
-            for (const Segment& s : lines)
-              d = std::min(d, geometry::distance_to_segment({x, y}, s.from, s.to));
-            return refined_size(request, d);
+            return refined_size(request, lines->nearest({x, y}));
           });
     }
     gmsh::model::mesh::generate(2);
