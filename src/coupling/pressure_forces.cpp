@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <optional>
 #include <stdexcept>
 
@@ -66,19 +65,13 @@ FacePressureLoads::FacePressureLoads(const mesh::TriangleMesh& mesh)
                       ? extent
                       : std::sqrt(2.0 * std::max(all.width() * all.height(), 1e-300) / mesh.triangles.size());
   // Boundary edges (in one triangle only), each with its triangle: built once per mesh.
-  std::map<std::pair<int, int>, int> owner;  // sorted edge → triangle, or -1 when shared
-  for (int t = 0; t < mesh.triangle_count(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const auto edge = std::minmax(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3]);
-      const auto [it, inserted] = owner.emplace(edge, t);
-      if (!inserted) it->second = -1;
-    }
-  for (const auto& [edge, t] : owner) {
-    if (t < 0) continue;
-    const Point a = mesh.nodes[edge.first], b = mesh.nodes[edge.second];
+  for (const mesh::BoundarySide& side : mesh::find_boundary_sides(mesh.triangles)) {
+    const auto [first, second] = std::minmax(side.edge[0], side.edge[1]);
+    const int t = side.triangle;
+    const Point a = mesh.nodes[first], b = mesh.nodes[second];
     // The unit normal pointing away from the triangle's third corner: out of the mesh.
     int third = 0;
-    while (mesh.triangles[t][third] == edge.first || mesh.triangles[t][third] == edge.second) ++third;
+    while (mesh.triangles[t][third] == first || mesh.triangles[t][third] == second) ++third;
     Point out = Point{b.y - a.y, a.x - b.x} / geometry::distance(a, b);
     if (dot(out, mesh.nodes[mesh.triangles[t][third]] - a) > 0.0) out = -1.0 * out;
     boundary_.push_back({a, b, t, out});

@@ -40,30 +40,35 @@ std::vector<int> select_region(const TriangleMesh& mesh, const std::string& name
   return selected;
 }
 
-std::vector<std::array<int, 2>> find_boundary_edges(
-    const std::vector<std::array<int, 3>>& triangles) {
+std::vector<BoundarySide> find_boundary_sides(const std::vector<std::array<int, 3>>& triangles) {
   // Sort every edge by its unordered node pair; pairs that occur once are boundary edges.
   struct Edge {
-    int lo, hi, from, to;
+    int lo, hi, from, to, triangle;
   };
   std::vector<Edge> edges;
   edges.reserve(3 * triangles.size());
-  for (const auto& tri : triangles)
+  for (std::size_t t = 0; t < triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) {
-      const int a = tri[k], b = tri[(k + 1) % 3];
-      edges.push_back({std::min(a, b), std::max(a, b), a, b});
+      const int a = triangles[t][k], b = triangles[t][(k + 1) % 3];
+      edges.push_back({std::min(a, b), std::max(a, b), a, b, static_cast<int>(t)});
     }
   std::sort(edges.begin(), edges.end(), [](const Edge& e, const Edge& f) {
     return e.lo != f.lo ? e.lo < f.lo : e.hi < f.hi;
   });
-  std::vector<std::array<int, 2>> boundary;
+  std::vector<BoundarySide> boundary;
   for (std::size_t i = 0; i < edges.size();) {
     std::size_t j = i + 1;
     while (j < edges.size() && edges[j].lo == edges[i].lo && edges[j].hi == edges[i].hi) ++j;
-    if (j - i == 1) boundary.push_back({edges[i].from, edges[i].to});
+    if (j - i == 1) boundary.push_back({{edges[i].from, edges[i].to}, edges[i].triangle});
     i = j;
   }
   return boundary;
+}
+
+std::vector<std::array<int, 2>> find_boundary_edges(const std::vector<std::array<int, 3>>& triangles) {
+  std::vector<std::array<int, 2>> edges;
+  for (const BoundarySide& side : find_boundary_sides(triangles)) edges.push_back(side.edge);
+  return edges;
 }
 
 void validate(const TriangleMesh& mesh) {

@@ -46,6 +46,12 @@ std::vector<int> select_region(const TriangleMesh& mesh, const std::string& name
 // the domain lies to the left), in a deterministic order (sorted by node pair).
 std::vector<std::array<int, 2>> find_boundary_edges(
     const std::vector<std::array<int, 3>>& triangles);
+// The same edges, in the same order, each with the triangle it belongs to.
+struct BoundarySide {
+  std::array<int, 2> edge;  // oriented as in its triangle
+  int triangle = 0;
+};
+std::vector<BoundarySide> find_boundary_sides(const std::vector<std::array<int, 3>>& triangles);
 
 // Checks the invariants every consumer relies on: node indices in range, counter-clockwise
 // triangles of positive area, one region tag per triangle, boundary indices in range.
