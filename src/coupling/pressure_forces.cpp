@@ -54,17 +54,25 @@ std::optional<std::pair<double, double>> clip_segment(Point a, Point b, Point p0
 
 }  // namespace
 
-FacePressureLoads::FacePressureLoads(const mesh::TriangleMesh& mesh)
-    : mesh_(mesh), locator_(mesh), grid_(element_boxes(mesh)) {
-  geometry::Box all;
-  for (Point p : mesh.nodes) all.add(p);
-  const double extent = std::max(all.width(), all.height());
-  tolerance_ = 1e-12 * extent;
-  // The grid holds about two elements a cell: cells of about √(2 × box area / elements).
-  chunk_length_ = mesh.triangles.empty()
-                      ? extent
-                      : std::sqrt(2.0 * std::max(all.width() * all.height(), 1e-300) / mesh.triangles.size());
-  // Boundary edges (in one triangle only), each with its triangle: built once per mesh.
+namespace {
+
+template <class Side>
+std::vector<geometry::Box> side_boxes(const std::vector<Side>& sides) {
+  std::vector<geometry::Box> boxes;
+  for (const auto& side : sides) {
+    geometry::Box box;
+    box.add(side.a);
+    box.add(side.b);
+    boxes.push_back(box);
+  }
+  return boxes;
+}
+
+}  // namespace
+
+// Boundary edges (in one triangle only), each with its triangle: built once per mesh.
+std::vector<FacePressureLoads::BoundarySide> FacePressureLoads::find_boundary(const mesh::TriangleMesh& mesh) {
+  std::vector<BoundarySide> boundary;
   for (const mesh::BoundarySide& side : mesh::find_boundary_sides(mesh.triangles)) {
     const auto [first, second] = std::minmax(side.edge[0], side.edge[1]);
     const int t = side.triangle;
@@ -74,24 +82,37 @@ FacePressureLoads::FacePressureLoads(const mesh::TriangleMesh& mesh)
     while (mesh.triangles[t][third] == first || mesh.triangles[t][third] == second) ++third;
     Point out = Point{b.y - a.y, a.x - b.x} / geometry::distance(a, b);
     if (dot(out, mesh.nodes[mesh.triangles[t][third]] - a) > 0.0) out = -1.0 * out;
-    boundary_.push_back({a, b, t, out});
+    boundary.push_back({a, b, t, out});
   }
+  return boundary;
+}
+
+FacePressureLoads::FacePressureLoads(const mesh::TriangleMesh& mesh)
+    : mesh_(mesh),
+      locator_(mesh),
+      grid_(element_boxes(mesh)),
+      boundary_(find_boundary(mesh)),
+      boundary_grid_(side_boxes(boundary_)) {
+  geometry::Box all;
+  for (Point p : mesh.nodes) all.add(p);
+  const double extent = std::max(all.width(), all.height());
+  tolerance_ = 1e-12 * extent;
+  // The grid holds about two elements a cell: cells of about √(2 × box area / elements).
+  chunk_length_ = mesh.triangles.empty()
+                      ? extent
+                      : std::sqrt(2.0 * std::max(all.width() * all.height(), 1e-300) / mesh.triangles.size());
+  for (const BoundarySide& side : boundary_) boundary_reach_ += geometry::distance(side.a, side.b);
+  if (!boundary_.empty()) boundary_reach_ /= static_cast<double>(boundary_.size());
 }
 
 double FacePressureLoads::pressure_outside_mesh(Point p, std::span<const double> nodal_pressure) const {
-  // Rare (only points outside the fluid mesh): a scan of the boundary edges is enough.
-  const BoundarySide* nearest = nullptr;
-  double best = std::numeric_limits<double>::infinity();
-  for (const BoundarySide& side : boundary_) {
-    const double d = geometry::distance_to_segment(p, side.a, side.b);
-    if (d < best) {
-      best = d;
-      nearest = &side;
-    }
-  }
-  if (!nearest) throw std::invalid_argument("pressure forces: the fluid mesh has no elements");
-  return hydro::interpolate_pressure(mesh_, nodal_pressure, nearest->triangle,
-                                     geometry::closest_point_on_segment(p, nearest->a, nearest->b));
+  // The nearest boundary side, the first in order on a tie, through the grid of their boxes.
+  const int nearest = boundary_grid_.nearest(
+      p, boundary_reach_, [&](int k) { return geometry::distance_to_segment(p, boundary_[k].a, boundary_[k].b); });
+  if (nearest < 0) throw std::invalid_argument("pressure forces: the fluid mesh has no elements");
+  const BoundarySide& side = boundary_[nearest];
+  return hydro::interpolate_pressure(mesh_, nodal_pressure, side.triangle,
+                                     geometry::closest_point_on_segment(p, side.a, side.b));
 }
 
 std::vector<double> FacePressureLoads::cut_where_nearest_side_changes(Point a, Point b) const {

@@ -72,6 +72,9 @@ class FacePressureLoads {
     Point outward;  // unit normal out of the mesh
   };
   std::vector<BoundarySide> boundary_;  // the mesh boundary's edges with their triangle
+  geometry::SpatialGrid boundary_grid_;  // over their boxes
+  double boundary_reach_ = 0.0;          // their mean length: the first search's reach
+  static std::vector<BoundarySide> find_boundary(const mesh::TriangleMesh& mesh);
 
   // The traction α p n (n out of the mesh) on the mesh boundary's parts inside the polygon,
   // as vertex forces of the polygon.

@@ -4,6 +4,7 @@
 // Queries keep no state, so several threads may query one grid at once.
 
 #include <algorithm>
+#include <cmath>
 #include <span>
 #include <vector>
 
@@ -22,6 +23,14 @@ class SpatialGrid {
   // overlap: the same order as a visit that skipped every id already seen.
   template <class Visit>
   void for_each_overlap(const Box& query, Visit&& visit) const;
+
+  // The item nearest to p by `distance(id)` (+infinity for an item that does not qualify),
+  // the lowest id on a tie; −1 when none qualifies. `distance(id)` must be at least the
+  // distance from p to the item's box. Searches squares about p of half-side `first_reach`,
+  // doubled until the nearest found lies within the square (every item outside it is farther)
+  // or the square covers every box.
+  template <class Distance>
+  int nearest(Point p, double first_reach, Distance&& distance) const;
 
   int size() const { return static_cast<int>(boxes_.size()); }
 
@@ -59,6 +68,27 @@ void SpatialGrid::for_each_overlap(const Box& query, Visit&& visit) const {
         if (one_cell || (std::max(c0, column_of(box.lo.x)) == c && std::max(r0, row_of(box.lo.y)) == r)) visit(id);
       }
     }
+}
+
+template <class Distance>
+int SpatialGrid::nearest(Point p, double first_reach, Distance&& distance) const {
+  if (boxes_.empty()) return -1;
+  double reach = first_reach > 0.0 ? first_reach : std::max({bounds_.width(), bounds_.height(), 1e-300});
+  for (;; reach *= 2.0) {
+    const Box square{{p.x - reach, p.y - reach}, {p.x + reach, p.y + reach}};
+    int best = -1;
+    double best_distance = INFINITY;
+    for_each_overlap(square, [&](int id) {
+      const double d = distance(id);
+      if (d < best_distance || (d == best_distance && d < INFINITY && id < best)) {
+        best_distance = d;
+        best = id;
+      }
+    });
+    const bool covers_all = square.lo.x <= bounds_.lo.x && square.lo.y <= bounds_.lo.y &&
+                            square.hi.x >= bounds_.hi.x && square.hi.y >= bounds_.hi.y;
+    if (best_distance <= reach || covers_all) return best;
+  }
 }
 
 }  // namespace hydrodda::geometry

@@ -6,9 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <random>
 #include <vector>
 
+#include "geometry/polygon.hpp"
 #include "geometry/spatial_grid.hpp"
 
 namespace hydrodda::geometry {
@@ -39,6 +42,45 @@ TEST(SpatialGrid, ReportsEveryOverlappingItemOnce) {
       ASSERT_EQ(reported, expected) << "query " << q << ", " << items_per_cell << " items per cell";
     }
   }
+}
+
+// SpatialGrid::nearest against the loop over every item: segments of every length, their
+// distance from points inside, beside and far outside the grid; every fifth segment does not
+// qualify (infinite distance), and a copy of one segment makes a tie that the lower id wins.
+TEST(SpatialGrid, NearestIsTheLoopsNearestLowestIdOnATie) {
+  std::mt19937_64 rng(7);
+  std::vector<std::array<Point, 2>> segments;
+  std::vector<Box> boxes;
+  for (int i = 0; i < 400; ++i) {
+    const Box b = random_box(rng, i % 50 == 0 ? 8.0 : 0.5);
+    segments.push_back({b.lo, b.hi});
+  }
+  segments.push_back(segments[17]);  // the same segment twice: ids 17 and 400
+  for (const auto& [a, b] : segments) {
+    Box box;
+    box.add(a);
+    box.add(b);
+    boxes.push_back(box);
+  }
+  const SpatialGrid grid(boxes);
+  const auto distance = [&](Point p, int id) {
+    return id % 5 == 4 ? INFINITY : distance_to_segment(p, segments[id][0], segments[id][1]);
+  };
+  std::uniform_real_distribution<double> where(-30.0, 40.0);
+  for (int q = 0; q < 3000; ++q) {
+    const Point p = q == 0 ? segments[17][0] : Point{where(rng), where(rng)};
+    int expected = -1;
+    double best = INFINITY;
+    for (int id = 0; id < static_cast<int>(segments.size()); ++id)
+      if (distance(p, id) < best) {
+        best = distance(p, id);
+        expected = id;
+      }
+    for (double first_reach : {0.01, 0.3, 5.0})
+      ASSERT_EQ(grid.nearest(p, first_reach, [&](int id) { return distance(p, id); }), expected)
+          << "at (" << p.x << ", " << p.y << "), first reach " << first_reach;
+  }
+  EXPECT_EQ(SpatialGrid(std::vector<Box>{}).nearest({0, 0}, 1.0, [](int) { return 0.0; }), -1);
 }
 
 }  // namespace
