@@ -41,6 +41,23 @@ double alternation(const std::vector<double>& c) {
   return pairs > 0 ? static_cast<double>(turns) / pairs : 0.0;
 }
 
+// The least period p in 2..5 after which the last values of c come back: the last p values
+// rise and fall (a cycle, not a steady decay or growth) and each is within 10% of the value p
+// passes before it. 0 when there is none, or fewer than two cycles to compare.
+int cycle_period(const std::vector<double>& c) {
+  const std::size_t n = c.size();
+  for (std::size_t p = 2; p <= 5 && 2 * p <= n; ++p) {
+    bool rises = false, falls = false, returns = true;
+    for (std::size_t i = n - p; i < n; ++i) {
+      rises = rises || c[i] > c[i - 1];
+      falls = falls || c[i] < c[i - 1];
+      returns = returns && std::abs(c[i] - c[i - p]) <= 0.1 * std::max(c[i], c[i - p]);
+    }
+    if (rises && falls && returns) return static_cast<int>(p);
+  }
+  return 0;
+}
+
 }  // namespace
 
 // The median over the passes from `first` of two_back / change: small when the heads keep
@@ -69,8 +86,11 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
   const std::size_t first = std::max<std::size_t>(1, all.size() > 10 ? all.size() - 10 : 1);
   std::vector<double> last(all.begin() + static_cast<std::ptrdiff_t>(std::min(first, all.size() - 1)), all.end());
   d.rate = rate_per_pass(last);
+  d.period = cycle_period(last);
   const bool swinging = return_ratio(head_change, head_change_two_passes, first) < 0.1 || alternation(last) >= 0.6;
-  if (last.size() >= 4 && swinging && d.rate > 0.95) d.behaviour = NonConvergence::oscillating;
+  if (head_change.size() < 4) d.behaviour = NonConvergence::too_few_passes;
+  else if (d.period > 0) d.behaviour = NonConvergence::oscillating;
+  else if (last.size() >= 4 && swinging && d.rate > 0.95) d.behaviour = NonConvergence::oscillating;
   else if (d.rate > 1.05) d.behaviour = NonConvergence::diverging;
   else if (d.rate < 0.95) d.behaviour = NonConvergence::still_converging;
   else d.behaviour = NonConvergence::drifting;
@@ -83,9 +103,16 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
   const std::string name = head_worse ? "head" : "displacement";
   const std::string level = format_number(all.back());
   switch (d.behaviour) {
+    case NonConvergence::too_few_passes:
+      d.text = norms + " stayed above the tolerance after " + std::to_string(head_change.size()) +
+               " passes, too few to tell how the loop goes (the " + name + " change at " + level +
+               "): raise coupling.max_iterations";
+      break;
     case NonConvergence::oscillating:
       d.text = norms + " stayed above the tolerance: the loop oscillates (the " + name + " change near " + level +
-               ", the blocks swinging between two states pass after pass); " +
+               (d.period > 2 ? ", coming back to the same values every " + std::to_string(d.period) + " passes"
+                             : std::string(", the blocks swinging between two states pass after pass")) +
+               "); " +
                (accelerated ? "the " + std::string(acceleration) +
                                   " acceleration did not settle it: add coupling.relaxation = 0.5, or more "
                                   "mechanics.steps per pass; a joint that jacks open and shut from pass to pass "

@@ -13,6 +13,7 @@ enum class NonConvergence {
   oscillating,       // rising and falling by turns: the loop cycles between states
   drifting,          // neither falling nor alternating: the blocks keep moving
   diverging,         // rising
+  too_few_passes,    // fewer than four passes: too few to tell
 };
 
 struct ConvergenceDiagnosis {
@@ -21,6 +22,7 @@ struct ConvergenceDiagnosis {
   bool displacement_failed = false;
   double rate = 1.0;       // the failed norm's mean factor per pass over the last passes
   int passes_needed = 0;   // still_converging: about how many more passes it needs
+  int period = 0;          // oscillating: the passes after which the norm comes back (0: not found)
   std::string text;        // one sentence: the norm, the behaviour, what to try
 };
 
@@ -28,7 +30,11 @@ struct ConvergenceDiagnosis {
 // head_change_two_passes) and the tolerance. The failed norm is the larger of the two (relative
 // to the tolerance) at the last pass; its last passes (up to ten, the first left out) are
 // fitted by log c = a + k log r:
-//   oscillating when it falls by less than 5% a pass and either the heads come back to those of
+//   too few passes when fewer than three are fitted (a run of three passes or less);
+//   oscillating when the norm cycles: its last p values rise and fall and each is within 10%
+//   of the value p passes before, for a period p of 2 to 5 passes (two whole cycles fitted; a
+//   fit over a window that is not a whole number of cycles reads as a fall or a rise);
+//   oscillating also when it falls by less than 5% a pass and either the heads come back to those of
 //   two passes before (the median of head_change_two_passes / head_change over those passes is
 //   under 0.1: a swing between two states shows a steady change) or the norm rises and falls by
 //   turns (its pass-to-pass changes alternate in sign at least 60% of the time);

@@ -128,5 +128,37 @@ TEST(NonConvergence, SteadyChangeIsDrift) {
   EXPECT_NE(d.text.find("drifts"), std::string::npos) << d.text;
 }
 
+// A cycle of four passes (0.02, 0.011, 0.006, 0.004, 0.02, ...): a fit over eight passes that
+// starts at its top reads as a fall of ×0.88 a pass, and over seven as a rise; the norm comes
+// back every four passes, so the loop oscillates whatever the phase.
+TEST(NonConvergence, AFourPassCycleIsOscillationWhateverItsPhase) {
+  const std::vector<double> cycle{0.02, 0.011, 0.006, 0.004};
+  for (int phase = 0; phase < 4; ++phase)
+    for (int passes = 9; passes <= 14; ++passes) {
+      std::vector<double> head{1.0}, displacement{1.0};
+      for (int k = 1; k < passes; ++k) {
+        head.push_back(cycle[(k - 1 + phase) % 4]);
+        displacement.push_back(1e-6);
+      }
+      const ConvergenceDiagnosis d =
+          diagnose_non_convergence(head, displacement, std::vector<double>(head.size(), 1.0), 1e-4);
+      EXPECT_EQ(d.behaviour, NonConvergence::oscillating) << "phase " << phase << ", " << passes << " passes";
+      EXPECT_EQ(d.period, 4) << "phase " << phase << ", " << passes << " passes";
+      EXPECT_NE(d.text.find("every 4 passes"), std::string::npos) << d.text;
+    }
+}
+
+// One, two or three passes give at most two changes to fit: no rate can be told from them.
+TEST(NonConvergence, ThreePassesOrFewerAreTooFewToJudge) {
+  for (std::size_t passes = 1; passes <= 3; ++passes) {
+    const std::vector<double> head = geometric(0.1, 0.5, static_cast<int>(passes));
+    const ConvergenceDiagnosis d =
+        diagnose_non_convergence(head, head, std::vector<double>(head.size(), 1.0), 1e-4);
+    EXPECT_EQ(d.behaviour, NonConvergence::too_few_passes) << passes;
+    EXPECT_NE(d.text.find("too few to tell"), std::string::npos) << d.text;
+    EXPECT_EQ(d.text.find("drifts"), std::string::npos) << d.text;
+  }
+}
+
 }  // namespace
 }  // namespace hydrodda::coupling
