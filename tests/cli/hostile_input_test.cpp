@@ -11,6 +11,7 @@
 #include "run_program.hpp"
 
 namespace fs = std::filesystem;
+using hydrodda::testing::run_command;
 using hydrodda::testing::run_program;
 
 namespace {
@@ -63,12 +64,19 @@ TEST(HostileInput, AFolderInPlaceOfSummaryJsonIsAMessageNotAnAbort) {
   fs::remove_all(out);
 }
 
+// Root writes in any folder whatever its permissions, so as root the folder is made immutable
+// instead (chattr +i: not even root may add a file to it), and made writable again afterwards.
 TEST(HostileInput, AnUnwritableRunFolderIsRefusedBeforeRunning) {
-  if (::geteuid() == 0) GTEST_SKIP() << "root writes in any folder whatever its permissions";
   const fs::path out = fresh_folder("read-only");
   fs::create_directories(out);
-  fs::permissions(out, fs::perms::owner_read | fs::perms::owner_exec);
+  const bool root = ::geteuid() == 0;
+  if (root && run_command("chattr +i " + out.string()).exit_code != 0) {
+    fs::remove_all(out);
+    GTEST_SKIP() << "root writes in any folder whatever its permissions, and chattr +i is refused here";
+  }
+  if (!root) fs::permissions(out, fs::perms::owner_read | fs::perms::owner_exec);
   const auto result = run_program("run " + kLoadedBlock.string() + " -o " + out.string());
+  if (root) run_command("chattr -i " + out.string());
   fs::permissions(out, fs::perms::owner_all);
   EXPECT_EQ(result.exit_code, 2) << result.output;
   EXPECT_NE(result.output.find("cannot write in " + out.string()), std::string::npos) << result.output;
