@@ -4,9 +4,14 @@
 // Gmsh and the OpenCASCADE libraries it links take 146,000 relocations to load, 0.1–0.3 s at
 // every start of the program, which a run without a fluid mesh does not need.
 #include <gmsh.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
+#include <cstring>
 #include <cstdint>
 #include <fstream>
 #include <map>
@@ -149,6 +154,219 @@ void append_triangles(TriangleMesh& mesh, const NodeTable& table,
   }
 }
 
+// The triangles of some surfaces (Gmsh node tags, three a triangle, per surface) and the
+// coordinates of every node they use, by tag.
+struct SurfaceMeshes {
+  std::vector<std::vector<std::size_t>> triangles;
+  std::map<std::size_t, Point> nodes;
+};
+
+SurfaceMeshes take_surface_meshes(const std::vector<int>& surface_tags) {
+  SurfaceMeshes out;
+  for (int tag : surface_tags) out.triangles.push_back(get_surface_triangles(tag));
+  std::vector<std::size_t> node_tags;
+  std::vector<double> coords, parametric;
+  gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, false, false);
+  std::map<std::size_t, std::size_t> position;
+  for (std::size_t i = 0; i < node_tags.size(); ++i) position[node_tags[i]] = i;
+  for (const auto& triangles : out.triangles)
+    for (std::size_t tag : triangles) {
+      const auto it = position.find(tag);
+      if (it == position.end())
+        throw std::runtime_error("an element refers to node " + std::to_string(tag) + ", which does not exist");
+      out.nodes.emplace(tag, Point{coords[3 * it->second], coords[3 * it->second + 1]});
+    }
+  return out;
+}
+
+// SurfaceMeshes through a pipe: counts as 64-bit words, coordinates as doubles.
+void append_words(std::string& bytes, const void* data, std::size_t size) {
+  bytes.append(static_cast<const char*>(data), size);
+}
+
+std::string encode_surface_meshes(const SurfaceMeshes& m) {
+  std::string bytes;
+  const auto put = [&](std::uint64_t v) { append_words(bytes, &v, sizeof v); };
+  put(m.triangles.size());
+  for (const auto& t : m.triangles) {
+    put(t.size());
+    for (std::size_t tag : t) put(tag);
+  }
+  put(m.nodes.size());
+  for (const auto& [tag, p] : m.nodes) {
+    put(tag);
+    append_words(bytes, &p.x, sizeof p.x);
+    append_words(bytes, &p.y, sizeof p.y);
+  }
+  return bytes;
+}
+
+SurfaceMeshes decode_surface_meshes(const std::string& bytes) {
+  std::size_t at = 0;
+  const auto take = [&](void* out, std::size_t size) {
+    if (size > bytes.size() - at) throw std::runtime_error("the meshing process sent a message cut short");
+    std::memcpy(out, bytes.data() + at, size);
+    at += size;
+  };
+  const auto get = [&] {
+    std::uint64_t v = 0;
+    take(&v, sizeof v);
+    return v;
+  };
+  SurfaceMeshes m;
+  m.triangles.resize(get());
+  for (auto& t : m.triangles) {
+    t.resize(get());
+    for (std::size_t& tag : t) tag = get();
+  }
+  const std::uint64_t nodes = get();
+  for (std::uint64_t i = 0; i < nodes; ++i) {
+    const std::size_t tag = get();
+    Point p;
+    take(&p.x, sizeof p.x);
+    take(&p.y, sizeof p.y);
+    m.nodes.emplace(tag, p);
+  }
+  if (at != bytes.size()) throw std::runtime_error("the meshing process sent more than a mesh");
+  return m;
+}
+
+void write_all(int fd, const std::string& bytes) {
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return;
+    done += static_cast<std::size_t>(n);
+  }
+}
+
+std::string read_all(int fd) {
+  std::string bytes;
+  char buffer[1 << 16];
+  for (;;) {
+    const ssize_t n = ::read(fd, buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    bytes.append(buffer, static_cast<std::size_t>(n));
+  }
+  return bytes;
+}
+
+// Meshes only `tags` of the model's surfaces (their curves already meshed).
+void mesh_surfaces_only(const std::vector<int>& tags, const std::vector<int>& others) {
+  gmsh::vectorpair hidden;
+  for (int tag : others) hidden.push_back({2, tag});
+  gmsh::vectorpair shown;
+  for (int tag : tags) shown.push_back({2, tag});
+  gmsh::model::setVisibility(hidden, 0, false);
+  gmsh::model::setVisibility(shown, 1, false);
+  gmsh::option::setNumber("Mesh.MeshOnlyVisible", 1);
+  gmsh::model::mesh::generate(2);
+}
+
+// The surfaces' meshes made by two processes at once: their curves are meshed first, here,
+// so that both see the same nodes along the edges they share; then a child process (fork)
+// meshes every other surface while this one meshes the rest, and sends its triangles and new
+// nodes back through a pipe. Each process meshes its surfaces one after another on one
+// thread, so the mesh is the same from run to run and machine to machine; Gmsh's own threads
+// mesh surfaces at once but not reproducibly (545,305 or 545,307 nodes for the
+// 1.09-million-triangle seal from one run to the next). It is not the mesh one process makes
+// of all the surfaces in turn (545,369 nodes against 545,301 there; the same on a seal of
+// 132,028 triangles): what Gmsh makes of a surface depends on the surfaces meshed before it in
+// the same process. A child dies with this process (PR_SET_PDEATHSIG), so an interrupt while
+// meshing ends both. Nodes are numbered the curves' first, then each surface's new nodes in
+// the surfaces' order, each surface's in the order made.
+SurfaceMeshes mesh_surfaces_in_two_processes(const std::vector<int>& tags) {
+  gmsh::model::mesh::generate(1);
+  std::size_t curve_nodes = 0;  // the largest tag of the curves' nodes
+  {
+    std::vector<std::size_t> node_tags;
+    std::vector<double> coords, parametric;
+    gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, false, false);
+    for (std::size_t tag : node_tags) curve_nodes = std::max(curve_nodes, tag);
+  }
+  std::vector<int> mine, theirs;
+  std::vector<std::size_t> index_mine, index_theirs;  // positions in `tags`
+  for (std::size_t i = 0; i < tags.size(); ++i) {
+    (i % 2 == 0 ? mine : theirs).push_back(tags[i]);
+    (i % 2 == 0 ? index_mine : index_theirs).push_back(i);
+  }
+  int channel[2];
+  if (::pipe(channel) != 0) throw std::runtime_error(std::string("no pipe for the meshing process: ") + std::strerror(errno));
+  const pid_t parent = ::getpid();
+  const pid_t child = ::fork();
+  if (child < 0) {
+    ::close(channel[0]);
+    ::close(channel[1]);
+    throw std::runtime_error(std::string("no process to mesh with: ") + std::strerror(errno));
+  }
+  if (child == 0) {
+    ::close(channel[0]);
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(1);
+    std::string message;
+    int status = 0;
+    try {
+      mesh_surfaces_only(theirs, mine);
+      message = "M" + encode_surface_meshes(take_surface_meshes(theirs));
+    } catch (const std::exception& e) {
+      message = std::string("E") + e.what();
+      status = 1;
+    } catch (const std::string& e) {
+      message = "E" + e;
+      status = 1;
+    } catch (...) {
+      message = "E" + describe_gmsh_error();
+      status = 1;
+    }
+    write_all(channel[1], message);
+    ::_exit(status);  // Gmsh's state is the parent's to finalise
+  }
+  ::close(channel[1]);
+  SurfaceMeshes own;
+  std::string failure;
+  try {
+    mesh_surfaces_only(mine, theirs);
+    own = take_surface_meshes(mine);
+  } catch (...) {
+    ::kill(child, SIGKILL);
+    ::close(channel[0]);
+    ::waitpid(child, nullptr, 0);
+    throw;
+  }
+  const std::string message = read_all(channel[0]);
+  ::close(channel[0]);
+  int status = 0;
+  while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (message.empty() || message[0] != 'M' || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error("the second meshing process failed" +
+                             (message.size() > 1 && message[0] == 'E' ? ": " + message.substr(1) : std::string()));
+  const SurfaceMeshes other = decode_surface_meshes(message.substr(1));
+
+  // Renumber the surfaces' new nodes as one process meshing the surfaces in order would.
+  SurfaceMeshes all;
+  all.triangles.resize(tags.size());
+  std::size_t next = curve_nodes + 1;
+  std::vector<std::map<std::size_t, std::size_t>> renumber(tags.size());
+  for (std::size_t i = 0; i < tags.size(); ++i) {
+    const bool is_mine = i % 2 == 0;
+    const SurfaceMeshes& from = is_mine ? own : other;
+    const std::vector<std::size_t>& triangles = from.triangles[i / 2];
+    std::map<std::size_t, std::size_t>& map = renumber[i];
+    for (std::size_t tag : triangles)
+      if (tag > curve_nodes) map.emplace(tag, 0);
+    for (auto& [old_tag, new_tag] : map) new_tag = next++;  // ascending old tags: the order made
+    for (std::size_t tag : triangles) {
+      const std::size_t final_tag = tag > curve_nodes ? map.at(tag) : tag;
+      all.triangles[i].push_back(final_tag);
+      all.nodes.emplace(final_tag, from.nodes.at(tag));
+    }
+  }
+  return all;
+}
+
 // The domain with each named-segment end point that lies on a domain edge inserted as a
 // vertex, so that mesh edges end exactly where named boundaries end.
 geometry::Polygon insert_segment_ends(const geometry::Polygon& domain,
@@ -233,6 +451,7 @@ void check_request(const MeshRequest& request) {
   for (const NamedPolygon& r : request.regions) check_polygon(r.polygon, "region '" + r.name + "'");
   if (!(request.size > 0.0)) throw std::runtime_error("mesh size must be positive");
   if (request.threads < 1) throw std::runtime_error("mesh threads must be at least 1");
+  if (request.processes < 1 || request.processes > 2) throw std::runtime_error("mesh processes must be 1 or 2");
   if (request.tile_triangles < 0) throw std::runtime_error("mesh tile_triangles must not be negative");
   if (request.algorithm != 1 && request.algorithm != 5 && request.algorithm != 6)
     throw std::runtime_error("mesh algorithm must be 1 (MeshAdapt), 5 (Delaunay) or 6 (Frontal-Delaunay)");
@@ -265,11 +484,13 @@ TriangleMesh generate_mesh_with_gmsh(const MeshRequest& request) {
   }
 
   GmshSession session(request.verbose);
+  bool tiled = false;
   // Surfaces of the meshed domain and the region tag of each.
   std::vector<std::pair<int, int>> surfaces;
   call_gmsh("Gmsh could not build the geometry", [&] {
     const int domain_surface = add_occ_polygon(domain);
     const TileGrid tiles = choose_tiles(request, box);
+    tiled = tiles.count() > 1;
     if (request.regions.empty() && tiles.count() == 1) {
       surfaces.push_back({domain_surface, 0});
     } else {
@@ -294,6 +515,9 @@ TriangleMesh generate_mesh_with_gmsh(const MeshRequest& request) {
     gmsh::model::occ::synchronize();
   });
 
+  // A tiled mesh is made by two processes at once (MeshRequest::processes), whatever the
+  // machine's cores, so that the same request gives the same mesh everywhere.
+  const bool two_processes = request.processes > 1 && tiled && surfaces.size() >= 2;
   call_gmsh("Gmsh could not mesh the domain", [&] {
     gmsh::option::setNumber("Mesh.Algorithm", request.algorithm);
     gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
@@ -311,12 +535,29 @@ TriangleMesh generate_mesh_with_gmsh(const MeshRequest& request) {
             return refined_size(request, lines->nearest({x, y}));
           });
     }
-    gmsh::model::mesh::generate(2);
+    if (!two_processes) gmsh::model::mesh::generate(2);
   });
 
   call_gmsh("Gmsh produced an unusable mesh", [&] {
     std::vector<std::vector<std::size_t>> triangles_of_surface;
     std::vector<std::size_t> all_tags;
+    if (two_processes) {
+      std::vector<int> tags;
+      for (const auto& [tag, region] : surfaces) tags.push_back(tag);
+      SurfaceMeshes meshes = mesh_surfaces_in_two_processes(tags);
+      triangles_of_surface = std::move(meshes.triangles);
+      const std::size_t max_tag = meshes.nodes.empty() ? 0 : meshes.nodes.rbegin()->first;
+      NodeTable table;
+      table.index_of_tag.assign(max_tag + 1, -1);
+      for (const auto& [tag, p] : meshes.nodes) {
+        table.index_of_tag[tag] = static_cast<int>(table.nodes.size());
+        table.nodes.push_back(p);
+      }
+      mesh.nodes = table.nodes;
+      for (std::size_t s = 0; s < surfaces.size(); ++s)
+        append_triangles(mesh, table, triangles_of_surface[s], surfaces[s].second);
+      return;
+    }
     for (const auto& [tag, region] : surfaces) {
       triangles_of_surface.push_back(get_surface_triangles(tag));
       all_tags.insert(all_tags.end(), triangles_of_surface.back().begin(),
