@@ -30,6 +30,36 @@ double rate_per_pass(const std::vector<double>& c) {
   return denominator > 0 ? std::exp((n * sxy - sx * sy) / denominator) : 1.0;
 }
 
+// The residual sum of squares of the least-squares line through (x_i, log c_i).
+double misfit(const std::vector<double>& x, const std::vector<double>& c) {
+  const double n = static_cast<double>(c.size());
+  double sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const double y = std::log(std::max(c[i], 1e-300));
+    sx += x[i], sy += y, sxx += x[i] * x[i], sxy += x[i] * y, syy += y * y;
+  }
+  const double denominator = n * sxx - sx * sx;
+  if (!(denominator > 0)) return 0.0;
+  const double b = (n * sxy - sx * sy) / denominator, a = (sy - b * sx) / n;
+  return std::max(0.0, syy - a * sy - b * sxy);
+}
+
+// Whether c falls as a power of the pass rather than geometrically: log c is nearer a line in
+// log k than in k, with a slope above −2 (k the pass number from the run's start, `first_pass`
+// that of c's first value). A block pushed the same way by the same step every pass has a change
+// relative to its displacement of 1/k: it never converges, though its fitted rate falls.
+bool falls_as_a_power(const std::vector<double>& c, std::size_t first_pass) {
+  if (c.size() < 4) return false;
+  std::vector<double> k, log_k;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    k.push_back(static_cast<double>(first_pass + i));
+    log_k.push_back(std::log(static_cast<double>(first_pass + i)));
+  }
+  if (!(misfit(log_k, c) < misfit(k, c))) return false;
+  const double slope = std::log(c.back() / c.front()) / (log_k.back() - log_k.front());
+  return slope > -2.0;
+}
+
 // The share of successive pass-to-pass changes of c that change sign.
 double alternation(const std::vector<double>& c) {
   int turns = 0, pairs = 0;
@@ -84,7 +114,9 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
   const bool head_worse = head_change.back() / tolerance >= displacement_change.back() / tolerance;
   const std::vector<double>& all = head_worse ? head_change : displacement_change;
   const std::size_t first = std::max<std::size_t>(1, all.size() > 10 ? all.size() - 10 : 1);
-  std::vector<double> last(all.begin() + static_cast<std::ptrdiff_t>(std::min(first, all.size() - 1)), all.end());
+  const std::size_t first_index = std::min(first, all.size() - 1);
+  const std::size_t first_pass = first_index + 1;  // passes count from 1
+  std::vector<double> last(all.begin() + static_cast<std::ptrdiff_t>(first_index), all.end());
   d.rate = rate_per_pass(last);
   d.period = cycle_period(last);
   const bool swinging = return_ratio(head_change, head_change_two_passes, first) < 0.1 || alternation(last) >= 0.6;
@@ -92,6 +124,7 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
   else if (d.period > 0) d.behaviour = NonConvergence::oscillating;
   else if (last.size() >= 4 && swinging && d.rate > 0.95) d.behaviour = NonConvergence::oscillating;
   else if (d.rate > 1.05) d.behaviour = NonConvergence::diverging;
+  else if (d.rate < 0.95 && falls_as_a_power(last, first_pass)) d.behaviour = NonConvergence::drifting;
   else if (d.rate < 0.95) d.behaviour = NonConvergence::still_converging;
   else d.behaviour = NonConvergence::drifting;
 
@@ -134,8 +167,10 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
       break;
     }
     case NonConvergence::drifting:
-      d.text = norms + " stayed above the tolerance: the " + name + " change drifts (near " + level +
-               ", neither falling nor alternating): the blocks keep moving from pass to pass; try more "
+      d.text = norms + " stayed above the tolerance: the " + name + " change drifts (" +
+               (d.rate < 0.95 ? "at " + level + ", falling only as a power of the passes, not geometrically"
+                              : "near " + level + ", neither falling nor alternating") +
+               "): the blocks keep moving from pass to pass; try more "
                "mechanics.steps per pass, or check that the fluid load leaves the blocks an equilibrium";
       break;
   }

@@ -38,7 +38,9 @@ struct ConvergenceDiagnosis {
 //   two passes before (the median of head_change_two_passes / head_change over those passes is
 //   under 0.1: a swing between two states shows a steady change) or the norm rises and falls by
 //   turns (its pass-to-pass changes alternate in sign at least 60% of the time);
-//   diverging when r > 1.05; still converging when r < 0.95; drifting otherwise.
+//   diverging when r > 1.05; drifting when r < 0.95 but log c lies nearer a line in log k than in
+//   k with a slope above −2 (it falls only as a power of the pass k); still converging when
+//   r < 0.95 otherwise; drifting otherwise.
 // `acceleration` is coupling.acceleration as run ("none", "aitken", "anderson"): the advice
 // names an acceleration only to a loop that had none.
 ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_change,

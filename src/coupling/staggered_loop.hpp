@@ -180,12 +180,14 @@ class StaggeredLoop {
   // A flow solution exists (false until the first pass's solve succeeds).
   bool has_flow() const { return !solution_.head.empty(); }
 
+  // Each block's displacement since the start (its centroid's).
+  std::vector<Point> block_displacements() const;
+
  private:
   std::vector<geometry::Polygon> current_blocks() const;
   hydro::FlowSolution solve_flow(const std::vector<geometry::Polygon>& blocks);
   void relax(hydro::FlowSolution& fresh);
   void accelerate_by_anderson(hydro::FlowSolution& fresh);
-  std::vector<Point> block_displacements() const;
 
   const mesh::TriangleMesh& mesh_;
   dda::System& mechanics_;

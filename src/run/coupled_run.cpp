@@ -2,6 +2,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -70,6 +71,24 @@ std::string describe_escape(const std::vector<coupling::EscapingBlock>& escaping
       "their own size (the square root of their area) and the loop still moves them: {}; the fluid load exceeds "
       "what the blocks' weight, their contacts and the supports can hold",
       iteration, escaping.size(), blocks);
+}
+
+// "block 12 moved 0.159 m (ux 0.001 m, uy 0.159 m), ...": the farthest five since the start,
+// which show where and which way the load moves the blocks of a loop that drifts or diverges.
+std::string describe_farthest(const std::vector<geometry::Point>& displacements) {
+  std::vector<int> order(displacements.size());
+  for (std::size_t b = 0; b < order.size(); ++b) order[b] = static_cast<int>(b);
+  const auto distance = [&](int b) { return std::hypot(displacements[b].x, displacements[b].y); };
+  const std::size_t named = std::min<std::size_t>(order.size(), 5);
+  std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(named), order.end(),
+                    [&](int a, int b) { return distance(a) > distance(b) || (distance(a) == distance(b) && a < b); });
+  std::string text;
+  for (std::size_t i = 0; i < named; ++i) {
+    const int b = order[i];
+    text += fmt::format("{}block {} moved {:.3g} m (ux {:.3g} m, uy {:.3g} m)", i == 0 ? "" : ", ", b, distance(b),
+                        displacements[b].x, displacements[b].y);
+  }
+  return text;
 }
 
 }  // namespace
@@ -266,6 +285,8 @@ output::RunSummary run_coupled(const RunContext& context) {
                                            s.coupling.tolerance, acceleration_name(s.coupling.acceleration));
     summary.message = fmt::format("the coupling loop did not converge in {} iterations (tolerance {:g}): {}",
                                   s.coupling.max_iterations, s.coupling.tolerance, why.text);
+    if (why.behaviour == coupling::NonConvergence::drifting || why.behaviour == coupling::NonConvergence::diverging)
+      summary.message += "; farthest from where they started: " + describe_farthest(loop.block_displacements());
     spdlog::warn("{}", summary.message);
   }
   context.write_summary(summary);  // the run's result is on disk before the figures are drawn

@@ -160,5 +160,21 @@ TEST(NonConvergence, ThreePassesOrFewerAreTooFewToJudge) {
   }
 }
 
+// A block lifted by the same step every pass (a jacking seal): its displacement change relative
+// to its displacement is 1/k at pass k, which a fit of log c over the last ten passes reads as a
+// fall of about ×0.93 a pass; it never converges, so it drifts.
+TEST(NonConvergence, AChangeFallingAsOneOverThePassIsADrift) {
+  std::vector<double> head, displacement;
+  for (int k = 1; k <= 20; ++k) {
+    head.push_back(1e-6);
+    displacement.push_back(1.0 / k);
+  }
+  const ConvergenceDiagnosis d = diagnose_non_convergence(head, displacement, std::vector<double>(20, 1.0), 1e-4);
+  EXPECT_LT(d.rate, 0.95);
+  EXPECT_EQ(d.behaviour, NonConvergence::drifting);
+  EXPECT_NE(d.text.find("falling only as a power of the passes"), std::string::npos) << d.text;
+  EXPECT_EQ(d.passes_needed, 0);
+}
+
 }  // namespace
 }  // namespace hydrodda::coupling
