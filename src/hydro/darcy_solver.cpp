@@ -326,13 +326,7 @@ DarcySolver::Residual DarcySolver::compute_residual(const Eigen::VectorXd& x) co
   for (double q : prescribed_flow_) boundary += std::abs(q);
   out.balance = boundary > 0.0L ? static_cast<double>(std::abs(sum) / (0.5L * boundary)) : 0.0;
   out.boundary = static_cast<double>(0.5L * boundary);
-  // Per boundary, as compute_boundary_flows() adds them up: the larger of inflow and outflow.
-  std::vector<long double> flow(prescribed_flow_.begin(), prescribed_flow_.end());
-  for (const FixedShare& s : fixed_shares_)
-    flow[s.boundary] += s.weight * (-ah[s.node] - static_cast<long double>(neumann_outflow_[s.node]));
-  long double inflow = 0.0L, outflow = 0.0L;
-  for (long double q : flow) (q < 0 ? inflow : outflow) += std::abs(q);
-  out.net = static_cast<double>(std::max(inflow, outflow));
+  out.net = net_boundary_flow(boundary_totals(ah));
   return out;
 }
 
@@ -648,21 +642,29 @@ FlowSolution DarcySolver::make_solution(const Eigen::VectorXd& x, std::span<cons
 // by edge length where two meet). Since Σ_i (A h)_i = 0 exactly (compute_a_times_h), all
 // boundary flows add up to minus the sum of the free rows' residual: the balance error is
 // the solver's, whatever the mesh.
-void DarcySolver::compute_boundary_flows(FlowSolution& out) const {
-  const std::vector<long double> a_times_h = compute_a_times_h(out.head);
+std::vector<double> DarcySolver::boundary_totals(const std::vector<long double>& a_times_h) const {
   std::vector<double> flow = prescribed_flow_;
   for (const FixedShare& s : fixed_shares_)
     flow[s.boundary] += static_cast<double>(
         s.weight * (-a_times_h[s.node] - static_cast<long double>(neumann_outflow_[s.node])));
+  return flow;
+}
 
+double DarcySolver::net_boundary_flow(const std::vector<double>& flow) {
+  double inflow = 0.0, outflow = 0.0;
+  for (double q : flow) (q < 0 ? inflow : outflow) += std::abs(q);
+  return std::max(inflow, outflow);
+}
+
+void DarcySolver::compute_boundary_flows(FlowSolution& out) const {
+  const std::vector<double> flow = boundary_totals(compute_a_times_h(out.head));
   out.boundary_flows.clear();
-  double sum = 0.0, inflow = 0.0, outflow = 0.0;
+  double sum = 0.0;
   for (std::size_t b = 0; b < flow.size(); ++b) {
     out.boundary_flows.push_back({mesh_.boundary_names[b], flow[b]});
     sum += flow[b];
-    (flow[b] < 0 ? inflow : outflow) += std::abs(flow[b]);
   }
-  const double scale = std::max(inflow, outflow);
+  const double scale = net_boundary_flow(flow);
   out.balance_error = scale > 0.0 ? std::abs(sum) / scale : 0.0;
 }
 

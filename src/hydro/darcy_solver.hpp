@@ -119,6 +119,10 @@ class DarcySolver {
   bool solve_by_conjugate_gradients(Eigen::VectorXd& x, int budget, int& iterations) const;
   FlowSolution make_solution(const Eigen::VectorXd& x, std::span<const Conductivity> conductivity) const;
   void compute_boundary_flows(FlowSolution& out) const;
+  // The flow out through each mesh boundary, from A h (compute_a_times_h), and the larger of
+  // their total inflow and total outflow.
+  std::vector<double> boundary_totals(const std::vector<long double>& a_times_h) const;
+  static double net_boundary_flow(const std::vector<double>& flow);
 
   const mesh::TriangleMesh& mesh_;
   DarcyProblem problem_;
