@@ -15,34 +15,39 @@ std::string format_number(double x) {
   return text;
 }
 
-// The least-squares slope of log c against the pass, as a factor per pass.
-double rate_per_pass(const std::vector<double>& c) {
-  const double n = static_cast<double>(c.size());
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (std::size_t i = 0; i < c.size(); ++i) {
-    const double x = static_cast<double>(i), y = std::log(std::max(c[i], 1e-300));
-    sx += x;
-    sy += y;
-    sxx += x * x;
-    sxy += x * y;
-  }
-  const double denominator = n * sxx - sx * sx;
-  return denominator > 0 ? std::exp((n * sxy - sx * sy) / denominator) : 1.0;
-}
+// The least-squares line log c = a + b x through (x_i, log c_i): its slope b (0 when the x
+// do not spread) and the residual sum of squares about it.
+struct LogLine {
+  double slope = 0.0;
+  double misfit = 0.0;
+};
 
-// The residual sum of squares of the least-squares line through (x_i, log c_i).
-double misfit(const std::vector<double>& x, const std::vector<double>& c) {
+LogLine fit_log_line(const std::vector<double>& x, const std::vector<double>& c) {
   const double n = static_cast<double>(c.size());
   double sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
   for (std::size_t i = 0; i < c.size(); ++i) {
     const double y = std::log(std::max(c[i], 1e-300));
-    sx += x[i], sy += y, sxx += x[i] * x[i], sxy += x[i] * y, syy += y * y;
+    sx += x[i];
+    sy += y;
+    sxx += x[i] * x[i];
+    sxy += x[i] * y;
+    syy += y * y;
   }
   const double denominator = n * sxx - sx * sx;
-  if (!(denominator > 0)) return 0.0;
+  if (!(denominator > 0)) return {};
   const double b = (n * sxy - sx * sy) / denominator, a = (sy - b * sx) / n;
-  return std::max(0.0, syy - a * sy - b * sxy);
+  return {b, std::max(0.0, syy - a * sy - b * sxy)};
 }
+
+// The pass numbers of c's values, the first being `first_pass`.
+std::vector<double> passes_of(const std::vector<double>& c, std::size_t first_pass) {
+  std::vector<double> k;
+  for (std::size_t i = 0; i < c.size(); ++i) k.push_back(static_cast<double>(first_pass + i));
+  return k;
+}
+
+// The least-squares slope of log c against the pass, as a factor per pass.
+double rate_per_pass(const std::vector<double>& c) { return std::exp(fit_log_line(passes_of(c, 0), c).slope); }
 
 // Whether c falls as a power of the pass rather than geometrically: log c is nearer a line in
 // log k than in k, with a slope above −2 (k the pass number from the run's start, `first_pass`
@@ -50,14 +55,11 @@ double misfit(const std::vector<double>& x, const std::vector<double>& c) {
 // relative to its displacement of 1/k: it never converges, though its fitted rate falls.
 bool falls_as_a_power(const std::vector<double>& c, std::size_t first_pass) {
   if (c.size() < 4) return false;
-  std::vector<double> k, log_k;
-  for (std::size_t i = 0; i < c.size(); ++i) {
-    k.push_back(static_cast<double>(first_pass + i));
-    log_k.push_back(std::log(static_cast<double>(first_pass + i)));
-  }
-  if (!(misfit(log_k, c) < misfit(k, c))) return false;
-  const double slope = std::log(c.back() / c.front()) / (log_k.back() - log_k.front());
-  return slope > -2.0;
+  const std::vector<double> k = passes_of(c, first_pass);
+  std::vector<double> log_k;
+  for (double pass : k) log_k.push_back(std::log(pass));
+  const LogLine power = fit_log_line(log_k, c);
+  return power.misfit < fit_log_line(k, c).misfit && power.slope > -2.0;
 }
 
 // The share of successive pass-to-pass changes of c that change sign.
