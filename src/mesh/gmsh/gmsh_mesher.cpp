@@ -155,28 +155,34 @@ void append_triangles(TriangleMesh& mesh, const NodeTable& table,
 }
 
 // The triangles of some surfaces (Gmsh node tags, three a triangle, per surface) and the
-// coordinates of every node they use, by tag.
+// coordinates of every node they use, in ascending tag order.
 struct SurfaceMeshes {
   std::vector<std::vector<std::size_t>> triangles;
-  std::map<std::size_t, Point> nodes;
+  std::vector<std::pair<std::size_t, Point>> nodes;
 };
 
 SurfaceMeshes take_surface_meshes(const std::vector<int>& surface_tags) {
   SurfaceMeshes out;
-  for (int tag : surface_tags) out.triangles.push_back(get_surface_triangles(tag));
-  std::vector<std::size_t> node_tags;
-  std::vector<double> coords, parametric;
-  gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, false, false);
-  std::map<std::size_t, std::size_t> position;
-  for (std::size_t i = 0; i < node_tags.size(); ++i) position[node_tags[i]] = i;
-  for (const auto& triangles : out.triangles)
-    for (std::size_t tag : triangles) {
-      const auto it = position.find(tag);
-      if (it == position.end())
-        throw std::runtime_error("an element refers to node " + std::to_string(tag) + ", which does not exist");
-      out.nodes.emplace(tag, Point{coords[3 * it->second], coords[3 * it->second + 1]});
-    }
+  std::vector<std::size_t> all_tags;
+  for (int tag : surface_tags) {
+    out.triangles.push_back(get_surface_triangles(tag));
+    all_tags.insert(all_tags.end(), out.triangles.back().begin(), out.triangles.back().end());
+  }
+  const NodeTable table = collect_used_nodes(all_tags);
+  for (std::size_t tag = 0; tag < table.index_of_tag.size(); ++tag)
+    if (const int i = table.index_of_tag[tag]; i >= 0) out.nodes.push_back({tag, table.nodes[i]});
   return out;
+}
+
+// The table of nodes listed in ascending tag order.
+NodeTable node_table(const std::vector<std::pair<std::size_t, Point>>& nodes) {
+  NodeTable table;
+  table.index_of_tag.assign(nodes.empty() ? 0 : nodes.back().first + 1, -1);
+  for (const auto& [tag, p] : nodes) {
+    table.index_of_tag[tag] = static_cast<int>(table.nodes.size());
+    table.nodes.push_back(p);
+  }
+  return table;
 }
 
 // SurfaceMeshes through a pipe: counts as 64-bit words, coordinates as doubles.
@@ -219,13 +225,11 @@ SurfaceMeshes decode_surface_meshes(const std::string& bytes) {
     t.resize(get());
     for (std::size_t& tag : t) tag = get();
   }
-  const std::uint64_t nodes = get();
-  for (std::uint64_t i = 0; i < nodes; ++i) {
-    const std::size_t tag = get();
-    Point p;
+  m.nodes.resize(get());
+  for (auto& [tag, p] : m.nodes) {
+    tag = get();
     take(&p.x, sizeof p.x);
     take(&p.y, sizeof p.y);
-    m.nodes.emplace(tag, p);
   }
   if (at != bytes.size()) throw std::runtime_error("the meshing process sent more than a mesh");
   return m;
@@ -286,12 +290,8 @@ SurfaceMeshes mesh_surfaces_in_two_processes(const std::vector<int>& tags) {
     gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, false, false);
     for (std::size_t tag : node_tags) curve_nodes = std::max(curve_nodes, tag);
   }
-  std::vector<int> mine, theirs;
-  std::vector<std::size_t> index_mine, index_theirs;  // positions in `tags`
-  for (std::size_t i = 0; i < tags.size(); ++i) {
-    (i % 2 == 0 ? mine : theirs).push_back(tags[i]);
-    (i % 2 == 0 ? index_mine : index_theirs).push_back(i);
-  }
+  std::vector<int> mine, theirs;  // the even and the odd surfaces of `tags`
+  for (std::size_t i = 0; i < tags.size(); ++i) (i % 2 == 0 ? mine : theirs).push_back(tags[i]);
   int channel[2];
   if (::pipe(channel) != 0) throw std::runtime_error(std::string("no pipe for the meshing process: ") + std::strerror(errno));
   const pid_t parent = ::getpid();
@@ -325,7 +325,6 @@ SurfaceMeshes mesh_surfaces_in_two_processes(const std::vector<int>& tags) {
   }
   ::close(channel[1]);
   SurfaceMeshes own;
-  std::string failure;
   try {
     mesh_surfaces_only(mine, theirs);
     own = take_surface_meshes(mine);
@@ -346,24 +345,28 @@ SurfaceMeshes mesh_surfaces_in_two_processes(const std::vector<int>& tags) {
   const SurfaceMeshes other = decode_surface_meshes(message.substr(1));
 
   // Renumber the surfaces' new nodes as one process meshing the surfaces in order would.
+  const NodeTable own_nodes = node_table(own.nodes), other_nodes = node_table(other.nodes);
   SurfaceMeshes all;
-  all.triangles.resize(tags.size());
   std::size_t next = curve_nodes + 1;
-  std::vector<std::map<std::size_t, std::size_t>> renumber(tags.size());
   for (std::size_t i = 0; i < tags.size(); ++i) {
-    const bool is_mine = i % 2 == 0;
-    const SurfaceMeshes& from = is_mine ? own : other;
+    const SurfaceMeshes& from = i % 2 == 0 ? own : other;
+    const NodeTable& from_nodes = i % 2 == 0 ? own_nodes : other_nodes;
     const std::vector<std::size_t>& triangles = from.triangles[i / 2];
-    std::map<std::size_t, std::size_t>& map = renumber[i];
+    std::map<std::size_t, std::size_t> renumber;  // this surface's new nodes
     for (std::size_t tag : triangles)
-      if (tag > curve_nodes) map.emplace(tag, 0);
-    for (auto& [old_tag, new_tag] : map) new_tag = next++;  // ascending old tags: the order made
+      if (tag > curve_nodes) renumber.emplace(tag, 0);
+    for (auto& [old_tag, new_tag] : renumber) new_tag = next++;  // ascending old tags: the order made
+    std::vector<std::size_t>& renumbered = all.triangles.emplace_back();
     for (std::size_t tag : triangles) {
-      const std::size_t final_tag = tag > curve_nodes ? map.at(tag) : tag;
-      all.triangles[i].push_back(final_tag);
-      all.nodes.emplace(final_tag, from.nodes.at(tag));
+      const std::size_t final_tag = tag > curve_nodes ? renumber.at(tag) : tag;
+      renumbered.push_back(final_tag);
+      all.nodes.push_back({final_tag, from_nodes.nodes[from_nodes.index_of_tag[tag]]});
     }
   }
+  std::sort(all.nodes.begin(), all.nodes.end(), [](const auto& u, const auto& v) { return u.first < v.first; });
+  all.nodes.erase(std::unique(all.nodes.begin(), all.nodes.end(),
+                              [](const auto& u, const auto& v) { return u.first == v.first; }),
+                  all.nodes.end());
   return all;
 }
 
@@ -539,34 +542,13 @@ TriangleMesh generate_mesh_with_gmsh(const MeshRequest& request) {
   });
 
   call_gmsh("Gmsh produced an unusable mesh", [&] {
-    std::vector<std::vector<std::size_t>> triangles_of_surface;
-    std::vector<std::size_t> all_tags;
-    if (two_processes) {
-      std::vector<int> tags;
-      for (const auto& [tag, region] : surfaces) tags.push_back(tag);
-      SurfaceMeshes meshes = mesh_surfaces_in_two_processes(tags);
-      triangles_of_surface = std::move(meshes.triangles);
-      const std::size_t max_tag = meshes.nodes.empty() ? 0 : meshes.nodes.rbegin()->first;
-      NodeTable table;
-      table.index_of_tag.assign(max_tag + 1, -1);
-      for (const auto& [tag, p] : meshes.nodes) {
-        table.index_of_tag[tag] = static_cast<int>(table.nodes.size());
-        table.nodes.push_back(p);
-      }
-      mesh.nodes = table.nodes;
-      for (std::size_t s = 0; s < surfaces.size(); ++s)
-        append_triangles(mesh, table, triangles_of_surface[s], surfaces[s].second);
-      return;
-    }
-    for (const auto& [tag, region] : surfaces) {
-      triangles_of_surface.push_back(get_surface_triangles(tag));
-      all_tags.insert(all_tags.end(), triangles_of_surface.back().begin(),
-                      triangles_of_surface.back().end());
-    }
-    const NodeTable table = collect_used_nodes(all_tags);
+    std::vector<int> tags;
+    for (const auto& [tag, region] : surfaces) tags.push_back(tag);
+    const SurfaceMeshes meshes = two_processes ? mesh_surfaces_in_two_processes(tags) : take_surface_meshes(tags);
+    const NodeTable table = node_table(meshes.nodes);
     mesh.nodes = table.nodes;
     for (std::size_t s = 0; s < surfaces.size(); ++s)
-      append_triangles(mesh, table, triangles_of_surface[s], surfaces[s].second);
+      append_triangles(mesh, table, meshes.triangles[s], surfaces[s].second);
   });
   if (mesh.triangles.empty()) throw std::runtime_error("Gmsh produced no triangles");
   name_boundary_edges(mesh, request.boundaries, box);
