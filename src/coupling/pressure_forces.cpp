@@ -52,10 +52,6 @@ std::optional<std::pair<double, double>> clip_segment(Point a, Point b, Point p0
   return std::pair{t0, t1};
 }
 
-}  // namespace
-
-namespace {
-
 template <class Side>
 std::vector<geometry::Box> side_boxes(const std::vector<Side>& sides) {
   std::vector<geometry::Box> boxes;
