@@ -3,40 +3,20 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "coupling/local_aperture.hpp"
 #include "geometry/clipping.hpp"
 
 namespace hydrodda::coupling {
 
-namespace {
-
-std::vector<geometry::Box> triangle_boxes(std::span<const std::array<Point, 3>> triangles) {
-  std::vector<geometry::Box> boxes;
-  boxes.reserve(triangles.size());
-  for (const auto& t : triangles) {
-    geometry::Box box;
-    for (Point p : t) box.add(p);
-    boxes.push_back(box);
-  }
-  return boxes;
-}
-
-std::vector<std::array<Point, 3>> triangle_corners(std::span<const Point> nodes,
-                                                   std::span<const std::array<int, 3>> triangles) {
-  std::vector<std::array<Point, 3>> out;
-  out.reserve(triangles.size());
-  for (const auto& t : triangles) out.push_back({nodes[t[0]], nodes[t[1]], nodes[t[2]]});
-  return out;
-}
-
-}  // namespace
-
 BoundaryGaps::BoundaryGaps(std::span<const Point> nodes, std::span<const std::array<int, 3>> triangles,
                            const geometry::Polygon& domain, std::span<const geometry::Polygon> blocks_as_built)
-    : triangles_(triangle_corners(nodes, triangles)),
-      grid_(triangle_boxes(triangles_)),
-      domain_(domain) {
+    : BoundaryGaps(std::make_shared<const ElementIndex>(nodes, triangles), domain, blocks_as_built) {}
+
+BoundaryGaps::BoundaryGaps(std::shared_ptr<const ElementIndex> elements, const geometry::Polygon& domain,
+                           std::span<const geometry::Polygon> blocks_as_built)
+    : elements_(std::move(elements)), domain_(domain) {
   const int n = static_cast<int>(domain.size());
   if (n == 0) return;  // no domain given (a loop built by hand): no face is followed
   if (n < 3) throw std::invalid_argument("boundary gaps: the domain needs at least three vertices");
@@ -98,11 +78,11 @@ std::vector<geometry::Polygon> BoundaryGaps::find_gaps(std::span<const geometry:
 }
 
 std::vector<double> BoundaryGaps::compute_gap_areas(std::span<const geometry::Polygon> blocks) const {
-  std::vector<double> areas(triangles_.size(), 0.0);
+  std::vector<double> areas(elements_->corners().size(), 0.0);
   for (const geometry::Polygon& gap : find_gaps(blocks)) {
     if (geometry::area(gap) == 0.0) continue;
-    grid_.for_each_overlap(geometry::bounding_box(gap), [&](int e) {
-      areas[e] += geometry::clipped_area(triangles_[e], gap);
+    elements_->grid().for_each_overlap(geometry::bounding_box(gap), [&](int e) {
+      areas[e] += geometry::clipped_area(elements_->corners()[e], gap);
     });
   }
   return areas;

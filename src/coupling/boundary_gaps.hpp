@@ -16,9 +16,11 @@
 // Either way it is no fracture: the element keeps the open area of the real fractures over it.
 
 #include <array>
+#include <memory>
 #include <span>
 #include <vector>
 
+#include "coupling/element_index.hpp"
 #include "coupling/porosity.hpp"
 #include "geometry/point.hpp"
 #include "geometry/polygon.hpp"
@@ -41,6 +43,9 @@ class BoundaryGaps {
   // when both its ends lie within 1e-9 of the domain's size of one domain edge.
   BoundaryGaps(std::span<const Point> nodes, std::span<const std::array<int, 3>> triangles,
                const geometry::Polygon& domain, std::span<const geometry::Polygon> blocks_as_built);
+  // The same over a shared index of the mesh's elements.
+  BoundaryGaps(std::shared_ptr<const ElementIndex> elements, const geometry::Polygon& domain,
+               std::span<const geometry::Polygon> blocks_as_built);
 
   // Per element: the area of the boundary gaps over it (m²), for the blocks as they are now.
   std::vector<double> compute_gap_areas(std::span<const geometry::Polygon> blocks) const;
@@ -67,8 +72,7 @@ class BoundaryGaps {
     Point inward;  // unit normal into the domain
   };
 
-  std::vector<std::array<Point, 3>> triangles_;
-  geometry::SpatialGrid grid_;  // over the elements' boxes
+  std::shared_ptr<const ElementIndex> elements_;
   geometry::Polygon domain_;
   std::vector<Side> sides_;
   std::vector<BoundaryFace> faces_;

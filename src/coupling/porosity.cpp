@@ -2,19 +2,13 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 #include "dda/parallel.hpp"
 
 namespace hydrodda::coupling {
 
 namespace {
-std::vector<std::array<Point, 3>> gather(std::span<const Point> nodes, std::span<const std::array<int, 3>> triangles) {
-  std::vector<std::array<Point, 3>> out;
-  out.reserve(triangles.size());
-  for (const auto& t : triangles) out.push_back({nodes[t[0]], nodes[t[1]], nodes[t[2]]});
-  return out;
-}
-
 geometry::Box box_of(const std::array<Point, 3>& t) {
   return {{std::min({t[0].x, t[1].x, t[2].x}), std::min({t[0].y, t[1].y, t[2].y})},
           {std::max({t[0].x, t[1].x, t[2].x}), std::max({t[0].y, t[1].y, t[2].y})}};
@@ -30,15 +24,14 @@ void find_candidates(const std::array<Point, 3>& t, const geometry::SpatialGrid&
 }  // namespace
 
 PorosityMapper::PorosityMapper(std::span<const Point> nodes, std::span<const std::array<int, 3>> triangles)
-    : triangles_(gather(nodes, triangles)) {
-  areas_.reserve(triangles_.size());
-  for (const auto& t : triangles_) areas_.push_back(geometry::area(t));
-}
+    : elements_(std::make_shared<const ElementIndex>(nodes, triangles)) {}
+
+PorosityMapper::PorosityMapper(std::shared_ptr<const ElementIndex> elements) : elements_(std::move(elements)) {}
 
 double PorosityMapper::compute_covered_area(int e, const geometry::ClipPolygons& blocks,
                                             const geometry::SpatialGrid& grid, Scratch& scratch) const {
-  const std::array<Point, 3>& t = triangles_[e];
-  const double a = areas_[e];
+  const std::array<Point, 3>& t = elements_->corners()[e];
+  const double a = elements_->areas()[e];
   // Most elements lie inside one block, often the one that held the element before (mesh
   // order follows space): then A_f = 0 whatever else overlaps, as the sum below would give.
   int& hint = scratch.hint;
@@ -58,8 +51,8 @@ double PorosityMapper::compute_covered_area(int e, const geometry::ClipPolygons&
 
 double PorosityMapper::compute_pieces(int e, const geometry::ClipPolygons& blocks, const geometry::SpatialGrid& grid,
                                       Scratch& scratch, std::vector<BlockPiece>& pieces) const {
-  const std::array<Point, 3>& t = triangles_[e];
-  const double a = areas_[e];
+  const std::array<Point, 3>& t = elements_->corners()[e];
+  const double a = elements_->areas()[e];
   find_candidates(t, grid, scratch.candidates);
   // Every block's part is wanted (the seepage force acts on overlapping blocks too), so no
   // early out; the sum is compute_covered_area's, or A_e or more where that one stopped early,
@@ -81,7 +74,7 @@ PorosityField PorosityMapper::compute(std::span<const geometry::Polygon> blocks,
                                       std::vector<BlockPiece>* pieces) const {
   if (!(matrix_porosity >= 0.0 && matrix_porosity < 1.0))
     throw std::invalid_argument("porosity: the matrix porosity must lie in [0, 1)");
-  const std::size_t n = triangles_.size();
+  const std::size_t n = elements_->corners().size();
   // The blocks as they are in this pass: their edges as half-planes, and a grid over their
   // boxes (about one block per cell) to find those over each element.
   const geometry::ClipPolygons prepared(blocks);
@@ -95,7 +88,7 @@ PorosityField PorosityMapper::compute(std::span<const geometry::Polygon> blocks,
     const auto [begin, end] = dda::half_range(part, n);
     Scratch scratch;
     for (std::size_t e = begin; e < end; ++e) {
-      const double a = areas_[e];
+      const double a = elements_->areas()[e];
       const int element = static_cast<int>(e);
       const double covered = pieces ? compute_pieces(element, prepared, grid, scratch, half_pieces[part])
                                     : compute_covered_area(element, prepared, grid, scratch);

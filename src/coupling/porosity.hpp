@@ -5,9 +5,11 @@
 // A_e, and A_f is then taken as 0. Parts of blocks outside the fluid mesh count for nothing.
 
 #include <array>
+#include <memory>
 #include <span>
 #include <vector>
 
+#include "coupling/element_index.hpp"
 #include "geometry/clipping.hpp"
 #include "geometry/point.hpp"
 #include "geometry/polygon.hpp"
@@ -34,11 +36,12 @@ struct BlockPiece {
   Point centroid;
 };
 
-// Keeps the fixed mesh's element corners and areas; each pass clips every element against the
-// blocks as they are then.
+// Keeps the fixed mesh's element corners and areas (an ElementIndex, shared or its own); each
+// pass clips every element against the blocks as they are then.
 class PorosityMapper {
  public:
   PorosityMapper(std::span<const Point> nodes, std::span<const std::array<int, 3>> triangles);
+  explicit PorosityMapper(std::shared_ptr<const ElementIndex> elements);
 
   // Blocks: simple polygons in either orientation. matrix_porosity in [0, 1). With `pieces`,
   // also every block ∩ element part of non-zero area, from the same clips, ordered by block
@@ -46,7 +49,7 @@ class PorosityMapper {
   PorosityField compute(std::span<const geometry::Polygon> blocks, double matrix_porosity,
                         std::vector<BlockPiece>* pieces = nullptr) const;
 
-  const std::vector<double>& element_areas() const { return areas_; }
+  const std::vector<double>& element_areas() const { return elements_->areas(); }
 
  private:
   // What one thread keeps from element to element.
@@ -62,8 +65,7 @@ class PorosityMapper {
   double compute_pieces(int e, const geometry::ClipPolygons& blocks, const geometry::SpatialGrid& grid,
                         Scratch& scratch, std::vector<BlockPiece>& pieces) const;
 
-  std::vector<std::array<Point, 3>> triangles_;
-  std::vector<double> areas_;
+  std::shared_ptr<const ElementIndex> elements_;
 };
 
 }  // namespace hydrodda::coupling

@@ -5,6 +5,7 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "coupling/force_moments.hpp"
 #include "hydro/element_pressure.hpp"
@@ -12,17 +13,6 @@
 namespace hydrodda::coupling {
 
 namespace {
-
-std::vector<geometry::Box> element_boxes(const mesh::TriangleMesh& mesh) {
-  std::vector<geometry::Box> boxes;
-  boxes.reserve(mesh.triangles.size());
-  for (const auto& t : mesh.triangles) {
-    geometry::Box box;
-    for (int n : t) box.add(mesh.nodes[n]);
-    boxes.push_back(box);
-  }
-  return boxes;
-}
 
 // A piece of a segment inside one element: parameters t0 < t1 along it.
 struct SegmentPiece {
@@ -84,9 +74,12 @@ std::vector<FacePressureLoads::BoundarySide> FacePressureLoads::find_boundary(co
 }
 
 FacePressureLoads::FacePressureLoads(const mesh::TriangleMesh& mesh)
+    : FacePressureLoads(mesh, std::make_shared<const ElementIndex>(mesh.nodes, mesh.triangles)) {}
+
+FacePressureLoads::FacePressureLoads(const mesh::TriangleMesh& mesh, std::shared_ptr<const ElementIndex> elements)
     : mesh_(mesh),
       locator_(mesh),
-      grid_(element_boxes(mesh)),
+      elements_(std::move(elements)),
       boundary_(find_boundary(mesh)),
       boundary_grid_(side_boxes(boundary_)) {
   geometry::Box all;
@@ -160,7 +153,7 @@ FacePressureLoads::SegmentIntegrals FacePressureLoads::integrate_along(Point a, 
     geometry::Box box;
     box.add(a + (static_cast<double>(k) / chunks) * (b - a));
     box.add(a + (static_cast<double>(k + 1) / chunks) * (b - a));
-    grid_.for_each_overlap(box.inflated(tolerance_), [&](int e) { candidates.push_back(e); });
+    elements_->grid().for_each_overlap(box.inflated(tolerance_), [&](int e) { candidates.push_back(e); });
   }
   std::sort(candidates.begin(), candidates.end());
   candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());

@@ -14,9 +14,11 @@
 // pressure (not 1 − α of it), and the mesh boundary across the block, Γ, the traction α p n
 // (n out of the mesh). Net force and moment then stay the same for every α.
 
+#include <memory>
 #include <span>
 #include <vector>
 
+#include "coupling/element_index.hpp"
 #include "geometry/point.hpp"
 #include "geometry/polygon.hpp"
 #include "geometry/spatial_grid.hpp"
@@ -32,6 +34,8 @@ class FacePressureLoads {
  public:
   // Keeps a reference to the mesh, which must outlive it.
   explicit FacePressureLoads(const mesh::TriangleMesh& mesh);
+  // The same over a shared index of the mesh's elements.
+  FacePressureLoads(const mesh::TriangleMesh& mesh, std::shared_ptr<const ElementIndex> elements);
 
   // forces[b][v] on vertex v of block b (blocks counter-clockwise) from the nodal pressures;
   // biot[b] is the α of block b.
@@ -63,7 +67,7 @@ class FacePressureLoads {
 
   const mesh::TriangleMesh& mesh_;
   mesh::PointLocator locator_;
-  geometry::SpatialGrid grid_;  // over the elements' boxes
+  std::shared_ptr<const ElementIndex> elements_;  // the elements' grid
   double chunk_length_ = 1.0;   // a face is searched in pieces about one grid cell long
   double tolerance_ = 0.0;      // distance within which a point counts as on an element's edge
   struct BoundarySide {

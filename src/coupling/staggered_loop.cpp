@@ -66,9 +66,10 @@ StaggeredLoop::StaggeredLoop(const mesh::TriangleMesh& mesh, hydro::DarcyProblem
       mechanics_(mechanics),
       settings_(std::move(settings)),
       darcy_(mesh, std::move(flow)),
-      porosity_mapper_(mesh.nodes, mesh.triangles),
-      boundary_gaps_(mesh.nodes, mesh.triangles, settings_.permeability.domain, current_blocks()),
-      face_loads_(mesh),
+      elements_(std::make_shared<const ElementIndex>(mesh.nodes, mesh.triangles)),
+      porosity_mapper_(elements_),
+      boundary_gaps_(elements_, settings_.permeability.domain, current_blocks()),
+      face_loads_(mesh, elements_),
       anderson_(settings_.anderson_depth) {
   for (int t = 0; t < mesh.triangle_count(); ++t) centroids_.push_back(mesh::triangle_centroid(mesh, t));
   for (int b = 0; b < mechanics.block_count(); ++b) block_sizes_.push_back(std::sqrt(mechanics.area(b)));

@@ -193,6 +193,7 @@ class StaggeredLoop {
   dda::System& mechanics_;
   LoopSettings settings_;
   hydro::DarcySolver darcy_;
+  std::shared_ptr<const ElementIndex> elements_;  // shared by the next three
   PorosityMapper porosity_mapper_;
   BoundaryGaps boundary_gaps_;      // the faces that lay on the domain boundary as built
   FacePressureLoads face_loads_;

@@ -6,8 +6,28 @@
 
 namespace hydrodda::output {
 
-// Writes `content` to a temporary file beside `path`, flushes it, then renames it over `path`
-// (atomic on POSIX within one file system). Throws std::runtime_error naming the path on failure.
+// A file written in pieces to a temporary file beside `path`, then flushed and renamed over
+// `path` by commit() (atomic on POSIX within one file system): a large file (a fluid field of
+// a million triangles) is written as its parts are made, never held whole in memory. Not
+// committed, the temporary file is removed and `path` is left as it was. Throws
+// std::runtime_error naming the path on failure.
+class AtomicFile {
+ public:
+  explicit AtomicFile(const std::filesystem::path& path);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  void write(std::string_view bytes);
+  void commit();
+
+ private:
+  std::filesystem::path path_;
+  std::filesystem::path temporary_;
+  int fd_ = -1;
+};
+
+// The whole `content` through an AtomicFile.
 void write_file_atomically(const std::filesystem::path& path, std::string_view content);
 
 }  // namespace hydrodda::output

@@ -35,6 +35,10 @@ struct RunCheckpoint {
 };
 
 std::string encode_checkpoint(const RunCheckpoint& checkpoint);
+// The same bytes with the engines' states given apart (checkpoint.mechanics and .coupling are
+// not read): a run encodes the states it holds without copying them into a RunCheckpoint.
+std::string encode_checkpoint(const RunCheckpoint& checkpoint, const dda::SystemState& mechanics,
+                              const coupling::LoopState& coupling);
 // Throws CheckpointError when the bytes are not a whole checkpoint of this format.
 RunCheckpoint decode_checkpoint(std::string_view bytes);
 

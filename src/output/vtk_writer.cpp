@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <iterator>
 #include <set>
 #include <stdexcept>
@@ -21,13 +22,6 @@ constexpr int vtk_line = 3;
 constexpr int vtk_triangle = 5;
 constexpr int vtk_polygon = 7;
 
-// Cells in VTK's flat layout: all node indices, then the end offset of each cell.
-struct CellBlock {
-  std::vector<std::int64_t> connectivity;
-  std::vector<std::int64_t> offsets;
-  int type = 0;
-};
-
 // The message is formatted only on failure: these checks run once per value and node.
 template <class... Args>
 void require(bool ok, fmt::format_string<Args...> message, Args&&... args) {
@@ -41,12 +35,13 @@ void check_arrays(std::span<const DataArray> arrays, std::size_t count, const ch
     require(names.insert(a.name).second, "VTK {} array '{}' appears twice", where, a.name);
     require(a.components >= 1, "VTK {} array '{}' has {} components; need at least 1", where,
             a.name, a.components);
+    const std::span<const double> values = a.numbers();
     const std::size_t expected = count * static_cast<std::size_t>(a.components);
-    require(a.values.size() == expected,
+    require(values.size() == expected,
             "VTK {} array '{}' has {} values; expected {} ({} tuples x {} components)", where,
-            a.name, a.values.size(), expected, count, a.components);
-    for (std::size_t i = 0; i < a.values.size(); ++i) {
-      require(std::isfinite(a.values[i]), "VTK {} array '{}' has a non-finite value at index {}",
+            a.name, values.size(), expected, count, a.components);
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      require(std::isfinite(values[i]), "VTK {} array '{}' has a non-finite value at index {}",
               where, a.name, i);
     }
   }
@@ -74,12 +69,21 @@ std::vector<double> with_zero_z(std::size_t count, XY xy) {
   return xyz;
 }
 
-// One <DataArray> of a file and the bytes it stores.
+template <class T>
+std::vector<std::byte> bytes_of(const std::vector<T>& values) {
+  const auto bytes = std::as_bytes(std::span(values));
+  return {bytes.begin(), bytes.end()};
+}
+
+// One <DataArray> of a file: its bytes in place, or made only when it is compressed (points
+// as triples, cells as 64-bit integers, a 2-component field padded), so that a file of a
+// million triangles never holds all its arrays at once.
 struct Array {
   std::string_view type;
   std::string_view name;
   int components;
   std::span<const std::byte> bytes;
+  std::function<std::vector<std::byte>()> make;
 };
 
 // The arrays of one XML element of the piece (<PointData>, <CellData>, <Points>, <Cells>).
@@ -88,22 +92,51 @@ struct Section {
   std::vector<Array> arrays;
 };
 
-// A field's array; a 2-component field's (x, y, 0) triples are kept in `padded`.
-Array field_array(const DataArray& a, std::vector<std::vector<double>>& padded) {
-  if (a.components != 2) return {"Float64", a.name, a.components, std::as_bytes(std::span(a.values))};
-  const auto& v = a.values;
-  padded.push_back(with_zero_z(v.size() / 2, [&](std::size_t t) { return std::pair{v[2 * t], v[2 * t + 1]}; }));
-  return {"Float64", a.name, 3, std::as_bytes(std::span(padded.back()))};
+// A field's array; a 2-component field's (x, y, 0) triples are made when it is compressed.
+Array field_array(const DataArray& a) {
+  const std::span<const double> v = a.numbers();
+  if (a.components != 2) return {"Float64", a.name, a.components, std::as_bytes(v), {}};
+  return {"Float64", a.name, 3, {}, [v] {
+            return bytes_of(with_zero_z(v.size() / 2, [&](std::size_t t) { return std::pair{v[2 * t], v[2 * t + 1]}; }));
+          }};
 }
 
-// The whole file: the XML, each array's element naming its offset into the appended data, then
-// the appended data after an underscore, which marks where the raw bytes begin.
-std::string render_file(std::size_t point_count, std::size_t cell_count, std::span<const Section> sections,
-                        int level) {
-  std::vector<std::span<const std::byte>> bytes;
+// Each array's compressed encoding, in order. Arrays are compressed in batches of about
+// kBatchBytes: the OpenMP threads share the blocks of a batch's many small arrays (a contact
+// file's), while the bytes made for a batch are dropped before the next is made.
+std::vector<std::string> compress_arrays(std::span<const Section> sections, int level) {
+  constexpr std::size_t kBatchBytes = std::size_t{16} << 20;
+  std::vector<std::string> encoded;
+  std::vector<std::vector<std::byte>> made;
+  std::vector<std::span<const std::byte>> batch;
+  std::size_t batch_bytes = 0;
+  const auto flush = [&] {
+    for (std::string& e : compress_zlib_blocks(batch, level)) encoded.push_back(std::move(e));
+    batch.clear();
+    made.clear();
+    batch_bytes = 0;
+  };
   for (const Section& s : sections)
-    for (const Array& a : s.arrays) bytes.push_back(a.bytes);
-  const std::vector<std::string> encoded = compress_zlib_blocks(bytes, level);
+    for (const Array& a : s.arrays) {
+      if (a.make) {
+        made.push_back(a.make());
+        batch.push_back(made.back());
+      } else {
+        batch.push_back(a.bytes);
+      }
+      batch_bytes += batch.back().size();
+      if (batch_bytes >= kBatchBytes) flush();
+    }
+  if (!batch.empty()) flush();
+  return encoded;
+}
+
+// The whole file, written as it is made: the XML, each array's element naming its offset into
+// the appended data, then the appended data after an underscore, which marks where the raw
+// bytes begin.
+void write_file(const std::filesystem::path& path, std::size_t point_count, std::size_t cell_count,
+                std::span<const Section> sections, int level) {
+  std::vector<std::string> encoded = compress_arrays(sections, level);
 
   std::string xml;
   xml += "<?xml version=\"1.0\"?>\n";
@@ -126,34 +159,68 @@ std::string render_file(std::size_t point_count, std::size_t cell_count, std::sp
   xml += "    </Piece>\n";
   xml += "  </UnstructuredGrid>\n";
   xml += "  <AppendedData encoding=\"raw\">\n   _";
-  xml.reserve(xml.size() + offset + 32);
-  for (const std::string& e : encoded) xml += e;
-  xml += "\n  </AppendedData>\n";
-  xml += "</VTKFile>\n";
-  return xml;
+  AtomicFile file(path);
+  file.write(xml);
+  for (std::string& e : encoded) {
+    file.write(e);
+    std::string().swap(e);  // each array's memory goes back as soon as it is on its way
+  }
+  file.write("\n  </AppendedData>\n</VTKFile>\n");
+  file.commit();
 }
 
-// Validates everything, then renders one <UnstructuredGrid> piece and writes it atomically.
+// Validates everything, then writes one <UnstructuredGrid> piece atomically. `cells` gives
+// the connectivity (all node indices) and the end offset of each cell, made when compressed.
+struct CellArrays {
+  std::size_t count = 0;
+  int type = 0;
+  std::function<std::vector<std::byte>()> connectivity;
+  std::function<std::vector<std::byte>()> offsets;
+};
+
 void write_unstructured_grid(const std::filesystem::path& path, std::span<const Point> points,
-                             const CellBlock& cells, std::span<const DataArray> point_data,
+                             const CellArrays& cells, std::span<const DataArray> point_data,
                              std::span<const DataArray> cell_data, VtuCompression compression) {
   check_points(points);
   check_arrays(point_data, points.size(), "point");
-  check_arrays(cell_data, cells.offsets.size(), "cell");
+  check_arrays(cell_data, cells.count, "cell");
 
-  std::vector<std::vector<double>> padded;
-  padded.reserve(point_data.size() + cell_data.size());  // the spans into it stay valid
   std::vector<Section> sections{{"PointData", {}}, {"CellData", {}}};
-  for (const DataArray& a : point_data) sections[0].arrays.push_back(field_array(a, padded));
-  for (const DataArray& a : cell_data) sections[1].arrays.push_back(field_array(a, padded));
-  const auto xyz = with_zero_z(points.size(), [&](std::size_t i) { return std::pair{points[i].x, points[i].y}; });
-  sections.push_back({"Points", {{"Float64", "Points", 3, std::as_bytes(std::span(xyz))}}});
-  const std::vector<std::uint8_t> types(cells.offsets.size(), static_cast<std::uint8_t>(cells.type));
+  for (const DataArray& a : point_data) sections[0].arrays.push_back(field_array(a));
+  for (const DataArray& a : cell_data) sections[1].arrays.push_back(field_array(a));
+  const auto xyz = [points] {
+    return bytes_of(with_zero_z(points.size(), [&](std::size_t i) { return std::pair{points[i].x, points[i].y}; }));
+  };
+  sections.push_back({"Points", {{"Float64", "Points", 3, {}, xyz}}});
+  const auto types = [&cells] {
+    return std::vector<std::byte>(cells.count, static_cast<std::byte>(cells.type));
+  };
   sections.push_back({"Cells",
-                      {{"Int64", "connectivity", 1, std::as_bytes(std::span(cells.connectivity))},
-                       {"Int64", "offsets", 1, std::as_bytes(std::span(cells.offsets))},
-                       {"UInt8", "types", 1, std::as_bytes(std::span(types))}}});
-  write_file_atomically(path, render_file(points.size(), cells.offsets.size(), sections, compression.level));
+                      {{"Int64", "connectivity", 1, {}, cells.connectivity},
+                       {"Int64", "offsets", 1, {}, cells.offsets},
+                       {"UInt8", "types", 1, {}, types}}});
+  write_file(path, points.size(), cells.count, sections, compression.level);
+}
+
+// Cells of `corners` corners each, numbered in turn: connectivity 0, 1, 2, ... and end offsets
+// corners, 2 corners, ... (the blocks' and segments' own points).
+CellArrays numbered_cells(int type, std::size_t count, std::function<std::size_t(std::size_t)> corners_of) {
+  CellArrays cells;
+  cells.count = count;
+  cells.type = type;
+  cells.offsets = [count, corners_of] {
+    std::vector<std::int64_t> offsets(count);
+    std::int64_t end = 0;
+    for (std::size_t k = 0; k < count; ++k) offsets[k] = end += static_cast<std::int64_t>(corners_of(k));
+    return bytes_of(offsets);
+  };
+  cells.connectivity = [count, corners_of] {
+    std::vector<std::int64_t> connectivity;
+    for (std::size_t k = 0; k < count; ++k)
+      for (std::size_t c = 0; c < corners_of(k); ++c) connectivity.push_back(static_cast<std::int64_t>(connectivity.size()));
+    return bytes_of(connectivity);
+  };
+  return cells;
 }
 
 }  // namespace
@@ -178,54 +245,49 @@ void write_vtu_triangles(const std::filesystem::path& path, std::span<const Poin
                          std::span<const std::array<int, 3>> triangles,
                          std::span<const DataArray> point_data,
                          std::span<const DataArray> cell_data, VtuCompression compression) {
-  CellBlock cells;
-  cells.type = vtk_triangle;
-  cells.connectivity.reserve(3 * triangles.size());
-  cells.offsets.reserve(triangles.size());
   const auto node_count = static_cast<std::int64_t>(nodes.size());
-  for (std::size_t t = 0; t < triangles.size(); ++t) {
-    for (int n : triangles[t]) {
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    for (int n : triangles[t])
       require(n >= 0 && n < node_count, "VTK triangle {} refers to node {}, outside 0..{}", t, n,
               node_count - 1);
-      cells.connectivity.push_back(n);
-    }
-    cells.offsets.push_back(static_cast<std::int64_t>(cells.connectivity.size()));
-  }
+  CellArrays cells;
+  cells.count = triangles.size();
+  cells.type = vtk_triangle;
+  cells.connectivity = [triangles] {
+    std::vector<std::int64_t> connectivity;
+    connectivity.reserve(3 * triangles.size());
+    for (const std::array<int, 3>& t : triangles) connectivity.insert(connectivity.end(), t.begin(), t.end());
+    return bytes_of(connectivity);
+  };
+  cells.offsets = [triangles] {
+    std::vector<std::int64_t> offsets(triangles.size());
+    for (std::size_t t = 0; t < offsets.size(); ++t) offsets[t] = 3 * static_cast<std::int64_t>(t + 1);
+    return bytes_of(offsets);
+  };
   write_unstructured_grid(path, nodes, cells, point_data, cell_data, compression);
 }
 
 void write_vtu_polygons(const std::filesystem::path& path,
                         std::span<const std::vector<Point>> polygons,
                         std::span<const DataArray> cell_data, VtuCompression compression) {
-  CellBlock cells;
-  cells.type = vtk_polygon;
   std::vector<Point> points;
   for (std::size_t k = 0; k < polygons.size(); ++k) {
     require(polygons[k].size() >= 3, "VTK polygon {} has {} vertices; need at least 3", k,
             polygons[k].size());
-    for (const Point& p : polygons[k]) {
-      cells.connectivity.push_back(static_cast<std::int64_t>(points.size()));
-      points.push_back(p);
-    }
-    cells.offsets.push_back(static_cast<std::int64_t>(cells.connectivity.size()));
+    points.insert(points.end(), polygons[k].begin(), polygons[k].end());
   }
+  const CellArrays cells =
+      numbered_cells(vtk_polygon, polygons.size(), [polygons](std::size_t k) { return polygons[k].size(); });
   write_unstructured_grid(path, points, cells, {}, cell_data, compression);
 }
 
 void write_vtu_segments(const std::filesystem::path& path,
                         std::span<const std::array<Point, 2>> segments,
                         std::span<const DataArray> cell_data, VtuCompression compression) {
-  CellBlock cells;
-  cells.type = vtk_line;
   std::vector<Point> points;
   points.reserve(2 * segments.size());
-  for (const auto& s : segments) {
-    for (const Point& p : s) {
-      cells.connectivity.push_back(static_cast<std::int64_t>(points.size()));
-      points.push_back(p);
-    }
-    cells.offsets.push_back(static_cast<std::int64_t>(cells.connectivity.size()));
-  }
+  for (const auto& s : segments) points.insert(points.end(), s.begin(), s.end());
+  const CellArrays cells = numbered_cells(vtk_line, segments.size(), [](std::size_t) { return std::size_t{2}; });
   write_unstructured_grid(path, points, cells, {}, cell_data, compression);
 }
 

@@ -14,18 +14,37 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "geometry/point.hpp"
 
 namespace hydrodda::output {
 
-// One named field on points or cells: `values` holds count * components numbers, tuple by tuple.
+// One named field on points or cells: count * components numbers, tuple by tuple, held in
+// `values` or, for a field the caller keeps anyway (a million-node head), borrowed in place.
 // A 2-component field is written with 3 components (z = 0) so ParaView treats it as a vector.
 struct DataArray {
+  DataArray(std::string array_name, int array_components, std::vector<double> array_values = {})
+      : name(std::move(array_name)), components(array_components), values(std::move(array_values)) {}
+  // A field written from the caller's numbers, which must outlive the write.
+  static DataArray view(std::string name, int components, std::span<const double> numbers) {
+    DataArray a(std::move(name), components);
+    a.borrowed_ = numbers;
+    return a;
+  }
+
   std::string name;
   int components = 1;
   std::vector<double> values;
+
+  // The numbers written: the borrowed ones of a view, else `values`.
+  std::span<const double> numbers() const {
+    return borrowed_.data() ? borrowed_ : std::span<const double>(values);
+  }
+
+ private:
+  std::span<const double> borrowed_;
 };
 
 // How the arrays are compressed: zlib's level, 0 (stored) to 9 (smallest). Level 1, measured

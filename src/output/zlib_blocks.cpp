@@ -114,6 +114,17 @@ std::vector<std::string> compress_zlib_blocks(std::span<const std::span<const st
   return encoded;
 }
 
+std::uint32_t crc32_of(std::span<const std::byte> data) {
+  uLong crc = crc32(0L, Z_NULL, 0);
+  // zlib takes lengths as uInt: a file past 4 GiB goes in pieces.
+  constexpr std::size_t kPiece = std::size_t{1} << 30;
+  for (std::size_t at = 0; at < data.size(); at += kPiece) {
+    const std::size_t n = std::min(kPiece, data.size() - at);
+    crc = crc32(crc, reinterpret_cast<const Bytef*>(data.data() + at), static_cast<uInt>(n));
+  }
+  return static_cast<std::uint32_t>(crc);
+}
+
 std::string inflate_zlib_blocks(std::span<const std::byte> data, std::size_t& consumed) {
   const std::uint64_t blocks = get_word(data, 0);
   const std::uint64_t block_size = get_word(data, word);

@@ -4,9 +4,11 @@
 // its own, behind a header of little-endian UInt64 words
 //   [block count, block size, size of a partial last block (0 when it is full),
 //    compressed size of block 0, of block 1, ...].
-// The only file of ours that includes zlib (Debian's zlib1g).
+// Also zlib's CRC-32, the checkpoint's checksum. The only file of ours that includes zlib
+// (Debian's zlib1g).
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
@@ -27,5 +29,8 @@ std::vector<std::string> compress_zlib_blocks(std::span<const std::span<const st
 // `data` (header first); `consumed` is set to the number of bytes it took. Throws
 // std::runtime_error on a truncated or corrupt encoding.
 std::string inflate_zlib_blocks(std::span<const std::byte> data, std::size_t& consumed);
+
+// The CRC-32 (ISO 3309, zlib's crc32) of `data`.
+std::uint32_t crc32_of(std::span<const std::byte> data);
 
 }  // namespace hydrodda::output

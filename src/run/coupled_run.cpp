@@ -167,9 +167,8 @@ output::RunSummary run_coupled(const RunContext& context) {
   // (CoupledModel::run_pass), which a resumed run continues from too.
   const auto save_checkpoint = [&] {
     checkpoint.converged = converged;
-    checkpoint.mechanics = model.export_state().mechanics;
-    checkpoint.coupling = model.export_state().coupling;
-    context.folder.write("checkpoint.bin", output::encode_checkpoint(checkpoint));
+    const CoupledState& state = model.export_state();  // encoded where it is, not copied
+    context.folder.write("checkpoint.bin", output::encode_checkpoint(checkpoint, state.mechanics, state.coupling));
   };
   try {
     for (int k = loop.iterations(); k < s.coupling.max_iterations && !converged; ++k) {
