@@ -8,11 +8,15 @@
 #include <utility>
 
 #include "coupling/force_moments.hpp"
+#include "dda/parallel.hpp"
 #include "hydro/element_pressure.hpp"
 
 namespace hydrodda::coupling {
 
 namespace {
+
+// About 50 µs of work a block: from this many on, a second thread pays for waking it.
+constexpr std::size_t kBlocksWorthTwoThreads = 64;
 
 // A piece of a segment inside one element: parameters t0 < t1 along it.
 struct SegmentPiece {
@@ -257,7 +261,10 @@ std::vector<std::vector<Point>> FacePressureLoads::compute(std::span<const geome
   if (biot.size() != blocks.size())
     throw std::invalid_argument("pressure forces: one Biot coefficient per block is needed");
   std::vector<std::vector<Point>> forces(blocks.size());
-  for (std::size_t b = 0; b < blocks.size(); ++b) {
+  // Each block's loads are its own: the halves of the blocks go to two threads (a mesh that
+  // has no elements, the one failure, is refused before).
+  if (mesh_.triangles.empty() && !blocks.empty()) throw std::invalid_argument("pressure forces: the fluid mesh has no elements");
+  dda::for_each_in_halves(blocks.size() >= kBlocksWorthTwoThreads, blocks.size(), [&](std::size_t b) {
     const geometry::Polygon& poly = blocks[b];
     const std::size_t n = poly.size();
     forces[b].assign(n, Point{});
@@ -279,7 +286,7 @@ std::vector<std::vector<Point>> FacePressureLoads::compute(std::span<const geome
       const std::vector<Point> across = load_mesh_boundary_across(poly, biot[b], nodal_pressure);
       for (std::size_t v = 0; v < n; ++v) forces[b][v] += across[v];
     }
-  }
+  });
   return forces;
 }
 

@@ -52,7 +52,7 @@ struct LoopSettings {
   // Asked before every DDA step: true abandons the pass (PassInterrupted), so that a long pass
   // does not hold up an interrupt until its end. Unset: never.
   std::function<bool()> stop_requested;
-  // Per element: a permeability fixed by the scenario (flow regions), or none.
+  // Per element: a permeability fixed by the scenario (flow regions), or none; empty: none anywhere.
   std::vector<std::optional<double>> fixed_permeability;
   // Per block: Biot's coefficient α in [0, 1] (seepage_forces.hpp). Empty: 1 for every block.
   std::vector<double> biot_coefficients;

@@ -9,6 +9,7 @@
 // conjugate gradients on the new matrix, while it serves (docs/flow.md, "Coupling passes").
 
 #include <array>
+#include <future>
 #include <memory>
 #include <span>
 #include <vector>
@@ -85,7 +86,8 @@ class DarcySolver {
   long long stored_nonzeros() const { return matrix_.nonZeros(); }
   double reference_head() const { return reference_head_; }
   // Seconds spent in the constructor: pattern and symbolic analysis.
-  double setup_seconds() const { return setup_seconds_; }
+  // Seconds to build the pattern and analyse it (waits for the analysis).
+  double setup_seconds() const;
   const std::string& solver_name() const { return solver_name_; }
 
  private:
@@ -127,6 +129,10 @@ class DarcySolver {
   const mesh::TriangleMesh& mesh_;
   DarcyProblem problem_;
   std::unique_ptr<LinearSolver> solver_;
+  // The analysis of solver_ when it runs aside (its seconds), waited for before the first
+  // factorisation; declared after solver_ so that it is waited for before solver_ goes.
+  std::shared_future<double> analysis_;
+  static constexpr int kUnknownsWorthAnalysingAside = 20000;
   std::string solver_name_;
   double reference_head_ = 0.0;
   double setup_seconds_ = 0.0;

@@ -3,6 +3,8 @@
 #include <span>
 
 #include <cstring>
+#include <functional>
+#include <utility>
 #include <type_traits>
 
 #include "output/zlib_blocks.hpp"
@@ -30,24 +32,19 @@ constexpr std::int64_t kMaxCount = std::int64_t{1} << 40;
 
 using geometry::Point;
 
-// Writes the bytes, or, counting, only their number: a checkpoint of a million-triangle run is
-// tens of megabytes, and one counting pass first lets it be written into one allocation of
-// its exact size instead of a string doubled a score of times.
+// Writes the bytes in pieces of about kPiece to a sink, with their running CRC-32: a checkpoint
+// of a million-triangle run is tens of megabytes, never held whole in memory.
 class Writer {
  public:
-  enum class Mode { write, count };
-  explicit Writer(Mode mode = Mode::write) : counting_(mode == Mode::count) {}
+  using Sink = std::function<void(std::string_view)>;
+  explicit Writer(Sink sink) : sink_(std::move(sink)) { buffer_.reserve(kPiece + 64); }
 
   template <class T>
   void put_raw(T value) {
     static_assert(std::is_trivially_copyable_v<T>);
-    if (counting_) {
-      counted_ += sizeof(T);
-      return;
-    }
     char bytes[sizeof(T)];
     std::memcpy(bytes, &value, sizeof(T));
-    out_.append(bytes, sizeof(T));
+    append({bytes, sizeof(T)});
   }
   void put(std::int64_t v) { put_raw(v); }
   void put(int v) { put_raw(static_cast<std::int64_t>(v)); }
@@ -56,8 +53,7 @@ class Writer {
   void put(std::uint64_t v) { put_raw(v); }
   void put(const std::string& s) {
     put(static_cast<std::int64_t>(s.size()));
-    if (counting_) counted_ += s.size();
-    else out_ += s;
+    append(s);
   }
   void put(Point p) {
     put(p.x);
@@ -75,16 +71,51 @@ class Writer {
   template <class T>
   void put(const std::vector<T>& list) {
     put(static_cast<std::int64_t>(list.size()));
-    for (const T& v : list) put(v);
+    if constexpr (kStoredAsInMemory<T>) {
+      append({reinterpret_cast<const char*>(list.data()), list.size() * sizeof(T)});  // one copy, not one per number
+    } else {
+      for (const T& v : list) put(v);
+    }
   }
-  void reserve(std::size_t bytes) { out_.reserve(bytes); }
-  std::size_t counted() const { return counted_; }
-  std::string take() { return std::move(out_); }
+  // The bytes so far to the sink, then their checksum (kChecksumSize bytes) after them.
+  void finish() {
+    flush();
+    const std::uint64_t checksum = crc_;
+    char sum[kChecksumSize];
+    std::memcpy(sum, &checksum, kChecksumSize);
+    sink_({sum, kChecksumSize});
+  }
 
  private:
-  bool counting_ = false;
-  std::size_t counted_ = 0;
-  std::string out_;
+  static constexpr std::size_t kPiece = std::size_t{1} << 20;
+  // Types whose put() writes exactly their bytes in memory (8-byte numbers, no padding), so a
+  // list of them is written in one piece.
+  template <class T>
+  static constexpr bool kStoredAsInMemory =
+      std::is_same_v<T, double> || std::is_same_v<T, std::int64_t> ||
+      (std::is_same_v<T, Point> && sizeof(Point) == 2 * sizeof(double)) ||
+      (std::is_same_v<T, hydro::PermeabilityTensor> && sizeof(hydro::PermeabilityTensor) == 3 * sizeof(double));
+  void append(std::string_view bytes) {
+    if (bytes.size() >= kPiece) {  // a long list goes out as it is, after what came before it
+      flush();
+      send(bytes);
+      return;
+    }
+    buffer_ += bytes;
+    if (buffer_.size() >= kPiece) flush();
+  }
+  void flush() {
+    send(buffer_);
+    buffer_.clear();
+  }
+  void send(std::string_view bytes) {
+    crc_ = crc32_of(std::as_bytes(std::span(bytes)), crc_);
+    sink_(bytes);
+  }
+
+  Sink sink_;
+  std::string buffer_;
+  std::uint32_t crc_ = 0;
 };
 
 class Reader {
@@ -297,22 +328,22 @@ void write_checkpoint(Writer& w, const RunCheckpoint& c, const dda::SystemState&
   w.put(coupling.anderson_residuals);
   w.put(coupling.anderson_images);
   w.put(coupling.kept_factor_permeability);
+  w.finish();
 }
 }  // namespace
 
 std::string encode_checkpoint(const RunCheckpoint& c, const dda::SystemState& mechanics,
                               const coupling::LoopState& coupling) {
-  Writer counter(Writer::Mode::count);
-  write_checkpoint(counter, c, mechanics, coupling);
-  Writer w;
-  w.reserve(counter.counted() + kChecksumSize);
+  std::string bytes;
+  Writer w([&](std::string_view piece) { bytes += piece; });
   write_checkpoint(w, c, mechanics, coupling);
-  std::string bytes = w.take();
-  const std::uint64_t checksum = checksum_of(bytes);
-  char sum[kChecksumSize];
-  std::memcpy(sum, &checksum, kChecksumSize);
-  bytes.append(sum, kChecksumSize);
   return bytes;
+}
+
+void write_checkpoint(AtomicFile& file, const RunCheckpoint& c, const dda::SystemState& mechanics,
+                      const coupling::LoopState& coupling) {
+  Writer w([&](std::string_view piece) { file.write(piece); });
+  write_checkpoint(w, c, mechanics, coupling);
 }
 
 RunCheckpoint decode_checkpoint(std::string_view file) {

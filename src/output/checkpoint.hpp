@@ -7,8 +7,8 @@
 // Format: the magic line "hydrodda checkpoint\n", a format version, a byte-order mark, then
 // the fields below in order; numbers as raw 8-byte integers and IEEE doubles in the writing
 // machine's byte order (a checkpoint is read back where it was written, not exchanged), strings
-// and lists prefixed with their length; last, a 64-bit FNV-1a checksum of all the bytes before
-// it. A file of another version or byte order, or a cut or damaged one (any byte changed), is
+// and lists prefixed with their length; last, the CRC-32 of all the bytes before it (as a
+// 64-bit word). A file of another version or byte order, or a cut or damaged one (any byte changed), is
 // refused with CheckpointError.
 
 #include <cstdint>
@@ -20,6 +20,7 @@
 
 #include "coupling/staggered_loop.hpp"
 #include "dda/system.hpp"
+#include "output/atomic_file.hpp"
 
 namespace hydrodda::output {
 
@@ -39,6 +40,10 @@ std::string encode_checkpoint(const RunCheckpoint& checkpoint);
 // not read): a run encodes the states it holds without copying them into a RunCheckpoint.
 std::string encode_checkpoint(const RunCheckpoint& checkpoint, const dda::SystemState& mechanics,
                               const coupling::LoopState& coupling);
+// The same bytes written into `file` as they are encoded, a megabyte at a time; the caller
+// commits the file.
+void write_checkpoint(AtomicFile& file, const RunCheckpoint& checkpoint, const dda::SystemState& mechanics,
+                      const coupling::LoopState& coupling);
 // Throws CheckpointError when the bytes are not a whole checkpoint of this format.
 RunCheckpoint decode_checkpoint(std::string_view bytes);
 

@@ -58,12 +58,18 @@ fs::path RunFolder::figures() const {
 }
 
 void RunFolder::write(std::string_view name, std::string_view content) const {
+  write_with(name, [&](AtomicFile& file) { file.write(content); });
+}
+
+void RunFolder::write_with(std::string_view name, const std::function<void(AtomicFile&)>& fill) const {
   const fs::path path = directory_ / name;
   std::error_code ec;
   if (fs::is_directory(path, ec))
     throw RunFolderError(fmt::format("cannot write {}: a folder of that name is in the way", path.string()));
   try {
-    write_file_atomically(path, content);
+    AtomicFile file(path);
+    fill(file);
+    file.commit();
   } catch (const std::runtime_error& e) {
     throw RunFolderError(e.what());
   }

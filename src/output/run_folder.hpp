@@ -2,8 +2,11 @@
 // The run folder: where a run writes everything, and nowhere else.
 
 #include <filesystem>
+#include <functional>
 #include <stdexcept>
 #include <string_view>
+
+#include "output/atomic_file.hpp"
 
 namespace hydrodda::output {
 
@@ -25,6 +28,9 @@ class RunFolder {
   // Writes a file in the folder atomically (temporary name, then rename); RunFolderError
   // naming the file when it cannot.
   void write(std::string_view name, std::string_view content) const;
+  // The same for a file made in pieces: `fill` writes them into the file, which is committed
+  // after it returns.
+  void write_with(std::string_view name, const std::function<void(AtomicFile&)>& fill) const;
 
  private:
   // Throws RunFolderError when the folder could not be used under `policy`; creates nothing.

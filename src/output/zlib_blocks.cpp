@@ -114,8 +114,8 @@ std::vector<std::string> compress_zlib_blocks(std::span<const std::span<const st
   return encoded;
 }
 
-std::uint32_t crc32_of(std::span<const std::byte> data) {
-  uLong crc = crc32(0L, Z_NULL, 0);
+std::uint32_t crc32_of(std::span<const std::byte> data, std::uint32_t previous) {
+  uLong crc = previous;
   // zlib takes lengths as uInt: a file past 4 GiB goes in pieces.
   constexpr std::size_t kPiece = std::size_t{1} << 30;
   for (std::size_t at = 0; at < data.size(); at += kPiece) {

@@ -30,7 +30,7 @@ std::vector<std::string> compress_zlib_blocks(std::span<const std::span<const st
 // std::runtime_error on a truncated or corrupt encoding.
 std::string inflate_zlib_blocks(std::span<const std::byte> data, std::size_t& consumed);
 
-// The CRC-32 (ISO 3309, zlib's crc32) of `data`.
-std::uint32_t crc32_of(std::span<const std::byte> data);
+// The CRC-32 (ISO 3309, zlib's crc32) of `data`, continuing `crc`, that of the bytes before it.
+std::uint32_t crc32_of(std::span<const std::byte> data, std::uint32_t crc = 0);
 
 }  // namespace hydrodda::output

@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <utility>
@@ -40,7 +41,11 @@ CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::option
   settings.steps_per_pass = s.mechanics->steps.value_or(
       static_cast<int>(std::ceil(*s.mechanics->end_time / s.mechanics->time_step)));
   settings.permeability = make_permeability_model(s);
-  settings.fixed_permeability = find_fixed_permeability(s, mesh_);
+  // Left empty where no region fixes a permeability: one optional per element is 16 MB at a
+  // million triangles.
+  if (std::any_of(s.flow->regions.begin(), s.flow->regions.end(),
+                  [](const scenario::FlowRegion& r) { return r.permeability.has_value(); }))
+    settings.fixed_permeability = find_fixed_permeability(s, mesh_);
   if (s.joint.hydraulic())
     settings.joints = coupling::LoopSettings::Joints{build_model_geometry(s).network, make_joint_aperture_law(s)};
   settings.stop_requested = [this] { return stop_requested_ && stop_requested_(); };

@@ -168,7 +168,9 @@ output::RunSummary run_coupled(const RunContext& context) {
   const auto save_checkpoint = [&] {
     checkpoint.converged = converged;
     const CoupledState& state = model.export_state();  // encoded where it is, not copied
-    context.folder.write("checkpoint.bin", output::encode_checkpoint(checkpoint, state.mechanics, state.coupling));
+    context.folder.write_with("checkpoint.bin", [&](output::AtomicFile& file) {
+      output::write_checkpoint(file, checkpoint, state.mechanics, state.coupling);
+    });
   };
   try {
     for (int k = loop.iterations(); k < s.coupling.max_iterations && !converged; ++k) {
