@@ -82,7 +82,6 @@ FacePressureLoads::FacePressureLoads(const mesh::TriangleMesh& mesh)
 
 FacePressureLoads::FacePressureLoads(const mesh::TriangleMesh& mesh, std::shared_ptr<const ElementIndex> elements)
     : mesh_(mesh),
-      locator_(mesh),
       elements_(std::move(elements)),
       boundary_(find_boundary(mesh)),
       boundary_grid_(side_boxes(boundary_)) {
@@ -90,6 +89,7 @@ FacePressureLoads::FacePressureLoads(const mesh::TriangleMesh& mesh, std::shared
   for (Point p : mesh.nodes) all.add(p);
   const double extent = std::max(all.width(), all.height());
   tolerance_ = 1e-12 * extent;
+  area_tolerance_ = tolerance_ * extent;
   // The grid holds about two elements a cell: cells of about √(2 × box area / elements).
   chunk_length_ = mesh.triangles.empty()
                       ? extent
@@ -134,7 +134,18 @@ std::vector<double> FacePressureLoads::cut_where_nearest_side_changes(Point a, P
 }
 
 double FacePressureLoads::pressure_at(Point p, std::span<const double> nodal_pressure) const {
-  const int t = locator_.locate(p);
+  // The lowest-numbered element holding p (within tolerance_ of its edges), through the
+  // elements' grid: the rule mesh::PointLocator follows, without a second grid of the mesh.
+  int t = -1;
+  const double slack = std::sqrt(area_tolerance_);
+  elements_->grid().for_each_overlap(geometry::Box{{p.x - slack, p.y - slack}, {p.x + slack, p.y + slack}}, [&](int e) {
+    if (t >= 0 && e > t) return;
+    // Inside (or on) a counter-clockwise triangle: left of all three edges.
+    const auto& [a, b, c] = elements_->corners()[e];
+    if (geometry::orient(a, b, p) >= -area_tolerance_ && geometry::orient(b, c, p) >= -area_tolerance_ &&
+        geometry::orient(c, a, p) >= -area_tolerance_)
+      t = e;
+  });
   return t < 0 ? pressure_outside_mesh(p, nodal_pressure) : hydro::interpolate_pressure(mesh_, nodal_pressure, t, p);
 }
 

@@ -22,14 +22,13 @@
 #include "geometry/point.hpp"
 #include "geometry/polygon.hpp"
 #include "geometry/spatial_grid.hpp"
-#include "mesh/point_locator.hpp"
 #include "mesh/triangle_mesh.hpp"
 
 namespace hydrodda::coupling {
 
 using geometry::Point;
 
-// Keeps the fixed mesh's spatial index, point locator and boundary edges.
+// Keeps the fixed mesh's spatial index and boundary edges.
 class FacePressureLoads {
  public:
   // Keeps a reference to the mesh, which must outlive it.
@@ -66,10 +65,10 @@ class FacePressureLoads {
   std::vector<double> cut_where_nearest_side_changes(Point a, Point b) const;
 
   const mesh::TriangleMesh& mesh_;
-  mesh::PointLocator locator_;
   std::shared_ptr<const ElementIndex> elements_;  // the elements' grid
   double chunk_length_ = 1.0;   // a face is searched in pieces about one grid cell long
   double tolerance_ = 0.0;      // distance within which a point counts as on an element's edge
+  double area_tolerance_ = 0.0;  // the same in orient()'s unit, as mesh::PointLocator takes it
   struct BoundarySide {
     Point a, b;
     int triangle;

@@ -44,6 +44,20 @@ void AtomicFile::write(std::string_view bytes) {
   }
 }
 
+void AtomicFile::write_at(std::size_t position, std::string_view bytes) {
+  if (fd_ < 0) throw std::logic_error("AtomicFile::write_at after commit");
+  std::size_t written = 0;
+  while (written < bytes.size()) {
+    const ssize_t n = ::pwrite(fd_, bytes.data() + written, bytes.size() - written,
+                               static_cast<off_t>(position + written));
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      fail(temporary_, "write");
+    }
+    written += static_cast<std::size_t>(n);
+  }
+}
+
 void AtomicFile::commit() {
   if (fd_ < 0) throw std::logic_error("AtomicFile::commit twice");
   const int fd = fd_;

@@ -1,6 +1,7 @@
 #pragma once
 // Whole-file writes that never leave a half-written file behind.
 
+#include <cstddef>
 #include <filesystem>
 #include <string_view>
 
@@ -18,7 +19,10 @@ class AtomicFile {
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
 
+  // Appends `bytes`.
   void write(std::string_view bytes);
+  // Overwrites bytes already written, from `position` on (a header filled in last).
+  void write_at(std::size_t position, std::string_view bytes);
   void commit();
 
  private:

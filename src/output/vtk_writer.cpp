@@ -101,17 +101,58 @@ Array field_array(const DataArray& a) {
           }};
 }
 
-// Each array's compressed encoding, in order. Arrays are compressed in batches of about
-// kBatchBytes: the OpenMP threads share the blocks of a batch's many small arrays (a contact
-// file's), while the bytes made for a batch are dropped before the next is made.
-std::vector<std::string> compress_arrays(std::span<const Section> sections, int level) {
+// The XML before the appended data, each array's element naming its offset into that data.
+// Each offset is padded with spaces to kOffsetWidth characters, so that the text written
+// before the offsets are known has the length of the final one.
+constexpr std::size_t kOffsetWidth = 20;  // the digits of the largest 64-bit offset
+std::string render_header(std::size_t point_count, std::size_t cell_count, std::span<const Section> sections,
+                          std::span<const std::size_t> sizes) {
+  std::string xml;
+  xml += "<?xml version=\"1.0\"?>\n";
+  xml += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+         "header_type=\"UInt64\" compressor=\"vtkZLibDataCompressor\">\n";
+  xml += "  <UnstructuredGrid>\n";
+  fmt::format_to(Out(xml), "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", point_count, cell_count);
+  std::size_t index = 0, offset = 0;
+  for (const Section& s : sections) {
+    fmt::format_to(Out(xml), "      <{}>\n", s.tag);
+    for (const Array& a : s.arrays) {
+      const std::string number = std::to_string(offset);
+      fmt::format_to(Out(xml),
+                     "        <DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" "
+                     "format=\"appended\" offset=\"{}\"{:{}}/>\n",
+                     a.type, escape_xml(a.name), a.components, number, "", kOffsetWidth - number.size() + 1);
+      offset += index < sizes.size() ? sizes[index] : 0;
+      ++index;
+    }
+    fmt::format_to(Out(xml), "      </{}>\n", s.tag);
+  }
+  xml += "    </Piece>\n";
+  xml += "  </UnstructuredGrid>\n";
+  xml += "  <AppendedData encoding=\"raw\">\n   _";
+  return xml;
+}
+
+// The whole file, written as it is made: the XML (its offsets filled in last), then after an
+// underscore, which marks where the raw bytes begin, each array's compressed encoding as its
+// batch is done. Arrays are compressed in batches of about kBatchBytes: the OpenMP threads
+// share the blocks of a batch's many small arrays (a contact file's), while the bytes made for
+// a batch, and their encoding, are let go before the next is made.
+void write_file(const std::filesystem::path& path, std::size_t point_count, std::size_t cell_count,
+                std::span<const Section> sections, int level) {
   constexpr std::size_t kBatchBytes = std::size_t{16} << 20;
-  std::vector<std::string> encoded;
+  AtomicFile file(path);
+  const std::string placeholder = render_header(point_count, cell_count, sections, {});
+  file.write(placeholder);
+  std::vector<std::size_t> sizes;
   std::vector<std::vector<std::byte>> made;
   std::vector<std::span<const std::byte>> batch;
   std::size_t batch_bytes = 0;
   const auto flush = [&] {
-    for (std::string& e : compress_zlib_blocks(batch, level)) encoded.push_back(std::move(e));
+    for (const std::string& encoded : compress_zlib_blocks(batch, level)) {
+      file.write(encoded);
+      sizes.push_back(encoded.size());
+    }
     batch.clear();
     made.clear();
     batch_bytes = 0;
@@ -128,44 +169,10 @@ std::vector<std::string> compress_arrays(std::span<const Section> sections, int 
       if (batch_bytes >= kBatchBytes) flush();
     }
   if (!batch.empty()) flush();
-  return encoded;
-}
-
-// The whole file, written as it is made: the XML, each array's element naming its offset into
-// the appended data, then the appended data after an underscore, which marks where the raw
-// bytes begin.
-void write_file(const std::filesystem::path& path, std::size_t point_count, std::size_t cell_count,
-                std::span<const Section> sections, int level) {
-  std::vector<std::string> encoded = compress_arrays(sections, level);
-
-  std::string xml;
-  xml += "<?xml version=\"1.0\"?>\n";
-  xml += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
-         "header_type=\"UInt64\" compressor=\"vtkZLibDataCompressor\">\n";
-  xml += "  <UnstructuredGrid>\n";
-  fmt::format_to(Out(xml), "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", point_count, cell_count);
-  std::size_t index = 0, offset = 0;
-  for (const Section& s : sections) {
-    fmt::format_to(Out(xml), "      <{}>\n", s.tag);
-    for (const Array& a : s.arrays) {
-      fmt::format_to(Out(xml),
-                     "        <DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" "
-                     "format=\"appended\" offset=\"{}\"/>\n",
-                     a.type, escape_xml(a.name), a.components, offset);
-      offset += encoded[index++].size();
-    }
-    fmt::format_to(Out(xml), "      </{}>\n", s.tag);
-  }
-  xml += "    </Piece>\n";
-  xml += "  </UnstructuredGrid>\n";
-  xml += "  <AppendedData encoding=\"raw\">\n   _";
-  AtomicFile file(path);
-  file.write(xml);
-  for (std::string& e : encoded) {
-    file.write(e);
-    std::string().swap(e);  // each array's memory goes back as soon as it is on its way
-  }
   file.write("\n  </AppendedData>\n</VTKFile>\n");
+  const std::string header = render_header(point_count, cell_count, sections, sizes);
+  if (header.size() != placeholder.size()) throw std::logic_error("VTK header: offsets wider than reserved");
+  file.write_at(0, header);
   file.commit();
 }
 

@@ -6,6 +6,7 @@
 
 #include "hydro/element_pressure.hpp"
 #include "structured_mesh.hpp"
+#include "mesh/point_locator.hpp"
 
 namespace hydrodda::coupling {
 namespace {
@@ -106,6 +107,25 @@ TEST(PressureForces, FaceIntegralsAreExactForTheP1Field) {
     EXPECT_NEAR(exact.start_inside, start, 1e-9 * start);
     EXPECT_NEAR(exact.end_inside, end, 1e-9 * end);
   }
+}
+
+TEST(PressureForces, APointInsideTakesThePressureOfTheElementThePointLocatorFinds) {
+  // Inside the mesh pressure_at is the P1 field of the lowest-numbered element holding the
+  // point, as mesh::PointLocator finds it, on edges and at nodes too: the same number exactly.
+  const auto mesh = testing::make_rectangle_mesh(0.0, 0.0, 2.0, 2.0, 8, 8);
+  const std::vector<double> p = nodal_values(mesh, wavy_pressure);
+  const FacePressureLoads loads(mesh);
+  const mesh::PointLocator locator(mesh);
+  int checked = 0;
+  for (int i = 0; i <= 32; ++i)
+    for (int j = 0; j <= 32; ++j) {
+      const Point q{2.0 * i / 32.0, 2.0 * j / 32.0};  // nodes, edge points and interiors
+      const int t = locator.locate(q);
+      ASSERT_GE(t, 0);
+      EXPECT_EQ(loads.pressure_at(q, p), hydro::interpolate_pressure(mesh, p, t, q)) << q.x << ", " << q.y;
+      ++checked;
+    }
+  EXPECT_EQ(checked, 33 * 33);
 }
 
 TEST(PressureForces, PointOutsideTheMeshTakesTheNearestMeshPoint) {
