@@ -53,6 +53,11 @@ struct Settings {
   // until a vertex has moved half of it (contact_search.hpp); < 0 → a fifth of the contact
   // distance; 0 → made afresh every step. The contacts found do not depend on it.
   double contact_skin = -1.0;
+  // true: no closed contact ends a step pulling harder than T l, to 1e-9 of the largest
+  // normal force (docs/dda.md, Open–close iteration); false: the hysteresis band lets it pull
+  // up to T l + p × 1% (10% when chattering) of the penetration tolerance. Not the default
+  // yet: see docs/dda.md, Known limits.
+  bool tension_cutoff = false;
   int max_open_close_iterations = 12;     // then the step is cut and retried
   int max_lagrangian_iterations = 30;
   double static_tolerance = 1.0e-9;       // run_to_equilibrium: max step displacement ÷ model size

@@ -514,11 +514,26 @@ double System::largest_vertex_motion(const Eigen::VectorXd& change) const {
 
 // Moves contact c to the state the solution d puts it in: open ↔ closed by penetration and
 // tension, locked ↔ sliding by Mohr–Coulomb, with hysteresis `band`. Whether it changed.
-bool System::update_state(ActiveContact& c, const Eigen::VectorXd& d, double band) const {
+// A closed contact opens when its normal force N = λ + p d falls below −T l − allowance
+// (T the tensile strength, l the face length the contact carries).
+//
+// Tension cutoff (Settings::tension_cutoff; Shi 1988: contacts take no tension beyond the
+// joint's strength; the tension cutoff of UDEC's Coulomb slip joint, Itasca): the allowance
+// is 1e-9 N_max (N_max the largest normal force of the pass: round-off, not a band), and the
+// pass is solved again without the contacts it opened, so that no accepted step leaves a
+// closed contact pulling harder than T l. The hysteresis that keeps a contact from flipping
+// on round-off then lies on the other side, in length: an open contact closes when it
+// penetrates past `band`, and one the cutoff opened in this step only when it penetrates past
+// the penetration tolerance. The augmented Lagrangian leaves a closed contact anywhere within
+// the tolerance of touching, so a contact released from a small pull with its vertex a little
+// inside the edge would otherwise close again at the next pass, pull again once its
+// multiplier had caught up, and flip on until the step were cut. Without the cutoff the
+// allowance is p × band, the force of the band's length on the penalty spring.
+bool System::update_state(ActiveContact& c, const Eigen::VectorXd& d, double band, double tension_allowance) const {
   ContactRecord& r = c.record;
   const double pen = compute_penetration(c, d);
   if (r.state == ContactState::open) {
-    if (pen > band) {
+    if (pen > (c.released ? std::max(band, penetration_tolerance_) : band)) {
       r.state = ContactState::locked;
       r.multiplier = 0.0;
       return true;
@@ -526,10 +541,11 @@ bool System::update_state(ActiveContact& c, const Eigen::VectorXd& d, double ban
     return false;
   }
   const double normal = compute_normal_force(c, pen);
-  if (normal < -joint_.tensile_strength * c.length - penalty_ * band) {
+  if (normal < -joint_.tensile_strength * c.length - tension_allowance) {
     r.state = ContactState::open;
     r.multiplier = 0.0;
     r.normal_force = 0.0;
+    c.released = settings_.tension_cutoff;
     return true;
   }
   // Narrower for slip than for a reversal: a locked spring stretches only F/p.
@@ -576,6 +592,8 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
   Eigen::VectorXd before_friction_update;
   // Whether the last pass's loads settled within two solves (taken for granted in the first).
   bool settled_at_once = true;
+  // The largest normal force of the pass's accepted solution (for the tension cutoff).
+  double force_scale = 0.0;
   for (int oc = 0; oc < settings_.max_open_close_iterations; ++oc) {
     report.open_close_iterations = oc + 1;
     factor_with_contacts();
@@ -624,6 +642,7 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
       }
       if (penetration_ok && friction_ok) {
         settled_at_once = al <= 1;
+        force_scale = extent.force_scale;
         break;
       }
       // Forces that have not settled are no solution to accept: the step is cut and retried.
@@ -646,9 +665,12 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
     // thousandfold to settle them. They stay well inside the penetration tolerance either way.
     const bool chattering = oc >= settings_.max_open_close_iterations / 4;
     const double band = (chattering ? 1e-1 : 1e-2) * penetration_tolerance_;
+    // The tension a closed contact may carry past T l: round-off with the tension cutoff, else
+    // the force of the band's length on the penalty spring.
+    const double tension_allowance = settings_.tension_cutoff ? 1e-9 * force_scale : penalty_ * band;
     const auto changed = results_in_halves(many_contacts(), active_.size(), [&](std::size_t begin, std::size_t end) {
       bool any = false;
-      for (std::size_t i = begin; i < end; ++i) any = update_state(active_[i], d, band) || any;
+      for (std::size_t i = begin; i < end; ++i) any = update_state(active_[i], d, band, tension_allowance) || any;
       return any;
     });
     if (!changed[0] && !changed[1]) return Unsettled::no;

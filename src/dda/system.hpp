@@ -152,6 +152,9 @@ class System {
     Vector6 en_i = Vector6::Zero(), en_j = Vector6::Zero();
     Vector6 es_i = Vector6::Zero(), es_j = Vector6::Zero();
     int dof_i = -1, dof_j = -1;
+    // Opened by the tension cutoff in this step: it closes again only by penetrating past
+    // the tolerance (see update_state).
+    bool released = false;
   };
   // Whether a loop is long enough to pay for a second thread, which can take some tens of
   // microseconds to wake: one over the blocks (a few hundred nanoseconds each), one that
@@ -192,7 +195,9 @@ class System {
     double force_scale = 0.0;
   };
   ContactForceExtent update_contact_forces(const Eigen::VectorXd& d);
-  bool update_state(ActiveContact& c, const Eigen::VectorXd& d, double band) const;
+  // Moves contact c to the state the solution d puts it in; whether it changed. `band` is the
+  // hysteresis in length, `tension_allowance` the pull a closed contact may carry past T l.
+  bool update_state(ActiveContact& c, const Eigen::VectorXd& d, double band, double tension_allowance) const;
   // The largest distance a vertex moves under the block unknowns `change` (first order).
   double largest_vertex_motion(const Eigen::VectorXd& change) const;
   void commit_step(const Eigen::VectorXd& d, double dt);
