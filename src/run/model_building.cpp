@@ -315,6 +315,7 @@ dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::B
   settings.contact = m.contact == scenario::ContactMethod::Penalty ? dda::ContactMethod::penalty
                                                                    : dda::ContactMethod::augmented_lagrangian;
   settings.penalty = m.penalty.value_or(0.0);
+  settings.tension_cutoff = m.tension_cutoff;
 
   const double ramp_time = mechanics_duration(m);
   for (const scenario::FixedPoint& f : m.fixed) {

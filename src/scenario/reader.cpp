@@ -227,7 +227,7 @@ void read_mechanics(ReadContext& ctx, const TableView& root, Scenario& s) {
   if (!t) return;
   const TableView m(ctx, *t, "mechanics",
                     {"analysis", "plane", "gravity", "time_step", "steps", "end_time",
-                     "max_displacement_ratio", "contact", "penalty", "fixed", "load",
+                     "max_displacement_ratio", "contact", "penalty", "tension_cutoff", "fixed", "load",
                      "displacement", "traction", "measure", "roller", "initial_stress"});
   MechanicsDefinition mech;
   mech.analysis = m.choice("analysis", {"static", "dynamic"}, "static") == 1 ? Analysis::Dynamic
@@ -264,6 +264,7 @@ void read_mechanics(ReadContext& ctx, const TableView& root, Scenario& s) {
     mech.penalty = *p;
     m.require("penalty", *p > 0.0, "must be > 0");
   }
+  mech.tension_cutoff = m.boolean("tension_cutoff").value_or(false);
 
   for (const toml::table* ft : m.tables("fixed")) {
     const TableView f(ctx, *ft, "mechanics.fixed", {"point"});

@@ -161,6 +161,7 @@ struct MechanicsDefinition {
   double max_displacement_ratio = 0.01;
   ContactMethod contact = ContactMethod::AugmentedLagrangian;
   std::optional<double> penalty;  // N/m; derived from the stiffest material when absent
+  bool tension_cutoff = false;    // no closed contact pulls past T l (dda::Settings::tension_cutoff)
   std::vector<FixedPoint> fixed;
   std::vector<PointLoad> loads;
   std::vector<PrescribedDisplacement> displacements;

@@ -81,6 +81,22 @@ TEST(ScenarioReader, ReadsEveryKeyOfTheContract) {
   EXPECT_EQ(s.output.figures, std::vector<std::string>{"png"});
 }
 
+TEST(ScenarioReader, TheTensionCutoffIsOffUnlessAsked) {
+  const std::string base = R"([geometry]
+[[geometry.block]]
+vertices = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
+[material.rock]
+density = 2500.0
+young = 1.0e10
+poisson = 0.25
+[mechanics]
+analysis = "dynamic"
+steps = 10
+)";
+  EXPECT_FALSE(parse_scenario(base, "case.toml").mechanics->tension_cutoff);
+  EXPECT_TRUE(parse_scenario(base + "tension_cutoff = true\n", "case.toml").mechanics->tension_cutoff);
+}
+
 TEST(ScenarioReader, RecordsEveryDefaultItFillsIn) {
   const Scenario s = parse_scenario(R"(
 [geometry]
