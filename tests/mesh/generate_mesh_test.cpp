@@ -5,6 +5,8 @@
 #include <cmath>
 #include <map>
 
+#include <omp.h>
+
 #include "mesh/mesh_request.hpp"
 
 namespace hydrodda::mesh {
@@ -22,6 +24,20 @@ std::map<std::string, double> boundary_lengths(const TriangleMesh& m) {
     length[e.boundary < 0 ? "(unnamed)" : m.boundary_names[e.boundary]] +=
         geometry::distance(m.nodes[e.nodes[0]], m.nodes[e.nodes[1]]);
   return length;
+}
+
+// Gmsh sets the process's OpenMP thread count to its own option (omp_set_num_threads):
+// meshing gives the program's back, or every parallel part after it would run on one thread.
+TEST(GenerateMesh, MeshingLeavesTheProgramsThreadCountAsItWas) {
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(3);
+  MeshRequest request;
+  request.domain = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  request.size = 0.1;
+  const TriangleMesh m = generate_mesh(request);
+  EXPECT_GT(m.triangle_count(), 0);
+  EXPECT_EQ(omp_get_max_threads(), 3);
+  omp_set_num_threads(before);
 }
 
 // An L-shaped domain, clockwise on input: the mesh covers its area exactly (1e-12), is

@@ -4,6 +4,7 @@
 // Gmsh and the OpenCASCADE libraries it links take 146,000 relocations to load, 0.1–0.3 s at
 // every start of the program, which a run without a fluid mesh does not need.
 #include <gmsh.h>
+#include <omp.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -31,9 +32,12 @@ namespace {
 // Gmsh is a process-wide singleton: one session at a time, initialised on entry and
 // finalised on exit (also when an exception leaves), with its terminal output off unless
 // asked. This file is the only user of Gmsh in the program, so no one else holds it.
+// Gmsh sets the process's OpenMP thread count to its General.NumThreads (omp_set_num_threads):
+// the count the program had is given back at the end, or everything after the mesh (the DDA,
+// the porosity clip, the face loads) would run on one thread.
 class GmshSession {
  public:
-  explicit GmshSession(bool verbose) : lock_(mutex()) {
+  explicit GmshSession(bool verbose) : lock_(mutex()), openmp_threads_(omp_get_max_threads()) {
     gmsh::initialize(0, nullptr, false);
     gmsh::option::setNumber("General.Terminal", verbose ? 1 : 0);
     gmsh::option::setNumber("General.Verbosity", verbose ? 5 : 1);
@@ -48,6 +52,7 @@ class GmshSession {
       gmsh::finalize();
     } catch (...) {  // a destructor must not throw; Gmsh's state is discarded either way
     }
+    omp_set_num_threads(openmp_threads_);
   }
   GmshSession(const GmshSession&) = delete;
   GmshSession& operator=(const GmshSession&) = delete;
@@ -58,6 +63,7 @@ class GmshSession {
     return m;
   }
   std::lock_guard<std::mutex> lock_;
+  int openmp_threads_;
 };
 
 // Gmsh reports errors by throwing (a std::string in 4.8, or something else in other
