@@ -20,14 +20,14 @@ class CholmodSolver final : public LinearSolver {
     }
   }
 
-  void analyse(const SparseMatrix& lower) override {
-    factor_.analyzePattern(lower);
+  void analyse(const SparseMatrix& upper) override {
+    factor_.analyzePattern(upper);
     analysed_ = true;
   }
 
-  void factorize(const SparseMatrix& lower) override {
+  void factorize(const SparseMatrix& upper) override {
     if (!analysed_) throw std::logic_error("CholmodSolver::factorize before analyse");
-    factor_.factorize(lower);
+    factor_.factorize(upper);
     if (factor_.info() != Eigen::Success)
       throw SingularSystem("CHOLMOD: the matrix is singular or not positive definite");
   }
@@ -41,7 +41,7 @@ class CholmodSolver final : public LinearSolver {
   std::string name() const override { return "CHOLMOD supernodal LLT"; }
 
  private:
-  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> factor_;
+  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Upper> factor_;
   bool analysed_ = false;
 };
 

@@ -19,7 +19,8 @@ constexpr int kMaxRefinementSteps = 4;
 constexpr double kTargetBalance = 1e-14;  // relative mass balance that ends the refinement
 // The three node pairs of a triangle whose couplings K_e(i, j), i ≠ j, are kept.
 constexpr std::array<std::array<int, 2>, 3> kEdgePairs{{{0, 1}, {0, 2}, {1, 2}}};
-// The six (row, column) local pairs with row >= column whose values enter the lower triangle.
+// The six local pairs (i, j) whose values enter the upper triangle, at (row, column) =
+// (min, max) of their unknowns.
 constexpr std::array<std::array<int, 2>, 6> kLocalPairs{{{0, 0}, {1, 1}, {2, 2}, {1, 0}, {2, 0}, {2, 1}}};
 
 // Conductivity tensors from permeabilities, checked: K = k ρ_w g / μ.
@@ -204,7 +205,7 @@ void DarcySolver::check_every_part_is_fixed() const {
 void DarcySolver::setup_pattern() {
   const int n = unknown_count();
   const int triangles = mesh_.triangle_count();
-  // Lower-triangle (column, row) pairs of every element, sorted and made unique: the CSC
+  // Upper-triangle (column, row) pairs of every element, sorted and made unique: the CSC
   // pattern. Hand-written: the pattern is built once, values are refilled in place after.
   std::vector<long long> keys;
   keys.reserve(6 * static_cast<std::size_t>(triangles));
@@ -218,7 +219,7 @@ void DarcySolver::setup_pattern() {
         has_fixed = true;
         continue;
       }
-      keys.push_back(static_cast<long long>(std::min(a, b)) * n + std::max(a, b));
+      keys.push_back(static_cast<long long>(std::max(a, b)) * n + std::min(a, b));
     }
     if (has_fixed) fixed_elements_.push_back(t);
   }
@@ -243,7 +244,7 @@ void DarcySolver::setup_pattern() {
     for (int p = 0; p < 6; ++p) {
       const int a = unknown_of_node_[tri[kLocalPairs[p][0]]], b = unknown_of_node_[tri[kLocalPairs[p][1]]];
       if (a < 0 || b < 0) continue;
-      const int col = std::min(a, b), row = std::max(a, b);
+      const int col = std::max(a, b), row = std::min(a, b);
       const int* first = inner + outer[col];
       const int* last = inner + outer[col + 1];
       entry_[6 * static_cast<std::size_t>(t) + p] = static_cast<int>(std::lower_bound(first, last, row) - inner);
@@ -574,7 +575,7 @@ void DarcySolver::restore_kept_factor(std::span<const PermeabilityTensor> permea
 // iterations, as soon as the rate so far says the budget will not do, or when CG breaks down.
 bool DarcySolver::solve_by_conjugate_gradients(Eigen::VectorXd& x, int budget, int& iterations) const {
   const auto multiply = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd {
-    return matrix_.selfadjointView<Eigen::Lower>() * v;
+    return matrix_.selfadjointView<Eigen::Upper>() * v;
   };
   // The heads' range, fixed ones included: the scale of the head error that counts.
   const auto head_tolerance = [&] {

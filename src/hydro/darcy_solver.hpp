@@ -152,7 +152,7 @@ class DarcySolver {
   std::vector<FixedShare> fixed_shares_;  // sorted by node
   std::vector<double> prescribed_flow_;   // per mesh boundary: ∫ q_N ds over its flux edges
   std::vector<double> element_coupling_;  // per triangle, K_e(0,1), K_e(0,2), K_e(1,2)
-  SparseMatrix matrix_;                   // lower triangle over the unknowns
+  SparseMatrix matrix_;                   // upper triangle over the unknowns
   Eigen::VectorXd rhs_;
   std::vector<PermeabilityTensor> kept_permeability_;  // whose factor solver_ holds, for reuse (empty: none)
 };

@@ -41,7 +41,7 @@ EffectiveTensor compute_region_tensor(const mesh::TriangleMesh& mesh, std::span<
       for (int j = 0; j < 3; ++j) {
         const int column = unknown[tri[j]];
         if (column >= 0) {
-          if (row >= column) entries.emplace_back(row, column, element[k][i][j]);
+          if (row <= column) entries.emplace_back(row, column, element[k][i][j]);
         } else {
           rhs_x[row] -= element[k][i][j] * mesh.nodes[tri[j]].x;
           rhs_y[row] -= element[k][i][j] * mesh.nodes[tri[j]].y;
@@ -51,11 +51,11 @@ EffectiveTensor compute_region_tensor(const mesh::TriangleMesh& mesh, std::span<
   }
   Eigen::VectorXd u_x, u_y;
   if (n > 0) {
-    SparseMatrix lower(n, n);
-    lower.setFromTriplets(entries.begin(), entries.end());
+    SparseMatrix upper(n, n);
+    upper.setFromTriplets(entries.begin(), entries.end());
     std::unique_ptr<LinearSolver> solver = make_cholmod_solver(FillOrdering::automatic);
-    solver->analyse(lower);
-    solver->factorize(lower);
+    solver->analyse(upper);
+    solver->factorize(upper);
     u_x = solver->solve(rhs_x);
     u_y = solver->solve(rhs_y);
   }

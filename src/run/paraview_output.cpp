@@ -33,6 +33,7 @@ void ParaviewOutput::write_fluid(int step, double time, const mesh::TriangleMesh
   std::vector<DataArray> cells{DataArray::view("permeability", 1, permeability)};
   if (!porosity.empty()) cells.push_back(DataArray::view("porosity", 1, porosity));
   DataArray flux{"flux", 2, {}};
+  flux.values.reserve(2 * flow.flux.size());
   for (const geometry::Point& q : flow.flux) flux.values.insert(flux.values.end(), {q.x, q.y});
   cells.push_back(std::move(flux));
   cells.push_back({"region", 1, std::vector<double>(mesh.region.begin(), mesh.region.end())});
