@@ -26,7 +26,7 @@ EffectiveTensor compute_region_tensor(const mesh::TriangleMesh& mesh, std::span<
     for (int v : tri)
       if (!on_boundary[v] && unknown[v] < 0) unknown[v] = n++;
 
-  // Assemble the free-free block (lower triangle) and, per direction, the right-hand side
+  // Assemble the free-free block (upper triangle) and, per direction, the right-hand side
   // −K_fb u_b with u_b = x or y at the boundary nodes.
   std::vector<Eigen::Triplet<double>> entries;
   Eigen::VectorXd rhs_x = Eigen::VectorXd::Zero(n), rhs_y = Eigen::VectorXd::Zero(n);
