@@ -13,8 +13,8 @@
 namespace hydrodda::hydro {
 
 // Column-major; only the upper triangle (row <= column) is stored and read: the triangle
-// CHOLMOD's supernodal factorisation works on, so it factors the matrix as it is instead of
-// a transposed copy (45 MB and 3% of a factorisation at 10^6 triangles).
+// CHOLMOD's supernodal factorisation works on, which it then permutes into one copy; a lower
+// triangle it transposes twice, holding two (45 MB each at 10^6 triangles).
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
 // A factorisation failed: the matrix is singular or not positive definite.
