@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <iterator>
+#include <memory>
 #include <set>
 #include <stdexcept>
 #include <utility>
@@ -69,10 +70,16 @@ std::vector<double> with_zero_z(std::size_t count, XY xy) {
   return xyz;
 }
 
+// The bytes of an array made for the file, kept alive by `owner` until they are compressed.
+struct MadeBytes {
+  std::shared_ptr<const void> owner;
+  std::span<const std::byte> bytes;
+};
+
 template <class T>
-std::vector<std::byte> bytes_of(const std::vector<T>& values) {
-  const auto bytes = std::as_bytes(std::span(values));
-  return {bytes.begin(), bytes.end()};
+MadeBytes bytes_of(std::vector<T> values) {
+  auto owner = std::make_shared<const std::vector<T>>(std::move(values));
+  return {owner, std::as_bytes(std::span(*owner))};
 }
 
 // One <DataArray> of a file: its bytes in place, or made only when it is compressed (points
@@ -83,7 +90,7 @@ struct Array {
   std::string_view name;
   int components;
   std::span<const std::byte> bytes;
-  std::function<std::vector<std::byte>()> make;
+  std::function<MadeBytes()> make;
 };
 
 // The arrays of one XML element of the piece (<PointData>, <CellData>, <Points>, <Cells>).
@@ -145,7 +152,7 @@ void write_file(const std::filesystem::path& path, std::size_t point_count, std:
   const std::string placeholder = render_header(point_count, cell_count, sections, {});
   file.write(placeholder);
   std::vector<std::size_t> sizes;
-  std::vector<std::vector<std::byte>> made;
+  std::vector<MadeBytes> made;
   std::vector<std::span<const std::byte>> batch;
   std::size_t batch_bytes = 0;
   const auto flush = [&] {
@@ -161,7 +168,7 @@ void write_file(const std::filesystem::path& path, std::size_t point_count, std:
     for (const Array& a : s.arrays) {
       if (a.make) {
         made.push_back(a.make());
-        batch.push_back(made.back());
+        batch.push_back(made.back().bytes);
       } else {
         batch.push_back(a.bytes);
       }
@@ -181,8 +188,8 @@ void write_file(const std::filesystem::path& path, std::size_t point_count, std:
 struct CellArrays {
   std::size_t count = 0;
   int type = 0;
-  std::function<std::vector<std::byte>()> connectivity;
-  std::function<std::vector<std::byte>()> offsets;
+  std::function<MadeBytes()> connectivity;
+  std::function<MadeBytes()> offsets;
 };
 
 void write_unstructured_grid(const std::filesystem::path& path, std::span<const Point> points,
@@ -200,7 +207,7 @@ void write_unstructured_grid(const std::filesystem::path& path, std::span<const 
   };
   sections.push_back({"Points", {{"Float64", "Points", 3, {}, xyz}}});
   const auto types = [&cells] {
-    return std::vector<std::byte>(cells.count, static_cast<std::byte>(cells.type));
+    return bytes_of(std::vector<std::uint8_t>(cells.count, static_cast<std::uint8_t>(cells.type)));
   };
   sections.push_back({"Cells",
                       {{"Int64", "connectivity", 1, {}, cells.connectivity},
