@@ -89,6 +89,12 @@ TEST(Porosity, PiecesTileEachBlockInsideTheMesh) {
   const PorosityField without = mapper.compute(blocks, 0.1);
   EXPECT_EQ(with.fracture_area, without.fracture_area);
   EXPECT_EQ(with.porosity, without.porosity);
+  // Ordered by block, then element, each pair once (what the seepage force's sums rely on to
+  // be the same on any number of threads).
+  for (std::size_t k = 1; k < pieces.size(); ++k)
+    EXPECT_TRUE(pieces[k - 1].block < pieces[k].block ||
+                (pieces[k - 1].block == pieces[k].block && pieces[k - 1].element < pieces[k].element))
+        << "piece " << k;
   std::vector<double> area(blocks.size(), 0.0);
   std::vector<Point> moment(blocks.size());
   for (const BlockPiece& piece : pieces) {
