@@ -8,14 +8,13 @@
 #include <utility>
 
 #include "coupling/force_moments.hpp"
-#include "dda/parallel.hpp"
 #include "hydro/element_pressure.hpp"
 
 namespace hydrodda::coupling {
 
 namespace {
 
-// About 50 µs of work a block: from this many on, a second thread pays for waking it.
+// About 50 µs of work a block: from this many on, more threads pay for waking them.
 constexpr std::size_t kBlocksWorthTwoThreads = 64;
 
 // A piece of a segment inside one element: parameters t0 < t1 along it.
@@ -272,10 +271,12 @@ std::vector<std::vector<Point>> FacePressureLoads::compute(std::span<const geome
   if (biot.size() != blocks.size())
     throw std::invalid_argument("pressure forces: one Biot coefficient per block is needed");
   std::vector<std::vector<Point>> forces(blocks.size());
-  // Each block's loads are its own: the halves of the blocks go to two threads (a mesh that
-  // has no elements, the one failure, is refused before).
+  // Each block's loads are its own, so the threads share the blocks in small chunks taken as
+  // they finish (the blocks that leave the mesh cost several times the others, and lie
+  // together; fixed halves left one thread waiting). A mesh that has no elements, the one
+  // failure, is refused before the threads start.
   if (mesh_.triangles.empty() && !blocks.empty()) throw std::invalid_argument("pressure forces: the fluid mesh has no elements");
-  dda::for_each_in_halves(blocks.size() >= kBlocksWorthTwoThreads, blocks.size(), [&](std::size_t b) {
+  const auto load_block = [&](std::size_t b) {
     const geometry::Polygon& poly = blocks[b];
     const std::size_t n = poly.size();
     forces[b].assign(n, Point{});
@@ -297,7 +298,10 @@ std::vector<std::vector<Point>> FacePressureLoads::compute(std::span<const geome
       const std::vector<Point> across = load_mesh_boundary_across(poly, biot[b], nodal_pressure);
       for (std::size_t v = 0; v < n; ++v) forces[b][v] += across[v];
     }
-  });
+  };
+  const auto count = static_cast<std::ptrdiff_t>(blocks.size());
+#pragma omp parallel for schedule(dynamic, 16) if (blocks.size() >= kBlocksWorthTwoThreads)
+  for (std::ptrdiff_t b = 0; b < count; ++b) load_block(static_cast<std::size_t>(b));
   return forces;
 }
 
