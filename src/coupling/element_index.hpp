@@ -20,7 +20,7 @@ class ElementIndex {
   int size() const { return static_cast<int>(corners_.size()); }
   const std::vector<std::array<geometry::Point, 3>>& corners() const { return corners_; }
   const std::vector<double>& areas() const { return areas_; }
-  // Over the elements' bounding boxes; ids are element indices.
+  // Over the elements' bounding boxes (grid().box(e) is element e's); ids are element indices.
   const geometry::SpatialGrid& grid() const { return grid_; }
 
  private:

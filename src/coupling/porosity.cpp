@@ -9,15 +9,10 @@
 namespace hydrodda::coupling {
 
 namespace {
-geometry::Box box_of(const std::array<Point, 3>& t) {
-  return {{std::min({t[0].x, t[1].x, t[2].x}), std::min({t[0].y, t[1].y, t[2].y})},
-          {std::max({t[0].x, t[1].x, t[2].x}), std::max({t[0].y, t[1].y, t[2].y})}};
-}
-
-// The blocks over the triangle in block order, so that sums do not depend on the grid.
-void find_candidates(const std::array<Point, 3>& t, const geometry::SpatialGrid& grid, std::vector<int>& candidates) {
+// The blocks over a box (an element's) in block order, so that sums do not depend on the grid.
+void find_candidates(const geometry::Box& box, const geometry::SpatialGrid& grid, std::vector<int>& candidates) {
   candidates.clear();
-  grid.for_each_overlap(box_of(t), [&](int b) {
+  grid.for_each_overlap(box, [&](int b) {
     candidates.insert(std::upper_bound(candidates.begin(), candidates.end(), b), b);
   });
 }
@@ -37,7 +32,7 @@ double PorosityMapper::compute_covered_area(int e, const geometry::ClipPolygons&
   int& hint = scratch.hint;
   if (hint >= 0 && blocks.holds(hint, t)) return a;
   std::vector<int>& candidates = scratch.candidates;
-  find_candidates(t, grid, candidates);
+  find_candidates(elements_->grid().box(e), grid, candidates);
   double covered = 0.0;
   for (int b : candidates) {
     const double part = blocks.covered_area(b, t, a);
@@ -53,7 +48,7 @@ double PorosityMapper::compute_pieces(int e, const geometry::ClipPolygons& block
                                       Scratch& scratch, std::vector<BlockPiece>& pieces) const {
   const std::array<Point, 3>& t = elements_->corners()[e];
   const double a = elements_->areas()[e];
-  find_candidates(t, grid, scratch.candidates);
+  find_candidates(elements_->grid().box(e), grid, scratch.candidates);
   // Every block's part is wanted (the seepage force acts on overlapping blocks too), so no
   // early out; the sum is compute_covered_area's, or A_e or more where that one stopped early,
   // which leaves A_f = 0 either way.

@@ -9,6 +9,7 @@
 
 #include "coupling/force_moments.hpp"
 #include "hydro/element_pressure.hpp"
+#include "mesh/point_locator.hpp"
 
 namespace hydrodda::coupling {
 
@@ -88,7 +89,7 @@ FacePressureLoads::FacePressureLoads(const mesh::TriangleMesh& mesh, std::shared
   for (Point p : mesh.nodes) all.add(p);
   const double extent = std::max(all.width(), all.height());
   tolerance_ = 1e-12 * extent;
-  area_tolerance_ = tolerance_ * extent;
+  area_tolerance_ = mesh::locator_area_tolerance(extent);
   // The grid holds about two elements a cell: cells of about √(2 × box area / elements).
   chunk_length_ = mesh.triangles.empty()
                       ? extent
@@ -139,11 +140,8 @@ double FacePressureLoads::pressure_at(Point p, std::span<const double> nodal_pre
   const double slack = std::sqrt(area_tolerance_);
   elements_->grid().for_each_overlap(geometry::Box{{p.x - slack, p.y - slack}, {p.x + slack, p.y + slack}}, [&](int e) {
     if (t >= 0 && e > t) return;
-    // Inside (or on) a counter-clockwise triangle: left of all three edges.
     const auto& [a, b, c] = elements_->corners()[e];
-    if (geometry::orient(a, b, p) >= -area_tolerance_ && geometry::orient(b, c, p) >= -area_tolerance_ &&
-        geometry::orient(c, a, p) >= -area_tolerance_)
-      t = e;
+    if (mesh::triangle_holds(a, b, c, p, area_tolerance_)) t = e;
   });
   return t < 0 ? pressure_outside_mesh(p, nodal_pressure) : hydro::interpolate_pressure(mesh_, nodal_pressure, t, p);
 }

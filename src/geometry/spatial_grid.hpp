@@ -33,6 +33,7 @@ class SpatialGrid {
   int nearest(Point p, double first_reach, Distance&& distance) const;
 
   int size() const { return static_cast<int>(boxes_.size()); }
+  const Box& box(int id) const { return boxes_[static_cast<std::size_t>(id)]; }
 
  private:
   std::vector<Box> boxes_;

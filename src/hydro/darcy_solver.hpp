@@ -85,8 +85,7 @@ class DarcySolver {
   int unknown_count() const { return static_cast<int>(free_nodes_.size()); }
   long long stored_nonzeros() const { return matrix_.nonZeros(); }
   double reference_head() const { return reference_head_; }
-  // Seconds spent in the constructor: pattern and symbolic analysis.
-  // Seconds to build the pattern and analyse it (waits for the analysis).
+  // Seconds to build the pattern and analyse it (waits for an analysis running aside).
   double setup_seconds() const;
   const std::string& solver_name() const { return solver_name_; }
 
@@ -121,9 +120,9 @@ class DarcySolver {
   bool solve_by_conjugate_gradients(Eigen::VectorXd& x, int budget, int& iterations) const;
   FlowSolution make_solution(const Eigen::VectorXd& x, std::span<const Conductivity> conductivity) const;
   void compute_boundary_flows(FlowSolution& out) const;
-  // The flow out through each mesh boundary, from A h (compute_a_times_h), and the larger of
-  // their total inflow and total outflow.
+  // The flow out through each mesh boundary, from A h (compute_a_times_h).
   std::vector<double> boundary_totals(const std::vector<long double>& a_times_h) const;
+  // The larger of the boundaries' total inflow and total outflow.
   static double net_boundary_flow(const std::vector<double>& flow);
 
   const mesh::TriangleMesh& mesh_;

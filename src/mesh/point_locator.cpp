@@ -21,7 +21,7 @@ PointLocator::PointLocator(const TriangleMesh& mesh) : mesh_(mesh) {
   columns_ = std::clamp(static_cast<int>(box_.width() / cell) + 1, 1, 1 << 14);
   rows_ = std::clamp(static_cast<int>(box_.height() / cell) + 1, 1, 1 << 14);
   inverse_cell_ = 1.0 / std::max(cell, 1e-300 + extent / (1 << 14));
-  tolerance_ = 1e-12 * extent * extent;
+  tolerance_ = locator_area_tolerance(extent);
 
   auto cell_range = [&](int t) {
     geometry::Box b;
@@ -60,10 +60,7 @@ int PointLocator::locate(Point p) const {
     const int t = cell_triangles_[i];
     const auto& [a, b, d] = mesh_.triangles[t];
     const Point pa = mesh_.nodes[a], pb = mesh_.nodes[b], pd = mesh_.nodes[d];
-    // p is inside (or on) a counter-clockwise triangle when it lies left of all three edges.
-    if (geometry::orient(pa, pb, p) >= -tolerance_ && geometry::orient(pb, pd, p) >= -tolerance_ &&
-        geometry::orient(pd, pa, p) >= -tolerance_)
-      return t;
+    if (triangle_holds(pa, pb, pd, p, tolerance_)) return t;
   }
   return -1;
 }

@@ -10,6 +10,17 @@
 
 namespace hydrodda::mesh {
 
+// Whether p lies inside (or on) the counter-clockwise triangle a, b, c: left of all three
+// edges, to `area_tolerance` in orient()'s unit. The locator's rule, for others that find
+// triangles their own way.
+inline bool triangle_holds(Point a, Point b, Point c, Point p, double area_tolerance) {
+  return geometry::orient(a, b, p) >= -area_tolerance && geometry::orient(b, c, p) >= -area_tolerance &&
+         geometry::orient(c, a, p) >= -area_tolerance;
+}
+
+// The locator's area tolerance for a mesh whose nodes span `extent`: 1e-12 of its size, squared.
+inline double locator_area_tolerance(double extent) { return 1e-12 * extent * extent; }
+
 class PointLocator {
  public:
   // Keeps a reference to the mesh's nodes and triangles: the mesh must outlive the locator.

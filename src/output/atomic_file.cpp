@@ -32,20 +32,12 @@ AtomicFile::~AtomicFile() {
 }
 
 void AtomicFile::write(std::string_view bytes) {
-  if (fd_ < 0) throw std::logic_error("AtomicFile::write after commit");
-  std::size_t written = 0;
-  while (written < bytes.size()) {
-    const ssize_t n = ::write(fd_, bytes.data() + written, bytes.size() - written);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      fail(temporary_, "write");
-    }
-    written += static_cast<std::size_t>(n);
-  }
+  write_at(size_, bytes);
+  size_ += bytes.size();
 }
 
 void AtomicFile::write_at(std::size_t position, std::string_view bytes) {
-  if (fd_ < 0) throw std::logic_error("AtomicFile::write_at after commit");
+  if (fd_ < 0) throw std::logic_error("AtomicFile: a write after commit");
   std::size_t written = 0;
   while (written < bytes.size()) {
     const ssize_t n = ::pwrite(fd_, bytes.data() + written, bytes.size() - written,

@@ -29,6 +29,7 @@ class AtomicFile {
   std::filesystem::path path_;
   std::filesystem::path temporary_;
   int fd_ = -1;
+  std::size_t size_ = 0;  // bytes appended so far
 };
 
 // The whole `content` through an AtomicFile.

@@ -1,11 +1,10 @@
 #include "output/checkpoint.hpp"
 
-#include <span>
-
 #include <cstring>
 #include <functional>
-#include <utility>
+#include <span>
 #include <type_traits>
+#include <utility>
 
 #include "output/zlib_blocks.hpp"
 
@@ -297,8 +296,8 @@ std::uint64_t hash_text(std::string_view text) {
 std::string encode_checkpoint(const RunCheckpoint& c) { return encode_checkpoint(c, c.mechanics, c.coupling); }
 
 namespace {
-void write_checkpoint(Writer& w, const RunCheckpoint& c, const dda::SystemState& mechanics,
-                      const coupling::LoopState& coupling) {
+void put_checkpoint(Writer& w, const RunCheckpoint& c, const dda::SystemState& mechanics,
+                    const coupling::LoopState& coupling) {
   for (char ch : kMagic) w.put_raw(ch);
   w.put(kVersion);
   w.put_raw(kByteOrderMark);
@@ -336,14 +335,14 @@ std::string encode_checkpoint(const RunCheckpoint& c, const dda::SystemState& me
                               const coupling::LoopState& coupling) {
   std::string bytes;
   Writer w([&](std::string_view piece) { bytes += piece; });
-  write_checkpoint(w, c, mechanics, coupling);
+  put_checkpoint(w, c, mechanics, coupling);
   return bytes;
 }
 
 void write_checkpoint(AtomicFile& file, const RunCheckpoint& c, const dda::SystemState& mechanics,
                       const coupling::LoopState& coupling) {
   Writer w([&](std::string_view piece) { file.write(piece); });
-  write_checkpoint(w, c, mechanics, coupling);
+  put_checkpoint(w, c, mechanics, coupling);
 }
 
 RunCheckpoint decode_checkpoint(std::string_view file) {

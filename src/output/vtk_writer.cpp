@@ -7,6 +7,7 @@
 #include <functional>
 #include <iterator>
 #include <memory>
+#include <numeric>
 #include <set>
 #include <stdexcept>
 #include <utility>
@@ -183,8 +184,8 @@ void write_file(const std::filesystem::path& path, std::size_t point_count, std:
   file.commit();
 }
 
-// Validates everything, then writes one <UnstructuredGrid> piece atomically. `cells` gives
-// the connectivity (all node indices) and the end offset of each cell, made when compressed.
+// A piece's cells: their connectivity (all node indices) and the end offset of each, made
+// when they are compressed.
 struct CellArrays {
   std::size_t count = 0;
   int type = 0;
@@ -192,6 +193,7 @@ struct CellArrays {
   std::function<MadeBytes()> offsets;
 };
 
+// Validates everything, then writes one <UnstructuredGrid> piece atomically.
 void write_unstructured_grid(const std::filesystem::path& path, std::span<const Point> points,
                              const CellArrays& cells, std::span<const DataArray> point_data,
                              std::span<const DataArray> cell_data, VtuCompression compression) {
@@ -216,24 +218,21 @@ void write_unstructured_grid(const std::filesystem::path& path, std::span<const 
   write_file(path, points.size(), cells.count, sections, compression.level);
 }
 
-// Cells of `corners` corners each, numbered in turn: connectivity 0, 1, 2, ... and end offsets
-// corners, 2 corners, ... (the blocks' and segments' own points).
+// Cells on points of their own, numbered in turn: connectivity 0, 1, 2, ... and each cell's
+// end offset, the running sum of `corners_of` (the blocks' and segments' own points).
 CellArrays numbered_cells(int type, std::size_t count, std::function<std::size_t(std::size_t)> corners_of) {
   CellArrays cells;
   cells.count = count;
   cells.type = type;
-  cells.offsets = [count, corners_of] {
-    std::vector<std::int64_t> offsets(count);
-    std::int64_t end = 0;
-    for (std::size_t k = 0; k < count; ++k) offsets[k] = end += static_cast<std::int64_t>(corners_of(k));
-    return bytes_of(offsets);
+  std::vector<std::int64_t> offsets(count);
+  std::int64_t end = 0;
+  for (std::size_t k = 0; k < count; ++k) offsets[k] = end += static_cast<std::int64_t>(corners_of(k));
+  cells.connectivity = [end] {
+    std::vector<std::int64_t> connectivity(static_cast<std::size_t>(end));
+    std::iota(connectivity.begin(), connectivity.end(), std::int64_t{0});
+    return bytes_of(std::move(connectivity));
   };
-  cells.connectivity = [count, corners_of] {
-    std::vector<std::int64_t> connectivity;
-    for (std::size_t k = 0; k < count; ++k)
-      for (std::size_t c = 0; c < corners_of(k); ++c) connectivity.push_back(static_cast<std::int64_t>(connectivity.size()));
-    return bytes_of(connectivity);
-  };
+  cells.offsets = [offsets = std::move(offsets)] { return bytes_of(offsets); };
   return cells;
 }
 
@@ -271,12 +270,12 @@ void write_vtu_triangles(const std::filesystem::path& path, std::span<const Poin
     std::vector<std::int64_t> connectivity;
     connectivity.reserve(3 * triangles.size());
     for (const std::array<int, 3>& t : triangles) connectivity.insert(connectivity.end(), t.begin(), t.end());
-    return bytes_of(connectivity);
+    return bytes_of(std::move(connectivity));
   };
   cells.offsets = [triangles] {
     std::vector<std::int64_t> offsets(triangles.size());
     for (std::size_t t = 0; t < offsets.size(); ++t) offsets[t] = 3 * static_cast<std::int64_t>(t + 1);
-    return bytes_of(offsets);
+    return bytes_of(std::move(offsets));
   };
   write_unstructured_grid(path, nodes, cells, point_data, cell_data, compression);
 }
