@@ -9,6 +9,18 @@ namespace {
 
 const std::filesystem::path kSource = std::filesystem::path(HYDRODDA_SOURCE_DIR);
 
+// One free 1 m block of rock, up to the [mechanics] header (on line 8): the cases below add
+// the mechanics keys they are about.
+const std::string kOneFreeBlock = R"([geometry]
+[[geometry.block]]
+vertices = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
+[material.rock]
+density = 2500.0
+young = 1.0e10
+poisson = 0.25
+[mechanics]
+)";
+
 std::vector<Diagnostic> errors_of(const std::string& text) {
   try {
     parse_scenario(text, "case.toml");
@@ -82,17 +94,7 @@ TEST(ScenarioReader, ReadsEveryKeyOfTheContract) {
 }
 
 TEST(ScenarioReader, TheTensionCutoffIsOffUnlessAsked) {
-  const std::string base = R"([geometry]
-[[geometry.block]]
-vertices = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
-[material.rock]
-density = 2500.0
-young = 1.0e10
-poisson = 0.25
-[mechanics]
-analysis = "dynamic"
-steps = 10
-)";
+  const std::string base = kOneFreeBlock + "analysis = \"dynamic\"\nsteps = 10\n";
   EXPECT_FALSE(parse_scenario(base, "case.toml").mechanics->tension_cutoff);
   EXPECT_TRUE(parse_scenario(base + "tension_cutoff = true\n", "case.toml").mechanics->tension_cutoff);
 }
@@ -259,16 +261,7 @@ analysis = "dynamic"
 TEST(ScenarioReader, StaticAnalysisNeedsASupport) {
   // One free block under gravity, static: nothing holds it. A fixed block, a fixed point, a
   // prescribed displacement or dynamic analysis each make the model well posed.
-  const std::string blocks = R"([geometry]
-[[geometry.block]]
-vertices = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
-[material.rock]
-density = 2500.0
-young = 1.0e10
-poisson = 0.25
-[mechanics]
-steps = 1
-)";
+  const std::string blocks = kOneFreeBlock + "steps = 1\n";
   const auto errors = errors_of(blocks);
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_EQ(errors[0].key, "mechanics.analysis");
