@@ -239,11 +239,15 @@ TEST(Sweep, AKeyGivenTwiceIsRefused) {
 // Starts a sweep of the six-block model over `heads` in its own process group (so that the
 // signal reaches the sweep only, which must pass it on to its cases), sends SIGINT once
 // `wait_for` exists, and returns sweep.csv's rows after the sweep exited with 1.
+// `more`: further arguments of the sweep.
 std::vector<std::vector<std::string>> interrupt_sweep(const fs::path& out, const std::string& heads, const std::string& jobs,
-                                                      const fs::path& wait_for, std::chrono::milliseconds poll) {
+                                                      const fs::path& wait_for, std::chrono::milliseconds poll,
+                                                      const std::vector<std::string>& more = {}) {
   const std::string scenario = (kSource / "scenarios/paper/six_block_lr_rl.toml").string();
-  const pid_t pid = start_program_silently(
-      {"sweep", scenario, "--set", "flow.boundary[0].head=" + heads, "--jobs", jobs, "-o", out.string()}, true);
+  std::vector<std::string> arguments{"sweep", scenario, "--set", "flow.boundary[0].head=" + heads, "--jobs", jobs,
+                                     "-o", out.string()};
+  arguments.insert(arguments.end(), more.begin(), more.end());
+  const pid_t pid = start_program_silently(arguments, true);
   EXPECT_GE(pid, 0);
   for (auto waited = std::chrono::milliseconds(0); waited < std::chrono::seconds(30) && !fs::exists(wait_for);
        waited += poll)
@@ -273,13 +277,18 @@ TEST(Sweep, ACaseInterruptedAtStartUpSaysInterrupted) {
 
 TEST(Sweep, InterruptStopsLaunchingAndReachesTheRunningCase) {
   const fs::path out = fresh_dir("hydrodda-sweep-interrupt");
-  // Once the first case has written its first coupling iteration.
-  const auto rows = interrupt_sweep(out, "5,10,15", "1", out / "case_000/history.csv", std::chrono::milliseconds(50));
+  // Once the first case has written its first coupling iteration. A tolerance no pass meets
+  // keeps each case running for its 50 passes (several seconds), so that the interrupt finds
+  // it running: at the paper's tolerance the case ends 4 passes in, about 1 s, and the
+  // interrupt, sent up to a poll later, could come after it.
+  const auto rows = interrupt_sweep(out, "5,10,15", "1", out / "case_000/history.csv", std::chrono::milliseconds(50),
+                                    {"--set", "coupling.tolerance=1e-14"});
   ASSERT_EQ(rows.size(), 4u);
-  EXPECT_EQ(rows[1][2], "interrupted");  // the running case stopped at the interrupt ...
+  ASSERT_EQ(rows[0][3], "status");  // case, the head, the tolerance, status, ...
+  EXPECT_EQ(rows[1][3], "interrupted");  // the running case stopped at the interrupt ...
   EXPECT_NE(rows[1].back().find("interrupted"), std::string::npos) << rows[1].back();
-  EXPECT_EQ(rows[2][2], "not run");  // ... and no further case started
-  EXPECT_EQ(rows[3][2], "not run");
+  EXPECT_EQ(rows[2][3], "not run");  // ... and no further case started
+  EXPECT_EQ(rows[3][3], "not run");
   EXPECT_FALSE(fs::exists(out / "case_001/summary.json"));
   fs::remove_all(out);
 }
