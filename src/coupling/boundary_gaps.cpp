@@ -78,11 +78,11 @@ std::vector<geometry::Polygon> BoundaryGaps::find_gaps(std::span<const geometry:
 }
 
 std::vector<double> BoundaryGaps::compute_gap_areas(std::span<const geometry::Polygon> blocks) const {
-  std::vector<double> areas(elements_->corners().size(), 0.0);
+  std::vector<double> areas(static_cast<std::size_t>(elements_->size()), 0.0);
   for (const geometry::Polygon& gap : find_gaps(blocks)) {
     if (geometry::area(gap) == 0.0) continue;
     elements_->grid().for_each_overlap(geometry::bounding_box(gap), [&](int e) {
-      areas[e] += geometry::clipped_area(elements_->corners()[e], gap);
+      areas[e] += geometry::clipped_area(elements_->corners(static_cast<std::size_t>(e)), gap);
     });
   }
   return areas;

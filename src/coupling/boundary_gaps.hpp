@@ -40,7 +40,8 @@ class BoundaryGaps {
   // `domain`: the fluid domain (a simple polygon, either orientation); `blocks_as_built`: the
   // blocks in the vertex order that later calls keep (an empty domain: no face is followed and
   // no vertex is outside). A block face counts as a boundary face
-  // when both its ends lie within 1e-9 of the domain's size of one domain edge.
+  // when both its ends lie within 1e-9 of the domain's size of one domain edge. `nodes` and
+  // `triangles` must outlive the object (its ElementIndex keeps views of them).
   BoundaryGaps(std::span<const Point> nodes, std::span<const std::array<int, 3>> triangles,
                const geometry::Polygon& domain, std::span<const geometry::Polygon> blocks_as_built);
   // The same over a shared index of the mesh's elements.

@@ -5,20 +5,12 @@
 namespace hydrodda::coupling {
 
 namespace {
-std::vector<std::array<geometry::Point, 3>> gather(std::span<const geometry::Point> nodes,
-                                                   std::span<const std::array<int, 3>> triangles) {
-  std::vector<std::array<geometry::Point, 3>> out;
-  out.reserve(triangles.size());
-  for (const auto& t : triangles) out.push_back({nodes[t[0]], nodes[t[1]], nodes[t[2]]});
-  return out;
-}
-
-std::vector<geometry::Box> boxes_of(std::span<const std::array<geometry::Point, 3>> corners) {
+std::vector<geometry::Box> boxes_of(const ElementIndex& elements) {
   std::vector<geometry::Box> boxes;
-  boxes.reserve(corners.size());
-  for (const auto& t : corners) {
+  boxes.reserve(static_cast<std::size_t>(elements.size()));
+  for (std::size_t e = 0; e < static_cast<std::size_t>(elements.size()); ++e) {
     geometry::Box box;
-    for (geometry::Point p : t) box.add(p);
+    for (geometry::Point p : elements.corners(e)) box.add(p);
     boxes.push_back(box);
   }
   return boxes;
@@ -26,9 +18,9 @@ std::vector<geometry::Box> boxes_of(std::span<const std::array<geometry::Point, 
 }  // namespace
 
 ElementIndex::ElementIndex(std::span<const geometry::Point> nodes, std::span<const std::array<int, 3>> triangles)
-    : corners_(gather(nodes, triangles)), grid_(boxes_of(corners_)) {
-  areas_.reserve(corners_.size());
-  for (const auto& t : corners_) areas_.push_back(geometry::area(t));
+    : nodes_(nodes), triangles_(triangles), grid_(boxes_of(*this)) {
+  areas_.reserve(triangles.size());
+  for (std::size_t e = 0; e < triangles.size(); ++e) areas_.push_back(geometry::area(corners(e)));
 }
 
 }  // namespace hydrodda::coupling

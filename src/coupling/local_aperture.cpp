@@ -131,23 +131,41 @@ double signed_distance(Point p, std::span<const Point> polygon) {
   return geometry::contains(polygon, p) ? -d : d;
 }
 
-std::vector<double> compute_local_apertures(std::span<const Point> centroids, std::span<const double> fracture_area,
-                                            std::span<const geometry::Polygon> blocks,
-                                            const geometry::Polygon& domain, double reach) {
+namespace {
+// compute_local_apertures over `count` elements, `centroid(e)` giving element e's centroid.
+template <class Centroid>
+std::vector<double> apertures_at(std::size_t count, Centroid&& centroid, std::span<const double> fracture_area,
+                                 std::span<const geometry::Polygon> blocks, const geometry::Polygon& domain,
+                                 double reach) {
   std::vector<geometry::Box> boxes;
   boxes.reserve(blocks.size());
   for (const auto& b : blocks) boxes.push_back(geometry::bounding_box(b));
   const geometry::SpatialGrid grid(boxes, 1.0);
-  std::vector<double> aperture(centroids.size(), 0.0);
+  std::vector<double> aperture(count, 0.0);
   // Each element on its own: the halves side by side give the same apertures as one thread.
-  dda::run_two_parts(centroids.size() >= 20000, [&](int part) {
-    const auto [begin, end] = dda::half_range(part, centroids.size());
+  dda::run_two_parts(count >= 20000, [&](int part) {
+    const auto [begin, end] = dda::half_range(part, count);
     std::vector<Wall> walls;
     for (std::size_t e = begin; e < end; ++e)
-      if (fracture_area[e] > 0.0)
-        aperture[e] = compute_local_aperture(centroids[e], blocks, grid, domain, reach, walls);
+      if (fracture_area[e] > 0.0) aperture[e] = compute_local_aperture(centroid(e), blocks, grid, domain, reach, walls);
   });
   return aperture;
+}
+}  // namespace
+
+std::vector<double> compute_local_apertures(std::span<const Point> centroids, std::span<const double> fracture_area,
+                                            std::span<const geometry::Polygon> blocks,
+                                            const geometry::Polygon& domain, double reach) {
+  return apertures_at(
+      centroids.size(), [&](std::size_t e) { return centroids[e]; }, fracture_area, blocks, domain, reach);
+}
+
+std::vector<double> compute_local_apertures(const mesh::TriangleMesh& mesh, std::span<const double> fracture_area,
+                                            std::span<const geometry::Polygon> blocks,
+                                            const geometry::Polygon& domain, double reach) {
+  return apertures_at(
+      mesh.triangles.size(), [&](std::size_t e) { return mesh::triangle_centroid(mesh, static_cast<int>(e)); },
+      fracture_area, blocks, domain, reach);
 }
 
 }  // namespace hydrodda::coupling

@@ -19,6 +19,7 @@
 
 #include "geometry/point.hpp"
 #include "geometry/polygon.hpp"
+#include "mesh/triangle_mesh.hpp"
 
 namespace hydrodda::coupling {
 
@@ -26,6 +27,10 @@ namespace hydrodda::coupling {
 // `reach`: how far from a centroid walls are looked for; beyond it a wall is taken at `reach`.
 std::vector<double> compute_local_apertures(std::span<const geometry::Point> centroids,
                                             std::span<const double> fracture_area,
+                                            std::span<const geometry::Polygon> blocks,
+                                            const geometry::Polygon& domain, double reach);
+// The same at the centroids of a mesh's elements (made as they are needed).
+std::vector<double> compute_local_apertures(const mesh::TriangleMesh& mesh, std::span<const double> fracture_area,
                                             std::span<const geometry::Polygon> blocks,
                                             const geometry::Polygon& domain, double reach);
 

@@ -25,7 +25,7 @@ PorosityMapper::PorosityMapper(std::shared_ptr<const ElementIndex> elements) : e
 
 double PorosityMapper::compute_covered_area(int e, const geometry::ClipPolygons& blocks,
                                             const geometry::SpatialGrid& grid, Scratch& scratch) const {
-  const std::array<Point, 3>& t = elements_->corners()[e];
+  const std::array<Point, 3> t = elements_->corners(static_cast<std::size_t>(e));
   const double a = elements_->areas()[e];
   // Most elements lie inside one block, often the one that held the element before (mesh
   // order follows space): then A_f = 0 whatever else overlaps, as the sum below would give.
@@ -46,7 +46,7 @@ double PorosityMapper::compute_covered_area(int e, const geometry::ClipPolygons&
 
 double PorosityMapper::compute_pieces(int e, const geometry::ClipPolygons& blocks, const geometry::SpatialGrid& grid,
                                       Scratch& scratch, std::vector<BlockPiece>& pieces) const {
-  const std::array<Point, 3>& t = elements_->corners()[e];
+  const std::array<Point, 3> t = elements_->corners(static_cast<std::size_t>(e));
   const double a = elements_->areas()[e];
   find_candidates(elements_->grid().box(e), grid, scratch.candidates);
   // Every block's part is wanted (the seepage force acts on overlapping blocks too), so no
@@ -66,10 +66,10 @@ double equivalent_porosity(double open_area, double element_area, double matrix_
 }
 
 PorosityField PorosityMapper::compute(std::span<const geometry::Polygon> blocks, double matrix_porosity,
-                                      std::vector<BlockPiece>* pieces) const {
+                                      BlockPieces* pieces) const {
   if (!(matrix_porosity >= 0.0 && matrix_porosity < 1.0))
     throw std::invalid_argument("porosity: the matrix porosity must lie in [0, 1)");
-  const std::size_t n = elements_->corners().size();
+  const auto n = static_cast<std::size_t>(elements_->size());
   // The blocks as they are in this pass: their edges as half-planes, and a grid over their
   // boxes (about one block per cell) to find those over each element.
   const geometry::ClipPolygons prepared(blocks);
@@ -78,32 +78,31 @@ PorosityField PorosityMapper::compute(std::span<const geometry::Polygon> blocks,
   field.fracture_area.resize(n);
   field.porosity.resize(n);
   // Each element on its own: the halves side by side give the same field as one thread.
-  std::array<std::vector<BlockPiece>, 2> half_pieces;
   dda::run_two_parts(n >= 20000, [&](int part) {
     const auto [begin, end] = dda::half_range(part, n);
+    std::vector<BlockPiece>* own = pieces ? &pieces->halves_[static_cast<std::size_t>(part)] : nullptr;
+    if (own) own->clear();
     Scratch scratch;
     for (std::size_t e = begin; e < end; ++e) {
       const double a = elements_->areas()[e];
       const int element = static_cast<int>(e);
-      const double covered = pieces ? compute_pieces(element, prepared, grid, scratch, half_pieces[part])
+      const double covered = pieces ? compute_pieces(element, prepared, grid, scratch, *own)
                                     : compute_covered_area(element, prepared, grid, scratch);
       const double open = std::clamp(a - covered, 0.0, a);
       field.fracture_area[e] = open;
       field.porosity[e] = equivalent_porosity(open, a, matrix_porosity);
     }
   });
-  if (pieces) {
-    // Element order within each half, the halves in order, then grouped by block by a
-    // counting sort, which keeps that order within a block: by block, then element, however
-    // many threads ran (a stable sort by block, in one pass over the pieces).
-    std::vector<std::size_t> next(blocks.size() + 1, 0);
-    for (const std::vector<BlockPiece>& half : half_pieces)
-      for (const BlockPiece& piece : half) ++next[static_cast<std::size_t>(piece.block) + 1];
-    for (std::size_t b = 1; b < next.size(); ++b) next[b] += next[b - 1];
-    pieces->resize(next.back());
-    for (const std::vector<BlockPiece>& half : half_pieces)
-      for (const BlockPiece& piece : half) (*pieces)[next[static_cast<std::size_t>(piece.block)]++] = piece;
-  }
+  // A list grown by doubling may hold up to twice its pieces: made tight once (with room for
+  // a few more), it is reused so from then on.
+  if (pieces)
+    for (std::vector<BlockPiece>& half : pieces->halves_)
+      if (half.capacity() > half.size() + half.size() / 8) {
+        std::vector<BlockPiece> tight;
+        tight.reserve(half.size() + half.size() / 16);
+        tight.assign(half.begin(), half.end());
+        half.swap(tight);
+      }
   return field;
 }
 

@@ -5,6 +5,7 @@
 // A_e, and A_f is then taken as 0. Parts of blocks outside the fluid mesh count for nothing.
 
 #include <array>
+#include <cstddef>
 #include <memory>
 #include <span>
 #include <vector>
@@ -36,18 +37,61 @@ struct BlockPiece {
   Point centroid;
 };
 
-// Keeps the fixed mesh's element corners and areas (an ElementIndex, shared or its own); each
-// pass clips every element against the blocks as they are then.
+// Every block ∩ element part a clip found, in element order: the parts over the first half of
+// the elements, then those over the second. Each half is filled by its own thread and kept
+// where it was made: joined into one list they would be copied once more (at a million
+// triangles some 40 MB). Kept from pass to pass, the lists reuse their storage.
+class BlockPieces {
+ public:
+  std::size_t size() const { return halves_[0].size() + halves_[1].size(); }
+  const BlockPiece& operator[](std::size_t k) const {
+    return k < halves_[0].size() ? halves_[0][k] : halves_[1][k - halves_[0].size()];
+  }
+  class const_iterator {
+   public:
+    using value_type = BlockPiece;
+    using difference_type = std::ptrdiff_t;
+    const_iterator() = default;
+    const_iterator(const BlockPieces* pieces, std::size_t k) : pieces_(pieces), k_(k) {}
+    const BlockPiece& operator*() const { return (*pieces_)[k_]; }
+    const BlockPiece* operator->() const { return &(*pieces_)[k_]; }
+    const_iterator& operator++() {
+      ++k_;
+      return *this;
+    }
+    const_iterator operator++(int) {
+      const_iterator before = *this;
+      ++k_;
+      return before;
+    }
+    bool operator==(const const_iterator& other) const { return k_ == other.k_; }
+
+   private:
+    const BlockPieces* pieces_ = nullptr;
+    std::size_t k_ = 0;
+  };
+  const_iterator begin() const { return {this, 0}; }
+  const_iterator end() const { return {this, size()}; }
+
+ private:
+  friend class PorosityMapper;
+  std::array<std::vector<BlockPiece>, 2> halves_;
+};
+
+// Keeps an index of the fixed mesh's elements (an ElementIndex, shared or its own, with views
+// of `nodes` and `triangles`, which must outlive the mapper); each pass clips every element
+// against the blocks as they are then.
 class PorosityMapper {
  public:
   PorosityMapper(std::span<const Point> nodes, std::span<const std::array<int, 3>> triangles);
   explicit PorosityMapper(std::shared_ptr<const ElementIndex> elements);
 
-  // Blocks: simple polygons in either orientation. matrix_porosity in [0, 1). With `pieces`,
-  // also every block ∩ element part of non-zero area, from the same clips, ordered by block
-  // then element (whatever the threads); the field is then the same, bit for bit.
+  // Blocks: simple polygons in either orientation. matrix_porosity in [0, 1). With `pieces`
+  // (replaced; its storage reused), also every block ∩ element part of non-zero area, from
+  // the same clips, in element order (whatever the threads: a sum over a block's pieces in
+  // this order is the same on any number of threads); the field is then the same, bit for bit.
   PorosityField compute(std::span<const geometry::Polygon> blocks, double matrix_porosity,
-                        std::vector<BlockPiece>* pieces = nullptr) const;
+                        BlockPieces* pieces = nullptr) const;
 
   const std::vector<double>& element_areas() const { return elements_->areas(); }
 

@@ -140,7 +140,7 @@ double FacePressureLoads::pressure_at(Point p, std::span<const double> nodal_pre
   const double slack = std::sqrt(area_tolerance_);
   elements_->grid().for_each_overlap(geometry::Box{{p.x - slack, p.y - slack}, {p.x + slack, p.y + slack}}, [&](int e) {
     if (t >= 0 && e > t) return;
-    const auto& [a, b, c] = elements_->corners()[e];
+    const auto [a, b, c] = elements_->corners(e);
     if (mesh::triangle_holds(a, b, c, p, area_tolerance_)) t = e;
   });
   return t < 0 ? pressure_outside_mesh(p, nodal_pressure) : hydro::interpolate_pressure(mesh_, nodal_pressure, t, p);

@@ -5,7 +5,7 @@
 namespace hydrodda::coupling {
 
 std::vector<std::vector<Point>> compute_seepage_forces(std::span<const geometry::Polygon> blocks,
-                                                       std::span<const BlockPiece> pieces,
+                                                       const BlockPieces& pieces,
                                                        std::span<const Point> pressure_gradients,
                                                        std::span<const double> biot) {
   if (biot.size() != blocks.size())

@@ -32,7 +32,7 @@ using geometry::Point;
 // forces[b][v] on vertex v of block b: the seepage force of the pieces of every block
 // (pieces' blocks index `blocks`, their elements `pressure_gradients`), times biot[b].
 std::vector<std::vector<Point>> compute_seepage_forces(std::span<const geometry::Polygon> blocks,
-                                                       std::span<const BlockPiece> pieces,
+                                                       const BlockPieces& pieces,
                                                        std::span<const Point> pressure_gradients,
                                                        std::span<const double> biot);
 

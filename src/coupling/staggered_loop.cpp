@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "coupling/local_aperture.hpp"
 #include "hydro/element_pressure.hpp"
@@ -71,7 +72,6 @@ StaggeredLoop::StaggeredLoop(const mesh::TriangleMesh& mesh, hydro::DarcyProblem
       boundary_gaps_(elements_, settings_.permeability.domain, current_blocks()),
       face_loads_(mesh, elements_),
       anderson_(settings_.anderson_depth) {
-  for (int t = 0; t < mesh.triangle_count(); ++t) centroids_.push_back(mesh::triangle_centroid(mesh, t));
   for (int b = 0; b < mechanics.block_count(); ++b) block_sizes_.push_back(std::sqrt(mechanics.area(b)));
   if (!settings_.fixed_permeability.empty() &&
       settings_.fixed_permeability.size() != static_cast<std::size_t>(mesh.triangle_count()))
@@ -149,18 +149,23 @@ std::vector<Point> StaggeredLoop::block_displacements() const {
 PassReport StaggeredLoop::run_pass() {
   PassReport report;
   report.iteration = ++iteration_;
+  pass_start_.emplace();
+  pass_start_->kept_factor = darcy_.kept_factor();
 
   // Porosity and permeability from the blocks as they are now: recomputed every pass.
   auto start = Clock::now();
   const std::vector<geometry::Polygon> blocks = current_blocks();
-  std::vector<BlockPiece> pieces;  // the blocks over each element, for the seepage force
-  porosity_ = porosity_mapper_.compute(blocks, settings_.permeability.matrix_porosity, seepage_ ? &pieces : nullptr);
+  // The last pass's fields let go first: at a million triangles they are 26 MB beside the
+  // kept flow factor.
+  porosity_ = {};
+  permeability_ = {};
+  porosity_ = porosity_mapper_.compute(blocks, settings_.permeability.matrix_porosity, seepage_ ? &pieces_ : nullptr);
   // A block moved off the domain boundary leaves a strip that is no fracture (boundary_gaps.hpp).
   exclude_boundary_gaps(porosity_, boundary_gaps_.compute_gap_areas(blocks), porosity_mapper_.element_areas(),
                         settings_.permeability.matrix_porosity);
   std::vector<double> apertures;
   if (settings_.permeability.law == PermeabilityLaw::cubic)
-    apertures = compute_local_apertures(centroids_, porosity_.fracture_area, blocks, settings_.permeability.domain,
+    apertures = compute_local_apertures(mesh_, porosity_.fracture_area, blocks, settings_.permeability.domain,
                                         settings_.permeability.aperture_reach);
   permeability_ = settings_.permeability.compute(porosity_, porosity_mapper_.element_areas(), apertures);
   report.porosity_seconds = seconds_since(start);
@@ -174,9 +179,12 @@ PassReport StaggeredLoop::run_pass() {
   // Judged on the fresh (unrelaxed) heads: the relaxed change is ω times this, so a small ω
   // would freeze the heads and fake convergence.
   const double unrelaxed_head_change = previous_heads_.empty() ? 1.0 : head_change(fresh.head, previous_heads_);
+  pass_start_->previous_update = previous_update_;
+  pass_start_->relaxation = relaxation_;
+  if (settings_.acceleration == Acceleration::anderson) pass_start_->anderson_history = anderson_.history();
   relax(fresh);
   report.relaxation = previous_heads_.empty() ? 1.0 : relaxation_;
-  solution_ = std::move(fresh);
+  pass_start_->solution = std::exchange(solution_, std::move(fresh));
   report.flow_seconds = seconds_since(start);
 
   // The P1 pressure field to forces on the blocks as they are now: the faces' share (1 − α)
@@ -188,7 +196,7 @@ PassReport StaggeredLoop::run_pass() {
   std::vector<std::vector<Point>> forces = face_loads_.compute(blocks, solution_.pressure, settings_.biot_coefficients);
   if (seepage_) {
     const std::vector<std::vector<Point>> seepage = compute_seepage_forces(
-        blocks, pieces, hydro::compute_pressure_gradients(mesh_, solution_.pressure), settings_.biot_coefficients);
+        blocks, pieces_, hydro::compute_pressure_gradients(mesh_, solution_.pressure), settings_.biot_coefficients);
     for (std::size_t b = 0; b < forces.size(); ++b)
       for (std::size_t v = 0; v < forces[b].size(); ++v) forces[b][v] += seepage[b][v];
   }
@@ -201,9 +209,12 @@ PassReport StaggeredLoop::run_pass() {
   // Mechanics under the mechanical and fluid loads.
   start = Clock::now();
   for (int s = 0; s < settings_.steps_per_pass; ++s) {
-    if (settings_.stop_requested && settings_.stop_requested())
-      throw PassInterrupted("coupling iteration " + std::to_string(iteration_) + " stopped at DDA step " +
-                            std::to_string(s + 1) + " of " + std::to_string(settings_.steps_per_pass));
+    if (settings_.stop_requested && settings_.stop_requested()) {
+      const std::string where = "coupling iteration " + std::to_string(iteration_) + " stopped at DDA step " +
+                                std::to_string(s + 1) + " of " + std::to_string(settings_.steps_per_pass);
+      abandon_pass();
+      throw PassInterrupted(where);
+    }
     try {
       mechanics_.step();
     } catch (const std::exception& e) {
@@ -247,7 +258,19 @@ PassReport StaggeredLoop::run_pass() {
   for (const dda::ContactInfo& c : mechanics_.contacts())
     report.largest_opening = std::max(report.largest_opening, -c.penetration);
   completed_ = iteration_;
+  pass_start_.reset();
   return report;
+}
+
+void StaggeredLoop::abandon_pass() {
+  PassStart& start = *pass_start_;
+  iteration_ = completed_;
+  solution_ = std::move(start.solution);
+  previous_update_ = std::move(start.previous_update);
+  relaxation_ = start.relaxation;
+  if (settings_.acceleration == Acceleration::anderson) anderson_.restore(std::move(start.anderson_history));
+  darcy_.restore_kept_factor(std::move(start.kept_factor));
+  pass_start_.reset();
 }
 
 }  // namespace hydrodda::coupling

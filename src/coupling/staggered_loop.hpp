@@ -10,6 +10,7 @@
 // With relaxation, heads and pressures are relaxed; the fluxes and boundary flows reported are
 // those of the pass's own solve.
 
+#include <deque>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -136,9 +137,9 @@ struct LoopState {
   // Anderson's history, oldest first: each pass's residual G(x) − x and image G(x), x the heads
   // and pressures the pass started from, G(x) its solve (dda::AndersonAccelerator::Pass).
   std::vector<std::vector<double>> anderson_residuals, anderson_images;
-  // The permeability whose factor the flow solver keeps for the next pass, as tensors (empty:
-  // none).
-  std::vector<hydro::PermeabilityTensor> kept_factor_permeability;
+  // The permeability whose factor the flow solver keeps for the next pass (null: none), shared
+  // with the solver rather than copied.
+  std::shared_ptr<const hydro::PermeabilityField> kept_factor_permeability;
 };
 
 class StaggeredLoop {
@@ -147,7 +148,10 @@ class StaggeredLoop {
   StaggeredLoop(const mesh::TriangleMesh& mesh, hydro::DarcyProblem flow, dda::System& mechanics,
                 LoopSettings settings);
 
-  // One pass; throws on numerical failure (with what failed).
+  // One pass; throws on numerical failure (with what failed). A pass the stop request abandons
+  // (PassInterrupted) first puts back what it had changed of the loop's state: the loop is
+  // then as the last finished pass left it (export_state() gives that state); the DDA system,
+  // which it has stepped, is the caller's to put back.
   PassReport run_pass();
 
   // The state between passes, and its restoration (throws std::invalid_argument when the
@@ -188,6 +192,21 @@ class StaggeredLoop {
   hydro::FlowSolution solve_flow(const std::vector<geometry::Polygon>& blocks);
   void relax(hydro::FlowSolution& fresh);
   void accelerate_by_anderson(hydro::FlowSolution& fresh);
+  // Puts back what the pass under way had changed (PassStart).
+  void abandon_pass();
+
+  // What a pass changes of the loop's state before its mechanics, as it was when the pass
+  // began: given back when the pass is abandoned, let go when it finishes. Held by moving the
+  // old values aside rather than by copying the state: at a million triangles a copy is
+  // tens of megabytes beside the flow factorisation.
+  struct PassStart {
+    hydro::FlowSolution solution;
+    std::vector<double> previous_update;
+    double relaxation = 1.0;
+    std::deque<dda::AndersonAccelerator::Pass> anderson_history;
+    std::shared_ptr<const hydro::PermeabilityField> kept_factor;
+  };
+  std::optional<PassStart> pass_start_;
 
   const mesh::TriangleMesh& mesh_;
   dda::System& mechanics_;
@@ -201,8 +220,10 @@ class StaggeredLoop {
   std::optional<EmbeddedJoints> joints_;
   std::vector<double> joint_apertures_;
   std::vector<hydro::PermeabilityTensor> permeability_tensors_;  // with joints: the last pass's
+  // The blocks over each element, for the seepage force: the last pass's, kept so that each
+  // pass refills the same storage.
+  BlockPieces pieces_;
 
-  std::vector<Point> centroids_;  // of the fixed mesh's elements
   std::vector<double> block_sizes_;  // √(area) of each block as built
   int iteration_ = 0;   // passes started
   int completed_ = 0;   // passes finished

@@ -8,7 +8,7 @@ namespace hydrodda::coupling {
 
 LoopState StaggeredLoop::export_state() const {
   LoopState state{completed_,       solution_,   previous_heads_, heads_two_back_, previous_displacements_, growth_,
-                  previous_update_, relaxation_, {},              {},              darcy_.kept_factor_permeability()};
+                  previous_update_, relaxation_, {},              {},              darcy_.kept_factor()};
   for (const dda::AndersonAccelerator::Pass& pass : anderson_.history()) {
     state.anderson_residuals.emplace_back(pass.residual.begin(), pass.residual.end());
     state.anderson_images.emplace_back(pass.image.begin(), pass.image.end());
@@ -33,12 +33,12 @@ void StaggeredLoop::import_state(LoopState state) {
   bool anderson_fits = state.anderson_residuals.size() == state.anderson_images.size();
   for (std::size_t i = 0; anderson_fits && i < state.anderson_residuals.size(); ++i)
     anderson_fits = state.anderson_residuals[i].size() == 2 * nodes && state.anderson_images[i].size() == 2 * nodes;
-  const std::size_t kept = state.kept_factor_permeability.size();
+  const std::size_t kept = state.kept_factor_permeability ? state.kept_factor_permeability->size() : 0;
   if (!fits || !anderson_fits || (kept != 0 && kept != static_cast<std::size_t>(mesh_.triangle_count())))
     throw std::invalid_argument("coupling state: sizes do not fit the mesh and the blocks");
   // The flow solver's kept factor, made again from its permeability: the next pass's solve
   // then starts from the very factor it had.
-  darcy_.restore_kept_factor(state.kept_factor_permeability);
+  darcy_.restore_kept_factor(std::move(state.kept_factor_permeability));
   iteration_ = completed_ = state.iterations;
   solution_ = std::move(state.flow);
   previous_heads_ = std::move(state.previous_heads);

@@ -23,20 +23,9 @@ constexpr std::array<std::array<int, 2>, 3> kEdgePairs{{{0, 1}, {0, 2}, {1, 2}}}
 // (min, max) of their unknowns.
 constexpr std::array<std::array<int, 2>, 6> kLocalPairs{{{0, 0}, {1, 1}, {2, 2}, {1, 0}, {2, 0}, {2, 1}}};
 
-// Conductivity tensors from permeabilities, checked: K = k ρ_w g / μ.
-std::vector<Conductivity> to_conductivity(std::span<const PermeabilityTensor> k, double factor) {
-  std::vector<Conductivity> out(k.size());
-  for (std::size_t t = 0; t < k.size(); ++t) {
-    const PermeabilityTensor& p = k[t];
-    if (!std::isfinite(p.xx) || !std::isfinite(p.xy) || !std::isfinite(p.yy))
-      throw std::runtime_error("permeability of triangle " + std::to_string(t) + " is not finite");
-    // Positive definite: k_xx > 0 and det > 0.
-    if (!(p.xx > 0.0) || !(p.xx * p.yy - p.xy * p.xy > 0.0))
-      throw std::runtime_error("permeability of triangle " + std::to_string(t) +
-                               " is not positive (definite)");
-    out[t] = {p.xx * factor, p.xy * factor, p.yy * factor};
-  }
-  return out;
+// K = k ρ_w g / μ.
+Conductivity conductivity(const PermeabilityTensor& k, double factor) {
+  return {k.xx * factor, k.xy * factor, k.yy * factor};
 }
 
 }  // namespace
@@ -238,28 +227,32 @@ void DarcySolver::setup_pattern() {
   for (int c = 0; c < n; ++c) outer[c + 1] += outer[c];
   std::fill(matrix_.valuePtr(), matrix_.valuePtr() + keys.size(), 0.0);
 
-  entry_.assign(6 * static_cast<std::size_t>(triangles), -1);
+  // The off-diagonal pairs' positions; a diagonal entry is the last of its column (rows ascend
+  // and none lies below the diagonal), found from the column itself.
+  entry_.assign(3 * static_cast<std::size_t>(triangles), -1);
   for (int t = 0; t < triangles; ++t) {
     const auto& tri = mesh_.triangles[t];
-    for (int p = 0; p < 6; ++p) {
+    for (int p = 3; p < 6; ++p) {
       const int a = unknown_of_node_[tri[kLocalPairs[p][0]]], b = unknown_of_node_[tri[kLocalPairs[p][1]]];
       if (a < 0 || b < 0) continue;
       const int col = std::max(a, b), row = std::min(a, b);
       const int* first = inner + outer[col];
       const int* last = inner + outer[col + 1];
-      entry_[6 * static_cast<std::size_t>(t) + p] = static_cast<int>(std::lower_bound(first, last, row) - inner);
+      entry_[3 * static_cast<std::size_t>(t) + (p - 3)] = static_cast<int>(std::lower_bound(first, last, row) - inner);
     }
   }
   rhs_.resize(n);
   // The symbolic analysis (the fill-reducing ordering: seconds at a million triangles) of a
   // large system runs on a thread of its own, on a copy of the pattern, beside the rest of the
   // model's set-up; the first factorisation waits for it.
-  const auto analyse = [solver = solver_.get(), pattern = matrix_] {
+  // The copy is let go once analysed: a future keeps its function as long as it lives.
+  auto analyse = [solver = solver_.get(), pattern = matrix_]() mutable {
     const auto start = Clock::now();
     solver->analyse(pattern);
+    SparseMatrix().swap(pattern);
     return seconds_since(start);
   };
-  if (n >= kUnknownsWorthAnalysingAside) analysis_ = std::async(std::launch::async, analyse).share();
+  if (n >= kUnknownsWorthAnalysingAside) analysis_ = std::async(std::launch::async, std::move(analyse)).share();
   else if (n > 0) setup_seconds_ += analyse();
 }
 
@@ -267,27 +260,33 @@ double DarcySolver::setup_seconds() const {
   return setup_seconds_ + (analysis_.valid() ? analysis_.get() : 0.0);
 }
 
-void DarcySolver::assemble_system(std::span<const Conductivity> conductivity) {
+void DarcySolver::assemble_system(PermeabilityView permeability) {
   std::fill(matrix_.valuePtr(), matrix_.valuePtr() + matrix_.nonZeros(), 0.0);
   // Right-hand side: f_i = −∫ φ_i q_N ds (a prescribed outflow removes water at i) ...
   for (int u = 0; u < unknown_count(); ++u) rhs_[u] = -neumann_outflow_[free_nodes_[u]];
   double* values = matrix_.valuePtr();
+  const int* outer = matrix_.outerIndexPtr();
   element_coupling_.resize(3 * mesh_.triangles.size());
+  const double factor = problem_.fluid.conductivity_per_permeability();
   for (int t = 0; t < mesh_.triangle_count(); ++t) {
     const auto& tri = mesh_.triangles[t];
     const auto ke = compute_element_matrix(mesh_.nodes[tri[0]], mesh_.nodes[tri[1]],
-                                           mesh_.nodes[tri[2]], conductivity[t]);
+                                           mesh_.nodes[tri[2]], conductivity(permeability[t], factor));
     double* coupling = &element_coupling_[3 * static_cast<std::size_t>(t)];
     for (int p = 0; p < 3; ++p) coupling[p] = ke[kEdgePairs[p][0]][kEdgePairs[p][1]];
-    const int* entry = &entry_[6 * static_cast<std::size_t>(t)];
-    for (int p = 0; p < 6; ++p)
-      if (entry[p] >= 0) values[entry[p]] += ke[kLocalPairs[p][0]][kLocalPairs[p][1]];
+    for (int i = 0; i < 3; ++i) {
+      const int u = unknown_of_node_[tri[i]];
+      if (u >= 0) values[outer[u + 1] - 1] += ke[i][i];
+    }
+    const int* entry = &entry_[3 * static_cast<std::size_t>(t)];
+    for (int p = 3; p < 6; ++p)
+      if (entry[p - 3] >= 0) values[entry[p - 3]] += ke[kLocalPairs[p][0]][kLocalPairs[p][1]];
   }
   // ... minus the fixed heads carried over to the unknowns: f_i −= K_ij h_j, j fixed.
   for (int t : fixed_elements_) {
     const auto& tri = mesh_.triangles[t];
     const auto ke = compute_element_matrix(mesh_.nodes[tri[0]], mesh_.nodes[tri[1]],
-                                           mesh_.nodes[tri[2]], conductivity[t]);
+                                           mesh_.nodes[tri[2]], conductivity(permeability[t], factor));
     for (int i = 0; i < 3; ++i) {
       const int u = unknown_of_node_[tri[i]];
       if (u < 0) continue;
@@ -344,54 +343,22 @@ DarcySolver::Residual DarcySolver::compute_residual(const Eigen::VectorXd& x) co
   return out;
 }
 
-std::vector<Conductivity> DarcySolver::to_isotropic_conductivity(std::span<const double> permeability) const {
+void DarcySolver::check_size(PermeabilityView permeability) const {
   if (permeability.size() != mesh_.triangles.size())
-    throw std::runtime_error("flow: " + std::to_string(permeability.size()) +
-                             " permeabilities for " + std::to_string(mesh_.triangles.size()) +
-                             " triangles");
-  const double factor = problem_.fluid.conductivity_per_permeability();
-  std::vector<Conductivity> k(permeability.size());
-  for (std::size_t t = 0; t < k.size(); ++t) {
-    const double p = permeability[t];
-    if (!std::isfinite(p)) throw std::runtime_error("permeability of triangle " + std::to_string(t) + " is not finite");
-    if (!(p > 0.0)) throw std::runtime_error("permeability of triangle " + std::to_string(t) + " is not positive");
-    k[t] = {p * factor, 0.0, p * factor};
-  }
-  return k;
+    throw std::runtime_error("flow: " + std::to_string(permeability.size()) + " permeabilities for " +
+                             std::to_string(mesh_.triangles.size()) + " triangles");
+  check_permeability(permeability);
 }
 
-namespace {
-
-std::vector<PermeabilityTensor> as_tensors(std::span<const double> permeability) {
-  std::vector<PermeabilityTensor> out(permeability.size());
-  for (std::size_t t = 0; t < out.size(); ++t) out[t] = {permeability[t], 0.0, permeability[t]};
+FlowSolution DarcySolver::solve_and_keep(PermeabilityView permeability) {
+  FlowSolution out = solve_with(permeability);
+  factored_ = kept_ = std::make_shared<const PermeabilityField>(permeability);
   return out;
 }
 
-}  // namespace
-
-std::vector<Conductivity> DarcySolver::to_tensor_conductivity(std::span<const PermeabilityTensor> permeability) const {
-  if (permeability.size() != mesh_.triangles.size())
-    throw std::runtime_error("flow: " + std::to_string(permeability.size()) +
-                             " permeabilities for " + std::to_string(mesh_.triangles.size()) +
-                             " triangles");
-  return to_conductivity(permeability, problem_.fluid.conductivity_per_permeability());
-}
-
-FlowSolution DarcySolver::solve_and_keep(std::span<const Conductivity> conductivity,
-                                         std::span<const PermeabilityTensor> permeability) {
-  FlowSolution out = solve_with(conductivity);
-  kept_permeability_.assign(permeability.begin(), permeability.end());
-  return out;
-}
-
-FlowSolution DarcySolver::solve(std::span<const double> permeability) {
-  const std::vector<Conductivity> conductivity = to_isotropic_conductivity(permeability);
-  return solve_and_keep(conductivity, as_tensors(permeability));
-}
-
-FlowSolution DarcySolver::solve(std::span<const PermeabilityTensor> permeability) {
-  return solve_and_keep(to_tensor_conductivity(permeability), permeability);
+FlowSolution DarcySolver::solve(PermeabilityView permeability) {
+  check_size(permeability);
+  return solve_and_keep(permeability);
 }
 
 void DarcySolver::factorize_system(SolveTimings& timings) {
@@ -426,10 +393,10 @@ Eigen::VectorXd DarcySolver::solve_directly(int& refinement_steps) const {
   return x;
 }
 
-FlowSolution DarcySolver::solve_with(std::span<const Conductivity> conductivity) {
+FlowSolution DarcySolver::solve_with(PermeabilityView permeability) {
   SolveTimings timings;
   auto clock = Clock::now();
-  assemble_system(conductivity);
+  assemble_system(permeability);
   timings.assemble = seconds_since(clock);
 
   Eigen::VectorXd x(unknown_count());
@@ -441,35 +408,23 @@ FlowSolution DarcySolver::solve_with(std::span<const Conductivity> conductivity)
     timings.solve = seconds_since(clock);
   }
   clock = Clock::now();
-  FlowSolution out = make_solution(x, conductivity);
+  FlowSolution out = make_solution(x, permeability);
   timings.postprocess = seconds_since(clock);
   out.timings = timings;
   out.refinement_steps = refinement_steps;
   return out;
 }
 
-FlowSolution DarcySolver::solve_reusing_factor(std::span<const double> permeability,
-                                               std::span<const double> start_heads) {
-  const std::vector<Conductivity> conductivity = to_isotropic_conductivity(permeability);
-  return reuse_factor(conductivity, as_tensors(permeability), start_heads);
-}
-
-FlowSolution DarcySolver::solve_reusing_factor(std::span<const PermeabilityTensor> permeability,
-                                               std::span<const double> start_heads) {
-  return reuse_factor(to_tensor_conductivity(permeability), permeability, start_heads);
-}
-
-FlowSolution DarcySolver::reuse_factor(std::span<const Conductivity> conductivity,
-                                       std::span<const PermeabilityTensor> permeability,
-                                       std::span<const double> start_heads) {
+FlowSolution DarcySolver::solve_reusing_factor(PermeabilityView permeability, std::span<const double> start_heads) {
+  check_size(permeability);
   if (!start_heads.empty() && start_heads.size() != mesh_.nodes.size())
     throw std::invalid_argument("flow: the starting heads must be one per node");
   if (unknown_count() == 0 || bound_iterations(permeability) > kHopelessIterations)
-    return solve_and_keep(conductivity, permeability);
+    return solve_and_keep(permeability);
 
   SolveTimings timings;
   auto clock = Clock::now();
-  assemble_system(conductivity);
+  assemble_system(permeability);
   timings.assemble = seconds_since(clock);
   clock = Clock::now();
   Eigen::VectorXd x = Eigen::VectorXd::Zero(unknown_count());
@@ -491,7 +446,7 @@ FlowSolution DarcySolver::reuse_factor(std::span<const Conductivity> conductivit
     if (!solve_by_conjugate_gradients(x, kMaxIterations - taken, taken)) break;
     timings.solve = seconds_since(clock);
     clock = Clock::now();
-    out = make_solution(x, conductivity);
+    out = make_solution(x, permeability);
     timings.postprocess += seconds_since(clock);
     clock = Clock::now();
     if (out.balance_error <= (round == 0 ? kBalanceTolerance : kBalanceBound)) {
@@ -499,12 +454,14 @@ FlowSolution DarcySolver::reuse_factor(std::span<const Conductivity> conductivit
       out.factorised = false;
       out.cg_iterations = taken;
       // Drifted far enough that CG costs more than it saves: a fresh factor next time.
-      if (taken > kRefactorAfter) kept_permeability_.clear();
+      if (taken > kRefactorAfter) kept_.reset();
       return out;
     }
   }
-  // CG did not get there: factor afresh and solve exactly, as solve() does.
-  out = solve_and_keep(conductivity, permeability);
+  // CG did not get there: factor afresh and solve exactly, as solve() does (its answer let go
+  // first: at a million triangles it is 30 MB beside the factorisation).
+  out = {};
+  out = solve_and_keep(permeability);
   out.timings.assemble += timings.assemble;
   out.cg_iterations = taken;
   return out;
@@ -522,10 +479,10 @@ FlowSolution DarcySolver::reuse_factor(std::span<const Conductivity> conductivit
 // 2 · #outside + log(ε/2) / log((c − 1)/(c + 1)) iterations to cut the error by ε (Saad,
 // Iterative Methods, §6.11.3, with the outlying eigenvalues removed first; Axelsson and
 // Lindskog, Numer. Math. 48, 1986). The least over a ladder of c, with ε = kHeadTolerance.
-int DarcySolver::bound_iterations(std::span<const PermeabilityTensor> permeability) const {
+int DarcySolver::bound_iterations(PermeabilityView permeability) const {
   constexpr std::array<double, 8> kSpreads{1.001, 1.003, 1.01, 1.03, 1.1, 1.3, 2.0, 10.0};
   constexpr int kNone = std::numeric_limits<int>::max();
-  if (kept_permeability_.size() != permeability.size()) return kNone;
+  if (!kept_ || kept_->size() != permeability.size()) return kNone;
   const auto spread_of = [](const PermeabilityTensor& k, const PermeabilityTensor& k0) {
     double lo = 0.0, hi = 0.0;
     if (k.xy == 0.0 && k0.xy == 0.0) {  // diagonal pencil: exact ratios
@@ -542,8 +499,9 @@ int DarcySolver::bound_iterations(std::span<const PermeabilityTensor> permeabili
     return std::max(hi, 1.0 / lo);
   };
   std::array<long, kSpreads.size()> outside{};
+  const PermeabilityView kept = kept_->view();
   for (std::size_t e = 0; e < permeability.size(); ++e) {
-    const double spread = spread_of(permeability[e], kept_permeability_[e]);
+    const double spread = spread_of(permeability[e], kept[e]);
     for (std::size_t i = 0; i < kSpreads.size() && !(spread <= kSpreads[i]); ++i) ++outside[i];
   }
   long best = kNone;
@@ -556,14 +514,20 @@ int DarcySolver::bound_iterations(std::span<const PermeabilityTensor> permeabili
 }
 
 void DarcySolver::restore_kept_factor(std::span<const PermeabilityTensor> permeability) {
-  if (permeability.empty()) {
-    kept_permeability_.clear();
+  restore_kept_factor(permeability.empty() ? nullptr : std::make_shared<const PermeabilityField>(permeability));
+}
+
+void DarcySolver::restore_kept_factor(std::shared_ptr<const PermeabilityField> kept) {
+  // The factor solver_ holds is already this one's: nothing to factor.
+  if (!kept || kept == factored_) {
+    kept_ = std::move(kept);
     return;
   }
-  assemble_system(to_tensor_conductivity(permeability));
+  check_size(kept->view());
+  assemble_system(kept->view());
   SolveTimings timings;
   if (unknown_count() > 0) factorize_system(timings);
-  kept_permeability_.assign(permeability.begin(), permeability.end());
+  factored_ = kept_ = std::move(kept);
 }
 
 // Pseudocode (Saad, alg. 9.1), M the kept factor: r = f − A x; z = M⁻¹ r; p = z;
@@ -624,7 +588,7 @@ bool DarcySolver::solve_by_conjugate_gradients(Eigen::VectorXd& x, int budget, i
   return false;
 }
 
-FlowSolution DarcySolver::make_solution(const Eigen::VectorXd& x, std::span<const Conductivity> conductivity) const {
+FlowSolution DarcySolver::make_solution(const Eigen::VectorXd& x, PermeabilityView permeability) const {
   FlowSolution out;
   const int node_count = mesh_.node_count();
   out.reference_head = reference_head_;
@@ -638,12 +602,13 @@ FlowSolution DarcySolver::make_solution(const Eigen::VectorXd& x, std::span<cons
                           ? rho_g * (out.head[v] - reference_head_)   // p = ρg (h − h_ref)
                           : rho_g * (out.head[v] - mesh_.nodes[v].y); // p = ρg (h − z)
   out.flux.resize(mesh_.triangles.size());
+  const double factor = problem_.fluid.conductivity_per_permeability();
   for (int t = 0; t < mesh_.triangle_count(); ++t) {
     const auto& tri = mesh_.triangles[t];
     const auto g = compute_shape_gradients(mesh_.nodes[tri[0]], mesh_.nodes[tri[1]], mesh_.nodes[tri[2]]);
     // ∇h = Σ h_i ∇φ_i;  q = −K ∇h
     const geometry::Point grad = out.head[tri[0]] * g[0] + out.head[tri[1]] * g[1] + out.head[tri[2]] * g[2];
-    const Conductivity& k = conductivity[t];
+    const Conductivity k = conductivity(permeability[t], factor);
     out.flux[t] = {-(k.xx * grad.x + k.xy * grad.y), -(k.xy * grad.x + k.yy * grad.y)};
   }
   compute_boundary_flows(out);

@@ -19,6 +19,7 @@
 #include "hydro/fluid.hpp"
 #include "hydro/linear_solver.hpp"
 #include "hydro/p1_element.hpp"
+#include "hydro/permeability_field.hpp"
 #include "mesh/triangle_mesh.hpp"
 
 namespace hydrodda::hydro {
@@ -37,10 +38,8 @@ class DarcySolver {
   DarcySolver(const mesh::TriangleMesh& mesh, DarcyProblem problem,
               std::unique_ptr<LinearSolver> solver = make_cholmod_solver());
 
-  // Solves with an isotropic intrinsic permeability k (m²) per triangle.
-  FlowSolution solve(std::span<const double> permeability);
-  // Solves with a permeability tensor (m²) per triangle.
-  FlowSolution solve(std::span<const PermeabilityTensor> permeability);
+  // Solves with an intrinsic permeability (m²) per triangle: isotropic scalars or tensors.
+  FlowSolution solve(PermeabilityView permeability);
 
   // New values for the same conditions (the same boundaries, kinds and order), e.g. a head
   // raised between coupling passes: the fixed nodes stay, so the pattern and its analysis are
@@ -60,9 +59,7 @@ class DarcySolver {
   // factor's that CG could need more than kHopelessIterations (bound_iterations); when CG has
   // not got there in kMaxIterations (or will not, at the rate it goes); and at the solve
   // after one that needed more than kRefactorAfter iterations.
-  FlowSolution solve_reusing_factor(std::span<const double> permeability, std::span<const double> start_heads);
-  FlowSolution solve_reusing_factor(std::span<const PermeabilityTensor> permeability,
-                                    std::span<const double> start_heads);
+  FlowSolution solve_reusing_factor(PermeabilityView permeability, std::span<const double> start_heads);
   static constexpr double kHeadTolerance = 1e-13;
   static constexpr double kBalanceTolerance = 1e-12;
   static constexpr double kBalanceBound = 1e-10;  // the mass balance every solve meets
@@ -73,14 +70,19 @@ class DarcySolver {
   // A bound on the CG iterations solve_reusing_factor() would need with the kept factor, in
   // exact arithmetic, from how far each element's permeability is from the kept one (see
   // the .cpp); a large number when no factor is kept.
-  int bound_iterations(std::span<const PermeabilityTensor> permeability) const;
+  int bound_iterations(PermeabilityView permeability) const;
 
   // The permeability whose factor solve_reusing_factor() would use next, as tensors (an
   // isotropic k as {k, 0, k}; empty: it will factor afresh). A checkpoint holds it;
   // restore_kept_factor() factors it again, so that a resumed run goes on with the very
   // factor, bit for bit, of the run it continues.
-  const std::vector<PermeabilityTensor>& kept_factor_permeability() const { return kept_permeability_; }
+  std::vector<PermeabilityTensor> kept_factor_permeability() const { return kept_ ? kept_->tensors() : std::vector<PermeabilityTensor>{}; }
   void restore_kept_factor(std::span<const PermeabilityTensor> permeability);
+  // The same, shared rather than copied (null: none): a coupling pass holds the one it
+  // started with and gives it back when it is abandoned, which factors it again only when
+  // another has been factored since.
+  std::shared_ptr<const PermeabilityField> kept_factor() const { return kept_; }
+  void restore_kept_factor(std::shared_ptr<const PermeabilityField> kept);
 
   int unknown_count() const { return static_cast<int>(free_nodes_.size()); }
   long long stored_nonzeros() const { return matrix_.nonZeros(); }
@@ -93,7 +95,7 @@ class DarcySolver {
   void setup_boundary_conditions();
   void check_every_part_is_fixed() const;
   void setup_pattern();
-  void assemble_system(std::span<const Conductivity> conductivity);
+  void assemble_system(PermeabilityView permeability);
   struct Residual {
     Eigen::VectorXd r;  // f − A x over the unknowns
     double balance;     // the relative mass-balance error it implies
@@ -103,14 +105,11 @@ class DarcySolver {
   Residual compute_residual(const Eigen::VectorXd& x) const;
   std::vector<long double> compute_a_times_h(const std::vector<double>& h) const;
   std::vector<double> expand_heads(const Eigen::VectorXd& x) const;
-  std::vector<Conductivity> to_isotropic_conductivity(std::span<const double> permeability) const;
-  std::vector<Conductivity> to_tensor_conductivity(std::span<const PermeabilityTensor> permeability) const;
-  FlowSolution solve_with(std::span<const Conductivity> conductivity);
+  // One permeability per triangle, each finite and positive definite (std::runtime_error).
+  void check_size(PermeabilityView permeability) const;
+  FlowSolution solve_with(PermeabilityView permeability);
   // solve_with(), keeping `permeability` as the factor's for the next solve_reusing_factor().
-  FlowSolution solve_and_keep(std::span<const Conductivity> conductivity,
-                              std::span<const PermeabilityTensor> permeability);
-  FlowSolution reuse_factor(std::span<const Conductivity> conductivity,
-                            std::span<const PermeabilityTensor> permeability, std::span<const double> start_heads);
+  FlowSolution solve_and_keep(PermeabilityView permeability);
   // Factorises the assembled matrix (SingularSystem, with a hint, when it cannot).
   void factorize_system(SolveTimings& timings);
   // x = A⁻¹ f with the fresh factor, refined in extended precision (see solve_with).
@@ -118,7 +117,7 @@ class DarcySolver {
   // PCG with the kept factor from x (updated in place), `iterations` added to; false when it
   // gave up (x is then to be discarded).
   bool solve_by_conjugate_gradients(Eigen::VectorXd& x, int budget, int& iterations) const;
-  FlowSolution make_solution(const Eigen::VectorXd& x, std::span<const Conductivity> conductivity) const;
+  FlowSolution make_solution(const Eigen::VectorXd& x, PermeabilityView permeability) const;
   void compute_boundary_flows(FlowSolution& out) const;
   // The flow out through each mesh boundary, from A h (compute_a_times_h).
   std::vector<double> boundary_totals(const std::vector<long double>& a_times_h) const;
@@ -141,7 +140,7 @@ class DarcySolver {
   std::vector<int> unknown_of_node_;      // per node: index of its unknown, −1 if fixed
   std::vector<int> free_nodes_;           // per unknown: its node
   std::vector<double> neumann_outflow_;   // per node: ∫ φ_i q_N over flux edges (m²/s)
-  std::vector<int> entry_;                // per triangle, 6 value positions (−1: none)
+  std::vector<int> entry_;                // per triangle, its 3 off-diagonal value positions (−1: none)
   std::vector<int> fixed_elements_;       // triangles with at least one fixed node
   struct FixedShare {                     // part of a fixed node's reaction owed to a boundary
     int node;
@@ -153,7 +152,9 @@ class DarcySolver {
   std::vector<double> element_coupling_;  // per triangle, K_e(0,1), K_e(0,2), K_e(1,2)
   SparseMatrix matrix_;                   // upper triangle over the unknowns
   Eigen::VectorXd rhs_;
-  std::vector<PermeabilityTensor> kept_permeability_;  // whose factor solver_ holds, for reuse (empty: none)
+  // The permeability whose factor solver_ holds, and the one offered for reuse: the same, or
+  // null when the next solve is to factor afresh.
+  std::shared_ptr<const PermeabilityField> factored_, kept_;
 };
 
 }  // namespace hydrodda::hydro

@@ -1,7 +1,9 @@
 #include "output/checkpoint.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <functional>
+#include <memory>
 #include <span>
 #include <type_traits>
 #include <utility>
@@ -63,6 +65,22 @@ class Writer {
     put(k.xy);
     put(k.yy);
   }
+  // Written as the list of tensors it stands for (an isotropic k as {k, 0, k}; none: empty),
+  // a few thousand at a time rather than copied whole.
+  void put(const std::shared_ptr<const hydro::PermeabilityField>& field) {
+    const std::size_t n = field ? field->size() : 0;
+    put(static_cast<std::int64_t>(n));
+    std::vector<hydro::PermeabilityTensor> chunk;
+    for (std::size_t first = 0; first < n; first += kTensorsAtATime) {
+      chunk.clear();
+      for (std::size_t e = first; e < std::min(n, first + kTensorsAtATime); ++e) chunk.push_back(field->view()[e]);
+      if constexpr (kStoredAsInMemory<hydro::PermeabilityTensor>) {
+        append({reinterpret_cast<const char*>(chunk.data()), chunk.size() * sizeof(hydro::PermeabilityTensor)});
+      } else {
+        for (const hydro::PermeabilityTensor& k : chunk) put(k);
+      }
+    }
+  }
   template <class T, std::size_t N>
   void put(const std::array<T, N>& a) {
     for (const T& v : a) put(v);
@@ -87,6 +105,7 @@ class Writer {
 
  private:
   static constexpr std::size_t kPiece = std::size_t{1} << 20;
+  static constexpr std::size_t kTensorsAtATime = 4096;
   // Types whose put() writes exactly their bytes in memory (8-byte numbers, no padding), so a
   // list of them is written in one piece.
   template <class T>
@@ -397,7 +416,9 @@ RunCheckpoint decode_checkpoint(std::string_view file) {
   r.get(c.coupling.relaxation);
   r.get(c.coupling.anderson_residuals);
   r.get(c.coupling.anderson_images);
-  r.get(c.coupling.kept_factor_permeability);
+  std::vector<hydro::PermeabilityTensor> kept;
+  r.get(kept);
+  if (!kept.empty()) c.coupling.kept_factor_permeability = std::make_shared<const hydro::PermeabilityField>(kept);
   r.expect_end();
   return c;
 }

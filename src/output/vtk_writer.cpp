@@ -157,9 +157,14 @@ void write_file(const std::filesystem::path& path, std::size_t point_count, std:
   std::vector<std::span<const std::byte>> batch;
   std::size_t batch_bytes = 0;
   const auto flush = [&] {
-    for (const std::string& encoded : compress_zlib_blocks(batch, level)) {
-      file.write(encoded);
-      sizes.push_back(encoded.size());
+    std::vector<ZlibEncoding> encoded = compress_zlib_blocks(batch, level);
+    for (ZlibEncoding& array : encoded) {
+      sizes.push_back(array.size());
+      file.write(array.header);
+      for (std::string& block : array.blocks) {
+        file.write(block);
+        std::string().swap(block);  // let go as written
+      }
     }
     batch.clear();
     made.clear();

@@ -62,7 +62,21 @@ std::size_t block_count(std::size_t bytes) { return (bytes + zlib_block_size - 1
 
 }  // namespace
 
-std::vector<std::string> compress_zlib_blocks(std::span<const std::span<const std::byte>> arrays, int level) {
+std::size_t ZlibEncoding::size() const {
+  std::size_t n = header.size();
+  for (const std::string& b : blocks) n += b.size();
+  return n;
+}
+
+std::string ZlibEncoding::joined() const {
+  std::string out;
+  out.reserve(size());
+  out += header;
+  for (const std::string& b : blocks) out += b;
+  return out;
+}
+
+std::vector<ZlibEncoding> compress_zlib_blocks(std::span<const std::span<const std::byte>> arrays, int level) {
   if (level < 0 || level > 9) {
     throw std::invalid_argument(fmt::format("zlib compression level {}: need 0 to 9", level));
   }
@@ -96,18 +110,18 @@ std::vector<std::string> compress_zlib_blocks(std::span<const std::span<const st
   }
   if (failure) std::rethrow_exception(failure);
 
-  std::vector<std::string> encoded(arrays.size());
+  std::vector<ZlibEncoding> encoded(arrays.size());
   std::size_t next = 0;  // blocks are in array order
   for (std::size_t a = 0; a < arrays.size(); ++a) {
     const std::size_t own = block_count(arrays[a].size());
-    std::string& out = encoded[a];
-    out.resize((3 + own) * word);
-    put_word(out, 0, own);
-    put_word(out, word, zlib_block_size);
-    put_word(out, 2 * word, arrays[a].size() % zlib_block_size);
+    std::string& header = encoded[a].header;
+    header.resize((3 + own) * word);
+    put_word(header, 0, own);
+    put_word(header, word, zlib_block_size);
+    put_word(header, 2 * word, arrays[a].size() % zlib_block_size);
     for (std::size_t b = 0; b < own; ++b) {
-      put_word(out, (3 + b) * word, compressed[next + b].size());
-      out += compressed[next + b];
+      put_word(header, (3 + b) * word, compressed[next + b].size());
+      encoded[a].blocks.push_back(std::move(compressed[next + b]));
     }
     next += own;
   }

@@ -18,12 +18,21 @@ namespace hydrodda::output {
 // VTK's default block size, so the files are laid out as ParaView's own.
 inline constexpr std::size_t zlib_block_size = 32768;
 
-// Each array's encoding (header, then its blocks). `level` is zlib's, 0 (stored, no
+// One array's encoding: its header, then its compressed blocks, kept apart so that a writer
+// can write them one after another (joining them would hold the encoding twice).
+struct ZlibEncoding {
+  std::string header;
+  std::vector<std::string> blocks;
+  std::size_t size() const;
+  std::string joined() const;  // header and blocks in one string
+};
+
+// Each array's encoding. `level` is zlib's, 0 (stored, no
 // compression) to 9 (smallest); throws std::invalid_argument outside that range and
 // std::runtime_error if zlib fails. The blocks of all the arrays are shared among the OpenMP
 // threads: a file's arrays are many and small (a contact file of the 1,601-block wall: nine
 // of 9–450 kB), so sharing arrays instead would leave a thread idle.
-std::vector<std::string> compress_zlib_blocks(std::span<const std::span<const std::byte>> arrays, int level);
+std::vector<ZlibEncoding> compress_zlib_blocks(std::span<const std::span<const std::byte>> arrays, int level);
 
 // The inverse for one array, for tests and tools: the bytes of the encoding that starts at
 // `data` (header first); `consumed` is set to the number of bytes it took. Throws

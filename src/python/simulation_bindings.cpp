@@ -130,7 +130,7 @@ class Simulation {
         meter_->measure(polygons, blocks.penetration_tolerance(), blocks.contacts(), *joint_law_);
     if (const auto* coupled = std::get_if<Coupled>(&model_); coupled && (*coupled)->loop().has_flow()) {
       if (!flow_zones_) flow_zones_ = meter_->flow_zones((*coupled)->mesh());
-      meter_->add_flow(state, *flow_zones_, (*coupled)->loop().flow());
+      meter_->add_flow(state, *flow_zones_, (*coupled)->mesh(), (*coupled)->loop().flow());
     }
     return fracture_fields(state);
   }

@@ -52,7 +52,7 @@ CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::option
   loop_.emplace(mesh_, build_flow_problem(*s.flow), *system_, std::move(settings));
   // The unfractured case does not change between passes: solved once.
   region_references_ = reference_regions(s, mesh_);
-  last_pass_ = {system_->export_state(), loop_->export_state()};
+  last_mechanics_ = system_->export_state();
 }
 
 coupling::PassReport CoupledModel::run_pass() {
@@ -61,17 +61,17 @@ coupling::PassReport CoupledModel::run_pass() {
     r = loop_->run_pass();
   } catch (const coupling::PassInterrupted&) {
     // Back to the last finished pass, the state a run folder and its checkpoint hold (before
-    // the first pass: the blocks as built), so that a summary describes it.
-    system_->import_state(last_pass_.mechanics);
-    if (loop_->iterations() > 0) loop_->import_state(last_pass_.coupling);
+    // the first pass: the blocks as built), so that a summary describes it. The loop has put
+    // its own state back.
+    system_->import_state(last_mechanics_);
     throw;
   }
   porosity_seconds_ += r.porosity_seconds;
   flow_seconds_ += r.flow_seconds;
   forces_seconds_ += r.forces_seconds;
   mechanics_seconds_ += r.mechanics_seconds;
-  last_pass_ = {system_->export_state(), loop_->export_state()};
-  system_->import_state(last_pass_.mechanics);
+  last_mechanics_ = system_->export_state();
+  system_->import_state(last_mechanics_);
   return r;
 }
 
@@ -93,7 +93,7 @@ void CoupledModel::set_tractions(std::vector<scenario::Traction> tractions) {
 void CoupledModel::import_state(const CoupledState& state) {
   system_->import_state(state.mechanics);
   loop_->import_state(state.coupling);
-  last_pass_ = state;
+  last_mechanics_ = state.mechanics;
 }
 
 std::vector<geometry::Polygon> CoupledModel::block_polygons() const {
@@ -106,8 +106,9 @@ output::RunSummary CoupledModel::summary() const {
   output::RunSummary summary = summarise_mechanics(scenario_, *system_);
   if (loop_->has_flow()) {
     summary.flow = summarise_flow(scenario_, mesh_, loop_->flow(), region_references_,
-                                  loop_->permeability_tensors().empty() ? isotropic_tensors(loop_->permeability())
-                                                                        : loop_->permeability_tensors());
+                                  loop_->permeability_tensors().empty()
+                                      ? hydro::PermeabilityView(loop_->permeability())
+                                      : hydro::PermeabilityView(loop_->permeability_tensors()));
     const coupling::MeshExcursion outside = loop_->outside_mesh();
     summary.outside_mesh = output::OutsideMeshSummary{outside.distance, outside.block, outside.blocks_outside};
   }

@@ -59,7 +59,7 @@ class CoupledModel {
   // The state after the last finished pass (as built before the first), and its restoration
   // into a model built from the same scenario (continuing a run); throws std::invalid_argument
   // when it does not fit.
-  const CoupledState& export_state() const { return last_pass_; }
+  CoupledState export_state() const { return {last_mechanics_, loop_->export_state()}; }
   void import_state(const CoupledState& state);
 
   int iterations() const { return loop_->iterations(); }
@@ -90,7 +90,9 @@ class CoupledModel {
   // new boundary values.
   std::vector<RegionReference> region_references_;
   std::function<bool()> stop_requested_;
-  CoupledState last_pass_;
+  // The DDA system after the last finished pass (as built before the first): what an
+  // abandoned pass puts back, and what every pass's system continues from.
+  dda::SystemState last_mechanics_;
 };
 
 }  // namespace hydrodda::run

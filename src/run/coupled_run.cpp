@@ -128,7 +128,7 @@ output::RunSummary run_coupled(const RunContext& context) {
   const TellModelAtEnd tell_model_at_end(context.callbacks, model, fracture_state);
   const auto measure_fractures = [&] {
     fracture_state = meter->measure(model.block_polygons(), system.penetration_tolerance(), system.contacts(), joint_law);
-    meter->add_flow(*fracture_state, flow_zones, loop.flow());
+    meter->add_flow(*fracture_state, flow_zones, mesh, loop.flow());
   };
   if (context.resume) {
     const output::RunCheckpoint& saved = *context.resume;
@@ -167,7 +167,7 @@ output::RunSummary run_coupled(const RunContext& context) {
   // (CoupledModel::run_pass), which a resumed run continues from too.
   const auto save_checkpoint = [&] {
     checkpoint.converged = converged;
-    const CoupledState& state = model.export_state();  // encoded where it is, not copied
+    const CoupledState state = model.export_state();
     context.folder.write_with("checkpoint.bin", [&](output::AtomicFile& file) {
       output::write_checkpoint(file, checkpoint, state.mechanics, state.coupling);
     });

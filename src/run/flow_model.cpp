@@ -95,7 +95,7 @@ output::RunSummary FlowModel::summary() const {
   summary.title = scenario_.title;
   summary.scenario = scenario_.file.string();
   summary.flow = summarise_flow(scenario_, mesh_, solution_, reference_regions(scenario_, mesh_),
-                                isotropic_tensors(permeability_));
+                                hydro::PermeabilityView(permeability_));
   return summary;
 }
 

@@ -163,7 +163,6 @@ FractureState FractureMeter::measure(std::span<const geometry::Polygon> blocks, 
 FractureMeter::FlowZones FractureMeter::flow_zones(const mesh::TriangleMesh& mesh) const {
   FlowZones zones;
   zones.fracture.assign(static_cast<std::size_t>(mesh.triangle_count()), -1);
-  zones.area.resize(static_cast<std::size_t>(mesh.triangle_count()));
   std::vector<geometry::Box> boxes;
   double total_length = 0.0;
   for (const Face& face : faces_) {
@@ -178,7 +177,6 @@ FractureMeter::FlowZones FractureMeter::flow_zones(const mesh::TriangleMesh& mes
   // Each element on its own (the grid's queries keep no state): the halves on two threads.
   dda::for_each_in_halves(mesh.triangle_count() >= 20000, mesh.triangles.size(), [&](std::size_t element) {
     const int t = static_cast<int>(element);
-    zones.area[t] = mesh::triangle_area(mesh, t);
     const Point c = mesh::triangle_centroid(mesh, t);
     // The distance to the face's line where c projects onto the face, else none.
     const int nearest = grid.nearest(c, first_reach, [&](int k) {
@@ -194,7 +192,8 @@ FractureMeter::FlowZones FractureMeter::flow_zones(const mesh::TriangleMesh& mes
   return zones;
 }
 
-void FractureMeter::add_flow(FractureState& state, const FlowZones& zones, const hydro::FlowSolution& flow) const {
+void FractureMeter::add_flow(FractureState& state, const FlowZones& zones, const mesh::TriangleMesh& mesh,
+                             const hydro::FlowSolution& flow) const {
   if (flow.flux.size() != zones.fracture.size())
     throw std::invalid_argument("fracture results: the flow solution does not fit the mesh");
   std::vector<double> integral(layout_.traces.size(), 0.0);  // Σ (q_e · t_f) A_e
@@ -205,7 +204,7 @@ void FractureMeter::add_flow(FractureState& state, const FlowZones& zones, const
   }
   for (std::size_t t = 0; t < zones.fracture.size(); ++t) {
     const int f = zones.fracture[t];
-    if (f >= 0) integral[f] += geometry::dot(flow.flux[t], direction[f]) * zones.area[t];
+    if (f >= 0) integral[f] += geometry::dot(flow.flux[t], direction[f]) * mesh::triangle_area(mesh, static_cast<int>(t));
   }
   for (FractureResult& r : state.fractures)
     r.flow = r.length > 0.0 ? integral[r.id] / r.length : 0.0;

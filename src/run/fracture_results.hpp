@@ -97,10 +97,11 @@ class FractureMeter {
   // (flow_zones) and each pass only sums the fluxes (add_flow).
   struct FlowZones {
     std::vector<int> fracture;  // per element: the f with e ∈ Z_f, or -1
-    std::vector<double> area;   // per element: A_e
   };
   FlowZones flow_zones(const mesh::TriangleMesh& mesh) const;
-  void add_flow(FractureState& state, const FlowZones& zones, const hydro::FlowSolution& flow) const;
+  // `mesh`: the one the zones were found on.
+  void add_flow(FractureState& state, const FlowZones& zones, const mesh::TriangleMesh& mesh,
+                const hydro::FlowSolution& flow) const;
 
   const FractureLayout& layout() const { return layout_; }
 

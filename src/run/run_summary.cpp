@@ -50,13 +50,6 @@ output::RunSummary summarise_mechanics(const scenario::Scenario& s, const dda::S
   return summary;
 }
 
-std::vector<hydro::PermeabilityTensor> isotropic_tensors(std::span<const double> permeability) {
-  std::vector<hydro::PermeabilityTensor> tensors;
-  tensors.reserve(permeability.size());
-  for (double k : permeability) tensors.push_back({k, 0.0, k});
-  return tensors;
-}
-
 std::vector<RegionReference> reference_regions(const scenario::Scenario& s, const mesh::TriangleMesh& mesh) {
   std::vector<RegionReference> references;
   if (s.flow->regions.empty()) return references;
@@ -81,12 +74,21 @@ std::vector<std::optional<output::RegionSummary>> summarise_regions(const scenar
                                                                   const mesh::TriangleMesh& mesh,
                                                                   const hydro::FlowSolution& solution,
                                                                   std::span<const RegionReference> references,
-                                                                  std::span<const hydro::PermeabilityTensor> permeability) {
+                                                                  hydro::PermeabilityView permeability) {
   std::vector<std::optional<output::RegionSummary>> regions;
+  // The conductivity of every element, made only when some region needs its tensor.
   std::vector<hydro::Conductivity> conductivity;
-  const double per_permeability = build_flow_problem(*s.flow).fluid.conductivity_per_permeability();
-  for (const hydro::PermeabilityTensor& k : permeability)
-    conductivity.push_back({k.xx * per_permeability, k.xy * per_permeability, k.yy * per_permeability});
+  const bool tensors_wanted =
+      permeability.size() > 0 &&
+      std::any_of(references.begin(), references.end(), [](const RegionReference& r) { return !r.triangles.empty(); });
+  if (tensors_wanted) {
+    const double per_permeability = build_flow_problem(*s.flow).fluid.conductivity_per_permeability();
+    conductivity.resize(permeability.size());
+    for (std::size_t e = 0; e < conductivity.size(); ++e) {
+      const hydro::PermeabilityTensor k = permeability[e];
+      conductivity[e] = {k.xx * per_permeability, k.xy * per_permeability, k.yy * per_permeability};
+    }
+  }
   for (std::size_t i = 0; i < references.size(); ++i) {
     const RegionReference& reference = references[i];
     if (reference.triangles.empty()) {
@@ -111,7 +113,7 @@ std::vector<std::optional<output::RegionSummary>> summarise_regions(const scenar
 
 output::FlowSummary summarise_flow(const scenario::Scenario& s, const mesh::TriangleMesh& mesh,
                                    const hydro::FlowSolution& solution, std::span<const RegionReference> references,
-                                   std::span<const hydro::PermeabilityTensor> permeability) {
+                                   hydro::PermeabilityView permeability) {
   output::FlowSummary flow;
   for (const hydro::BoundaryFlow& b : solution.boundary_flows) flow.boundaries.push_back({b.name, b.flow});
   flow.balance = solution.balance_error;

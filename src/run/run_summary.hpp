@@ -9,6 +9,7 @@
 #include "dda/system.hpp"
 #include "hydro/flow_solution.hpp"
 #include "hydro/fluid.hpp"
+#include "hydro/permeability_field.hpp"
 #include "mesh/triangle_mesh.hpp"
 #include "output/summary.hpp"
 #include "scenario/scenario.hpp"
@@ -41,19 +42,16 @@ std::vector<RegionReference> reference_regions(const scenario::Scenario& scenari
 
 // Each [[flow.region]]'s flow and effective conductivity along its imposed gradient, with its
 // conductivity in the unfractured case and their ratio, and its full effective tensor from the
-// element permeability tensors (m², one per triangle; none when empty), in the scenario's
+// element permeabilities (m², one per triangle, isotropic or tensors; none when empty), in the scenario's
 // order; none for a region that holds no element.
 std::vector<std::optional<output::RegionSummary>> summarise_regions(const scenario::Scenario& scenario,
                                                                   const mesh::TriangleMesh& mesh,
                                                                   const hydro::FlowSolution& solution,
                                                                   std::span<const RegionReference> references,
-                                                                  std::span<const hydro::PermeabilityTensor> permeability);
+                                                                  hydro::PermeabilityView permeability);
 
 output::FlowSummary summarise_flow(const scenario::Scenario& scenario, const mesh::TriangleMesh& mesh,
                                    const hydro::FlowSolution& solution, std::span<const RegionReference> references,
-                                   std::span<const hydro::PermeabilityTensor> permeability);
-
-// Isotropic permeabilities (m²) as tensors k I.
-std::vector<hydro::PermeabilityTensor> isotropic_tensors(std::span<const double> permeability);
+                                   hydro::PermeabilityView permeability);
 
 }  // namespace hydrodda::run

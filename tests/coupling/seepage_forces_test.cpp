@@ -32,7 +32,7 @@ const std::vector<Polygon> kBlocks{
 // The fluid forces of the coupling loop for every block at one α: faces and seepage.
 std::vector<std::vector<Point>> fluid_forces(const mesh::TriangleMesh& mesh, const std::vector<double>& p, double alpha) {
   const std::vector<double> biot(kBlocks.size(), alpha);
-  std::vector<BlockPiece> pieces;
+  BlockPieces pieces;
   PorosityMapper(mesh.nodes, mesh.triangles).compute(kBlocks, 0.0, &pieces);
   auto forces = FacePressureLoads(mesh).compute(kBlocks, p, biot);
   const auto seepage = compute_seepage_forces(kBlocks, pieces, hydro::compute_pressure_gradients(mesh, p), biot);
@@ -85,7 +85,7 @@ TEST(SeepageForces, StrainLoadDiffersByAlphaTimesTheIntegralOfPressure) {
   const auto mesh = testing::make_rectangle_mesh(0.0, 0.0, 2.0, 2.0, 31, 27);
   std::vector<double> p;
   for (Point n : mesh.nodes) p.push_back(wavy_pressure(n));
-  std::vector<BlockPiece> pieces;
+  BlockPieces pieces;
   PorosityMapper(mesh.nodes, mesh.triangles).compute(kBlocks, 0.0, &pieces);
   std::vector<double> integral(kBlocks.size(), 0.0);
   for (const BlockPiece& piece : pieces)

@@ -36,7 +36,7 @@ std::span<const std::byte> as_bytes(const std::string& s) { return std::as_bytes
 
 std::string encode(std::span<const std::byte> bytes, int level) {
   const std::vector<std::span<const std::byte>> arrays{bytes};
-  return compress_zlib_blocks(arrays, level).at(0);
+  return compress_zlib_blocks(arrays, level).at(0).joined();
 }
 
 TEST(ZlibBlocks, HeaderAndRoundTripAroundTheBlockSize) {
@@ -67,12 +67,12 @@ TEST(ZlibBlocks, ManyArraysAtOnceAsEachAlone) {
     inputs.push_back(sample(size) + std::to_string(size));
   std::vector<std::span<const std::byte>> arrays;
   for (const std::string& input : inputs) arrays.push_back(as_bytes(input));
-  const std::vector<std::string> together = compress_zlib_blocks(arrays, 1);
+  const std::vector<ZlibEncoding> together = compress_zlib_blocks(arrays, 1);
   ASSERT_EQ(together.size(), inputs.size());
   for (std::size_t a = 0; a < inputs.size(); ++a) {
-    EXPECT_EQ(together[a], encode(arrays[a], 1)) << "array " << a;
+    EXPECT_EQ(together[a].joined(), encode(arrays[a], 1)) << "array " << a;
     std::size_t consumed = 0;
-    EXPECT_EQ(inflate_zlib_blocks(as_bytes(together[a]), consumed), inputs[a]) << "array " << a;
+    EXPECT_EQ(inflate_zlib_blocks(as_bytes(together[a].joined()), consumed), inputs[a]) << "array " << a;
   }
 }
 

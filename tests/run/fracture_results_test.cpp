@@ -154,7 +154,6 @@ TEST(FractureResults, FlowZonesAreTheNearestProjectingFace) {
     }
     const int expected = nearest >= 0 ? faces[nearest].fracture : -1;
     ASSERT_EQ(zones.fracture[t], expected) << "triangle " << t << " at (" << c.x << ", " << c.y << ")";
-    EXPECT_DOUBLE_EQ(zones.area[t], hydrodda::mesh::triangle_area(mesh, t));
     in_a_zone += expected >= 0;
   }
   EXPECT_GT(in_a_zone, mesh.triangle_count() * 9 / 10);

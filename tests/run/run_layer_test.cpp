@@ -311,4 +311,31 @@ TEST(CoupledModel, PassesRunByHandEndWhereTheRunEnds) {
   expect_column_settled(by_hand);
 }
 
+TEST(CoupledModel, AnAbandonedPassLeavesTheModelAtTheLastFinishedPass) {
+  // A stop request during pass 2's mechanics (after its flow solve, relaxation and forces) puts
+  // every part of the state back as pass 1 left it, byte for byte as a checkpoint encodes it
+  // (heads, Aitken's update and factor, the flow factor's permeability, the blocks); the model
+  // then runs pass 2 again to the very state of a model never stopped.
+  scenario::Scenario s = scenario::read_scenario(kVerification / "coupled_hydrostatic_column.toml");
+  s.coupling.acceleration = scenario::LoopAcceleration::aitken;
+  const auto encoded = [](const run::CoupledModel& model) {
+    const run::CoupledState state = model.export_state();
+    return hydrodda::output::encode_checkpoint({}, state.mechanics, state.coupling);
+  };
+  run::CoupledModel never_stopped(s), stopped(s);
+  never_stopped.run_pass();
+  never_stopped.run_pass();
+  stopped.run_pass();
+  const std::string after_pass_one = encoded(stopped);
+  int asked = 0;
+  stopped.set_stop_request([&] { return ++asked > 3; });  // at DDA step 4 of pass 2
+  EXPECT_THROW(stopped.run_pass(), hydrodda::coupling::PassInterrupted);
+  EXPECT_EQ(asked, 4);
+  EXPECT_EQ(stopped.iterations(), 1);
+  EXPECT_EQ(encoded(stopped), after_pass_one);
+  stopped.set_stop_request({});
+  stopped.run_pass();
+  EXPECT_EQ(encoded(stopped), encoded(never_stopped));
+}
+
 }  // namespace

@@ -146,6 +146,15 @@ std::vector<std::size_t> get_surface_triangles(int tag) {
   return triangles;
 }
 
+// Room for every triangle of some surfaces at once (Gmsh node tags, three per triangle): grown
+// a surface at a time, the lists would end with up to twice the memory they need.
+void reserve_triangles(TriangleMesh& mesh, const std::vector<std::vector<std::size_t>>& surfaces) {
+  std::size_t count = mesh.triangles.size();
+  for (const std::vector<std::size_t>& tags : surfaces) count += tags.size() / 3;
+  mesh.triangles.reserve(count);
+  mesh.region.reserve(count);
+}
+
 // Appends the triangles (Gmsh node tags, three per triangle) with a region tag, turned
 // counter-clockwise.
 void append_triangles(TriangleMesh& mesh, const NodeTable& table,
@@ -553,6 +562,7 @@ TriangleMesh generate_mesh_with_gmsh(const MeshRequest& request) {
     const SurfaceMeshes meshes = two_processes ? mesh_surfaces_in_two_processes(tags) : take_surface_meshes(tags);
     const NodeTable table = node_table(meshes.nodes);
     mesh.nodes = table.nodes;
+    reserve_triangles(mesh, meshes.triangles);
     for (std::size_t s = 0; s < surfaces.size(); ++s)
       append_triangles(mesh, table, meshes.triangles[s], surfaces[s].second);
   });
@@ -598,6 +608,8 @@ TriangleMesh read_msh_with_gmsh(const std::string& path, bool verbose) {
     if (all_tags.empty()) throw std::runtime_error("no triangles");
     const NodeTable table = collect_used_nodes(all_tags);
     mesh.nodes = table.nodes;
+    mesh.triangles.reserve(all_tags.size() / 3);
+    mesh.region.reserve(all_tags.size() / 3);
     for (const auto& [tags, region] : blocks) append_triangles(mesh, table, tags, region);
 
     // 1D physical groups name the boundary edges (the first group, by tag, wins).
