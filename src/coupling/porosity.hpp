@@ -44,34 +44,8 @@ struct BlockPiece {
 class BlockPieces {
  public:
   std::size_t size() const { return halves_[0].size() + halves_[1].size(); }
-  const BlockPiece& operator[](std::size_t k) const {
-    return k < halves_[0].size() ? halves_[0][k] : halves_[1][k - halves_[0].size()];
-  }
-  class const_iterator {
-   public:
-    using value_type = BlockPiece;
-    using difference_type = std::ptrdiff_t;
-    const_iterator() = default;
-    const_iterator(const BlockPieces* pieces, std::size_t k) : pieces_(pieces), k_(k) {}
-    const BlockPiece& operator*() const { return (*pieces_)[k_]; }
-    const BlockPiece* operator->() const { return &(*pieces_)[k_]; }
-    const_iterator& operator++() {
-      ++k_;
-      return *this;
-    }
-    const_iterator operator++(int) {
-      const_iterator before = *this;
-      ++k_;
-      return before;
-    }
-    bool operator==(const const_iterator& other) const { return k_ == other.k_; }
-
-   private:
-    const BlockPieces* pieces_ = nullptr;
-    std::size_t k_ = 0;
-  };
-  const_iterator begin() const { return {this, 0}; }
-  const_iterator end() const { return {this, size()}; }
+  // The pieces over the first half of the elements, then over the second.
+  const std::array<std::vector<BlockPiece>, 2>& halves() const { return halves_; }
 
  private:
   friend class PorosityMapper;

@@ -133,7 +133,9 @@ TEST(CubicLaw, ConductingSlitDrawsTheFlowOfItsClosedForm) {
     const double error = std::abs(shortening / exact_shortening - 1);
     std::printf("h = c/%3.0f: K_eff/K_m %.5f (exact %.5f), l %.5f m (%+.2f%%)\n", c / h, k_eff,
                 length / (length - exact_shortening), shortening, 100 * (shortening / exact_shortening - 1));
-    if (last_error > 0.0) EXPECT_LT(error, last_error / 1.6) << "h = c/" << c / h;
+    if (last_error > 0.0) {
+      EXPECT_LT(error, last_error / 1.6) << "h = c/" << c / h;
+    }
     last_error = error;
   }
   EXPECT_LT(last_error, 0.015);
