@@ -1,10 +1,19 @@
-// The one file that includes CHOLMOD (through Eigen's CholmodSupport).
+// CHOLMOD through Eigen's CholmodSupport; supernodal_correction.cpp reads the factor it makes.
 #include <Eigen/CholmodSupport>
 
 #include "hydro/linear_solver.hpp"
+#include "hydro/supernodal_correction.hpp"
 
 namespace hydrodda::hydro {
 namespace {
+
+// Eigen's supernodal LLᵀ, with its CHOLMOD factor in reach of the low-rank correction.
+class SupernodalLLT : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Upper> {
+ public:
+  cholmod_factor* factor() const { return m_cholmodFactor; }
+  // Eigen's solve() const changes it too (it is mutable there).
+  cholmod_common* common() const { return &const_cast<SupernodalLLT*>(this)->cholmod(); }
+};
 
 class CholmodSolver final : public LinearSolver {
  public:
@@ -23,13 +32,16 @@ class CholmodSolver final : public LinearSolver {
   void analyse(const SparseMatrix& upper) override {
     factor_.analyzePattern(upper);
     analysed_ = true;
+    factored_ = false;
   }
 
   void factorize(const SparseMatrix& upper) override {
     if (!analysed_) throw std::logic_error("CholmodSolver::factorize before analyse");
+    factored_ = false;
     factor_.factorize(upper);
     if (factor_.info() != Eigen::Success)
       throw SingularSystem("CHOLMOD: the matrix is singular or not positive definite");
+    factored_ = true;
   }
 
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const override {
@@ -40,9 +52,15 @@ class CholmodSolver final : public LinearSolver {
 
   std::string name() const override { return "CHOLMOD supernodal LLT"; }
 
+  std::unique_ptr<CorrectedFactor> correct(const LowRankTerm& term) const override {
+    if (!factored_) throw std::logic_error("CholmodSolver::correct before factorize");
+    return correct_supernodal_factor(factor_.factor(), factor_.common(), term);
+  }
+
  private:
-  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Upper> factor_;
+  SupernodalLLT factor_;
   bool analysed_ = false;
+  bool factored_ = false;
 };
 
 }  // namespace

@@ -49,6 +49,7 @@ class DarcySolver {
 
   // Solves with a permeability, isotropic or a tensor, the factor of an earlier matrix serving as the
   // preconditioner of conjugate gradients on this one (Saad, Iterative Methods, alg. 9.1),
+  // corrected for the few elements that jumped since where that pays (plan_preconditioning),
   // started from `start_heads` (one per node; empty: from zero). CG stops when the head error
   // it estimates, |M⁻¹ r|∞, is under kHeadTolerance of the heads' range and the mass balance
   // it estimates is a tenth of kBalanceTolerance; its answer is kept only when its mass
@@ -66,6 +67,10 @@ class DarcySolver {
   static constexpr int kMaxIterations = 12;
   static constexpr int kRefactorAfter = 6;
   static constexpr int kHopelessIterations = 3 * kMaxIterations;
+  // At most this many elements whose permeability jumped since the kept factor (a fracture
+  // opening or closing) are taken into the preconditioner exactly, by a low-rank correction of
+  // the kept factor (hydro/supernodal_correction.hpp), rather than factoring afresh.
+  static constexpr int kMaxCorrectedElements = 400;
 
   // A bound on the CG iterations solve_reusing_factor() would need with the kept factor, in
   // exact arithmetic, from how far each element's permeability is from the kept one (see
@@ -114,9 +119,24 @@ class DarcySolver {
   void factorize_system(SolveTimings& timings);
   // x = A⁻¹ f with the fresh factor, refined in extended precision (see solve_with).
   Eigen::VectorXd solve_directly(int& refinement_steps) const;
-  // PCG with the kept factor from x (updated in place), `iterations` added to; false when it
-  // gave up (x is then to be discarded).
-  bool solve_by_conjugate_gradients(Eigen::VectorXd& x, int budget, int& iterations) const;
+  // PCG with the kept factor, or that factor corrected when `corrected` is given, from x
+  // (updated in place), `iterations` added to; false when it gave up (x is then to be discarded).
+  bool solve_by_conjugate_gradients(Eigen::VectorXd& x, int budget, int& iterations,
+                                    const CorrectedFactor* corrected) const;
+  // How many elements have moved further than each spread of a ladder from the kept factor's
+  // permeability (see bound_iterations in the .cpp).
+  std::vector<long> count_outside(PermeabilityView permeability) const;
+  // The preconditioner of solve_reusing_factor(): the elements whose change since the kept
+  // factor it takes exactly (none: the kept factor alone), and the bound on CG's iterations
+  // that leaves.
+  struct Preconditioning {
+    std::vector<int> corrected;
+    int bound = 0;
+  };
+  Preconditioning plan_preconditioning(PermeabilityView permeability, bool correcting) const;
+  // K_e(k_e) − K_e(k⁰_e) of the given elements over the unknowns, as U S Uᵀ (two columns an
+  // element at most, from the eigenvectors of the change of its conductivity tensor).
+  LowRankTerm element_changes(std::span<const int> elements, PermeabilityView permeability) const;
   FlowSolution make_solution(const Eigen::VectorXd& x, PermeabilityView permeability) const;
   void compute_boundary_flows(FlowSolution& out) const;
   // The flow out through each mesh boundary, from A h (compute_a_times_h).

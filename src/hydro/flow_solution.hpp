@@ -32,6 +32,7 @@ struct FlowSolution {
   int refinement_steps = 0;               // iterative-refinement steps the solve took
   bool factorised = true;                 // factored afresh (false: CG on a kept factor)
   int cg_iterations = 0;                  // CG iterations on the kept factor
+  int corrected_elements = 0;             // elements the kept factor was corrected for (low rank)
   SolveTimings timings;
 
   // Outward flow through a named boundary; throws when the name is unknown.

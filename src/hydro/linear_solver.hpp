@@ -6,6 +6,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -23,6 +24,25 @@ class SingularSystem : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A low-rank term U S Uᵀ to add to a factored matrix: column j of U has the entries
+// (row[k], value[k]) for k in [start[j], start[j + 1]), rows ascending; S = diag(weight).
+struct LowRankTerm {
+  std::vector<int> start{0};
+  std::vector<int> row;
+  std::vector<double> value;
+  std::vector<double> weight;
+  int columns() const { return static_cast<int>(weight.size()); }
+};
+
+// The inverse of a factored matrix with a low-rank term added, applied without factoring
+// the sum. Valid while the factorisation it was made from stands.
+class CorrectedFactor {
+ public:
+  virtual ~CorrectedFactor() = default;
+  // x = (A + U S Uᵀ)⁻¹ b.
+  virtual Eigen::VectorXd solve(const Eigen::VectorXd& b) const = 0;
+};
+
 class LinearSolver {
  public:
   virtual ~LinearSolver() = default;
@@ -33,6 +53,11 @@ class LinearSolver {
   // x = A⁻¹ b with the last factorisation.
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& b) const = 0;
   virtual std::string name() const = 0;
+  // The last factorisation corrected by `term`; null where the backend has no such update.
+  virtual std::unique_ptr<CorrectedFactor> correct(const LowRankTerm& term) const {
+    (void)term;
+    return nullptr;
+  }
 };
 
 // Fill-reducing ordering of the symbolic analysis: METIS (nested dissection; slower to

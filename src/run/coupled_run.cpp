@@ -216,10 +216,10 @@ output::RunSummary run_coupled(const RunContext& context) {
       context.report(report_pass(r));
       spdlog::debug(
           "iteration {}: head change {:.3e}, displacement change {:.3e}; porosity {:.3f} s, flow {:.3f} s ({}, {} CG "
-          "iterations), mechanics {:.3f} s",
+          "iterations, {} elements corrected), mechanics {:.3f} s",
           r.iteration, r.head_change, r.displacement_change, r.porosity_seconds, r.flow_seconds,
           loop.flow().factorised ? "factored afresh" : "on the kept factor", loop.flow().cg_iterations,
-          r.mechanics_seconds);
+          loop.flow().corrected_elements, r.mechanics_seconds);
       converged = r.converged;
       // The first pass, every `every`-th, and the last (written below if not here).
       if (r.iteration == 1 || r.iteration % s.output.every == 0 || converged || r.diverging || !r.escaping.empty()) {

@@ -163,6 +163,38 @@ TEST(FactorReuse, AFractureThatOpensIsSolvedWithinTheBoundOrFactoredAfresh) {
   EXPECT_GE(factorised, 2);  // the first solve, and at least one jump the old factor could not follow
 }
 
+// Where a few elements jump (a stretch of a fracture closing, then opening again, by 1e5) and
+// the rest barely move (±0.1%), the jump goes into the preconditioner exactly, as a low-rank
+// correction of the kept factor (kMaxCorrectedElements), instead of a fresh factorisation.
+bool in_patch(int t) {
+  const geometry::Point c = mesh::triangle_centroid(layer().mesh, t);
+  return layer().fracture[t] == 1 && c.x > 0.4 && c.x < 0.5;
+}
+
+TEST(FactorReuse, AFewElementsThatJumpAreCorrectedNotFactoredAfresh) {
+  const Layer& l = layer();
+  DarcySolver reusing(l.mesh, bottom_to_top()), exact(l.mesh, bottom_to_top());
+  const std::vector<double> strips{1e-9, 2e-9, 1e-9, 3e-9, 1e-9};
+  int patch = 0;
+  for (int t = 0; t < l.mesh.triangle_count(); ++t) patch += in_patch(t);
+  ASSERT_GT(patch, 20);
+  ASSERT_LE(patch, DarcySolver::kMaxCorrectedElements);
+  FlowSolution last = reusing.solve_reusing_factor(permeability(strips, 0.001, 0.0), {});
+  for (int pass = 1; pass <= 3; ++pass) {
+    auto k = permeability(strips, 0.001, 0.3 * pass);
+    if (pass % 2 == 1)
+      for (int t = 0; t < l.mesh.triangle_count(); ++t)
+        if (in_patch(t)) k[t] = 1e-14;
+    const FlowSolution a = reusing.solve_reusing_factor(k, last.head);
+    expect_same_solution(a, exact.solve(k));
+    EXPECT_FALSE(a.factorised) << "pass " << pass;
+    // Pass 2 reopens the patch: the kept factor has it open, so nothing jumps from it.
+    if (pass % 2 == 1) EXPECT_EQ(a.corrected_elements, patch) << "pass " << pass;
+    EXPECT_LE(a.cg_iterations, DarcySolver::kRefactorAfter) << "pass " << pass;
+    last = a;
+  }
+}
+
 // What a resumed run does: a new solver restores the factor the old one kept (of k0), and the
 // next solve (of k1) from the same heads gives the same heads, bit for bit.
 template <class Permeability>
@@ -268,6 +300,29 @@ TEST(FactorReuse, JointTensorsSolveOnTheKeptFactorToTheExactHeads) {
     last = a;
   }
   EXPECT_GE(on_kept_factor, 4);
+}
+
+TEST(FactorReuse, AJointStretchThatTurnsIsCorrectedNotFactoredAfresh) {
+  // As AFewElementsThatJumpAreCorrectedNotFactoredAfresh with joint tensors: a stretch of one
+  // joint turns by 60° (the change of its tensors has both signs and every xy term), and grows
+  // a hundredfold.
+  const Layer& l = layer();
+  DarcySolver reusing(l.mesh, bottom_to_top()), exact(l.mesh, bottom_to_top());
+  const std::vector<double> strips{1e-9, 2e-9, 1e-9, 3e-9, 1e-9};
+  const FlowSolution first = reusing.solve_reusing_factor(joint_tensors(strips, 0.001, 0.0, M_PI / 6.0), {});
+  auto k = joint_tensors(strips, 0.001, 0.3, M_PI / 6.0);
+  const auto turned = joint_tensors({1e-9, 2e-7, 1e-9, 3e-9, 1e-9}, 0.001, 0.3, M_PI / 2.0);
+  int patch = 0;
+  for (int t = 0; t < l.mesh.triangle_count(); ++t)
+    if (in_patch(t)) {
+      k[t] = turned[t];
+      ++patch;
+    }
+  const FlowSolution a = reusing.solve_reusing_factor(k, first.head);
+  expect_same_solution(a, exact.solve(k), /*round_off_floor=*/true);
+  EXPECT_FALSE(a.factorised);
+  EXPECT_EQ(a.corrected_elements, patch);
+  EXPECT_LE(a.cg_iterations, DarcySolver::kRefactorAfter);
 }
 
 TEST(FactorReuse, ARestoredTensorFactorGivesTheSameSolutionBitForBit) {
