@@ -1,4 +1,6 @@
 // CHOLMOD through Eigen's CholmodSupport; supernodal_correction.cpp reads the factor it makes.
+#include <omp.h>
+
 #include <Eigen/CholmodSupport>
 
 #include "hydro/linear_solver.hpp"
@@ -6,6 +8,23 @@
 
 namespace hydrodda::hydro {
 namespace {
+
+// While one lives, every OpenMP parallel region the calling thread starts runs on that thread
+// alone (no level of parallelism may be active). CHOLMOD's supernodal factorisation opens a
+// region of CHOLMOD_OMP_NUM_THREADS = 4 threads, fixed when Debian built it, for each update
+// of more than 64 rows: a fork and a join for each, more threads than this machine's two cores,
+// and at 10^6 triangles 1.43 s a factorisation against 0.81 s serial (bench_hydro
+// LatePassFlow/10/0/0, the same as with OMP_THREAD_LIMIT=1).
+class SerialOpenMP {
+ public:
+  SerialOpenMP() : levels_(omp_get_max_active_levels()) { omp_set_max_active_levels(0); }
+  ~SerialOpenMP() { omp_set_max_active_levels(levels_); }
+  SerialOpenMP(const SerialOpenMP&) = delete;
+  SerialOpenMP& operator=(const SerialOpenMP&) = delete;
+
+ private:
+  int levels_;
+};
 
 // Eigen's supernodal LLᵀ, with its CHOLMOD factor in reach of the low-rank correction.
 class SupernodalLLT : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Upper> {
@@ -38,7 +57,10 @@ class CholmodSolver final : public LinearSolver {
   void factorize(const SparseMatrix& upper) override {
     if (!analysed_) throw std::logic_error("CholmodSolver::factorize before analyse");
     factored_ = false;
-    factor_.factorize(upper);
+    {
+      const SerialOpenMP serial;
+      factor_.factorize(upper);
+    }
     if (factor_.info() != Eigen::Success)
       throw SingularSystem("CHOLMOD: the matrix is singular or not positive definite");
     factored_ = true;
