@@ -223,6 +223,8 @@ PassReport StaggeredLoop::run_pass() {
                                " s): " + e.what());
     }
   }
+  // The DDA's contact list goes while the flow model factors and the fields are written.
+  mechanics_.release_step_buffers();
   report.mechanics_seconds = seconds_since(start);
   report.time = mechanics_.time();
   report.outside_mesh = outside_mesh();

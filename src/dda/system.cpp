@@ -685,6 +685,11 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
 
 // ---- the step ----
 
+void System::release_step_buffers() {
+  std::vector<ActiveContact>().swap(active_);
+  std::vector<int>().swap(closed_);
+}
+
 StepReport System::step() {
   StepReport report;
   dt_ = std::min(settings_.time_step, dt_);
