@@ -498,10 +498,14 @@ constexpr int kNoBound = std::numeric_limits<int>::max();
 // How many elements corrected exactly cost about one CG iteration: the half-solves along their
 // paths up the elimination tree, and the iterations CG then adds where they closed (a downdate
 // by 1e7 of an element's conductance leaves the correction accurate to about 1% in its
-// directions). bench_hydro's LatePassFlow/10/1/100 and /400 at 10^6 triangles: 100 closed
-// elements cost 0.016 s to correct and one more iteration (0.09 s); 400 cost 0.08 s and two
-// or three.
-constexpr double kCorrectedPerIteration = 100.0;
+// directions). bench_hydro's LatePassFlow at 10^6 triangles: 100 closed elements cost 0.016 s
+// to correct and one more iteration; 400 cost 0.08 s and two or three; an iteration (a whole
+// solve and a product) 0.09 s.
+constexpr double kCorrectedPerIteration = 80.0;
+// What keeping the factor saves over a fresh one, in iterations: at 10^6 triangles a fresh
+// factorisation and its exact solve take 0.79 s, a pass of four CG iterations on the kept
+// factor 0.45 s. A correction that costs more is not made.
+constexpr double kIterationsSavedByKeeping = 4.0;
 
 // An element's spread: the larger of λ_max and 1/λ_min of the pencil (k, k⁰).
 double spread_of(const PermeabilityTensor& k, const PermeabilityTensor& k0) {
@@ -562,10 +566,10 @@ int DarcySolver::bound_iterations(PermeabilityView permeability) const {
 
 // The cheapest of: the kept factor alone (bound_iterations), or corrected for the elements
 // outside one spread of the ladder, each corrected element costing 1/kCorrectedPerIteration of
-// an iteration. A correction is tried only where the elements left inside the spread let CG
-// finish within its kMaxIterations: the bound without outliers is close to what CG takes,
-// and where a whole fracture network drifts by several per cent a pass, a fresh factor is
-// cheaper than a CG that gives up.
+// an iteration. A correction is made only where the elements left let CG finish within its
+// kMaxIterations, and where it costs less than keeping the factor saves: where a whole
+// fracture network drifts by several per cent a pass, or hundreds of elements jump, a fresh
+// factor is the cheaper.
 DarcySolver::Preconditioning DarcySolver::plan_preconditioning(PermeabilityView permeability, bool correcting) const {
   if (!kept_ || kept_->size() != permeability.size()) return {{}, kNoBound};
   const std::vector<long> outside = count_outside(permeability);
@@ -579,10 +583,11 @@ DarcySolver::Preconditioning DarcySolver::plan_preconditioning(PermeabilityView 
       bound = plain;
       corrected_outside = -1;
     }
-    const double with_correction =
-        static_cast<double>(chebyshev_iterations(kSpreads[i])) + outside[i] / kCorrectedPerIteration;
+    const double correction_cost = outside[i] / kCorrectedPerIteration;
+    const double with_correction = static_cast<double>(chebyshev_iterations(kSpreads[i])) + correction_cost;
     if (correcting && outside[i] > 0 && outside[i] <= kMaxCorrectedElements &&
-        chebyshev_iterations(kSpreads[i]) <= kMaxIterations && with_correction < cost) {
+        chebyshev_iterations(kSpreads[i]) <= kMaxIterations && correction_cost < kIterationsSavedByKeeping &&
+        with_correction < cost) {
       cost = with_correction;
       bound = chebyshev_iterations(kSpreads[i]);
       corrected_outside = static_cast<int>(i);

@@ -178,7 +178,7 @@ TEST(FactorReuse, AFewElementsThatJumpAreCorrectedNotFactoredAfresh) {
   int patch = 0;
   for (int t = 0; t < l.mesh.triangle_count(); ++t) patch += in_patch(t);
   ASSERT_GT(patch, 20);
-  ASSERT_LE(patch, DarcySolver::kMaxCorrectedElements);
+  ASSERT_LE(patch, 150);  // few enough that a correction costs less than a fresh factor
   FlowSolution last = reusing.solve_reusing_factor(permeability(strips, 0.001, 0.0), {});
   for (int pass = 1; pass <= 3; ++pass) {
     auto k = permeability(strips, 0.001, 0.3 * pass);
