@@ -17,6 +17,13 @@ find_library(SUITESPARSECONFIG_LIBRARY suitesparseconfig REQUIRED)
 add_library(hydrodda_cholmod INTERFACE)
 target_include_directories(hydrodda_cholmod SYSTEM INTERFACE ${CHOLMOD_INCLUDE_DIR})
 target_link_libraries(hydrodda_cholmod INTERFACE ${CHOLMOD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY})
+# METIS (libmetis-dev), called directly for the flow matrix's ordering on two cores
+# (hydro/nested_dissection.cpp) as well as by CHOLMOD.
+find_path(METIS_INCLUDE_DIR metis.h REQUIRED)
+find_library(METIS_LIBRARY metis REQUIRED)
+add_library(hydrodda_metis INTERFACE)
+target_include_directories(hydrodda_metis SYSTEM INTERFACE ${METIS_INCLUDE_DIR})
+target_link_libraries(hydrodda_metis INTERFACE ${METIS_LIBRARY})
 
 # Gmsh's C++ API (libgmsh-dev): a header and a shared library.
 find_path(GMSH_INCLUDE_DIR gmsh.h REQUIRED)

@@ -4,6 +4,7 @@
 #include <Eigen/CholmodSupport>
 
 #include "hydro/linear_solver.hpp"
+#include "hydro/nested_dissection.hpp"
 #include "hydro/supernodal_correction.hpp"
 
 namespace hydrodda::hydro {
@@ -29,6 +30,21 @@ class SerialOpenMP {
 // Eigen's supernodal LLᵀ, with its CHOLMOD factor in reach of the low-rank correction.
 class SupernodalLLT : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Upper> {
  public:
+  // analyzePattern() with the pivot order given (CHOLMOD's own postordering still applied).
+  void analyse_in_order(const SparseMatrix& upper, std::vector<int> order) {
+    cholmod_common& common = cholmod();
+    if (m_cholmodFactor) cholmod_free_factor(&m_cholmodFactor, &common);
+    m_cholmodFactor = nullptr;
+    common.nmethods = 1;
+    common.method[0].ordering = CHOLMOD_GIVEN;
+    cholmod_sparse a = Eigen::viewAsCholmod(upper.selfadjointView<Eigen::Upper>());
+    m_cholmodFactor = cholmod_analyze_p(&a, order.data(), nullptr, 0, &common);
+    if (!m_cholmodFactor) throw std::runtime_error("CHOLMOD could not analyse the flow matrix");
+    m_isInitialized = true;
+    m_info = Eigen::Success;
+    m_analysisIsOk = true;
+    m_factorizationIsOk = false;
+  }
   cholmod_factor* factor() const { return m_cholmodFactor; }
   // Eigen's solve() const changes it too (it is mutable there).
   cholmod_common* common() const { return &const_cast<SupernodalLLT*>(this)->cholmod(); }
@@ -36,22 +52,19 @@ class SupernodalLLT : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Up
 
 class CholmodSolver final : public LinearSolver {
  public:
-  explicit CholmodSolver(FillOrdering ordering) {
+  explicit CholmodSolver(FillOrdering ordering) : ordering_(ordering) {
     // The ordering is paid once per mesh, the numeric factorisation every coupling
     // iteration: METIS costs 3x AMD's analysis but refactors 20% faster on these meshes
-    // (docs/performance.md), so it is the default.
-    if (ordering == FillOrdering::metis) {
-      factor_.cholmod().nmethods = 1;
-      factor_.cholmod().method[0].ordering = CHOLMOD_METIS;
-    } else {
+    // (docs/performance.md), so it is the default, as nested dissection on two cores.
+    if (ordering == FillOrdering::automatic)
       factor_.cholmod().nmethods = 0;  // CHOLMOD's choice: AMD, METIS if AMD's fill is poor
-    }
   }
 
   void analyse(const SparseMatrix& upper) override {
-    factor_.analyzePattern(upper);
+    analysed_ = factored_ = false;
+    if (ordering_ == FillOrdering::metis) factor_.analyse_in_order(upper, order_by_nested_dissection(upper));
+    else factor_.analyzePattern(upper);
     analysed_ = true;
-    factored_ = false;
   }
 
   void factorize(const SparseMatrix& upper) override {
@@ -80,6 +93,7 @@ class CholmodSolver final : public LinearSolver {
   }
 
  private:
+  FillOrdering ordering_;
   SupernodalLLT factor_;
   bool analysed_ = false;
   bool factored_ = false;

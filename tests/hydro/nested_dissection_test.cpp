@@ -1,0 +1,92 @@
+// order_by_nested_dissection: a permutation, the same on every call and whether the helper
+// process orders the second half or this one does, whose factorisation solves as CHOLMOD's own
+// (AMD) ordering does; for a graph split in two, one ordered whole, and one in two pieces.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <numeric>
+#include <vector>
+
+#include "hydro/linear_solver.hpp"
+#include "hydro/nested_dissection.hpp"
+
+namespace hydrodda::hydro {
+namespace {
+
+// The P1 Laplacian's pattern on an nx × ny grid of squares cut into triangles, plus a shift
+// (SPD), upper triangle: the graph of a flow matrix.
+SparseMatrix grid_matrix(int nx, int ny) {
+  const int n = nx * ny;
+  std::vector<Eigen::Triplet<double>> entries;
+  const auto couple = [&](int a, int b) { entries.emplace_back(std::min(a, b), std::max(a, b), -1.0); };
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int p = j * nx + i;
+      entries.emplace_back(p, p, 6.01);
+      if (i + 1 < nx) couple(p, p + 1);
+      if (j + 1 < ny) couple(p, p + nx);
+      if (i + 1 < nx && j + 1 < ny) couple(p, p + nx + 1);
+    }
+  SparseMatrix a(n, n);
+  a.setFromTriplets(entries.begin(), entries.end());
+  return a;
+}
+
+bool is_permutation_of_unknowns(const std::vector<int>& order, int n) {
+  std::vector<int> sorted = order;
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<int> all(n);
+  std::iota(all.begin(), all.end(), 0);
+  return sorted == all;
+}
+
+// Solves with the default (nested dissection) and the automatic (AMD) ordering: both are
+// exact factorisations, so they agree to round-off (condition number about 1e3 here).
+void expect_same_solution_as_amd(const SparseMatrix& a) {
+  auto dissected = make_cholmod_solver(FillOrdering::metis);
+  auto amd = make_cholmod_solver(FillOrdering::automatic);
+  for (auto* solver : {dissected.get(), amd.get()}) {
+    solver->analyse(a);
+    solver->factorize(a);
+  }
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(a.rows(), -1.0, 3.0);
+  const Eigen::VectorXd x = dissected->solve(b), y = amd->solve(b);
+  EXPECT_LE((x - y).lpNorm<Eigen::Infinity>(), 1e-12 * y.lpNorm<Eigen::Infinity>());
+}
+
+TEST(NestedDissection, SplitsALargeGraphAndOrdersEveryUnknownOnce) {
+  const SparseMatrix a = grid_matrix(220, 110);  // 24,200 unknowns: split, half to the helper
+  ASSERT_GE(a.rows(), kSplitFrom);
+  const std::vector<int> order = order_by_nested_dissection(a);
+  EXPECT_TRUE(is_permutation_of_unknowns(order, static_cast<int>(a.rows())));
+  EXPECT_EQ(order, order_by_nested_dissection(a));                          // deterministic
+  EXPECT_EQ(order, order_by_nested_dissection(a, /*with_helper=*/false));  // the helper's half is METIS's
+  expect_same_solution_as_amd(a);
+}
+
+TEST(NestedDissection, OrdersASmallGraphWhole) {
+  const SparseMatrix a = grid_matrix(40, 30);
+  const std::vector<int> order = order_by_nested_dissection(a);
+  EXPECT_TRUE(is_permutation_of_unknowns(order, static_cast<int>(a.rows())));
+  expect_same_solution_as_amd(a);
+}
+
+// Two grids with no edge between them: the separator is empty, and each half is one grid.
+TEST(NestedDissection, OrdersAGraphInTwoPiecesWithAnEmptySeparator) {
+  const SparseMatrix one = grid_matrix(160, 80);
+  const int n = static_cast<int>(one.rows());
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int offset : {0, n})
+    for (int j = 0; j < one.outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(one, j); it; ++it)
+        entries.emplace_back(static_cast<int>(it.row()) + offset, j + offset, it.value());
+  SparseMatrix two(2 * n, 2 * n);
+  two.setFromTriplets(entries.begin(), entries.end());
+  const std::vector<int> order = order_by_nested_dissection(two);
+  EXPECT_TRUE(is_permutation_of_unknowns(order, 2 * n));
+  expect_same_solution_as_amd(two);
+}
+
+}  // namespace
+}  // namespace hydrodda::hydro
