@@ -121,6 +121,9 @@ void BM_SetupSolver(benchmark::State& state, const mesh::TriangleMesh& m) {
 // that every pass really refactors), everything after the set-up.
 void BM_Solve(benchmark::State& state, const mesh::TriangleMesh& m) {
   hydro::DarcySolver solver(m, make_problem(), make_solver());
+  // The analysis runs aside from the set-up on: waited for here, so that the first iteration
+  // is timed as every other, not with the rest of the set-up.
+  const double setup = solver.setup_seconds();
   const std::vector<double> k1 = make_permeability(m, kStripK), k2 = make_permeability(m, 2 * kStripK);
   hydro::SolveTimings sum;
   double balance = 0.0, refinements = 0.0, flow = 0.0;
@@ -137,7 +140,7 @@ void BM_Solve(benchmark::State& state, const mesh::TriangleMesh& m) {
     ++passes;
   }
   set_mesh_counters(state, m);
-  state.counters["setup_s"] = solver.setup_seconds();
+  state.counters["setup_s"] = setup;
   state.counters["assemble_s"] = sum.assemble / passes;
   state.counters["factorize_s"] = sum.factorize / passes;
   state.counters["solve_s"] = sum.solve / passes;
