@@ -3,9 +3,16 @@
 // (AMD) ordering does; for a graph split in two, one ordered whole, and one in two pieces.
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <numeric>
+#include <string>
 #include <vector>
 
 #include "hydro/linear_solver.hpp"
@@ -86,6 +93,50 @@ TEST(NestedDissection, OrdersAGraphInTwoPiecesWithAnEmptySeparator) {
   const std::vector<int> order = order_by_nested_dissection(two);
   EXPECT_TRUE(is_permutation_of_unknowns(order, 2 * n));
   expect_same_solution_as_amd(two);
+}
+
+// The helper program itself (beside the program, as a run finds it): given a graph on its
+// standard input, it writes the order that this process gives the same graph (ordered whole,
+// below kSplitFrom), so a split ordering that uses it is the one made without it. The graph is
+// built as order_by_nested_dissection builds it (columns ascending, each column's rows
+// ascending), since METIS's order depends on the order of the neighbours; idx_t is 32 bits in
+// Debian's METIS (IDXTYPEWIDTH).
+TEST(NestedDissection, TheHelperOrdersAGraphAsThisProcessDoes) {
+  const SparseMatrix a = grid_matrix(60, 50);
+  const int n = static_cast<int>(a.rows());
+  std::vector<std::vector<std::int32_t>> neighbours(n);
+  for (int j = 0; j < n; ++j)
+    for (SparseMatrix::InnerIterator it(a, j); it; ++it)
+      if (it.row() != j) {
+        neighbours[it.row()].push_back(j);
+        neighbours[j].push_back(static_cast<std::int32_t>(it.row()));
+      }
+  std::vector<std::int32_t> xadj{0}, adjncy;
+  for (const auto& list : neighbours) {
+    adjncy.insert(adjncy.end(), list.begin(), list.end());
+    xadj.push_back(static_cast<std::int32_t>(adjncy.size()));
+  }
+  namespace fs = std::filesystem;
+  const fs::path helper = fs::path(HYDRODDA_BINARY).parent_path() / "hydrodda_order";
+  ASSERT_TRUE(fs::exists(helper)) << helper;
+  const fs::path folder = fs::temp_directory_path() / ("hydrodda_order_test_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  {
+    std::ofstream in(folder / "graph", std::ios::binary);
+    const std::int64_t header[2] = {n, static_cast<std::int64_t>(adjncy.size())};
+    in.write(reinterpret_cast<const char*>(header), sizeof header);
+    in.write(reinterpret_cast<const char*>(xadj.data()), static_cast<std::streamsize>(xadj.size() * 4));
+    in.write(reinterpret_cast<const char*>(adjncy.data()), static_cast<std::streamsize>(adjncy.size() * 4));
+  }
+  const std::string command =
+      helper.string() + " < " + (folder / "graph").string() + " > " + (folder / "order").string();
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  std::ifstream out(folder / "order", std::ios::binary);
+  std::vector<std::int32_t> order(n);
+  out.read(reinterpret_cast<char*>(order.data()), static_cast<std::streamsize>(order.size() * 4));
+  EXPECT_EQ(out.gcount(), static_cast<std::streamsize>(order.size() * 4));
+  fs::remove_all(folder);
+  EXPECT_EQ(std::vector<int>(order.begin(), order.end()), order_by_nested_dissection(a));
 }
 
 }  // namespace

@@ -15,10 +15,12 @@
 
 namespace {
 
-bool read_exactly(void* data, std::size_t size) {
-  char* bytes = static_cast<char*>(data);
+// Moves exactly `size` bytes through `io` (a read or a write), retrying interrupted calls;
+// false at the end of the input or on an error.
+template <class Io>
+bool transfer_exactly(Io io, char* bytes, std::size_t size) {
   while (size > 0) {
-    const ssize_t n = ::read(0, bytes, size);
+    const ssize_t n = io(bytes, size);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) return false;
     bytes += n;
@@ -27,16 +29,13 @@ bool read_exactly(void* data, std::size_t size) {
   return true;
 }
 
+bool read_exactly(void* data, std::size_t size) {
+  return transfer_exactly([](char* b, std::size_t n) { return ::read(0, b, n); }, static_cast<char*>(data), size);
+}
+
 bool write_exactly(const void* data, std::size_t size) {
-  const char* bytes = static_cast<const char*>(data);
-  while (size > 0) {
-    const ssize_t n = ::write(1, bytes, size);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    bytes += n;
-    size -= static_cast<std::size_t>(n);
-  }
-  return true;
+  return transfer_exactly([](char* b, std::size_t n) { return ::write(1, b, n); },
+                          const_cast<char*>(static_cast<const char*>(data)), size);
 }
 
 }  // namespace
