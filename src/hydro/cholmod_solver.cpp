@@ -1,6 +1,8 @@
 // CHOLMOD through Eigen's CholmodSupport; supernodal_correction.cpp reads the factor it makes.
 #include <omp.h>
 
+#include <optional>
+
 #include <Eigen/CholmodSupport>
 
 #include "hydro/linear_solver.hpp"
@@ -14,8 +16,8 @@ namespace {
 // alone (no level of parallelism may be active). CHOLMOD's supernodal factorisation opens a
 // region of CHOLMOD_OMP_NUM_THREADS = 4 threads, fixed when Debian built it, for each update
 // of more than 64 rows: a fork and a join for each, more threads than this machine's two cores,
-// and at 10^6 triangles 1.43 s a factorisation against 0.81 s serial (bench_hydro
-// LatePassFlow/10/0/0, the same as with OMP_THREAD_LIMIT=1).
+// and at 10^6 triangles an exact pass (factorisation and solve) took 1.43 s against 0.79 s
+// serial (bench_hydro LatePassFlow/10/0/0, the same as with OMP_THREAD_LIMIT=1).
 class SerialOpenMP {
  public:
   SerialOpenMP() : levels_(omp_get_max_active_levels()) { omp_set_max_active_levels(0); }
@@ -54,14 +56,15 @@ class CholmodSolver final : public LinearSolver {
  public:
   explicit CholmodSolver(FillOrdering ordering) : ordering_(ordering) {
     // The ordering is paid once per mesh, the numeric factorisation every coupling
-    // iteration: METIS costs 3x AMD's analysis but refactors 20% faster on these meshes
-    // (docs/performance.md), so it is the default, as nested dissection on two cores.
+    // iteration: METIS analyses more slowly than AMD but refactors 10-50% faster on these
+    // meshes (docs/performance.md), so it is the default, as nested dissection on two cores.
     if (ordering == FillOrdering::automatic)
       factor_.cholmod().nmethods = 0;  // CHOLMOD's choice: AMD, METIS if AMD's fill is poor
   }
 
   void analyse(const SparseMatrix& upper) override {
     analysed_ = factored_ = false;
+    tree_.reset();
     if (ordering_ == FillOrdering::metis) factor_.analyse_in_order(upper, order_by_nested_dissection(upper));
     else factor_.analyzePattern(upper);
     analysed_ = true;
@@ -89,7 +92,8 @@ class CholmodSolver final : public LinearSolver {
 
   std::unique_ptr<CorrectedFactor> correct(const LowRankTerm& term) const override {
     if (!factored_) throw std::logic_error("CholmodSolver::correct before factorize");
-    return correct_supernodal_factor(factor_.factor(), factor_.common(), term);
+    if (!tree_) tree_ = make_supernodal_tree(factor_.factor());
+    return correct_supernodal_factor(factor_.factor(), factor_.common(), *tree_, term);
   }
 
  private:
@@ -97,6 +101,7 @@ class CholmodSolver final : public LinearSolver {
   SupernodalLLT factor_;
   bool analysed_ = false;
   bool factored_ = false;
+  mutable std::optional<SupernodalTree> tree_;  // of the analysis, made at its first correction
 };
 
 }  // namespace

@@ -556,12 +556,7 @@ std::vector<long> DarcySolver::count_outside(PermeabilityView permeability) cons
 }
 
 int DarcySolver::bound_iterations(PermeabilityView permeability) const {
-  if (!kept_ || kept_->size() != permeability.size()) return kNoBound;
-  const std::vector<long> outside = count_outside(permeability);
-  long best = kNoBound;
-  for (std::size_t i = 0; i < kSpreads.size(); ++i)
-    best = std::min(best, 2 * outside[i] + chebyshev_iterations(kSpreads[i]));
-  return static_cast<int>(std::min<long>(best, kNoBound));
+  return plan_preconditioning(permeability, false).bound;
 }
 
 // The cheapest of: the kept factor alone (bound_iterations), or corrected for the elements
@@ -623,9 +618,8 @@ LowRankTerm DarcySolver::element_changes(std::span<const int> elements, Permeabi
       modes = {{{l1, v1}, {l2, {-v1.y, v1.x}}}};
     }
     const auto& tri = mesh_.triangles[e];
-    const geometry::Point a = mesh_.nodes[tri[0]], b = mesh_.nodes[tri[1]], c = mesh_.nodes[tri[2]];
-    const double area = 0.5 * std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
-    const auto g = compute_shape_gradients(a, b, c);
+    const double area = std::abs(mesh::triangle_area(mesh_, e));
+    const auto g = compute_shape_gradients(mesh_.nodes[tri[0]], mesh_.nodes[tri[1]], mesh_.nodes[tri[2]]);
     for (const auto& [lambda, v] : modes) {
       if (lambda == 0.0) continue;
       const std::size_t before = term.row.size();

@@ -25,7 +25,7 @@ class SingularSystem : public std::runtime_error {
 };
 
 // A low-rank term U S Uᵀ to add to a factored matrix: column j of U has the entries
-// (row[k], value[k]) for k in [start[j], start[j + 1]), rows ascending; S = diag(weight).
+// (row[k], value[k]) for k in [start[j], start[j + 1]); S = diag(weight).
 struct LowRankTerm {
   std::vector<int> start{0};
   std::vector<int> row;

@@ -6,7 +6,6 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <array>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
@@ -14,6 +13,8 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+
+#include "mesh/program_files.hpp"
 
 extern char** environ;
 
@@ -85,17 +86,8 @@ Graph subgraph(const Graph& g, const std::vector<idx_t>& vertices) {
   return s;
 }
 
-// The helper beside the program, else where the build made it (tests run from other folders).
-fs::path helper_path() {
-  std::array<char, 4096> buffer{};
-  const ssize_t size = ::readlink("/proc/self/exe", buffer.data(), buffer.size() - 1);
-  if (size > 0) {
-    const fs::path beside = fs::path(std::string(buffer.data(), static_cast<std::size_t>(size))).parent_path() /
-                            "hydrodda_order";
-    if (fs::exists(beside)) return beside;
-  }
-  return HYDRODDA_ORDER_PROGRAM;
-}
+// The helper beside the program, else where the build made it.
+fs::path helper_path() { return mesh::find_beside_program("hydrodda_order", HYDRODDA_ORDER_PROGRAM); }
 
 // The helper process ordering one graph (hydro/ordering/order_graph.cpp), through a socket
 // (MSG_NOSIGNAL: a helper that died is a failed order, not a SIGPIPE here). Killed and waited

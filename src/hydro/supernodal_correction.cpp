@@ -26,7 +26,8 @@ namespace {
 // and C = σ + Σ_s X_sᵀ X_s, each block's Gram matrix added over its columns J_s.
 class SupernodalCorrection final : public CorrectedFactor {
  public:
-  SupernodalCorrection(cholmod_factor* factor, cholmod_common* common, const LowRankTerm& term);
+  SupernodalCorrection(cholmod_factor* factor, cholmod_common* common, const SupernodalTree& tree,
+                       const LowRankTerm& term);
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const override;
 
  private:
@@ -45,11 +46,9 @@ class SupernodalCorrection final : public CorrectedFactor {
   Eigen::Map<const Eigen::MatrixXd> block(const Reached& r) const {
     return {values_.data() + r.first_value, width(r.supernode), r.column_count};
   }
-  void find_reach(const LowRankTerm& term, const std::vector<int>& supernode_of_column,
-                  const std::vector<int>& position);
-  void scatter_columns(const LowRankTerm& term, const std::vector<int>& supernode_of_column,
-                       const std::vector<int>& position);
-  void sweep_up(const std::vector<int>& supernode_of_column);
+  void find_reach(const LowRankTerm& term, const SupernodalTree& tree);
+  void scatter_columns(const LowRankTerm& term, const SupernodalTree& tree);
+  void sweep_up(const SupernodalTree& tree);
   void factor_capacitance(const LowRankTerm& term);
   void correct_half_solved(Eigen::VectorXd& y) const;
   // Applies a CHOLMOD solve of kind `system` (CHOLMOD_P, _L, _Lt, _Pt) to x in place.
@@ -62,7 +61,6 @@ class SupernodalCorrection final : public CorrectedFactor {
   const int* px_;     // per supernode: its first value in l_ (nsuper + 1)
   const int* rows_;   // the row indices of each supernode, its own columns first
   const double* l_;   // the values of each supernode, column-major, height(s) rows
-  std::vector<int> parent_;       // per supernode: its parent in the tree, −1 at a root
   std::vector<int> reached_of_;   // per supernode: its index in reached_, −1 if W misses it
   std::vector<Reached> reached_;  // ascending supernodes
   std::vector<int> columns_;
@@ -70,48 +68,41 @@ class SupernodalCorrection final : public CorrectedFactor {
   Eigen::PartialPivLU<Eigen::MatrixXd> capacitance_;
 };
 
-SupernodalCorrection::SupernodalCorrection(cholmod_factor* factor, cholmod_common* common,
+void check_supernodal(const cholmod_factor* factor) {
+  if (!factor || !factor->is_super || !factor->is_ll || factor->itype != CHOLMOD_INT)
+    throw std::logic_error("supernodal correction: needs a supernodal LLᵀ factor with int indices");
+}
+
+SupernodalCorrection::SupernodalCorrection(cholmod_factor* factor, cholmod_common* common, const SupernodalTree& tree,
                                            const LowRankTerm& term)
     : factor_(factor), common_(common) {
-  if (!factor_ || !factor_->is_super || !factor_->is_ll || factor_->itype != CHOLMOD_INT ||
-      factor_->xtype != CHOLMOD_REAL || factor_->dtype != CHOLMOD_DOUBLE)
-    throw std::logic_error("supernodal correction: needs a numeric supernodal LLᵀ factor with int indices");
+  check_supernodal(factor_);
+  if (factor_->xtype != CHOLMOD_REAL || factor_->dtype != CHOLMOD_DOUBLE)
+    throw std::logic_error("supernodal correction: needs a numeric factor");
   super_ = static_cast<const int*>(factor_->super);
   pi_ = static_cast<const int*>(factor_->pi);
   px_ = static_cast<const int*>(factor_->px);
   rows_ = static_cast<const int*>(factor_->s);
   l_ = static_cast<const double*>(factor_->x);
-  const int n = static_cast<int>(factor_->n);
-  const int nsuper = static_cast<int>(factor_->nsuper);
+  if (tree.position.size() != factor_->n || tree.parent.size() != factor_->nsuper)
+    throw std::logic_error("supernodal correction: the tree is another analysis's");
   if (static_cast<int>(term.start.size()) != term.columns() + 1)
     throw std::invalid_argument("supernodal correction: a low-rank term needs one start per column and one more");
-
-  std::vector<int> supernode_of_column(n);
-  for (int s = 0; s < nsuper; ++s) std::fill(&supernode_of_column[super_[s]], &supernode_of_column[super_[s + 1]], s);
-  parent_.assign(nsuper, -1);
-  for (int s = 0; s < nsuper; ++s)
-    if (height(s) > width(s)) parent_[s] = supernode_of_column[rows_[pi_[s] + width(s)]];
-  // position[i]: the elimination position of unknown i (L Lᵀ = P A Pᵀ, Perm[k] = i).
-  const int* perm = static_cast<const int*>(factor_->Perm);
-  std::vector<int> position(n);
-  for (int k = 0; k < n; ++k) position[perm[k]] = k;
-
-  find_reach(term, supernode_of_column, position);
-  scatter_columns(term, supernode_of_column, position);
-  sweep_up(supernode_of_column);
+  find_reach(term, tree);
+  scatter_columns(term, tree);
+  sweep_up(tree);
   factor_capacitance(term);
 }
 
 // The supernodes each column of W reaches, and its columns J_s per supernode.
-void SupernodalCorrection::find_reach(const LowRankTerm& term, const std::vector<int>& supernode_of_column,
-                                      const std::vector<int>& position) {
-  const int nsuper = static_cast<int>(parent_.size());
-  const int n = static_cast<int>(position.size());
+void SupernodalCorrection::find_reach(const LowRankTerm& term, const SupernodalTree& tree) {
+  const int nsuper = static_cast<int>(tree.parent.size());
+  const int n = static_cast<int>(tree.position.size());
   std::vector<int> count(nsuper, 0), mark(nsuper, -1);
   const auto walk = [&](int j, auto&& visit) {
     for (int k = term.start[j]; k < term.start[j + 1]; ++k) {
       if (term.row[k] < 0 || term.row[k] >= n) throw std::out_of_range("supernodal correction: a row outside the matrix");
-      for (int s = supernode_of_column[position[term.row[k]]]; s >= 0 && mark[s] != j; s = parent_[s]) {
+      for (int s = tree.supernode_of_column[tree.position[term.row[k]]]; s >= 0 && mark[s] != j; s = tree.parent[s]) {
         mark[s] = j;
         visit(s);
       }
@@ -139,13 +130,12 @@ void SupernodalCorrection::find_reach(const LowRankTerm& term, const std::vector
 }
 
 // Ũ = U |S|^½ into the blocks, rows in elimination positions.
-void SupernodalCorrection::scatter_columns(const LowRankTerm& term, const std::vector<int>& supernode_of_column,
-                                           const std::vector<int>& position) {
+void SupernodalCorrection::scatter_columns(const LowRankTerm& term, const SupernodalTree& tree) {
   for (int j = 0; j < term.columns(); ++j) {
     const double scale = std::sqrt(std::abs(term.weight[j]));
     for (int k = term.start[j]; k < term.start[j + 1]; ++k) {
-      const int row = position[term.row[k]];
-      const int s = supernode_of_column[row];
+      const int row = tree.position[term.row[k]];
+      const int s = tree.supernode_of_column[row];
       const Reached& r = reached_[reached_of_[s]];
       const int* first = &columns_[r.first_column];
       const int at = static_cast<int>(std::lower_bound(first, first + r.column_count, j) - first);
@@ -154,7 +144,7 @@ void SupernodalCorrection::scatter_columns(const LowRankTerm& term, const std::v
   }
 }
 
-void SupernodalCorrection::sweep_up(const std::vector<int>& supernode_of_column) {
+void SupernodalCorrection::sweep_up(const SupernodalTree& tree) {
   Eigen::MatrixXd update;
   std::vector<int> at;  // J_s's positions in J_a
   for (const Reached& r : reached_) {
@@ -166,7 +156,7 @@ void SupernodalCorrection::sweep_up(const std::vector<int>& supernode_of_column)
     update.noalias() = l.bottomRows(below) * x;
     const int* row = rows_ + pi_[s] + nscol;
     for (int i = 0; i < below;) {
-      const int a = supernode_of_column[row[i]];
+      const int a = tree.supernode_of_column[row[i]];
       const Reached& ra = reached_[reached_of_[a]];  // a is on every path through s
       const int* ja = &columns_[ra.first_column];
       at.resize(r.column_count);
@@ -242,9 +232,32 @@ void SupernodalCorrection::correct_half_solved(Eigen::VectorXd& y) const {
 
 }  // namespace
 
+SupernodalTree make_supernodal_tree(const cholmod_factor* factor) {
+  check_supernodal(factor);
+  const int* super = static_cast<const int*>(factor->super);
+  const int* pi = static_cast<const int*>(factor->pi);
+  const int* rows = static_cast<const int*>(factor->s);
+  const int* perm = static_cast<const int*>(factor->Perm);
+  const int n = static_cast<int>(factor->n), nsuper = static_cast<int>(factor->nsuper);
+  SupernodalTree tree;
+  tree.supernode_of_column.resize(n);
+  for (int s = 0; s < nsuper; ++s)
+    std::fill(&tree.supernode_of_column[super[s]], &tree.supernode_of_column[super[s + 1]], s);
+  // A supernode's parent holds the first row below its diagonal block.
+  tree.parent.assign(nsuper, -1);
+  for (int s = 0; s < nsuper; ++s) {
+    const int width = super[s + 1] - super[s], height = pi[s + 1] - pi[s];
+    if (height > width) tree.parent[s] = tree.supernode_of_column[rows[pi[s] + width]];
+  }
+  // L Lᵀ = P A Pᵀ with Perm[k] the unknown eliminated k-th.
+  tree.position.resize(n);
+  for (int k = 0; k < n; ++k) tree.position[perm[k]] = k;
+  return tree;
+}
+
 std::unique_ptr<CorrectedFactor> correct_supernodal_factor(cholmod_factor* factor, cholmod_common* common,
-                                                           const LowRankTerm& term) {
-  return std::make_unique<SupernodalCorrection>(factor, common, term);
+                                                           const SupernodalTree& tree, const LowRankTerm& term) {
+  return std::make_unique<SupernodalCorrection>(factor, common, tree, term);
 }
 
 }  // namespace hydrodda::hydro

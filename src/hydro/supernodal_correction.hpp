@@ -7,15 +7,27 @@
 #include <cholmod.h>
 
 #include <memory>
+#include <vector>
 
 #include "hydro/linear_solver.hpp"
 
 namespace hydrodda::hydro {
 
-// `factor`: a numeric supernodal LLᵀ factor with int indices (std::logic_error otherwise).
-// It and `common` must outlive the result and stay unchanged while it is used. Throws
-// SingularSystem when the corrected matrix is singular to working precision.
+// The elimination tree of a supernodal analysis, which every correction walks: it depends on
+// the pattern alone, so it is made once per analysis, not once per correction.
+struct SupernodalTree {
+  std::vector<int> supernode_of_column;  // per elimination position
+  std::vector<int> parent;               // per supernode: its parent, −1 at a root
+  std::vector<int> position;             // per unknown: its elimination position (Perm's inverse)
+};
+// `factor`: a supernodal LLᵀ analysis (or factor) with int indices (std::logic_error otherwise).
+SupernodalTree make_supernodal_tree(const cholmod_factor* factor);
+
+// `factor`: a numeric supernodal LLᵀ factor with int indices (std::logic_error otherwise), and
+// `tree` its analysis's. The factor and `common` must outlive the result and stay unchanged
+// while it is used. Throws SingularSystem when the corrected matrix is singular to working
+// precision.
 std::unique_ptr<CorrectedFactor> correct_supernodal_factor(cholmod_factor* factor, cholmod_common* common,
-                                                           const LowRankTerm& term);
+                                                           const SupernodalTree& tree, const LowRankTerm& term);
 
 }  // namespace hydrodda::hydro

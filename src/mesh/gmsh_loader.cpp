@@ -2,39 +2,28 @@
 // dlopen the first time a mesh is needed, so that a run without a fluid mesh does not load
 // Gmsh and OpenCASCADE at its start (see gmsh_mesher.cpp).
 #include <dlfcn.h>
-#include <unistd.h>
 
-#include <array>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
 
 #include "mesh/gmsh/gmsh_plugin.hpp"
 #include "mesh/mesh_request.hpp"
+#include "mesh/program_files.hpp"
 
 namespace hydrodda::mesh {
 namespace {
 
 namespace fs = std::filesystem;
 
-// The program's own folder: the plugin is installed beside the executable.
-fs::path executable_folder() {
-  std::array<char, 4096> buffer{};
-  const ssize_t size = ::readlink("/proc/self/exe", buffer.data(), buffer.size() - 1);
-  return size > 0 ? fs::path(std::string(buffer.data(), static_cast<std::size_t>(size))).parent_path() : fs::path();
-}
-
 struct Plugin {
   decltype(&hydrodda_gmsh_generate_mesh) generate = nullptr;
   decltype(&hydrodda_gmsh_read_msh) read = nullptr;
 };
 
-// Beside the executable, else where the build made it (tests and benchmarks run from other
-// folders). Loaded once, never unloaded.
+// Beside the executable, else where the build made it. Loaded once, never unloaded.
 Plugin load_plugin() {
-  const fs::path beside = executable_folder() / "hydrodda_gmsh_mesher.so";
-  const fs::path built = HYDRODDA_GMSH_MESHER;
-  const fs::path path = fs::exists(beside) ? beside : built;
+  const fs::path path = find_beside_program("hydrodda_gmsh_mesher.so", HYDRODDA_GMSH_MESHER);
   void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!handle) {
     const char* why = ::dlerror();

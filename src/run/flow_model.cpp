@@ -48,12 +48,9 @@ std::vector<double> assign_permeability(const scenario::Scenario& s, const mesh:
   }
   const coupling::PermeabilityModel model = make_permeability_model(s);
   std::vector<double> apertures;
-  if (model.law == coupling::PermeabilityLaw::cubic) {
-    std::vector<geometry::Point> centroids;
-    for (int t = 0; t < mesh.triangle_count(); ++t) centroids.push_back(mesh::triangle_centroid(mesh, t));
-    apertures = coupling::compute_local_apertures(centroids, porosity.fracture_area, polygons, model.domain,
+  if (model.law == coupling::PermeabilityLaw::cubic)
+    apertures = coupling::compute_local_apertures(mesh, porosity.fracture_area, polygons, model.domain,
                                                   model.aperture_reach);
-  }
   const std::vector<double> from_porosity = model.compute(porosity, mapper.element_areas(), apertures);
   for (int t = 0; t < mesh.triangle_count(); ++t) k[t] = fixed[t] ? *fixed[t] : from_porosity[t];
   return k;

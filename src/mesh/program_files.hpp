@@ -1,0 +1,14 @@
+#pragma once
+// The files installed beside the program: the Gmsh plugin (gmsh_loader.cpp) and the flow
+// ordering's helper (hydro/nested_dissection.cpp).
+
+#include <filesystem>
+#include <string_view>
+
+namespace hydrodda::mesh {
+
+// `name` in the running program's folder when it is there, else `built`, where the build
+// made it (tests, benchmarks and the Python module run from other folders).
+std::filesystem::path find_beside_program(std::string_view name, const std::filesystem::path& built);
+
+}  // namespace hydrodda::mesh
