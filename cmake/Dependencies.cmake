@@ -17,6 +17,10 @@ find_library(SUITESPARSECONFIG_LIBRARY suitesparseconfig REQUIRED)
 add_library(hydrodda_cholmod INTERFACE)
 target_include_directories(hydrodda_cholmod SYSTEM INTERFACE ${CHOLMOD_INCLUDE_DIR})
 target_link_libraries(hydrodda_cholmod INTERFACE ${CHOLMOD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY})
+# BLAS and LAPACK (libblas-dev, liblapack-dev; OpenBLAS behind them at run time), called
+# directly by the flow's supernodal factorisation on two threads (hydro/supernodal_factorization.cpp).
+find_package(LAPACK REQUIRED)
+target_link_libraries(hydrodda_cholmod INTERFACE LAPACK::LAPACK)
 # METIS (libmetis-dev), called directly for the flow matrix's ordering on two cores
 # (hydro/nested_dissection.cpp) as well as by CHOLMOD.
 find_path(METIS_INCLUDE_DIR metis.h REQUIRED)

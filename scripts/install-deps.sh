@@ -8,6 +8,7 @@ build_packages=(
   libeigen3-dev            # dense and sparse linear algebra
   libsuitesparse-dev       # CHOLMOD sparse Cholesky
   libmetis-dev             # graph ordering for CHOLMOD
+  libblas-dev liblapack-dev  # dense kernels of the flow's own supernodal factorisation
   # OpenBLAS for CHOLMOD's dense kernels in place of the reference BLAS, which Debian's
   # alternatives then point libblas.so.3 and liblapack.so.3 at: a flow factorisation of 10^6
   # triangles 2.1-2.3 s -> 1.2-1.3 s. The serial build: one thread, so every result is the same

@@ -8,6 +8,7 @@
 #include "hydro/linear_solver.hpp"
 #include "hydro/nested_dissection.hpp"
 #include "hydro/supernodal_correction.hpp"
+#include "hydro/supernodal_factorization.hpp"
 
 namespace hydrodda::hydro {
 namespace {
@@ -48,6 +49,11 @@ class SupernodalLLT : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Up
     m_factorizationIsOk = false;
   }
   cholmod_factor* factor() const { return m_cholmodFactor; }
+  // After the factor's values were filled outside Eigen (SupernodalFactorization).
+  void mark_factorized() {
+    m_info = Eigen::Success;
+    m_factorizationIsOk = true;
+  }
   // Eigen's solve() const changes it too (it is mutable there).
   cholmod_common* common() const { return &const_cast<SupernodalLLT*>(this)->cholmod(); }
 };
@@ -65,14 +71,26 @@ class CholmodSolver final : public LinearSolver {
   void analyse(const SparseMatrix& upper) override {
     analysed_ = factored_ = false;
     tree_.reset();
-    if (ordering_ == FillOrdering::metis) factor_.analyse_in_order(upper, order_by_nested_dissection(upper));
-    else factor_.analyzePattern(upper);
+    numeric_.reset();
+    if (ordering_ == FillOrdering::metis) {
+      const FillOrder order = order_by_nested_dissection(upper);
+      factor_.analyse_in_order(upper, order.order);
+      numeric_.emplace(factor_.factor(), factor_.common(), upper, order.parts());
+    } else {
+      factor_.analyzePattern(upper);
+    }
     analysed_ = true;
   }
 
   void factorize(const SparseMatrix& upper) override {
     if (!analysed_) throw std::logic_error("CholmodSolver::factorize before analyse");
     factored_ = false;
+    if (numeric_) {
+      numeric_->factorize(upper, /*two_threads=*/true);
+      factor_.mark_factorized();
+      factored_ = true;
+      return;
+    }
     {
       const SerialOpenMP serial;
       factor_.factorize(upper);
@@ -83,6 +101,7 @@ class CholmodSolver final : public LinearSolver {
   }
 
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const override {
+    if (numeric_ && factored_) return numeric_->solve(b, /*two_threads=*/true);
     Eigen::VectorXd x = factor_.solve(b);
     if (factor_.info() != Eigen::Success) throw SingularSystem("CHOLMOD: the solve failed");
     return x;
@@ -93,7 +112,13 @@ class CholmodSolver final : public LinearSolver {
   std::unique_ptr<CorrectedFactor> correct(const LowRankTerm& term) const override {
     if (!factored_) throw std::logic_error("CholmodSolver::correct before factorize");
     if (!tree_) tree_ = make_supernodal_tree(factor_.factor());
-    return correct_supernodal_factor(factor_.factor(), factor_.common(), *tree_, term);
+    HalfSolves halves;
+    if (numeric_) {
+      const SupernodalFactorization* numeric = &*numeric_;
+      halves.forward = [numeric](Eigen::VectorXd& v) { numeric->solve_forward(v, /*two_threads=*/true); };
+      halves.backward = [numeric](Eigen::VectorXd& v) { numeric->solve_backward(v, /*two_threads=*/true); };
+    }
+    return correct_supernodal_factor(factor_.factor(), factor_.common(), *tree_, term, std::move(halves));
   }
 
  private:
@@ -102,6 +127,8 @@ class CholmodSolver final : public LinearSolver {
   bool analysed_ = false;
   bool factored_ = false;
   mutable std::optional<SupernodalTree> tree_;  // of the analysis, made at its first correction
+  // The numeric factorisation on two threads, of the nested-dissection analysis.
+  std::optional<SupernodalFactorization> numeric_;
 };
 
 }  // namespace

@@ -498,14 +498,14 @@ constexpr int kNoBound = std::numeric_limits<int>::max();
 // How many elements corrected exactly cost about one CG iteration: the half-solves along their
 // paths up the elimination tree, and the iterations CG then adds where they closed (a downdate
 // by 1e7 of an element's conductance leaves the correction accurate to about 1% in its
-// directions). bench_hydro's LatePassFlow at 10^6 triangles: 100 closed elements cost 0.016 s
-// to correct and one more iteration; 400 cost 0.08 s and two or three; an iteration (a whole
-// solve and a product) 0.09 s.
+// directions). bench_hydro's LatePassFlow at 10^6 triangles: 100 closed elements cost 0.02 s
+// to correct and one more iteration; an iteration (a whole solve and a product) 0.08 s.
 constexpr double kCorrectedPerIteration = 80.0;
 // What keeping the factor saves over a fresh one, in iterations: at 10^6 triangles a fresh
-// factorisation and its exact solve take 0.79 s, a pass of four CG iterations on the kept
-// factor 0.45 s. A correction that costs more is not made.
-constexpr double kIterationsSavedByKeeping = 4.0;
+// factorisation and its exact solve take 0.43–0.48 s on two threads (0.60–0.67 s on one), a
+// pass of four CG iterations on the kept factor 0.38–0.44 s (0.54–0.58 s): about one
+// iteration. A correction that costs more is not made.
+constexpr double kIterationsSavedByKeeping = 1.0;
 
 // An element's spread: the larger of λ_max and 1/λ_min of the pencil (k, k⁰).
 double spread_of(const PermeabilityTensor& k, const PermeabilityTensor& k0) {

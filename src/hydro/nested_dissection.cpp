@@ -181,10 +181,10 @@ class OrderingProcess {
 // METIS cannot order two graphs at once in one process (its random number generator is
 // shared: two orderings made on two threads come out different from run to run), hence the
 // helper; a fork of this process would cost the copies of every page it then writes.
-std::vector<int> order_by_nested_dissection(const SparseMatrix& upper, bool with_helper) {
+FillOrder order_by_nested_dissection(const SparseMatrix& upper, bool with_helper) {
   Graph g = graph_of(upper);
   const idx_t n = g.size();
-  const auto as_order = [](const std::vector<idx_t>& order) { return std::vector<int>(order.begin(), order.end()); };
+  const auto as_order = [](const std::vector<idx_t>& order) { return FillOrder{std::vector<int>(order.begin(), order.end())}; };
   if (n < kSplitFrom) return as_order(order_whole(g));
 
   idx_t count = n, separator_size = 0;
@@ -210,10 +210,20 @@ std::vector<int> order_by_nested_dissection(const SparseMatrix& upper, bool with
   for (int h = 0; h < 2; ++h)
     for (idx_t& v : order[h]) v = half[h][v];
 
-  std::vector<int> out;
-  out.reserve(n);
-  for (const std::vector<idx_t>* list : {&order[0], &order[1], &separator}) out.insert(out.end(), list->begin(), list->end());
+  FillOrder out;
+  out.order.reserve(n);
+  for (const std::vector<idx_t>* list : {&order[0], &order[1], &separator})
+    out.order.insert(out.order.end(), list->begin(), list->end());
+  out.halves[0] = static_cast<int>(half[0].size());
+  out.halves[1] = static_cast<int>(half[1].size());
   return out;
+}
+
+std::vector<int> FillOrder::parts() const {
+  if (halves[0] == 0 && halves[1] == 0) return {};
+  std::vector<int> part(order.size(), 2);
+  for (int k = 0; k < halves[0] + halves[1]; ++k) part[order[k]] = k < halves[0] ? 0 : 1;
+  return part;
 }
 
 }  // namespace hydrodda::hydro

@@ -13,13 +13,23 @@
 
 namespace hydrodda::hydro {
 
+// A pivot order: order[k] is the unknown eliminated k-th (CHOLMOD's Perm). Where a separator
+// split the graph, order's first halves[0] unknowns are one half, the next halves[1] the other,
+// and the rest the separator; halves is {0, 0} where the graph was ordered whole.
+struct FillOrder {
+  std::vector<int> order;
+  int halves[2] = {0, 0};
+  // Per unknown: 0 or 1, its half, 2 in the separator; empty where the graph was not split.
+  std::vector<int> parts() const;
+};
+
 // The pivot order of the symmetric matrix whose upper triangle is `upper` (its values are not
-// read): order[k] is the unknown eliminated k-th (CHOLMOD's Perm). Below kSplitFrom unknowns,
+// read). Below kSplitFrom unknowns,
 // or where the separator leaves a half empty, METIS orders the whole graph in one go; where the
 // helper cannot be started or fails, this process orders both halves in turn, to the same order.
 // Deterministic: the same pattern gives the same order on any machine. `with_helper` false:
 // both halves here, in turn. Throws std::runtime_error when METIS fails.
-std::vector<int> order_by_nested_dissection(const SparseMatrix& upper, bool with_helper = true);
+FillOrder order_by_nested_dissection(const SparseMatrix& upper, bool with_helper = true);
 
 inline constexpr int kSplitFrom = 20000;
 

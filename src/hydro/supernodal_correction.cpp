@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -27,7 +28,7 @@ namespace {
 class SupernodalCorrection final : public CorrectedFactor {
  public:
   SupernodalCorrection(cholmod_factor* factor, cholmod_common* common, const SupernodalTree& tree,
-                       const LowRankTerm& term);
+                       const LowRankTerm& term, HalfSolves halves);
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const override;
 
  private:
@@ -56,6 +57,7 @@ class SupernodalCorrection final : public CorrectedFactor {
 
   cholmod_factor* factor_;
   cholmod_common* common_;
+  HalfSolves halves_;
   const int* super_;  // per supernode: its first column (nsuper + 1)
   const int* pi_;     // per supernode: its first row index in rows_ (nsuper + 1)
   const int* px_;     // per supernode: its first value in l_ (nsuper + 1)
@@ -74,8 +76,8 @@ void check_supernodal(const cholmod_factor* factor) {
 }
 
 SupernodalCorrection::SupernodalCorrection(cholmod_factor* factor, cholmod_common* common, const SupernodalTree& tree,
-                                           const LowRankTerm& term)
-    : factor_(factor), common_(common) {
+                                           const LowRankTerm& term, HalfSolves halves)
+    : factor_(factor), common_(common), halves_(std::move(halves)) {
   check_supernodal(factor_);
   if (factor_->xtype != CHOLMOD_REAL || factor_->dtype != CHOLMOD_DOUBLE)
     throw std::logic_error("supernodal correction: needs a numeric factor");
@@ -206,11 +208,19 @@ void SupernodalCorrection::apply(int system, Eigen::VectorXd& x) const {
 
 Eigen::VectorXd SupernodalCorrection::solve(const Eigen::VectorXd& b) const {
   Eigen::VectorXd y = b;
-  apply(CHOLMOD_P, y);
-  apply(CHOLMOD_L, y);
+  if (halves_.forward) {
+    halves_.forward(y);
+  } else {
+    apply(CHOLMOD_P, y);
+    apply(CHOLMOD_L, y);
+  }
   if (!reached_.empty()) correct_half_solved(y);
-  apply(CHOLMOD_Lt, y);
-  apply(CHOLMOD_Pt, y);
+  if (halves_.backward) {
+    halves_.backward(y);
+  } else {
+    apply(CHOLMOD_Lt, y);
+    apply(CHOLMOD_Pt, y);
+  }
   return y;
 }
 
@@ -256,8 +266,9 @@ SupernodalTree make_supernodal_tree(const cholmod_factor* factor) {
 }
 
 std::unique_ptr<CorrectedFactor> correct_supernodal_factor(cholmod_factor* factor, cholmod_common* common,
-                                                           const SupernodalTree& tree, const LowRankTerm& term) {
-  return std::make_unique<SupernodalCorrection>(factor, common, tree, term);
+                                                           const SupernodalTree& tree, const LowRankTerm& term,
+                                                           HalfSolves halves) {
+  return std::make_unique<SupernodalCorrection>(factor, common, tree, term, std::move(halves));
 }
 
 }  // namespace hydrodda::hydro

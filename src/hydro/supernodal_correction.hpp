@@ -6,6 +6,7 @@
 
 #include <cholmod.h>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -23,11 +24,19 @@ struct SupernodalTree {
 // `factor`: a supernodal LLᵀ analysis (or factor) with int indices (std::logic_error otherwise).
 SupernodalTree make_supernodal_tree(const cholmod_factor* factor);
 
+// The two halves of a solve with the factor, L Lᵀ = P A Pᵀ: v ← L⁻¹ P v and v ← Pᵀ L⁻ᵀ v
+// (SupernodalFactorization's, on two threads); empty: CHOLMOD's.
+struct HalfSolves {
+  std::function<void(Eigen::VectorXd&)> forward;
+  std::function<void(Eigen::VectorXd&)> backward;
+};
+
 // `factor`: a numeric supernodal LLᵀ factor with int indices (std::logic_error otherwise), and
-// `tree` its analysis's. The factor and `common` must outlive the result and stay unchanged
-// while it is used. Throws SingularSystem when the corrected matrix is singular to working
-// precision.
+// `tree` its analysis's. The factor and `common` (and what `halves` calls) must outlive the
+// result and stay unchanged while it is used. Throws SingularSystem when the corrected matrix
+// is singular to working precision.
 std::unique_ptr<CorrectedFactor> correct_supernodal_factor(cholmod_factor* factor, cholmod_common* common,
-                                                           const SupernodalTree& tree, const LowRankTerm& term);
+                                                           const SupernodalTree& tree, const LowRankTerm& term,
+                                                           HalfSolves halves = {});
 
 }  // namespace hydrodda::hydro

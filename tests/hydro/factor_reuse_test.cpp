@@ -168,7 +168,7 @@ TEST(FactorReuse, AFractureThatOpensIsSolvedWithinTheBoundOrFactoredAfresh) {
 // correction of the kept factor (kMaxCorrectedElements), instead of a fresh factorisation.
 bool in_patch(int t) {
   const geometry::Point c = mesh::triangle_centroid(layer().mesh, t);
-  return layer().fracture[t] == 1 && c.x > 0.4 && c.x < 0.5;
+  return layer().fracture[t] == 1 && c.x > 0.4 && c.x < 0.45;
 }
 
 TEST(FactorReuse, AFewElementsThatJumpAreCorrectedNotFactoredAfresh) {
@@ -178,7 +178,7 @@ TEST(FactorReuse, AFewElementsThatJumpAreCorrectedNotFactoredAfresh) {
   int patch = 0;
   for (int t = 0; t < l.mesh.triangle_count(); ++t) patch += in_patch(t);
   ASSERT_GT(patch, 20);
-  ASSERT_LE(patch, 150);  // few enough that a correction costs less than a fresh factor
+  ASSERT_LT(patch, 80);  // few enough that a correction costs less than a fresh factor (80: one iteration)
   FlowSolution last = reusing.solve_reusing_factor(permeability(strips, 0.001, 0.0), {});
   for (int pass = 1; pass <= 3; ++pass) {
     auto k = permeability(strips, 0.001, 0.3 * pass);

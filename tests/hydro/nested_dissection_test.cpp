@@ -65,17 +65,31 @@ void expect_same_solution_as_amd(const SparseMatrix& a) {
 TEST(NestedDissection, SplitsALargeGraphAndOrdersEveryUnknownOnce) {
   const SparseMatrix a = grid_matrix(220, 110);  // 24,200 unknowns: split, half to the helper
   ASSERT_GE(a.rows(), kSplitFrom);
-  const std::vector<int> order = order_by_nested_dissection(a);
+  const FillOrder split = order_by_nested_dissection(a);
+  const std::vector<int>& order = split.order;
   EXPECT_TRUE(is_permutation_of_unknowns(order, static_cast<int>(a.rows())));
-  EXPECT_EQ(order, order_by_nested_dissection(a));                          // deterministic
-  EXPECT_EQ(order, order_by_nested_dissection(a, /*with_helper=*/false));  // the helper's half is METIS's
+  EXPECT_EQ(order, order_by_nested_dissection(a).order);                          // deterministic
+  EXPECT_EQ(order, order_by_nested_dissection(a, /*with_helper=*/false).order);  // the helper's half is METIS's
+  // The halves: about half the unknowns each, a separator of about one grid column (110), and
+  // no edge between the halves.
+  EXPECT_GT(split.halves[0], 10000);
+  EXPECT_GT(split.halves[1], 10000);
+  EXPECT_LT(static_cast<int>(a.rows()) - split.halves[0] - split.halves[1], 400);
+  const std::vector<int> part = split.parts();
+  for (int j = 0; j < a.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(a, j); it; ++it)
+      if (part[it.row()] != 2 && part[j] != 2) {
+        EXPECT_EQ(part[it.row()], part[j]);
+      }
   expect_same_solution_as_amd(a);
 }
 
 TEST(NestedDissection, OrdersASmallGraphWhole) {
   const SparseMatrix a = grid_matrix(40, 30);
-  const std::vector<int> order = order_by_nested_dissection(a);
-  EXPECT_TRUE(is_permutation_of_unknowns(order, static_cast<int>(a.rows())));
+  const FillOrder whole = order_by_nested_dissection(a);
+  EXPECT_TRUE(is_permutation_of_unknowns(whole.order, static_cast<int>(a.rows())));
+  EXPECT_EQ(whole.halves[0] + whole.halves[1], 0);
+  EXPECT_TRUE(whole.parts().empty());
   expect_same_solution_as_amd(a);
 }
 
@@ -90,8 +104,9 @@ TEST(NestedDissection, OrdersAGraphInTwoPiecesWithAnEmptySeparator) {
         entries.emplace_back(static_cast<int>(it.row()) + offset, j + offset, it.value());
   SparseMatrix two(2 * n, 2 * n);
   two.setFromTriplets(entries.begin(), entries.end());
-  const std::vector<int> order = order_by_nested_dissection(two);
-  EXPECT_TRUE(is_permutation_of_unknowns(order, 2 * n));
+  const FillOrder order = order_by_nested_dissection(two);
+  EXPECT_TRUE(is_permutation_of_unknowns(order.order, 2 * n));
+  EXPECT_EQ(order.halves[0] + order.halves[1], 2 * n);
   expect_same_solution_as_amd(two);
 }
 
@@ -136,7 +151,7 @@ TEST(NestedDissection, TheHelperOrdersAGraphAsThisProcessDoes) {
   out.read(reinterpret_cast<char*>(order.data()), static_cast<std::streamsize>(order.size() * 4));
   EXPECT_EQ(out.gcount(), static_cast<std::streamsize>(order.size() * 4));
   fs::remove_all(folder);
-  EXPECT_EQ(std::vector<int>(order.begin(), order.end()), order_by_nested_dissection(a));
+  EXPECT_EQ(std::vector<int>(order.begin(), order.end()), order_by_nested_dissection(a).order);
 }
 
 }  // namespace

@@ -1,0 +1,356 @@
+#include "hydro/supernodal_factorization.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "hydro/blas_threads.hpp"
+
+namespace hydrodda::hydro {
+
+// Fortran BLAS and LAPACK, as CHOLMOD calls them (OpenBLAS on Debian; two threads call it at
+// once only where blas_threads.cpp guards its buffers).
+extern "C" {
+void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha, const double* a,
+            const int* lda, const double* beta, double* c, const int* ldc);
+void dgemm_(const char* transa, const char* transb, const int* m, const int* n, const int* k, const double* alpha,
+            const double* a, const int* lda, const double* b, const int* ldb, const double* beta, double* c,
+            const int* ldc);
+void dtrsm_(const char* side, const char* uplo, const char* transa, const char* diag, const int* m, const int* n,
+            const double* alpha, const double* a, const int* lda, double* b, const int* ldb);
+void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
+}
+
+struct SupernodalFactorization::Workspace {
+  std::vector<int> position_in_supernode;  // per row: its place in the supernode being factored
+  std::vector<double> update;              // the dense block one descendant subtracts
+  int failed_column = -1;
+};
+
+namespace {
+
+constexpr int kSeparator = 2;
+
+void check_analysis(const cholmod_factor* factor) {
+  if (!factor || !factor->is_super || factor->itype != CHOLMOD_INT || !factor->Perm)
+    throw std::logic_error("supernodal factorisation: needs CHOLMOD's supernodal analysis with int indices");
+}
+
+}  // namespace
+
+SupernodalFactorization::SupernodalFactorization(cholmod_factor* factor, cholmod_common* common,
+                                                 const SparseMatrix& upper, std::span<const int> part)
+    : factor_(factor), common_(common) {
+  check_analysis(factor_);
+  n_ = static_cast<int>(factor_->n);
+  nsuper_ = static_cast<int>(factor_->nsuper);
+  if (upper.rows() != n_ || upper.cols() != n_ || !upper.isCompressed())
+    throw std::logic_error("supernodal factorisation: the matrix is not the analysed one");
+  if (!part.empty() && static_cast<int>(part.size()) != n_)
+    throw std::logic_error("supernodal factorisation: one part per unknown");
+  super_ = static_cast<const int*>(factor_->super);
+  pi_ = static_cast<const int*>(factor_->pi);
+  px_ = static_cast<const int*>(factor_->px);
+  rows_ = static_cast<const int*>(factor_->s);
+  max_update_size_ = factor_->maxcsize;
+  const int* perm = static_cast<const int*>(factor_->Perm);
+
+  std::vector<int> position(n_);
+  for (int k = 0; k < n_; ++k) position[perm[k]] = k;
+  supernode_of_column_.resize(n_);
+  for (int s = 0; s < nsuper_; ++s)
+    std::fill(supernode_of_column_.begin() + super_[s], supernode_of_column_.begin() + super_[s + 1], s);
+
+  // Each supernode's group: a half's where all its columns are that half's unknowns. A half's
+  // supernode must have only its half's supernodes below it (no edge joins the halves, so none
+  // is, unless the parts are not a separator's): else everything is the separator's.
+  std::vector<int> group(nsuper_, kSeparator);
+  if (!part.empty())
+    for (int s = 0; s < nsuper_; ++s) {
+      const int g = part[perm[super_[s]]];
+      bool same = g == 0 || g == 1;
+      for (int k = super_[s] + 1; same && k < super_[s + 1]; ++k) same = part[perm[k]] == g;
+      if (same) group[s] = g;
+    }
+  bool split = true;
+  for (int s = 0; s < nsuper_ && split; ++s) {
+    const int width = super_[s + 1] - super_[s], height = pi_[s + 1] - pi_[s];
+    if (height == width) continue;  // a root
+    const int parent = supernode_of_column_[rows_[pi_[s] + width]];
+    split = group[parent] == group[s] || group[parent] == kSeparator;
+  }
+  if (!split) std::fill(group.begin(), group.end(), kSeparator);
+  for (int s = 0; s < nsuper_; ++s) members_[group[s]].push_back(s);
+  separator_column_.assign(n_, 0);
+  for (int s : members_[kSeparator])
+    for (int k = super_[s]; k < super_[s + 1]; ++k) {
+      separator_column_[k] = 1;
+      separator_columns_.push_back(k);
+    }
+
+  // Where each entry of the upper triangle lands in the factor's lower triangle: column
+  // min(P(r), P(c)), row max(P(r), P(c)) of P A Pᵀ, found in that column's supernode.
+  const auto target_of = [&](int r, int c, int& s) {
+    const int j = std::min(position[r], position[c]), i = std::max(position[r], position[c]);
+    s = supernode_of_column_[j];
+    const int width = super_[s + 1] - super_[s];
+    const int height = pi_[s + 1] - pi_[s];
+    int place = i - super_[s];
+    if (place >= width) {
+      const int* first = rows_ + pi_[s] + width;
+      const int* found = std::lower_bound(first, rows_ + pi_[s] + height, i);
+      if (found == rows_ + pi_[s] + height || *found != i)
+        throw std::logic_error("supernodal factorisation: an entry outside the analysed pattern");
+      place = width + static_cast<int>(found - first);
+    }
+    return (j - super_[s]) * height + place;
+  };
+  entry_start_.assign(nsuper_ + 1, 0);
+  for (int c = 0; c < n_; ++c)
+    for (int p = upper.outerIndexPtr()[c]; p < upper.outerIndexPtr()[c + 1]; ++p) {
+      int s = 0;
+      target_of(upper.innerIndexPtr()[p], c, s);
+      ++entry_start_[s + 1];
+    }
+  for (int s = 0; s < nsuper_; ++s) entry_start_[s + 1] += entry_start_[s];
+  entry_source_.resize(entry_start_[nsuper_]);
+  entry_target_.resize(entry_start_[nsuper_]);
+  std::vector<std::size_t> next(entry_start_.begin(), entry_start_.end() - 1);
+  for (int c = 0; c < n_; ++c)
+    for (int p = upper.outerIndexPtr()[c]; p < upper.outerIndexPtr()[c + 1]; ++p) {
+      int s = 0;
+      const int target = target_of(upper.innerIndexPtr()[p], c, s);
+      entry_source_[next[s]] = p;
+      entry_target_[next[s]++] = target;
+    }
+  next_row_.assign(nsuper_, 0);
+  next_in_list_.assign(nsuper_, -1);
+}
+
+// Pseudocode: left-looking supernodal Cholesky (Ng and Peyton, "Block sparse Cholesky
+// algorithms on advanced uniprocessor computers", SIAM J. Sci. Comput. 14, 1993; the scheme of
+// CHOLMOD's cholmod_super_numeric, Chen, Davis, Hager and Rajamanickam, ACM TOMS 35, 2008):
+//   for each supernode s, children first:
+//     L_s ← the columns of P A Pᵀ in s
+//     for each d below s whose rows meet s's columns (the lists):
+//       C ← L_d[rows ≥ first of s] L_d[rows in s's columns]ᵀ      dsyrk + dgemm
+//       L_s −= C, scattered by row;  link d to the next supernode its rows meet
+//     L_ss ← chol(L_ss);  L_rest ← L_rest L_ss⁻ᵀ                  dpotrf, dtrsm
+//     link s to the supernode of its first row below
+// The halves' supernodes only ever meet their own half's and the separator's, so each half
+// runs on its own thread with its own lists; the separator's then take the updates of both.
+void SupernodalFactorization::factorize(const SparseMatrix& upper, bool two_threads) {
+  if (upper.rows() != n_ || !upper.isCompressed() ||
+      static_cast<std::size_t>(upper.nonZeros()) != entry_source_.size())
+    throw std::logic_error("supernodal factorisation: the matrix is not the analysed one");
+  if (factor_->xtype == CHOLMOD_PATTERN &&
+      !cholmod_change_factor(CHOLMOD_REAL, true, true, true, true, factor_, common_))
+    throw std::runtime_error("supernodal factorisation: CHOLMOD could not allocate the factor");
+  values_ = upper.valuePtr();
+  for (auto& head : head_) head.assign(nsuper_, -1);
+  Workspace work[2];
+  const int threads = halves_in_parallel(two_threads) ? 2 : 1;
+  // Each half on its thread, or both on one where the runtime grants one (the same values).
+#pragma omp parallel for schedule(static, 1) num_threads(threads)
+  for (int half = 0; half < 2; ++half) factor_group(half, work[half]);
+  int failed = -1;
+  for (const Workspace& w : work)
+    if (w.failed_column >= 0 && (failed < 0 || w.failed_column < failed)) failed = w.failed_column;
+  if (failed < 0) {
+    factor_group(kSeparator, work[0]);
+    failed = work[0].failed_column;
+  }
+  values_ = nullptr;
+  if (failed >= 0) {
+    factor_->minor = static_cast<std::size_t>(failed);
+    throw SingularSystem("the flow matrix is not positive definite (pivot " + std::to_string(failed) + ")");
+  }
+  factor_->minor = factor_->n;
+  factor_->is_ll = true;
+}
+
+bool SupernodalFactorization::halves_in_parallel(bool two_threads) const {
+  return two_threads && !members_[0].empty() && !members_[1].empty() && omp_get_max_threads() >= 2 &&
+         blas_is_thread_safe();
+}
+
+void SupernodalFactorization::factor_group(int group, Workspace& work) {
+  work.position_in_supernode.resize(n_);
+  work.update.resize(max_update_size_);
+  std::vector<int>* lists[3] = {&head_[group], nullptr, nullptr};
+  std::size_t list_count = 1;
+  if (group == kSeparator) {  // the halves' lists end here too
+    lists[0] = &head_[0];
+    lists[1] = &head_[1];
+    lists[2] = &head_[kSeparator];
+    list_count = 3;
+  }
+  for (int s : members_[group]) {
+    factor_supernode(s, std::span<std::vector<int>* const>(lists, list_count), head_[group], work);
+    if (work.failed_column >= 0) return;
+  }
+}
+
+void SupernodalFactorization::factor_supernode(int s, std::span<std::vector<int>* const> lists,
+                                               std::vector<int>& relink, Workspace& work) {
+  static constexpr double one = 1.0, zero = 0.0;
+  double* const x = static_cast<double*>(factor_->x);
+  const int first = super_[s], width = super_[s + 1] - first;
+  const int row_begin = pi_[s], height = pi_[s + 1] - row_begin;
+  double* const ls = x + px_[s];
+  for (int i = 0; i < height; ++i) work.position_in_supernode[rows_[row_begin + i]] = i;
+  std::fill(ls, ls + static_cast<std::size_t>(height) * width, 0.0);
+  for (std::size_t k = entry_start_[s]; k < entry_start_[s + 1]; ++k) ls[entry_target_[k]] = values_[entry_source_[k]];
+
+  for (std::vector<int>* list : lists) {
+    int d = (*list)[s];
+    (*list)[s] = -1;
+    while (d >= 0) {
+      const int following = next_in_list_[d];
+      const int d_width = super_[d + 1] - super_[d];
+      const int d_begin = pi_[d], d_end = pi_[d + 1], d_height = d_end - d_begin;
+      const int meet = d_begin + next_row_[d];  // d's first row in s
+      int past = meet;                           // d's first row below s's columns
+      while (past < d_end && rows_[past] < first + width) ++past;
+      const int inside = past - meet, below = d_end - meet;
+      const double* ld = x + px_[d] + (meet - d_begin);
+      double* c = work.update.data();
+      dsyrk_("L", "N", &inside, &d_width, &one, ld, &d_height, &zero, c, &below);
+      const int rest = below - inside;
+      if (rest > 0)
+        dgemm_("N", "T", &rest, &inside, &d_width, &one, ld + inside, &d_height, ld, &d_height, &zero, c + inside, &below);
+      for (int j = 0; j < inside; ++j) {
+        double* column = ls + static_cast<std::size_t>(rows_[meet + j] - first) * height;
+        const double* cj = c + static_cast<std::size_t>(j) * below;
+        for (int i = j; i < below; ++i) column[work.position_in_supernode[rows_[meet + i]]] -= cj[i];
+      }
+      next_row_[d] = past - d_begin;
+      if (past < d_end) {
+        const int t = supernode_of_column_[rows_[past]];
+        next_in_list_[d] = relink[t];
+        relink[t] = d;
+      }
+      d = following;
+    }
+  }
+
+  int info = 0;
+  dpotrf_("L", &width, ls, &height, &info);
+  if (info != 0) {
+    work.failed_column = first + info - 1;
+    return;
+  }
+  if (height > width) {
+    const int rest = height - width;
+    dtrsm_("R", "L", "T", "N", &rest, &width, &one, ls, &height, ls + width, &height);
+    next_row_[s] = width;
+    const int t = supernode_of_column_[rows_[row_begin + width]];
+    next_in_list_[s] = relink[t];
+    relink[t] = s;
+  }
+}
+
+}  // namespace hydrodda::hydro
+
+namespace hydrodda::hydro {
+
+// Pseudocode (the supernodal triangular solves; written out since they touch no BLAS):
+//   forward, children first:  y_s ← L_ss⁻¹ y_s;  y_r −= L_rs y_s for the rows r below
+//   backward, parents first:  y_s ← L_ss⁻ᵀ (y_s − L_rsᵀ y_r)
+// A half's rows below lie in its half or the separator: each half sums its terms on the
+// separator apart, and the separator's rows take both sums, the first half's first.
+Eigen::VectorXd SupernodalFactorization::solve(const Eigen::VectorXd& b, bool two_threads) const {
+  Eigen::VectorXd x = b;
+  solve_forward(x, two_threads);
+  solve_backward(x, two_threads);
+  return x;
+}
+
+void SupernodalFactorization::solve_forward(Eigen::VectorXd& v, bool two_threads) const {
+  if (v.size() != n_) throw std::logic_error("supernodal solve: the right-hand side has the wrong size");
+  const int* perm = static_cast<const int*>(factor_->Perm);
+  Eigen::VectorXd y(n_);
+  for (int k = 0; k < n_; ++k) y[k] = v[perm[k]];
+  for (std::vector<double>& sums : separator_sums_) {
+    sums.resize(n_);
+    for (int k : separator_columns_) sums[k] = 0.0;
+  }
+  const int threads = halves_in_parallel(two_threads) ? 2 : 1;
+#pragma omp parallel for schedule(static, 1) num_threads(threads)
+  for (int half = 0; half < 2; ++half) forward_over(half, y.data(), separator_sums_[half].data());
+  for (int k : separator_columns_) y[k] -= separator_sums_[0][k] + separator_sums_[1][k];
+  forward_over(kSeparator, y.data(), nullptr);
+  v = std::move(y);
+}
+
+void SupernodalFactorization::solve_backward(Eigen::VectorXd& v, bool two_threads) const {
+  if (v.size() != n_) throw std::logic_error("supernodal solve: the right-hand side has the wrong size");
+  backward_over(kSeparator, v.data());
+  const int threads = halves_in_parallel(two_threads) ? 2 : 1;
+#pragma omp parallel for schedule(static, 1) num_threads(threads)
+  for (int half = 0; half < 2; ++half) backward_over(half, v.data());
+  const int* perm = static_cast<const int*>(factor_->Perm);
+  Eigen::VectorXd x(n_);
+  for (int k = 0; k < n_; ++k) x[perm[k]] = v[k];
+  v = std::move(x);
+}
+
+void SupernodalFactorization::forward_over(int group, double* y, double* separator) const {
+  const double* const x = static_cast<const double*>(factor_->x);
+  std::vector<double> below;
+  for (int s : members_[group]) {
+    const int first = super_[s], width = super_[s + 1] - first;
+    const int* rows = rows_ + pi_[s];
+    const int height = pi_[s + 1] - pi_[s];
+    const double* l = x + px_[s];
+    double* ys = y + first;
+    for (int j = 0; j < width; ++j) {
+      const double* column = l + static_cast<std::size_t>(j) * height;
+      const double v = ys[j] /= column[j];
+      for (int i = j + 1; i < width; ++i) ys[i] -= column[i] * v;
+    }
+    below.assign(height - width, 0.0);
+    for (int j = 0; j < width; ++j) {
+      const double* column = l + static_cast<std::size_t>(j) * height + width;
+      const double v = ys[j];
+      for (int i = 0; i < height - width; ++i) below[i] += column[i] * v;
+    }
+    for (int i = 0; i < height - width; ++i) {
+      const int r = rows[width + i];
+      if (separator && separator_column_[r]) separator[r] += below[i];  // subtracted from y later
+      else y[r] -= below[i];
+    }
+  }
+}
+
+void SupernodalFactorization::backward_over(int group, double* y) const {
+  const double* const x = static_cast<const double*>(factor_->x);
+  std::vector<double> below;
+  for (auto it = members_[group].rbegin(); it != members_[group].rend(); ++it) {
+    const int s = *it;
+    const int first = super_[s], width = super_[s + 1] - first;
+    const int* rows = rows_ + pi_[s];
+    const int height = pi_[s + 1] - pi_[s];
+    const double* l = x + px_[s];
+    double* ys = y + first;
+    below.resize(height - width);
+    for (int i = 0; i < height - width; ++i) below[i] = y[rows[width + i]];
+    for (int j = 0; j < width; ++j) {
+      const double* column = l + static_cast<std::size_t>(j) * height + width;
+      double sum = 0.0;
+      for (int i = 0; i < height - width; ++i) sum += column[i] * below[i];
+      ys[j] -= sum;
+    }
+    for (int j = width - 1; j >= 0; --j) {
+      const double* column = l + static_cast<std::size_t>(j) * height;
+      double sum = 0.0;
+      for (int i = j + 1; i < width; ++i) sum += column[i] * ys[i];
+      ys[j] = (ys[j] - sum) / column[j];
+    }
+  }
+}
+
+}  // namespace hydrodda::hydro
