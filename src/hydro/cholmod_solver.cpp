@@ -76,6 +76,9 @@ class CholmodSolver final : public LinearSolver {
       const FillOrder order = order_by_nested_dissection(upper);
       factor_.analyse_in_order(upper, order.order);
       numeric_.emplace(factor_.factor(), factor_.common(), upper, order.parts());
+      // CHOLMOD's workspace, sized for the analysis (about 20 bytes an unknown): the
+      // factorisation and the solves are numeric_'s, which keeps its own.
+      cholmod_free_work(factor_.common());
     } else {
       factor_.analyzePattern(upper);
     }

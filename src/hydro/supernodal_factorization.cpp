@@ -84,10 +84,10 @@ SupernodalFactorization::SupernodalFactorization(cholmod_factor* factor, cholmod
   }
   if (!split) std::fill(group.begin(), group.end(), kSeparator);
   for (int s = 0; s < nsuper_; ++s) members_[group[s]].push_back(s);
-  separator_column_.assign(n_, 0);
+  separator_slot_.assign(n_, -1);
   for (int s : members_[kSeparator])
     for (int k = super_[s]; k < super_[s + 1]; ++k) {
-      separator_column_[k] = 1;
+      separator_slot_[k] = static_cast<int>(separator_columns_.size());
       separator_columns_.push_back(k);
     }
 
@@ -274,14 +274,12 @@ void SupernodalFactorization::solve_forward(Eigen::VectorXd& v, bool two_threads
   const int* perm = static_cast<const int*>(factor_->Perm);
   Eigen::VectorXd y(n_);
   for (int k = 0; k < n_; ++k) y[k] = v[perm[k]];
-  for (std::vector<double>& sums : separator_sums_) {
-    sums.resize(n_);
-    for (int k : separator_columns_) sums[k] = 0.0;
-  }
+  for (std::vector<double>& sums : separator_sums_) sums.assign(separator_columns_.size(), 0.0);
   const int threads = halves_in_parallel(two_threads) ? 2 : 1;
 #pragma omp parallel for schedule(static, 1) num_threads(threads)
   for (int half = 0; half < 2; ++half) forward_over(half, y.data(), separator_sums_[half].data());
-  for (int k : separator_columns_) y[k] -= separator_sums_[0][k] + separator_sums_[1][k];
+  for (std::size_t t = 0; t < separator_columns_.size(); ++t)
+    y[separator_columns_[t]] -= separator_sums_[0][t] + separator_sums_[1][t];
   forward_over(kSeparator, y.data(), nullptr);
   v = std::move(y);
 }
@@ -320,7 +318,8 @@ void SupernodalFactorization::forward_over(int group, double* y, double* separat
     }
     for (int i = 0; i < height - width; ++i) {
       const int r = rows[width + i];
-      if (separator && separator_column_[r]) separator[r] += below[i];  // subtracted from y later
+      const int slot = separator_slot_[r];
+      if (separator && slot >= 0) separator[slot] += below[i];  // subtracted from y later
       else y[r] -= below[i];
     }
   }

@@ -63,9 +63,9 @@ class SupernodalFactorization {
   const int* px_;     // per supernode: its first value (nsuper + 1)
   const int* rows_;   // each supernode's row indices, its own columns first
   std::vector<int> supernode_of_column_;
-  std::vector<char> separator_column_;       // per column: whether the separator's supernodes hold it
-  std::vector<int> separator_columns_;
-  mutable std::vector<double> separator_sums_[2];  // per half: its forward solve's terms on the separator
+  std::vector<int> separator_columns_;  // the columns of the separator's supernodes
+  std::vector<int> separator_slot_;     // per column: its place in separator_columns_, −1 if none
+  mutable std::vector<double> separator_sums_[2];  // per half: its forward solve's terms there
   std::vector<int> members_[3];  // per group: its supernodes, ascending (children first)
   // The matrix's entries in the factor's layout: per supernode s, for k in
   // [entry_start_[s], entry_start_[s + 1]), the value upper.valuePtr()[entry_source_[k]] goes
