@@ -320,15 +320,18 @@ std::vector<long double> DarcySolver::compute_a_times_h(const std::vector<double
       }
     }
   };
-  // Below some 50,000 triangles a second thread costs more to wake than it saves.
-  const int threads = mesh_.triangle_count() >= 50000 ? std::min(2, omp_get_max_threads()) : 1;
-  if (threads == 1) {
-    add_for_nodes(0, nodes);
-    return ah;
-  }
-#pragma omp parallel for schedule(static, 1) num_threads(2)
-  for (int half = 0; half < 2; ++half) add_for_nodes(half == 0 ? 0 : nodes / 2, half == 0 ? nodes / 2 : nodes);
+  over_two_halves(nodes, add_for_nodes);
   return ah;
+}
+
+// body(first, last) over the halves [0, count / 2) and [count / 2, count), side by side on two
+// threads where the mesh is large enough (from some 50,000 triangles) to pay for waking the
+// second, else one after the other.
+template <class Body>
+void DarcySolver::over_two_halves(int count, Body&& body) const {
+  const int threads = mesh_.triangle_count() >= 50000 ? std::min(2, omp_get_max_threads()) : 1;
+#pragma omp parallel for schedule(static, 1) num_threads(threads)
+  for (int half = 0; half < 2; ++half) body(half == 0 ? 0 : count / 2, half == 0 ? count / 2 : count);
 }
 
 std::vector<double> DarcySolver::expand_heads(const Eigen::VectorXd& x) const {
@@ -747,14 +750,16 @@ FlowSolution DarcySolver::make_solution(const Eigen::VectorXd& x, PermeabilityVi
                           : rho_g * (out.head[v] - mesh_.nodes[v].y); // p = ρg (h − z)
   out.flux.resize(mesh_.triangles.size());
   const double factor = problem_.fluid.conductivity_per_permeability();
-  for (int t = 0; t < mesh_.triangle_count(); ++t) {
-    const auto& tri = mesh_.triangles[t];
-    const auto g = compute_shape_gradients(mesh_.nodes[tri[0]], mesh_.nodes[tri[1]], mesh_.nodes[tri[2]]);
-    // ∇h = Σ h_i ∇φ_i;  q = −K ∇h
-    const geometry::Point grad = out.head[tri[0]] * g[0] + out.head[tri[1]] * g[1] + out.head[tri[2]] * g[2];
-    const Conductivity k = conductivity(permeability[t], factor);
-    out.flux[t] = {-(k.xx * grad.x + k.xy * grad.y), -(k.xy * grad.x + k.yy * grad.y)};
-  }
+  over_two_halves(mesh_.triangle_count(), [&](int first, int last) {
+    for (int t = first; t < last; ++t) {
+      const auto& tri = mesh_.triangles[t];
+      const auto g = compute_shape_gradients(mesh_.nodes[tri[0]], mesh_.nodes[tri[1]], mesh_.nodes[tri[2]]);
+      // ∇h = Σ h_i ∇φ_i;  q = −K ∇h
+      const geometry::Point grad = out.head[tri[0]] * g[0] + out.head[tri[1]] * g[1] + out.head[tri[2]] * g[2];
+      const Conductivity k = conductivity(permeability[t], factor);
+      out.flux[t] = {-(k.xx * grad.x + k.xy * grad.y), -(k.xy * grad.x + k.yy * grad.y)};
+    }
+  });
   compute_boundary_flows(out);
   return out;
 }

@@ -108,6 +108,8 @@ class DarcySolver {
     double net;         // the larger of the boundaries' total inflow and total outflow
   };
   Residual compute_residual(const Eigen::VectorXd& x) const;
+  template <class Body>
+  void over_two_halves(int count, Body&& body) const;
   std::vector<long double> compute_a_times_h(const std::vector<double>& h) const;
   std::vector<double> expand_heads(const Eigen::VectorXd& x) const;
   // One permeability per triangle, each finite and positive definite (std::runtime_error).
