@@ -256,6 +256,25 @@ void SupernodalFactorization::factor_supernode(int s, std::span<std::vector<int>
 }  // namespace hydrodda::hydro
 
 namespace hydrodda::hydro {
+namespace {
+
+// Σ a_i b_i in four running sums, which the compiler can keep in vector registers side by
+// side; one sum waits on its last addition at every term (the backward solve ran 1.35 times
+// as long as the forward one, whose updates are independent).
+double dot(const double* a, const double* b, int n) {
+  double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+  int i = 0;
+  for (; i + 4 <= n; i += 4) {
+    s0 += a[i] * b[i];
+    s1 += a[i + 1] * b[i + 1];
+    s2 += a[i + 2] * b[i + 2];
+    s3 += a[i + 3] * b[i + 3];
+  }
+  for (; i < n; ++i) s0 += a[i] * b[i];
+  return (s0 + s1) + (s2 + s3);
+}
+
+}  // namespace
 
 // Pseudocode (the supernodal triangular solves; written out since they touch no BLAS):
 //   forward, children first:  y_s ← L_ss⁻¹ y_s;  y_r −= L_rs y_s for the rows r below
@@ -337,17 +356,11 @@ void SupernodalFactorization::backward_over(int group, double* y) const {
     double* ys = y + first;
     below.resize(height - width);
     for (int i = 0; i < height - width; ++i) below[i] = y[rows[width + i]];
-    for (int j = 0; j < width; ++j) {
-      const double* column = l + static_cast<std::size_t>(j) * height + width;
-      double sum = 0.0;
-      for (int i = 0; i < height - width; ++i) sum += column[i] * below[i];
-      ys[j] -= sum;
-    }
+    for (int j = 0; j < width; ++j)
+      ys[j] -= dot(l + static_cast<std::size_t>(j) * height + width, below.data(), height - width);
     for (int j = width - 1; j >= 0; --j) {
       const double* column = l + static_cast<std::size_t>(j) * height;
-      double sum = 0.0;
-      for (int i = j + 1; i < width; ++i) sum += column[i] * ys[i];
-      ys[j] = (ys[j] - sum) / column[j];
+      ys[j] = (ys[j] - dot(column + j + 1, ys + j + 1, width - j - 1)) / column[j];
     }
   }
 }
