@@ -108,24 +108,24 @@ SupernodalFactorization::SupernodalFactorization(cholmod_factor* factor, cholmod
     }
     return (j - super_[s]) * height + place;
   };
+  // Found once per entry, then sorted by supernode (a counting sort, entries in their order).
+  const auto entries = static_cast<std::size_t>(upper.nonZeros());
+  std::vector<int> supernode_of_entry(entries), target_of_entry(entries);
   entry_start_.assign(nsuper_ + 1, 0);
   for (int c = 0; c < n_; ++c)
     for (int p = upper.outerIndexPtr()[c]; p < upper.outerIndexPtr()[c + 1]; ++p) {
-      int s = 0;
-      target_of(upper.innerIndexPtr()[p], c, s);
-      ++entry_start_[s + 1];
+      target_of_entry[p] = target_of(upper.innerIndexPtr()[p], c, supernode_of_entry[p]);
+      ++entry_start_[supernode_of_entry[p] + 1];
     }
   for (int s = 0; s < nsuper_; ++s) entry_start_[s + 1] += entry_start_[s];
-  entry_source_.resize(entry_start_[nsuper_]);
-  entry_target_.resize(entry_start_[nsuper_]);
+  entry_source_.resize(entries);
+  entry_target_.resize(entries);
   std::vector<std::size_t> next(entry_start_.begin(), entry_start_.end() - 1);
-  for (int c = 0; c < n_; ++c)
-    for (int p = upper.outerIndexPtr()[c]; p < upper.outerIndexPtr()[c + 1]; ++p) {
-      int s = 0;
-      const int target = target_of(upper.innerIndexPtr()[p], c, s);
-      entry_source_[next[s]] = p;
-      entry_target_[next[s]++] = target;
-    }
+  for (std::size_t p = 0; p < entries; ++p) {
+    const std::size_t k = next[supernode_of_entry[p]]++;
+    entry_source_[k] = static_cast<int>(p);
+    entry_target_[k] = target_of_entry[p];
+  }
   next_row_.assign(nsuper_, 0);
   next_in_list_.assign(nsuper_, -1);
 }
