@@ -6,7 +6,7 @@
 #include <limits>
 #include <optional>
 
-#include "dda/parallel.hpp"
+#include "geometry/parallel.hpp"
 #include "geometry/spatial_grid.hpp"
 
 namespace hydrodda::coupling {
@@ -143,8 +143,8 @@ std::vector<double> apertures_at(std::size_t count, Centroid&& centroid, std::sp
   const geometry::SpatialGrid grid(boxes, 1.0);
   std::vector<double> aperture(count, 0.0);
   // Each element on its own: the halves side by side give the same apertures as one thread.
-  dda::run_two_parts(count >= 20000, [&](int part) {
-    const auto [begin, end] = dda::half_range(part, count);
+  geometry::run_two_parts(count >= 20000, [&](int part) {
+    const auto [begin, end] = geometry::half_range(part, count);
     std::vector<Wall> walls;
     for (std::size_t e = begin; e < end; ++e)
       if (fracture_area[e] > 0.0) aperture[e] = compute_local_aperture(centroid(e), blocks, grid, domain, reach, walls);

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "dda/parallel.hpp"
+#include "geometry/parallel.hpp"
 
 namespace hydrodda::coupling {
 
@@ -78,8 +78,8 @@ PorosityField PorosityMapper::compute(std::span<const geometry::Polygon> blocks,
   field.fracture_area.resize(n);
   field.porosity.resize(n);
   // Each element on its own: the halves side by side give the same field as one thread.
-  dda::run_two_parts(n >= 20000, [&](int part) {
-    const auto [begin, end] = dda::half_range(part, n);
+  geometry::run_two_parts(n >= 20000, [&](int part) {
+    const auto [begin, end] = geometry::half_range(part, n);
     std::vector<BlockPiece>* own = pieces ? &pieces->halves_[static_cast<std::size_t>(part)] : nullptr;
     if (own) own->clear();
     Scratch scratch;

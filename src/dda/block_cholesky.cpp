@@ -10,7 +10,7 @@
 #include <Eigen/Cholesky>
 
 #include "dda/array_growth.hpp"
-#include "dda/parallel.hpp"
+#include "geometry/parallel.hpp"
 
 namespace hydrodda::dda {
 
@@ -301,7 +301,7 @@ bool BlockCholesky::factorise(const BlockMatrix& a, const RankOneTerms& springs,
   const auto tri = [](std::size_t t) { return t * (t + 1) / 2; };
   for (Matrix6Array& sums : top_sums_) resize_for_overwrite(sums, tri(top_nodes.size()));
   std::array<bool, 2> part_ok{true, true};
-  run_two_parts(run_parts_in_parallel(), [&](int p) {
+  geometry::run_two_parts(run_parts_in_parallel(), [&](int p) {
     Matrix6Array& x = row_work_[p];
     Reach& r = reaches[p];
     for (int k : part_columns_[p]) {
@@ -593,7 +593,7 @@ void BlockCholesky::forward(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::V
   u.resize(6 * n);
   for (int k = 0; k < n; ++k) u.segment<6>(6 * k) = x.segment<6>(6 * order_[k]);
   const Sweep l = sweep();
-  run_two_parts(run_parts_in_parallel(),
+  geometry::run_two_parts(run_parts_in_parallel(),
                 [&](int p) { forward_sweep(l, part_columns_[p], u.data(), top_updates_[p].data()); });
   const std::vector<int>& top = part_columns_[2];
   for (std::size_t t = 0; t < top.size(); ++t) {
@@ -609,7 +609,7 @@ void BlockCholesky::forward(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::V
 void BlockCholesky::backward(Eigen::VectorXd& u, Eigen::Ref<Eigen::VectorXd> x) const {
   const Sweep l = sweep();
   backward_sweep(l, part_columns_[2], u.data());
-  run_two_parts(run_parts_in_parallel(), [&](int p) { backward_sweep(l, part_columns_[p], u.data()); });
+  geometry::run_two_parts(run_parts_in_parallel(), [&](int p) { backward_sweep(l, part_columns_[p], u.data()); });
   for (int k = 0; k < block_count_; ++k) x.segment<6>(6 * order_[k]) = u.segment<6>(6 * k);
 }
 

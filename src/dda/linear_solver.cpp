@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <array>
 
-#include "dda/parallel.hpp"
+#include "geometry/parallel.hpp"
 
 namespace hydrodda::dda {
 
@@ -57,7 +57,7 @@ bool find_changed_terms(const RankOneTerms& now, const RankOneTerms& before, std
                                  before.begin());
   std::array<RankOneTerms, 2> second;  // the second half's changes: added, removed
   std::array<bool, 2> found{};
-  run_two_parts(worth_two_threads(now.size() + before.size()), [&](int part) {
+  geometry::run_two_parts(worth_two_threads(now.size() + before.size()), [&](int part) {
     found[part] = part == 0 ? walk_changed_terms(now, 0, middle, before, 0, before_middle, limit, added, removed)
                             : walk_changed_terms(now, middle, now.size(), before, before_middle, before.size(),
                                                  limit, second[0], second[1]);
@@ -159,10 +159,10 @@ void multiply_with_springs(const BlockMatrix& base, const RankOneTerms& springs,
 void SpringMatrixProduct::reset(const BlockMatrix& base, const RankOneTerms& springs) {
   base_ = &base;
   springs_ = &springs;
-  split_ = worth_two_threads(springs.size()) && two_threads_available();
+  split_ = worth_two_threads(springs.size()) && geometry::two_threads_available();
   if (!split_) return;
-  run_two_parts(true, [&](int part) {
-    const auto [begin, end] = half_range(part, static_cast<std::size_t>(base.block_count));
+  geometry::run_two_parts(true, [&](int part) {
+    const auto [begin, end] = geometry::half_range(part, static_cast<std::size_t>(base.block_count));
     const auto inside = [&](int block) { return block >= static_cast<int>(begin) && block < static_cast<int>(end); };
     std::vector<int>& touching = touching_[part];
     touching.clear();
@@ -180,8 +180,8 @@ void SpringMatrixProduct::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y)
     return;
   }
   y.resize(base_->size());
-  run_two_parts(true, [&](int part) {
-    const auto [begin, end] = half_range(part, static_cast<std::size_t>(base_->block_count));
+  geometry::run_two_parts(true, [&](int part) {
+    const auto [begin, end] = geometry::half_range(part, static_cast<std::size_t>(base_->block_count));
     base_->multiply_rows(x, y, static_cast<int>(begin), static_cast<int>(end));
     for (const int entry : touching_[part]) {
       const RankOneTerm& t = (*springs_)[static_cast<std::size_t>(entry >> 2)];

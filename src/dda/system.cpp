@@ -11,7 +11,7 @@
 #include "dda/anderson.hpp"
 #include "dda/array_growth.hpp"
 #include "dda/initial_stress.hpp"
-#include "dda/parallel.hpp"
+#include "geometry/parallel.hpp"
 
 namespace hydrodda::dda {
 
@@ -126,7 +126,7 @@ System::System(ModelDefinition def, std::unique_ptr<LinearSolver> solver)
   contact_search_ = ContactSearch(contact_distance_,
                                   settings_.contact_skin >= 0 ? settings_.contact_skin : 0.2 * contact_distance_);
   for (const Block& b : blocks_) detection_.fixed.push_back(b.dof < 0);
-  if (many_blocks()) start_second_thread();
+  if (many_blocks()) geometry::start_second_thread();
 }
 
 void System::check_tractions(std::span<const EdgeTraction> tractions) const {
@@ -197,8 +197,8 @@ void System::detect_contacts() {
   contact_search_.find(buffers.polygons, buffers.fixed, candidates);
   resize_for_overwrite(active_, candidates.size());
   // The linearisation in two halves, side by side on two threads where there are two.
-  run_two_parts(many_contacts_to_linearise(), [&](int part) {
-    const auto [begin, end] = half_range(part, candidates.size());
+  geometry::run_two_parts(many_contacts_to_linearise(), [&](int part) {
+    const auto [begin, end] = geometry::half_range(part, candidates.size());
     if (begin == end) return;
     // Both lists are in key order: one walk finds each candidate's record from the last step.
     auto record = std::lower_bound(records_.begin(), records_.end(), candidates[begin].key,
@@ -284,7 +284,7 @@ void System::assemble_blocks(double dt, Matrix6Array& k, Eigen::VectorXd& f_base
         fixed_stiffness_ * t.transpose() * Eigen::Vector2d(target_displacement.x, target_displacement.y);
   };
   // Each block writes only its own rows.
-  for_each_in_halves(many_blocks(), blocks_.size(), [&](std::size_t bi) {
+  geometry::for_each_in_halves(many_blocks(), blocks_.size(), [&](std::size_t bi) {
     const Block& b = blocks_[bi];
     if (b.dof < 0) return;
     const Material& mat = materials_[b.material];
@@ -364,7 +364,7 @@ void System::factor_with_contacts() {
   struct Counts {
     std::size_t springs = 0, closed = 0;
   };
-  const auto counts = results_in_halves(many_contacts(), active_.size(), [&](std::size_t begin, std::size_t end) {
+  const auto counts = geometry::results_in_halves(many_contacts(), active_.size(), [&](std::size_t begin, std::size_t end) {
     Counts count;
     for (std::size_t i = begin; i < end; ++i) {
       const ContactState state = active_[i].record.state;
@@ -376,8 +376,8 @@ void System::factor_with_contacts() {
   resize_for_overwrite(terms, counts[0].springs + counts[1].springs);
   resize_for_overwrite(closed_, counts[0].closed + counts[1].closed);
   const double root_penalty = std::sqrt(penalty_);
-  run_two_parts(many_contacts(), [&](int part) {
-    const auto [begin, end] = half_range(part, active_.size());
+  geometry::run_two_parts(many_contacts(), [&](int part) {
+    const auto [begin, end] = geometry::half_range(part, active_.size());
     RankOneTerm* next = terms.data() + (part == 0 ? 0 : counts[0].springs);
     int* next_closed = closed_.data() + (part == 0 ? 0 : counts[0].closed);
     const auto add_term = [&](const ActiveContact& c, int kind, const Vector6& e_i, const Vector6& e_j) {
@@ -412,8 +412,8 @@ Eigen::VectorXd System::assemble_contact_rhs(const Eigen::VectorXd& f_base) cons
   // The halves of the contacts load the same blocks: each adds into its own vector, the
   // second's added to the first's after.
   Eigen::VectorXd second = Eigen::VectorXd::Zero(f_base.size());
-  run_two_parts(true, [&](int part) {
-    const auto [begin, end] = half_range(part, closed_.size());
+  geometry::run_two_parts(true, [&](int part) {
+    const auto [begin, end] = geometry::half_range(part, closed_.size());
     add_contact_loads(begin, end, part == 0 ? f : second);
   });
   f += second;
@@ -479,7 +479,7 @@ double System::compute_shear_strength(const ActiveContact& c, double normal_forc
 }
 
 System::ContactForceExtent System::update_contact_forces(const Eigen::VectorXd& d) {
-  const auto halves = results_in_halves(many_closed_contacts(), closed_.size(), [&](std::size_t begin, std::size_t end) {
+  const auto halves = geometry::results_in_halves(many_closed_contacts(), closed_.size(), [&](std::size_t begin, std::size_t end) {
     ContactForceExtent extent;
     for (std::size_t k = begin; k < end; ++k) {
       ActiveContact& c = active_[closed_[k]];
@@ -496,7 +496,7 @@ System::ContactForceExtent System::update_contact_forces(const Eigen::VectorXd& 
 }
 
 double System::largest_vertex_motion(const Eigen::VectorXd& change) const {
-  const auto largest = results_in_halves(many_blocks(), blocks_.size(), [&](std::size_t begin, std::size_t end) {
+  const auto largest = geometry::results_in_halves(many_blocks(), blocks_.size(), [&](std::size_t begin, std::size_t end) {
     double half_largest = 0.0;  // squared: one square root at the end
     for (std::size_t bi = begin; bi < end; ++bi) {
       const Block& b = blocks_[bi];
@@ -668,7 +668,7 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
     // The tension a closed contact may carry past T l: round-off with the tension cutoff, else
     // the force of the band's length on the penalty spring.
     const double tension_allowance = settings_.tension_cutoff ? 1e-9 * force_scale : penalty_ * band;
-    const auto changed = results_in_halves(many_contacts(), active_.size(), [&](std::size_t begin, std::size_t end) {
+    const auto changed = geometry::results_in_halves(many_contacts(), active_.size(), [&](std::size_t begin, std::size_t end) {
       bool any = false;
       for (std::size_t i = begin; i < end; ++i) any = update_state(active_[i], d, band, tension_allowance) || any;
       return any;
@@ -750,7 +750,7 @@ void System::commit_step(const Eigen::VectorXd& d, double dt) {
   };
   for (auto* list : {&fixed_points_, &load_points_, &displacement_points_, &measured_})
     for (TrackedPoint& tp : *list) move(tp);
-  for_each_in_halves(many_blocks(), blocks_.size(), [&](std::size_t bi) {
+  geometry::for_each_in_halves(many_blocks(), blocks_.size(), [&](std::size_t bi) {
     Block& b = blocks_[bi];
     if (b.dof < 0) return;
     const Vector6 db = d.segment<6>(6 * b.dof);
@@ -766,7 +766,7 @@ void System::commit_step(const Eigen::VectorXd& d, double dt) {
     b.moments = compute_moments(b.polygon);
   });
   resize_for_overwrite(records_, active_.size());  // active_ is in key order, and so stays records_
-  for_each_in_halves(many_contacts(), active_.size(), [&](std::size_t i) {
+  geometry::for_each_in_halves(many_contacts(), active_.size(), [&](std::size_t i) {
     const ActiveContact& c = active_[i];
     ContactRecord r = c.record;
     r.penetration = compute_penetration(c, d);

@@ -110,18 +110,20 @@ class CholmodSolver final : public LinearSolver {
     return x;
   }
 
-  std::string name() const override { return "CHOLMOD supernodal LLT"; }
+  std::string name() const override {
+    return numeric_ ? "supernodal LLT on CHOLMOD's analysis" : "CHOLMOD supernodal LLT";
+  }
 
   std::unique_ptr<CorrectedFactor> correct(const LowRankTerm& term) const override {
     if (!factored_) throw std::logic_error("CholmodSolver::correct before factorize");
-    if (!tree_) tree_ = make_supernodal_tree(factor_.factor());
-    HalfSolves halves;
     if (numeric_) {
       const SupernodalFactorization* numeric = &*numeric_;
-      halves.forward = [numeric](Eigen::VectorXd& v) { numeric->solve_forward(v, /*two_threads=*/true); };
-      halves.backward = [numeric](Eigen::VectorXd& v) { numeric->solve_backward(v, /*two_threads=*/true); };
+      HalfSolves halves{[numeric](Eigen::VectorXd& v) { numeric->solve_forward(v, /*two_threads=*/true); },
+                        [numeric](Eigen::VectorXd& v) { numeric->solve_backward(v, /*two_threads=*/true); }};
+      return correct_supernodal_factor(factor_.factor(), factor_.common(), numeric->tree(), term, std::move(halves));
     }
-    return correct_supernodal_factor(factor_.factor(), factor_.common(), *tree_, term, std::move(halves));
+    if (!tree_) tree_ = make_supernodal_tree(factor_.factor());
+    return correct_supernodal_factor(factor_.factor(), factor_.common(), *tree_, term);
   }
 
  private:
@@ -129,7 +131,8 @@ class CholmodSolver final : public LinearSolver {
   SupernodalLLT factor_;
   bool analysed_ = false;
   bool factored_ = false;
-  mutable std::optional<SupernodalTree> tree_;  // of the analysis, made at its first correction
+  // Of CHOLMOD's own analysis (the AMD ordering), made at its first correction; numeric_ has its own.
+  mutable std::optional<SupernodalTree> tree_;
   // The numeric factorisation on two threads, of the nested-dissection analysis.
   std::optional<SupernodalFactorization> numeric_;
 };

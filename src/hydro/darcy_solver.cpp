@@ -1,13 +1,13 @@
 #include "hydro/darcy_solver.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
+
+#include "geometry/parallel.hpp"
 
 namespace hydrodda::hydro {
 namespace {
@@ -324,14 +324,14 @@ std::vector<long double> DarcySolver::compute_a_times_h(const std::vector<double
   return ah;
 }
 
-// body(first, last) over the halves [0, count / 2) and [count / 2, count), side by side on two
-// threads where the mesh is large enough (from some 50,000 triangles) to pay for waking the
-// second, else one after the other.
+// body(first, last) over the two halves of 0 … count − 1, side by side on two threads where the
+// mesh is large enough (from some 50,000 triangles) to pay for waking the second.
 template <class Body>
 void DarcySolver::over_two_halves(int count, Body&& body) const {
-  const int threads = mesh_.triangle_count() >= 50000 ? std::min(2, omp_get_max_threads()) : 1;
-#pragma omp parallel for schedule(static, 1) num_threads(threads)
-  for (int half = 0; half < 2; ++half) body(half == 0 ? 0 : count / 2, half == 0 ? count / 2 : count);
+  geometry::run_two_parts(mesh_.triangle_count() >= 50000, [&](int part) {
+    const auto [first, last] = geometry::half_range(part, static_cast<std::size_t>(count));
+    body(static_cast<int>(first), static_cast<int>(last));
+  });
 }
 
 std::vector<double> DarcySolver::expand_heads(const Eigen::VectorXd& x) const {

@@ -1,12 +1,12 @@
 #include "hydro/supernodal_factorization.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
+#include "geometry/parallel.hpp"
 #include "hydro/blas_threads.hpp"
 
 namespace hydrodda::hydro {
@@ -24,27 +24,21 @@ void dtrsm_(const char* side, const char* uplo, const char* transa, const char* 
 void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
 }
 
-struct SupernodalFactorization::Workspace {
-  std::vector<int> position_in_supernode;  // per row: its place in the supernode being factored
-  std::vector<double> update;              // the dense block one descendant subtracts
-  int failed_column = -1;
-};
-
 namespace {
 
 constexpr int kSeparator = 2;
 
-void check_analysis(const cholmod_factor* factor) {
+const cholmod_factor* checked_analysis(const cholmod_factor* factor) {
   if (!factor || !factor->is_super || factor->itype != CHOLMOD_INT || !factor->Perm)
     throw std::logic_error("supernodal factorisation: needs CHOLMOD's supernodal analysis with int indices");
+  return factor;
 }
 
 }  // namespace
 
 SupernodalFactorization::SupernodalFactorization(cholmod_factor* factor, cholmod_common* common,
                                                  const SparseMatrix& upper, std::span<const int> part)
-    : factor_(factor), common_(common) {
-  check_analysis(factor_);
+    : factor_(factor), common_(common), tree_(make_supernodal_tree(checked_analysis(factor))) {
   n_ = static_cast<int>(factor_->n);
   nsuper_ = static_cast<int>(factor_->nsuper);
   if (upper.rows() != n_ || upper.cols() != n_ || !upper.isCompressed())
@@ -55,14 +49,10 @@ SupernodalFactorization::SupernodalFactorization(cholmod_factor* factor, cholmod
   pi_ = static_cast<const int*>(factor_->pi);
   px_ = static_cast<const int*>(factor_->px);
   rows_ = static_cast<const int*>(factor_->s);
-  max_update_size_ = factor_->maxcsize;
   const int* perm = static_cast<const int*>(factor_->Perm);
 
-  std::vector<int> position(n_);
-  for (int k = 0; k < n_; ++k) position[perm[k]] = k;
-  supernode_of_column_.resize(n_);
-  for (int s = 0; s < nsuper_; ++s)
-    std::fill(supernode_of_column_.begin() + super_[s], supernode_of_column_.begin() + super_[s + 1], s);
+  const std::vector<int>& position = tree_.position;
+  const std::vector<int>& supernode_of_column = tree_.supernode_of_column;
 
   // Each supernode's group: a half's where all its columns are that half's unknowns. A half's
   // supernode must have only its half's supernodes below it (no edge joins the halves, so none
@@ -77,10 +67,8 @@ SupernodalFactorization::SupernodalFactorization(cholmod_factor* factor, cholmod
     }
   bool split = true;
   for (int s = 0; s < nsuper_ && split; ++s) {
-    const int width = super_[s + 1] - super_[s], height = pi_[s + 1] - pi_[s];
-    if (height == width) continue;  // a root
-    const int parent = supernode_of_column_[rows_[pi_[s] + width]];
-    split = group[parent] == group[s] || group[parent] == kSeparator;
+    const int parent = tree_.parent[s];
+    split = parent < 0 || group[parent] == group[s] || group[parent] == kSeparator;
   }
   if (!split) std::fill(group.begin(), group.end(), kSeparator);
   for (int s = 0; s < nsuper_; ++s) members_[group[s]].push_back(s);
@@ -95,7 +83,7 @@ SupernodalFactorization::SupernodalFactorization(cholmod_factor* factor, cholmod
   // min(P(r), P(c)), row max(P(r), P(c)) of P A Pᵀ, found in that column's supernode.
   const auto target_of = [&](int r, int c, int& s) {
     const int j = std::min(position[r], position[c]), i = std::max(position[r], position[c]);
-    s = supernode_of_column_[j];
+    s = supernode_of_column[j];
     const int width = super_[s + 1] - super_[s];
     const int height = pi_[s + 1] - pi_[s];
     int place = i - super_[s];
@@ -128,6 +116,10 @@ SupernodalFactorization::SupernodalFactorization(cholmod_factor* factor, cholmod
   }
   next_row_.assign(nsuper_, 0);
   next_in_list_.assign(nsuper_, -1);
+  for (Workspace& w : workspaces_) {
+    w.position_in_supernode.resize(n_);
+    w.update.resize(factor_->maxcsize);
+  }
 }
 
 // Pseudocode: left-looking supernodal Cholesky (Ng and Peyton, "Block sparse Cholesky
@@ -149,13 +141,14 @@ void SupernodalFactorization::factorize(const SparseMatrix& upper, bool two_thre
   if (factor_->xtype == CHOLMOD_PATTERN &&
       !cholmod_change_factor(CHOLMOD_REAL, true, true, true, true, factor_, common_))
     throw std::runtime_error("supernodal factorisation: CHOLMOD could not allocate the factor");
-  values_ = upper.valuePtr();
   for (auto& head : head_) head.assign(nsuper_, -1);
-  Workspace work[2];
-  const int threads = halves_in_parallel(two_threads) ? 2 : 1;
+  std::array<Workspace, 2>& work = workspaces_;
+  for (Workspace& w : work) {
+    w.values = upper.valuePtr();
+    w.failed_column = -1;
+  }
   // Each half on its thread, or both on one where the runtime grants one (the same values).
-#pragma omp parallel for schedule(static, 1) num_threads(threads)
-  for (int half = 0; half < 2; ++half) factor_group(half, work[half]);
+  geometry::run_two_parts(halves_in_parallel(two_threads), [&](int half) { factor_group(half, work[half]); });
   int failed = -1;
   for (const Workspace& w : work)
     if (w.failed_column >= 0 && (failed < 0 || w.failed_column < failed)) failed = w.failed_column;
@@ -163,7 +156,6 @@ void SupernodalFactorization::factorize(const SparseMatrix& upper, bool two_thre
     factor_group(kSeparator, work[0]);
     failed = work[0].failed_column;
   }
-  values_ = nullptr;
   if (failed >= 0) {
     factor_->minor = static_cast<std::size_t>(failed);
     throw SingularSystem("the flow matrix is not positive definite (pivot " + std::to_string(failed) + ")");
@@ -173,13 +165,10 @@ void SupernodalFactorization::factorize(const SparseMatrix& upper, bool two_thre
 }
 
 bool SupernodalFactorization::halves_in_parallel(bool two_threads) const {
-  return two_threads && !members_[0].empty() && !members_[1].empty() && omp_get_max_threads() >= 2 &&
-         blas_is_thread_safe();
+  return two_threads && !members_[0].empty() && !members_[1].empty() && blas_is_thread_safe();
 }
 
 void SupernodalFactorization::factor_group(int group, Workspace& work) {
-  work.position_in_supernode.resize(n_);
-  work.update.resize(max_update_size_);
   std::vector<int>* lists[3] = {&head_[group], nullptr, nullptr};
   std::size_t list_count = 1;
   if (group == kSeparator) {  // the halves' lists end here too
@@ -203,7 +192,7 @@ void SupernodalFactorization::factor_supernode(int s, std::span<std::vector<int>
   double* const ls = x + px_[s];
   for (int i = 0; i < height; ++i) work.position_in_supernode[rows_[row_begin + i]] = i;
   std::fill(ls, ls + static_cast<std::size_t>(height) * width, 0.0);
-  for (std::size_t k = entry_start_[s]; k < entry_start_[s + 1]; ++k) ls[entry_target_[k]] = values_[entry_source_[k]];
+  for (std::size_t k = entry_start_[s]; k < entry_start_[s + 1]; ++k) ls[entry_target_[k]] = work.values[entry_source_[k]];
 
   for (std::vector<int>* list : lists) {
     int d = (*list)[s];
@@ -229,7 +218,7 @@ void SupernodalFactorization::factor_supernode(int s, std::span<std::vector<int>
       }
       next_row_[d] = past - d_begin;
       if (past < d_end) {
-        const int t = supernode_of_column_[rows_[past]];
+        const int t = tree_.supernode_of_column[rows_[past]];
         next_in_list_[d] = relink[t];
         relink[t] = d;
       }
@@ -247,7 +236,7 @@ void SupernodalFactorization::factor_supernode(int s, std::span<std::vector<int>
     const int rest = height - width;
     dtrsm_("R", "L", "T", "N", &rest, &width, &one, ls, &height, ls + width, &height);
     next_row_[s] = width;
-    const int t = supernode_of_column_[rows_[row_begin + width]];
+    const int t = tree_.supernode_of_column[rows_[row_begin + width]];
     next_in_list_[s] = relink[t];
     relink[t] = s;
   }
@@ -294,9 +283,8 @@ void SupernodalFactorization::solve_forward(Eigen::VectorXd& v, bool two_threads
   Eigen::VectorXd y(n_);
   for (int k = 0; k < n_; ++k) y[k] = v[perm[k]];
   for (std::vector<double>& sums : separator_sums_) sums.assign(separator_columns_.size(), 0.0);
-  const int threads = halves_in_parallel(two_threads) ? 2 : 1;
-#pragma omp parallel for schedule(static, 1) num_threads(threads)
-  for (int half = 0; half < 2; ++half) forward_over(half, y.data(), separator_sums_[half].data());
+  geometry::run_two_parts(halves_in_parallel(two_threads),
+                          [&](int half) { forward_over(half, y.data(), separator_sums_[half].data()); });
   for (std::size_t t = 0; t < separator_columns_.size(); ++t)
     y[separator_columns_[t]] -= separator_sums_[0][t] + separator_sums_[1][t];
   forward_over(kSeparator, y.data(), nullptr);
@@ -306,9 +294,7 @@ void SupernodalFactorization::solve_forward(Eigen::VectorXd& v, bool two_threads
 void SupernodalFactorization::solve_backward(Eigen::VectorXd& v, bool two_threads) const {
   if (v.size() != n_) throw std::logic_error("supernodal solve: the right-hand side has the wrong size");
   backward_over(kSeparator, v.data());
-  const int threads = halves_in_parallel(two_threads) ? 2 : 1;
-#pragma omp parallel for schedule(static, 1) num_threads(threads)
-  for (int half = 0; half < 2; ++half) backward_over(half, v.data());
+  geometry::run_two_parts(halves_in_parallel(two_threads), [&](int half) { backward_over(half, v.data()); });
   const int* perm = static_cast<const int*>(factor_->Perm);
   Eigen::VectorXd x(n_);
   for (int k = 0; k < n_; ++k) x[perm[k]] = v[k];

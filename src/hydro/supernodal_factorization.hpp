@@ -8,6 +8,7 @@
 
 #include <cholmod.h>
 
+#include <array>
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -15,6 +16,7 @@
 #include <Eigen/Core>
 
 #include "hydro/linear_solver.hpp"
+#include "hydro/supernodal_correction.hpp"
 
 namespace hydrodda::hydro {
 
@@ -42,9 +44,18 @@ class SupernodalFactorization {
   // How many supernodes each group holds: the two halves' and the separator's (with any that
   // mixes them). Tests check that a split matrix's work is in fact split.
   std::size_t supernodes_in(int group) const { return members_[group].size(); }
+  // The analysis's elimination tree, which the low-rank correction walks too.
+  const SupernodalTree& tree() const { return tree_; }
 
  private:
-  struct Workspace;  // one thread's: the row map and the update's dense block
+  // One thread's, made once per analysis: the matrix's values while a factorisation runs, the
+  // row map and the dense block one descendant subtracts (CHOLMOD's maxcsize at most).
+  struct Workspace {
+    const double* values = nullptr;
+    std::vector<int> position_in_supernode;  // per row: its place in the supernode being factored
+    std::vector<double> update;
+    int failed_column = -1;
+  };
   void factor_group(int group, Workspace& work);
   void factor_supernode(int s, std::span<std::vector<int>* const> lists, std::vector<int>& relink, Workspace& work);
   bool halves_in_parallel(bool two_threads) const;
@@ -62,7 +73,7 @@ class SupernodalFactorization {
   const int* pi_;     // per supernode: its first row index in rows_ (nsuper + 1)
   const int* px_;     // per supernode: its first value (nsuper + 1)
   const int* rows_;   // each supernode's row indices, its own columns first
-  std::vector<int> supernode_of_column_;
+  SupernodalTree tree_;
   std::vector<int> separator_columns_;  // the columns of the separator's supernodes
   std::vector<int> separator_slot_;     // per column: its place in separator_columns_, −1 if none
   mutable std::vector<double> separator_sums_[2];  // per half: its forward solve's terms there
@@ -78,8 +89,7 @@ class SupernodalFactorization {
   std::vector<int> next_row_;
   std::vector<int> next_in_list_;
   std::vector<int> head_[3];
-  std::size_t max_update_size_;
-  const double* values_ = nullptr;  // the matrix's, while a factorisation runs
+  std::array<Workspace, 2> workspaces_;  // the halves', the first also the separator's
 };
 
 }  // namespace hydrodda::hydro

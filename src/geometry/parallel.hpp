@@ -11,7 +11,7 @@
 
 #include <omp.h>
 
-namespace hydrodda::dda {
+namespace hydrodda::geometry {
 
 // Runs task(0) and task(1); on two threads if `parallel` (the caller's judgement that the
 // parts are large enough to pay for waking a second thread) and two are available.
@@ -67,4 +67,4 @@ auto results_in_halves(bool parallel, std::size_t count, Part&& part) {
   return results;
 }
 
-}  // namespace hydrodda::dda
+}  // namespace hydrodda::geometry
