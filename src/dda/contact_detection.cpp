@@ -130,7 +130,6 @@ void test_vertex_edge(std::span<const Point> va, int a, int v, std::span<const P
   // model are never tested here; after the wedge test, as it is the dearer.
   const double tie = kCornerTieTolerance * distance;
   if (-gap > tie && !is_entrance_edge(p, eb, e, -gap, tie)) return;
-  const double length_share = compute_tributary_length(p, before, after, e0, e1, distance);
   // At or past an end of the edge (vertex–vertex): keep only the entrance edge, the one of
   // the two edges meeting there whose line the vertex is farther outside (Shi 1988, §4.3).
   // Corners that coincide (side-by-side blocks) leave both gaps equal up to the motion of a
@@ -144,6 +143,9 @@ void test_vertex_edge(std::span<const Point> va, int a, int v, std::span<const P
     const double other_gap = compute_gap(p, other_a, other_b);
     if (other_gap > gap + tie) return;
     if (other_gap >= gap - tie) {
+      // The tributary lengths only here, where they break the tie: a contact's own is made
+      // when it closes (tributary_length), not for every candidate of every step.
+      const double length_share = compute_tributary_length(p, before, after, e0, e1, distance);
       const double other_share = compute_tributary_length(p, before, after, other_a, other_b, distance);
       if (other_share > length_share || (other_share == length_share && other < e)) return;
     }
@@ -153,7 +155,6 @@ void test_vertex_edge(std::span<const Point> va, int a, int v, std::span<const P
   c.key = {a, v, b, e};
   c.edge_ratio = std::clamp(t, 0.0, 1.0);
   c.penetration = -gap;
-  c.length = length_share;
   out.push_back(c);
 }
 
@@ -203,6 +204,13 @@ FacesAlongEdge find_faces_along_edge(Point p, Point before, Point after, Point a
     faces.face[faces.count++] = {std::clamp(tp, 0.0, length), std::clamp(tq, 0.0, length)};
   }
   return faces;
+}
+
+double tributary_length(std::span<const Point> va, int vertex, std::span<const Point> eb, int edge, double distance) {
+  const int nv = static_cast<int>(va.size());
+  const int ne = static_cast<int>(eb.size());
+  return compute_tributary_length(va[vertex], va[(vertex + nv - 1) % nv], va[(vertex + 1) % nv], eb[edge],
+                                  eb[(edge + 1) % ne], distance);
 }
 
 std::size_t find_vertex_edge_combinations(std::span<const Point> polygon_a, std::span<const Point> polygon_b,

@@ -28,7 +28,6 @@ struct ContactCandidate {
   ContactKey key;
   double edge_ratio = 0.0;   // projection of the vertex on the edge, 0 at its first vertex
   double penetration = 0.0;  // > 0 inside block_j, < 0 a gap
-  double length = 0.0;       // tributary length of face contact (for cohesion, tension)
 };
 
 using ContactCandidates = std::vector<ContactCandidate>;
@@ -61,6 +60,13 @@ struct FacesAlongEdge {
 };
 FacesAlongEdge find_faces_along_edge(geometry::Point p, geometry::Point before, geometry::Point after,
                                      geometry::Point a, geometry::Point b, double distance);
+
+// The tributary length of vertex `vertex` of polygon `va` against edge `edge` of polygon `eb`:
+// half of each face incident to the vertex that lies along the edge (find_faces_along_edge),
+// the length of face contact the vertex carries, on which cohesion and tensile strength act.
+// Made for the contacts that close, not by the search for every candidate.
+double tributary_length(std::span<const geometry::Point> va, int vertex, std::span<const geometry::Point> eb, int edge,
+                        double distance);
 
 // A vertex of one polygon and an edge (edge → edge + 1) of another.
 struct VertexEdge {

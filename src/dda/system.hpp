@@ -152,9 +152,10 @@ class System {
     ContactKey key;
     ContactRecord record;
     double penetration0 = 0.0;
-    double shear0 = 0.0;
-    double length = 0.0;
     Vector6 en_i = Vector6::Zero(), en_j = Vector6::Zero();
+    // Made only while the contact is closed (linearise_closed_contact): zero while open.
+    double shear0 = 0.0;
+    double length = 0.0;  // the face length it carries (tributary_length)
     Vector6 es_i = Vector6::Zero(), es_j = Vector6::Zero();
     int dof_i = -1, dof_j = -1;
     // Opened by the tension cutoff in this step: it closes again only by penetrating past
@@ -175,6 +176,7 @@ class System {
   // multiplier the normal force, its shear reference moved so that its spring holds the shear.
   void preload_contact(ActiveContact& c) const;
   void linearise_contact(ActiveContact& c) const;
+  void linearise_closed_contact(ActiveContact& c) const;
   // Why a step's solve did not settle, if it did not.
   enum class Unsettled { no, contact_states, contact_forces };
   Unsettled solve_step(double dt, Eigen::VectorXd& d, StepReport& report);

@@ -196,10 +196,11 @@ void DarcySolver::check_every_part_is_fixed() const {
 void DarcySolver::setup_pattern() {
   const int n = unknown_count();
   const int triangles = mesh_.triangle_count();
-  // Upper-triangle (column, row) pairs of every element, sorted and made unique: the CSC
-  // pattern. Hand-written: the pattern is built once, values are refilled in place after.
-  std::vector<long long> keys;
-  keys.reserve(6 * static_cast<std::size_t>(triangles));
+  // Upper-triangle (column, row) pairs of every element, bucketed by column (a counting
+  // sort), each column's rows ordered and made unique: the CSC pattern, in linear time (sorting
+  // all 6 T pairs took a quarter of a second at a million triangles). Hand-written: the
+  // pattern is built once, values are refilled in place after.
+  std::vector<int> start(static_cast<std::size_t>(n) + 1, 0);
   fixed_elements_.clear();
   for (int t = 0; t < triangles; ++t) {
     const auto& tri = mesh_.triangles[t];
@@ -210,24 +211,43 @@ void DarcySolver::setup_pattern() {
         has_fixed = true;
         continue;
       }
-      keys.push_back(static_cast<long long>(std::max(a, b)) * n + std::min(a, b));
+      ++start[std::max(a, b) + 1];
     }
     if (has_fixed) fixed_elements_.push_back(t);
   }
-  std::sort(keys.begin(), keys.end());
-  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  for (int c = 0; c < n; ++c) start[c + 1] += start[c];
+  std::vector<int> rows(static_cast<std::size_t>(start[n]));
+  {
+    std::vector<int> next(start.begin(), start.end() - 1);
+    for (const auto& tri : mesh_.triangles)
+      for (const auto& [i, j] : kLocalPairs) {
+        const int a = unknown_of_node_[tri[i]], b = unknown_of_node_[tri[j]];
+        if (a >= 0 && b >= 0) rows[next[std::max(a, b)]++] = std::min(a, b);
+      }
+  }
+  // Each column holds a dozen rows or so: insertion sort, then the distinct ones moved down
+  // in place (a column never ends past where it began).
+  std::size_t nonzeros = 0;
+  std::vector<int> column_start(static_cast<std::size_t>(n) + 1, 0);
+  for (int c = 0; c < n; ++c) {
+    int* const first = rows.data() + start[c];
+    int* const last = rows.data() + start[c + 1];
+    for (int* i = first; i != last; ++i)
+      for (int* j = i; j != first && *(j - 1) > *j; --j) std::swap(*(j - 1), *j);
+    column_start[c] = static_cast<int>(nonzeros);
+    for (int* i = first; i != last; ++i)
+      if (i == first || *i != *(i - 1)) rows[nonzeros++] = *i;
+  }
+  column_start[n] = static_cast<int>(nonzeros);
 
   matrix_.resize(n, n);
-  matrix_.resizeNonZeros(static_cast<Eigen::Index>(keys.size()));
+  matrix_.resizeNonZeros(static_cast<Eigen::Index>(nonzeros));
   int* outer = matrix_.outerIndexPtr();
   int* inner = matrix_.innerIndexPtr();
-  std::fill(outer, outer + n + 1, 0);
-  for (std::size_t k = 0; k < keys.size(); ++k) {
-    ++outer[keys[k] / n + 1];
-    inner[k] = static_cast<int>(keys[k] % n);
-  }
-  for (int c = 0; c < n; ++c) outer[c + 1] += outer[c];
-  std::fill(matrix_.valuePtr(), matrix_.valuePtr() + keys.size(), 0.0);
+  std::copy(column_start.begin(), column_start.end(), outer);
+  std::copy(rows.begin(), rows.begin() + static_cast<std::ptrdiff_t>(nonzeros), inner);
+  std::fill(matrix_.valuePtr(), matrix_.valuePtr() + nonzeros, 0.0);
+  std::vector<int>().swap(rows);
 
   // The off-diagonal pairs' positions; a diagonal entry is the last of its column (rows ascend
   // and none lies below the diagonal), found from the column itself.

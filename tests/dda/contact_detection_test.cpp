@@ -14,10 +14,12 @@ namespace {
 using geometry::Box;
 using testing::make_rectangle;
 
-// The face length the contacts carry between them (what cohesion and tensile strength act on).
-double total_length(const ContactCandidates& found) {
+// The face length the contacts carry between them (what cohesion and tensile strength act on);
+// `polygons` by block id.
+double total_length(const ContactCandidates& found, const std::vector<Polygon>& polygons, double distance) {
   double total = 0.0;
-  for (const ContactCandidate& c : found) total += c.length;
+  for (const ContactCandidate& c : found)
+    total += tributary_length(polygons[c.key.block_i], c.key.vertex, polygons[c.key.block_j], c.key.edge, distance);
   return total;
 }
 
@@ -31,7 +33,7 @@ void expect_face_counted_once(const Polygon& a, const Polygon& b, double length)
     else
       find_pair_contacts(a, 0, b, 1, 0.01, found);
     EXPECT_EQ(found.size(), 2u) << (swapped ? "b against a" : "a against b");
-    EXPECT_NEAR(total_length(found), length, 1e-12) << (swapped ? "b against a" : "a against b");
+    EXPECT_NEAR(total_length(found, {a, b}, 0.01), length, 1e-12) << (swapped ? "b against a" : "a against b");
   }
 }
 
@@ -68,7 +70,7 @@ TEST(ContactDetection, FaceContactFindsBothVerticesWithHalfLengths) {
     EXPECT_EQ(c.key.block_j, 0);
     EXPECT_EQ(c.key.edge, 2);
     EXPECT_NEAR(c.penetration, -0.001, 1e-12);
-    EXPECT_NEAR(c.length, 0.5, 1e-12);
+    EXPECT_NEAR(tributary_length(top, c.key.vertex, base, c.key.edge, 0.01), 0.5, 1e-12);
   }
 }
 
