@@ -206,12 +206,13 @@ void System::detect_contacts() {
     for (std::size_t i = begin; i < end; ++i) {
       const ContactCandidate& c = candidates[i];
       ActiveContact& a = active_[i];
-      a = ActiveContact{};
       a.key = c.key;
+      a.released = false;
       while (record != records_.end() && record->first < c.key) ++record;
       if (record != records_.end() && record->first == c.key) {
         a.record = record->second;
       } else {
+        a.record = ContactRecord{};
         // Touching (within the hysteresis band) counts as closed: a settled packing starts
         // with its contacts carrying load instead of finding them one open–close pass at a
         // time.

@@ -148,19 +148,23 @@ class System {
     Point initial;
   };
   // Linearised contact (Shi 1988 §4): penetration d = d0 + en·D, shear s = s0 + es·D.
+  // What every candidate's pass reads comes first (three cache lines): most candidates of a
+  // large model stay open, and a step walks all of them several times.
   struct ActiveContact {
     ContactKey key;
     ContactRecord record;
     double penetration0 = 0.0;
-    Vector6 en_i = Vector6::Zero(), en_j = Vector6::Zero();
-    // Made only while the contact is closed (linearise_closed_contact): zero while open.
-    double shear0 = 0.0;
-    double length = 0.0;  // the face length it carries (tributary_length)
-    Vector6 es_i = Vector6::Zero(), es_j = Vector6::Zero();
     int dof_i = -1, dof_j = -1;
     // Opened by the tension cutoff in this step: it closes again only by penetrating past
     // the tolerance (see update_state).
     bool released = false;
+    Vector6 en_i = Vector6::Zero(), en_j = Vector6::Zero();
+    // Made when the contact is closed at the step's start or closes in a pass
+    // (linearise_closed_contact), and read only while it is closed: an open contact's are
+    // left as they were, not written for nothing.
+    double shear0 = 0.0;
+    double length = 0.0;  // the face length it carries (tributary_length)
+    Vector6 es_i = Vector6::Zero(), es_j = Vector6::Zero();
   };
   // Whether a loop is long enough to pay for a second thread, which can take some tens of
   // microseconds to wake: one over the blocks (a few hundred nanoseconds each), one that
