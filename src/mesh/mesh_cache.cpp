@@ -131,7 +131,8 @@ std::string canonical_request_text(const MeshRequest& r) {
   }
   key << "size " << exact(r.size) << "\nfracture_size " << exact(r.fracture_size) << "\nrefine_distance "
       << exact(r.refine_distance) << "\nalgorithm " << r.algorithm << "\nthreads " << r.threads
-      << "\ntile_triangles " << r.tile_triangles << "\nprocesses " << r.processes << '\n';
+      << "\ntile_triangles " << r.tile_triangles << "\nprocesses " << r.processes << "\nsmoothing " << r.smoothing
+      << '\n';
   return key.str();
 }
 

@@ -50,6 +50,14 @@ struct MeshRequest {
   // on any machine, but the two meshes differ (as two meshes of one request by different
   // generators do), so it is part of the mesh cache's key.
   int processes = 2;
+  // Passes of Gmsh's Laplacian smoothing (Mesh.Smoothing), which moves each node towards the
+  // mean of its neighbours where that improves the triangles' angles; −1 chooses: one pass on
+  // a mesh of one surface (every shipped scenario's), none on a tiled one. On a tiled mesh it
+  // was half of Gmsh's time (the 1.09-million-triangle seal: 7.9–8.4 s meshing with it,
+  // 3.3–4.0 s without) for triangles Delaunay refinement already makes well shaped: smallest
+  // angle 30.2° without against 31.5° with, mean smallest angle 46.5° against 49.0°
+  // (docs/performance.md, "Meshing"). Part of the mesh cache's key.
+  int smoothing = -1;
   bool verbose = false;                  // let Gmsh print to the terminal
 };
 

@@ -471,6 +471,7 @@ void check_request(const MeshRequest& request) {
   if (request.threads < 1) throw std::runtime_error("mesh threads must be at least 1");
   if (request.processes < 1 || request.processes > 2) throw std::runtime_error("mesh processes must be 1 or 2");
   if (request.tile_triangles < 0) throw std::runtime_error("mesh tile_triangles must not be negative");
+  if (request.smoothing < -1) throw std::runtime_error("mesh smoothing must be -1 (chosen) or a number of passes >= 0");
   if (request.algorithm != 1 && request.algorithm != 5 && request.algorithm != 6)
     throw std::runtime_error("mesh algorithm must be 1 (MeshAdapt), 5 (Delaunay) or 6 (Frontal-Delaunay)");
   if (!request.refinement_lines.empty()) {
@@ -542,6 +543,7 @@ TriangleMesh generate_mesh_with_gmsh(const MeshRequest& request) {
     gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
     gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
     gmsh::option::setNumber("Mesh.MeshSizeMax", request.size);
+    gmsh::option::setNumber("Mesh.Smoothing", request.smoothing >= 0 ? request.smoothing : tiled ? 0 : 1);
     gmsh::option::setNumber("General.NumThreads", request.threads);
     if (!request.refinement_lines.empty()) {
       // Gmsh's Distance + Threshold fields, evaluated with the exact distance to the lines
