@@ -13,8 +13,12 @@ namespace hydrodda::run {
 
 namespace {
 
-constexpr double kBytesPerTriangle = 1200.0;         // 1.3 GB peak at 1,077,440 triangles
-constexpr double kTrianglesMeshedPerSecond = 54000.0;  // 18.7 s for 1,077,440 triangles, one core
+// A coupled run's peak: 0.99 GB at 1,087,258 triangles (10 passes), 3.0 GB at about 4.3
+// million (1 pass); 1,200 B leaves room for a longer run's history and the fields written.
+constexpr double kBytesPerTriangle = 1200.0;
+// Gmsh on a tiled mesh, two meshing processes on two cores: 3.3-4.8 s for 1,087,258 triangles
+// and 18.1 s for about 4.3 million (the seal of docs/performance.md at 0.07 and 0.035 m).
+constexpr double kTrianglesMeshedPerSecond = 240000.0;
 constexpr double kReasonableMeshingSeconds = 60.0;
 
 double physical_memory_bytes() {
