@@ -548,6 +548,9 @@ double System::largest_vertex_motion(const Eigen::VectorXd& change) const {
 bool System::update_state(ActiveContact& c, const Eigen::VectorXd& d, double band, double tension_allowance) const {
   ContactRecord& r = c.record;
   const double pen = compute_penetration(c, d);
+  // Kept for the commit: the pass that changes no state is the step's last, and its d the
+  // one committed (a closed contact's is the value update_contact_forces set from that d).
+  r.penetration = pen;
   if (r.state == ContactState::open) {
     if (pen > (c.released ? std::max(band, penetration_tolerance_) : band)) {
       r.state = ContactState::locked;
@@ -785,8 +788,7 @@ void System::commit_step(const Eigen::VectorXd& d, double dt) {
   resize_for_overwrite(records_, active_.size());  // active_ is in key order, and so stays records_
   geometry::for_each_in_halves(many_contacts(), active_.size(), [&](std::size_t i) {
     const ActiveContact& c = active_[i];
-    ContactRecord r = c.record;
-    r.penetration = compute_penetration(c, d);
+    ContactRecord r = c.record;  // its penetration the last pass's, from this d (update_state)
     if (r.state == ContactState::open) {
       r.multiplier = 0.0;
       r.normal_force = 0.0;

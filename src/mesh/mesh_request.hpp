@@ -56,7 +56,7 @@ struct MeshRequest {
   // was half of Gmsh's time (the 1.09-million-triangle seal: 7.9–8.4 s meshing with it,
   // 3.3–4.0 s without) for triangles Delaunay refinement already makes well shaped: smallest
   // angle 30.2° without against 31.5° with, mean smallest angle 46.5° against 49.0°
-  // (docs/performance.md, "Meshing"). Part of the mesh cache's key.
+  // (docs/scenario.md, "How many triangles"). Part of the mesh cache's key.
   int smoothing = -1;
   bool verbose = false;                  // let Gmsh print to the terminal
 };
