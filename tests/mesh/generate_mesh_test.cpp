@@ -157,6 +157,20 @@ TEST(GenerateMesh, IsDeterministic) {
   for (std::size_t i = 0; i < a.nodes.size(); ++i) EXPECT_EQ(a.nodes[i], b.nodes[i]);
 }
 
+// The unit square graded along a refinement line, with a region, cut into about 48 tiles
+// (tile_triangles 400 on a request of about 19,000 triangles).
+MeshRequest tiled_request() {
+  MeshRequest request;
+  request.domain = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  request.size = 0.01;
+  request.fracture_size = 0.004;
+  request.refine_distance = 0.05;
+  request.refinement_lines = {{{0.1, 0.2}, {0.9, 0.7}}};
+  request.regions = {{"core", {{0.2, 0.1}, {0.7, 0.15}, {0.65, 0.8}, {0.25, 0.7}}}};
+  request.tile_triangles = 400;
+  return request;
+}
+
 // A mesh cut into tiles (tile_triangles 400 on a request of about 19,000 triangles: about 48
 // tiles) honours what the one-surface mesh honours: regions to 1e-12 of their area, the size
 // field along a refinement line (triangles within 0.005 of it: mean longest edge within
@@ -166,14 +180,7 @@ TEST(GenerateMesh, IsDeterministic) {
 // two processes (the default) or by one: each mesh is the same on every call and conforms
 // across the tiles, and the two have the same triangles within 1%.
 TEST(GenerateMesh, TiledMeshHonoursRegionsSizesAndBoundaries) {
-  MeshRequest request;
-  request.domain = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  request.size = 0.01;
-  request.fracture_size = 0.004;
-  request.refine_distance = 0.05;
-  request.refinement_lines = {{{0.1, 0.2}, {0.9, 0.7}}};
-  request.regions = {{"core", {{0.2, 0.1}, {0.7, 0.15}, {0.65, 0.8}, {0.25, 0.7}}}};
-  request.tile_triangles = 400;
+  MeshRequest request = tiled_request();
   const TriangleMesh tiled = generate_mesh(request), again = generate_mesh(request);
   EXPECT_EQ(tiled.triangles, again.triangles);
   EXPECT_EQ(tiled.nodes.size(), again.nodes.size());
@@ -244,14 +251,7 @@ AngleCounts count_angles(const TriangleMesh& m) {
 // per thousand below 30°, a mean smallest angle above 45°. One pass asked for moves the nodes
 // (as many of them).
 TEST(GenerateMesh, TiledMeshIsWellShapedWithoutSmoothing) {
-  MeshRequest request;
-  request.domain = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  request.size = 0.01;
-  request.fracture_size = 0.004;
-  request.refine_distance = 0.05;
-  request.refinement_lines = {{{0.1, 0.2}, {0.9, 0.7}}};
-  request.regions = {{"core", {{0.2, 0.1}, {0.7, 0.15}, {0.65, 0.8}, {0.25, 0.7}}}};
-  request.tile_triangles = 400;
+  MeshRequest request = tiled_request();
   ASSERT_EQ(request.smoothing, -1);
   const TriangleMesh chosen = generate_mesh(request);
   request.smoothing = 0;
