@@ -102,7 +102,16 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
       clipped_above = true;
     }
   }
-  if (!(hi > lo)) hi = lo + 1.0;
+  // A spread below a millionth of the values is no contrast to paint across the whole bar
+  // (the cubic law's permeability over closed joints is uniform to 1e-8): such a field is
+  // shown as one of a single value is, in one colour, on a bar of one unit (of the value, or a
+  // decade on a log scale) with ticks a reader can read.
+  const double spread_of_one_value = f.logarithmic ? std::log10(1.0 + 1e-6) : 1e-6 * std::max(std::abs(lo), std::abs(hi));
+  if (!(hi - lo > spread_of_one_value)) {
+    const double largest = values.empty() ? hi : *std::max_element(values.begin(), values.end());
+    hi = lo + 1.0;
+    clipped_above = largest > hi;
+  }
   const auto colour = [&](double v) { return viridis((v - lo) / (hi - lo)); };
 
   // Elements: flat colour of the element (mean of nodes for a node field), painted from the

@@ -9,6 +9,7 @@
 #include <string>
 #include <unistd.h>
 #include <fstream>
+#include <limits>
 
 namespace hydrodda::output {
 namespace {
@@ -63,25 +64,31 @@ TEST(FieldFigure, WritesPngSvgAndPdf) {
   fs::remove_all(dir);
 }
 
-// Red pixels (the warning's and the flux arrows' colour) in the rows [y0, y1) of a PNG, in page
-// points (the PNG is at twice the page's resolution).
-int red_pixels_in_rows(const fs::path& png, int y0, int y1) {
+// Pixels of the rectangle [x0, x1) × [y0, y1) of a PNG, in page points (the PNG is at twice the
+// page's resolution), whose colour passes `is`.
+template <class Is>
+int pixels_in(const fs::path& png, int x0, int y0, int x1, int y1, Is&& is) {
   cairo_surface_t* image = cairo_image_surface_create_from_png(png.c_str());
   EXPECT_EQ(cairo_surface_status(image), CAIRO_STATUS_SUCCESS);
   const int width = cairo_image_surface_get_width(image), stride = cairo_image_surface_get_stride(image);
   const int height = cairo_image_surface_get_height(image);
   const unsigned char* data = cairo_image_surface_get_data(image);
-  int red = 0;
+  int count = 0;
   for (int y = 2 * y0; y < std::min(2 * y1, height); ++y)
-    for (int x = 0; x < width; ++x) {
-      const auto* pixel = reinterpret_cast<const std::uint32_t*>(data + y * stride) + x;  // ARGB32
-      const unsigned r = (*pixel >> 16) & 0xff, g = (*pixel >> 8) & 0xff, b = *pixel & 0xff;
-      red += r > 180 && g < 60 && b < 60;
+    for (int x = 2 * x0; x < std::min(2 * x1, width); ++x) {
+      const std::uint32_t pixel = reinterpret_cast<const std::uint32_t*>(data + y * stride)[x];  // ARGB32
+      count += is((pixel >> 16) & 0xffu, (pixel >> 8) & 0xffu, pixel & 0xffu) ? 1 : 0;
     }
   cairo_surface_destroy(image);
-  return red;
+  return count;
 }
 
+// Red pixels (the warning's and the flux arrows' colour) in the rows [y0, y1) of a PNG, in page
+// points.
+int red_pixels_in_rows(const fs::path& png, int y0, int y1) {
+  return pixels_in(png, 0, y0, std::numeric_limits<int>::max() / 4, y1,
+                   [](unsigned r, unsigned g, unsigned b) { return r > 180 && g < 60 && b < 60; });
+}
 
 // Red pixels in the band above the plot, where the title and the line under it are drawn (the
 // plot starts 50 points down).
@@ -108,13 +115,9 @@ TEST(FieldFigure, AWarningIsWrittenInRedUnderTheTitle) {
   fs::remove_all(dir);
 }
 
-// A flat layer (20 m × 2 m, the shape of a seal) with a uniform upward flux: the arrows stay
-// inside the plot (none reach the title band above it, where 8% of the width drew them 1.6 m
-// long over a 2 m layer), and the key arrow under the colour bar is on the page (it fell off
-// a page this flat).
-TEST(FieldFigure, FluxArrowsStayInAFlatPlotAndTheKeyArrowIsOnThePage) {
-  std::vector<Point> nodes;
-  std::vector<std::array<int, 3>> triangles;
+// A 20 m × 2 m strip of 40 × 4 squares, each cut in two triangles: drawn 570 points wide and
+// 57 high, from 70 points in and 50 down.
+void make_flat_strip(std::vector<Point>& nodes, std::vector<std::array<int, 3>>& triangles) {
   const int nx = 40, ny = 4;
   for (int j = 0; j <= ny; ++j)
     for (int i = 0; i <= nx; ++i) nodes.push_back({20.0 * i / nx, 2.0 * j / ny});
@@ -124,6 +127,16 @@ TEST(FieldFigure, FluxArrowsStayInAFlatPlotAndTheKeyArrowIsOnThePage) {
       triangles.push_back({a, b, c});
       triangles.push_back({a, c, d});
     }
+}
+
+// A flat layer (20 m × 2 m, the shape of a seal) with a uniform upward flux: the arrows stay
+// inside the plot (none reach the title band above it, where 8% of the width drew them 1.6 m
+// long over a 2 m layer), and the key arrow under the colour bar is on the page (it fell off
+// a page this flat).
+TEST(FieldFigure, FluxArrowsStayInAFlatPlotAndTheKeyArrowIsOnThePage) {
+  std::vector<Point> nodes;
+  std::vector<std::array<int, 3>> triangles;
+  make_flat_strip(nodes, triangles);
   FieldFigure f;
   f.title = "A flat layer";
   f.field_label = "head (m)";
@@ -142,6 +155,44 @@ TEST(FieldFigure, FluxArrowsStayInAFlatPlotAndTheKeyArrowIsOnThePage) {
   EXPECT_GT(red_pixels_in_rows(dir / "flat.png", 50, 107), 100);
   // The key arrow: under the 120-point colour bar that starts at the plot's top.
   EXPECT_GT(red_pixels_in_rows(dir / "flat.png", 50 + 120, page_height), 10);
+  fs::remove_all(dir);
+}
+
+
+// An element field whose halves differ by a hundred-millionth (the cubic law's permeability
+// over closed joints) is painted in one colour, as a uniform one is: the bar's bottom colour
+// (viridis' dark purple) over the whole plot, none of its top colour (yellow). The same field
+// with halves 1% apart paints the right half yellow, so the count does see a contrast.
+TEST(FieldFigure, ASpreadOfRoundOffIsNotPaintedAsContrast) {
+  std::vector<Point> nodes;
+  std::vector<std::array<int, 3>> triangles;
+  make_flat_strip(nodes, triangles);
+  const fs::path dir = fs::temp_directory_path() / ("hydrodda-figure-spread-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const auto paint = [&](double relative_step, bool logarithmic) {
+    FieldFigure f;
+    f.title = "A uniform layer";
+    f.field_label = "permeability (m²)";
+    f.nodes = nodes;
+    f.triangles = triangles;
+    f.logarithmic = logarithmic;
+    for (const auto& t : triangles) {
+      const bool right = nodes[t[0]].x + nodes[t[1]].x + nodes[t[2]].x > 30.0;
+      f.element_field.push_back(6.8587e-18 * (right ? 1.0 + relative_step : 1.0));
+    }
+    const fs::path png = dir / "spread.png";
+    render_field_figure(png, f);
+    // The plot is 570 points wide from 70 points in, 57 high from 50 down; its inside only.
+    const auto yellow = [](unsigned r, unsigned g, unsigned b) { return r > 180 && g > 180 && b < 120; };
+    const auto purple = [](unsigned r, unsigned g, unsigned b) { return r < 100 && g < 40 && b > 60; };
+    return std::pair{pixels_in(png, 72, 52, 638, 105, yellow), pixels_in(png, 72, 52, 638, 105, purple)};
+  };
+  for (bool logarithmic : {true, false}) {
+    const auto [yellow, purple] = paint(1e-8, logarithmic);
+    EXPECT_EQ(yellow, 0) << (logarithmic ? "log" : "linear");
+    EXPECT_GT(purple, 100000) << (logarithmic ? "log" : "linear");
+    EXPECT_GT(paint(1e-2, logarithmic).first, 50000) << (logarithmic ? "log" : "linear");
+  }
   fs::remove_all(dir);
 }
 
