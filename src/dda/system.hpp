@@ -148,7 +148,7 @@ class System {
     Point initial;
   };
   // Linearised contact (Shi 1988 §4): penetration d = d0 + en·D, shear s = s0 + es·D.
-  // What every candidate's pass reads comes first (three cache lines): most candidates of a
+  // What every candidate's pass reads comes first (192 of its 304 bytes): most candidates of a
   // large model stay open, and a step walks all of them several times.
   struct ActiveContact {
     ContactKey key;
