@@ -72,6 +72,9 @@ constexpr double kWedgeTolerance = 0.05;
 constexpr double kParallelTolerance = 0.05;
 // Gaps to the two edges at a corner closer than this fraction of the contact distance tie.
 constexpr double kCornerTieTolerance = 1e-3;
+// Tributary lengths closer than this fraction of the coordinates' size are equal: their
+// round-off, far below any face a contact carries.
+constexpr double kShareRoundOff = 1e-12;
 
 // Signed distance of p outside the line of edge (a, b) of a counter-clockwise polygon.
 double compute_gap(Point p, Point a, Point b, double length) { return -geometry::orient(a, b, p) / length; }
@@ -133,8 +136,9 @@ void test_vertex_edge(std::span<const Point> va, int a, int v, std::span<const P
   // At or past an end of the edge (vertex–vertex): keep only the entrance edge, the one of
   // the two edges meeting there whose line the vertex is farther outside (Shi 1988, §4.3).
   // Corners that coincide (side-by-side blocks) leave both gaps equal up to the motion of a
-  // step; there the edge that carries a face contact wins, then the lower index, so the
-  // choice (and the contact's key and state) does not flip on round-off from step to step.
+  // step; there the edge that carries a face contact wins (by more than round-off), then the
+  // lower index, so the choice (and the contact's key and state) does not flip on round-off
+  // from step to step.
   if (t < tie / length || t > 1 - tie / length) {
     const bool at_start = t < 0.5;
     const int other = at_start ? (e + ne - 1) % ne : (e + 1) % ne;
@@ -145,9 +149,13 @@ void test_vertex_edge(std::span<const Point> va, int a, int v, std::span<const P
     if (other_gap >= gap - tie) {
       // The tributary lengths only here, where they break the tie: a contact's own is made
       // when it closes (tributary_length), not for every candidate of every step.
+      // Shares within their round-off are equal: a corner that meets only a corner (blocks
+      // diagonally across a junction of joints) has none on either edge, and round-off (1e-17
+      // against 1e-32 m) would otherwise pick one edge in one step and the other in the next.
       const double length_share = compute_tributary_length(p, before, after, e0, e1, distance);
       const double other_share = compute_tributary_length(p, before, after, other_a, other_b, distance);
-      if (other_share > length_share || (other_share == length_share && other < e)) return;
+      const double share_tie = kShareRoundOff * (std::abs(p.x) + std::abs(p.y) + distance);
+      if (other_share > length_share + share_tie || (other_share >= length_share - share_tie && other < e)) return;
     }
     if ((t < 0 || t > 1) && geometry::distance(p, at_start ? e0 : e1) > distance) return;
   }

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <random>
 
 #include "test_models.hpp"
@@ -105,6 +107,34 @@ TEST(ContactDetection, CornerOnTwoEdgeLinesTakesTheFaceEdge) {
       EXPECT_TRUE((c.key.block_j == 1 && c.key.edge == 3) || (c.key.block_j == 0 && c.key.edge == 1))
           << "wobble " << wobble << ": vertex " << c.key.vertex << " on edge " << c.key.edge;
   }
+}
+
+// Blocks diagonally across a junction of joints meet corner to corner only: neither edge at the
+// corner carries any face (both tributary lengths are 0), so the lower index breaks the tie.
+// Moved by round-off (shifted by up to 1e-13 m each way, turned by 1e-12 rad about the corner),
+// the corner lies a hair past one edge's end or the other's, a "face" of 1e-13 m on one edge
+// and none on the other; the contact keeps the same vertex and edge all the same. (A flip from
+// step to step between the two edges re-keys the contact and throws the kept factor away.)
+TEST(ContactDetection, CornerOnCornerKeepsItsEdgeWhateverTheRoundOff) {
+  const Polygon below = make_rectangle(0, 0, 1, 1);
+  std::vector<std::array<int, 4>> keys;
+  for (double dx : {-1e-13, 0.0, 1e-13})
+    for (double dy : {-1e-13, 0.0, 1e-13})
+      for (double turn : {-1e-12, 0.0, 1e-12}) {
+        Polygon above;
+        for (Point p : make_rectangle(1, 1, 2, 2)) {
+          const Point r = p - Point{1, 1};
+          above.push_back(Point{1 + dx, 1 + dy} + Point{r.x * std::cos(turn) - r.y * std::sin(turn),
+                                                        r.x * std::sin(turn) + r.y * std::cos(turn)});
+        }
+        ContactCandidates found;
+        find_pair_contacts(below, 0, above, 1, 0.01, found);
+        ASSERT_EQ(found.size(), 1u) << "dx " << dx << ", dy " << dy << ", turn " << turn;
+        const ContactKey& k = found[0].key;
+        keys.push_back({k.block_i, k.vertex, k.block_j, k.edge});
+      }
+  for (const auto& key : keys) EXPECT_EQ(key, keys.front());
+  EXPECT_EQ(keys.front(), (std::array<int, 4>{0, 2, 1, 0}));  // below's corner (1, 1) on above's bottom edge
 }
 
 // Vertex–vertex: a wedge's corner near a square's corner from the diagonal takes one
