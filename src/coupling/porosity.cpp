@@ -81,7 +81,12 @@ PorosityField PorosityMapper::compute(std::span<const geometry::Polygon> blocks,
   geometry::run_two_parts(n >= 20000, [&](int part) {
     const auto [begin, end] = geometry::half_range(part, n);
     std::vector<BlockPiece>* own = pieces ? &pieces->halves_[static_cast<std::size_t>(part)] : nullptr;
-    if (own) own->clear();
+    if (own) {
+      own->clear();
+      // As many as the last clip found, and a few more: no doubling, no copy to make it tight.
+      const std::size_t expected = pieces->released_sizes_[static_cast<std::size_t>(part)];
+      own->reserve(expected + expected / 16);
+    }
     Scratch scratch;
     for (std::size_t e = begin; e < end; ++e) {
       const double a = elements_->areas()[e];

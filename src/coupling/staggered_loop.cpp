@@ -197,6 +197,8 @@ PassReport StaggeredLoop::run_pass() {
   if (seepage_) {
     const std::vector<std::vector<Point>> seepage = compute_seepage_forces(
         blocks, pieces_, hydro::compute_pressure_gradients(mesh_, solution_.pressure), settings_.biot_coefficients);
+    // Made again by the next pass's clip: not held while the blocks move.
+    pieces_.release();
     for (std::size_t b = 0; b < forces.size(); ++b)
       for (std::size_t v = 0; v < forces[b].size(); ++v) forces[b][v] += seepage[b][v];
   }

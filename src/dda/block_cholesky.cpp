@@ -85,19 +85,10 @@ void subtract_products(const Matrix6& l, const Matrix6* values, const int* rows,
 
 }  // namespace
 
-void BlockCholesky::clear() {
-  block_count_ = 0;
-  order_.clear();
-  column_start_.clear();
-  row_.clear();
-  value_.clear();
-  inverse_diagonal_.clear();
-  parent_.clear();
-  position_.clear();
-  for (auto& columns : part_columns_) columns.clear();
-  top_index_.clear();
-  top_rows_start_.clear();
-}
+// Its memory goes too: a coupled run lets go of the factor between passes, while the flow
+// model factors (100 MB for the 340,000 off-diagonal blocks of a 10,200-block seal whose
+// joints are closed).
+void BlockCholesky::clear() { *this = BlockCholesky(); }
 
 bool BlockCholesky::use_vectorised_kernels(bool on) {
   vectorised = on && cpu_has_avx2_fma();

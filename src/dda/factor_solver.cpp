@@ -72,9 +72,11 @@ class BlockFactorSolver final : public KeptFactorSolver {
     base_ = nullptr;
     terms_ = nullptr;
     own_base_ = BlockMatrix{};
-    own_terms_.clear();
-    factored_terms_.clear();
-    corrections_.clear();
+    // Their memory too (a restart's state is a coupled run's between passes).
+    own_terms_ = {};
+    factored_terms_ = {};
+    corrections_ = {};
+    product_ = {};
     forget_solution();
   }
 
