@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""seal_scenario.py [--columns C] [--beds B] [--mesh-size H] [--tilt T] [--undulation U] [--joint-sets] > seal.toml
+"""seal_scenario.py [--columns C] [--beds B] [--mesh-size H] [--tilt T] [--undulation U] [--joint-sets] [--in-situ] > seal.toml
 
 A fractured seal for timing coupled runs at scale: a 100 m x 20 m layer cut by C joints that
 cross it from base to top (each tilted at random by up to T, 8 degrees by default) and B
@@ -14,6 +14,11 @@ of listed traces, as a user would write it: C joints at 90 degrees +- a spread o
 (spacing 100 m / (C + 1) +- 5%) and B flat beds (spacing 20 m / (B + 1) +- 5%), seeds fixed, so
 the program generates the traces; at 100 joints and 99 beds, 10,100 blocks with no slivers
 (`hydrodda check` says so).
+
+With --in-situ the joints are closed and the seal is at depth, as docs/guide.md builds one:
+rollers on the sides and base, the overburden on the top, the blocks started in the effective
+stress that balances the steady seepage, the pressure hydrostatic (see in_situ_loads). Without
+it, the joints are 2 mm open, the base and sides are held and the blocks are free to settle.
 """
 import argparse
 import math
@@ -32,6 +37,8 @@ def main():
     parser.add_argument("--passes", type=int, default=3, help="coupling passes")
     parser.add_argument("--steps", type=int, default=20, help="DDA steps per pass")
     parser.add_argument("--joint-sets", action="store_true", help="two generated joint sets, not listed traces")
+    parser.add_argument("--in-situ", action="store_true",
+                        help="closed joints in their in-situ stress, on rollers, under an overburden (hydrostatic pressure)")
     args = parser.parse_args()
     rng = random.Random(2006)
 
@@ -59,11 +66,12 @@ def main():
         "[geometry]",
         f"domain = [[0.0, 0.0], [{WIDTH}, 0.0], [{WIDTH}, {HEIGHT}], [0.0, {HEIGHT}]]",
     ]
+    aperture = 0.0 if args.in_situ else 0.002
     if args.joint_sets:
         joint_spacing = WIDTH / (args.columns + 1)
         bed_spacing = HEIGHT / (args.beds + 1)
         lines += [
-            "initial_aperture = 0.002",
+            f"initial_aperture = {aperture}",
             "",
             "[[geometry.joint_set]]  # near-vertical joints across the layer",
             "angle = 90.0",
@@ -83,7 +91,7 @@ def main():
     else:
         lines += ["fractures = ["]
         lines += [f"  [{point(a)}, {point(b)}]," for a, b in fractures]
-        lines += ["]", "initial_aperture = 0.002"]
+        lines += ["]", f"initial_aperture = {aperture}"]
     lines += [
         "",
         "[material.rock]",
@@ -101,28 +109,35 @@ def main():
         "[mechanics]",
         'analysis = "static"',
         "gravity = [0.0, -9.81]",
-        "time_step = 1.0e-3",
+        f"time_step = {'1.0e-2' if args.in_situ else '1.0e-3'}",
         f"steps = {args.steps}",
-        "[[mechanics.displacement]]",
-        'boundary = "bottom"',
-        "value = [0.0, 0.0]",
-        "[[mechanics.displacement]]",
-        'boundary = "left"',
-        "value = [0.0, 0.0]",
-        "[[mechanics.displacement]]",
-        'boundary = "right"',
-        "value = [0.0, 0.0]",
-        "",
-        "[flow]",
-        "fluid = { density = 1000.0, viscosity = 1.0e-3 }",
-        'pressure = "overpressure"',
-        'permeability_law = "cubic"',
-        "[[flow.boundary]]",
-        'name = "bottom"',
-        "head = 50.0",
-        "[[flow.boundary]]",
-        'name = "top"',
-        "head = 0.0",
+    ]
+    if args.in_situ:
+        lines += in_situ_loads()
+    else:
+        lines += [
+            "[[mechanics.displacement]]",
+            'boundary = "bottom"',
+            "value = [0.0, 0.0]",
+            "[[mechanics.displacement]]",
+            'boundary = "left"',
+            "value = [0.0, 0.0]",
+            "[[mechanics.displacement]]",
+            'boundary = "right"',
+            "value = [0.0, 0.0]",
+            "",
+            "[flow]",
+            "fluid = { density = 1000.0, viscosity = 1.0e-3 }",
+            'pressure = "overpressure"',
+            'permeability_law = "cubic"',
+            "[[flow.boundary]]",
+            'name = "bottom"',
+            "head = 50.0",
+            "[[flow.boundary]]",
+            'name = "top"',
+            "head = 0.0",
+        ]
+    lines += [
         "",
         "[mesh]",
         f"size = {args.mesh_size}",
@@ -138,6 +153,44 @@ def main():
         "figures = []",
     ]
     print("\n".join(lines))
+
+
+def in_situ_loads():
+    """The seal at depth, as docs/guide.md builds one: rollers on its sides and base, the
+    overburden on its top (sigma_v = 20 MPa, sigma_h = 0.7 sigma_v), the blocks started in the
+    effective stress that holds them in equilibrium with the steady seepage, and the pressure
+    hydrostatic (the blocks feel the water's weight). The reservoir stands 50 m of head above
+    the top; across the 20 m seal, with the uniform gradient dh/dy = -50 / 20,
+      d(sigma'_yy)/dy = (rho_r - rho_w) g - rho_w g * 50 / 20 = 14,715 - 24,525 = -9,810 Pa/m."""
+    g, rho_r, rho_w = 9.81, 2500.0, 1000.0
+    dsigma_dy = (rho_r - rho_w) * g - rho_w * g * 50.0 / HEIGHT
+    sigma_v, ratio = -2.0e7, 0.7
+    return [
+        '[[mechanics.roller]]',
+        'boundary = "left"',
+        '[[mechanics.roller]]',
+        'boundary = "right"',
+        '[[mechanics.roller]]',
+        'boundary = "bottom"',
+        '[[mechanics.traction]]',
+        'boundary = "top"',
+        f"normal = {sigma_v:.1e}",
+        "[mechanics.initial_stress]",
+        f"stress = [{ratio * sigma_v:.1e}, {sigma_v:.1e}, 0.0]",
+        f"reference_y = {HEIGHT}",
+        f"gradient = [{ratio * dsigma_dy:.1f}, {dsigma_dy:.1f}, 0.0]",
+        "",
+        "[flow]",
+        "fluid = { density = 1000.0, viscosity = 1.0e-3 }",
+        'pressure = "hydrostatic"',
+        'permeability_law = "cubic"',
+        "[[flow.boundary]]",
+        'name = "bottom"',
+        f"head = {HEIGHT + 50.0}",
+        "[[flow.boundary]]",
+        'name = "top"',
+        f"head = {HEIGHT}",
+    ]
 
 
 if __name__ == "__main__":
