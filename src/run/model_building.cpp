@@ -317,7 +317,7 @@ dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::B
   settings.penalty = m.penalty.value_or(0.0);
   settings.tension_cutoff = m.tension_cutoff;
 
-  const double ramp_time = mechanics_duration(m);
+  const double run_duration = mechanics_duration(m);
   for (const scenario::FixedPoint& f : m.fixed) {
     const int block = find_block(blocks, f.point, tolerance);
     if (block < 0) errors.push_back({file, f.line, "mechanics.fixed.point", fmt::format("{} lies in no block", point_text(f.point))});
@@ -332,7 +332,7 @@ dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::B
     if (d.point) {
       const int block = find_block(blocks, *d.point, tolerance);
       if (block < 0) errors.push_back({file, d.line, "mechanics.displacement.point", fmt::format("{} lies in no block", point_text(*d.point))});
-      else model.displacements.push_back({block, *d.point, d.value, ramp_time});
+      else model.displacements.push_back({block, *d.point, d.value, d.ramp_time.value_or(run_duration)});
       continue;
     }
     const scenario::BoundarySegment* boundary = s.find_boundary(d.boundary);
@@ -340,7 +340,7 @@ dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::B
     if (vertices.empty())
       errors.push_back({file, d.line, "mechanics.displacement.boundary", fmt::format("no block vertex lies on boundary \"{}\"", d.boundary)});
     for (const dda::VertexRef& v : vertices)
-      model.displacements.push_back({v.block, blocks[v.block].polygon[v.vertex], d.value, ramp_time});
+      model.displacements.push_back({v.block, blocks[v.block].polygon[v.vertex], d.value, d.ramp_time.value_or(run_duration)});
   }
   model.tractions = edge_tractions(s, blocks, errors);
   if (m.initial_stress) {

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -280,7 +281,7 @@ void read_mechanics(ReadContext& ctx, const TableView& root, Scenario& s) {
     if (p && f) mech.loads.push_back({*p, *f, l.line()});
   }
   for (const toml::table* dt : m.tables("displacement")) {
-    const TableView d(ctx, *dt, "mechanics.displacement", {"boundary", "point", "value"});
+    const TableView d(ctx, *dt, "mechanics.displacement", {"boundary", "point", "value", "ramp_time"});
     PrescribedDisplacement disp;
     disp.line = d.line();
     disp.boundary = d.string("boundary").value_or("");
@@ -289,6 +290,10 @@ void read_mechanics(ReadContext& ctx, const TableView& root, Scenario& s) {
       ctx.error(d.line(), "mechanics.displacement", "give exactly one of 'boundary' or 'point'");
     if (auto v = d.point("value")) disp.value = *v;
     else if (!d.has("value")) ctx.error(d.line(), "mechanics.displacement.value", "required key is missing");
+    disp.ramp_time = d.number("ramp_time");
+    if (disp.ramp_time)
+      d.require("ramp_time", std::isfinite(*disp.ramp_time) && *disp.ramp_time > 0.0,
+                "must be a positive number of seconds");
     mech.displacements.push_back(std::move(disp));
   }
   for (const toml::table* tt : m.tables("traction")) {

@@ -114,7 +114,9 @@ struct PointLoad {
 struct PrescribedDisplacement {
   std::string boundary;          // empty when `point` is given
   std::optional<Point> point;
-  Point value;                   // m, reached at the end of the run (ramped)
+  Point value;                   // m, reached at ramp_time (ramped linearly) and held after
+  // s of DDA time; unset: the run's duration (a coupled run's: its first pass's nominal one)
+  std::optional<double> ramp_time;
   int line = 0;
 };
 

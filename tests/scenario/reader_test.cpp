@@ -271,6 +271,22 @@ TEST(ScenarioReader, StaticAnalysisNeedsASupport) {
   EXPECT_TRUE(errors_of(blocks + "[[mechanics.displacement]]\nboundary = \"bottom\"\nvalue = [0.0, 0.0]\n").empty());
 }
 
+// A prescribed displacement's ramp_time is read as given; unset, the run's duration stands (the
+// model building's default); zero, negative or not finite, it is an error naming its line.
+TEST(ScenarioReader, APrescribedDisplacementTakesItsRampTime) {
+  const std::string base =
+      kOneFreeBlock + "steps = 10\n[[mechanics.displacement]]\nboundary = \"bottom\"\nvalue = [0.0, -0.01]\n";
+  EXPECT_FALSE(parse_scenario(base, "case.toml").mechanics->displacements.at(0).ramp_time.has_value());
+  const Scenario ramped = parse_scenario(base + "ramp_time = 2.5\n", "case.toml");
+  EXPECT_EQ(ramped.mechanics->displacements.at(0).ramp_time, 2.5);
+  for (const char* bad : {"0.0", "-1.0", "inf", "nan"}) {
+    const auto errors = errors_of(base + "ramp_time = " + bad + "\n");
+    ASSERT_EQ(errors.size(), 1u) << bad;
+    EXPECT_EQ(errors[0].key, "mechanics.displacement.ramp_time") << bad;
+    EXPECT_EQ(errors[0].line, 13) << bad;
+  }
+}
+
 TEST(NearestKey, SuggestsTyposOnly) {
   const std::vector<std::string> keys{"density", "young", "poisson", "matrix_porosity"};
   EXPECT_EQ(suggest_nearest("poison", keys), "poisson");
