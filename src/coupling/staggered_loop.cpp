@@ -225,6 +225,18 @@ PassReport StaggeredLoop::run_pass() {
                                " s): " + e.what());
     }
   }
+  // On to rest: a pass's fixed steps may stop the blocks part-way to the equilibrium of its
+  // loads, and the next pass would meet them there (docs/coupling.md, "Passes that settle").
+  if (settings_.settle_steps > 0) {
+    try {
+      const dda::System::Settling settling = mechanics_.step_until_at_rest(settings_.settle_steps);
+      report.settling_steps = settling.steps;
+      report.at_rest = settling.at_rest;
+    } catch (const std::exception& e) {
+      throw std::runtime_error("DDA step " + std::to_string(settings_.steps_per_pass) + "+ settling (t = " +
+                               std::to_string(mechanics_.time()) + " s): " + e.what());
+    }
+  }
   // The DDA's contact list goes while the flow model factors and the fields are written.
   mechanics_.release_step_buffers();
   report.mechanics_seconds = seconds_since(start);
@@ -244,7 +256,7 @@ PassReport StaggeredLoop::run_pass() {
                                                          mechanics_.allowed_step_displacement());
   // Both norms compare this pass with the last, so both passes must have had the full load.
   report.converged = iteration_ > settings_.ramp_passes && report.head_change < settings_.tolerance &&
-                     report.displacement_change < settings_.tolerance;
+                     report.displacement_change < settings_.tolerance && report.at_rest;
   if (!report.converged) report.escaping = blocks_beyond_their_size();
   report.head_change_two_passes = heads_two_back_.empty() ? 1.0 : head_change(solution_.head, heads_two_back_);
   heads_two_back_ = std::move(previous_heads_);

@@ -43,6 +43,9 @@ struct LoopSettings {
   // the first at full load counts as converged.
   int ramp_passes = 1;
   int steps_per_pass = 100;       // DDA steps run in each pass
+  // Then up to this many more, until the blocks are at rest (dda::System::step_until_at_rest);
+  // 0: none. A pass that ends with them still moving does not count as converged.
+  int settle_steps = 0;
   // A loop whose change (the larger of the two norms) grew this many passes in a row, and by
   // diverging_growth over them, is reported as diverging (0 passes: never). A converging
   // iteration may grow for a few passes (the six-block up-down case grows 2x over 3) but not
@@ -98,6 +101,8 @@ struct PassReport {
   double max_permeability = 0.0;
   double relaxation = 1.0;        // ω the heads were relaxed with in this pass
   double load_factor = 1.0;       // of the fluid forces, below 1 while ramped
+  int settling_steps = 0;         // DDA steps past steps_per_pass (LoopSettings::settle_steps)
+  bool at_rest = true;            // false: settle_steps ran out with the blocks still moving
   MeshExcursion outside_mesh;     // how far the blocks had left the fluid mesh after the pass
   bool converged = false;
   // The change has grown LoopSettings::diverging_passes passes in a row.

@@ -88,6 +88,15 @@ class System {
   // Static analysis: steps until the largest step displacement is below
   // settings.static_tolerance × model size, at most max_steps; throws if it never gets there.
   StepReport run_to_equilibrium(int max_steps);
+  // Steps until the blocks are at rest: a step at the full time step (not one cut short, whose
+  // displacement is small for being short) that moves no vertex by more than
+  // settings.static_tolerance × model size; at most max_steps. `steps` counts those taken
+  // (0 when max_steps is 0); whether they ended at rest.
+  struct Settling {
+    int steps = 0;
+    bool at_rest = false;
+  };
+  Settling step_until_at_rest(int max_steps);
 
   // External forces per block per vertex (N per metre), e.g. fluid forces; replaces the last.
   // forces[b] must be empty or hold one force per vertex of block b.

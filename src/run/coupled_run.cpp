@@ -220,6 +220,13 @@ output::RunSummary run_coupled(const RunContext& context) {
           r.iteration, r.head_change, r.displacement_change, r.porosity_seconds, r.flow_seconds,
           loop.flow().factorised ? "factored afresh" : "on the kept factor", loop.flow().cg_iterations,
           loop.flow().corrected_elements, r.mechanics_seconds);
+      if (s.coupling.settle)
+        spdlog::debug("iteration {}: {} more DDA steps to rest{}", r.iteration, r.settling_steps,
+                      r.at_rest ? "" : ", and the blocks still move");
+      if (!r.at_rest)
+        spdlog::warn("coupling iteration {}: the blocks still moved after the pass's DDA steps and {} more to "
+                     "settle (coupling.settle); the pass does not count as converged",
+                     r.iteration, r.settling_steps);
       converged = r.converged;
       // The first pass, every `every`-th, and the last (written below if not here).
       if (r.iteration == 1 || r.iteration % s.output.every == 0 || converged || r.diverging || !r.escaping.empty()) {

@@ -452,7 +452,8 @@ void read_coupling(ReadContext& ctx, const TableView& root, Scenario& s) {
       ctx.defaults.push_back({"coupling", "{ tolerance = 1e-4, max_iterations = 50, relaxation = 1 }"});
     return;
   }
-  const TableView c(ctx, *t, "coupling", {"tolerance", "max_iterations", "relaxation", "acceleration", "ramp_passes"});
+  const TableView c(ctx, *t, "coupling",
+                    {"tolerance", "max_iterations", "relaxation", "acceleration", "ramp_passes", "settle"});
   s.coupling.tolerance = c.number_or("tolerance", s.coupling.tolerance);
   c.require("tolerance", s.coupling.tolerance > 0.0, "must be > 0");
   if (auto n = c.integer("max_iterations", 1, 1'000'000)) {
@@ -466,6 +467,10 @@ void read_coupling(ReadContext& ctx, const TableView& root, Scenario& s) {
   s.coupling.acceleration =
       static_cast<LoopAcceleration>(c.choice("acceleration", {"none", "aitken", "anderson"}, "none"));
   if (auto n = c.integer("ramp_passes", 1, 1'000'000)) s.coupling.ramp_passes = *n;
+  s.coupling.settle = c.boolean("settle").value_or(false);
+  // At rest means nothing in a dynamic analysis, whose blocks keep their velocity.
+  c.require("settle", !s.coupling.settle || !s.mechanics || s.mechanics->analysis == Analysis::Static,
+            "needs mechanics.analysis = \"static\"");
 }
 
 // output.fields: which of the series "fluid", "blocks", "contacts" and "fractures" to write, each once.

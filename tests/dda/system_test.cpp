@@ -125,9 +125,9 @@ TEST(Selection, FindsVerticesAndEdgesOnASegment) {
 namespace hydrodda::dda {
 namespace {
 
-// run_to_equilibrium stops once a static step moves nothing (1e-9 × model size): a block
-// under a −1 MPa top traction on a frictionless base ends at εy = σ/E′ (plane strain, 0.5%).
-TEST(System, RunToEquilibriumReachesTheElasticSolution) {
+// A 1 m block under a −1 MPa top traction on a fixed, frictionless base, no gravity: at rest
+// it holds εy = σ/E′ (plane strain).
+ModelDefinition make_block_under_top_traction() {
   ModelDefinition m;
   m.materials = {Material{2500.0, 1.0e10, 0.25}};
   m.blocks.push_back({testing::make_rectangle(-1, -1, 2, 0), 0, true});
@@ -136,11 +136,39 @@ TEST(System, RunToEquilibriumReachesTheElasticSolution) {
   m.tractions.push_back({1, 2, -1.0e6, -1.0e6, 0.0, 0.0});
   m.settings.gravity = {0.0, 0.0};
   m.settings.time_step = 1e-2;
-  System system(std::move(m));
+  return m;
+}
+
+// run_to_equilibrium stops once a static step moves nothing (1e-9 × model size): the block
+// under its top traction ends at εy = σ/E′ (plane strain, 0.5%).
+TEST(System, RunToEquilibriumReachesTheElasticSolution) {
+  System system(make_block_under_top_traction());
   const StepReport r = system.run_to_equilibrium(1000);
   EXPECT_LE(r.max_displacement, 1e-9 * 1.0);
   const double expected = -1.0e6 * (1 - 0.25 * 0.25) / 1.0e10;
   EXPECT_NEAR(system.strain(1)[1], expected, 0.005 * std::abs(expected));
+}
+
+// step_until_at_rest: the same block steps on until a step at the full time step moves nothing
+// (1e-9 × model size), and it then holds the elastic solution; given too few steps, it says
+// the blocks were still moving; given none, it steps none.
+TEST(System, StepUntilAtRestSaysWhetherTheBlocksCameToRest) {
+  const auto make = make_block_under_top_traction;
+  System none(make());
+  const System::Settling zero = none.step_until_at_rest(0);
+  EXPECT_EQ(zero.steps, 0);
+  EXPECT_FALSE(zero.at_rest);
+  System hurried(make());
+  const System::Settling one = hurried.step_until_at_rest(1);
+  EXPECT_EQ(one.steps, 1);
+  EXPECT_FALSE(one.at_rest) << "the first step under the load moves the block";
+  System patient(make());
+  const System::Settling settled = patient.step_until_at_rest(1000);
+  EXPECT_TRUE(settled.at_rest);
+  EXPECT_GT(settled.steps, 1);
+  EXPECT_LT(settled.steps, 1000);
+  const double expected = -1.0e6 * (1 - 0.25 * 0.25) / 1.0e10;
+  EXPECT_NEAR(patient.strain(1)[1], expected, 0.005 * std::abs(expected));
 }
 
 }  // namespace

@@ -287,6 +287,18 @@ TEST(ScenarioReader, APrescribedDisplacementTakesItsRampTime) {
   }
 }
 
+// coupling.settle is off unless asked; asked of a dynamic analysis it is refused, naming its line.
+TEST(ScenarioReader, SettlingPassesAreForStaticAnalysis) {
+  const std::string base = kOneFreeBlock + "steps = 10\n";
+  EXPECT_FALSE(parse_scenario(base + "analysis = \"dynamic\"\n", "case.toml").coupling.settle);
+  EXPECT_TRUE(parse_scenario(base + "[[mechanics.fixed]]\npoint = [0.5, 0.0]\n[coupling]\nsettle = true\n", "case.toml")
+                  .coupling.settle);
+  const auto errors = errors_of(base + "analysis = \"dynamic\"\n[coupling]\nsettle = true\n");
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].key, "coupling.settle");
+  EXPECT_EQ(errors[0].line, 12);
+}
+
 TEST(NearestKey, SuggestsTyposOnly) {
   const std::vector<std::string> keys{"density", "young", "poisson", "matrix_porosity"};
   EXPECT_EQ(suggest_nearest("poison", keys), "poisson");
