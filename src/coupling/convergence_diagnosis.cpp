@@ -172,8 +172,9 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
       d.text = norms + " stayed above the tolerance: the " + name + " change drifts (" +
                (d.rate < 0.95 ? "at " + level + ", falling only as a power of the passes, not geometrically"
                               : "near " + level + ", neither falling nor alternating") +
-               "): the blocks keep moving from pass to pass; try more "
-               "mechanics.steps per pass, or check that the fluid load leaves the blocks an equilibrium";
+               "): the blocks keep moving from pass to pass; try coupling.settle = true (each pass steps on "
+               "until the blocks are at rest) or more mechanics.steps per pass, or check that the fluid load "
+               "leaves the blocks an equilibrium";
       break;
   }
   return d;
