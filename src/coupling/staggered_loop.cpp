@@ -208,35 +208,34 @@ PassReport StaggeredLoop::run_pass() {
   mechanics_.set_vertex_forces(std::move(forces));
   report.forces_seconds = seconds_since(start);
 
-  // Mechanics under the mechanical and fluid loads.
+  // Mechanics under the mechanical and fluid loads: the pass's steps, then (settle_steps) on
+  // until the blocks are at rest, as its fixed steps may stop them part-way to the equilibrium
+  // of its loads and the next pass would meet them there (docs/coupling.md, "Passes that
+  // settle").
   start = Clock::now();
-  for (int s = 0; s < settings_.steps_per_pass; ++s) {
+  const int most_steps = settings_.steps_per_pass + settings_.settle_steps;
+  int taken = 0;
+  bool at_rest = false;
+  while (taken < settings_.steps_per_pass || (taken < most_steps && !at_rest)) {
+    const auto which = [&] {
+      return std::to_string(taken + 1) + (taken < settings_.steps_per_pass
+                                               ? " of " + std::to_string(settings_.steps_per_pass)
+                                               : " (settling, at most " + std::to_string(most_steps) + ")");
+    };
     if (settings_.stop_requested && settings_.stop_requested()) {
-      const std::string where = "coupling iteration " + std::to_string(iteration_) + " stopped at DDA step " +
-                                std::to_string(s + 1) + " of " + std::to_string(settings_.steps_per_pass);
+      const std::string where = "coupling iteration " + std::to_string(iteration_) + " stopped at DDA step " + which();
       abandon_pass();
       throw PassInterrupted(where);
     }
     try {
-      mechanics_.step();
+      at_rest = mechanics_.is_at_rest(mechanics_.step());
     } catch (const std::exception& e) {
-      throw std::runtime_error("DDA step " + std::to_string(s + 1) + " of " +
-                               std::to_string(settings_.steps_per_pass) + " (t = " + std::to_string(mechanics_.time()) +
-                               " s): " + e.what());
+      throw std::runtime_error("DDA step " + which() + " (t = " + std::to_string(mechanics_.time()) + " s): " + e.what());
     }
+    ++taken;
   }
-  // On to rest: a pass's fixed steps may stop the blocks part-way to the equilibrium of its
-  // loads, and the next pass would meet them there (docs/coupling.md, "Passes that settle").
-  if (settings_.settle_steps > 0) {
-    try {
-      const dda::System::Settling settling = mechanics_.step_until_at_rest(settings_.settle_steps);
-      report.settling_steps = settling.steps;
-      report.at_rest = settling.at_rest;
-    } catch (const std::exception& e) {
-      throw std::runtime_error("DDA step " + std::to_string(settings_.steps_per_pass) + "+ settling (t = " +
-                               std::to_string(mechanics_.time()) + " s): " + e.what());
-    }
-  }
+  report.settling_steps = taken - settings_.steps_per_pass;
+  report.at_rest = settings_.settle_steps == 0 || at_rest;
   // The DDA's contact list goes while the flow model factors and the fields are written.
   mechanics_.release_step_buffers();
   report.mechanics_seconds = seconds_since(start);

@@ -43,7 +43,7 @@ struct LoopSettings {
   // the first at full load counts as converged.
   int ramp_passes = 1;
   int steps_per_pass = 100;       // DDA steps run in each pass
-  // Then up to this many more, until the blocks are at rest (dda::System::step_until_at_rest);
+  // Then up to this many more, until the blocks are at rest (dda::System::is_at_rest);
   // 0: none. A pass that ends with them still moving does not count as converged.
   int settle_steps = 0;
   // A loop whose change (the larger of the two norms) grew this many passes in a row, and by

@@ -821,23 +821,14 @@ StepReport System::run_until(double end_time) {
   return last;
 }
 
-System::Settling System::step_until_at_rest(int max_steps) {
-  Settling settling;
-  while (settling.steps < max_steps) {
-    const StepReport r = step();
-    ++settling.steps;
-    if (r.time_step >= settings_.time_step && r.max_displacement <= settings_.static_tolerance * model_size_) {
-      settling.at_rest = true;
-      break;
-    }
-  }
-  return settling;
+bool System::is_at_rest(const StepReport& step) const {
+  return step.time_step >= settings_.time_step && step.max_displacement <= settings_.static_tolerance * model_size_;
 }
 
 StepReport System::run_to_equilibrium(int max_steps) {
   for (int i = 0; i < max_steps; ++i) {
     const StepReport r = step();
-    if (r.max_displacement <= settings_.static_tolerance * model_size_) return r;
+    if (is_at_rest(r)) return r;
   }
   throw std::runtime_error("DDA: no static equilibrium within " + std::to_string(max_steps) +
                            " steps");

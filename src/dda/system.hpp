@@ -85,18 +85,13 @@ class System {
   // between passes, while the flow model factors and the fields are written; the next step
   // makes it again. Nothing a step or a query reads between steps is lost.
   void release_step_buffers();
-  // Static analysis: steps until the largest step displacement is below
-  // settings.static_tolerance × model size, at most max_steps; throws if it never gets there.
+  // Whether a step left the blocks at rest: it ran at the full time step (one cut short moves
+  // little for being short) and moved no vertex by more than settings.static_tolerance × model
+  // size.
+  bool is_at_rest(const StepReport& step) const;
+  // Static analysis: steps until one leaves the blocks at rest, at most max_steps; throws if
+  // it never gets there.
   StepReport run_to_equilibrium(int max_steps);
-  // Steps until the blocks are at rest: a step at the full time step (not one cut short, whose
-  // displacement is small for being short) that moves no vertex by more than
-  // settings.static_tolerance × model size; at most max_steps. `steps` counts those taken
-  // (0 when max_steps is 0); whether they ended at rest.
-  struct Settling {
-    int steps = 0;
-    bool at_rest = false;
-  };
-  Settling step_until_at_rest(int max_steps);
 
   // External forces per block per vertex (N per metre), e.g. fluid forces; replaces the last.
   // forces[b] must be empty or hold one force per vertex of block b.

@@ -40,9 +40,10 @@ CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::option
   settings.ramp_passes = s.coupling.ramp_passes;
   settings.steps_per_pass = s.mechanics->steps.value_or(
       static_cast<int>(std::ceil(*s.mechanics->end_time / s.mechanics->time_step)));
-  // At most a hundred times the pass's own steps: the up-down six-block model's first pass
-  // needed 26 times its 100 (docs/coupling.md, "Passes that settle").
-  settings.settle_steps = s.coupling.settle ? static_cast<int>(std::min<long long>(100LL * settings.steps_per_pass, 1'000'000'000)) : 0;
+  // At most a hundred times the pass's own steps (and no more than a run's): the up-down
+  // six-block model's first pass needed 26 times its 100 (docs/coupling.md, "Passes that settle").
+  settings.settle_steps =
+      s.coupling.settle ? static_cast<int>(std::min<long long>(100LL * settings.steps_per_pass, scenario::kMaxSteps)) : 0;
   settings.permeability = make_permeability_model(s);
   // Left empty where no region fixes a permeability: one optional per element is 16 MB at a
   // million triangles.

@@ -149,26 +149,29 @@ TEST(System, RunToEquilibriumReachesTheElasticSolution) {
   EXPECT_NEAR(system.strain(1)[1], expected, 0.005 * std::abs(expected));
 }
 
-// step_until_at_rest: the same block steps on until a step at the full time step moves nothing
-// (1e-9 × model size), and it then holds the elastic solution; given too few steps, it says
-// the blocks were still moving; given none, it steps none.
-TEST(System, StepUntilAtRestSaysWhetherTheBlocksCameToRest) {
-  const auto make = make_block_under_top_traction;
-  System none(make());
-  const System::Settling zero = none.step_until_at_rest(0);
-  EXPECT_EQ(zero.steps, 0);
-  EXPECT_FALSE(zero.at_rest);
-  System hurried(make());
-  const System::Settling one = hurried.step_until_at_rest(1);
-  EXPECT_EQ(one.steps, 1);
-  EXPECT_FALSE(one.at_rest) << "the first step under the load moves the block";
-  System patient(make());
-  const System::Settling settled = patient.step_until_at_rest(1000);
-  EXPECT_TRUE(settled.at_rest);
-  EXPECT_GT(settled.steps, 1);
-  EXPECT_LT(settled.steps, 1000);
+// is_at_rest: the first step under the load moves the block, so it is not at rest; stepping
+// on, a step at the full time step comes to move nothing (1e-9 × model size), after more than
+// one step and fewer than 1000, and the block then holds the elastic solution; a step cut short
+// is never at rest, however little it moved.
+TEST(System, AStepAtRestMovesNothingAtTheFullTimeStep) {
+  System hurried(make_block_under_top_traction());
+  EXPECT_FALSE(hurried.is_at_rest(hurried.step())) << "the first step under the load moves the block";
+  System patient(make_block_under_top_traction());
+  int steps = 0;
+  bool at_rest = false;
+  while (!at_rest && steps < 1000) {
+    at_rest = patient.is_at_rest(patient.step());
+    ++steps;
+  }
+  EXPECT_TRUE(at_rest);
+  EXPECT_GT(steps, 1);
+  EXPECT_LT(steps, 1000);
   const double expected = -1.0e6 * (1 - 0.25 * 0.25) / 1.0e10;
   EXPECT_NEAR(patient.strain(1)[1], expected, 0.005 * std::abs(expected));
+  StepReport cut = patient.step();
+  ASSERT_TRUE(patient.is_at_rest(cut));
+  cut.time_step *= 0.3;
+  EXPECT_FALSE(patient.is_at_rest(cut)) << "a step cut short moves little for being short";
 }
 
 }  // namespace
