@@ -151,6 +151,7 @@ PassReport StaggeredLoop::run_pass() {
   report.iteration = ++iteration_;
   pass_start_.emplace();
   pass_start_->kept_factor = darcy_.kept_factor();
+  pass_start_->kept_factor_single_precision = darcy_.kept_factor_in_single_precision();
 
   // Porosity and permeability from the blocks as they are now: recomputed every pass.
   auto start = Clock::now();
@@ -284,7 +285,7 @@ void StaggeredLoop::abandon_pass() {
   previous_update_ = std::move(start.previous_update);
   relaxation_ = start.relaxation;
   if (settings_.acceleration == Acceleration::anderson) anderson_.restore(std::move(start.anderson_history));
-  darcy_.restore_kept_factor(std::move(start.kept_factor));
+  darcy_.restore_kept_factor(std::move(start.kept_factor), start.kept_factor_single_precision);
   pass_start_.reset();
 }
 

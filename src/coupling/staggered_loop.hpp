@@ -145,6 +145,7 @@ struct LoopState {
   // The permeability whose factor the flow solver keeps for the next pass (null: none), shared
   // with the solver rather than copied.
   std::shared_ptr<const hydro::PermeabilityField> kept_factor_permeability;
+  bool kept_factor_single_precision = false;  // that factor held in single precision
 };
 
 class StaggeredLoop {
@@ -210,6 +211,7 @@ class StaggeredLoop {
     double relaxation = 1.0;
     std::deque<dda::AndersonAccelerator::Pass> anderson_history;
     std::shared_ptr<const hydro::PermeabilityField> kept_factor;
+    bool kept_factor_single_precision = false;
   };
   std::optional<PassStart> pass_start_;
 

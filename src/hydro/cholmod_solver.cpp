@@ -104,6 +104,21 @@ class CholmodSolver final : public LinearSolver {
   }
 
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const override {
+    if (numeric_ && numeric_->in_single_precision())
+      throw std::logic_error("CholmodSolver::solve with the factor kept for preconditioning");
+    return precondition(b);
+  }
+
+  // The factorisation on two threads keeps its factor in single precision: the solves that
+  // precondition CG read 130 MB rather than 260 MB at 10^6 triangles.
+  void keep_for_preconditioning() override {
+    if (!factored_) throw std::logic_error("CholmodSolver::keep_for_preconditioning before factorize");
+    if (numeric_) numeric_->keep_in_single_precision();
+  }
+
+  bool kept_for_preconditioning() const override { return numeric_ && numeric_->in_single_precision(); }
+
+  Eigen::VectorXd precondition(const Eigen::VectorXd& b) const override {
     if (numeric_ && factored_) return numeric_->solve(b, /*two_threads=*/true);
     Eigen::VectorXd x = factor_.solve(b);
     if (factor_.info() != Eigen::Success) throw SingularSystem("CHOLMOD: the solve failed");
@@ -120,7 +135,8 @@ class CholmodSolver final : public LinearSolver {
       const SupernodalFactorization* numeric = &*numeric_;
       HalfSolves halves{[numeric](Eigen::VectorXd& v) { numeric->solve_forward(v, /*two_threads=*/true); },
                         [numeric](Eigen::VectorXd& v) { numeric->solve_backward(v, /*two_threads=*/true); }};
-      return correct_supernodal_factor(factor_.factor(), factor_.common(), numeric->tree(), term, std::move(halves));
+      return correct_supernodal_factor(factor_.factor(), factor_.common(), numeric->tree(), term, std::move(halves),
+                                       numeric->single_values());
     }
     if (!tree_) tree_ = make_supernodal_tree(factor_.factor());
     return correct_supernodal_factor(factor_.factor(), factor_.common(), *tree_, term);

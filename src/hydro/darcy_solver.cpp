@@ -468,12 +468,23 @@ FlowSolution DarcySolver::solve_reusing_factor(PermeabilityView permeability, st
   clock = Clock::now();
   // The elements that jumped, taken exactly by a low-rank correction of the kept factor; where
   // the solver has none, or the corrected matrix is singular to working precision, the kept
-  // factor alone if it will do.
+  // factor alone if it will do. Without a correction the kept factor only preconditions from
+  // here, in single precision where the solver can: CG's iterations read half the memory, and
+  // the factor holds half while the blocks move. A correction of such a factor only adds: a
+  // stretch that closed by 10⁷ leaves 10⁻⁷ of its elements' conductance in the corrected
+  // matrix, no more than the factor's rounding to float, which would then swamp it (CG took
+  // twice the iterations in bench_hydro's LatePassFlow/10/1/60, and every other pass factored
+  // afresh); such a correction is not made.
   std::unique_ptr<CorrectedFactor> corrected;
+  if (plan.corrected.empty()) solver_->keep_for_preconditioning();
   if (!plan.corrected.empty()) {
-    try {
-      corrected = solver_->correct(element_changes(plan.corrected, permeability));
-    } catch (const SingularSystem&) {
+    const LowRankTerm term = element_changes(plan.corrected, permeability);
+    const bool downdates = std::any_of(term.weight.begin(), term.weight.end(), [](double w) { return w < 0.0; });
+    if (!downdates || !solver_->kept_for_preconditioning()) {
+      try {
+        corrected = solver_->correct(term);
+      } catch (const SingularSystem&) {
+      }
     }
     if (!corrected) {
       plan = plan_preconditioning(permeability, false);
@@ -676,21 +687,24 @@ LowRankTerm DarcySolver::element_changes(std::span<const int> elements, Permeabi
   return term;
 }
 
-void DarcySolver::restore_kept_factor(std::span<const PermeabilityTensor> permeability) {
-  restore_kept_factor(permeability.empty() ? nullptr : std::make_shared<const PermeabilityField>(permeability));
+void DarcySolver::restore_kept_factor(std::span<const PermeabilityTensor> permeability, bool single_precision) {
+  restore_kept_factor(permeability.empty() ? nullptr : std::make_shared<const PermeabilityField>(permeability),
+                      single_precision);
 }
 
-void DarcySolver::restore_kept_factor(std::shared_ptr<const PermeabilityField> kept) {
-  // The factor solver_ holds is already this one's: nothing to factor.
-  if (!kept || kept == factored_) {
-    kept_ = std::move(kept);
-    return;
+void DarcySolver::restore_kept_factor(std::shared_ptr<const PermeabilityField> kept, bool single_precision) {
+  // The factor solver_ holds is already this one's, and in double or in the single precision
+  // asked: nothing to factor. A factor in single precision cannot go back to double.
+  const bool held = kept && kept == factored_ && (single_precision || !solver_->kept_for_preconditioning());
+  if (kept && !held) {
+    check_size(kept->view());
+    assemble_system(kept->view());
+    SolveTimings timings;
+    if (unknown_count() > 0) factorize_system(timings);
+    factored_ = kept;
   }
-  check_size(kept->view());
-  assemble_system(kept->view());
-  SolveTimings timings;
-  if (unknown_count() > 0) factorize_system(timings);
-  factored_ = kept_ = std::move(kept);
+  kept_ = std::move(kept);
+  if (kept_ && single_precision && unknown_count() > 0) solver_->keep_for_preconditioning();
 }
 
 // Pseudocode (Saad, alg. 9.1), M the kept factor: r = f − A x; z = M⁻¹ r; p = z;
@@ -706,7 +720,7 @@ bool DarcySolver::solve_by_conjugate_gradients(Eigen::VectorXd& x, int budget, i
     return matrix_.selfadjointView<Eigen::Upper>() * v;
   };
   const auto precondition = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd {
-    return corrected ? corrected->solve(v) : solver_->solve(v);
+    return corrected ? corrected->solve(v) : solver_->precondition(v);
   };
   // The heads' range, fixed ones included: the scale of the head error that counts.
   const auto head_tolerance = [&] {

@@ -82,12 +82,16 @@ class DarcySolver {
   // restore_kept_factor() factors it again, so that a resumed run goes on with the very
   // factor, bit for bit, of the run it continues.
   std::vector<PermeabilityTensor> kept_factor_permeability() const { return kept_ ? kept_->tensors() : std::vector<PermeabilityTensor>{}; }
-  void restore_kept_factor(std::span<const PermeabilityTensor> permeability);
+  // And whether that factor is held in single precision (it goes there in the first pass that
+  // needs no correction of it: docs/flow.md). A checkpoint holds this too: a factor so held is
+  // corrected only where elements open, so the next pass's path depends on it.
+  bool kept_factor_in_single_precision() const { return kept_ && solver_->kept_for_preconditioning(); }
+  void restore_kept_factor(std::span<const PermeabilityTensor> permeability, bool single_precision = false);
   // The same, shared rather than copied (null: none): a coupling pass holds the one it
   // started with and gives it back when it is abandoned, which factors it again only when
-  // another has been factored since.
+  // another has been factored since (or it went to single precision since).
   std::shared_ptr<const PermeabilityField> kept_factor() const { return kept_; }
-  void restore_kept_factor(std::shared_ptr<const PermeabilityField> kept);
+  void restore_kept_factor(std::shared_ptr<const PermeabilityField> kept, bool single_precision = false);
 
   int unknown_count() const { return static_cast<int>(free_nodes_.size()); }
   long long stored_nonzeros() const { return matrix_.nonZeros(); }

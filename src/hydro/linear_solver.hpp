@@ -50,10 +50,20 @@ class LinearSolver {
   virtual void analyse(const SparseMatrix& upper) = 0;
   // Numeric factorisation of a matrix with the analysed pattern; throws SingularSystem.
   virtual void factorize(const SparseMatrix& upper) = 0;
-  // x = A⁻¹ b with the last factorisation.
+  // x = A⁻¹ b with the last factorisation. Refused (std::logic_error) while the factor is kept
+  // for preconditioning.
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& b) const = 0;
+  // From here until the next factorize(), the factor serves as a preconditioner only
+  // (precondition() and correct()): a backend may keep it in lower precision.
+  virtual void keep_for_preconditioning() {}
+  // Whether the factor is kept for preconditioning in lower precision now.
+  virtual bool kept_for_preconditioning() const { return false; }
+  // x = M⁻¹ b, M the factored matrix as kept for preconditioning: A itself, or its factor's
+  // values rounded (still a fixed symmetric positive definite M, close to A).
+  virtual Eigen::VectorXd precondition(const Eigen::VectorXd& b) const { return solve(b); }
   virtual std::string name() const = 0;
-  // The last factorisation corrected by `term`; null where the backend has no such update.
+  // The last factorisation (as kept for preconditioning) corrected by `term`; null where the
+  // backend has no such update.
   virtual std::unique_ptr<CorrectedFactor> correct(const LowRankTerm& term) const {
     (void)term;
     return nullptr;

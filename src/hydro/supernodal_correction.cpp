@@ -28,7 +28,7 @@ namespace {
 class SupernodalCorrection final : public CorrectedFactor {
  public:
   SupernodalCorrection(cholmod_factor* factor, cholmod_common* common, const SupernodalTree& tree,
-                       const LowRankTerm& term, HalfSolves halves);
+                       const LowRankTerm& term, HalfSolves halves, const float* single);
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const override;
 
  private:
@@ -63,6 +63,7 @@ class SupernodalCorrection final : public CorrectedFactor {
   const int* px_;     // per supernode: its first value in l_ (nsuper + 1)
   const int* rows_;   // the row indices of each supernode, its own columns first
   const double* l_;   // the values of each supernode, column-major, height(s) rows
+  const float* single_;  // or those values in single precision (then l_ is null)
   std::vector<int> reached_of_;   // per supernode: its index in reached_, −1 if W misses it
   std::vector<Reached> reached_;  // ascending supernodes
   std::vector<int> columns_;
@@ -76,16 +77,18 @@ void check_supernodal(const cholmod_factor* factor) {
 }
 
 SupernodalCorrection::SupernodalCorrection(cholmod_factor* factor, cholmod_common* common, const SupernodalTree& tree,
-                                           const LowRankTerm& term, HalfSolves halves)
-    : factor_(factor), common_(common), halves_(std::move(halves)) {
+                                           const LowRankTerm& term, HalfSolves halves, const float* single)
+    : factor_(factor), common_(common), halves_(std::move(halves)), single_(single) {
   check_supernodal(factor_);
-  if (factor_->xtype != CHOLMOD_REAL || factor_->dtype != CHOLMOD_DOUBLE)
+  if (!single_ && (factor_->xtype != CHOLMOD_REAL || factor_->dtype != CHOLMOD_DOUBLE))
     throw std::logic_error("supernodal correction: needs a numeric factor");
+  if (single_ && (!halves_.forward || !halves_.backward))
+    throw std::logic_error("supernodal correction: a factor in single precision needs its own half-solves");
   super_ = static_cast<const int*>(factor_->super);
   pi_ = static_cast<const int*>(factor_->pi);
   px_ = static_cast<const int*>(factor_->px);
   rows_ = static_cast<const int*>(factor_->s);
-  l_ = static_cast<const double*>(factor_->x);
+  l_ = single_ ? nullptr : static_cast<const double*>(factor_->x);
   if (tree.position.size() != factor_->n || tree.parent.size() != factor_->nsuper)
     throw std::logic_error("supernodal correction: the tree is another analysis's");
   if (static_cast<int>(term.start.size()) != term.columns() + 1)
@@ -148,11 +151,13 @@ void SupernodalCorrection::scatter_columns(const LowRankTerm& term, const Supern
 
 void SupernodalCorrection::sweep_up(const SupernodalTree& tree) {
   Eigen::MatrixXd update;
+  Eigen::MatrixXd widened;  // a supernode's values of L̃ in double: exactly L̃'s
   std::vector<int> at;  // J_s's positions in J_a
   for (const Reached& r : reached_) {
     const int s = r.supernode, nscol = width(s), below = height(s) - nscol;
     Block x = block(r);
-    const Eigen::Map<const Eigen::MatrixXd> l(l_ + px_[s], height(s), nscol);
+    if (single_) widened = Eigen::Map<const Eigen::MatrixXf>(single_ + px_[s], height(s), nscol).cast<double>();
+    const Eigen::Map<const Eigen::MatrixXd> l(single_ ? widened.data() : l_ + px_[s], height(s), nscol);
     l.topRows(nscol).triangularView<Eigen::Lower>().solveInPlace(x);
     if (below == 0) continue;
     update.noalias() = l.bottomRows(below) * x;
@@ -267,8 +272,8 @@ SupernodalTree make_supernodal_tree(const cholmod_factor* factor) {
 
 std::unique_ptr<CorrectedFactor> correct_supernodal_factor(cholmod_factor* factor, cholmod_common* common,
                                                            const SupernodalTree& tree, const LowRankTerm& term,
-                                                           HalfSolves halves) {
-  return std::make_unique<SupernodalCorrection>(factor, common, tree, term, std::move(halves));
+                                                           HalfSolves halves, const float* single) {
+  return std::make_unique<SupernodalCorrection>(factor, common, tree, term, std::move(halves), single);
 }
 
 }  // namespace hydrodda::hydro

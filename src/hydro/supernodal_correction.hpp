@@ -32,11 +32,13 @@ struct HalfSolves {
 };
 
 // `factor`: a numeric supernodal LLᵀ factor with int indices (std::logic_error otherwise), and
-// `tree` its analysis's. The factor and `common` (and what `halves` calls) must outlive the
-// result and stay unchanged while it is used. Throws SingularSystem when the corrected matrix
-// is singular to working precision.
+// `tree` its analysis's; or its analysis with the factor's values in single precision,
+// `single` (SupernodalFactorization::single_values), and `halves` that solve with them: the
+// result is then the exact inverse of Pᵀ L̃ L̃ᵀ P + U S Uᵀ. The factor and `common` (and what
+// `halves` calls) must outlive the result and stay unchanged while it is used. Throws
+// SingularSystem when the corrected matrix is singular to working precision.
 std::unique_ptr<CorrectedFactor> correct_supernodal_factor(cholmod_factor* factor, cholmod_common* common,
                                                            const SupernodalTree& tree, const LowRankTerm& term,
-                                                           HalfSolves halves = {});
+                                                           HalfSolves halves = {}, const float* single = nullptr);
 
 }  // namespace hydrodda::hydro

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -138,6 +140,7 @@ void SupernodalFactorization::factorize(const SparseMatrix& upper, bool two_thre
   if (upper.rows() != n_ || !upper.isCompressed() ||
       static_cast<std::size_t>(upper.nonZeros()) != entry_source_.size())
     throw std::logic_error("supernodal factorisation: the matrix is not the analysed one");
+  single_.reset();  // before the double values are made again: not both at once
   if (factor_->xtype == CHOLMOD_PATTERN &&
       !cholmod_change_factor(CHOLMOD_REAL, true, true, true, true, factor_, common_))
     throw std::runtime_error("supernodal factorisation: CHOLMOD could not allocate the factor");
@@ -250,16 +253,17 @@ namespace {
 // Σ a_i b_i in four running sums, which the compiler can keep in vector registers side by
 // side; one sum waits on its last addition at every term (the backward solve ran 1.35 times
 // as long as the forward one, whose updates are independent).
-double dot(const double* a, const double* b, int n) {
+template <typename Value>
+double dot(const Value* a, const double* b, int n) {
   double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
   int i = 0;
   for (; i + 4 <= n; i += 4) {
-    s0 += a[i] * b[i];
-    s1 += a[i + 1] * b[i + 1];
-    s2 += a[i + 2] * b[i + 2];
-    s3 += a[i + 3] * b[i + 3];
+    s0 += static_cast<double>(a[i]) * b[i];
+    s1 += static_cast<double>(a[i + 1]) * b[i + 1];
+    s2 += static_cast<double>(a[i + 2]) * b[i + 2];
+    s3 += static_cast<double>(a[i + 3]) * b[i + 3];
   }
-  for (; i < n; ++i) s0 += a[i] * b[i];
+  for (; i < n; ++i) s0 += static_cast<double>(a[i]) * b[i];
   return (s0 + s1) + (s2 + s3);
 }
 
@@ -278,48 +282,62 @@ Eigen::VectorXd SupernodalFactorization::solve(const Eigen::VectorXd& b, bool tw
 }
 
 void SupernodalFactorization::solve_forward(Eigen::VectorXd& v, bool two_threads) const {
+  if (single_) solve_forward_with(single_.get(), v, two_threads);
+  else solve_forward_with(static_cast<const double*>(factor_->x), v, two_threads);
+}
+
+void SupernodalFactorization::solve_backward(Eigen::VectorXd& v, bool two_threads) const {
+  if (single_) solve_backward_with(single_.get(), v, two_threads);
+  else solve_backward_with(static_cast<const double*>(factor_->x), v, two_threads);
+}
+
+template <typename Value>
+void SupernodalFactorization::solve_forward_with(const Value* l, Eigen::VectorXd& v, bool two_threads) const {
   if (v.size() != n_) throw std::logic_error("supernodal solve: the right-hand side has the wrong size");
+  if (!l) throw std::logic_error("supernodal solve: nothing factored");
   const int* perm = static_cast<const int*>(factor_->Perm);
   Eigen::VectorXd y(n_);
   for (int k = 0; k < n_; ++k) y[k] = v[perm[k]];
   for (std::vector<double>& sums : separator_sums_) sums.assign(separator_columns_.size(), 0.0);
   geometry::run_two_parts(halves_in_parallel(two_threads),
-                          [&](int half) { forward_over(half, y.data(), separator_sums_[half].data()); });
+                          [&](int half) { forward_over(half, l, y.data(), separator_sums_[half].data()); });
   for (std::size_t t = 0; t < separator_columns_.size(); ++t)
     y[separator_columns_[t]] -= separator_sums_[0][t] + separator_sums_[1][t];
-  forward_over(kSeparator, y.data(), nullptr);
+  forward_over(kSeparator, l, y.data(), nullptr);
   v = std::move(y);
 }
 
-void SupernodalFactorization::solve_backward(Eigen::VectorXd& v, bool two_threads) const {
+template <typename Value>
+void SupernodalFactorization::solve_backward_with(const Value* l, Eigen::VectorXd& v, bool two_threads) const {
   if (v.size() != n_) throw std::logic_error("supernodal solve: the right-hand side has the wrong size");
-  backward_over(kSeparator, v.data());
-  geometry::run_two_parts(halves_in_parallel(two_threads), [&](int half) { backward_over(half, v.data()); });
+  if (!l) throw std::logic_error("supernodal solve: nothing factored");
+  backward_over(kSeparator, l, v.data());
+  geometry::run_two_parts(halves_in_parallel(two_threads), [&](int half) { backward_over(half, l, v.data()); });
   const int* perm = static_cast<const int*>(factor_->Perm);
   Eigen::VectorXd x(n_);
   for (int k = 0; k < n_; ++k) x[perm[k]] = v[k];
   v = std::move(x);
 }
 
-void SupernodalFactorization::forward_over(int group, double* y, double* separator) const {
-  const double* const x = static_cast<const double*>(factor_->x);
+template <typename Value>
+void SupernodalFactorization::forward_over(int group, const Value* const x, double* y, double* separator) const {
   std::vector<double> below;
   for (int s : members_[group]) {
     const int first = super_[s], width = super_[s + 1] - first;
     const int* rows = rows_ + pi_[s];
     const int height = pi_[s + 1] - pi_[s];
-    const double* l = x + px_[s];
+    const Value* l = x + px_[s];
     double* ys = y + first;
     for (int j = 0; j < width; ++j) {
-      const double* column = l + static_cast<std::size_t>(j) * height;
-      const double v = ys[j] /= column[j];
-      for (int i = j + 1; i < width; ++i) ys[i] -= column[i] * v;
+      const Value* column = l + static_cast<std::size_t>(j) * height;
+      const double v = ys[j] /= static_cast<double>(column[j]);
+      for (int i = j + 1; i < width; ++i) ys[i] -= static_cast<double>(column[i]) * v;
     }
     below.assign(height - width, 0.0);
     for (int j = 0; j < width; ++j) {
-      const double* column = l + static_cast<std::size_t>(j) * height + width;
+      const Value* column = l + static_cast<std::size_t>(j) * height + width;
       const double v = ys[j];
-      for (int i = 0; i < height - width; ++i) below[i] += column[i] * v;
+      for (int i = 0; i < height - width; ++i) below[i] += static_cast<double>(column[i]) * v;
     }
     for (int i = 0; i < height - width; ++i) {
       const int r = rows[width + i];
@@ -330,25 +348,71 @@ void SupernodalFactorization::forward_over(int group, double* y, double* separat
   }
 }
 
-void SupernodalFactorization::backward_over(int group, double* y) const {
-  const double* const x = static_cast<const double*>(factor_->x);
+template <typename Value>
+void SupernodalFactorization::backward_over(int group, const Value* const x, double* y) const {
   std::vector<double> below;
   for (auto it = members_[group].rbegin(); it != members_[group].rend(); ++it) {
     const int s = *it;
     const int first = super_[s], width = super_[s + 1] - first;
     const int* rows = rows_ + pi_[s];
     const int height = pi_[s + 1] - pi_[s];
-    const double* l = x + px_[s];
+    const Value* l = x + px_[s];
     double* ys = y + first;
     below.resize(height - width);
     for (int i = 0; i < height - width; ++i) below[i] = y[rows[width + i]];
     for (int j = 0; j < width; ++j)
       ys[j] -= dot(l + static_cast<std::size_t>(j) * height + width, below.data(), height - width);
     for (int j = width - 1; j >= 0; --j) {
-      const double* column = l + static_cast<std::size_t>(j) * height;
-      ys[j] = (ys[j] - dot(column + j + 1, ys + j + 1, width - j - 1)) / column[j];
+      const Value* column = l + static_cast<std::size_t>(j) * height;
+      ys[j] = (ys[j] - dot(column + j + 1, ys + j + 1, width - j - 1)) / static_cast<double>(column[j]);
     }
   }
+}
+
+// Rounds each value to the nearest float in place, over the first half of the double values'
+// own memory, then shrinks that block to the floats (CHOLMOD's realloc; the C library's
+// mremap hands the rest back at once), so that the two never stand side by side (another
+// 130 MB at 10^6 triangles). The block is then this object's, CHOLMOD's factor symbolic.
+// In chunks: a chunk's doubles are all read into a buffer before its floats are written,
+// and its floats cover only doubles of this chunk or of earlier ones (float k lies in the
+// bytes of double k / 2). Where a diagonal entry would leave float's range (a conductivity
+// beyond 1e±76 in the matrix's units), the factor stays in double.
+void SupernodalFactorization::keep_in_single_precision() {
+  if (single_) return;
+  if (factor_->xtype != CHOLMOD_REAL || !factor_->x || factor_->minor != factor_->n)
+    throw std::logic_error("supernodal factorisation: nothing factored to keep");
+  const double* const x = static_cast<const double*>(factor_->x);
+  for (int s = 0; s < nsuper_; ++s) {
+    const int width = super_[s + 1] - super_[s], height = pi_[s + 1] - pi_[s];
+    for (int j = 0; j < width; ++j) {
+      const auto d = static_cast<float>(x[px_[s] + static_cast<std::size_t>(j) * height + j]);
+      if (!(d >= std::numeric_limits<float>::min() && d <= std::numeric_limits<float>::max())) return;
+    }
+  }
+  const std::size_t size = factor_->xsize;
+  auto* const bytes = static_cast<unsigned char*>(factor_->x);
+  constexpr std::size_t kChunk = 1 << 14;
+  std::vector<float> chunk(kChunk);
+  for (std::size_t first = 0; first < size; first += kChunk) {
+    const std::size_t count = std::min(kChunk, size - first);
+    for (std::size_t k = 0; k < count; ++k) {
+      double value;
+      std::memcpy(&value, bytes + (first + k) * sizeof(double), sizeof(double));
+      chunk[k] = static_cast<float>(value);
+    }
+    std::memcpy(bytes + first * sizeof(float), chunk.data(), count * sizeof(float));
+  }
+  std::size_t doubles = size;
+  void* kept = cholmod_realloc((size + 1) / 2, sizeof(double), factor_->x, &doubles, common_);
+  if (!kept) throw std::runtime_error("supernodal factorisation: CHOLMOD could not shrink the factor's values");
+  // CHOLMOD's own numeric-to-symbolic change, but for the values, which are kept here.
+  factor_->x = nullptr;
+  factor_->xtype = CHOLMOD_PATTERN;
+  single_ = std::unique_ptr<float[], CholmodValues>(static_cast<float*>(kept), CholmodValues{common_, doubles});
+}
+
+void CholmodValues::operator()(float* values) const {
+  cholmod_free(doubles, sizeof(double), values, common);
 }
 
 }  // namespace hydrodda::hydro

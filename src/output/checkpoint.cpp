@@ -21,7 +21,7 @@ constexpr std::string_view kMagic = "hydrodda checkpoint\n";
 // permeability as tensors (xx, xy, yy), joint apertures' included; 8: CRC-32 in place of FNV-1a
 // as the checksum. Only the current format is read: a run stopped by an older hydrodda is run
 // again.
-constexpr std::int64_t kVersion = 8;
+constexpr std::int64_t kVersion = 9;
 // The last 8 bytes: the CRC-32 of every byte before them (zlib's, as a 64-bit word). A CRC
 // detects every error burst of up to 32 bits, so a flipped bit is refused, not resumed from;
 // zlib computes it four times as fast as a byte-at-a-time hash on a checkpoint of tens of MB.
@@ -346,6 +346,7 @@ void put_checkpoint(Writer& w, const RunCheckpoint& c, const dda::SystemState& m
   w.put(coupling.anderson_residuals);
   w.put(coupling.anderson_images);
   w.put(coupling.kept_factor_permeability);
+  w.put(static_cast<std::int64_t>(coupling.kept_factor_single_precision));
   w.finish();
 }
 }  // namespace
@@ -419,6 +420,10 @@ RunCheckpoint decode_checkpoint(std::string_view file) {
   std::vector<hydro::PermeabilityTensor> kept;
   r.get(kept);
   if (!kept.empty()) c.coupling.kept_factor_permeability = std::make_shared<const hydro::PermeabilityField>(kept);
+  std::int64_t single_precision = 0;
+  r.get(single_precision);
+  if (single_precision != 0 && single_precision != 1) r.fail();
+  c.coupling.kept_factor_single_precision = single_precision == 1;
   r.expect_end();
   return c;
 }

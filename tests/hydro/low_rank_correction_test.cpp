@@ -95,6 +95,36 @@ TEST(LowRankCorrection, SolvesTheCorrectedMatrixAsAFreshFactorDoes) {
   }
 }
 
+// With the factor kept for preconditioning (in single precision: M̃ = Pᵀ L̃ L̃ᵀ P, L̃ the factor
+// rounded to float), the correction is exact for M̃ + U S Uᵀ: x = M̃⁻¹ (b − U S Uᵀ x) to
+// round-off, M̃⁻¹ applied by precondition(). solve() is refused meanwhile.
+TEST(LowRankCorrection, CorrectsTheFactorKeptForPreconditioning) {
+  const Eigen::MatrixXd a = grid_laplacian(40);
+  const LowRankTerm term = random_term(static_cast<int>(a.rows()), 60, 7);
+  Eigen::MatrixXd u = Eigen::MatrixXd::Zero(a.rows(), term.columns());
+  for (int j = 0; j < term.columns(); ++j)
+    for (int p = term.start[j]; p < term.start[j + 1]; ++p) u(term.row[p], j) = term.value[p];
+  const Eigen::VectorXd s = Eigen::Map<const Eigen::VectorXd>(term.weight.data(), term.columns());
+
+  auto kept = make_cholmod_solver();
+  kept->analyse(upper_sparse(a));
+  kept->factorize(upper_sparse(a));
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(a.rows(), -1.0, 2.0).array().sin();
+  const Eigen::VectorXd x_exact = kept->solve(b);
+  kept->keep_for_preconditioning();
+  EXPECT_THROW(kept->solve(b), std::logic_error);
+  EXPECT_GT(relative_difference(kept->precondition(b), x_exact), 0.0);  // M̃ is not A
+
+  const std::unique_ptr<CorrectedFactor> update = kept->correct(term);
+  ASSERT_NE(update, nullptr);
+  const Eigen::VectorXd x = update->solve(b);
+  const Eigen::VectorXd recovered = kept->precondition(b - u * s.asDiagonal() * (u.transpose() * x));
+  EXPECT_LE(relative_difference(recovered, x), kAgreement);
+
+  kept->factorize(upper_sparse(a));  // double again: the exact solve as before
+  EXPECT_EQ(relative_difference(kept->solve(b), x_exact), 0.0);
+}
+
 TEST(LowRankCorrection, AnEmptyTermLeavesTheFactorsSolve) {
   const Eigen::MatrixXd a = grid_laplacian(20);
   auto solver = make_cholmod_solver();

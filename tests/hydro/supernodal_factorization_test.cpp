@@ -156,6 +156,49 @@ TEST(SupernodalFactorization, FactorsAMatrixOrderedWholeOnOneThread) {
   EXPECT_LE((x - expected).lpNorm<Eigen::Infinity>(), kSolveAgreement * expected.lpNorm<Eigen::Infinity>());
 }
 
+// Kept in single precision, the factor's values are rounded to float and the double ones let
+// go; its solve is then the exact solve with the rounded factor L̃: CHOLMOD's solve on a copy of
+// the factor whose values are L's rounded to float and back, to the same 1e-11 (the two add
+// the same products in different orders). The next factorisation brings the double values
+// back, bit for bit as before.
+TEST(SupernodalFactorization, KeptInSinglePrecisionSolvesWithTheRoundedFactor) {
+  const SparseMatrix a = flow_like_matrix(170, 150, 4);
+  Analyses analyses(a);
+  SupernodalFactorization ours = analyses.ours();
+  ours.factorize(a, true);
+  const std::vector<double> exact = values_of(analyses.ours_factor());
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(a.rows(), -2.0, 1.0).array().cos();
+  const Eigen::VectorXd x_exact = ours.solve(b, true);
+
+  cholmod_factor* rounded = analyses.cholmod_factor_of(a);
+  ASSERT_EQ(rounded->xsize, exact.size());
+  double* values = static_cast<double*>(rounded->x);
+  for (std::size_t k = 0; k < exact.size(); ++k) values[k] = static_cast<double>(static_cast<float>(exact[k]));
+  Eigen::VectorXd copy = b;
+  cholmod_dense rhs = Eigen::viewAsCholmod(copy);
+  cholmod_dense* solved = cholmod_solve(CHOLMOD_A, rounded, &rhs, analyses.common());
+  const Eigen::VectorXd expected = Eigen::Map<Eigen::VectorXd>(static_cast<double*>(solved->x), a.rows());
+  cholmod_free_dense(&solved, analyses.common());
+
+  EXPECT_FALSE(ours.in_single_precision());
+  ours.keep_in_single_precision();
+  ASSERT_TRUE(ours.in_single_precision());
+  EXPECT_EQ(analyses.ours_factor()->x, nullptr);  // the double values are gone
+  EXPECT_EQ(analyses.ours_factor()->xtype, CHOLMOD_PATTERN);
+  const Eigen::VectorXd x_two = ours.solve(b, true), x_one = ours.solve(b, false);
+  EXPECT_EQ(std::memcmp(x_one.data(), x_two.data(), x_one.size() * sizeof(double)), 0);
+  EXPECT_LE((x_two - expected).lpNorm<Eigen::Infinity>(), kSolveAgreement * expected.lpNorm<Eigen::Infinity>());
+  EXPECT_GT((x_two - x_exact).lpNorm<Eigen::Infinity>(), 0.0);  // the rounded factor is the one in use
+
+  ours.factorize(a, true);
+  EXPECT_FALSE(ours.in_single_precision());
+  const std::vector<double> again = values_of(analyses.ours_factor());
+  ASSERT_EQ(again.size(), exact.size());
+  EXPECT_EQ(std::memcmp(again.data(), exact.data(), exact.size() * sizeof(double)), 0);
+  const Eigen::VectorXd x_again = ours.solve(b, true);
+  EXPECT_EQ(std::memcmp(x_again.data(), x_exact.data(), x_exact.size() * sizeof(double)), 0);
+}
+
 // A negative pivot, in either half or in the separator, is refused as CHOLMOD refuses it.
 TEST(SupernodalFactorization, RefusesAMatrixThatIsNotPositiveDefinite) {
   const SparseMatrix a = flow_like_matrix(170, 150, 3);

@@ -61,6 +61,7 @@ RunCheckpoint make_checkpoint() {
   c.coupling.anderson_images = {{20.1, 3.1, 0.0, 2.01e5, 0.99e5, 0.0}, {20.0, 3.3, 0.0, 2e5, 1e5, 0.0}};
   c.coupling.kept_factor_permeability = std::make_shared<const hydro::PermeabilityField>(
       std::vector<hydro::PermeabilityTensor>{{1e-15, 0.0, 1e-15}, {3.7e-9, -1.2e-10, 2.5e-11}});
+  c.coupling.kept_factor_single_precision = true;
   return c;
 }
 
@@ -111,6 +112,7 @@ TEST(Checkpoint, DecodesToTheSameValuesBitForBit) {
   EXPECT_EQ(d.coupling.anderson_images, c.coupling.anderson_images);
   ASSERT_TRUE(d.coupling.kept_factor_permeability);
   EXPECT_EQ(d.coupling.kept_factor_permeability->tensors(), c.coupling.kept_factor_permeability->tensors());
+  EXPECT_TRUE(d.coupling.kept_factor_single_precision);
 }
 
 TEST(Checkpoint, ACutOrDamagedFileIsRefused) {
@@ -121,7 +123,7 @@ TEST(Checkpoint, ACutOrDamagedFileIsRefused) {
   EXPECT_THROW(decode_checkpoint(bytes + "x"), CheckpointError);
   EXPECT_THROW(decode_checkpoint("title = \"a scenario, not a checkpoint\"\n"), CheckpointError);
   std::string other_version = bytes;
-  other_version[std::string_view("hydrodda checkpoint\n").size()] = 9;
+  other_version[std::string_view("hydrodda checkpoint\n").size()] = 8;  // the format before this one
   EXPECT_THROW(decode_checkpoint(other_version), CheckpointError);
 }
 
