@@ -6,7 +6,8 @@
 // blocks shrunk to leave 1% apertures: every element clipped against the blocks over it.
 // BM_Seal*: the fractured seal of benchmarks/seal_scenario.py (100 m × 20 m, C near-vertical
 // joints and B flat beds, 2 mm apertures) over a structured mesh of the same element size, for
-// the porosity mapping, the local apertures and the two together (the coupling loop's phase).
+// the porosity mapping, the local apertures and the two together (the coupling loop's phase),
+// and the fluid pressure's loads along the blocks' faces (a linear field, faces taking all of it).
 // BM_PeerBricks: the triangles and rotated bricks of shared/peers/clip's clipbench, built the
 // same way from the same seed, so that both map identical inputs.
 
@@ -21,6 +22,7 @@
 
 #include "coupling/local_aperture.hpp"
 #include "coupling/porosity.hpp"
+#include "coupling/pressure_forces.hpp"
 #include "geometry/domain_cutting.hpp"
 
 namespace {
@@ -184,10 +186,32 @@ void BM_SealPorosityAndApertures(benchmark::State& state) {
   set_counters(state, c);
 }
 
+// The face loads of a pass (coupling::FacePressureLoads): every face of every block
+// integrated through the elements it crosses, the pressure ρ g (50 m − y) at the nodes.
+void BM_SealFaceLoads(benchmark::State& state) {
+  const Case& c = seal(state);
+  hydrodda::mesh::TriangleMesh mesh;
+  mesh.nodes = c.nodes;
+  mesh.triangles = c.triangles;
+  const hydrodda::coupling::FacePressureLoads loads(mesh);
+  std::vector<double> pressure;
+  for (Point p : mesh.nodes) pressure.push_back(9810.0 * (50.0 - p.y));
+  const std::vector<double> biot(c.blocks.size(), 0.0);
+  long faces = 0;
+  for (const Polygon& block : c.blocks) faces += static_cast<long>(block.size());
+  for (auto _ : state) {
+    auto forces = loads.compute(c.blocks, pressure, biot);
+    benchmark::DoNotOptimize(forces.data());
+  }
+  set_counters(state, c);
+  state.counters["faces"] = static_cast<double>(faces);
+}
+
 BENCHMARK(BM_SealPorosity)->Args({40, 24, 160})->Args({100, 99, 62})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SealPorosityWithPieces)->Args({40, 24, 160})->Args({100, 99, 62})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SealApertures)->Args({40, 24, 160})->Args({100, 99, 62})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SealPorosityAndApertures)->Args({40, 24, 160})->Args({100, 99, 62})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SealFaceLoads)->Args({40, 24, 160})->Args({100, 99, 62})->Unit(benchmark::kMillisecond);
 
 // clipbench's inputs (shared/peers/clip/clipbench.cpp, "T B" on its command line): a square of
 // side L = 2 h nx meshed as n × n cells, and a staggered pattern of 2:1 bricks of height h

@@ -116,18 +116,24 @@ std::vector<double> FacePressureLoads::cut_where_nearest_side_changes(Point a, P
   const Point along = b - a;
   const double length_squared = dot(along, along);
   if (length_squared == 0.0) return cuts;
+  // Both through the grid of the sides' boxes: a side within d of a point has its box within
+  // d of it (the same nearest side and the same nodes as a look at every side).
   const auto distance_to_mesh = [&](Point p) {
-    double d = std::numeric_limits<double>::infinity();
-    for (const BoundarySide& side : boundary_) d = std::min(d, geometry::distance_to_segment(p, side.a, side.b));
-    return d;
+    const auto distance = [&](int k) { return geometry::distance_to_segment(p, boundary_[k].a, boundary_[k].b); };
+    const int nearest = boundary_grid_.nearest(p, boundary_reach_, distance);
+    return nearest < 0 ? std::numeric_limits<double>::infinity() : distance(nearest);
   };
   const double reach = std::max(distance_to_mesh(a), distance_to_mesh(b));
-  for (const BoundarySide& side : boundary_)
-    for (Point node : {side.a, side.b}) {
+  geometry::Box around;
+  around.add(a);
+  around.add(b);
+  boundary_grid_.for_each_overlap(around.inflated(2.0 * reach + tolerance_), [&](int k) {
+    for (Point node : {boundary_[k].a, boundary_[k].b}) {
       if (geometry::distance_to_segment(node, a, b) > 2.0 * reach + tolerance_) continue;
       const double t = dot(node - a, along) / length_squared;
       if (t > 0.0 && t < 1.0) cuts.push_back(t);
     }
+  });
   std::sort(cuts.begin(), cuts.end());
   cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
   return cuts;

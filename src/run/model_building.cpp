@@ -12,6 +12,7 @@
 #include "dda/support.hpp"
 #include "mesh/mesh_cache.hpp"
 #include "mesh/mesh_request.hpp"
+#include "mesh/spatial_order.hpp"
 #include "run/mesh_budget.hpp"
 #include "run/model_geometry.hpp"
 #include "hydro/permeability_law.hpp"
@@ -201,7 +202,8 @@ mesh::MeshRequest make_mesh_request(const Scenario& s) {
   return request;
 }
 
-mesh::TriangleMesh build_mesh(const Scenario& s, const std::optional<std::filesystem::path>& mesh_cache) {
+namespace {
+mesh::TriangleMesh make_or_read_mesh(const Scenario& s, const std::optional<std::filesystem::path>& mesh_cache) {
   if (s.mesh->file) return read_mesh_file(s);
   const mesh::MeshRequest request = make_mesh_request(s);
   spdlog::info("mesh: {} expected", check_mesh_budget(s, request));
@@ -209,6 +211,13 @@ mesh::TriangleMesh build_mesh(const Scenario& s, const std::optional<std::filesy
   mesh::CachedMesh cached = mesh::generate_or_reuse_mesh(request, *mesh_cache);
   spdlog::info("mesh: {} {}", cached.reused ? "read from" : "made and stored in", cached.file.string());
   return std::move(cached.mesh);
+}
+}  // namespace
+
+mesh::TriangleMesh build_mesh(const Scenario& s, const std::optional<std::filesystem::path>& mesh_cache) {
+  mesh::TriangleMesh mesh = make_or_read_mesh(s, mesh_cache);
+  mesh::order_spatially(mesh);  // whatever made it: the searches over its elements read memory in order
+  return mesh;
 }
 
 // Triangles whose centroid lies in the polygon: the mesh honours region boundaries, so this is
