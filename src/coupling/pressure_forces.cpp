@@ -153,7 +153,8 @@ double FacePressureLoads::pressure_at(Point p, std::span<const double> nodal_pre
 }
 
 // Pseudocode:
-//   candidates = the elements whose boxes overlap the segment, searched a grid cell at a time
+//   candidates = the elements whose boxes overlap the segment: the box of a segment near a grid
+//                axis, of each of its chunks (about an element long) for an oblique one
 //   pieces = the segment clipped to each candidate, sorted by where they start
 //   reach = 0
 //   for each piece (t0, t1, e) with t1 > reach:
@@ -165,17 +166,30 @@ double FacePressureLoads::pressure_at(Point p, std::span<const double> nodal_pre
 FacePressureLoads::SegmentIntegrals FacePressureLoads::integrate_along(Point a, Point b,
                                                                       std::span<const double> nodal_pressure) const {
   const double length = geometry::distance(a, b);
-  std::vector<int> candidates;
-  const int chunks = std::max(1, static_cast<int>(std::ceil(length / chunk_length_)));
-  for (int k = 0; k < chunks; ++k) {
-    geometry::Box box;
-    box.add(a + (static_cast<double>(k) / chunks) * (b - a));
-    box.add(a + (static_cast<double>(k + 1) / chunks) * (b - a));
-    elements_->grid().for_each_overlap(box.inflated(tolerance_), [&](int e) { candidates.push_back(e); });
+  // The lists of the last face this thread integrated, kept for their memory.
+  thread_local std::vector<int> candidates;
+  thread_local std::vector<SegmentPiece> pieces;
+  candidates.clear();
+  pieces.clear();
+  geometry::Box whole;
+  whole.add(a);
+  whole.add(b);
+  if (std::min(whole.width(), whole.height()) <= 2.0 * chunk_length_) {
+    // A face near a grid axis (a bed, a sub-vertical joint): its box is a strip about two
+    // elements wide, and one search of it finds each element once.
+    elements_->grid().for_each_overlap(whole.inflated(tolerance_), [&](int e) { candidates.push_back(e); });
+  } else {
+    // An oblique face: boxes of a chunk each, not the one box a diagonal spans.
+    const int chunks = std::max(1, static_cast<int>(std::ceil(length / chunk_length_)));
+    for (int k = 0; k < chunks; ++k) {
+      geometry::Box box;
+      box.add(a + (static_cast<double>(k) / chunks) * (b - a));
+      box.add(a + (static_cast<double>(k + 1) / chunks) * (b - a));
+      elements_->grid().for_each_overlap(box.inflated(tolerance_), [&](int e) { candidates.push_back(e); });
+    }
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
   }
-  std::sort(candidates.begin(), candidates.end());
-  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-  std::vector<SegmentPiece> pieces;
   for (int e : candidates) {
     const auto& t = mesh_.triangles[e];
     if (const auto part = clip_segment(a, b, mesh_.nodes[t[0]], mesh_.nodes[t[1]], mesh_.nodes[t[2]], tolerance_))
