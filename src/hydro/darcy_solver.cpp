@@ -472,9 +472,9 @@ FlowSolution DarcySolver::solve_reusing_factor(PermeabilityView permeability, st
   // here, in single precision where the solver can: CG's iterations read half the memory, and
   // the factor holds half while the blocks move. A correction of such a factor only adds: a
   // stretch that closed by 10⁷ leaves 10⁻⁷ of its elements' conductance in the corrected
-  // matrix, no more than the factor's rounding to float, which would then swamp it (CG took
-  // twice the iterations in bench_hydro's LatePassFlow/10/1/60, and every other pass factored
-  // afresh); such a correction is not made.
+  // matrix, no more than the factor's rounding to float, which would then swamp it (made so in
+  // bench_hydro's LatePassFlow/10/1/60, it left CG too slow for every other pass, which
+  // factored afresh); such a correction is not made.
   std::unique_ptr<CorrectedFactor> corrected;
   if (plan.corrected.empty()) solver_->keep_for_preconditioning();
   if (!plan.corrected.empty()) {
