@@ -476,8 +476,9 @@ FlowSolution DarcySolver::solve_reusing_factor(PermeabilityView permeability, st
   // bench_hydro's LatePassFlow/10/1/60, it left CG too slow for every other pass, which
   // factored afresh); such a correction is not made.
   std::unique_ptr<CorrectedFactor> corrected;
-  if (plan.corrected.empty()) solver_->keep_for_preconditioning();
-  if (!plan.corrected.empty()) {
+  if (plan.corrected.empty()) {
+    solver_->keep_for_preconditioning();
+  } else {
     const LowRankTerm term = element_changes(plan.corrected, permeability);
     const bool downdates = std::any_of(term.weight.begin(), term.weight.end(), [](double w) { return w < 0.0; });
     if (!downdates || !solver_->kept_for_preconditioning()) {

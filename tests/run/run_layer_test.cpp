@@ -338,4 +338,26 @@ TEST(CoupledModel, AnAbandonedPassLeavesTheModelAtTheLastFinishedPass) {
   EXPECT_EQ(encoded(stopped), encoded(never_stopped));
 }
 
+TEST(CoupledModel, TheFlowFactorsPrecisionGoesWithItsState) {
+  // The seal over a reservoir runs its third pass on the kept flow factor without a correction,
+  // which rounds the factor to single precision. The exported state says so, and a model that
+  // imports it holds its factor in single precision too (it is corrected only where elements
+  // open, so the next pass's path depends on it:
+  // FactorReuse.ARestoredSinglePrecisionFactorTakesTheSamePath).
+  const scenario::Scenario s =
+      scenario::read_scenario(fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/seal_over_reservoir.toml");
+  run::CoupledModel running(s);
+  running.run_pass();
+  EXPECT_FALSE(running.export_state().coupling.kept_factor_single_precision);  // factored afresh
+  running.run_pass();
+  running.run_pass();
+  ASSERT_FALSE(running.loop().flow().factorised);
+  ASSERT_EQ(running.loop().flow().corrected_elements, 0);
+  const run::CoupledState state = running.export_state();
+  EXPECT_TRUE(state.coupling.kept_factor_single_precision);
+  run::CoupledModel resumed(s);
+  resumed.import_state(state);
+  EXPECT_TRUE(resumed.export_state().coupling.kept_factor_single_precision);
+}
+
 }  // namespace
