@@ -1,6 +1,7 @@
 #include "dda/support.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 
 #include "geometry/polygon.hpp"
@@ -38,15 +39,28 @@ bool touching(const Polygon& a, const Polygon& b, double distance) {
   return near(a, b) || near(b, a);
 }
 
+double half_model_height(const std::vector<BlockDefinition>& blocks) {
+  geometry::Box all;
+  for (const BlockDefinition& b : blocks)
+    for (Point p : b.polygon) all.add(p);
+  return 0.5 * std::max(all.height(), 1e-3 * all.width());
+}
+
 }  // namespace
 
 double initial_contact_distance(const std::vector<BlockDefinition>& blocks, const Settings& settings) {
   if (settings.contact_distance > 0) return settings.contact_distance;
-  geometry::Box all;
-  for (const BlockDefinition& b : blocks)
-    for (Point p : b.polygon) all.add(p);
-  const double model_size = 0.5 * std::max(all.height(), 1e-3 * all.width());
-  return 2.5 * settings.max_displacement_ratio * model_size;
+  return 2.5 * settings.max_displacement_ratio * half_model_height(blocks);
+}
+
+double displacement_ratio_for_blocks(const std::vector<BlockDefinition>& blocks, double ratio) {
+  if (blocks.empty()) return ratio;
+  double thinnest = std::numeric_limits<double>::infinity();
+  for (const BlockDefinition& b : blocks) thinnest = std::min(thinnest, geometry::width_across_edges(b.polygon));
+  const double w0 = half_model_height(blocks);
+  if (!(thinnest > 0.0) || !(w0 > 0.0)) return ratio;
+  // 2.5 r w0 ≤ w_min / 2.
+  return std::min(ratio, 0.2 * thinnest / w0);
 }
 
 std::vector<std::vector<int>> find_unsupported_groups(const ModelDefinition& model, double touching_distance) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace hydrodda::geometry {
 
@@ -42,6 +43,26 @@ Box bounding_box(std::span<const Point> polygon) {
   Box box;
   for (Point p : polygon) box.add(p);
   return box;
+}
+
+double width_across_edges(std::span<const Point> polygon) {
+  const std::size_t n = polygon.size();
+  if (n < 3) return 0.0;
+  double width = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point a = polygon[i];
+    const Point b = polygon[(i + 1) % n];
+    const double length = distance(a, b);
+    if (length == 0.0) continue;
+    double lo = 0.0, hi = 0.0;
+    for (Point p : polygon) {
+      const double d = orient(a, b, p) / length;
+      lo = std::min(lo, d);
+      hi = std::max(hi, d);
+    }
+    width = std::min(width, hi - lo);
+  }
+  return std::isfinite(width) ? width : 0.0;
 }
 
 namespace {

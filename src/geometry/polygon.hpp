@@ -24,6 +24,11 @@ double area(std::span<const Point> polygon);
 // Area centroid: c = 1/(6A) Σ (p_i + p_{i+1}) (x_i y_{i+1} − x_{i+1} y_i).
 Point centroid(std::span<const Point> polygon);
 Box bounding_box(std::span<const Point> polygon);
+// The polygon's width across its edges: the smallest, over its edges, of its extent along the
+// edge's normal (max − min of the vertices' distances from the edge's line). For a convex
+// polygon the width between the closest pair of parallel supporting lines (one of them always
+// lies along an edge; Toussaint's rotating calipers); 0 for fewer than three vertices.
+double width_across_edges(std::span<const Point> polygon);
 
 // Do closed segments ab and cd share a point (touching and collinear overlap included)?
 bool segments_intersect(Point a, Point b, Point c, Point d);

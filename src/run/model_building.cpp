@@ -320,7 +320,18 @@ dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::B
   settings.plane = m.plane == scenario::Plane::Stress ? dda::Plane::stress : dda::Plane::strain;
   settings.gravity = m.gravity;
   settings.time_step = m.time_step;
-  settings.max_displacement_ratio = m.max_displacement_ratio;
+  if (m.max_displacement_ratio) {
+    settings.max_displacement_ratio = *m.max_displacement_ratio;
+  } else {
+    const double usual = dda::Settings{}.max_displacement_ratio;
+    settings.max_displacement_ratio = dda::displacement_ratio_for_blocks(blocks, usual);
+    if (settings.max_displacement_ratio < usual)
+      spdlog::debug("default used: mechanics.max_displacement_ratio = {:.3g} (below {:g}: the contact distance, {:.3g} m, "
+                    "is half the thinnest block's width)",
+                    settings.max_displacement_ratio, usual, dda::initial_contact_distance(blocks, settings));
+    else
+      spdlog::debug("default used: mechanics.max_displacement_ratio = {:g}", usual);
+  }
   settings.contact = m.contact == scenario::ContactMethod::Penalty ? dda::ContactMethod::penalty
                                                                    : dda::ContactMethod::augmented_lagrangian;
   settings.penalty = m.penalty.value_or(0.0);

@@ -254,10 +254,11 @@ void read_mechanics(ReadContext& ctx, const TableView& root, Scenario& s) {
     mech.steps = 100;
     ctx.defaults.push_back({"mechanics.steps", "100"});
   }
-  mech.max_displacement_ratio = m.number_or("max_displacement_ratio", mech.max_displacement_ratio);
-  m.require("max_displacement_ratio",
-            mech.max_displacement_ratio > 0.0 && mech.max_displacement_ratio <= 1.0,
-            "must lie in (0, 1]");
+  // Its default depends on the blocks: it is made, and reported, where they are built.
+  if (auto r = m.number("max_displacement_ratio")) {
+    mech.max_displacement_ratio = *r;
+    m.require("max_displacement_ratio", *r > 0.0 && *r <= 1.0, "must lie in (0, 1]");
+  }
   mech.contact = m.choice("contact", {"augmented-lagrangian", "penalty"}, "augmented-lagrangian") == 1
                      ? ContactMethod::Penalty
                      : ContactMethod::AugmentedLagrangian;

@@ -160,7 +160,9 @@ struct MechanicsDefinition {
   double time_step = 1.0e-3;
   std::optional<int> steps;
   std::optional<double> end_time;
-  double max_displacement_ratio = 0.01;
+  // Empty: 0.01, or less where the blocks are thin against the model (run::build_mechanics_model,
+  // dda::displacement_ratio_for_blocks).
+  std::optional<double> max_displacement_ratio;
   ContactMethod contact = ContactMethod::AugmentedLagrangian;
   std::optional<double> penalty;  // N/m; derived from the stiffest material when absent
   bool tension_cutoff = false;    // no closed contact pulls past T l (dda::Settings::tension_cutoff)

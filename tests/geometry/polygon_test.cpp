@@ -70,6 +70,23 @@ TEST(Polygon, ContainsAndDistance) {
   EXPECT_DOUBLE_EQ(distance_to_segment({3.0, 1.0}, {0, 1}, {1, 1}), 2.0);
 }
 
+// The width across a polygon's edges: min over edges of its extent along the edge's normal.
+// Exact values: a rectangle's shorter side whatever its rotation, a 3-4-5 triangle's least
+// altitude 3 × 4 / 5, a regular hexagon's width across flats √3 (side 1); 1e-12.
+TEST(Polygon, WidthAcrossEdges) {
+  const double c = std::cos(0.5), s = std::sin(0.5);
+  Polygon strip;
+  for (Point p : Polygon{{0, 0}, {3, 0}, {3, 0.2}, {0, 0.2}}) strip.push_back({c * p.x - s * p.y + 7, s * p.x + c * p.y - 2});
+  EXPECT_NEAR(width_across_edges(strip), 0.2, 1e-12);
+  EXPECT_NEAR(width_across_edges(Polygon{{0, 0}, {4, 0}, {0, 3}}), 2.4, 1e-12);
+  Polygon hexagon;
+  for (int k = 0; k < 6; ++k) hexagon.push_back({std::cos(k * std::numbers::pi / 3), std::sin(k * std::numbers::pi / 3)});
+  EXPECT_NEAR(width_across_edges(hexagon), std::sqrt(3.0), 1e-12);
+  // Not convex: across its own edges (all along the axes here) the L is 2 wide.
+  EXPECT_NEAR(width_across_edges(Polygon{{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}), 2.0, 1e-12);
+  EXPECT_EQ(width_across_edges(Polygon{{0, 0}, {1, 0}}), 0.0);
+}
+
 TEST(Segments, IntersectionCases) {
   EXPECT_TRUE(segments_intersect({0, 0}, {1, 1}, {0, 1}, {1, 0}));
   EXPECT_FALSE(segments_intersect({0, 0}, {1, 0}, {0, 1}, {1, 1}));

@@ -61,7 +61,7 @@ TEST(ScenarioOverrides, AddsAValueMissingFromAnExistingTable) {
   // coupling.relaxation is in the file; mechanics.max_displacement_ratio is not.
   const std::string text = apply_overrides(read_text(kSixBlock), kSixBlock,
                                            {{"mechanics.max_displacement_ratio", "0.005"}});
-  EXPECT_EQ(parse_scenario(text, "case.toml").mechanics->max_displacement_ratio, 0.005);
+  EXPECT_EQ(parse_scenario(text, "case.toml").mechanics->max_displacement_ratio, std::optional<double>(0.005));
 }
 
 TEST(ScenarioOverrides, BadKeysAreNamed) {
