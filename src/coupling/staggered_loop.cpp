@@ -217,6 +217,7 @@ PassReport StaggeredLoop::run_pass() {
   const int most_steps = settings_.steps_per_pass + settings_.settle_steps;
   int taken = 0;
   bool at_rest = false;
+  report.shortest_time_step = mechanics_.full_time_step();
   while (taken < settings_.steps_per_pass || (taken < most_steps && !at_rest)) {
     const auto which = [&] {
       return std::to_string(taken + 1) + (taken < settings_.steps_per_pass
@@ -229,7 +230,10 @@ PassReport StaggeredLoop::run_pass() {
       throw PassInterrupted(where);
     }
     try {
-      at_rest = mechanics_.is_at_rest(mechanics_.step());
+      const dda::StepReport step = mechanics_.step();
+      at_rest = mechanics_.is_at_rest(step);
+      report.full_time_step = mechanics_.ran_at_full_time_step(step);
+      report.shortest_time_step = std::min(report.shortest_time_step, step.time_step);
     } catch (const std::exception& e) {
       throw std::runtime_error("DDA step " + which() + " (t = " + std::to_string(mechanics_.time()) + " s): " + e.what());
     }
@@ -256,7 +260,7 @@ PassReport StaggeredLoop::run_pass() {
                                                          mechanics_.allowed_step_displacement());
   // Both norms compare this pass with the last, so both passes must have had the full load.
   report.converged = iteration_ > settings_.ramp_passes && report.head_change < settings_.tolerance &&
-                     report.displacement_change < settings_.tolerance && report.at_rest;
+                     report.displacement_change < settings_.tolerance && report.at_rest && report.full_time_step;
   if (!report.converged) report.escaping = blocks_beyond_their_size();
   report.head_change_two_passes = heads_two_back_.empty() ? 1.0 : head_change(solution_.head, heads_two_back_);
   heads_two_back_ = std::move(previous_heads_);

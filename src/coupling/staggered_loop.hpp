@@ -103,6 +103,11 @@ struct PassReport {
   double load_factor = 1.0;       // of the fluid forces, below 1 while ramped
   int settling_steps = 0;         // DDA steps past steps_per_pass (LoopSettings::settle_steps)
   bool at_rest = true;            // false: settle_steps ran out with the blocks still moving
+  // Whether the pass's last DDA step ran at the full mechanics.time_step, and the shortest
+  // step of the pass. A step cut short moves the blocks little however far they are from
+  // equilibrium, so a pass that ends on one does not count as converged.
+  bool full_time_step = true;
+  double shortest_time_step = 0.0;
   MeshExcursion outside_mesh;     // how far the blocks had left the fluid mesh after the pass
   bool converged = false;
   // The change has grown LoopSettings::diverging_passes passes in a row.

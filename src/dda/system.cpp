@@ -821,8 +821,10 @@ StepReport System::run_until(double end_time) {
   return last;
 }
 
+bool System::ran_at_full_time_step(const StepReport& step) const { return step.time_step >= settings_.time_step; }
+
 bool System::is_at_rest(const StepReport& step) const {
-  return step.time_step >= settings_.time_step && step.max_displacement <= settings_.static_tolerance * model_size_;
+  return ran_at_full_time_step(step) && step.max_displacement <= settings_.static_tolerance * model_size_;
 }
 
 StepReport System::run_to_equilibrium(int max_steps) {

@@ -89,6 +89,10 @@ class System {
   // little for being short) and moved no vertex by more than settings.static_tolerance × model
   // size.
   bool is_at_rest(const StepReport& step) const;
+  // Whether a step ran at settings.time_step, not cut short (by an open–close iteration that
+  // did not settle, or a displacement past the allowed one).
+  bool ran_at_full_time_step(const StepReport& step) const;
+  double full_time_step() const { return settings_.time_step; }
   // Static analysis: steps until one leaves the blocks at rest, at most max_steps; throws if
   // it never gets there.
   StepReport run_to_equilibrium(int max_steps);

@@ -91,6 +91,17 @@ std::string describe_farthest(const std::vector<geometry::Point>& displacements)
   return text;
 }
 
+// Why a pass whose norms are under the tolerance may still be short of equilibrium.
+std::string describe_cut_steps(double shortest, double full) {
+  return fmt::format(
+      "its DDA steps were cut short (to {:.3g} s at the shortest, against mechanics.time_step = {:g} s) and its last "
+      "one had not grown back: steps cut short move the blocks little however far they are from equilibrium, so a "
+      "small change proves nothing. The open-close iteration did not settle at the full step: look for blocks "
+      "thinner than the contact distance (set by mechanics.max_displacement_ratio), or give more mechanics.steps so "
+      "that the step can grow back",
+      shortest, full);
+}
+
 }  // namespace
 
 output::RunSummary run_coupled(const RunContext& context) {
@@ -156,6 +167,8 @@ output::RunSummary run_coupled(const RunContext& context) {
   };
   int last_written = checkpoint.written_iterations.empty() ? 0 : checkpoint.written_iterations.back();
   bool converged = false;
+  bool last_pass_cut_short = false;  // the last pass's last DDA step was cut short
+  double shortest_time_step = 0.0;
   bool stopped = false;  // by stop_after
   const auto current_summary = [&] {
     output::RunSummary summary = model.summary();
@@ -227,6 +240,12 @@ output::RunSummary run_coupled(const RunContext& context) {
         spdlog::warn("coupling iteration {}: the blocks still moved after the pass's DDA steps and {} more to "
                      "settle (coupling.settle); the pass does not count as converged",
                      r.iteration, r.settling_steps);
+      last_pass_cut_short = !r.full_time_step;
+      shortest_time_step = r.shortest_time_step;
+      if (!r.full_time_step && r.head_change < s.coupling.tolerance && r.displacement_change < s.coupling.tolerance &&
+          r.at_rest && r.iteration > s.coupling.ramp_passes)
+        spdlog::warn("coupling iteration {}: {}; the pass does not count as converged", r.iteration,
+                     describe_cut_steps(r.shortest_time_step, s.mechanics->time_step));
       converged = r.converged;
       // The first pass, every `every`-th, and the last (written below if not here).
       if (r.iteration == 1 || r.iteration % s.output.every == 0 || converged || r.diverging || !r.escaping.empty()) {
@@ -295,6 +314,8 @@ output::RunSummary run_coupled(const RunContext& context) {
                                   s.coupling.max_iterations, s.coupling.tolerance, why.text);
     if (why.behaviour == coupling::NonConvergence::drifting || why.behaviour == coupling::NonConvergence::diverging)
       summary.message += "; farthest from where they started: " + describe_farthest(loop.block_displacements());
+    if (last_pass_cut_short)
+      summary.message += "; in the last pass " + describe_cut_steps(shortest_time_step, s.mechanics->time_step);
     spdlog::warn("{}", summary.message);
   }
   context.write_summary(summary);  // the run's result is on disk before the figures are drawn
