@@ -98,6 +98,8 @@ class Simulation {
     fields["mean_porosity"] = report->mean_porosity;
     fields["max_permeability"] = report->max_permeability;
     fields["converged"] = report->converged;
+    fields["full_time_step"] = report->full_time_step;
+    fields["shortest_time_step"] = report->shortest_time_step;
     return fields;
   }
 

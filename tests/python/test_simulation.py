@@ -62,6 +62,10 @@ def test_coupled_passes_reach_the_runs_results(in_tmp):
         passes.append(sim.run_pass())
     assert len(passes) == result.iterations
     assert [p["head_change"] for p in passes] == result.history["head_change"].tolist()
+    # The column settles at full steps: every pass's last step ran at the file's 0.05 s, and
+    # no step of a pass was longer than that.
+    assert all(p["full_time_step"] and 0 < p["shortest_time_step"] <= 0.05 for p in passes)
+    assert passes[-1]["converged"]
     summary = sim.summary
     assert summary["blocks"] == result.summary["blocks"]
     assert summary["flow"] == result.summary["flow"]
