@@ -96,9 +96,9 @@ std::string describe_cut_steps(double shortest, double full) {
   return fmt::format(
       "its DDA steps were cut short (to {:.3g} s at the shortest, against mechanics.time_step = {:g} s) and its last "
       "one had not grown back: steps cut short move the blocks little however far they are from equilibrium, so a "
-      "small change proves nothing. The open-close iteration did not settle at the full step: look for blocks "
-      "thinner than the contact distance (set by mechanics.max_displacement_ratio), or give more mechanics.steps so "
-      "that the step can grow back",
+      "small change proves nothing. The contacts did not settle at the full step (their states or their forces): "
+      "look for blocks thinner than the contact distance (set by mechanics.max_displacement_ratio), or give more "
+      "mechanics.steps so that the step can grow back",
       shortest, full);
 }
 
