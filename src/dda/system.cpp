@@ -176,7 +176,10 @@ std::vector<System::PrescribedProgress> System::prescribed_progress() const {
   for (std::size_t i = 0; i < displacements_.size(); ++i) {
     const TrackedPoint& tp = displacement_points_[i];
     const double ramp = std::min(1.0, time_ / displacements_[i].ramp_time);
-    out.push_back({tp.initial, ramp * displacements_[i].value, tp.position - tp.initial});
+    const Block& b = blocks_[tp.block];
+    const double stress = b.stress.cwiseAbs().maxCoeff();
+    const double elastic_scale = stress * std::sqrt(b.moments.area) / materials_[b.material].young;
+    out.push_back({tp.initial, ramp * displacements_[i].value, tp.position - tp.initial, elastic_scale});
   }
   return out;
 }

@@ -130,6 +130,10 @@ class System {
     Point point;    // where it started
     Point target;   // min(1, t / ramp_time) · value
     Point reached;  // its displacement now
+    // How far its block's own elasticity moves it under the block's stress: |σ|max √A / E.
+    // The springs that impose it (10 × the penalty, 500 E per metre) yield some 500 times less
+    // than the block under the same load.
+    double elastic_scale = 0.0;
   };
   std::vector<PrescribedProgress> prescribed_progress() const;
   double penalty() const { return penalty_; }

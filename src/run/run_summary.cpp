@@ -16,12 +16,16 @@ using geometry::Point;
 
 std::string describe_unreached_displacement(const scenario::Scenario& s, const dda::System& system) {
   // 1% of the prescribed value, or the penetration tolerance (the precision contacts are held
-  // to; a point held at zero drifts by the springs' error, 1e-8 m in the six-block model).
+  // to; a point held at zero drifts by the springs' error, 1e-8 m in the six-block model), or
+  // 1% of what its block's own elasticity moves it under the block's stress (the springs yield
+  // some 500 times less than that: a side held at zero against a 14 MPa in-situ stress yields
+  // 11 µm, against 5.6 mm of the block's own strain). A block lagging behind its springs
+  // through its inertia is unstressed, and fails.
   constexpr double kReached = 0.01;
   for (const dda::System::PrescribedProgress& p : system.prescribed_progress()) {
     const double asked = geometry::norm(p.target);
     const double off = geometry::norm(p.reached - p.target);
-    if (off <= std::max(kReached * asked, system.penetration_tolerance())) continue;
+    if (off <= std::max({kReached * asked, system.penetration_tolerance(), kReached * p.elastic_scale})) continue;
     return fmt::format("the prescribed displacement at ({:g}, {:g}) was not reached: asked ({:.4g}, {:.4g}) m at "
                        "t = {:g} s, reached ({:.4g}, {:.4g}) m; with mechanics.time_step = {:g} s the blocks' inertia "
                        "outweighs the springs that impose it: use a larger time_step",

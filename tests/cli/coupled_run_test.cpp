@@ -329,6 +329,24 @@ TEST(CoupledRun, ACaprockOfThinBlocksConvergesAtFullSteps) {
   expect_same_state(shi, full.summary, "caprock", 5e-3, 0.02);
 }
 
+// The same caprock with its sides held at zero ([[mechanics.displacement]]) instead of on
+// rollers. The springs that hold the sides' vertices carry the 14 MPa horizontal in-situ
+// stress and yield 11 µm, more than the penetration tolerance (2.5 µm) but some 500 times less
+// than the blocks' own strain under that stress (5.6 mm): the displacement is reached, the
+// run converges and succeeds. It failed before, its message blaming the blocks' inertia
+// (FalseSuccess.APrescribedDisplacementNeverReachedFailsTheRun keeps the case that is).
+TEST(CoupledRun, SidesHeldAtZeroAgainstAnInSituStressAreReached) {
+  const fs::path caprock = fs::path(HYDRODDA_SOURCE_DIR) / "tests/cli/scenarios/caprock_conjugate_joints.toml";
+  const std::string held = "[[mechanics.displacement]]\nboundary = \"left\"\nvalue = [0.0, 0.0]\n"
+                           "[[mechanics.displacement]]\nboundary = \"right\"\nvalue = [0.0, 0.0]\n";
+  const RunRecord run = run_and_read(edited_scenario(
+      caprock, "hydrodda-caprock-held",
+      {{"[[mechanics.roller]]\nboundary = \"left\"\n[[mechanics.roller]]\nboundary = \"right\"\n", held}}));
+  EXPECT_EQ(run.summary["status"], "ok") << run.summary["message"];
+  EXPECT_EQ(run.summary["converged"], true) << run.summary["message"];
+  EXPECT_EQ(run.output.find("was not reached"), std::string::npos) << run.output;
+}
+
 // The seal a user builds (scenarios/examples/seal_over_reservoir.toml: 100 m × 20 m, beds and
 // sub-vertical joints every 5 m, 84 blocks on a reservoir slab, rollers, overburden, gravity,
 // the cubic law, joints closing by Barton–Bandis under σ'xx = 0.7 σ'yy): every head converges
