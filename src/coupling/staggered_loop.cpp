@@ -259,8 +259,9 @@ PassReport StaggeredLoop::run_pass() {
                                    : displacement_change(u, previous_displacements_,
                                                          mechanics_.allowed_step_displacement());
   // Both norms compare this pass with the last, so both passes must have had the full load.
-  report.converged = iteration_ > settings_.ramp_passes && report.head_change < settings_.tolerance &&
-                     report.displacement_change < settings_.tolerance && report.at_rest && report.full_time_step;
+  report.under_tolerance = iteration_ > settings_.ramp_passes && report.head_change < settings_.tolerance &&
+                           report.displacement_change < settings_.tolerance && report.at_rest;
+  report.converged = report.under_tolerance && report.full_time_step;
   if (!report.converged) report.escaping = blocks_beyond_their_size();
   report.head_change_two_passes = heads_two_back_.empty() ? 1.0 : head_change(solution_.head, heads_two_back_);
   heads_two_back_ = std::move(previous_heads_);

@@ -108,6 +108,10 @@ struct PassReport {
   // equilibrium, so a pass that ends on one does not count as converged.
   bool full_time_step = true;
   double shortest_time_step = 0.0;
+  // Everything convergence asks but the full step: both norms under the tolerance at the full
+  // load, the blocks at rest. Set without full_time_step, the steps cut short kept the pass
+  // from counting.
+  bool under_tolerance = false;
   MeshExcursion outside_mesh;     // how far the blocks had left the fluid mesh after the pass
   bool converged = false;
   // The change has grown LoopSettings::diverging_passes passes in a row.

@@ -167,8 +167,8 @@ output::RunSummary run_coupled(const RunContext& context) {
   };
   int last_written = checkpoint.written_iterations.empty() ? 0 : checkpoint.written_iterations.back();
   bool converged = false;
-  bool last_pass_cut_short = false;  // the last pass's last DDA step was cut short
-  double shortest_time_step = 0.0;
+  bool last_pass_cut_short = false;  // its last DDA step was cut short (PassReport::full_time_step)
+  double shortest_time_step = 0.0;   // of the last pass
   bool stopped = false;  // by stop_after
   const auto current_summary = [&] {
     output::RunSummary summary = model.summary();
@@ -242,8 +242,7 @@ output::RunSummary run_coupled(const RunContext& context) {
                      r.iteration, r.settling_steps);
       last_pass_cut_short = !r.full_time_step;
       shortest_time_step = r.shortest_time_step;
-      if (!r.full_time_step && r.head_change < s.coupling.tolerance && r.displacement_change < s.coupling.tolerance &&
-          r.at_rest && r.iteration > s.coupling.ramp_passes)
+      if (r.under_tolerance && !r.full_time_step)
         spdlog::warn("coupling iteration {}: {}; the pass does not count as converged", r.iteration,
                      describe_cut_steps(r.shortest_time_step, s.mechanics->time_step));
       converged = r.converged;
