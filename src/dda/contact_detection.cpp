@@ -90,6 +90,19 @@ bool is_entrance_edge(Point p, std::span<const Point> eb, int e, double depth, d
   return true;
 }
 
+// Whether no vertex of polygon `eb` lies nearer p than `reach` by more than `tie`: a corner
+// past an edge's end touches that end only if the end is the nearest corner of the block.
+// Where a block's straight side is split into collinear edges (joints meeting a bed), a corner
+// at one junction lies on the line of the edge beyond the next, past its end by the short
+// edge between, and within the contact distance; taken, it is a contact at a point where it
+// has no face, preloaded by whatever the face carries, that no step can settle. Its nearest
+// corner is the junction it stands at, whose own edges it touches.
+bool is_nearest_corner(Point p, std::span<const Point> eb, double reach, double tie) {
+  for (const Point q : eb)
+    if (geometry::distance(p, q) + tie < reach) return false;
+  return true;
+}
+
 // Half the length, along the edge and inside it, of each face incident to the vertex that
 // lies along the edge: the share of the face contact this vertex carries.
 double compute_tributary_length(Point p, Point before, Point after, Point a, Point b,
@@ -157,7 +170,10 @@ void test_vertex_edge(std::span<const Point> va, int a, int v, std::span<const P
       const double share_tie = kShareRoundOff * (std::abs(p.x) + std::abs(p.y) + distance);
       if (other_share > length_share + share_tie || (other_share >= length_share - share_tie && other < e)) return;
     }
-    if ((t < 0 || t > 1) && geometry::distance(p, at_start ? e0 : e1) > distance) return;
+    if (t < 0 || t > 1) {
+      const double to_end = geometry::distance(p, at_start ? e0 : e1);
+      if (to_end > distance || !is_nearest_corner(p, eb, to_end, tie)) return;
+    }
   }
   ContactCandidate c;
   c.key = {a, v, b, e};

@@ -201,6 +201,34 @@ TEST(ContactDetection, ACornerInsideABlockTouchesTheEdgeItEnteredBy) {
   EXPECT_EQ(from_lower, 2);
 }
 
+// A bed whose top is split into collinear edges where joints from above meet it, 0.1 m apart,
+// under a contact distance of 0.2 m. The corner of the block above at one junction, (1, 1),
+// lies on the line of the edge beyond the next junction, (3, 1) → (1.1, 1), past its end by
+// 0.1 m. It touches the bed where it stands, on the edges that meet there; the far edge's end
+// is not its nearest point of the bed, so it is no contact with that edge (taken, it would be
+// a contact 0.1 m from any face of its own, started locked under whatever the bed carries).
+// The same for the right block's corner (1.1, 1) and the edge (1, 1) → (0, 1).
+TEST(ContactDetection, ACornerAtAJunctionIsNoContactWithTheCollinearEdgeBeyond) {
+  const Polygon bed{{0, 0}, {3, 0}, {3, 1}, {1.1, 1}, {1, 1}, {0, 1}};  // top edges 2, 3, 4
+  const std::vector<Polygon> above{make_rectangle(0, 1, 1, 2), make_rectangle(1.1, 1, 3, 2)};
+  const double distance = 0.2;
+  for (int side = 0; side < 2; ++side) {
+    ContactCandidates found;
+    find_pair_contacts(above[side], 0, bed, 1, distance, found);
+    const Point corner = side == 0 ? Point{1, 1} : Point{1.1, 1};
+    int at_corner = 0;
+    for (const ContactCandidate& c : found) {
+      if (c.key.block_i != 0) continue;
+      const Point p = above[side][c.key.vertex];
+      if (geometry::distance(p, corner) > 1e-12) continue;
+      ++at_corner;
+      const int far_edge = side == 0 ? 2 : 4;
+      EXPECT_NE(c.key.edge, far_edge) << "the corner at " << p.x << " taken against the edge beyond";
+    }
+    EXPECT_GE(at_corner, 1) << "side " << side << ": the corner touches the bed where it stands";
+  }
+}
+
 // A reflex (concave) vertex never touches a face: an L-shaped block's inner corner above a
 // flat top edge is not a contact, its convex vertices are.
 TEST(ContactDetection, ReflexVertexIsNotAContact) {
