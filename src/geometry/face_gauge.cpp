@@ -34,10 +34,16 @@ std::optional<FaceGauge> FaceGaugeFinder::find(const FractureFace& face, Point p
   if (!(norm(d) > 0.0)) return std::nullopt;
   const Point n = normalised(Point{-d.y, d.x});  // the face's left
   // The nearest edge of the fracture on one side: a block on the +n side has its outward
-  // normal along −n there.
+  // normal along −n there. At a face's end, where the fracture crosses another, the edges of
+  // the next face along it end at p too; of edges equally near (within round-off of the
+  // face's length) the face's own, the one nearest its middle, is taken, or the gauge there
+  // would read the blocks beyond the junction.
+  const Point middle = (face.segment.from + face.segment.to) * 0.5;
+  const double tie = 1e-9 * norm(d);
   const auto side_at = [&](double side) {
     EdgePoint best;
     double best_distance = std::numeric_limits<double>::infinity();
+    double best_to_middle = std::numeric_limits<double>::infinity();
     for (const auto& [b, e] : edges_[face.fracture]) {
       const Polygon& poly = network_.blocks[b];
       const Point a = poly[e], c = poly[(e + 1) % poly.size()];
@@ -47,8 +53,11 @@ std::optional<FaceGauge> FaceGaugeFinder::find(const FractureFace& face, Point p
       const Point outward{along.y / edge_length, -along.x / edge_length};
       if (side * dot(outward, n) > -0.5) continue;
       const double distance = distance_to_segment(p, a, c);
-      if (distance < best_distance) {
-        best_distance = distance;
+      if (distance > best_distance + tie) continue;
+      const double to_middle = distance_to_segment(middle, a, c);
+      if (distance < best_distance - tie || to_middle < best_to_middle) {
+        best_distance = std::min(best_distance, distance);
+        best_to_middle = to_middle;
         best = {b, e, dot(p - a, along) / (edge_length * edge_length)};
       }
     }

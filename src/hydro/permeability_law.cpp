@@ -1,6 +1,7 @@
 #include "hydro/permeability_law.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace hydrodda::hydro {
@@ -18,6 +19,12 @@ double cubic_law_permeability(double fracture_fraction, double aperture, double 
   if (!(fracture_fraction >= 0.0 && fracture_fraction <= 1.0))
     throw std::invalid_argument("cubic law: the fracture fraction must lie in [0, 1]");
   return matrix_permeability + fracture_fraction * aperture * aperture / 12.0;
+}
+
+double cubic_law_tip_length(double opening_angle, double matrix_permeability) {
+  if (!(opening_angle > 0.0) || !(matrix_permeability >= 0.0))
+    throw std::invalid_argument("cubic law tip length: the opening angle must be positive, k_m not negative");
+  return std::sqrt(12.0 * matrix_permeability / (opening_angle * opening_angle * opening_angle));
 }
 
 double JointApertureLaw::closed(double normal_stress) const {

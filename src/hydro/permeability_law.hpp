@@ -16,6 +16,15 @@ double kozeny_carman_permeability(double porosity, double grain_diameter, double
 // its matrix permeability, k = k_m + (A_f/A_e) w²/12 with A_f/A_e = w/b, whatever b is.
 double cubic_law_permeability(double fracture_fraction, double aperture, double matrix_permeability);
 
+// The length over which a wedge tip exchanges flow with the matrix under the cubic law. A joint
+// whose opening grows as w = α s from a tip carries α³ s² / 12 over a length s there, which is
+// the matrix's k_m at
+//   s* = √(12 k_m / α³);
+// nearer the tip the matrix carries the flow, beyond it the joint. The head falls across s*,
+// so a fluid mesh resolves the tip only with elements of a fraction of it (docs/coupling.md,
+// "Wedge tips"). α > 0 (rad: dw/ds), k_m ≥ 0 (m²).
+double cubic_law_tip_length(double opening_angle, double matrix_permeability);
+
 // The hydraulic aperture of a joint (Barton, Bandis & Bakhtar 1985, the hyperbolic closure of
 // Bandis et al. 1983). Closed under an effective normal stress σn ≥ 0 (compression positive):
 //   a(σn) = a_r + V_m − σn V_m / (k_ni V_m + σn),

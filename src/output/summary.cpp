@@ -26,7 +26,8 @@ json format_fractures(const FractureSummary& f) {
                 {"max_aperture", r.max_aperture},
                 {"hydraulic_aperture", r.hydraulic_aperture},
                 {"normal_stress", r.normal_stress},
-                {"max_shear", r.max_shear}};
+                {"max_shear", r.max_shear},
+                {"tip_opening_angle", r.tip_opening_angle}};
     if (r.set) row["set"] = *r.set;
     if (r.flow) row["flow"] = *r.flow;
     by_id[std::to_string(r.id)] = row;

@@ -110,7 +110,7 @@ py::dict fracture_fields(const run::FractureState& state) {
   py::array_t<int> id(n), set(n), number(n);
   py::array_t<bool> open(n);
   Array length(n), open_length(n), mean_aperture(n), max_aperture(n), max_shear(n), hydraulic_aperture(n),
-      normal_stress(n), flow(n);
+      normal_stress(n), tip_opening_angle(n), flow(n);
   py::list origin;
   for (py::ssize_t i = 0; i < n; ++i) {
     const run::FractureResult& r = state.fractures[static_cast<std::size_t>(i)];
@@ -126,6 +126,7 @@ py::dict fracture_fields(const run::FractureState& state) {
     max_shear.mutable_at(i) = r.max_shear;
     hydraulic_aperture.mutable_at(i) = r.hydraulic_aperture;
     normal_stress.mutable_at(i) = r.normal_stress;
+    tip_opening_angle.mutable_at(i) = r.tip_opening_angle;
     flow.mutable_at(i) = r.flow ? *r.flow : std::numeric_limits<double>::quiet_NaN();
   }
   py::dict fields;
@@ -141,6 +142,7 @@ py::dict fracture_fields(const run::FractureState& state) {
   fields["max_shear"] = max_shear;
   fields["hydraulic_aperture"] = hydraulic_aperture;
   fields["normal_stress"] = normal_stress;
+  fields["tip_opening_angle"] = tip_opening_angle;
   fields["flow"] = flow;
   return fields;
 }

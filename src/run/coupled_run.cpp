@@ -303,6 +303,15 @@ output::RunSummary run_coupled(const RunContext& context) {
     spdlog::warn("{} block(s) reach outside the fluid mesh, block {} farthest, by {:.3g} m: their parts outside "
                  "take the pressure of the mesh boundary there",
                  summary.outside_mesh->blocks, summary.outside_mesh->block, summary.outside_mesh->largest_distance);
+  // The cubic law's answer depends on the mesh where its fracture elements are wider than a
+  // wedge tip's exchange length (docs/coupling.md, "Wedge tips"); a mesh file's sizes are the
+  // user's own.
+  if (meter && s.flow->permeability_law == scenario::PermeabilityLaw::Cubic && s.mesh && !s.mesh->file) {
+    if (!fracture_state) measure_fractures();
+    if (const auto tip = describe_unresolved_wedge_tip(*fracture_state, make_permeability_model(s).matrix_permeability(),
+                                                       joint_law, s.mesh->fracture_size))
+      spdlog::warn("{}", *tip);
+  }
   if (!converged) {
     std::vector<double> two_passes;  // history.csv's third column from the end
     for (const std::vector<std::string>& row : checkpoint.history) two_passes.push_back(std::stod(row[row.size() - 3]));

@@ -20,7 +20,8 @@ namespace {
 std::vector<std::string> columns(bool with_flow) {
   std::vector<std::string> c{"step",          "time",          "fracture",     "origin",    "set",
                              "number",        "length",        "open_length",  "open",      "mean_aperture",
-                             "max_aperture",  "hydraulic_aperture", "normal_stress", "max_shear"};
+                             "max_aperture",  "hydraulic_aperture", "normal_stress", "max_shear",
+                             "tip_opening_angle"};
   if (with_flow) c.push_back("flow");
   return c;
 }
@@ -61,7 +62,8 @@ void FractureOutput::add_rows(long long step, double time, const FractureState& 
                                  CsvTable::cell(r.max_aperture),
                                  CsvTable::cell(r.hydraulic_aperture),
                                  CsvTable::cell(r.normal_stress),
-                                 CsvTable::cell(r.max_shear)};
+                                 CsvTable::cell(r.max_shear),
+                                 CsvTable::cell(r.tip_opening_angle)};
     if (with_flow_) row.push_back(r.flow ? CsvTable::cell(*r.flow) : "");
     table_.add_row(row);
   }
@@ -107,6 +109,7 @@ output::FractureSummary summarise_fractures(const FractureState& state) {
     row.hydraulic_aperture = r.hydraulic_aperture;
     row.normal_stress = r.normal_stress;
     row.max_shear = r.max_shear;
+    row.tip_opening_angle = r.tip_opening_angle;
     row.flow = r.flow;
     summary.rows.push_back(row);
   }

@@ -118,6 +118,12 @@ FractureState FractureMeter::measure(std::span<const geometry::Polygon> blocks, 
         const double w = (open_threshold - a.opening) / (b.opening - a.opening);
         const Measured cut{a.s + w * (b.s - a.s), open_threshold, a.shear + w * (b.shear - a.shear),
                            a.midpoint + (b.midpoint - a.midpoint) * w};
+        // A wedge tip: the opening is linear between nodes, so this is its slope there.
+        const double angle = std::abs(b.opening - a.opening) / (b.s - a.s);
+        if (angle > result.tip_opening_angle) {
+          result.tip_opening_angle = angle;
+          result.tip = cut.midpoint;
+        }
         add_piece(a, cut);
         add_piece(cut, b);
       } else {
@@ -210,6 +216,29 @@ void FractureMeter::add_flow(FractureState& state, const FlowZones& zones, const
   }
   for (FractureResult& r : state.fractures)
     r.flow = r.length > 0.0 ? integral[r.id] / r.length : 0.0;
+}
+
+std::optional<std::string> describe_unresolved_wedge_tip(const FractureState& state, double matrix_permeability,
+                                                         const hydro::JointApertureLaw& law, double fracture_size) {
+  const FractureResult* sharpest = nullptr;
+  double shortest = std::numeric_limits<double>::infinity();
+  for (const FractureResult& r : state.fractures) {
+    if (!(r.tip_opening_angle > 0.0)) continue;
+    const double tip_length = hydro::cubic_law_tip_length(r.tip_opening_angle, matrix_permeability);
+    if (law.at_zero_stress() >= r.tip_opening_angle * tip_length) continue;
+    if (tip_length < shortest) {
+      shortest = tip_length;
+      sharpest = &r;
+    }
+  }
+  if (!sharpest || fracture_size <= 0.5 * shortest) return std::nullopt;
+  return fmt::format(
+      "fracture {} opens as a wedge from ({:.4g}, {:.4g}) at an angle of {:.3g}: with the cubic law the flow passes "
+      "between its tip and the matrix over s* = sqrt(12 k_m / angle^3) = {:.3g} m, and mesh.fracture_size = {:g} m "
+      "is more than half of that, so the effective conductivities depend on the mesh (docs/coupling.md, \"Wedge "
+      "tips\"): give mesh.fracture_size = {:.2g} m (s*/4), or check them between two sizes",
+      sharpest->id, sharpest->tip.x, sharpest->tip.y, sharpest->tip_opening_angle, shortest, fracture_size,
+      0.25 * shortest);
 }
 
 std::optional<FractureMeter> make_fracture_meter(const scenario::Scenario& s) {

@@ -51,6 +51,10 @@ struct FractureResult {
   double max_shear = 0.0;       // m, largest |relative displacement along the face|
   double hydraulic_aperture = 0.0;  // m, mean over the length (hydro::JointApertureLaw)
   double normal_stress = 0.0;   // Pa, compressive contact forces on it over its closed length (0 when open)
+  // Its sharpest wedge tip: the largest rate dw/ds at which its opening grows from a point
+  // where it crosses the open threshold (0 when it has none), and that point.
+  double tip_opening_angle = 0.0;
+  geometry::Point tip;
   std::optional<double> flow;   // m²/s per metre of thickness, along the trace (from → to)
 };
 
@@ -123,5 +127,14 @@ class FractureMeter {
 // The meter of a scenario with a [geometry] domain, nodes at most 1/50 of the domain's larger
 // side apart; none for a scenario that lists its blocks.
 std::optional<FractureMeter> make_fracture_meter(const scenario::Scenario& scenario);
+
+// Under the cubic law, the wedge tip that fracture elements of `fracture_size` (m) do not
+// resolve: of the fractures whose opening grows from a tip (FractureResult::tip_opening_angle),
+// the one with the shortest tip length s* (hydro::cubic_law_tip_length with k_m), when
+// fracture_size is more than half of it; a message naming the fracture, its tip, α, s* and a
+// size that resolves it. A joint whose hydraulic aperture at zero opening (`law`) is already
+// the wedge's opening at s* has no sharp tip and is left out. None when every tip is resolved.
+std::optional<std::string> describe_unresolved_wedge_tip(const FractureState& state, double matrix_permeability,
+                                                         const hydro::JointApertureLaw& law, double fracture_size);
 
 }  // namespace hydrodda::run

@@ -43,7 +43,8 @@ TEST(FractureOutput, FlowAlongTheFractureIsTheBoundaryFlow) {
   const auto& header = fractures[0];
   EXPECT_EQ(header, (std::vector<std::string>{"step", "time", "fracture", "origin", "set", "number", "length",
                                               "open_length", "open", "mean_aperture", "max_aperture",
-                                              "hydraulic_aperture", "normal_stress", "max_shear", "flow"}));
+                                              "hydraulic_aperture", "normal_stress", "max_shear", "tip_opening_angle",
+                                              "flow"}));
   const int top = column(history[0], "flow_top");
   for (std::size_t k = 1; k < fractures.size(); ++k) {
     const auto& row = fractures[k];

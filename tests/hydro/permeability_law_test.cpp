@@ -29,5 +29,19 @@ TEST(CubicLaw, TransmissivityIndependentOfElementWidth) {
   EXPECT_EQ(cubic_law_permeability(0.0, w, 3e-18), 3e-18);
 }
 
+// A wedge w = α s carries α³ s² / 12 over a length s from its tip: at s* exactly the matrix's
+// k_m (round-off, 1e-12 relative); the symmetric flexure's central joint (α = 1.42e-3, k_m =
+// 9.877e-16 m²) gives 2.0 mm (2.035); an angle of zero or less has no tip.
+TEST(CubicLaw, TipLengthIsWhereTheJointCarriesWhatTheMatrixDoes) {
+  for (const double alpha : {1e-4, 1.42e-3, 3.5e-3, 0.1})
+    for (const double k_m : {1e-18, 9.877e-16, 1e-13}) {
+      const double s = cubic_law_tip_length(alpha, k_m);
+      EXPECT_NEAR(alpha * alpha * alpha * s * s / 12.0, k_m, 1e-12 * k_m) << alpha << ", " << k_m;
+    }
+  EXPECT_NEAR(cubic_law_tip_length(1.42e-3, 9.877e-16), 2.035e-3, 0.005e-3);
+  EXPECT_THROW(cubic_law_tip_length(0.0, 1e-15), std::invalid_argument);
+  EXPECT_THROW(cubic_law_tip_length(1e-3, -1.0), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace hydrodda::hydro

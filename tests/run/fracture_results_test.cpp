@@ -82,6 +82,10 @@ TEST(FractureResults, TiltedBlockClosesHalfTheFaceExactly) {
   EXPECT_NEAR(r.mean_aperture, kAperture / 4.0 * std::cos(theta / 2.0), 1e-15);
   EXPECT_NEAR(r.max_aperture, kAperture * std::cos(theta / 2.0), 1e-15);
   EXPECT_LE(r.max_shear, std::abs(beta) * std::sin(theta / 2.0) + 1e-15);
+  // A wedge closing at y*: the opening grows at |β| cos(θ/2) from there (round-off, 1e-12
+  // relative: the slope of a difference over 0.1 m).
+  EXPECT_NEAR(r.tip_opening_angle, std::abs(beta) * std::cos(theta / 2.0), 1e-12 * std::abs(beta));
+  EXPECT_NEAR(r.tip.y, 0.5, 1e-9);
   // The pieces are cut where the face closes: every piece is wholly open (below y*) or closed.
   double open = 0.0, closed = 0.0;
   for (const run::FracturePiece& p : state.pieces) {
@@ -98,6 +102,57 @@ TEST(FractureResults, TiltedBlockClosesHalfTheFaceExactly) {
   // Drawn on the midline, which leans by β/2: lengths grow by √(1 + β²/4) − 1 ≈ 5e-7.
   EXPECT_NEAR(open, 0.5, 1e-6);
   EXPECT_NEAR(closed, 0.5, 1e-6);
+}
+
+// A 2 m × 2 m domain cut by a vertical fracture (x = 1 m) and a horizontal one (y = 1 m), both
+// of aperture a0: the vertical fracture has a lower and an upper face, meeting at the junction.
+// The lower right block moves right by d: the lower face opens to a0 + d. The upper right block
+// moves by u_x = −a0 − ε + γ (y − 1): the upper face overlaps by ε at the junction and opens
+// as a wedge from y* = 1 + ε/γ, at γ cos(θ/2) (θ = atan γ, the frame of the two edges). Each
+// face's gauge at the junction reads its own blocks: every piece of the lower face is open by
+// a0 + d (its edges stay parallel, so exactly), the upper face is closed below y*, and the
+// wedge's tip is found there (round-off). Read across the junction, the upper face's first
+// node took the lower blocks' a0 + d, its first piece opened from the junction, and the tip was
+// lost.
+TEST(FractureResults, EachFaceIsReadOnItsOwnBlocksAtAJunction) {
+  geometry::BlockNetworkRequest request;
+  request.domain = {{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+  const geometry::TraceOrigin listed{geometry::TraceSource::listed, 0, 0};
+  request.traces = {{{{1, 0}, {1, 2}}, listed}, {{{0, 1}, {2, 1}}, {geometry::TraceSource::listed, 0, 1}}};
+  request.aperture = kAperture;
+  run::FractureLayout layout{request.traces, geometry::build_block_network(request)};
+  ASSERT_EQ(layout.network.blocks.size(), 4u);
+  const run::FractureMeter meter(std::move(layout), 0.1);
+  const double d = 5e-4, epsilon = 1e-5, gamma = 2e-3;
+  std::vector<geometry::Polygon> blocks = meter.layout().network.blocks;
+  for (geometry::Polygon& b : blocks) {
+    const Point c = geometry::centroid(b);
+    if (c.x < 1.0) continue;
+    for (Point& p : b) p = c.y < 1.0 ? p + Point{d, 0.0} : p + Point{-kAperture - epsilon + gamma * (p.y - 1.0), 0.0};
+  }
+  const run::FractureState state = meter.measure(blocks, 0.0);
+  const run::FractureResult* vertical = nullptr;
+  for (const run::FractureResult& r : state.fractures)
+    if (r.id == 0) vertical = &r;
+  ASSERT_NE(vertical, nullptr);
+  const double theta = std::atan(gamma), tip_y = 1.0 + epsilon / gamma;
+  EXPECT_NEAR(vertical->tip_opening_angle, gamma * std::cos(theta / 2.0), 1e-12 * gamma);
+  EXPECT_NEAR(vertical->tip.y, tip_y, 1e-9);
+  int lower = 0, upper = 0;
+  for (const run::FracturePiece& p : state.pieces) {
+    if (p.fracture != 0) continue;
+    const double bottom = std::min(p.segment[0].y, p.segment[1].y), top = std::max(p.segment[0].y, p.segment[1].y);
+    if (top <= 1.0 + 1e-6) {
+      ++lower;
+      EXPECT_TRUE(p.open);
+      EXPECT_NEAR(p.aperture, kAperture + d, 1e-15) << "lower piece from y = " << bottom;
+    } else {
+      ++upper;
+      EXPECT_EQ(p.open, bottom >= tip_y - 1e-9) << "upper piece from y = " << bottom;
+    }
+  }
+  EXPECT_EQ(lower, 10);
+  EXPECT_GE(upper, 10);
 }
 
 TEST(FractureResults, BlocksThatDoNotFitTheNetworkAreRefused) {
@@ -159,4 +214,39 @@ TEST(FractureResults, FlowZonesAreTheNearestProjectingFace) {
   EXPECT_GT(in_a_zone, mesh.triangle_count() * 9 / 10);
 }
 
+// The wedge tip a fracture size does not resolve: fracture 3 closes at α = 2e-3 (s* =
+// √(12 k_m/α³) = 1.22 mm with k_m = 1e-15 m²; α s* = 2.4 µm), fracture 5 at 5e-4 (s* = 9.8 mm;
+// α s* = 4.9 µm). Elements of 2 mm leave fracture 3's tip unresolved (more than s*/2) and the
+// message names it, its s* and s*/4; elements of 0.5 mm resolve both. A joint whose hydraulic
+// aperture at zero opening (3 µm) exceeds α s* has no sharp tip: fracture 3 is then left out,
+// and at 6 mm (more than fracture 5's s*/2) fracture 5 is named.
+TEST(FractureResults, AWedgeTipTheMeshDoesNotResolveIsNamed) {
+  run::FractureState state;
+  run::FractureResult sharp, blunt, none;
+  sharp.id = 3;
+  sharp.tip_opening_angle = 2e-3;
+  sharp.tip = {1.5, 0.25};
+  blunt.id = 5;
+  blunt.tip_opening_angle = 5e-4;
+  none.id = 7;
+  state.fractures = {none, blunt, sharp};
+  const double k_m = 1e-15;
+  const hydrodda::hydro::JointApertureLaw bare;
+  const auto message = run::describe_unresolved_wedge_tip(state, k_m, bare, 2e-3);
+  ASSERT_TRUE(message.has_value());
+  EXPECT_NE(message->find("fracture 3 opens as a wedge from (1.5, 0.25) at an angle of 0.002"), std::string::npos)
+      << *message;
+  EXPECT_NE(message->find("s* = sqrt(12 k_m / angle^3) = 0.00122 m"), std::string::npos) << *message;
+  EXPECT_NE(message->find("mesh.fracture_size = 0.00031 m (s*/4)"), std::string::npos) << *message;
+  EXPECT_FALSE(run::describe_unresolved_wedge_tip(state, k_m, bare, 0.5e-3).has_value());
+  hydrodda::hydro::JointApertureLaw residual;
+  residual.residual_aperture = 3e-6;
+  EXPECT_FALSE(run::describe_unresolved_wedge_tip(state, k_m, residual, 2e-3).has_value());
+  const auto blunt_message = run::describe_unresolved_wedge_tip(state, k_m, residual, 6e-3);
+  ASSERT_TRUE(blunt_message.has_value());
+  EXPECT_NE(blunt_message->find("fracture 5 opens"), std::string::npos) << *blunt_message;
+  EXPECT_NE(run::describe_unresolved_wedge_tip(state, k_m, bare, 6e-3)->find("fracture 3 opens"), std::string::npos);
+}
+
 }  // namespace
+
