@@ -24,8 +24,9 @@ void check_finite(const std::vector<double>& values, const char* what, int itera
 }
 }  // namespace
 
-void ChangeGrowth::add(double change, int iteration) {
-  if (iteration > 2 && change > last) {
+void ChangeGrowth::add(double change, int iteration, int ramp_passes) {
+  // Pass k's change compares it with pass k − 1, at the full load from pass ramp_passes on.
+  if (iteration > std::max(2, ramp_passes + 1) && change > last) {
     if (passes == 0) base = last;
     ++passes;
   } else {
@@ -268,7 +269,7 @@ PassReport StaggeredLoop::run_pass() {
   previous_heads_ = solution_.head;
   previous_displacements_ = u;
   const double change = std::max(report.head_change, report.displacement_change);
-  growth_.add(change, iteration_);
+  growth_.add(change, iteration_, settings_.ramp_passes);
   report.growing_passes = growth_.passes;
   report.diverging = growth_.diverging(settings_.diverging_passes, settings_.diverging_growth);
 

@@ -125,12 +125,14 @@ struct PassReport {
 
 // How the pass-to-pass change has grown lately: passes in a row whose change (the larger norm)
 // grew, the change before they started and the last one. Passes 1 and 2 never count: the
-// first change is 1 by definition and the second has nothing comparable before it.
+// first change is 1 by definition and the second has nothing comparable before it. Nor does a
+// pass whose change, or the one before, took in a rise of the load (`ramp_passes`): a load
+// that rises pass after pass moves the blocks more each time, and that is no divergence.
 struct ChangeGrowth {
   int passes = 0;
   double base = 0.0;
   double last = 0.0;
-  void add(double change, int iteration);
+  void add(double change, int iteration, int ramp_passes = 1);
   bool diverging(int passes_needed, double factor) const {
     return passes_needed > 0 && passes >= passes_needed && last >= factor * base;
   }

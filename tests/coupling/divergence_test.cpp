@@ -10,9 +10,9 @@
 namespace hydrodda::coupling {
 namespace {
 
-ChangeGrowth track(const std::vector<double>& changes) {
+ChangeGrowth track(const std::vector<double>& changes, int ramp_passes = 1) {
   ChangeGrowth growth;
-  for (std::size_t k = 0; k < changes.size(); ++k) growth.add(changes[k], static_cast<int>(k) + 1);
+  for (std::size_t k = 0; k < changes.size(); ++k) growth.add(changes[k], static_cast<int>(k) + 1, ramp_passes);
   return growth;
 }
 
@@ -36,6 +36,24 @@ TEST(Divergence, FivePassesOfTenfoldGrowthDivergeAndASlowCreepDoesNot) {
   const ChangeGrowth creep = track({1.0, 0.5, 9.14e-3, 1.82e-2, 1.92e-2, 1.93e-2, 1.95e-2, 1.96e-2});
   EXPECT_EQ(creep.passes, 5);
   EXPECT_FALSE(creep.diverging(5, 10.0));
+}
+
+// A load ramped over 5 passes (coupling.ramp_passes) moves the blocks more each pass while it
+// rises: those changes, doubling from pass 2 to pass 6, are no divergence. Pass 5 is the first
+// at the full load, so the change of pass 6 is the first between two such passes, and growth
+// counts from pass 7, which compares it with pass 6's. Without the ramp the same history
+// diverges; with it, growth that goes on after the ramp does.
+TEST(Divergence, ChangesThatGrowWithARampedLoadAreNoDivergence) {
+  const std::vector<double> ramped{1.0, 1e-3, 2e-3, 4e-3, 8e-3, 1.6e-2, 3.2e-2};
+  EXPECT_EQ(track(ramped, 5).passes, 1);
+  EXPECT_FALSE(track(ramped, 5).diverging(5, 10.0));
+  EXPECT_TRUE(track(ramped, 1).diverging(5, 10.0));
+  std::vector<double> growing_after = ramped;
+  for (double c : {6.4e-2, 1.28e-1, 2.56e-1, 5.12e-1}) growing_after.push_back(c);
+  const ChangeGrowth after = track(growing_after, 5);
+  EXPECT_EQ(after.passes, 5);
+  EXPECT_EQ(after.base, 1.6e-2);
+  EXPECT_TRUE(after.diverging(5, 10.0));
 }
 
 }  // namespace
