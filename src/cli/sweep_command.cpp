@@ -7,6 +7,8 @@
 #include <spdlog/spdlog.h>
 
 #include <cstdio>
+#include <fstream>
+#include <string>
 #include <thread>
 
 #include "cli/app.hpp"
@@ -27,6 +29,14 @@ namespace hydrodda::cli {
 namespace fs = std::filesystem;
 
 namespace {
+
+// The lines of a case's run.log that are warnings ("warning: ..."); 0 without the file.
+int count_warnings(const fs::path& log) {
+  std::ifstream in(log);
+  int count = 0;
+  for (std::string line; std::getline(in, line);) count += line.rfind("warning: ", 0) == 0;
+  return count;
+}
 
 // The cases' shared meshes (run --mesh-cache): cases of one geometry and mesh settings mesh once.
 constexpr const char* kMeshCache = "mesh-cache";
@@ -170,10 +180,14 @@ int sweep_command(const SweepOptions& options, SweepRanks& ranks) {
     const auto case_finished = [&](std::size_t index, const run::CaseResult& r, int rank) {
       results.set_result(index, r);
       ++finished;
-      const std::string line = fmt::format("{} ({}): {}{}  [{}/{}{}]", (*prepared)[index].name,
-                                           describe_case(cases[index]), run::status_name(r.status),
-                                           r.message.empty() ? "" : ": " + r.message, finished, cases.size(),
-                                           ranks.size() > 1 ? fmt::format(", rank {}", rank) : "");
+      // A case's warnings (a mesh that does not resolve what it must, blocks off the mesh)
+      // qualify its numbers: say that its run.log has some.
+      const int warnings = count_warnings(directory / (*prepared)[index].name / "run.log");
+      const std::string line = fmt::format(
+          "{} ({}): {}{}{}  [{}/{}{}]", (*prepared)[index].name, describe_case(cases[index]),
+          run::status_name(r.status), r.message.empty() ? "" : ": " + r.message,
+          warnings > 0 ? fmt::format(" ({} warning(s) in {}/run.log)", warnings, (*prepared)[index].name) : "",
+          finished, cases.size(), ranks.size() > 1 ? fmt::format(", rank {}", rank) : "");
       if (r.status == run::CaseStatus::ok) spdlog::info("{}", line);
       else if (r.status == run::CaseStatus::failed) spdlog::error("{}", line);
       else spdlog::warn("{}", line);
