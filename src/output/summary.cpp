@@ -40,9 +40,14 @@ json format_fractures(const FractureSummary& f) {
       widest_id = r.id;
     }
   }
-  return {{"count", f.rows.size()},       {"open", open_ids.size()},     {"open_ids", open_ids},
-          {"open_length", open_length},   {"max_aperture", widest},      {"max_aperture_id", widest_id},
-          {"by_id", by_id}};
+  json summary = {{"count", f.rows.size()},     {"open", open_ids.size()},  {"open_ids", open_ids},
+                  {"open_length", open_length}, {"max_aperture", widest},   {"max_aperture_id", widest_id},
+                  {"by_id", by_id}};
+  if (f.tip_length) {
+    summary["tip_length"] = *f.tip_length;
+    summary["tip_length_id"] = *f.tip_length_id;
+  }
+  return summary;
 }
 
 json to_json(const RunSummary& s) {

@@ -69,6 +69,10 @@ struct FractureRow {
 // The fractures at a glance: how many, which are open, the widest, and every row by id.
 struct FractureSummary {
   std::vector<FractureRow> rows;  // by id
+  // Cubic-law runs: the shortest wedge-tip length s* of the open joints and its fracture
+  // (run::find_sharpest_wedge_tip); none without a sharp tip or under another law.
+  std::optional<double> tip_length;
+  std::optional<int> tip_length_id;
 };
 
 struct RunSummary {

@@ -170,10 +170,21 @@ output::RunSummary run_coupled(const RunContext& context) {
   bool last_pass_cut_short = false;  // its last DDA step was cut short (PassReport::full_time_step)
   double shortest_time_step = 0.0;   // of the last pass
   bool stopped = false;  // by stop_after
+  // The cubic law's wedge tips (docs/coupling.md, "Wedge tips").
+  const bool cubic_law = s.flow->permeability_law == scenario::PermeabilityLaw::Cubic;
+  const double matrix_permeability = make_permeability_model(s).matrix_permeability();
   const auto current_summary = [&] {
     output::RunSummary summary = model.summary();
     summary.timings = model.timings();
-    if (fracture_state) summary.fractures = summarise_fractures(*fracture_state);
+    if (fracture_state) {
+      summary.fractures = summarise_fractures(*fracture_state);
+      const std::optional<WedgeTip> tip =
+          cubic_law ? find_sharpest_wedge_tip(*fracture_state, matrix_permeability, joint_law) : std::nullopt;
+      if (tip) {
+        summary.fractures->tip_length = tip->length;
+        summary.fractures->tip_length_id = tip->fracture;
+      }
+    }
     return summary;
   };
   // After every finished pass: the checkpoint of the state the model continues from
@@ -306,10 +317,10 @@ output::RunSummary run_coupled(const RunContext& context) {
   // The cubic law's answer depends on the mesh where its fracture elements are wider than a
   // wedge tip's exchange length (docs/coupling.md, "Wedge tips"); a mesh file's sizes are the
   // user's own.
-  if (meter && s.flow->permeability_law == scenario::PermeabilityLaw::Cubic && s.mesh && !s.mesh->file) {
+  if (meter && cubic_law && s.mesh && !s.mesh->file) {
     if (!fracture_state) measure_fractures();
-    if (const auto tip = describe_unresolved_wedge_tip(*fracture_state, make_permeability_model(s).matrix_permeability(),
-                                                       joint_law, s.mesh->fracture_size))
+    if (const auto tip = describe_unresolved_wedge_tip(*fracture_state, matrix_permeability, joint_law,
+                                                       s.mesh->fracture_size))
       spdlog::warn("{}", *tip);
   }
   if (!converged) {

@@ -218,27 +218,28 @@ void FractureMeter::add_flow(FractureState& state, const FlowZones& zones, const
     r.flow = r.length > 0.0 ? integral[r.id] / r.length : 0.0;
 }
 
-std::optional<std::string> describe_unresolved_wedge_tip(const FractureState& state, double matrix_permeability,
-                                                         const hydro::JointApertureLaw& law, double fracture_size) {
-  const FractureResult* sharpest = nullptr;
-  double shortest = std::numeric_limits<double>::infinity();
+std::optional<WedgeTip> find_sharpest_wedge_tip(const FractureState& state, double matrix_permeability,
+                                                const hydro::JointApertureLaw& law) {
+  std::optional<WedgeTip> sharpest;
   for (const FractureResult& r : state.fractures) {
     if (!(r.tip_opening_angle > 0.0)) continue;
-    const double tip_length = hydro::cubic_law_tip_length(r.tip_opening_angle, matrix_permeability);
-    if (law.at_zero_stress() >= r.tip_opening_angle * tip_length) continue;
-    if (tip_length < shortest) {
-      shortest = tip_length;
-      sharpest = &r;
-    }
+    const double length = hydro::cubic_law_tip_length(r.tip_opening_angle, matrix_permeability);
+    if (law.at_zero_stress() >= r.tip_opening_angle * length) continue;
+    if (!sharpest || length < sharpest->length) sharpest = WedgeTip{r.id, r.tip, r.tip_opening_angle, length};
   }
-  if (!sharpest || fracture_size <= 0.5 * shortest) return std::nullopt;
+  return sharpest;
+}
+
+std::optional<std::string> describe_unresolved_wedge_tip(const FractureState& state, double matrix_permeability,
+                                                         const hydro::JointApertureLaw& law, double fracture_size) {
+  const std::optional<WedgeTip> tip = find_sharpest_wedge_tip(state, matrix_permeability, law);
+  if (!tip || fracture_size <= 0.5 * tip->length) return std::nullopt;
   return fmt::format(
       "fracture {} opens as a wedge from ({:.4g}, {:.4g}) at an angle of {:.3g}: with the cubic law the flow passes "
       "between its tip and the matrix over s* = sqrt(12 k_m / angle^3) = {:.3g} m, and mesh.fracture_size = {:g} m "
       "is more than half of that, so the effective conductivities depend on the mesh (docs/coupling.md, \"Wedge "
       "tips\"): give mesh.fracture_size = {:.2g} m (s*/4), or check them between two sizes",
-      sharpest->id, sharpest->tip.x, sharpest->tip.y, sharpest->tip_opening_angle, shortest, fracture_size,
-      0.25 * shortest);
+      tip->fracture, tip->point.x, tip->point.y, tip->opening_angle, tip->length, fracture_size, 0.25 * tip->length);
 }
 
 std::optional<FractureMeter> make_fracture_meter(const scenario::Scenario& s) {

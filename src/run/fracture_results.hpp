@@ -128,12 +128,23 @@ class FractureMeter {
 // side apart; none for a scenario that lists its blocks.
 std::optional<FractureMeter> make_fracture_meter(const scenario::Scenario& scenario);
 
-// Under the cubic law, the wedge tip that fracture elements of `fracture_size` (m) do not
-// resolve: of the fractures whose opening grows from a tip (FractureResult::tip_opening_angle),
-// the one with the shortest tip length s* (hydro::cubic_law_tip_length with k_m), when
-// fracture_size is more than half of it; a message naming the fracture, its tip, α, s* and a
-// size that resolves it. A joint whose hydraulic aperture at zero opening (`law`) is already
-// the wedge's opening at s* has no sharp tip and is left out. None when every tip is resolved.
+// Under the cubic law, the sharpest wedge tip: of the fractures whose opening grows from a tip
+// (FractureResult::tip_opening_angle), the one with the shortest tip length s*
+// (hydro::cubic_law_tip_length with k_m). A joint whose hydraulic aperture at zero opening
+// (`law`) is already the wedge's opening at s* has no sharp tip and is left out. None without
+// a sharp tip.
+struct WedgeTip {
+  int fracture = 0;
+  geometry::Point point;
+  double opening_angle = 0.0;  // rad
+  double length = 0.0;         // s*, m
+};
+std::optional<WedgeTip> find_sharpest_wedge_tip(const FractureState& state, double matrix_permeability,
+                                                const hydro::JointApertureLaw& law);
+
+// That tip when fracture elements of `fracture_size` (m) do not resolve it (fracture_size more
+// than s*/2): a message naming the fracture, its tip, α, s* and a size that resolves it. None
+// when every tip is resolved.
 std::optional<std::string> describe_unresolved_wedge_tip(const FractureState& state, double matrix_permeability,
                                                          const hydro::JointApertureLaw& law, double fracture_size);
 

@@ -339,7 +339,10 @@ TEST(CoupledRun, ACaprockOfThinBlocksConvergesAtFullSteps) {
 // The symmetric flexure with the cubic law on its file's 1 cm fracture elements: its central
 // joint opens as wedges whose tips draw flow from the matrix over s* ≈ 2 mm
 // (docs/coupling.md, "Wedge tips"), and the run says that its conductivity depends on the mesh,
-// naming that joint. With the file's Kozeny–Carman law, which has no tip length, it says nothing.
+// naming that joint. summary.json gives that s* and its fracture: √(12 k_m / α³) with the
+// fracture's own tip_opening_angle α and the rock's k_m = d² φ³ / (180 (1 − φ)²) (d = 1.2e-5 m,
+// φ = 0.1), to round-off (1e-12). With the file's Kozeny–Carman law, which has no tip length,
+// the run says nothing and gives none.
 TEST(CoupledRun, AWedgeTipTheMeshDoesNotResolveIsWarnedAbout) {
   const fs::path flexure = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/paper/symmetric_flexure_20m.toml";
   const RunRecord cubic = run_and_read(edited_scenario(
@@ -347,8 +350,16 @@ TEST(CoupledRun, AWedgeTipTheMeshDoesNotResolveIsWarnedAbout) {
       {{"permeability_law = \"kozeny-carman\"", "permeability_law = \"cubic\""}}));
   EXPECT_NE(cubic.output.find("fracture 4 opens as a wedge"), std::string::npos) << cubic.output;
   EXPECT_NE(cubic.output.find("the effective conductivities depend on the mesh"), std::string::npos) << cubic.output;
+  const nlohmann::json& fractures = cubic.summary["fractures"];
+  ASSERT_TRUE(fractures.contains("tip_length")) << fractures.dump();
+  EXPECT_EQ(fractures["tip_length_id"], 4);
+  const double alpha = fractures["by_id"]["4"]["tip_opening_angle"].get<double>();
+  const double k_m = 1.2e-5 * 1.2e-5 * 1e-3 / (180.0 * 0.9 * 0.9);
+  const double s_star = std::sqrt(12.0 * k_m / (alpha * alpha * alpha));
+  EXPECT_NEAR(fractures["tip_length"].get<double>(), s_star, 1e-12 * s_star);
   const RunRecord kozeny_carman = run_and_read(edited_scenario(flexure, "hydrodda-flexure-kc", {}));
   EXPECT_EQ(kozeny_carman.output.find("opens as a wedge"), std::string::npos) << kozeny_carman.output;
+  EXPECT_FALSE(kozeny_carman.summary["fractures"].contains("tip_length"));
 }
 
 // The same caprock with its sides held at zero ([[mechanics.displacement]]) instead of on

@@ -246,6 +246,16 @@ TEST(FractureResults, AWedgeTipTheMeshDoesNotResolveIsNamed) {
   ASSERT_TRUE(blunt_message.has_value());
   EXPECT_NE(blunt_message->find("fracture 5 opens"), std::string::npos) << *blunt_message;
   EXPECT_NE(run::describe_unresolved_wedge_tip(state, k_m, bare, 6e-3)->find("fracture 3 opens"), std::string::npos);
+  // The tip itself (summary.json's tip_length): the sharpest, or none without a sharp one.
+  const auto tip = run::find_sharpest_wedge_tip(state, k_m, bare);
+  ASSERT_TRUE(tip.has_value());
+  EXPECT_EQ(tip->fracture, 3);
+  EXPECT_NEAR(tip->length, std::sqrt(12.0 * k_m / 8e-9), 1e-15);
+  EXPECT_EQ(tip->point.y, 0.25);
+  EXPECT_EQ(run::find_sharpest_wedge_tip(state, k_m, residual)->fracture, 5);
+  run::FractureState without_tips;
+  without_tips.fractures = {none};
+  EXPECT_FALSE(run::find_sharpest_wedge_tip(without_tips, k_m, bare).has_value());
 }
 
 }  // namespace
