@@ -16,10 +16,12 @@ std::string format_number(double x) {
 }
 
 // The least-squares line log c = a + b x through (x_i, log c_i): its slope b (0 when the x
-// do not spread) and the residual sum of squares about it.
+// do not spread), the residual sum of squares about it, and the largest residual |log c_i − a
+// − b x_i| (how far, as a log factor, the worst value lies from the fitted geometric trend).
 struct LogLine {
   double slope = 0.0;
   double misfit = 0.0;
+  double largest_miss = 0.0;
 };
 
 LogLine fit_log_line(const std::vector<double>& x, const std::vector<double>& c) {
@@ -36,7 +38,10 @@ LogLine fit_log_line(const std::vector<double>& x, const std::vector<double>& c)
   const double denominator = n * sxx - sx * sx;
   if (!(denominator > 0)) return {};
   const double b = (n * sxy - sx * sy) / denominator, a = (sy - b * sx) / n;
-  return {b, std::max(0.0, syy - a * sy - b * sxy)};
+  double largest_miss = 0.0;
+  for (std::size_t i = 0; i < c.size(); ++i)
+    largest_miss = std::max(largest_miss, std::abs(std::log(std::max(c[i], 1e-300)) - a - b * x[i]));
+  return {b, std::max(0.0, syy - a * sy - b * sxy), largest_miss};
 }
 
 // The pass numbers of c's values, the first being `first_pass`.
@@ -48,6 +53,12 @@ std::vector<double> passes_of(const std::vector<double>& c, std::size_t first_pa
 
 // The least-squares slope of log c against the pass, as a factor per pass.
 double rate_per_pass(const std::vector<double>& c) { return std::exp(fit_log_line(passes_of(c, 0), c).slope); }
+
+// Whether that geometric trend explains c: every value lies within a factor 2 of it. A norm that
+// jumps by more (0.21, 0.03, 0.21, 0.03, 0.02) has a fitted rate that predicts nothing.
+bool follows_its_trend(const std::vector<double>& c) {
+  return fit_log_line(passes_of(c, 0), c).largest_miss <= std::log(2.0);
+}
 
 // Whether c falls as a power of the pass rather than geometrically: log c is nearer a line in
 // log k than in k, with a slope above −2 (k the pass number from the run's start, `first_pass`
@@ -90,6 +101,18 @@ int cycle_period(const std::vector<double>& c) {
   return 0;
 }
 
+// What to try when the loop swings or jumps between states rather than settling: an
+// acceleration if it had none, else relaxation or more steps, and that a jacking joint may have
+// no steady state.
+std::string unsettled_advice(std::string_view acceleration) {
+  if (acceleration == "none")
+    return "try coupling.acceleration = \"anderson\" (or \"aitken\"), or coupling.relaxation = 0.5";
+  return "the " + std::string(acceleration) +
+         " acceleration did not settle it: add coupling.relaxation = 0.5, or more mechanics.steps per pass; a "
+         "joint that jacks open and shut from pass to pass (history.csv's largest_opening) may have no steady "
+         "state under this load";
+}
+
 }  // namespace
 
 // The median over the passes from `first` of two_back / change: small when the heads keep
@@ -126,6 +149,7 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
   else if (d.period > 0) d.behaviour = NonConvergence::oscillating;
   else if (last.size() >= 4 && swinging && d.rate > 0.95) d.behaviour = NonConvergence::oscillating;
   else if (d.rate > 1.05) d.behaviour = NonConvergence::diverging;
+  else if (last.size() >= 4 && !follows_its_trend(last)) d.behaviour = NonConvergence::erratic;
   else if (d.rate < 0.95 && falls_as_a_power(last, first_pass)) d.behaviour = NonConvergence::drifting;
   else if (d.rate < 0.95) d.behaviour = NonConvergence::still_converging;
   else d.behaviour = NonConvergence::drifting;
@@ -147,14 +171,17 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
       d.text = norms + " stayed above the tolerance: the loop oscillates (the " + name + " change near " + level +
                (d.period > 2 ? ", coming back to the same values every " + std::to_string(d.period) + " passes"
                              : std::string(", the blocks swinging between two states pass after pass")) +
-               "); " +
-               (accelerated ? "the " + std::string(acceleration) +
-                                  " acceleration did not settle it: add coupling.relaxation = 0.5, or more "
-                                  "mechanics.steps per pass; a joint that jacks open and shut from pass to pass "
-                                  "(history.csv's largest_opening) may have no steady state under this load"
-                            : std::string("try coupling.acceleration = \"anderson\" (or \"aitken\"), or "
-                                          "coupling.relaxation = 0.5"));
+               "); " + unsettled_advice(acceleration);
       break;
+    case NonConvergence::erratic: {
+      const auto [low, high] = std::minmax_element(last.begin(), last.end());
+      d.text = norms + " stayed above the tolerance: the " + name + " change jumps from pass to pass (between " +
+               format_number(*low) + " and " + format_number(*high) + " over the last " +
+               std::to_string(last.size()) +
+               " passes, at " + level + "), with no steady trend, so no number of passes can be told; " +
+               unsettled_advice(acceleration);
+      break;
+    }
     case NonConvergence::diverging:
       d.text = norms + " stayed above the tolerance: the " + name + " change diverges (×" + format_number(d.rate) +
                " a pass, to " + level + "); try coupling.ramp_passes = 5 and coupling.relaxation = 0.3; if it still "

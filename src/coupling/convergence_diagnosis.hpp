@@ -13,6 +13,7 @@ enum class NonConvergence {
   oscillating,       // rising and falling by turns: the loop cycles between states
   drifting,          // neither falling nor alternating: the blocks keep moving
   diverging,         // rising
+  erratic,           // jumping from pass to pass more than any steady trend explains
   too_few_passes,    // fewer than four passes: too few to tell
 };
 
@@ -38,7 +39,8 @@ struct ConvergenceDiagnosis {
 //   two passes before (the median of head_change_two_passes / head_change over those passes is
 //   under 0.1: a swing between two states shows a steady change) or the norm rises and falls by
 //   turns (its pass-to-pass changes alternate in sign at least 60% of the time);
-//   diverging when r > 1.05; drifting when r < 0.95 but log c lies nearer a line in log k than in
+//   diverging when r > 1.05; erratic when some fitted value lies more than a factor 2 from the
+//   fitted trend (its rate then predicts nothing); drifting when r < 0.95 but log c lies nearer a line in log k than in
 //   k with a slope above −2 (it falls only as a power of the pass k); still converging when
 //   r < 0.95 otherwise; drifting otherwise.
 // `acceleration` is coupling.acceleration as run ("none", "aitken", "anderson"): the advice

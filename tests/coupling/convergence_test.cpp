@@ -114,6 +114,33 @@ TEST(NonConvergence, GeometricDecayIsSlowConvergenceWithThePassesStillNeeded) {
   EXPECT_NE(d.text.find("the head change stayed"), std::string::npos) << d.text;
 }
 
+// The head changes of passes 141–150 of a cubic-law jointed beam under Anderson: a fit of
+// log c against the pass gives ×0.78 a pass, but the values lie up to a factor 3.4 from that
+// trend (0.208 after 0.173, then 0.036, 0.210, 0.032): the rate predicts nothing, so the run
+// must not say how many passes it still needs. A steady geometric fall with the same rate and
+// the same scatter within a factor 1.5 is still converging.
+TEST(NonConvergence, AChangeJumpingFarFromItsTrendIsErraticNotStillConverging) {
+  std::vector<double> head(140, 0.2), displacement(140, 1e-3);
+  for (double c : {0.174, 0.174, 0.174, 0.173, 0.208, 0.036, 0.210, 0.032, 0.030, 0.023}) {
+    head.push_back(c);
+    displacement.push_back(1e-3);
+  }
+  head.front() = displacement.front() = 1.0;
+  const std::vector<double> two_back(head.size(), 0.1);
+  const ConvergenceDiagnosis d = diagnose_non_convergence(head, displacement, two_back, 1e-4, "anderson");
+  EXPECT_EQ(d.behaviour, NonConvergence::erratic);
+  EXPECT_EQ(d.passes_needed, 0);
+  EXPECT_EQ(d.text.find("more passes would reach it"), std::string::npos) << d.text;
+  EXPECT_NE(d.text.find("jumps from pass to pass (between 0.023 and 0.21 over the last 10 passes"),
+            std::string::npos) << d.text;
+  EXPECT_NE(d.text.find("the anderson acceleration did not settle it"), std::string::npos) << d.text;
+
+  std::vector<double> steady = geometric(0.2, 0.78, 20);
+  for (std::size_t k = 10; k < steady.size(); ++k) steady[k] *= k % 2 == 0 ? 1.5 : 1.0 / 1.5;
+  const ConvergenceDiagnosis falling = diagnose_non_convergence(steady, std::vector<double>(20, 1e-6), std::vector<double>(20, 1.0), 1e-4);
+  EXPECT_EQ(falling.behaviour, NonConvergence::still_converging) << falling.text;
+}
+
 TEST(NonConvergence, GeometricGrowthIsDivergence) {
   const ConvergenceDiagnosis d = diagnose_non_convergence(geometric(1e-3, 1.01, 12), geometric(1e-3, 1.3, 12), std::vector<double>(12, 1.0), 1e-4);
   EXPECT_EQ(d.behaviour, NonConvergence::diverging);
