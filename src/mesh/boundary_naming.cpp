@@ -57,4 +57,13 @@ double refined_size(const MeshRequest& request, double distance) {
   return request.fracture_size + t * (request.size - request.fracture_size);
 }
 
+double refined_size(const MeshRequest& request, double line_distance, Point p) {
+  double size = request.refinement_lines.empty() ? request.size : refined_size(request, line_distance);
+  for (const RefinePoint& r : request.refinement_points) {
+    const double d = geometry::distance(p, r.point);
+    if (d < r.radius) size = std::min(size, r.size + d / r.radius * (request.size - r.size));
+  }
+  return size;
+}
+
 }  // namespace hydrodda::mesh

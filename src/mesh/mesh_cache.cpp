@@ -123,6 +123,11 @@ std::string canonical_request_text(const MeshRequest& r) {
   for (const NamedSegment& b : r.boundaries) key << b.name.size() << ':' << b.name << ' ' << point_text(b.from) << ' ' << point_text(b.to) << '\n';
   key << "refinement_lines " << r.refinement_lines.size() << '\n';
   for (const Segment& s : r.refinement_lines) key << point_text(s.from) << ' ' << point_text(s.to) << '\n';
+  if (!r.refinement_points.empty()) {
+    key << "refinement_points " << r.refinement_points.size() << '\n';
+    for (const RefinePoint& p : r.refinement_points)
+      key << point_text(p.point) << ' ' << exact(p.size) << ' ' << exact(p.radius) << '\n';
+  }
   key << "regions " << r.regions.size() << '\n';
   for (const NamedPolygon& g : r.regions) {
     key << g.name.size() << ':' << g.name;

@@ -96,6 +96,16 @@ TriangleEstimate estimate_triangle_count(const MeshRequest& r) {
   }
   estimate.near_lines *= kTrianglesPerSquareSize;
   estimate.elsewhere *= kTrianglesPerSquareSize;
+  // Each refinement point adds, over the disc where it sets the size (h = s + g d, g = (H − s)
+  // / radius, H = size), c ∫ 2π d dd / h² − the same at H, which is
+  //   2π c / g² [ln(H / s) + s / H − 1] − c π radius² / H²
+  // (a point nearer a line, or the domain's edge, than its radius is counted whole).
+  for (const RefinePoint& p : r.refinement_points) {
+    if (!(p.size > 0.0 && p.size < r.size && p.radius > 0.0)) continue;
+    const double g = (r.size - p.size) / p.radius;
+    estimate.near_points += kTrianglesPerSquareSize * (2.0 * M_PI / (g * g) * (std::log(r.size / p.size) + p.size / r.size - 1.0) -
+                                                       M_PI * p.radius * p.radius / (r.size * r.size));
+  }
   return estimate;
 }
 

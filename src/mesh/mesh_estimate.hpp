@@ -20,7 +20,8 @@ namespace hydrodda::mesh {
 struct TriangleEstimate {
   double near_lines = 0.0;  // within refine_distance of a refinement line (fracture_size there)
   double elsewhere = 0.0;   // the rest of the domain, at size
-  double total() const { return near_lines + elsewhere; }
+  double near_points = 0.0;  // what the refinement points add
+  double total() const { return near_lines + elsewhere + near_points; }
 };
 
 TriangleEstimate estimate_triangle_count(const MeshRequest& request);

@@ -21,6 +21,14 @@ struct Segment {
   Point to;
 };
 
+// A point the mesh is refined around: elements of `size` at it, growing linearly to the
+// request's size at `radius` from it.
+struct RefinePoint {
+  Point point;
+  double size = 0.0;
+  double radius = 0.0;
+};
+
 struct NamedPolygon {
   std::string name;
   geometry::Polygon polygon;
@@ -34,6 +42,7 @@ struct MeshRequest {
   double size = 0.1;                     // element size far from the refinement lines (m)
   double fracture_size = 0.01;           // element size on the refinement lines (m)
   double refine_distance = 0.2;          // distance over which the size grows back (m)
+  std::vector<RefinePoint> refinement_points;  // and around these (wedge tips)
   // Gmsh's 2D algorithm: 5 "Delaunay" (default: fastest measured, docs/performance.md),
   // 6 "Frontal-Delaunay", 1 "MeshAdapt".
   int algorithm = 5;
@@ -78,6 +87,10 @@ void name_boundary_edges(TriangleMesh& mesh, const std::vector<NamedSegment>& se
 // with DistMin = 0, i.e. fracture_size at the line, growing linearly to size at
 // refine_distance and constant beyond.
 double refined_size(const MeshRequest& request, double distance);
+// The element size at p: the least of refined_size at `line_distance` (p's distance to the
+// nearest refinement line) and, for each refinement point within its radius,
+// size + d (request.size − size) / radius at distance d from it.
+double refined_size(const MeshRequest& request, double line_distance, Point p);
 
 // Meshes the request with Gmsh. Throws std::runtime_error on invalid input (non-simple
 // domain, non-positive sizes) or when Gmsh fails.

@@ -46,6 +46,7 @@ json format_fractures(const FractureSummary& f) {
   if (f.tip_length) {
     summary["tip_length"] = *f.tip_length;
     summary["tip_length_id"] = *f.tip_length_id;
+    if (f.tip_element_size) summary["tip_element_size"] = *f.tip_element_size;
   }
   return summary;
 }

@@ -73,6 +73,9 @@ struct FractureSummary {
   // (run::find_sharpest_wedge_tip); none without a sharp tip or under another law.
   std::optional<double> tip_length;
   std::optional<int> tip_length_id;
+  // The longest edge of the fluid element at that tip (m; run::find_wedge_tip_element): under
+  // s*/2 the mesh resolves the tip.
+  std::optional<double> tip_element_size;
 };
 
 struct RunSummary {

@@ -173,6 +173,12 @@ output::RunSummary run_coupled(const RunContext& context) {
   // The cubic law's wedge tips (docs/coupling.md, "Wedge tips").
   const bool cubic_law = s.flow->permeability_law == scenario::PermeabilityLaw::Cubic;
   const double matrix_permeability = make_permeability_model(s).matrix_permeability();
+  // The fluid mesh's triangle finder for the tips' elements, made when first needed.
+  std::optional<mesh::PointLocator> locator;
+  const auto tip_locator = [&]() -> const mesh::PointLocator& {
+    if (!locator) locator.emplace(mesh);
+    return *locator;
+  };
   const auto current_summary = [&] {
     output::RunSummary summary = model.summary();
     summary.timings = model.timings();
@@ -183,6 +189,8 @@ output::RunSummary run_coupled(const RunContext& context) {
       if (tip) {
         summary.fractures->tip_length = tip->length;
         summary.fractures->tip_length_id = tip->fracture;
+        if (const auto element = find_wedge_tip_element(*tip, mesh, tip_locator(), meter->layout().traces))
+          summary.fractures->tip_element_size = element->element_size;
       }
     }
     return summary;
@@ -314,14 +322,13 @@ output::RunSummary run_coupled(const RunContext& context) {
     spdlog::warn("{} block(s) reach outside the fluid mesh, block {} farthest, by {:.3g} m: their parts outside "
                  "take the pressure of the mesh boundary there",
                  summary.outside_mesh->blocks, summary.outside_mesh->block, summary.outside_mesh->largest_distance);
-  // The cubic law's answer depends on the mesh where its fracture elements are wider than a
-  // wedge tip's exchange length (docs/coupling.md, "Wedge tips"); a mesh file's sizes are the
-  // user's own.
-  if (meter && cubic_law && s.mesh && !s.mesh->file) {
+  // The cubic law's answer depends on the mesh where the elements at a wedge tip are wider than
+  // its exchange length (docs/coupling.md, "Wedge tips").
+  if (meter && cubic_law && s.mesh) {
     if (!fracture_state) measure_fractures();
-    if (const auto tip = describe_unresolved_wedge_tip(*fracture_state, matrix_permeability, joint_law,
-                                                       s.mesh->fracture_size))
-      spdlog::warn("{}", *tip);
+    const std::vector<WedgeTipElement> tips = find_wedge_tip_elements(
+        *fracture_state, matrix_permeability, joint_law, mesh, tip_locator(), meter->layout().traces);
+    if (const auto text = describe_unresolved_wedge_tips(tips, *s.mesh)) spdlog::warn("{}", *text);
   }
   if (!converged) {
     std::vector<double> two_passes;  // history.csv's third column from the end

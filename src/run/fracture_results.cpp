@@ -218,28 +218,95 @@ void FractureMeter::add_flow(FractureState& state, const FlowZones& zones, const
     r.flow = r.length > 0.0 ? integral[r.id] / r.length : 0.0;
 }
 
-std::optional<WedgeTip> find_sharpest_wedge_tip(const FractureState& state, double matrix_permeability,
-                                                const hydro::JointApertureLaw& law) {
-  std::optional<WedgeTip> sharpest;
+namespace {
+
+// The sharp wedge tips: those whose joint's hydraulic aperture at zero opening (`law`) is less
+// than the wedge's opening at s*.
+std::vector<WedgeTip> find_sharp_wedge_tips(const FractureState& state, double matrix_permeability,
+                                            const hydro::JointApertureLaw& law) {
+  std::vector<WedgeTip> tips;
   for (const FractureResult& r : state.fractures) {
     if (!(r.tip_opening_angle > 0.0)) continue;
     const double length = hydro::cubic_law_tip_length(r.tip_opening_angle, matrix_permeability);
     if (law.at_zero_stress() >= r.tip_opening_angle * length) continue;
-    if (!sharpest || length < sharpest->length) sharpest = WedgeTip{r.id, r.tip, r.tip_opening_angle, length};
+    tips.push_back(WedgeTip{r.id, r.tip, r.tip_opening_angle, length});
   }
+  return tips;
+}
+
+}  // namespace
+
+std::optional<WedgeTip> find_sharpest_wedge_tip(const FractureState& state, double matrix_permeability,
+                                                const hydro::JointApertureLaw& law) {
+  std::optional<WedgeTip> sharpest;
+  for (const WedgeTip& tip : find_sharp_wedge_tips(state, matrix_permeability, law))
+    if (!sharpest || tip.length < sharpest->length) sharpest = tip;
   return sharpest;
 }
 
-std::optional<std::string> describe_unresolved_wedge_tip(const FractureState& state, double matrix_permeability,
-                                                         const hydro::JointApertureLaw& law, double fracture_size) {
-  const std::optional<WedgeTip> tip = find_sharpest_wedge_tip(state, matrix_permeability, law);
-  if (!tip || fracture_size <= 0.5 * tip->length) return std::nullopt;
-  return fmt::format(
+std::optional<WedgeTipElement> find_wedge_tip_element(const WedgeTip& tip, const mesh::TriangleMesh& mesh,
+                                                      const mesh::PointLocator& locator,
+                                                      std::span<const geometry::FractureTrace> traces) {
+  const int triangle = locator.locate(tip.point);
+  if (triangle < 0) return std::nullopt;
+  WedgeTipElement element{tip};
+  const auto& corners = mesh.triangles[static_cast<std::size_t>(triangle)];
+  for (int i = 0; i < 3; ++i)
+    element.element_size = std::max(element.element_size, geometry::distance(mesh.nodes[corners[i]],
+                                                                              mesh.nodes[corners[(i + 1) % 3]]));
+  const geometry::FractureTrace& trace = traces[static_cast<std::size_t>(tip.fracture)];
+  element.trace_distance = geometry::distance_to_segment(tip.point, trace.segment.from, trace.segment.to);
+  return element;
+}
+
+std::vector<WedgeTipElement> find_wedge_tip_elements(const FractureState& state, double matrix_permeability,
+                                                     const hydro::JointApertureLaw& law, const mesh::TriangleMesh& mesh,
+                                                     const mesh::PointLocator& locator,
+                                                     std::span<const geometry::FractureTrace> traces) {
+  std::vector<WedgeTipElement> elements;
+  for (const WedgeTip& tip : find_sharp_wedge_tips(state, matrix_permeability, law))
+    if (const std::optional<WedgeTipElement> element = find_wedge_tip_element(tip, mesh, locator, traces))
+      elements.push_back(*element);
+  std::stable_sort(elements.begin(), elements.end(), [](const WedgeTipElement& a, const WedgeTipElement& b) {
+    return a.element_size / a.tip.length > b.element_size / b.tip.length;
+  });
+  return elements;
+}
+
+std::optional<std::string> describe_unresolved_wedge_tips(std::span<const WedgeTipElement> tips,
+                                                          const scenario::MeshDefinition& mesh) {
+  const auto unresolved = [](const WedgeTipElement& e) { return e.element_size > 0.5 * e.tip.length; };
+  if (tips.empty() || !unresolved(tips.front())) return std::nullopt;
+  const WedgeTipElement& worst = tips.front();
+  const WedgeTip& tip = worst.tip;
+  const std::string found = fmt::format(
       "fracture {} opens as a wedge from ({:.4g}, {:.4g}) at an angle of {:.3g}: with the cubic law the flow passes "
-      "between its tip and the matrix over s* = sqrt(12 k_m / angle^3) = {:.3g} m, and mesh.fracture_size = {:g} m "
-      "is more than half of that, so the effective conductivities depend on the mesh (docs/coupling.md, \"Wedge "
-      "tips\"): give mesh.fracture_size = {:.2g} m (s*/4), or check them between two sizes",
-      tip->fracture, tip->point.x, tip->point.y, tip->opening_angle, tip->length, fracture_size, 0.25 * tip->length);
+      "between its tip and the matrix over s* = sqrt(12 k_m / angle^3) = {:.3g} m, and the fluid element there is "
+      "{:.2g} m across, more than half of that, so the effective conductivities depend on the mesh "
+      "(docs/coupling.md, \"Wedge tips\"): ",
+      tip.fracture, tip.point.x, tip.point.y, tip.opening_angle, tip.length, worst.element_size);
+  const double quarter = 0.25 * tip.length;
+  if (mesh.file)
+    return found + fmt::format("refine the mesh file to {:.2g} m (s*/4) around the tip, or check them between two meshes",
+                               quarter);
+  std::string tables;
+  int count = 0;
+  for (const WedgeTipElement& e : tips)
+    if (unresolved(e)) {
+      tables += fmt::format(" [[mesh.refine]] point = [{:.5g}, {:.5g}], size = {:.2g};", e.tip.point.x, e.tip.point.y,
+                            0.25 * e.tip.length);
+      ++count;
+    }
+  tables.pop_back();  // the last ';'
+  const std::string refine =
+      fmt::format("refine around {} (size s*/4):{}", count == 1 ? "the tip" : fmt::format("the {} unresolved tips", count),
+                  tables);
+  if (worst.trace_distance <= mesh.fracture_size)
+    return found + fmt::format("give mesh.fracture_size = {:.2g} m (s*/4), or {}", quarter, refine);
+  return found + fmt::format(
+                     "the blocks have carried the tip {:.2g} m from the fracture's trace, and mesh.fracture_size = {:g} "
+                     "m refines the traces only, so a smaller one does not reach it: {}",
+                     worst.trace_distance, mesh.fracture_size, refine);
 }
 
 std::optional<FractureMeter> make_fracture_meter(const scenario::Scenario& s) {

@@ -22,6 +22,7 @@
 #include "dda/system.hpp"
 #include "hydro/flow_solution.hpp"
 #include "hydro/permeability_law.hpp"
+#include "mesh/point_locator.hpp"
 #include "mesh/triangle_mesh.hpp"
 #include "scenario/scenario.hpp"
 
@@ -142,10 +143,33 @@ struct WedgeTip {
 std::optional<WedgeTip> find_sharpest_wedge_tip(const FractureState& state, double matrix_permeability,
                                                 const hydro::JointApertureLaw& law);
 
-// That tip when fracture elements of `fracture_size` (m) do not resolve it (fracture_size more
-// than s*/2): a message naming the fracture, its tip, α, s* and a size that resolves it. None
-// when every tip is resolved.
-std::optional<std::string> describe_unresolved_wedge_tip(const FractureState& state, double matrix_permeability,
-                                                         const hydro::JointApertureLaw& law, double fracture_size);
+// The fluid element a sharp wedge tip lies in: the longest edge of the triangle that holds the
+// tip's point, and how far the point lies from its fracture's trace as given. A generated mesh
+// is refined along the traces; the blocks carry a tip away from them as they move (the
+// asymmetric flexures' by 2 mm), into elements that grow from there towards mesh.size.
+struct WedgeTipElement {
+  WedgeTip tip;
+  double element_size = 0.0;    // m
+  double trace_distance = 0.0;  // m
+};
+// The fluid element of `tip` (none when its point lies outside the mesh). `locator` is the
+// mesh's; `traces` the meter's layout's, by fracture id.
+std::optional<WedgeTipElement> find_wedge_tip_element(const WedgeTip& tip, const mesh::TriangleMesh& mesh,
+                                                      const mesh::PointLocator& locator,
+                                                      std::span<const geometry::FractureTrace> traces);
+// The elements of the sharp tips (those find_sharpest_wedge_tip weighs) inside the mesh, the
+// least resolved first: by element size over s*, largest first.
+std::vector<WedgeTipElement> find_wedge_tip_elements(const FractureState& state, double matrix_permeability,
+                                                     const hydro::JointApertureLaw& law, const mesh::TriangleMesh& mesh,
+                                                     const mesh::PointLocator& locator,
+                                                     std::span<const geometry::FractureTrace> traces);
+
+// A message when the element at the first of `tips` (find_wedge_tip_elements) is more than s*/2
+// across: naming the fracture, its tip, α, s* and the element's size, and what resolves it under
+// `mesh` (the scenario's [mesh]): where the tip lies on its trace (within mesh.fracture_size), a
+// smaller mesh.fracture_size; else refinement around the tips, a [[mesh.refine]] table for each
+// unresolved one; in a mesh file, a refinement of the file. None when every tip is resolved.
+std::optional<std::string> describe_unresolved_wedge_tips(std::span<const WedgeTipElement> tips,
+                                                          const scenario::MeshDefinition& mesh);
 
 }  // namespace hydrodda::run

@@ -199,6 +199,8 @@ mesh::MeshRequest make_mesh_request(const Scenario& s) {
   request.size = m.size;
   request.fracture_size = m.fracture_size;
   request.refine_distance = m.refine_distance;
+  for (const scenario::MeshRefinePoint& r : m.refine_points)
+    request.refinement_points.push_back({r.point, r.size, r.radius});
   return request;
 }
 

@@ -424,7 +424,7 @@ void read_mesh(ReadContext& ctx, const TableView& root, Scenario& s) {
     extent = std::max(box.width(), box.height());
   }
   static const toml::table empty;
-  const TableView m(ctx, t ? *t : empty, "mesh", {"size", "fracture_size", "refine_distance", "file"});
+  const TableView m(ctx, t ? *t : empty, "mesh", {"size", "fracture_size", "refine_distance", "file", "refine"});
   mesh.size = m.number_or("size", extent / 40.0);
   // Derived defaults follow a valid size only, so that one bad value gives one error.
   const double base = mesh.size > 0.0 ? mesh.size : extent / 40.0;
@@ -435,6 +435,25 @@ void read_mesh(ReadContext& ctx, const TableView& root, Scenario& s) {
   if (mesh.size > 0.0)
     m.require("fracture_size", mesh.fracture_size <= mesh.size, "must be <= mesh.size");
   m.require("refine_distance", mesh.refine_distance > 0.0, "must be > 0");
+  for (const toml::table* rt : m.tables("refine")) {
+    const TableView r(ctx, *rt, "mesh.refine", {"point", "size", "radius"});
+    MeshRefinePoint refine;
+    refine.line = r.line();
+    const auto point = r.point("point");
+    if (!r.has("point")) ctx.error(r.line(), "mesh.refine.point", "required key is missing");
+    refine.size = r.required_number("size");
+    // By default the size grows by a fifth of the distance from the point: the triangle that
+    // holds a point is about as large as the size at its corners, s / (1 − growth) across.
+    constexpr double kGrowth = 0.2;
+    refine.radius = r.number_or("radius", (base - refine.size) / kGrowth);
+    r.require("size", refine.size > 0.0, "must be > 0");
+    if (mesh.size > 0.0) r.require("size", refine.size <= mesh.size, "must be <= mesh.size");
+    if (r.has("radius")) r.require("radius", refine.radius > 0.0, "must be > 0");
+    if (point) {
+      refine.point = *point;
+      mesh.refine_points.push_back(refine);
+    }
+  }
   if (auto file = m.string("file")) {
     std::filesystem::path path(*file);
     if (path.is_relative()) path = s.file.parent_path() / path;

@@ -203,10 +203,20 @@ struct FlowDefinition {
   std::vector<FlowRegion> regions;
 };
 
+// A point the mesh is refined around ([[mesh.refine]]): elements of `size` there, growing
+// linearly to mesh.size at `radius` (by default by a fifth of the distance).
+struct MeshRefinePoint {
+  Point point;
+  double size = 0.0;    // m
+  double radius = 0.0;  // m
+  int line = 0;
+};
+
 struct MeshDefinition {
   double size = 0.0;              // m
   double fracture_size = 0.0;     // m
   double refine_distance = 0.0;   // m
+  std::vector<MeshRefinePoint> refine_points;
   std::optional<std::filesystem::path> file;  // resolved against the scenario's folder
   int file_line = 0;                          // line of mesh.file, for messages about it
 };

@@ -136,6 +136,43 @@ TEST(GenerateMesh, RefinedSizeIsTheThresholdRamp) {
   EXPECT_DOUBLE_EQ(refined_size(r, 5.0), 0.1);
 }
 
+// A refinement point ([[mesh.refine]]) with the reader's default growth, a fifth of the
+// distance: the triangles whose centroid is within 0.002 of it have a longest edge within
+// [0.5, 2] × its size (0.002; Gmsh's sizes are targets, and a triangle's corners lie where the
+// size has grown), and the size it asks for is s + d (size − s) / radius at distance d, the
+// least of the point's and the lines' where both refine.
+TEST(GenerateMesh, RefinesAroundPoints) {
+  MeshRequest request;
+  request.domain = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  request.size = 0.1;
+  request.refine_distance = 0.2;
+  request.refinement_points = {{{0.3, 0.4}, 0.002, (0.1 - 0.002) / 0.2}};
+  const TriangleMesh m = generate_mesh(request);
+  int near_count = 0;
+  double far_shortest = 1.0;
+  for (int t = 0; t < m.triangle_count(); ++t) {
+    const auto& tri = m.triangles[t];
+    double longest = 0.0;
+    for (int k = 0; k < 3; ++k) longest = std::max(longest, geometry::distance(m.nodes[tri[k]], m.nodes[tri[(k + 1) % 3]]));
+    const double d = geometry::distance(triangle_centroid(m, t), {0.3, 0.4});
+    if (d < 0.002) {
+      ++near_count;
+      EXPECT_LE(longest, 2.0 * 0.002) << d;
+      EXPECT_GE(longest, 0.5 * 0.002) << d;
+    }
+    if (d > 0.6) far_shortest = std::min(far_shortest, longest);
+  }
+  EXPECT_GT(near_count, 3);
+  EXPECT_GT(far_shortest, 0.05);  // beyond the radius, at its size
+  EXPECT_DOUBLE_EQ(refined_size(request, INFINITY, {0.3, 0.4}), 0.002);
+  EXPECT_NEAR(refined_size(request, INFINITY, {0.4, 0.4}), 0.002 + 0.2 * 0.1, 1e-15);
+  EXPECT_DOUBLE_EQ(refined_size(request, INFINITY, {0.3, 1.0}), 0.1);
+  request.fracture_size = 0.01;
+  request.refinement_lines = {{{0.0, 0.5}, {1.0, 0.5}}};
+  EXPECT_DOUBLE_EQ(refined_size(request, 0.0, {0.3, 0.5}), 0.01);     // the line is finer there
+  EXPECT_DOUBLE_EQ(refined_size(request, 0.1, {0.3, 0.4}), 0.002);    // the point is finer there
+}
+
 TEST(GenerateMesh, RejectsBadInput) {
   MeshRequest r;
   r.domain = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};  // a bow tie

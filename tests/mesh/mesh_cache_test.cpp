@@ -52,7 +52,7 @@ TEST(MeshCache, KeyHoldsEveryFieldThatShapesTheMesh) {
   const MeshRequest base = fractured_square();
   const std::string key = canonical_request_text(base);
   EXPECT_EQ(canonical_request_text(fractured_square()), key);
-  std::vector<MeshRequest> changed(8, base);
+  std::vector<MeshRequest> changed(10, base);
   changed[0].size = std::nextafter(base.size, 1.0);
   changed[1].fracture_size = 0.03;
   changed[2].refine_distance = 0.2;
@@ -61,7 +61,10 @@ TEST(MeshCache, KeyHoldsEveryFieldThatShapesTheMesh) {
   changed[5].regions[0].polygon[2].y = 0.65;
   changed[6].domain[2].x = 1.1;
   changed[7].algorithm = 6;
+  changed[8].refinement_points = {{{0.5, 0.5}, 0.001, 0.1}};
+  changed[9].refinement_points = {{{0.5, 0.5}, 0.001, std::nextafter(0.1, 1.0)}};
   for (std::size_t i = 0; i < changed.size(); ++i) EXPECT_NE(canonical_request_text(changed[i]), key) << i;
+  EXPECT_NE(canonical_request_text(changed[8]), canonical_request_text(changed[9]));  // a point's radius too
   MeshRequest verbose = base;
   verbose.verbose = true;  // only what Gmsh prints
   EXPECT_EQ(canonical_request_text(verbose), key);

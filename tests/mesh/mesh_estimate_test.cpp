@@ -39,15 +39,30 @@ TEST(MeshEstimate, LShapeCountsOnlyItsArea) {
   EXPECT_NEAR(estimate_triangle_count(request).total() / estimate_triangle_count(box).total(), 0.75, 0.02);
 }
 
-TEST(MeshEstimate, OneRefinedFracture) {
+// A 2 m × 1 m domain with one fracture refined to 5 mm.
+MeshRequest one_refined_fracture() {
   MeshRequest request;
   request.domain = {{0, 0}, {2, 0}, {2, 1}, {0, 1}};
   request.size = 0.1;
   request.fracture_size = 0.005;
   request.refine_distance = 0.2;
   request.refinement_lines = {{{0.1, 0.3}, {1.9, 0.7}}};
+  return request;
+}
+
+TEST(MeshEstimate, OneRefinedFracture) {
+  const MeshRequest request = one_refined_fracture();
   const TriangleEstimate estimate = estimate_triangle_count(request);
   EXPECT_GT(estimate.near_lines, estimate.elsewhere);  // the band holds most of them
+  expect_estimate_within_factor(request);
+}
+
+// Refinement points around a fracture's wedge tips, on top of its refined band, growing by a
+// fifth of the distance (the reader's default).
+TEST(MeshEstimate, RefinementPoints) {
+  MeshRequest request = one_refined_fracture();
+  request.refinement_points = {{{0.5, 0.6}, 0.0002, (0.1 - 0.0002) / 0.2}, {{1.5, 0.3}, 0.0005, (0.1 - 0.0005) / 0.2}};
+  EXPECT_GT(estimate_triangle_count(request).near_points, 0.0);
   expect_estimate_within_factor(request);
 }
 

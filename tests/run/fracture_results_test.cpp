@@ -214,12 +214,18 @@ TEST(FractureResults, FlowZonesAreTheNearestProjectingFace) {
   EXPECT_GT(in_a_zone, mesh.triangle_count() * 9 / 10);
 }
 
-// The wedge tip a fracture size does not resolve: fracture 3 closes at α = 2e-3 (s* =
-// √(12 k_m/α³) = 1.22 mm with k_m = 1e-15 m²; α s* = 2.4 µm), fracture 5 at 5e-4 (s* = 9.8 mm;
-// α s* = 4.9 µm). Elements of 2 mm leave fracture 3's tip unresolved (more than s*/2) and the
-// message names it, its s* and s*/4; elements of 0.5 mm resolve both. A joint whose hydraulic
-// aperture at zero opening (3 µm) exceeds α s* has no sharp tip: fracture 3 is then left out,
-// and at 6 mm (more than fracture 5's s*/2) fracture 5 is named.
+// A square of side h centred on c, cut into two triangles: each one's longest edge is h √2.
+hydrodda::mesh::TriangleMesh square_mesh(Point c, double h) {
+  hydrodda::mesh::TriangleMesh mesh;
+  mesh.nodes = {{c.x - h / 2, c.y - h / 2}, {c.x + h / 2, c.y - h / 2}, {c.x + h / 2, c.y + h / 2}, {c.x - h / 2, c.y + h / 2}};
+  mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+  return mesh;
+}
+
+// The tips a mesh does not resolve: s* = sqrt(12 k_m / α³) (1.22 mm for α = 2e-3 and k_m =
+// 1e-15 m²) against the longest edge of the element holding the tip, with the advice that
+// fits where the tip lies: on its trace a smaller mesh.fracture_size; carried off it, a mesh
+// refined around the tip; in a mesh file, a refinement of the file.
 TEST(FractureResults, AWedgeTipTheMeshDoesNotResolveIsNamed) {
   run::FractureState state;
   run::FractureResult sharp, blunt, none;
@@ -228,29 +234,88 @@ TEST(FractureResults, AWedgeTipTheMeshDoesNotResolveIsNamed) {
   sharp.tip = {1.5, 0.25};
   blunt.id = 5;
   blunt.tip_opening_angle = 5e-4;
+  blunt.tip = {1.5, 0.25};
   none.id = 7;
   state.fractures = {none, blunt, sharp};
-  const double k_m = 1e-15;
+  const double k_m = 1e-15, s_star = std::sqrt(12.0 * k_m / 8e-9);
+  std::vector<geometry::FractureTrace> traces(8);
+  traces[3].segment = {{1.5, 0.0}, {1.5, 1.0}};     // the tip on its trace
+  traces[5].segment = {{1.498, 0.0}, {1.498, 1.0}};  // 2 mm from it
   const hydrodda::hydro::JointApertureLaw bare;
-  const auto message = run::describe_unresolved_wedge_tip(state, k_m, bare, 2e-3);
+  hydrodda::scenario::MeshDefinition settings;
+  settings.size = 0.15;
+  settings.fracture_size = 1e-4;
+  settings.refine_distance = 0.2;
+
+  // Elements of 2 mm across: the sharp tip (s* = 1.22 mm) is the least resolved.
+  const hydrodda::mesh::TriangleMesh coarse = square_mesh(sharp.tip, 2e-3 / std::sqrt(2.0));
+  const hydrodda::mesh::PointLocator coarse_locator(coarse);
+  const auto elements = run::find_wedge_tip_elements(state, k_m, bare, coarse, coarse_locator, traces);
+  ASSERT_EQ(elements.size(), 2u);
+  const run::WedgeTipElement* least = &elements.front();
+  EXPECT_EQ(least->tip.fracture, 3);
+  EXPECT_EQ(elements.back().tip.fracture, 5);  // s* = 9.8 mm: resolved
+  EXPECT_NEAR(least->element_size, 2e-3, 1e-15);
+  EXPECT_NEAR(least->tip.length, s_star, 1e-15);
+  EXPECT_EQ(least->trace_distance, 0.0);
+  const auto message = run::describe_unresolved_wedge_tips(elements, settings);
   ASSERT_TRUE(message.has_value());
   EXPECT_NE(message->find("fracture 3 opens as a wedge from (1.5, 0.25) at an angle of 0.002"), std::string::npos)
       << *message;
-  EXPECT_NE(message->find("s* = sqrt(12 k_m / angle^3) = 0.00122 m"), std::string::npos) << *message;
-  EXPECT_NE(message->find("mesh.fracture_size = 0.00031 m (s*/4)"), std::string::npos) << *message;
-  EXPECT_FALSE(run::describe_unresolved_wedge_tip(state, k_m, bare, 0.5e-3).has_value());
+  EXPECT_NE(message->find("s* = sqrt(12 k_m / angle^3) = 0.00122 m, and the fluid element there is 0.002 m across"),
+            std::string::npos) << *message;
+  EXPECT_NE(message->find("give mesh.fracture_size = 0.00031 m (s*/4), or refine around the tip (size s*/4): "
+                          "[[mesh.refine]] point = [1.5, 0.25], size = 0.00031"),
+            std::string::npos) << *message;
+
+  // Carried 2 mm off its trace (the blunt tip, s* = 9.8 mm, in elements of 14 mm): a finer
+  // fracture_size would refine the trace, not the tip.
+  const hydrodda::mesh::TriangleMesh wide = square_mesh(sharp.tip, 14e-3 / std::sqrt(2.0));
+  const hydrodda::mesh::PointLocator wide_locator(wide);
+  run::FractureState blunt_only;
+  blunt_only.fractures = {blunt};
+  const auto carried =
+      run::find_wedge_tip_element(*run::find_sharpest_wedge_tip(blunt_only, k_m, bare), wide, wide_locator, traces);
+  ASSERT_TRUE(carried.has_value());
+  EXPECT_NEAR(carried->trace_distance, 2e-3, 1e-12);
+  const auto off_trace = run::describe_unresolved_wedge_tips({&*carried, 1}, settings);
+  ASSERT_TRUE(off_trace.has_value());
+  EXPECT_NE(off_trace->find("carried the tip 0.002 m from the fracture's trace"), std::string::npos) << *off_trace;
+  EXPECT_NE(off_trace->find("so a smaller one does not reach it: refine around the tip (size s*/4): [[mesh.refine]] "
+                            "point = [1.5, 0.25], size = 0.0024"),
+            std::string::npos) << *off_trace;
+  EXPECT_EQ(off_trace->find("give mesh.fracture_size"), std::string::npos) << *off_trace;
+  hydrodda::scenario::MeshDefinition from_file = settings;
+  from_file.file = "seal.msh";
+  EXPECT_NE(run::describe_unresolved_wedge_tips({&*carried, 1}, from_file)->find("refine the mesh file to"),
+            std::string::npos);
+  // Two unresolved tips: a table for each.
+  const std::vector<run::WedgeTipElement> both = run::find_wedge_tip_elements(state, k_m, bare, wide, wide_locator, traces);
+  ASSERT_EQ(both.size(), 2u);
+  EXPECT_NE(run::describe_unresolved_wedge_tips(both, settings)->find("refine around the 2 unresolved tips"),
+            std::string::npos);
+
+  // Elements under s*/2 resolve the tip; a tip outside the mesh is not judged.
+  const hydrodda::mesh::TriangleMesh fine = square_mesh(sharp.tip, 0.5e-3 / std::sqrt(2.0));
+  const hydrodda::mesh::PointLocator fine_locator(fine);
+  const auto resolved = run::find_wedge_tip_elements(state, k_m, bare, fine, fine_locator, traces);
+  ASSERT_EQ(resolved.size(), 2u);
+  EXPECT_FALSE(run::describe_unresolved_wedge_tips(resolved, settings).has_value());
+  const hydrodda::mesh::TriangleMesh elsewhere = square_mesh({5.0, 5.0}, 1.0);
+  const hydrodda::mesh::PointLocator elsewhere_locator(elsewhere);
+  EXPECT_TRUE(run::find_wedge_tip_elements(state, k_m, bare, elsewhere, elsewhere_locator, traces).empty());
+
+  // A joint whose aperture at zero opening is the wedge's at s* has no sharp tip.
   hydrodda::hydro::JointApertureLaw residual;
   residual.residual_aperture = 3e-6;
-  EXPECT_FALSE(run::describe_unresolved_wedge_tip(state, k_m, residual, 2e-3).has_value());
-  const auto blunt_message = run::describe_unresolved_wedge_tip(state, k_m, residual, 6e-3);
-  ASSERT_TRUE(blunt_message.has_value());
-  EXPECT_NE(blunt_message->find("fracture 5 opens"), std::string::npos) << *blunt_message;
-  EXPECT_NE(run::describe_unresolved_wedge_tip(state, k_m, bare, 6e-3)->find("fracture 3 opens"), std::string::npos);
+  const auto residual_elements = run::find_wedge_tip_elements(state, k_m, residual, coarse, coarse_locator, traces);
+  ASSERT_EQ(residual_elements.size(), 1u);
+  EXPECT_EQ(residual_elements.front().tip.fracture, 5);
   // The tip itself (summary.json's tip_length): the sharpest, or none without a sharp one.
   const auto tip = run::find_sharpest_wedge_tip(state, k_m, bare);
   ASSERT_TRUE(tip.has_value());
   EXPECT_EQ(tip->fracture, 3);
-  EXPECT_NEAR(tip->length, std::sqrt(12.0 * k_m / 8e-9), 1e-15);
+  EXPECT_NEAR(tip->length, s_star, 1e-15);
   EXPECT_EQ(tip->point.y, 0.25);
   EXPECT_EQ(run::find_sharpest_wedge_tip(state, k_m, residual)->fracture, 5);
   run::FractureState without_tips;

@@ -299,6 +299,42 @@ TEST(ScenarioReader, SettlingPassesAreForStaticAnalysis) {
   EXPECT_EQ(errors[0].line, 12);
 }
 
+// [[mesh.refine]]: a point, a size (at most mesh.size) and a radius (by default where a size
+// growing by a fifth of the distance reaches mesh.size); each bad value is an error naming its
+// line and key.
+TEST(ScenarioReader, MeshRefinePointsAreReadAndChecked) {
+  const std::string mesh = "[mesh]\nsize = 0.1\nrefine_distance = 0.3\n";
+  const std::string good = "[[mesh.refine]]\npoint = [0.5, 0.25]\nsize = 0.001\n"
+                           "[[mesh.refine]]\npoint = [0.2, 0.7]\nsize = 0.002\nradius = 0.05\n";
+  const std::string bad = "[[mesh.refine]]\nsize = 0.001\n"                          // line 21: no point
+                          "[[mesh.refine]]\npoint = [0.5, 0.5]\nsize = 0.2\n"       // 23–25: above mesh.size
+                          "[[mesh.refine]]\npoint = [0.5, 0.5]\nsize = 0.001\nradius = -1.0\n";  // 26–29
+  const auto refine_errors = [](const std::vector<Diagnostic>& errors) {
+    std::vector<std::string> found;
+    for (const Diagnostic& e : errors)
+      if (e.key.rfind("mesh.refine", 0) == 0) found.push_back(e.format());
+    return found;
+  };
+  const std::string header = kOneFreeBlock + "steps = 1\nanalysis = \"dynamic\"\n" + mesh;  // [mesh] on line 10
+  EXPECT_TRUE(refine_errors(errors_of(header + good)).empty());
+  const std::vector<std::string> found = refine_errors(errors_of(header + good + bad));
+  ASSERT_EQ(found.size(), 3u);
+  EXPECT_EQ(found[0], "case.toml:21: mesh.refine.point: required key is missing");
+  EXPECT_EQ(found[1], "case.toml:25: mesh.refine.size: must be <= mesh.size");
+  EXPECT_EQ(found[2], "case.toml:29: mesh.refine.radius: must be > 0");
+  try {
+    const Scenario scenario = parse_scenario(header + good, "case.toml");
+    ASSERT_TRUE(scenario.mesh);
+    ASSERT_EQ(scenario.mesh->refine_points.size(), 2u);
+    EXPECT_EQ(scenario.mesh->refine_points[0].point, (Point{0.5, 0.25}));
+    EXPECT_DOUBLE_EQ(scenario.mesh->refine_points[0].radius, (0.1 - 0.001) / 0.2);  // grows by a fifth
+    EXPECT_DOUBLE_EQ(scenario.mesh->refine_points[1].size, 0.002);
+    EXPECT_DOUBLE_EQ(scenario.mesh->refine_points[1].radius, 0.05);
+  } catch (const ScenarioError& e) {
+    ADD_FAILURE() << e.diagnostics().front().format();
+  }
+}
+
 TEST(NearestKey, SuggestsTyposOnly) {
   const std::vector<std::string> keys{"density", "young", "poisson", "matrix_porosity"};
   EXPECT_EQ(suggest_nearest("poison", keys), "poisson");

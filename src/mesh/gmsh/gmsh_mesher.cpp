@@ -545,14 +545,15 @@ TriangleMesh generate_mesh_with_gmsh(const MeshRequest& request) {
     gmsh::option::setNumber("Mesh.MeshSizeMax", request.size);
     gmsh::option::setNumber("Mesh.Smoothing", request.smoothing >= 0 ? request.smoothing : tiled ? 0 : 1);
     gmsh::option::setNumber("General.NumThreads", request.threads);
-    if (!request.refinement_lines.empty()) {
+    if (!request.refinement_lines.empty() || !request.refinement_points.empty()) {
       // Gmsh's Distance + Threshold fields, evaluated with the exact distance to the lines
       // (a Distance field would sample them; its sample nodes would also join the mesh),
-      // through an index of the lines: only those within refine_distance set the size.
+      // through an index of the lines: only those within refine_distance set the size. The
+      // refinement points are few and are measured directly.
       const auto lines = std::make_shared<const LineDistance>(request.refinement_lines, request.refine_distance);
       gmsh::model::mesh::setSizeCallback(
           [lines, request](int, int, double x, double y, double) {
-            return refined_size(request, lines->nearest({x, y}));
+            return refined_size(request, lines->nearest({x, y}), {x, y});
           });
     }
     if (!two_processes) gmsh::model::mesh::generate(2);
