@@ -51,6 +51,17 @@ BoundaryGaps::BoundaryGaps(std::shared_ptr<const ElementIndex> elements, const g
       else if ((after + 1) % n == before) corners_.push_back({b, v, before, after, domain[before]});
     }
   }
+  // Mouths: a boundary face ending where a face of another block on the same side starts.
+  for (const BoundaryFace& before : faces_) {
+    const geometry::Polygon& pb = blocks_as_built[before.block];
+    const Point start = pb[before.vertex], end = pb[(before.vertex + 1) % pb.size()];
+    for (const BoundaryFace& after : faces_) {
+      if (after.block == before.block || after.side != before.side) continue;
+      if (geometry::distance(blocks_as_built[after.block][after.vertex], end) > tolerance) continue;
+      mouths_.push_back({before.block, (before.vertex + 1) % static_cast<int>(pb.size()), after.block, after.vertex,
+                         before.side, (end - start) / geometry::norm(end - start)});
+    }
+  }
 }
 
 std::vector<geometry::Polygon> BoundaryGaps::find_gaps(std::span<const geometry::Polygon> blocks) const {
@@ -73,6 +84,14 @@ std::vector<geometry::Polygon> BoundaryGaps::find_gaps(std::span<const geometry:
     const double d_after = geometry::dot(v - after.a, after.inward);
     if (d_before <= 0.0 || d_after <= 0.0) continue;
     gaps.push_back({v, v - d_before * before.inward, c.corner, v - d_after * after.inward});
+  }
+  for (const Mouth& m : mouths_) {
+    const Point p = blocks[m.block_before][m.vertex_before], q = blocks[m.block_after][m.vertex_after];
+    const Side& side = sides_[m.side];
+    const double dp = geometry::dot(p - side.a, side.inward), dq = geometry::dot(q - side.a, side.inward);
+    // Ends that overlap along the side leave no sliver: their strips meet or cross.
+    if (dp <= 0.0 || dq <= 0.0 || geometry::dot(q - p, m.along) <= 0.0) continue;
+    gaps.push_back({p, q, q - dq * side.inward, p - dp * side.inward});
   }
   return gaps;
 }

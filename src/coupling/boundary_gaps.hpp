@@ -7,6 +7,11 @@
 //   gap(a′, b′) = quadrilateral a′, b′, b′ − d_b n, a′ − d_a n   (d = (x − p)·n, n inward),
 // (only its part inside the domain: a face crossing the boundary is cut where d = 0), and at a
 // block corner that lay on a domain corner the rectangle between the corner and the vertex,
+// and, below the mouth of a joint that was closed where it met the boundary (two boundary
+// faces of different blocks whose ends met there as built), the quadrilateral between the two
+// ends as they are now and the boundary, p′, q′, q′ − d_q n, p′ − d_p n, when the ends have
+// moved apart along it (a layer lifted off its base opens such a mouth: without it the sliver
+// between the two strips would read as a fracture as tall as the lift),
 // is taken out of the open area of the elements it covers (exclude_boundary_gaps). What the
 // strip then is:
 //   - along a head or pressure boundary it belongs to that boundary's reservoir: its fluid is
@@ -72,12 +77,21 @@ class BoundaryGaps {
     Point a, b;
     Point inward;  // unit normal into the domain
   };
+  // The mouth of a joint closed as built: the end of face `before` met the start of face
+  // `after` (of another block) on one side; `along` is the faces' direction as built.
+  struct Mouth {
+    int block_before, vertex_before;  // the end of the face before
+    int block_after, vertex_after;    // the start of the face after
+    int side;
+    Point along;
+  };
 
   std::shared_ptr<const ElementIndex> elements_;
   geometry::Polygon domain_;
   std::vector<Side> sides_;
   std::vector<BoundaryFace> faces_;
   std::vector<Corner> corners_;
+  std::vector<Mouth> mouths_;
 };
 
 // Takes the gap area out of each element's open area (never below 0) and recomputes its

@@ -79,6 +79,31 @@ TEST(BoundaryGaps, AFractureKeepsItsOpenAreaWhereItMeetsTheBoundary) {
   EXPECT_EQ(gaps.find_excursion(now).blocks_outside, 2);  // their tops are 0.01 above the domain
 }
 
+// Two blocks touching across x = 1 as built (a closed joint meeting the base), lifted by 0.01
+// and moved 0.001 apart each way: the base strips (0.999 × 0.01 each) and the mouth between
+// the two lifted corners (0.002 × 0.01) are all gap, 2 × 0.01 in all, and the joint keeps
+// only its opening above the corners, 0.002 × 0.99. Without the mouth the 0.002 × 0.01 sliver
+// below the corners read as joint, with the lift (0.01) as its local aperture.
+TEST(BoundaryGaps, TheMouthOfAClosedJointLiftedOffTheBaseIsGap) {
+  const mesh::TriangleMesh mesh = testing::make_rectangle_mesh(0, 0, 2, 1, 12, 7);
+  const Polygon domain{{0, 0}, {2, 0}, {2, 1}, {0, 1}};
+  const std::vector<Polygon> built{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{1, 0}, {2, 0}, {2, 1}, {1, 1}}};
+  const BoundaryGaps gaps(mesh.nodes, mesh.triangles, domain, built);
+  const std::vector<Polygon> now{moved(built[0], {-0.001, 0.01}), moved(built[1], {0.001, 0.01})};
+  const std::vector<double> gap = gaps.compute_gap_areas(now);
+  EXPECT_NEAR(sum(gap), 2 * 0.01, 1e-12);
+  const PorosityMapper mapper(mesh.nodes, mesh.triangles);
+  PorosityField field = mapper.compute(now, 0.0);
+  EXPECT_NEAR(sum(field.fracture_area), 2.0 - 2 * 0.999 * 0.99, 1e-12);
+  exclude_boundary_gaps(field, gap, mapper.element_areas(), 0.0);
+  EXPECT_NEAR(sum(field.fracture_area), 0.002 * 0.99, 1e-12);
+  // Corners that close on each other leave no mouth, only the strips: the base strips 1 × 0.01
+  // (overlapping by 0.002 × 0.01 under the corners), the corner rectangles 0.001 × 0.01 and
+  // the side strips 0.001 × 0.99 of the blocks moved off the left and right sides.
+  const std::vector<Polygon> pressed{moved(built[0], {0.001, 0.01}), moved(built[1], {-0.001, 0.01})};
+  EXPECT_NEAR(sum(gaps.compute_gap_areas(pressed)), 2 * (0.01 + 0.001 * 0.01 + 0.001 * 0.99), 1e-12);
+}
+
 TEST(BoundaryGaps, ABlockPushedOutsideLeavesNoGapAndReportsHowFar) {
   // Moved 0.03 to the left: its left face lies outside (no gap), the right strip 0.03 wide is
   // the gap, and the block reaches 0.03 outside.
