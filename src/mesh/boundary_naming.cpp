@@ -58,7 +58,7 @@ double refined_size(const MeshRequest& request, double distance) {
 }
 
 double refined_size(const MeshRequest& request, double line_distance, Point p) {
-  double size = request.refinement_lines.empty() ? request.size : refined_size(request, line_distance);
+  double size = refined_size(request, line_distance);  // `size` where no line is within reach
   for (const RefinePoint& r : request.refinement_points) {
     const double d = geometry::distance(p, r.point);
     if (d < r.radius) size = std::min(size, r.size + d / r.radius * (request.size - r.size));

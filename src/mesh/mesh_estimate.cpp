@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 namespace hydrodda::mesh {
@@ -103,8 +104,8 @@ TriangleEstimate estimate_triangle_count(const MeshRequest& r) {
   for (const RefinePoint& p : r.refinement_points) {
     if (!(p.size > 0.0 && p.size < r.size && p.radius > 0.0)) continue;
     const double g = (r.size - p.size) / p.radius;
-    estimate.near_points += kTrianglesPerSquareSize * (2.0 * M_PI / (g * g) * (std::log(r.size / p.size) + p.size / r.size - 1.0) -
-                                                       M_PI * p.radius * p.radius / (r.size * r.size));
+    estimate.near_points += kTrianglesPerSquareSize * (2.0 * std::numbers::pi / (g * g) * (std::log(r.size / p.size) + p.size / r.size - 1.0) -
+                                                       std::numbers::pi * p.radius * p.radius / (r.size * r.size));
   }
   return estimate;
 }

@@ -438,7 +438,6 @@ void read_mesh(ReadContext& ctx, const TableView& root, Scenario& s) {
   for (const toml::table* rt : m.tables("refine")) {
     const TableView r(ctx, *rt, "mesh.refine", {"point", "size", "radius"});
     MeshRefinePoint refine;
-    refine.line = r.line();
     const auto point = r.point("point");
     if (!r.has("point")) ctx.error(r.line(), "mesh.refine.point", "required key is missing");
     refine.size = r.required_number("size");

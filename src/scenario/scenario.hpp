@@ -209,7 +209,6 @@ struct MeshRefinePoint {
   Point point;
   double size = 0.0;    // m
   double radius = 0.0;  // m
-  int line = 0;
 };
 
 struct MeshDefinition {
