@@ -31,6 +31,10 @@ struct RunCheckpoint {
   std::vector<std::vector<std::string>> history;  // history.csv rows so far, header excluded
   std::vector<std::vector<std::string>> measure;  // measure.csv rows so far, header excluded
   std::vector<int> written_iterations;            // iterations whose ParaView files exist
+  // The wedge tips the run has refined the mesh around (mesh.refine_tips), five numbers each:
+  // x, y, size, radius and the round that found them; a resumed run meshes with them before it
+  // takes up the engines' states.
+  std::vector<double> refined_tips;
   dda::SystemState mechanics;
   coupling::LoopState coupling;
 };

@@ -35,6 +35,12 @@ py::object summary_dict(const output::RunSummary& summary) {
 class Simulation {
  public:
   explicit Simulation(const PythonScenario& scenario) : scenario_(scenario) {
+    // Meshing again around the wedge tips is the run's (run_coupled): a model stepped by hand
+    // keeps the mesh it was built on.
+    if (scenario.definition.mesh && scenario.definition.mesh->refine_tips)
+      throw py::value_error(
+          "mesh.refine_tips = true: a Simulation keeps the mesh it is built on; hydrodda.run() meshes again around "
+          "the wedge tips (or set it false to step the model by hand)");
     py::gil_scoped_release released;
     switch (run::kind_of(scenario.definition)) {
       case run::RunKind::flow: model_ = std::make_unique<run::FlowModel>(scenario.definition); break;

@@ -17,8 +17,11 @@ namespace {
 using Clock = std::chrono::steady_clock;
 }  // namespace
 
-CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::optional<std::filesystem::path>& mesh_cache)
+CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::optional<std::filesystem::path>& mesh_cache,
+                           std::span<const scenario::MeshRefinePoint> added_refinement)
     : scenario_(scenario) {
+  std::vector<scenario::MeshRefinePoint>& refine = scenario_.mesh->refine_points;
+  refine.insert(refine.end(), added_refinement.begin(), added_refinement.end());
   const scenario::Scenario& s = scenario_;
   const auto start = Clock::now();
   mesh_ = build_mesh(s, mesh_cache);

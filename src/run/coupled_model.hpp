@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -32,8 +33,11 @@ class CoupledModel {
   // unfractured case once (the reference of the regions' normalised conductivity). Throws
   // scenario::ScenarioError for what only building shows.
   // `mesh_cache`: a folder of meshes shared with other runs (build_mesh).
+  // `added_refinement`: [[mesh.refine]] points to mesh with besides the scenario's own (the
+  // wedge tips of mesh.refine_tips); the model's scenario() holds them all.
   explicit CoupledModel(const scenario::Scenario& scenario,
-                        const std::optional<std::filesystem::path>& mesh_cache = std::nullopt);
+                        const std::optional<std::filesystem::path>& mesh_cache = std::nullopt,
+                        std::span<const scenario::MeshRefinePoint> added_refinement = {});
   // The loop keeps references to the mesh and the system: the model stays where it was built.
   CoupledModel(const CoupledModel&) = delete;
   CoupledModel& operator=(const CoupledModel&) = delete;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -102,12 +103,76 @@ std::string describe_cut_steps(double shortest, double full) {
       shortest, full);
 }
 
-}  // namespace
+// The refined tips as a checkpoint holds them (RunCheckpoint::refined_tips: five numbers each)
+// and back.
+std::vector<double> write_refined_tips(const std::vector<output::RefinedTip>& tips) {
+  std::vector<double> numbers;
+  for (const output::RefinedTip& t : tips)
+    numbers.insert(numbers.end(), {t.x, t.y, t.size, t.radius, static_cast<double>(t.round)});
+  return numbers;
+}
+std::vector<output::RefinedTip> read_refined_tips(const std::vector<double>& numbers) {
+  std::vector<output::RefinedTip> tips;
+  for (std::size_t i = 0; i + 5 <= numbers.size(); i += 5)
+    tips.push_back({numbers[i], numbers[i + 1], numbers[i + 2], numbers[i + 3], static_cast<int>(numbers[i + 4])});
+  return tips;
+}
 
-output::RunSummary run_coupled(const RunContext& context) {
+// The [[mesh.refine]] points of refined tips.
+std::vector<scenario::MeshRefinePoint> refine_points(const std::vector<output::RefinedTip>& tips) {
+  std::vector<scenario::MeshRefinePoint> points;
+  for (const output::RefinedTip& t : tips) points.push_back({{t.x, t.y}, t.size, t.radius});
+  return points;
+}
+
+// The round a run with these tips refined is in: 1 on the scenario's own mesh, one more for
+// each round that added tips.
+int current_round(const std::vector<output::RefinedTip>& tips) { return tips.empty() ? 1 : tips.back().round + 1; }
+
+// A point at s*/4 of every tip the mesh does not resolve (find_wedge_tip_elements), found in
+// `round`; none when the least resolved is resolved.
+std::vector<output::RefinedTip> tips_to_refine(std::span<const WedgeTipElement> tips, double mesh_size, int round) {
+  std::vector<output::RefinedTip> added;
+  if (tips.empty() || resolves_wedge_tip(tips.front())) return added;
+  for (const WedgeTipElement& e : tips)
+    if (!resolves_wedge_tip(e)) {
+      const double size = 0.25 * e.tip.length;
+      added.push_back({e.tip.point.x, e.tip.point.y, size, scenario::default_refine_radius(mesh_size, size), round});
+    }
+  return added;
+}
+
+// Moves what a round wrote into the folder round_N/ beside it, where the next round's files
+// would otherwise mix with them: the tables and the ParaView series of the iterations it wrote.
+// Its checkpoint is removed: the next round starts from the blocks as built, not from it.
+void move_round_files(const output::RunFolder& folder, int round, const std::vector<int>& written_iterations) {
+  namespace fs = std::filesystem;
+  const fs::path into = folder.file(fmt::format("round_{}", round));
+  fs::create_directories(into);
+  std::vector<std::string> names{"history.csv", "measure.csv", "fractures.csv",
+                                 "fluid.pvd",   "blocks.pvd",  "contacts.pvd", "fractures.pvd"};
+  for (int i : written_iterations)
+    for (const char* series : {"fluid", "blocks", "contacts", "fractures"}) names.push_back(fmt::format("{}_{:04d}.vtu", series, i));
+  for (const std::string& name : names)
+    if (fs::exists(folder.file(name))) fs::rename(folder.file(name), into / name);
+  fs::remove(folder.file("checkpoint.bin"));
+}
+
+// How a round ended: with the run's summary, or with the tips to mesh again around.
+struct RoundEnd {
+  std::optional<output::RunSummary> summary;
+  std::vector<output::RefinedTip> added;
+  std::vector<int> written_iterations;
+};
+
+// One round of a coupled run: the whole run on the scenario's mesh refined around
+// `refined_tips` as well, continued from `resume` when given. With mesh.refine_tips, a round
+// that converges with wedge tips its mesh does not resolve ends there, with them.
+RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resume,
+                   const std::vector<output::RefinedTip>& refined_tips) {
   const scenario::Scenario& s = context.scenario;
   std::optional<UnstoppableStage> building(context.callbacks);
-  CoupledModel model(s, context.mesh_cache);
+  CoupledModel model(s, context.mesh_cache, refine_points(refined_tips));
   building.reset();
   model.set_stop_request(context.callbacks.stop_requested);
   const mesh::TriangleMesh& mesh = model.mesh();
@@ -133,16 +198,16 @@ output::RunSummary run_coupled(const RunContext& context) {
   ParaviewOutput paraview(context.folder, s.output.fields);
   const std::optional<FractureMeter> meter = make_fracture_meter(s);
   const hydro::JointApertureLaw joint_law = make_joint_aperture_law(s);
-  const FractureMeter::FlowZones flow_zones = meter ? meter->flow_zones(mesh) : FractureMeter::FlowZones{};
+  FractureMeter::FlowZones flow_zones = meter ? meter->flow_zones(mesh) : FractureMeter::FlowZones{};
   FractureOutput fractures(context.folder, /*with_flow=*/true);
   std::optional<FractureState> fracture_state;  // of the last finished pass
-  const TellModelAtEnd tell_model_at_end(context.callbacks, model, fracture_state);
+  TellModelAtEnd tell_model_at_end(context.callbacks, model, fracture_state);
   const auto measure_fractures = [&] {
     fracture_state = meter->measure(model.block_polygons(), system.penetration_tolerance(), system.contacts(), joint_law);
     meter->add_flow(*fracture_state, flow_zones, mesh, loop.flow());
   };
-  if (context.resume) {
-    const output::RunCheckpoint& saved = *context.resume;
+  if (resume) {
+    const output::RunCheckpoint& saved = *resume;
     model.import_state({saved.mechanics, saved.coupling});
     checkpoint.history = saved.history;
     checkpoint.measure = saved.measure;
@@ -184,6 +249,7 @@ output::RunSummary run_coupled(const RunContext& context) {
     summary.timings = model.timings();
     if (fracture_state) {
       summary.fractures = summarise_fractures(*fracture_state);
+      summary.fractures->refined_tips = refined_tips;
       const std::optional<WedgeTip> tip =
           cubic_law ? find_sharpest_wedge_tip(*fracture_state, matrix_permeability, joint_law) : std::nullopt;
       if (tip) {
@@ -199,6 +265,7 @@ output::RunSummary run_coupled(const RunContext& context) {
   // (CoupledModel::run_pass), which a resumed run continues from too.
   const auto save_checkpoint = [&] {
     checkpoint.converged = converged;
+    checkpoint.refined_tips = write_refined_tips(refined_tips);
     const CoupledState state = model.export_state();
     context.folder.write_with("checkpoint.bin", [&](output::AtomicFile& file) {
       output::write_checkpoint(file, checkpoint, state.mechanics, state.coupling);
@@ -307,10 +374,30 @@ output::RunSummary run_coupled(const RunContext& context) {
     output::RunSummary summary = current_summary();
     summary.status = "stopped";
     summary.message = fmt::format("stopped after coupling iteration {} (--stop-after)", loop.iterations());
-    return summary;
+    return {summary};
   }
   if (const std::string unreached = describe_unreached_displacement(s, system); !unreached.empty())
     throw RunFailure(RunStatus::failed, unreached, current_summary());
+  // A round that ends with wedge tips its mesh does not resolve ends there: the next meshes again
+  // around them (mesh.refine_tips), while rounds remain. So does one that did not converge: its
+  // unresolved tips may be why (the symmetric flexure's bed joint, docs/coupling.md).
+  if (meter && s.mesh->refine_tips && loop.iterations() > 0 && current_round(refined_tips) <= scenario::kRefineTipRounds) {
+    if (!fracture_state) measure_fractures();
+    const std::vector<WedgeTipElement> tips = find_wedge_tip_elements(
+        *fracture_state, matrix_permeability, joint_law, mesh, tip_locator(), meter->layout().traces);
+    std::vector<output::RefinedTip> added = tips_to_refine(tips, s.mesh->size, current_round(refined_tips));
+    if (!added.empty()) {
+      spdlog::info(
+          "round {}: {} in {} coupling iterations, and the fluid element at {} wedge tip(s) is wider than s*/2 (at "
+          "fracture {}'s tip ({:.4g}, {:.4g}), {:.2g} m against s* = {:.2g} m): running again on a mesh refined to "
+          "s*/4 around them (mesh.refine_tips; this round's files are in round_{}/)",
+          current_round(refined_tips), converged ? "converged" : "did not converge", loop.iterations(), added.size(),
+          tips.front().tip.fracture, tips.front().tip.point.x, tips.front().tip.point.y, tips.front().element_size,
+          tips.front().tip.length, current_round(refined_tips));
+      tell_model_at_end.dismiss();
+      return {std::nullopt, std::move(added), checkpoint.written_iterations};
+    }
+  }
   ConvergenceHistory convergence = read_convergence(checkpoint.history, s.coupling.tolerance);
   convergence.converged = converged;
   output::RunSummary summary = current_summary();
@@ -328,7 +415,13 @@ output::RunSummary run_coupled(const RunContext& context) {
     if (!fracture_state) measure_fractures();
     const std::vector<WedgeTipElement> tips = find_wedge_tip_elements(
         *fracture_state, matrix_permeability, joint_law, mesh, tip_locator(), meter->layout().traces);
-    if (const auto text = describe_unresolved_wedge_tips(tips, *s.mesh)) spdlog::warn("{}", *text);
+    if (const auto text = describe_unresolved_wedge_tips(tips, *s.mesh))
+      spdlog::warn("{}{}",
+                   s.mesh->refine_tips
+                       ? fmt::format("after {} round(s) of mesh.refine_tips (at most {}), ", current_round(refined_tips) - 1,
+                                     scenario::kRefineTipRounds)
+                       : "",
+                   *text);
   }
   if (!converged) {
     std::vector<double> two_passes;  // history.csv's third column from the end
@@ -354,7 +447,23 @@ output::RunSummary run_coupled(const RunContext& context) {
     draw_aperture_figure(s, context.folder, model.block_polygons(), *fracture_state,
                          {fmt::format("coupling iteration {}", loop.iterations()), converged});
   }
-  return summary;
+  return {summary};
+}
+
+}  // namespace
+
+output::RunSummary run_coupled(const RunContext& context) {
+  // A resumed run takes up the round it stopped in, on the mesh of the tips refined before it.
+  std::vector<output::RefinedTip> refined_tips;
+  if (context.resume) refined_tips = read_refined_tips(context.resume->refined_tips);
+  const output::RunCheckpoint* resume = context.resume;
+  for (;;) {
+    RoundEnd end = run_round(context, resume, refined_tips);
+    if (end.summary) return std::move(*end.summary);
+    move_round_files(context.folder, current_round(refined_tips), end.written_iterations);
+    refined_tips.insert(refined_tips.end(), end.added.begin(), end.added.end());
+    resume = nullptr;
+  }
 }
 
 }  // namespace hydrodda::run

@@ -275,7 +275,7 @@ std::vector<WedgeTipElement> find_wedge_tip_elements(const FractureState& state,
 
 std::optional<std::string> describe_unresolved_wedge_tips(std::span<const WedgeTipElement> tips,
                                                           const scenario::MeshDefinition& mesh) {
-  const auto unresolved = [](const WedgeTipElement& e) { return e.element_size > 0.5 * e.tip.length; };
+  const auto unresolved = [](const WedgeTipElement& e) { return !resolves_wedge_tip(e); };
   if (tips.empty() || !unresolved(tips.front())) return std::nullopt;
   const WedgeTipElement& worst = tips.front();
   const WedgeTip& tip = worst.tip;
@@ -298,9 +298,10 @@ std::optional<std::string> describe_unresolved_wedge_tips(std::span<const WedgeT
       ++count;
     }
   tables.pop_back();  // the last ';'
-  const std::string refine =
+  std::string refine =
       fmt::format("refine around {} (size s*/4):{}", count == 1 ? "the tip" : fmt::format("the {} unresolved tips", count),
                   tables);
+  if (!mesh.refine_tips) refine += "; or give mesh.refine_tips = true, and the run meshes again around them itself";
   if (worst.trace_distance <= mesh.fracture_size)
     return found + fmt::format("give mesh.fracture_size = {:.2g} m (s*/4), or {}", quarter, refine);
   return found + fmt::format(

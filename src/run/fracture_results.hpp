@@ -164,11 +164,15 @@ std::vector<WedgeTipElement> find_wedge_tip_elements(const FractureState& state,
                                                      const mesh::PointLocator& locator,
                                                      std::span<const geometry::FractureTrace> traces);
 
+// Whether the element at a tip resolves it: at most s*/2 across.
+inline bool resolves_wedge_tip(const WedgeTipElement& e) { return e.element_size <= 0.5 * e.tip.length; }
+
 // A message when the element at the first of `tips` (find_wedge_tip_elements) is more than s*/2
 // across: naming the fracture, its tip, α, s* and the element's size, and what resolves it under
 // `mesh` (the scenario's [mesh]): where the tip lies on its trace (within mesh.fracture_size), a
 // smaller mesh.fracture_size; else refinement around the tips, a [[mesh.refine]] table for each
-// unresolved one; in a mesh file, a refinement of the file. None when every tip is resolved.
+// unresolved one, or mesh.refine_tips (unless it is on); in a mesh file, a refinement of the
+// file. None when every tip is resolved.
 std::optional<std::string> describe_unresolved_wedge_tips(std::span<const WedgeTipElement> tips,
                                                           const scenario::MeshDefinition& mesh);
 

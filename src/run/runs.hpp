@@ -62,20 +62,22 @@ template <class Model>
 class TellModelAtEnd {
  public:
   TellModelAtEnd(const Callbacks& callbacks, const Model& model, const std::optional<FractureState>& fractures)
-      : tell_(callbacks.model_at_end), model_(model), fractures_(fractures) {}
+      : tell_(&callbacks.model_at_end), model_(model), fractures_(fractures) {}
   ~TellModelAtEnd() {
-    if (!tell_) return;
+    if (!tell_ || !*tell_) return;
     try {
-      tell_(ModelAtEnd{&model_, fractures_ ? &*fractures_ : nullptr});
+      (*tell_)(ModelAtEnd{&model_, fractures_ ? &*fractures_ : nullptr});
     } catch (...) {
       // A front end's failure to read the fields must not turn a finished run into a crash.
     }
   }
+  // Tells nothing after all: the run goes on in another model (a round of mesh.refine_tips).
+  void dismiss() { tell_ = nullptr; }
   TellModelAtEnd(const TellModelAtEnd&) = delete;
   TellModelAtEnd& operator=(const TellModelAtEnd&) = delete;
 
  private:
-  const std::function<void(const ModelAtEnd&)>& tell_;
+  const std::function<void(const ModelAtEnd&)>* tell_;
   const Model& model_;
   const std::optional<FractureState>& fractures_;
 };

@@ -424,7 +424,8 @@ void read_mesh(ReadContext& ctx, const TableView& root, Scenario& s) {
     extent = std::max(box.width(), box.height());
   }
   static const toml::table empty;
-  const TableView m(ctx, t ? *t : empty, "mesh", {"size", "fracture_size", "refine_distance", "file", "refine"});
+  const TableView m(ctx, t ? *t : empty, "mesh",
+                    {"size", "fracture_size", "refine_distance", "file", "refine", "refine_tips"});
   mesh.size = m.number_or("size", extent / 40.0);
   // Derived defaults follow a valid size only, so that one bad value gives one error.
   const double base = mesh.size > 0.0 ? mesh.size : extent / 40.0;
@@ -441,10 +442,7 @@ void read_mesh(ReadContext& ctx, const TableView& root, Scenario& s) {
     const auto point = r.point("point");
     if (!r.has("point")) ctx.error(r.line(), "mesh.refine.point", "required key is missing");
     refine.size = r.required_number("size");
-    // By default the size grows by a fifth of the distance from the point: the triangle that
-    // holds a point is about as large as the size at its corners, s / (1 − growth) across.
-    constexpr double kGrowth = 0.2;
-    refine.radius = r.number_or("radius", (base - refine.size) / kGrowth);
+    refine.radius = r.number_or("radius", default_refine_radius(base, refine.size));
     r.require("size", refine.size > 0.0, "must be > 0");
     if (mesh.size > 0.0) r.require("size", refine.size <= mesh.size, "must be <= mesh.size");
     if (r.has("radius")) r.require("radius", refine.radius > 0.0, "must be > 0");
@@ -460,6 +458,19 @@ void read_mesh(ReadContext& ctx, const TableView& root, Scenario& s) {
       ctx.error(m.line_of_key("file"), "mesh.file", fmt::format("no such file: {}", path.string()));
     mesh.file = path;
     mesh.file_line = m.line_of_key("file");
+  }
+  mesh.refine_tips = m.boolean("refine_tips").value_or(false);
+  if (mesh.refine_tips) {
+    // The tips are the cubic law's, found on the fractures of a [geometry] domain, and refined
+    // in a mesh the run generates.
+    const int line = m.line_of_key("refine_tips");
+    if (mesh.file)
+      ctx.error(line, "mesh.refine_tips", "refines a mesh the run generates; mesh.file gives one: refine the file");
+    else if (!s.flow || s.flow->permeability_law != PermeabilityLaw::Cubic)
+      ctx.error(line, "mesh.refine_tips",
+                "refines around the wedge tips of the cubic law; needs flow.permeability_law = \"cubic\"");
+    else if (!s.geometry || s.geometry->domain.empty() || !s.mechanics)
+      ctx.error(line, "mesh.refine_tips", "needs a coupled run of a [geometry] domain cut by fractures");
   }
   s.mesh = std::move(mesh);
 }

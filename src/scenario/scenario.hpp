@@ -211,11 +211,21 @@ struct MeshRefinePoint {
   double radius = 0.0;  // m
 };
 
+// The default radius of a refinement of `size` in a mesh of `mesh_size`: the size grows by a
+// fifth of the distance from the point, so that the triangle holding the point is about as
+// large as the size at its corners, s / (1 − growth) across.
+inline double default_refine_radius(double mesh_size, double size) { return (mesh_size - size) / 0.2; }
+
+inline constexpr int kRefineTipRounds = 3;
+
 struct MeshDefinition {
   double size = 0.0;              // m
   double fracture_size = 0.0;     // m
   double refine_distance = 0.0;   // m
   std::vector<MeshRefinePoint> refine_points;
+  // A cubic-law run meshes again around the wedge tips its converged state leaves unresolved,
+  // and goes on from that state (docs/coupling.md, "Wedge tips"); at most kRefineTipRounds times.
+  bool refine_tips = false;
   std::optional<std::filesystem::path> file;  // resolved against the scenario's folder
   int file_line = 0;                          // line of mesh.file, for messages about it
 };

@@ -204,3 +204,13 @@ def test_a_flow_simulation_solves_again_with_a_new_head():
     sim.solve()
     x = sim.fluid["nodes"][:, 0]
     np.testing.assert_allclose(sim.fluid["head"], 5.0 - 2.0 * x, rtol=1e-9, atol=1e-9)
+
+
+def test_a_simulation_refuses_to_refine_tips_it_cannot_mesh_again():
+    """mesh.refine_tips runs again on a refined mesh: hydrodda.run does it, a Simulation stepped
+    by hand keeps its one mesh and says so rather than ignore the key."""
+    scenario = hydrodda.Scenario.load(VERIFICATION.parent / "paper" / "symmetric_flexure_20m.toml")
+    scenario.set("flow.permeability_law", "cubic")
+    scenario.set("mesh.refine_tips", True)
+    with pytest.raises(ValueError, match="mesh.refine_tips"):
+        hydrodda.Simulation(scenario)

@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
 #include "scenario/diagnostics.hpp"
 
 namespace hydrodda::scenario {
@@ -333,6 +337,64 @@ TEST(ScenarioReader, MeshRefinePointsAreReadAndChecked) {
   } catch (const ScenarioError& e) {
     ADD_FAILURE() << e.diagnostics().front().format();
   }
+}
+
+// mesh.refine_tips: read where the run can act on it (a coupled run of a [geometry] domain,
+// the cubic law, a generated mesh), refused with the key's line elsewhere.
+TEST(ScenarioReader, RefineTipsIsReadWhereARunCanRefineTips) {
+  std::ifstream in(kSource / "scenarios/paper/symmetric_flexure_20m.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string flexure = text.str();
+  const auto edited = [&](const std::vector<std::pair<std::string, std::string>>& edits) {
+    std::string scenario = flexure;
+    for (const auto& [from, to] : edits) {
+      const auto at = scenario.find(from);
+      EXPECT_NE(at, std::string::npos) << from;
+      if (at != std::string::npos) scenario.replace(at, from.size(), to);
+    }
+    return scenario;
+  };
+  const std::pair<std::string, std::string> cubic{"permeability_law = \"kozeny-carman\"", "permeability_law = \"cubic\""};
+  const std::pair<std::string, std::string> asked{"[mesh]\n", "[mesh]\nrefine_tips = true\n"};
+  // The line of refine_tips in a scenario.
+  const auto line_of_key = [](const std::string& scenario) {
+    return 1 + static_cast<int>(std::count(scenario.begin(), scenario.begin() + static_cast<std::ptrdiff_t>(
+                                                                                  scenario.find("refine_tips")),
+                                           '\n'));
+  };
+  EXPECT_FALSE(parse_scenario(edited({cubic}), "case.toml").mesh->refine_tips);
+  EXPECT_TRUE(parse_scenario(edited({cubic, asked}), "case.toml").mesh->refine_tips);
+  const auto refine_tips_error = [&](const std::string& scenario) {
+    for (const Diagnostic& e : errors_of(scenario))
+      if (e.key == "mesh.refine_tips") return e.format();
+    return std::string("no mesh.refine_tips error");
+  };
+  const std::string kozeny_carman = edited({asked});
+  EXPECT_EQ(refine_tips_error(kozeny_carman),
+            "case.toml:" + std::to_string(line_of_key(kozeny_carman)) +
+                ": mesh.refine_tips: refines around the wedge tips of the cubic law; needs flow.permeability_law = "
+                "\"cubic\"");
+  const std::string from_file =
+      edited({cubic, {"[mesh]\n", "[mesh]\nrefine_tips = true\nfile = \"" + (kSource / "README.md").string() + "\"\n"}});
+  EXPECT_EQ(refine_tips_error(from_file),
+            "case.toml:" + std::to_string(line_of_key(from_file)) +
+                ": mesh.refine_tips: refines a mesh the run generates; mesh.file gives one: refine the file");
+  const std::string flow_only = R"([geometry]
+domain = [[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]]
+[material.rock]
+matrix_porosity = 0.2
+grain_diameter = 1e-5
+[flow]
+permeability_law = "cubic"
+[[flow.boundary]]
+name = "left"
+head = 1.0
+[mesh]
+refine_tips = true
+)";
+  EXPECT_EQ(refine_tips_error(flow_only),
+            "case.toml:12: mesh.refine_tips: needs a coupled run of a [geometry] domain cut by fractures");
 }
 
 TEST(NearestKey, SuggestsTyposOnly) {
