@@ -8,7 +8,9 @@ for "cubic" and "kozeny-carman", each case a `hydrodda sweep` case; the table gi
 flow region's normalised_conductivity and the change between the two finest sizes.
 
     python3 scripts/conductivity_mesh_table.py [--hydrodda build/bin/hydrodda] [--out out/mesh-table]
-        [--laws cubic,kozeny-carman] [scenarios/paper/six_block_lr_rl.toml ...]
+        [--laws cubic,kozeny-carman] [--set KEY=VALUE ...] [scenarios/paper/six_block_lr_rl.toml ...]
+
+--set passes a key to every case (e.g. --laws cubic --set mesh.refine_tips=true).
 
 Prints a Markdown table (the one in docs/coupling.md).
 """
@@ -48,6 +50,7 @@ def main():
     p.add_argument("--out", default="out/mesh-table")
     p.add_argument("--jobs", type=int, default=2)
     p.add_argument("--laws", default=",".join(LAWS), help="the permeability laws, comma-separated")
+    p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE", help="a key for every case")
     args = p.parse_args()
     laws = args.laws.split(",")
     scenarios = args.scenarios or sorted(glob.glob("scenarios/paper/*.toml"))
@@ -65,6 +68,7 @@ def main():
         column = f"flow.regions.{region}.normalised_conductivity"
         run([args.hydrodda, "-q", "sweep", scenario, "--set", f"mesh.fracture_size={sizes}",
              "--set", "flow.permeability_law=" + ",".join(laws), "--set", "output.figures=[]",
+             *[arg for kv in args.set for arg in ("--set", kv)],
              "--column", column, "--jobs", str(args.jobs), "-o", folder, "--overwrite"], check=False)
         # A sweep with a failed case exits 1 but still writes sweep.csv: the case is marked.
         values = {}
