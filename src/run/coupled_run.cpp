@@ -171,7 +171,12 @@ struct RoundEnd {
 RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resume,
                    const std::vector<output::RefinedTip>& refined_tips) {
   const scenario::Scenario& s = context.scenario;
-  std::optional<UnstoppableStage> building(context.callbacks);
+  // The first round (or a resumed one) may end at once while it meshes: nothing of it is
+  // written yet. A later round has earlier rounds' files to keep, and is stopped once it has
+  // meshed and written its start (below), so that it can be resumed.
+  const bool later_round = !resume && !refined_tips.empty();
+  std::optional<UnstoppableStage> building;
+  if (!later_round) building.emplace(context.callbacks);
   CoupledModel model(s, context.mesh_cache, refine_points(refined_tips));
   building.reset();
   model.set_stop_request(context.callbacks.stop_requested);
@@ -271,6 +276,9 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
       output::write_checkpoint(file, checkpoint, state.mechanics, state.coupling);
     });
   };
+  // A later round's start is a checkpoint too (the blocks as built, no pass yet): a run stopped
+  // before its first pass ends resumes on this round's mesh, not from the round before.
+  if (later_round) save_checkpoint();
   try {
     for (int k = loop.iterations(); k < s.coupling.max_iterations && !converged; ++k) {
       if (context.stop_requested())
@@ -374,7 +382,7 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
     output::RunSummary summary = current_summary();
     summary.status = "stopped";
     summary.message = fmt::format("stopped after coupling iteration {} (--stop-after)", loop.iterations());
-    return {summary};
+    return {summary, {}, {}};
   }
   if (const std::string unreached = describe_unreached_displacement(s, system); !unreached.empty())
     throw RunFailure(RunStatus::failed, unreached, current_summary());
@@ -447,7 +455,7 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
     draw_aperture_figure(s, context.folder, model.block_polygons(), *fracture_state,
                          {fmt::format("coupling iteration {}", loop.iterations()), converged});
   }
-  return {summary};
+  return {summary, {}, {}};
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include <string>
 #include <thread>
 
+#include "run_folder_compare.hpp"
 #include "run_program.hpp"
 #include "spawn_program.hpp"
 
@@ -148,6 +149,62 @@ TEST(Interrupt, SigtermAtAnyMomentOfACoupledRunEndsItCleanly) {
     }
   }
   fs::remove_all(out);
+}
+
+// SIGTERM in a later mesh round of mesh.refine_tips (the asymmetric flexure with the cubic law:
+// round 1 converges, round 2 runs on the mesh refined around its wedge tips): the run ends with
+// exit code 1 and a folder that resumes on round 2's mesh, to the folder of a run never stopped,
+// byte for byte (round_1/ too). A round 2 stopped before its first pass ends resumes from its
+// start, which the round writes as a checkpoint once it has meshed. The signal is sent at
+// fractions of the whole run's own wall time, later and later, until one lands in round 2.
+TEST(Interrupt, ARunStoppedInALaterMeshRoundResumesOnThatRoundsMesh) {
+  const fs::path flexure = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/paper/asymmetric_flexure_20mpa.toml";
+  std::string scenario = read_text(flexure);
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"permeability_law = \"kozeny-carman\"",
+                                                                     "permeability_law = \"cubic\""},
+                                 {"[mesh]\n", "[mesh]\nrefine_tips = true\n"},
+                                 {"figures = [\"png\"]", "figures = []"}}) {
+    const auto at = scenario.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    scenario.replace(at, from.size(), to);
+  }
+  const std::string tag = std::to_string(::getpid());
+  const fs::path file = fs::temp_directory_path() / ("hydrodda-rounds-" + tag + ".toml");
+  std::ofstream(file) << scenario;
+  const fs::path whole = fs::temp_directory_path() / ("hydrodda-rounds-whole-" + tag);
+  const fs::path out = fs::temp_directory_path() / ("hydrodda-rounds-" + tag);
+  fs::remove_all(whole);
+  const auto start = std::chrono::steady_clock::now();
+  const auto uninterrupted = hydrodda::testing::run_program("run -q " + file.string() + " -o " + whole.string());
+  const auto whole_time = std::chrono::steady_clock::now() - start;
+  ASSERT_EQ(uninterrupted.exit_code, 0) << uninterrupted.output;
+  ASSERT_TRUE(fs::exists(whole / "round_1"));
+  bool resumed = false;
+  for (int percent = 50; percent <= 100 && !resumed; percent += 5) {
+    SCOPED_TRACE("SIGTERM at " + std::to_string(percent) + "% of the whole run's time");
+    fs::remove_all(out);
+    const auto started = std::chrono::steady_clock::now();
+    const pid_t pid = start_run(file, out);
+    ASSERT_GE(pid, 0);
+    std::this_thread::sleep_until(started + whole_time * percent / 100);
+    ::kill(pid, SIGTERM);
+    int status = 0;
+    ASSERT_TRUE(wait_for_exit(pid, std::chrono::seconds(60), status));
+    ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
+    if (WEXITSTATUS(status) == 0 || !fs::exists(out / "round_1")) continue;  // ended, or stopped in round 1
+    ASSERT_EQ(WEXITSTATUS(status), 1);
+    EXPECT_EQ(nlohmann::json::parse(std::ifstream(out / "summary.json"))["status"], "interrupted");
+    ASSERT_TRUE(fs::exists(out / "checkpoint.bin"));
+    const auto continued = hydrodda::testing::run_program("run -q --resume " + out.string());
+    ASSERT_EQ(continued.exit_code, 0) << continued.output;
+    hydrodda::testing::expect_same_results(whole, out);
+    hydrodda::testing::expect_same_results(whole / "round_1", out / "round_1");
+    resumed = true;
+  }
+  EXPECT_TRUE(resumed) << "no signal landed in round 2";
+  fs::remove_all(whole);
+  fs::remove_all(out);
+  fs::remove(file);
 }
 
 namespace {
