@@ -21,7 +21,7 @@ constexpr std::string_view kMagic = "hydrodda checkpoint\n";
 // permeability as tensors (xx, xy, yy), joint apertures' included; 8: CRC-32 in place of FNV-1a
 // as the checksum. Only the current format is read: a run stopped by an older hydrodda is run
 // again.
-constexpr std::int64_t kVersion = 10;
+constexpr std::int64_t kVersion = 11;
 // The last 8 bytes: the CRC-32 of every byte before them (zlib's, as a 64-bit word). A CRC
 // detects every error burst of up to 32 bits, so a flipped bit is refused, not resumed from;
 // zlib computes it four times as fast as a byte-at-a-time hash on a checkpoint of tens of MB.
@@ -327,6 +327,7 @@ void put_checkpoint(Writer& w, const RunCheckpoint& c, const dda::SystemState& m
   w.put(c.measure);
   w.put(c.written_iterations);
   w.put(c.refined_tips);
+  w.put(c.recent_tips);
   write_mechanics(w, mechanics);
   w.put(coupling.iterations);
   const hydro::FlowSolution& flow = coupling.flow;
@@ -398,6 +399,7 @@ RunCheckpoint decode_checkpoint(std::string_view file) {
   r.get(c.written_iterations);
   r.get(c.refined_tips);
   if (c.refined_tips.size() % 5 != 0) r.fail();
+  r.get(c.recent_tips);
   read_mechanics(r, c.mechanics);
   r.get(c.coupling.iterations);
   visit_flow([&](auto& v) { r.get(v); }, c.coupling.flow);

@@ -35,6 +35,9 @@ struct RunCheckpoint {
   // x, y, size, radius and the round that found them; a resumed run meshes with them before it
   // takes up the engines' states.
   std::vector<double> refined_tips;
+  // The tips unresolved in the round's last passes (a round that does not converge refines them
+  // all): each pass as its iteration, its tip count, then five numbers a tip as above.
+  std::vector<double> recent_tips;
   dda::SystemState mechanics;
   coupling::LoopState coupling;
 };

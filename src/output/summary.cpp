@@ -48,6 +48,7 @@ json format_fractures(const FractureSummary& f) {
     summary["tip_length_id"] = *f.tip_length_id;
     if (f.tip_element_size) summary["tip_element_size"] = *f.tip_element_size;
   }
+  if (f.rounds) summary["rounds"] = *f.rounds;
   if (!f.refined_tips.empty()) {
     json& refined = summary["refined_tips"] = json::array();
     for (const RefinedTip& t : f.refined_tips)

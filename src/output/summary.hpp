@@ -86,6 +86,7 @@ struct FractureSummary {
   // s*/2 the mesh resolves the tip.
   std::optional<double> tip_element_size;
   std::vector<RefinedTip> refined_tips;  // in the order they were added
+  std::optional<int> rounds;             // with mesh.refine_tips: the rounds run, 1 when none refined
 };
 
 struct RunSummary {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <filesystem>
 #include <optional>
 #include <span>
@@ -19,6 +20,7 @@
 #include "run/paraview_output.hpp"
 #include "run/run_summary.hpp"
 #include "run/runs.hpp"
+#include "run/tip_refinement.hpp"
 #include "output/csv_table.hpp"
 
 namespace hydrodda::run {
@@ -101,45 +103,6 @@ std::string describe_cut_steps(double shortest, double full) {
       "look for blocks thinner than the contact distance (set by mechanics.max_displacement_ratio), or give more "
       "mechanics.steps so that the step can grow back",
       shortest, full);
-}
-
-// The refined tips as a checkpoint holds them (RunCheckpoint::refined_tips: five numbers each)
-// and back.
-std::vector<double> write_refined_tips(const std::vector<output::RefinedTip>& tips) {
-  std::vector<double> numbers;
-  for (const output::RefinedTip& t : tips)
-    numbers.insert(numbers.end(), {t.x, t.y, t.size, t.radius, static_cast<double>(t.round)});
-  return numbers;
-}
-std::vector<output::RefinedTip> read_refined_tips(const std::vector<double>& numbers) {
-  std::vector<output::RefinedTip> tips;
-  for (std::size_t i = 0; i + 5 <= numbers.size(); i += 5)
-    tips.push_back({numbers[i], numbers[i + 1], numbers[i + 2], numbers[i + 3], static_cast<int>(numbers[i + 4])});
-  return tips;
-}
-
-// The [[mesh.refine]] points of refined tips.
-std::vector<scenario::MeshRefinePoint> refine_points(const std::vector<output::RefinedTip>& tips) {
-  std::vector<scenario::MeshRefinePoint> points;
-  for (const output::RefinedTip& t : tips) points.push_back({{t.x, t.y}, t.size, t.radius});
-  return points;
-}
-
-// The round a run with these tips refined is in: 1 on the scenario's own mesh, one more for
-// each round that added tips.
-int current_round(const std::vector<output::RefinedTip>& tips) { return tips.empty() ? 1 : tips.back().round + 1; }
-
-// A point at s*/4 of every tip the mesh does not resolve (find_wedge_tip_elements), found in
-// `round`; none when the least resolved is resolved.
-std::vector<output::RefinedTip> tips_to_refine(std::span<const WedgeTipElement> tips, double mesh_size, int round) {
-  std::vector<output::RefinedTip> added;
-  if (tips.empty() || resolves_wedge_tip(tips.front())) return added;
-  for (const WedgeTipElement& e : tips)
-    if (!resolves_wedge_tip(e)) {
-      const double size = 0.25 * e.tip.length;
-      added.push_back({e.tip.point.x, e.tip.point.y, size, scenario::default_refine_radius(mesh_size, size), round});
-    }
-  return added;
 }
 
 // Moves what a round wrote into the folder round_N/ beside it, where the next round's files
@@ -249,12 +212,18 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
     if (!locator) locator.emplace(mesh);
     return *locator;
   };
+  // mesh.refine_tips: whether this round may end with tips to refine, and the unresolved tips of
+  // its last passes (in the checkpoint, so that a resumed round refines the same).
+  const bool follow_tips = meter && s.mesh->refine_tips && current_round(refined_tips) <= scenario::kRefineTipRounds;
+  std::deque<PassTips> recent;
+  if (resume) recent = read_recent_tips(resume->recent_tips);
   const auto current_summary = [&] {
     output::RunSummary summary = model.summary();
     summary.timings = model.timings();
     if (fracture_state) {
       summary.fractures = summarise_fractures(*fracture_state);
       summary.fractures->refined_tips = refined_tips;
+      if (s.mesh->refine_tips) summary.fractures->rounds = current_round(refined_tips);
       const std::optional<WedgeTip> tip =
           cubic_law ? find_sharpest_wedge_tip(*fracture_state, matrix_permeability, joint_law) : std::nullopt;
       if (tip) {
@@ -271,6 +240,7 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
   const auto save_checkpoint = [&] {
     checkpoint.converged = converged;
     checkpoint.refined_tips = write_refined_tips(refined_tips);
+    checkpoint.recent_tips = write_recent_tips(recent);
     const CoupledState state = model.export_state();
     context.folder.write_with("checkpoint.bin", [&](output::AtomicFile& file) {
       output::write_checkpoint(file, checkpoint, state.mechanics, state.coupling);
@@ -319,6 +289,12 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
       if (meter) {
         measure_fractures();
         fractures.add_rows(r.iteration, r.time, *fracture_state);
+      }
+      if (follow_tips) {
+        const std::vector<WedgeTipElement> tips = find_wedge_tip_elements(
+            *fracture_state, matrix_permeability, joint_law, mesh, tip_locator(), meter->layout().traces);
+        recent.push_back({r.iteration, tips_to_refine(tips, s.mesh->size, current_round(refined_tips))});
+        if (recent.size() > kTipPasses) recent.pop_front();
       }
       context.report(report_pass(r));
       spdlog::debug(
@@ -389,19 +365,17 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
   // A round that ends with wedge tips its mesh does not resolve ends there: the next meshes again
   // around them (mesh.refine_tips), while rounds remain. So does one that did not converge: its
   // unresolved tips may be why (the symmetric flexure's bed joint, docs/coupling.md).
-  if (meter && s.mesh->refine_tips && loop.iterations() > 0 && current_round(refined_tips) <= scenario::kRefineTipRounds) {
-    if (!fracture_state) measure_fractures();
-    const std::vector<WedgeTipElement> tips = find_wedge_tip_elements(
-        *fracture_state, matrix_permeability, joint_law, mesh, tip_locator(), meter->layout().traces);
-    std::vector<output::RefinedTip> added = tips_to_refine(tips, s.mesh->size, current_round(refined_tips));
+  if (follow_tips && loop.iterations() > 0) {
+    std::vector<output::RefinedTip> added =
+        converged ? (recent.empty() ? std::vector<output::RefinedTip>{} : recent.back().tips) : merge_tips(recent);
     if (!added.empty()) {
       spdlog::info(
-          "round {}: {} in {} coupling iterations, and the fluid element at {} wedge tip(s) is wider than s*/2 (at "
-          "fracture {}'s tip ({:.4g}, {:.4g}), {:.2g} m against s* = {:.2g} m): running again on a mesh refined to "
-          "s*/4 around them (mesh.refine_tips; this round's files are in round_{}/)",
+          "round {}: {} in {} coupling iterations, with {} wedge tip(s) in fluid elements wider than s*/2{} (the "
+          "first at ({:.4g}, {:.4g}), s* = {:.2g} m): running again on a mesh refined to s*/4 around them "
+          "(mesh.refine_tips; this round's files are in round_{}/)",
           current_round(refined_tips), converged ? "converged" : "did not converge", loop.iterations(), added.size(),
-          tips.front().tip.fracture, tips.front().tip.point.x, tips.front().tip.point.y, tips.front().element_size,
-          tips.front().tip.length, current_round(refined_tips));
+          converged ? "" : fmt::format(" over its last {} passes", recent.size()), added.front().x, added.front().y,
+          4.0 * added.front().size, current_round(refined_tips));
       tell_model_at_end.dismiss();
       return {std::nullopt, std::move(added), checkpoint.written_iterations};
     }

@@ -45,7 +45,9 @@ inline void expect_same_results(const fs::path& a, const fs::path& b) {
     ASSERT_TRUE(fs::exists(b / name)) << name;
     EXPECT_TRUE(read_file(a / name) == read_file(b / name)) << name << " differs";
   }
-  if (fs::exists(a / "summary.json")) EXPECT_EQ(read_summary_without_timings(a), read_summary_without_timings(b));
+  if (fs::exists(a / "summary.json")) {
+    EXPECT_EQ(read_summary_without_timings(a), read_summary_without_timings(b));
+  }
 }
 
 }  // namespace hydrodda::testing

@@ -23,6 +23,8 @@ RunCheckpoint make_checkpoint() {
   c.history = {{"1", "0.10000000000000001", "1"}, {"2", "0.20000000000000001", "0.5"}};
   c.measure = {{"1", "0.10000000000000001", "top", "0.5", "1", "0", "-1e-06"}};
   c.written_iterations = {1, 2};
+  c.refined_tips = {8.0, 1.0073446173275367, 4.5e-4, 0.7477, 1.0};
+  c.recent_tips = {41.0, 1.0, 11.9958, 1.0034, 5.5e-3, 0.72, 2.0, 42.0, 0.0};
   dda::SystemState::BlockState block;
   block.polygon = {{0.0, 0.0}, {1.0 / 3.0, 0.0}, {0.0, 0.1}};
   block.velocity = {1e-300, -0.0, std::numeric_limits<double>::denorm_min(), 4, 5, 6};
@@ -74,6 +76,8 @@ TEST(Checkpoint, DecodesToTheSameValuesBitForBit) {
   EXPECT_EQ(d.history, c.history);
   EXPECT_EQ(d.measure, c.measure);
   EXPECT_EQ(d.written_iterations, c.written_iterations);
+  EXPECT_EQ(d.refined_tips, c.refined_tips);
+  EXPECT_EQ(d.recent_tips, c.recent_tips);
   ASSERT_EQ(d.mechanics.blocks.size(), 2u);
   const auto& b = d.mechanics.blocks[1];
   const auto& e = c.mechanics.blocks[1];
