@@ -19,7 +19,8 @@ constexpr std::string_view kMagic = "hydrodda checkpoint\n";
 // and no timings (so that identical runs write identical checkpoints); 5: the flow solver's kept
 // factor (its permeability) at the end; 6: Anderson's history; 7: the kept factor's
 // permeability as tensors (xx, xy, yy), joint apertures' included; 8: CRC-32 in place of FNV-1a
-// as the checksum. Only the current format is read: a run stopped by an older hydrodda is run
+// as the checksum; 11: the wedge tips of mesh.refine_tips (refined, and of the round's last
+// passes). Only the current format is read: a run stopped by an older hydrodda is run
 // again.
 constexpr std::int64_t kVersion = 11;
 // The last 8 bytes: the CRC-32 of every byte before them (zlib's, as a 64-bit word). A CRC

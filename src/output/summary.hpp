@@ -67,7 +67,7 @@ struct FractureRow {
 };
 
 // A wedge tip a run refined its fluid mesh around (mesh.refine_tips): a [[mesh.refine]] point
-// it added when a round converged with the tip unresolved.
+// it added when a round ended with the tip unresolved.
 struct RefinedTip {
   double x = 0.0, y = 0.0;  // m
   double size = 0.0;        // m: s*/4 of the tip

@@ -6,7 +6,6 @@
 #include <deque>
 #include <filesystem>
 #include <optional>
-#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -130,7 +129,7 @@ struct RoundEnd {
 
 // One round of a coupled run: the whole run on the scenario's mesh refined around
 // `refined_tips` as well, continued from `resume` when given. With mesh.refine_tips, a round
-// that converges with wedge tips its mesh does not resolve ends there, with them.
+// that ends with wedge tips its mesh does not resolve returns them instead of a summary.
 RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resume,
                    const std::vector<output::RefinedTip>& refined_tips) {
   const scenario::Scenario& s = context.scenario;
@@ -166,7 +165,7 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
   ParaviewOutput paraview(context.folder, s.output.fields);
   const std::optional<FractureMeter> meter = make_fracture_meter(s);
   const hydro::JointApertureLaw joint_law = make_joint_aperture_law(s);
-  FractureMeter::FlowZones flow_zones = meter ? meter->flow_zones(mesh) : FractureMeter::FlowZones{};
+  const FractureMeter::FlowZones flow_zones = meter ? meter->flow_zones(mesh) : FractureMeter::FlowZones{};
   FractureOutput fractures(context.folder, /*with_flow=*/true);
   std::optional<FractureState> fracture_state;  // of the last finished pass
   TellModelAtEnd tell_model_at_end(context.callbacks, model, fracture_state);

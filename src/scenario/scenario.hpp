@@ -223,8 +223,9 @@ struct MeshDefinition {
   double fracture_size = 0.0;     // m
   double refine_distance = 0.0;   // m
   std::vector<MeshRefinePoint> refine_points;
-  // A cubic-law run meshes again around the wedge tips its converged state leaves unresolved,
-  // and goes on from that state (docs/coupling.md, "Wedge tips"); at most kRefineTipRounds times.
+  // A cubic-law run whose round ends with wedge tips its mesh does not resolve runs again, from
+  // the blocks as built, on a mesh refined around them (docs/coupling.md, "Refined by the run");
+  // at most kRefineTipRounds more rounds.
   bool refine_tips = false;
   std::optional<std::filesystem::path> file;  // resolved against the scenario's folder
   int file_line = 0;                          // line of mesh.file, for messages about it
