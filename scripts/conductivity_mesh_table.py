@@ -3,14 +3,17 @@
 
 For each scenario the reference aperture a is its geometry.initial_aperture, or, where the joints
 start closed, the widest opening its own run reaches (history.csv's largest_opening, last pass,
-rounded up to 0.1 mm). The fracture element size (mesh.fracture_size) is then a, 2a, 5a and 10a,
-for "cubic" and "kozeny-carman", each case a `hydrodda sweep` case; the table gives the first
-flow region's normalised_conductivity and the change between the two finest sizes.
+rounded up to 0.1 mm). The fracture element size (mesh.fracture_size) is then a, 2a, 5a and 10a
+(or the multiples of a that --factors lists), for "cubic" and "kozeny-carman", each case a
+`hydrodda sweep` case; the table gives the first flow region's normalised_conductivity and the
+change between the two finest sizes.
 
     python3 scripts/conductivity_mesh_table.py [--hydrodda build/bin/hydrodda] [--out out/mesh-table]
-        [--laws cubic,kozeny-carman] [--set KEY=VALUE ...] [scenarios/paper/six_block_lr_rl.toml ...]
+        [--laws cubic,kozeny-carman] [--factors 1,2,5,10] [--set KEY=VALUE ...]
+        [scenarios/paper/six_block_lr_rl.toml ...]
 
---set passes a key to every case (e.g. --laws cubic --set mesh.refine_tips=true).
+--set passes a key to every case (e.g. --laws cubic --set mesh.refine_tips=true); --factors 0.5,1,2,5,10
+adds a size finer than the aperture.
 
 Prints a Markdown table (the one in docs/coupling.md).
 """
@@ -23,7 +26,7 @@ import subprocess
 import sys
 import tomllib
 
-FACTORS = (1, 2, 5, 10)
+FACTORS = "1,2,5,10"
 LAWS = ("cubic", "kozeny-carman")
 
 
@@ -50,12 +53,17 @@ def main():
     p.add_argument("--out", default="out/mesh-table")
     p.add_argument("--jobs", type=int, default=2)
     p.add_argument("--laws", default=",".join(LAWS), help="the permeability laws, comma-separated")
+    p.add_argument("--factors", default=FACTORS, help="the element sizes as multiples of a, comma-separated")
     p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE", help="a key for every case")
     args = p.parse_args()
     laws = args.laws.split(",")
+    factors = sorted(float(k) for k in args.factors.split(","))
+    if len(factors) < 2:
+        sys.exit("--factors needs two sizes or more")
     scenarios = args.scenarios or sorted(glob.glob("scenarios/paper/*.toml"))
-    print("| scenario | a (mm) | law | a | 2a | 5a | 10a | a vs 2a |")
-    print("| --- | ---: | --- | ---: | ---: | ---: | ---: | ---: |")
+    names = [("" if k == 1 else f"{k:g}") + "a" for k in factors]
+    print("| scenario | a (mm) | law | " + " | ".join(names) + f" | {names[0]} vs {names[1]} |")
+    print("| --- | ---: | --- | " + "---: | " * len(names) + "---: |")
     for scenario in scenarios:
         name = os.path.splitext(os.path.basename(scenario))[0]
         with open(scenario, "rb") as f:
@@ -63,7 +71,7 @@ def main():
         region = data["flow"]["region"][0]["name"]
         out = os.path.join(args.out, name)
         a, source = reference_aperture(args.hydrodda, scenario, data, out)
-        sizes = ",".join(f"{k * a:.6g}" for k in FACTORS)
+        sizes = ",".join(f"{k * a:.6g}" for k in factors)
         folder = os.path.join(out, "sweep")
         column = f"flow.regions.{region}.normalised_conductivity"
         run([args.hydrodda, "-q", "sweep", scenario, "--set", f"mesh.fracture_size={sizes}",
@@ -80,7 +88,7 @@ def main():
                                                                row["converged"] == "true")
         for law in laws:
             cells, numbers = [], []
-            for k in FACTORS:
+            for k in factors:
                 v, converged = values[(law, float(f"{k * a:.6g}"))]
                 numbers.append(v)
                 cells.append(f"{v:.4g}" + ("" if converged else "*"))
