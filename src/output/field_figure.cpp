@@ -86,7 +86,21 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
     for (double& v : values) v = std::log10(std::max(v, 1e-300));
   double lo = values.empty() ? 0.0 : *std::min_element(values.begin(), values.end());
   double hi = values.empty() ? 1.0 : *std::max_element(values.begin(), values.end());
-  if (lines_only) lo = std::min(lo, 0.0);  // lines carry sizes (apertures): the scale starts at zero
+  if (lines_only && f.logarithmic) {
+    // On a log scale the lines drawn grey (e.g. joints without an aperture) set no range.
+    double highlighted_lo = std::numeric_limits<double>::infinity(), highlighted_hi = -highlighted_lo;
+    for (std::size_t i = 0; i < values.size(); ++i)
+      if (i < f.segment_highlighted.size() && f.segment_highlighted[i]) {
+        highlighted_lo = std::min(highlighted_lo, values[i]);
+        highlighted_hi = std::max(highlighted_hi, values[i]);
+      }
+    if (highlighted_lo <= highlighted_hi) {
+      lo = highlighted_lo;
+      hi = highlighted_hi;
+    }
+  } else if (lines_only) {
+    lo = std::min(lo, 0.0);  // lines carry sizes (apertures): the scale starts at zero
+  }
   // An element field's scale ends at the largest value inside the mesh: elements on its
   // boundary, where the blocks part from the fixed domain edge, hold gaps far wider than the
   // joints' and would leave the joints the colour of intact rock. Values above are painted
@@ -188,7 +202,7 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
     for (std::size_t i = 0; i < f.segments.size(); ++i) {
       const bool highlighted = i < f.segment_highlighted.size() && f.segment_highlighted[i];
       if (highlighted != (pass == 1)) continue;
-      const auto c = colour(f.segment_values[i]);
+      const auto c = colour(lines_only ? values[i] : f.segment_values[i]);
       if (highlighted) cairo_set_source_rgb(cr, c[0], c[1], c[2]);
       else cairo_set_source_rgb(cr, 0.55, 0.55, 0.55);
       cairo_set_line_width(cr, highlighted ? 3.0 : 1.0);

@@ -51,10 +51,12 @@ std::vector<double> log_ticks(double lo, double hi) {
   const int last = static_cast<int>(std::floor(std::log10(hi) + 1e-9));
   std::vector<double> ticks;
   if (last - first < 1) {
-    // Less than a decade between two powers of ten: 1, 2 and 5 times them.
+    // Less than a decade between two powers of ten: 1, 2 and 5 times them; a range too short
+    // to hold two of those (5.5 to 9.9) gets the linear nice ticks inside it.
     for (int e = first - 1; e <= last; ++e)
       for (double m : {1.0, 2.0, 5.0})
         if (const double v = m * std::pow(10.0, e); v >= lo * (1 - 1e-9) && v <= hi * (1 + 1e-9)) ticks.push_back(v);
+    if (ticks.size() < 2) ticks = nice_ticks(lo, hi, 5);
     return ticks;
   }
   const int stride = std::max(1, (last - first + 8) / 8);

@@ -16,7 +16,7 @@ std::vector<double> nice_ticks(double lo, double hi, int count);
 
 // Ticks of a log10 axis over [lo, hi] (both > 0): the decades inside, every n-th when there
 // are many, so at most about 8 are labelled; 1, 2 and 5 times them when fewer than two
-// decades lie inside.
+// decades lie inside, or the linear nice_ticks where those give fewer than two.
 std::vector<double> log_ticks(double lo, double hi);
 
 // A linear tick's label with as few decimals as the step between ticks needs.

@@ -133,6 +133,19 @@ void draw_aperture_figure(const scenario::Scenario& s, const output::RunFolder& 
   }
   for (const std::string& format : s.output.figures)
     output::render_field_figure(folder.figures() / ("apertures." + format), figure);
+  if (!s.joint.hydraulic()) return;
+  // Joints that conduct while closed (a residual aperture, Barton–Bandis closure) are all grey
+  // in the mechanical figure: this one colours every piece by the aperture the flow sees, on a
+  // log scale, as closed ones carry micrometres and open ones millimetres.
+  figure.subtitle = "Joint hydraulic apertures (closed joints by their closure law), " + shown.when;
+  figure.field_label = "hydraulic aperture (µm, log scale)";
+  figure.logarithmic = true;
+  for (std::size_t k = 0; k < state.pieces.size(); ++k) {
+    figure.segment_values[k] = state.pieces[k].hydraulic_aperture * 1e6;
+    figure.segment_highlighted[k] = state.pieces[k].hydraulic_aperture > 0.0;
+  }
+  for (const std::string& format : s.output.figures)
+    output::render_field_figure(folder.figures() / ("hydraulic_apertures." + format), figure);
 }
 
 }  // namespace hydrodda::run

@@ -89,9 +89,12 @@ TEST(JointApertures, ClosedJointCarriesItsResidualApertureOnEveryMesh) {
   const double a = 1.0e-4, length = std::sqrt(1.16);
   const double expected = kConductivityPerPermeability * a * a * a / 12.0 * kHeadDrop / length;
   for (const std::string size : {"0.2", "0.1", "0.05"}) {
-    const std::string text = replace_once(replace_once(base, "size = 0.1\n", "size = " + size + "\n"),
-                                          "fracture_size = 0.1\n", "fracture_size = " + size + "\n");
+    std::string text = replace_once(replace_once(base, "size = 0.1\n", "size = " + size + "\n"),
+                                    "fracture_size = 0.1\n", "fracture_size = " + size + "\n");
+    if (size == "0.2") text = replace_once(text, "figures = []", "figures = [\"png\"]");
     const JointRun r = run_text(text, folder, "mesh" + size);
+    // With the joint keys the figures add the apertures the flow sees.
+    if (size == "0.2") EXPECT_TRUE(fs::exists(folder.path / ("mesh" + size) / "figures/hydraulic_apertures.png"));
     ASSERT_TRUE(r.summary.contains("flow")) << size;
     EXPECT_TRUE(r.summary["converged"].get<bool>()) << size;
     const double q = right_outflow(r);
@@ -173,9 +176,13 @@ TEST(JointApertures, LoadedJointFollowsBartonBandisClosure) {
 TEST(JointApertures, WithoutJointKeysAClosedJointCarriesNextToNothing) {
   Folder folder("none");
   const std::string text =
-      replace_once(read_text(kVerification / "coupled_closed_joint.toml"), "residual_aperture = 1.0e-4\n", "");
+      replace_once(replace_once(read_text(kVerification / "coupled_closed_joint.toml"), "residual_aperture = 1.0e-4\n", ""),
+                   "figures = []", "figures = [\"png\"]");
   const JointRun r = run_text(text, folder, "none");
   ASSERT_TRUE(r.summary.contains("flow"));
+  // Without them only the mechanical apertures' figure: the flow sees no other.
+  EXPECT_TRUE(fs::exists(folder.path / "none/figures/apertures.png"));
+  EXPECT_FALSE(fs::exists(folder.path / "none/figures/hydraulic_apertures.png"));
   // k_m = d² φ³ / (180 (1 − φ)²) = 5.6e-22 m²: (ρg/μ) k_m Δh over a 1 m square.
   const double k_matrix = 1.0e-10 * 1.0e-9 / (180.0 * 0.999 * 0.999);
   const double matrix_flow = kConductivityPerPermeability * k_matrix * kHeadDrop;

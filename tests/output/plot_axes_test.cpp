@@ -24,6 +24,10 @@ TEST(LogTicks, DecadesInsideTheRange) {
   // 21 decades: every third one, so at most 8 labels.
   EXPECT_EQ(log_ticks(1e-20, 10.0).size(), 8u);
   EXPECT_TRUE(log_ticks(-1.0, 10.0).empty());
+  // Under a decade: 1, 2 and 5 times the powers of ten inside; fewer than two of those, the
+  // linear ticks (steps of 1, 2 or 5 times a power of ten) inside the range.
+  EXPECT_EQ(log_ticks(1.5, 30.0), (std::vector<double>{2.0, 5.0, 10.0, 20.0}));
+  EXPECT_EQ(log_ticks(5.5, 9.9), (std::vector<double>{6.0, 7.0, 8.0, 9.0}));
 }
 
 TEST(FormatTick, DecimalsFollowTheStep) {
