@@ -78,6 +78,13 @@ toml::node* follow_indices(const std::filesystem::path& file, const std::string&
   return node;
 }
 
+// Top-level tables of settings only, each optional: a scenario without one runs on its
+// defaults, so an override of one of its keys makes it. The others ([mechanics], [flow],
+// [geometry], ...) say what is run; one made by an override would change the kind of run.
+bool is_settings_table(const std::string& key) {
+  return key == "coupling" || key == "output" || key == "mesh" || key == "joint";
+}
+
 void apply_override(const std::filesystem::path& file, toml::table& document, const Override& o) {
   const std::vector<PathStep> steps = split_key_path(file, o.key);
   toml::table* table = &document;
@@ -85,6 +92,8 @@ void apply_override(const std::filesystem::path& file, toml::table& document, co
   for (std::size_t s = 0; s + 1 < steps.size(); ++s) {
     name += (name.empty() ? "" : ".") + steps[s].key;
     toml::node* node = table->get(steps[s].key);
+    if (!node && s == 0 && steps[s].indices.empty() && is_settings_table(steps[s].key))
+      node = table->insert(steps[s].key, toml::table{}).first->second.as_table();
     if (!node) fail(file, o.key, fmt::format("the scenario has no '{}' to follow", name));
     node = follow_indices(file, o.key, node, name, steps[s].indices);
     table = node->as_table();

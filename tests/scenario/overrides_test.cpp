@@ -64,6 +64,33 @@ TEST(ScenarioOverrides, AddsAValueMissingFromAnExistingTable) {
   EXPECT_EQ(parse_scenario(text, "case.toml").mechanics->max_displacement_ratio, std::optional<double>(0.005));
 }
 
+// `text` without its table `[name]`: from its header to the next header or the end.
+std::string without_table(std::string text, const std::string& name) {
+  const std::size_t from = text.find("\n[" + name + "]\n");
+  EXPECT_NE(from, std::string::npos) << name;
+  if (from == std::string::npos) return text;
+  const std::size_t next = text.find("\n[", from + 1);
+  return text.erase(from, next == std::string::npos ? std::string::npos : next - from);
+}
+
+// [coupling], [output], [mesh] and [joint] hold settings only and may be left out of a file:
+// an override of one of their keys makes the table. A table that says what is run
+// ([mechanics] of a flow-only scenario) is not made.
+TEST(ScenarioOverrides, MakesAMissingTableOfSettings) {
+  const std::string text = without_table(without_table(read_text(kSixBlock), "coupling"), "output");
+  const Scenario s = parse_scenario(
+      apply_overrides(text, kSixBlock, {{"coupling.acceleration", "aitken"}, {"output.figures", "[]"}}), "case.toml");
+  EXPECT_EQ(s.coupling.acceleration, LoopAcceleration::aitken);
+  EXPECT_EQ(s.coupling.max_iterations, Scenario{}.coupling.max_iterations);  // the rest the defaults
+  EXPECT_TRUE(s.output.figures.empty());
+  try {
+    apply_overrides("[flow]\n", kSixBlock, {{"mechanics.steps", "10"}});
+    FAIL() << "a [mechanics] table was made";
+  } catch (const ScenarioError& e) {
+    EXPECT_NE(std::string(e.what()).find("the scenario has no 'mechanics'"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ScenarioOverrides, BadKeysAreNamed) {
   EXPECT_NE(error_of({{"nosuch.value", "1"}}).find("nosuch.value: the scenario has no 'nosuch'"), std::string::npos);
   EXPECT_NE(error_of({{"flow.boundary[2].head", "1"}}).find("flow.boundary has 2 element(s); index 2 is out of range"),
