@@ -28,7 +28,9 @@ CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::option
   mesh_seconds_ = std::chrono::duration<double>(Clock::now() - start).count();
   spdlog::info("mesh: {} nodes, {} triangles", mesh_.node_count(), mesh_.triangle_count());
 
-  std::vector<dda::BlockDefinition> block_definitions = build_blocks(s);
+  // A later round of mesh.refine_tips (refinement added) cuts the blocks its first round cut.
+  std::vector<dda::BlockDefinition> block_definitions =
+      build_blocks(s, added_refinement.empty() ? GeometryWarnings::logged : GeometryWarnings::already_logged);
   coupling::LoopSettings settings;
   settings.biot_coefficients = find_biot_coefficients(s, block_definitions);
   initial_blocks_ = block_definitions;

@@ -93,7 +93,7 @@ int material_index(const Scenario& s, const std::string& name) {
 
 }  // namespace
 
-ModelGeometry build_and_log_geometry(const Scenario& s) {
+ModelGeometry build_and_log_geometry(const Scenario& s, GeometryWarnings warnings) {
   ModelGeometry model;
   try {
     model = build_model_geometry(s);
@@ -106,7 +106,10 @@ ModelGeometry build_and_log_geometry(const Scenario& s) {
   }
   if (!s.geometry->min_block_area)
     spdlog::debug("default used: geometry.min_block_area = {:.3g} (1% of the mean block area)", model.network.min_block_area);
-  for (const std::string& w : model.warnings) spdlog::warn("{}", w);
+  for (const std::string& w : model.warnings) {
+    if (warnings == GeometryWarnings::logged) spdlog::warn("{}", w);
+    else spdlog::debug("{} (warned once)", w);
+  }
   for (const std::string& n : model.notes) spdlog::info("{}", n);
   spdlog::info("geometry: {}", model.summary);
   return model;
@@ -118,10 +121,10 @@ std::vector<dda::BlockDefinition> blocks_of(const ModelGeometry& model) {
   return blocks;
 }
 
-std::vector<dda::BlockDefinition> build_blocks(const Scenario& s) {
+std::vector<dda::BlockDefinition> build_blocks(const Scenario& s, GeometryWarnings warnings) {
   std::vector<dda::BlockDefinition> blocks;
   if (!s.geometry) return blocks;
-  if (!s.geometry->domain.empty()) return blocks_of(build_and_log_geometry(s));
+  if (!s.geometry->domain.empty()) return blocks_of(build_and_log_geometry(s, warnings));
   for (const scenario::BlockDefinition& b : s.geometry->blocks) {
     dda::BlockDefinition block;
     block.polygon = b.vertices;

@@ -22,15 +22,21 @@
 
 namespace hydrodda::run {
 
+// Whether the cut's warnings are logged as warnings, or only at debug level: a run that cuts
+// the same domain again (a later round of mesh.refine_tips) has said them once.
+enum class GeometryWarnings { logged, already_logged };
+
 // The scenario's domain cut into blocks (model_geometry.hpp), its warnings and summary logged.
-ModelGeometry build_and_log_geometry(const scenario::Scenario& scenario);
+ModelGeometry build_and_log_geometry(const scenario::Scenario& scenario,
+                                     GeometryWarnings warnings = GeometryWarnings::logged);
 
 // The blocks of a cut domain: they take the only material and are free.
 std::vector<dda::BlockDefinition> blocks_of(const ModelGeometry& model);
 
 // The block polygons of the scenario (counter-clockwise), with their material index and
 // fixed flag, in the order the scenario defines them.
-std::vector<dda::BlockDefinition> build_blocks(const scenario::Scenario& scenario);
+std::vector<dda::BlockDefinition> build_blocks(const scenario::Scenario& scenario,
+                                               GeometryWarnings warnings = GeometryWarnings::logged);
 
 // The DDA model: blocks, materials, joint, settings and every load of [mechanics].
 dda::ModelDefinition build_mechanics_model(const scenario::Scenario& scenario,

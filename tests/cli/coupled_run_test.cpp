@@ -397,15 +397,22 @@ TEST(CoupledRun, AWedgeTipTheMeshDoesNotResolveIsWarnedAbout) {
 // refined_tips, to 17 digits): the same summary.json, bit for bit, but for the list itself.
 TEST(CoupledRun, RefineTipsRunsAgainOnTheMeshRefinedAroundTheTips) {
   const fs::path flexure = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/paper/asymmetric_flexure_20mpa.toml";
+  // A piece of fracture inside the welded left end separates no blocks: each round cuts the
+  // blocks again, and the run warns of it once.
+  const std::pair<std::string, std::string> dangling{"fractures = [\n", "fractures = [\n  [[1.0, 0.5], [2.0, 0.5]],\n"};
   const fs::path file = edited_scenario(flexure, "hydrodda-refine-tips",
                                         {{"permeability_law = \"kozeny-carman\"", "permeability_law = \"cubic\""},
-                                         {"[mesh]\n", "[mesh]\nrefine_tips = true\n"}});
+                                         {"[mesh]\n", "[mesh]\nrefine_tips = true\n"}, dangling});
   const fs::path out = fs::temp_directory_path() / "hydrodda-refine-tips-out";
   fs::remove_all(out);
   const auto result = run_program("run " + file.string() + " -o " + out.string());
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_NE(result.output.find("round 1: converged in"), std::string::npos) << result.output;
   EXPECT_EQ(result.output.find("opens as a wedge"), std::string::npos) << result.output;
+  const std::string dropped = "separates no blocks and is dropped";
+  const std::size_t first_warning = result.output.find(dropped);
+  EXPECT_NE(first_warning, std::string::npos) << result.output;
+  EXPECT_EQ(result.output.find(dropped, first_warning + 1), std::string::npos) << result.output;
   const nlohmann::json summary = nlohmann::json::parse(std::ifstream(out / "summary.json"));
   EXPECT_EQ(summary["converged"], true) << summary["message"];
   const nlohmann::json& fractures = summary["fractures"];
@@ -429,7 +436,8 @@ TEST(CoupledRun, RefineTipsRunsAgainOnTheMeshRefinedAroundTheTips) {
   }
   nlohmann::json pasted = run_to_summary(edited_scenario(
       flexure, "hydrodda-refine-tips-pasted",
-      {{"permeability_law = \"kozeny-carman\"", "permeability_law = \"cubic\""}, {"[coupling]", tables + "[coupling]"}}));
+      {{"permeability_law = \"kozeny-carman\"", "permeability_law = \"cubic\""}, {"[coupling]", tables + "[coupling]"},
+       dangling}));
   nlohmann::json refined = summary;
   for (nlohmann::json* s : {&refined, &pasted}) {
     s->erase("timings");
