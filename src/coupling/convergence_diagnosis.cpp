@@ -144,7 +144,8 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
   std::vector<double> last(all.begin() + static_cast<std::ptrdiff_t>(first_index), all.end());
   d.rate = rate_per_pass(last);
   d.period = cycle_period(last);
-  const bool swinging = return_ratio(head_change, head_change_two_passes, first) < 0.1 || alternation(last) >= 0.6;
+  const bool two_states = return_ratio(head_change, head_change_two_passes, first) < 0.1;
+  const bool swinging = two_states || alternation(last) >= 0.6;
   if (head_change.size() < 4) d.behaviour = NonConvergence::too_few_passes;
   else if (d.period > 0) d.behaviour = NonConvergence::oscillating;
   else if (last.size() >= 4 && swinging && d.rate > 0.95) d.behaviour = NonConvergence::oscillating;
@@ -168,9 +169,13 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
                "): raise coupling.max_iterations";
       break;
     case NonConvergence::oscillating:
+      // Two states only where the heads come back to those of two passes before; a norm that
+      // rises and falls by turns may come back every third pass or not at all.
       d.text = norms + " stayed above the tolerance: the loop oscillates (the " + name + " change near " + level +
-               (d.period > 2 ? ", coming back to the same values every " + std::to_string(d.period) + " passes"
-                             : std::string(", the blocks swinging between two states pass after pass")) +
+               (d.period > 2   ? ", coming back to the same values every " + std::to_string(d.period) + " passes"
+                : two_states   ? std::string(", the blocks swinging between two states pass after pass")
+                : d.period == 2 ? std::string(", coming back to the same values every 2 passes")
+                                : std::string(", rising and falling by turns")) +
                "); " + unsettled_advice(acceleration);
       break;
     case NonConvergence::erratic: {

@@ -87,6 +87,24 @@ TEST(NonConvergence, AlternatingChangeIsOscillation) {
   EXPECT_NE(accelerated.text.find("the anderson acceleration did not settle it"), std::string::npos) << accelerated.text;
 }
 
+// The 60 m × 30 m conjugate-jointed seal at 1,200 m over its top (measured): a head change
+// rising and falling by turns that comes back every third pass to within 11-14%, not 10%, with
+// heads that do not come back to those of two passes before (0.8 of the change). An oscillation,
+// and not one "between two states".
+TEST(NonConvergence, ANormRisingAndFallingByTurnsIsNotCalledTwoStates) {
+  const std::vector<double> cycle{0.136, 0.129, 0.132, 0.190, 0.149, 0.117, 0.187, 0.147, 0.131, 0.200, 0.152, 0.115};
+  std::vector<double> head{1.0}, displacement{1.0}, two_back{1.0, 1.0};
+  for (int k = 2; k <= 50; ++k) {
+    head.push_back(cycle[static_cast<std::size_t>(k) % cycle.size()]);
+    displacement.push_back(0.2 * head.back());
+    if (k > 2) two_back.push_back(0.8 * head.back());
+  }
+  const ConvergenceDiagnosis d = diagnose_non_convergence(head, displacement, two_back, 1e-4);
+  EXPECT_EQ(d.behaviour, NonConvergence::oscillating);
+  EXPECT_EQ(d.text.find("two states"), std::string::npos) << d.text;
+  EXPECT_NE(d.text.find("rising and falling by turns"), std::string::npos) << d.text;
+}
+
 // A swing between two states A, B, A, B, ...: the change is a steady |A − B| every pass, and
 // the heads come back to those of two passes before (measured: 0.126 a pass, 1e-5 two back).
 // A steady change with heads that do not come back is a drift.
@@ -98,6 +116,7 @@ TEST(NonConvergence, SteadyChangeWithHeadsReturningIsOscillation) {
     if (k > 2) returning.push_back(1e-5), leaving.push_back(0.25);
   }
   EXPECT_EQ(diagnose_non_convergence(head, displacement, returning, 1e-4).behaviour, NonConvergence::oscillating);
+  EXPECT_NE(diagnose_non_convergence(head, displacement, returning, 1e-4).text.find("between two states"), std::string::npos);
   EXPECT_EQ(diagnose_non_convergence(head, displacement, leaving, 1e-4).behaviour, NonConvergence::drifting);
 }
 
