@@ -90,7 +90,7 @@ json to_json(const RunSummary& s) {
     json boundaries = json::object();
     for (const NamedValue& b : s.flow->boundaries) boundaries[b.name] = b.value;
     json regions = json::object();
-    for (const RegionSummary& r : s.flow->regions)
+    for (const RegionSummary& r : s.flow->regions) {
       regions[r.name] = {{"flow", r.flow},
                          {"effective_conductivity", r.effective_conductivity},
                          {"matrix_conductivity", r.matrix_conductivity},
@@ -102,6 +102,11 @@ json to_json(const RunSummary& s) {
                            {"yy", r.tensor[2]},
                            {"principal_values", r.principal_values},
                            {"principal_directions", r.principal_directions}}}};
+      if (r.last_passes)
+        regions[r.name]["last_passes"] = {{"passes", r.last_passes->passes},
+                                          {"least", r.last_passes->least},
+                                          {"largest", r.last_passes->largest}};
+    }
     out["flow"] = {{"boundaries", boundaries}, {"balance", s.flow->balance}, {"regions", regions}};
   }
   if (s.outside_mesh)

@@ -40,6 +40,13 @@ struct RegionSummary {
   std::array<double, 3> tensor{};
   std::array<double, 2> principal_values{};
   std::array<std::array<double, 2>, 2> principal_directions{};
+  // A coupled run that did not converge: the least and largest normalised conductivity of its
+  // last passes (up to 10), how far its answer still moved.
+  struct PassRange {
+    int passes = 0;
+    double least = 0.0, largest = 0.0;
+  };
+  std::optional<PassRange> last_passes;
 };
 
 // How far the blocks had left the fluid mesh at the end of a coupled run.

@@ -100,9 +100,12 @@ std::vector<std::optional<output::RegionSummary>> summarise_regions(const scenar
       continue;
     }
     const hydro::RegionFlow region = hydro::compute_region_flow(mesh, solution, reference.triangles, reference.imposed);
-    output::RegionSummary summary{s.flow->regions[i].name, region.flow, region.effective_conductivity,
-                                  reference.matrix_conductivity,
-                                  region.effective_conductivity / reference.matrix_conductivity};
+    output::RegionSummary summary;
+    summary.name = s.flow->regions[i].name;
+    summary.flow = region.flow;
+    summary.effective_conductivity = region.effective_conductivity;
+    summary.matrix_conductivity = reference.matrix_conductivity;
+    summary.normalised_conductivity = region.effective_conductivity / reference.matrix_conductivity;
     summary.direction = {region.direction.x, region.direction.y};
     if (!conductivity.empty()) {
       const hydro::EffectiveTensor t = hydro::compute_region_tensor(mesh, conductivity, reference.triangles);

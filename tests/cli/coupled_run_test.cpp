@@ -16,9 +16,11 @@
 #include <utility>
 #include <vector>
 
+#include "result_files.hpp"
 #include "run_program.hpp"
 
 namespace fs = std::filesystem;
+using hydrodda::testing::column;
 using hydrodda::testing::run_command;
 using hydrodda::testing::read_csv;
 using hydrodda::testing::run_program;
@@ -199,9 +201,35 @@ TEST(CoupledRun, OscillatingLoopIsNamedAndAitkenSettlesIt) {
   auto plain_edits = cubic_30m;
   plain_edits.push_back({"max_iterations = 50", "max_iterations = 20"});
   plain_edits.push_back({"acceleration = \"aitken\"", "acceleration = \"none\""});
-  const auto plain = run_to_summary(edited_scenario(flexure, "hydrodda-cycling", plain_edits));
+  const fs::path plain_file = edited_scenario(flexure, "hydrodda-cycling", plain_edits);
+  const fs::path plain_out = fs::temp_directory_path() / "hydrodda-cycling-out";
+  fs::remove_all(plain_out);
+  const auto result = run_program("-q run " + plain_file.string() + " -o " + plain_out.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const auto plain = nlohmann::json::parse(std::ifstream(plain_out / "summary.json"));
+  const auto history = read_csv(plain_out / "history.csv");
   EXPECT_EQ(plain["converged"], false);
-  EXPECT_NE(plain["message"].get<std::string>().find("loop oscillates"), std::string::npos) << plain["message"];
+  const std::string message = plain["message"];
+  EXPECT_NE(message.find("loop oscillates"), std::string::npos) << message;
+  // What the unconverged answer is worth: K_eff/K_m's least and largest over the last 10 passes,
+  // history.csv's region conductivity over the region's matrix conductivity (the same numbers).
+  const nlohmann::json& region = plain["flow"]["regions"]["fractured"];
+  ASSERT_TRUE(region.contains("last_passes")) << region.dump();
+  const int column_k = column(history[0], "region_conductivity_fractured");
+  double least = INFINITY, largest = -INFINITY;
+  for (std::size_t k = history.size() - 10; k < history.size(); ++k) {
+    const double normalised = std::stod(history[k][column_k]) / region["matrix_conductivity"].get<double>();
+    least = std::min(least, normalised);
+    largest = std::max(largest, normalised);
+  }
+  EXPECT_EQ(region["last_passes"]["passes"], 10);
+  EXPECT_EQ(region["last_passes"]["least"].get<double>(), least);
+  EXPECT_EQ(region["last_passes"]["largest"].get<double>(), largest);
+  EXPECT_GT(largest, 1.01 * least);  // the cycle's two states
+  EXPECT_NE(message.find("over the last 10 passes K_eff/K_m of region 'fractured' ranged from"), std::string::npos)
+      << message;
+  fs::remove_all(plain_out);
+  fs::remove(plain_file);
   // Aitken is the file's own acceleration.
   const auto aitken = run_to_summary(edited_scenario(flexure, "hydrodda-aitken", cubic_30m));
   EXPECT_EQ(aitken["converged"], true) << aitken["message"];

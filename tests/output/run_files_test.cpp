@@ -74,7 +74,11 @@ TEST(Summary, HoldsTheContractKeys) {
   s.iterations = 7;
   s.blocks.push_back({3, {1.0, 2.0}, {0.1, -0.2}, 0.01, {-1.0, -2.0, 0.5}, 4.0});
   s.measures.push_back({"A", {2.5, 4.0}, {0.0, -1e-3}});
-  s.flow = FlowSummary{{{"left", -1.5e-6}, {"right", 1.5e-6}}, 1e-14, {{"core", 1.5e-6, 2e-7}}};
+  RegionSummary core;
+  core.name = "core";
+  core.flow = 1.5e-6;
+  core.effective_conductivity = 2e-7;
+  s.flow = FlowSummary{{{"left", -1.5e-6}, {"right", 1.5e-6}}, 1e-14, {core}};
   s.timings.push_back({"flow", 0.25});
   const auto j = nlohmann::json::parse(format_summary(s));
   EXPECT_EQ(j["converged"], true);
@@ -85,7 +89,14 @@ TEST(Summary, HoldsTheContractKeys) {
   EXPECT_EQ(j["flow"]["boundaries"]["left"], -1.5e-6);
   EXPECT_EQ(j["flow"]["balance"], 1e-14);
   EXPECT_EQ(j["flow"]["regions"]["core"]["effective_conductivity"], 2e-7);
+  EXPECT_FALSE(j["flow"]["regions"]["core"].contains("last_passes"));  // a converged run's
   EXPECT_EQ(j["timings"]["flow"], 0.25);
+  // An unconverged run's regions say how far K_eff/K_m moved over its last passes.
+  s.flow->regions[0].last_passes = RegionSummary::PassRange{10, 4.965, 5.355};
+  const auto unconverged = nlohmann::json::parse(format_summary(s));
+  EXPECT_EQ(unconverged["flow"]["regions"]["core"]["last_passes"]["passes"], 10);
+  EXPECT_EQ(unconverged["flow"]["regions"]["core"]["last_passes"]["least"], 4.965);
+  EXPECT_EQ(unconverged["flow"]["regions"]["core"]["last_passes"]["largest"], 5.355);
 }
 
 }  // namespace
