@@ -188,6 +188,49 @@ TEST(CoupledRun, HeadNormDoesNotDependOnTheDatum) {
   EXPECT_NEAR(k_raised, k, 1e-9 * k);
 }
 
+// A seal 1 km deep (tests/cli/scenarios/seal_at_depth.toml: hydrostatic pore pressure
+// p = ρ_w g (h − y), an in-situ stress given at its top's elevation, Barton–Bandis joints) and
+// the same seal drawn 1,030 m higher with every head raised by 1,030 m are one problem: the
+// same pass count, and the same conductivities and boundary flows to 1e-7 relative, the
+// coordinates' round-off (measured: 1.6e-9; at y ≈ −1000 m a double holds a position to
+// 1.1e-13 m, against 3.6e-15 m near 30 m, and the contact and clipping tolerances work in
+// those positions).
+TEST(CoupledRun, ASealDrawnHigherWithItsHeadsRaisedGivesTheSameAnswer) {
+  const fs::path deep = fs::path(HYDRODDA_SOURCE_DIR) / "tests/cli/scenarios/seal_at_depth.toml";
+  std::ifstream in(deep);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string shallow = text.str();
+  const auto replace_all = [&](const std::string& from, const std::string& to) {
+    int count = 0;
+    for (std::size_t at = shallow.find(from); at != std::string::npos; at = shallow.find(from, at + to.size())) {
+      shallow.replace(at, from.size(), to);
+      ++count;
+    }
+    return count;
+  };
+  EXPECT_EQ(replace_all("head = 150.0", "head = 1180.0"), 1);
+  EXPECT_EQ(replace_all("head = 0.0", "head = 1030.0"), 1);
+  EXPECT_EQ(replace_all("-1030.0", "0.0"), 4);
+  EXPECT_EQ(replace_all("-1025.0", "5.0"), 10);
+  EXPECT_EQ(replace_all("-1000.0", "30.0"), 9);
+  const fs::path raised_file = fs::temp_directory_path() / "hydrodda-seal-raised.toml";
+  std::ofstream(raised_file) << shallow;
+  const auto at_depth = run_to_summary(edited_scenario(deep, "hydrodda-seal-deep", {}));
+  const auto raised = run_to_summary(raised_file);
+  ASSERT_EQ(at_depth["converged"], true) << at_depth["message"];
+  EXPECT_EQ(raised["converged"], true) << raised["message"];
+  EXPECT_EQ(raised["iterations"], at_depth["iterations"]);
+  for (const std::string region : {"seal", "reservoir"}) {
+    const double k = at_depth["flow"]["regions"][region]["normalised_conductivity"];
+    EXPECT_NEAR(raised["flow"]["regions"][region]["normalised_conductivity"].get<double>(), k, 1e-7 * k) << region;
+  }
+  for (const std::string boundary : {"bottom", "top"}) {
+    const double q = at_depth["flow"]["boundaries"][boundary];
+    EXPECT_NEAR(raised["flow"]["boundaries"][boundary].get<double>(), q, 1e-7 * std::abs(q)) << boundary;
+  }
+}
+
 // The cubic-law symmetric flexure at 30 m of head cycles between two states pass after pass
 // (head change 0.23, 0.26, 0.23, ... on the old norm): without acceleration the run ends
 // unconverged and says the head change oscillates; with Aitken's relaxation or Anderson's
