@@ -53,6 +53,11 @@ double initial_contact_distance(const std::vector<BlockDefinition>& blocks, cons
   return 2.5 * settings.max_displacement_ratio * half_model_height(blocks);
 }
 
+double initial_penetration_tolerance(const std::vector<BlockDefinition>& blocks, const Settings& settings) {
+  if (settings.penetration_tolerance > 0) return settings.penetration_tolerance;
+  return 1e-4 * settings.max_displacement_ratio * half_model_height(blocks);
+}
+
 double displacement_ratio_for_blocks(const std::vector<BlockDefinition>& blocks, double ratio) {
   if (blocks.empty()) return ratio;
   double thinnest = std::numeric_limits<double>::infinity();

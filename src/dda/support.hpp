@@ -19,6 +19,10 @@ std::vector<std::vector<int>> find_unsupported_groups(const ModelDefinition& mod
 // displacement, max_displacement_ratio of half the model's height, unless set).
 double initial_contact_distance(const std::vector<BlockDefinition>& blocks, const Settings& settings);
 
+// The contact penetration tolerance the system will use (System's rule: 1e-4 of the allowed
+// step displacement, unless set).
+double initial_penetration_tolerance(const std::vector<BlockDefinition>& blocks, const Settings& settings);
+
 // Settings::max_displacement_ratio for these blocks: `ratio`, or less where the blocks are thin
 // against the model, so that the contact distance 2.5 r w0 (w0 half the model's height) is at
 // most half the thinnest block's width (geometry::width_across_edges), r ≤ 0.2 w_min / w0.

@@ -120,11 +120,14 @@ std::string describe_last_passes(const std::vector<std::string>& columns,
       ++range.passes;
     }
     if (range.passes == 0) continue;
-    text += fmt::format("{}K_eff/K_m of region '{}' ranged from {:.4g} to {:.4g} ({:.2g}%)", text.empty() ? "" : ", ",
-                        r.name, range.least, range.largest,
-                        100.0 * (range.largest - range.least) / std::abs(r.normalised_conductivity));
     range.passes = static_cast<int>(passes);
     r.last_passes = range;
+    // A region whose answer did not move (its permeability fixed) is no news in the message.
+    const double spread = (range.largest - range.least) / std::abs(r.normalised_conductivity);
+    if (!(spread > 1e-9)) continue;
+    text += fmt::format("{}K_eff/K_m of region '{}' ranged from {:.4g} to {:.4g} ({}%)", text.empty() ? "" : ", ",
+                        r.name, range.least, range.largest,
+                        spread >= 0.1 ? fmt::format("{:.0f}", 100.0 * spread) : fmt::format("{:.2g}", 100.0 * spread));
   }
   return text.empty() ? text : fmt::format("over the last {} passes {}", passes, text);
 }
@@ -270,6 +273,16 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
     }
     return summary;
   };
+  // A run that failed after some passes: its message and state, and how far each region's answer
+  // moved over its last passes.
+  const auto failure_with_range = [&](std::string message) {
+    output::RunSummary summary = current_summary();
+    if (summary.flow)
+      if (const std::string moved = describe_last_passes(columns, checkpoint.history, summary.flow->regions);
+          !moved.empty())
+        message += "; " + moved;
+    return RunFailure(RunStatus::failed, std::move(message), std::move(summary));
+  };
   // After every finished pass: the checkpoint of the state the model continues from
   // (CoupledModel::run_pass), which a resumed run continues from too.
   const auto save_checkpoint = [&] {
@@ -358,11 +371,10 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
       }
       save_checkpoint();
       if (r.diverging) {
-        throw RunFailure(RunStatus::failed,
-                         fmt::format("the coupling loop diverges: its change grew {} passes in a row, to a head "
-                                     "change of {:.3e} and a displacement change of {:.3e} at coupling iteration {}",
-                                     r.growing_passes, r.head_change, r.displacement_change, r.iteration),
-                         current_summary());
+        throw failure_with_range(fmt::format("the coupling loop diverges: its change grew {} passes in a row, to a "
+                                             "head change of {:.3e} and a displacement change of {:.3e} at coupling "
+                                             "iteration {}",
+                                             r.growing_passes, r.head_change, r.displacement_change, r.iteration));
       }
       if (!r.escaping.empty())
         throw RunFailure(RunStatus::failed, describe_escape(r.escaping, r.iteration), current_summary());
@@ -384,10 +396,8 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
   } catch (const std::exception& e) {
     // A DDA step that fails while blocks fly off is the escape, not the step, to report.
     const std::vector<coupling::EscapingBlock> escaping = loop.blocks_beyond_their_size();
-    throw RunFailure(RunStatus::failed,
-                     fmt::format("coupling iteration {} failed: {}{}", loop.iterations() + 1, e.what(),
-                                 escaping.empty() ? "" : "; " + describe_escape(escaping, loop.iterations() + 1)),
-                     current_summary());
+    throw failure_with_range(fmt::format("coupling iteration {} failed: {}{}", loop.iterations() + 1, e.what(),
+                                         escaping.empty() ? "" : "; " + describe_escape(escaping, loop.iterations() + 1)));
   }
   if (stopped) {
     output::RunSummary summary = current_summary();

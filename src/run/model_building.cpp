@@ -341,6 +341,24 @@ dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::B
                                                                    : dda::ContactMethod::augmented_lagrangian;
   settings.penalty = m.penalty.value_or(0.0);
   settings.tension_cutoff = m.tension_cutoff;
+  if (m.penetration_tolerance) {
+    settings.penetration_tolerance = *m.penetration_tolerance;
+  } else if (const double a0 = make_joint_aperture_law(s).at_zero_stress(); s.joint.hydraulic() && a0 > 0.0) {
+    // Joints that conduct while closed read their aperture from the gap where it exceeds the
+    // penetration tolerance, and from the contact stress below it: a gap within the tolerance
+    // counts as closed. The DDA's own resolution, 1e-4 of the allowed step displacement (15 µm
+    // for a model 30 m high), would blur the micrometres the flow sees; at a fiftieth of
+    // a_r + V_m a seal's K_eff moves by under 0.2% as the tolerance halves again
+    // (docs/coupling.md, "Joint hydraulic apertures").
+    const double usual = dda::initial_penetration_tolerance(blocks, settings);
+    const double resolved = kJointApertureResolution * a0;
+    if (resolved < usual) {
+      settings.penetration_tolerance = resolved;
+      spdlog::debug("default used: mechanics.penetration_tolerance = {:.3g} m ({:g} of the joints' a_r + V_m; "
+                    "1e-4 of the allowed step displacement would be {:.3g} m)",
+                    resolved, kJointApertureResolution, usual);
+    }
+  }
 
   const double run_duration = mechanics_duration(m);
   for (const scenario::FixedPoint& f : m.fixed) {

@@ -38,6 +38,10 @@ std::vector<dda::BlockDefinition> blocks_of(const ModelGeometry& model);
 std::vector<dda::BlockDefinition> build_blocks(const scenario::Scenario& scenario,
                                                GeometryWarnings warnings = GeometryWarnings::logged);
 
+// The default contact penetration tolerance where the joints carry a hydraulic aperture, as a
+// fraction of their aperture at zero stress a_r + V_m (when that is below the DDA's own default).
+inline constexpr double kJointApertureResolution = 0.02;
+
 // The DDA model: blocks, materials, joint, settings and every load of [mechanics].
 dda::ModelDefinition build_mechanics_model(const scenario::Scenario& scenario,
                                            std::vector<dda::BlockDefinition> blocks);

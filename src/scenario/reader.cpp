@@ -228,8 +228,8 @@ void read_mechanics(ReadContext& ctx, const TableView& root, Scenario& s) {
   if (!t) return;
   const TableView m(ctx, *t, "mechanics",
                     {"analysis", "plane", "gravity", "time_step", "steps", "end_time",
-                     "max_displacement_ratio", "contact", "penalty", "tension_cutoff", "fixed", "load",
-                     "displacement", "traction", "measure", "roller", "initial_stress"});
+                     "max_displacement_ratio", "contact", "penalty", "penetration_tolerance", "tension_cutoff",
+                     "fixed", "load", "displacement", "traction", "measure", "roller", "initial_stress"});
   MechanicsDefinition mech;
   mech.analysis = m.choice("analysis", {"static", "dynamic"}, "static") == 1 ? Analysis::Dynamic
                                                                              : Analysis::Static;
@@ -265,6 +265,11 @@ void read_mechanics(ReadContext& ctx, const TableView& root, Scenario& s) {
   if (auto p = m.number("penalty")) {
     mech.penalty = *p;
     m.require("penalty", *p > 0.0, "must be > 0");
+  }
+  // Its default depends on the blocks and the joints: made, and reported, where they are built.
+  if (auto t = m.number("penetration_tolerance")) {
+    mech.penetration_tolerance = *t;
+    m.require("penetration_tolerance", *t > 0.0, "must be > 0");
   }
   mech.tension_cutoff = m.boolean("tension_cutoff").value_or(false);
 

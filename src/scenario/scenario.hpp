@@ -165,6 +165,9 @@ struct MechanicsDefinition {
   std::optional<double> max_displacement_ratio;
   ContactMethod contact = ContactMethod::AugmentedLagrangian;
   std::optional<double> penalty;  // N/m; derived from the stiffest material when absent
+  // m; empty: 1e-4 of the allowed step displacement, at most a fiftieth of the joints' a_r + V_m
+  // where they carry a hydraulic aperture (run::build_mechanics_model).
+  std::optional<double> penetration_tolerance;
   bool tension_cutoff = false;    // no closed contact pulls past T l (dda::Settings::tension_cutoff)
   std::vector<FixedPoint> fixed;
   std::vector<PointLoad> loads;

@@ -191,10 +191,12 @@ TEST(CoupledRun, HeadNormDoesNotDependOnTheDatum) {
 // A seal 1 km deep (tests/cli/scenarios/seal_at_depth.toml: hydrostatic pore pressure
 // p = ρ_w g (h − y), an in-situ stress given at its top's elevation, Barton–Bandis joints) and
 // the same seal drawn 1,030 m higher with every head raised by 1,030 m are one problem: the
-// same pass count, and the same conductivities and boundary flows to 1e-7 relative, the
-// coordinates' round-off (measured: 1.6e-9; at y ≈ −1000 m a double holds a position to
-// 1.1e-13 m, against 3.6e-15 m near 30 m, and the contact and clipping tolerances work in
-// those positions).
+// same pass count, and the same conductivities and boundary flows to 1e-5 relative, ten times
+// inside the loop's own tolerance (1e-4), which is as far as the loop determines its answer.
+// They differ by the coordinates' round-off (at y ≈ −1000 m a double holds a position to
+// 1.1e-13 m, against 3.6e-15 m near 30 m), which moves where the augmented Lagrangian stops
+// within its 0.9 µm penetration tolerance: measured 2.6e-7 (1.6e-9 at the 15 µm tolerance).
+// A pressure or stress taken from the wrong datum moves them by its whole size.
 TEST(CoupledRun, ASealDrawnHigherWithItsHeadsRaisedGivesTheSameAnswer) {
   const fs::path deep = fs::path(HYDRODDA_SOURCE_DIR) / "tests/cli/scenarios/seal_at_depth.toml";
   std::ifstream in(deep);
@@ -223,11 +225,11 @@ TEST(CoupledRun, ASealDrawnHigherWithItsHeadsRaisedGivesTheSameAnswer) {
   EXPECT_EQ(raised["iterations"], at_depth["iterations"]);
   for (const std::string region : {"seal", "reservoir"}) {
     const double k = at_depth["flow"]["regions"][region]["normalised_conductivity"];
-    EXPECT_NEAR(raised["flow"]["regions"][region]["normalised_conductivity"].get<double>(), k, 1e-7 * k) << region;
+    EXPECT_NEAR(raised["flow"]["regions"][region]["normalised_conductivity"].get<double>(), k, 1e-5 * k) << region;
   }
   for (const std::string boundary : {"bottom", "top"}) {
     const double q = at_depth["flow"]["boundaries"][boundary];
-    EXPECT_NEAR(raised["flow"]["boundaries"][boundary].get<double>(), q, 1e-7 * std::abs(q)) << boundary;
+    EXPECT_NEAR(raised["flow"]["boundaries"][boundary].get<double>(), q, 1e-5 * std::abs(q)) << boundary;
   }
 }
 
@@ -388,7 +390,8 @@ TEST(CoupledRun, APassWhoseStepsWereCutShortIsNotConverged) {
 // passes. So does Shi's 0.225 m, reaching across the short edges that the joints cut the beds'
 // faces into, since a corner at one junction is no contact with the collinear edge beyond the
 // next (ContactDetection.ACornerAtAJunctionIsNoContactWithTheCollinearEdgeBeyond): measured 4
-// passes, K_eff/K_m 18.720 against 18.755 and the top's uplift 2.684 against 2.698 mm. Before,
+// passes, K_eff/K_m 18.759 and the top's uplift 2.698 mm both, the penetration tolerance being
+// the 2.4 µm its joints' aperture sets at either ratio. Before,
 // taken, those contacts cut its steps to 6e-8 s, and the loop, which does not count such
 // passes, took 14 to reach 18.741 and 2.685 mm.
 TEST(CoupledRun, ACaprockOfThinBlocksConvergesAtFullSteps) {
@@ -543,7 +546,7 @@ TEST(CoupledRun, SidesHeldAtZeroAgainstAnInSituStressAreReached) {
 // sub-vertical joints every 5 m, 84 blocks on a reservoir slab, rollers, overburden, gravity,
 // the cubic law, joints closing by Barton–Bandis under σ'xx = 0.7 σ'yy): every head converges
 // within the file's 50 passes, and the seal conducts more at each higher head, the seepage
-// force relieving the joints' normal stress (measured K_eff/K_m 54.0, 60.4, 70.8 at 50, 150 and
+// force relieving the joints' normal stress (measured K_eff/K_m 54.4, 61.4, 71.0 at 50, 150 and
 // 250 m over the top).
 TEST(CoupledRun, SealConductivityRisesWithTheReservoirHead) {
   const fs::path seal = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/seal_over_reservoir.toml";

@@ -94,7 +94,9 @@ TEST(JointApertures, ClosedJointCarriesItsResidualApertureOnEveryMesh) {
     if (size == "0.2") text = replace_once(text, "figures = []", "figures = [\"png\"]");
     const JointRun r = run_text(text, folder, "mesh" + size);
     // With the joint keys the figures add the apertures the flow sees.
-    if (size == "0.2") EXPECT_TRUE(fs::exists(folder.path / ("mesh" + size) / "figures/hydraulic_apertures.png"));
+    if (size == "0.2") {
+      EXPECT_TRUE(fs::exists(folder.path / ("mesh" + size) / "figures/hydraulic_apertures.png"));
+    }
     ASSERT_TRUE(r.summary.contains("flow")) << size;
     EXPECT_TRUE(r.summary["converged"].get<bool>()) << size;
     const double q = right_outflow(r);
@@ -190,6 +192,35 @@ TEST(JointApertures, WithoutJointKeysAClosedJointCarriesNextToNothing) {
   EXPECT_GE(right_outflow(r), matrix_flow * (1.0 - 1e-9));
   EXPECT_LT(right_outflow(r), 1e-6 * joint_flow);
   EXPECT_EQ(last_fracture_value(r, "hydraulic_aperture"), 0.0);
+}
+
+}  // namespace
+
+namespace {
+
+// A gap within the DDA's penetration tolerance counts as closed and takes the closure law's
+// aperture under the face's stress, so the tolerance must resolve the joints' micrometres. The
+// seal 1 km deep (tests/cli/scenarios/seal_at_depth.toml, a_r + V_m = 45 µm) at 600 m over its
+// top: its default, a fiftieth of a_r + V_m (0.9 µm), and half that give K_eff/K_m within 0.5%
+// (measured 2.7087 and 2.7135: 0.18%); the DDA's own 1e-4 of the allowed step displacement
+// (15 µm) gave 2.6358, 2.7% lower, its seal base open along 1.8 m instead of 9 m.
+TEST(JointApertures, ASealsConductivityIsSettledInThePenetrationTolerance) {
+  Folder folder("tolerance");
+  const std::string base = replace_once(read_text(fs::path(HYDRODDA_SOURCE_DIR) / "tests/cli/scenarios/seal_at_depth.toml"),
+                                        "head = 150.0", "head = 600.0");
+  const auto conductivity = [&](const std::string& name, const std::string& tolerance) {
+    const std::string text =
+        tolerance.empty() ? base : replace_once(base, "steps = 20\n", "steps = 20\npenetration_tolerance = " + tolerance + "\n");
+    const JointRun r = run_text(text, folder, name);
+    EXPECT_TRUE(r.summary["converged"].get<bool>()) << name;
+    return r.summary["flow"]["regions"]["seal"]["normalised_conductivity"].get<double>();
+  };
+  const double by_default = conductivity("default", "");
+  const double halved = conductivity("halved", "4.5e-7");
+  const double coarse = conductivity("coarse", "1.5e-5");
+  EXPECT_NEAR(by_default, halved, 0.005 * halved);
+  EXPECT_LT(coarse, 0.98 * halved);
+  std::printf("K_eff/K_m: %.6g by default (0.9 um), %.6g at 0.45 um, %.6g at 15 um\n", by_default, halved, coarse);
 }
 
 }  // namespace

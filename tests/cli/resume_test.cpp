@@ -91,15 +91,23 @@ TEST(Resume, AndersonAcceleratedRunResumesBitForBit) {
   fs::remove(file);
 }
 
-// The seal over a reservoir solves its third pass on the kept flow factor with no correction,
-// which rounds the factor to single precision, and its fourth on that factor. Resumed after
-// pass 3, the factor is made again from its permeability and rounded again, and pass 4 reaches
-// the same heads to the bit. (Whether the checkpoint's precision flag is honoured shows only
-// where the next pass would correct a downdate: see
+// The seal over a reservoir, 150 m of head over its top, solves its third pass on the kept flow
+// factor with no correction, which rounds the factor to single precision, and its fourth on
+// that factor. Resumed after pass 3, the factor is made again from its permeability and rounded
+// again, and pass 4 reaches the same heads to the bit. (Whether the checkpoint's precision flag
+// is honoured shows only where the next pass would correct a downdate: see
 // FactorReuse.ARestoredSinglePrecisionFactorTakesTheSamePath.)
 TEST(Resume, AFlowFactorKeptInSinglePrecisionResumesBitForBit) {
   Folders f("single");
-  const fs::path seal = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/seal_over_reservoir.toml";
+  std::ifstream in(fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/seal_over_reservoir.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string scenario = text.str();
+  const std::string head = "head = 125.0 ";
+  ASSERT_NE(scenario.find(head), std::string::npos);
+  scenario.replace(scenario.find(head), head.size(), "head = 175.0 ");
+  const fs::path seal = fs::temp_directory_path() / "hydrodda-resume-single.toml";
+  std::ofstream(seal) << scenario;
   const auto whole = run_program("-v run " + seal.string() + " -o " + f.whole.string());
   ASSERT_EQ(whole.exit_code, 0) << whole.output;
   // Pass 3's line in the log: on the kept factor, nothing corrected.
@@ -115,6 +123,7 @@ TEST(Resume, AFlowFactorKeptInSinglePrecisionResumesBitForBit) {
   const auto second = run_program("run --resume " + f.parts.string());
   ASSERT_EQ(second.exit_code, 0) << second.output;
   expect_same_results(f.whole, f.parts);
+  fs::remove(seal);
 }
 
 // A run of mesh.refine_tips stopped in its second round resumes on that round's mesh: the

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -13,6 +14,7 @@
 #include "dda/system.hpp"
 #include "geometry/polygon.hpp"
 #include "run/model_building.hpp"
+#include "scenario/diagnostics.hpp"
 #include "scenario/reader.hpp"
 
 namespace dda = hydrodda::dda;
@@ -96,6 +98,45 @@ TEST(ContactDistance, BlocksWideAgainstTheModelKeepShisRatio) {
   const scenario::Scenario s = scenario::parse_scenario(text, "column.toml");
   EXPECT_FALSE(s.mechanics->max_displacement_ratio.has_value());
   EXPECT_EQ(run::build_mechanics_model(s, run::build_blocks(s)).settings.max_displacement_ratio, 0.01);
+}
+
+// The penetration tolerance where the joints carry a hydraulic aperture: a gap within the
+// tolerance counts as closed and takes the closure law's aperture, so the default, 1e-4 of
+// the allowed step displacement (1.5e-5 m for this 30 m model), falls to a fiftieth of the
+// joints' aperture at zero stress a_r + V_m (5 + 40 µm here: 9e-7 m). A given value is kept;
+// without the joint keys the DDA's own default stands.
+TEST(PenetrationTolerance, JointsWithAHydraulicApertureSetItBelowTheirAperture) {
+  const std::filesystem::path seal = std::filesystem::path(HYDRODDA_SOURCE_DIR) / "tests/cli/scenarios/seal_at_depth.toml";
+  const scenario::Scenario s = scenario::read_scenario(seal);
+  const std::vector<dda::BlockDefinition> blocks = run::build_blocks(s);
+  const dda::ModelDefinition model = run::build_mechanics_model(s, blocks);
+  EXPECT_NEAR(model.settings.penetration_tolerance, 0.02 * (5e-6 + 4e-5), 1e-18);
+  EXPECT_EQ(dda::System(model).penetration_tolerance(), model.settings.penetration_tolerance);
+
+  scenario::Scenario given = s;
+  given.mechanics->penetration_tolerance = 3e-6;
+  EXPECT_EQ(run::build_mechanics_model(given, blocks).settings.penetration_tolerance, 3e-6);
+
+  scenario::Scenario plain = s;
+  plain.joint.residual_aperture.reset();
+  plain.joint.normal_stiffness.reset();
+  plain.joint.max_closure.reset();
+  const dda::ModelDefinition unresolved = run::build_mechanics_model(plain, blocks);
+  EXPECT_EQ(unresolved.settings.penetration_tolerance, 0.0);  // the DDA's own: 1e-4 r w0
+  EXPECT_NEAR(dda::System(unresolved).penetration_tolerance(), 1e-4 * 0.01 * 15.0, 1e-15);
+}
+
+TEST(PenetrationTolerance, AValueNotAboveZeroIsRefused) {
+  for (const std::string value : {"0.0", "-1e-6"}) {
+    try {
+      scenario::parse_scenario(bedded_column("penetration_tolerance = " + value + "\n"), "column.toml");
+      ADD_FAILURE() << value << " was accepted";
+    } catch (const scenario::ScenarioError& e) {
+      EXPECT_NE(std::string(e.what()).find("mechanics.penetration_tolerance: must be > 0"), std::string::npos) << e.what();
+    }
+  }
+  const scenario::Scenario s = scenario::parse_scenario(bedded_column("penetration_tolerance = 2e-6\n"), "column.toml");
+  EXPECT_EQ(s.mechanics->penetration_tolerance, std::optional<double>(2e-6));
 }
 
 }  // namespace

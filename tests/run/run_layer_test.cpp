@@ -339,13 +339,15 @@ TEST(CoupledModel, AnAbandonedPassLeavesTheModelAtTheLastFinishedPass) {
 }
 
 TEST(CoupledModel, TheFlowFactorsPrecisionGoesWithItsState) {
-  // The seal over a reservoir runs its third pass on the kept flow factor without a correction,
-  // which rounds the factor to single precision. The exported state says so, and a model that
-  // imports it holds its factor in single precision too (it is corrected only where elements
-  // open, so the next pass's path depends on it:
+  // The seal over a reservoir, 150 m of head over its top, runs its third pass on the kept flow
+  // factor without a correction, which rounds the factor to single precision. The exported
+  // state says so, and a model that imports it holds its factor in single precision too (it is
+  // corrected only where elements open, so the next pass's path depends on it:
   // FactorReuse.ARestoredSinglePrecisionFactorTakesTheSamePath).
-  const scenario::Scenario s =
+  scenario::Scenario s =
       scenario::read_scenario(fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/seal_over_reservoir.toml");
+  ASSERT_EQ(s.flow->boundaries[0].name, "bottom");
+  s.flow->boundaries[0].value = 175.0;
   run::CoupledModel running(s);
   running.run_pass();
   EXPECT_FALSE(running.export_state().coupling.kept_factor_single_precision);  // factored afresh
