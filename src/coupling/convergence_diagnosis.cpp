@@ -146,7 +146,8 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
   d.period = cycle_period(last);
   const bool two_states = return_ratio(head_change, head_change_two_passes, first) < 0.1;
   const bool swinging = two_states || alternation(last) >= 0.6;
-  if (head_change.size() < 4) d.behaviour = NonConvergence::too_few_passes;
+  if (!d.head_failed && !d.displacement_failed) d.behaviour = NonConvergence::not_counted;
+  else if (head_change.size() < 4) d.behaviour = NonConvergence::too_few_passes;
   else if (d.period > 0) d.behaviour = NonConvergence::oscillating;
   else if (last.size() >= 4 && swinging && d.rate > 0.95) d.behaviour = NonConvergence::oscillating;
   else if (d.rate > 1.05) d.behaviour = NonConvergence::diverging;
@@ -159,10 +160,15 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
   std::string norms = d.head_failed && d.displacement_failed ? "the head and displacement changes"
                       : d.head_failed                        ? "the head change"
                                                              : "the displacement change";
-  if (!d.head_failed && !d.displacement_failed) norms = "neither change (the last pass could not count)";
   const std::string name = head_worse ? "head" : "displacement";
   const std::string level = format_number(all.back());
   switch (d.behaviour) {
+    case NonConvergence::not_counted:
+      // The run says why the pass could not count (steps cut short, blocks not at rest).
+      d.text = "both changes were under the tolerance at the last pass (the head change at " +
+               format_number(head_change.back()) + ", the displacement change at " +
+               format_number(displacement_change.back()) + "), but that pass could not count";
+      break;
     case NonConvergence::too_few_passes:
       d.text = norms + " stayed above the tolerance after " + std::to_string(head_change.size()) +
                " passes, too few to tell how the loop goes (the " + name + " change at " + level +

@@ -15,6 +15,7 @@ enum class NonConvergence {
   diverging,         // rising
   erratic,           // jumping from pass to pass more than any steady trend explains
   too_few_passes,    // fewer than four passes: too few to tell
+  not_counted,       // both norms under the tolerance at the last pass, which could not count
 };
 
 struct ConvergenceDiagnosis {
@@ -28,8 +29,10 @@ struct ConvergenceDiagnosis {
 };
 
 // From the norms of every pass (history.csv's head_change, displacement_change and
-// head_change_two_passes) and the tolerance. The failed norm is the larger of the two (relative
-// to the tolerance) at the last pass; its last passes (up to ten, the first left out) are
+// head_change_two_passes) and the tolerance. When neither norm is above the tolerance at the
+// last pass (a pass that could not count: its steps were cut short, or its blocks were not at
+// rest), their trend says nothing: not counted. Otherwise the failed norm is the larger of the
+// two (relative to the tolerance) at the last pass; its last passes (up to ten, the first left out) are
 // fitted by log c = a + k log r:
 //   too few passes when fewer than three are fitted (a run of three passes or less);
 //   oscillating when the norm cycles: its last p values rise and fall and each is within 10%

@@ -239,6 +239,7 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
   int last_written = checkpoint.written_iterations.empty() ? 0 : checkpoint.written_iterations.back();
   bool converged = false;
   bool last_pass_cut_short = false;  // its last DDA step was cut short (PassReport::full_time_step)
+  bool last_pass_moving = false;     // its blocks still moved after the settle steps (PassReport::at_rest)
   double shortest_time_step = 0.0;   // of the last pass
   bool stopped = false;  // by stop_after
   // The cubic law's wedge tips (docs/coupling.md, "Wedge tips").
@@ -359,6 +360,7 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
                      "settle (coupling.settle); the pass does not count as converged",
                      r.iteration, r.settling_steps);
       last_pass_cut_short = !r.full_time_step;
+      last_pass_moving = !r.at_rest;
       shortest_time_step = r.shortest_time_step;
       if (r.under_tolerance && !r.full_time_step)
         spdlog::warn("coupling iteration {}: {}; the pass does not count as converged", r.iteration,
@@ -462,6 +464,9 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
       summary.message += "; farthest from where they started: " + describe_farthest(loop.block_displacements());
     if (last_pass_cut_short)
       summary.message += "; in the last pass " + describe_cut_steps(shortest_time_step, s.mechanics->time_step);
+    if (last_pass_moving)
+      summary.message += "; in the last pass the blocks still moved after its DDA steps and the settle steps "
+                         "(coupling.settle)";
     if (summary.flow)
       if (const std::string moved = describe_last_passes(columns, checkpoint.history, summary.flow->regions);
           !moved.empty())
