@@ -280,6 +280,9 @@ class System {
   double allowed_displacement_ = 0.0;
   double contact_distance_ = 0.0;
   double penetration_tolerance_ = 0.0;
+  // The augmented Lagrangian's passes allowed in this attempt at a step: max_lagrangian_iterations,
+  // twice that once its forces failed to settle (System::step).
+  int lagrangian_limit_ = 0;
 };
 
 }  // namespace hydrodda::dda

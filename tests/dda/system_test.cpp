@@ -119,6 +119,37 @@ TEST(Selection, FindsVerticesAndEdgesOnASegment) {
   EXPECT_DOUBLE_EQ(t[0].normal_end, -1.0);    // vertex (0, 1)
 }
 
+// Forces that do not settle in the passes allowed are tried once more, at the same step, with
+// twice the passes, before the step is cut. A 1 m block set down on a fixed base (static,
+// gravity, penalty 1e8 N/m, tolerance 1e-6 m) needs 4 augmented Lagrangian passes to bring its
+// penetration under the tolerance: allowed 4 it takes its 0.01 s step at once; allowed 2 it is
+// retried once with 4 (6 passes in all) and accepted at the full 0.01 s, where it used to be
+// cut three times, to 0.27 ms.
+TEST(System, ContactForcesGetTwiceThePassesBeforeTheStepIsCut) {
+  const auto first_step = [](int passes) {
+    ModelDefinition m;
+    m.materials = {Material{2500.0, 1.0e10, 0.25}};
+    m.blocks.push_back({make_rectangle(0, -1, 4, 0), 0, true});
+    m.blocks.push_back({make_rectangle(1, 0, 2, 1), 0, false});
+    m.joint = {30.0, 0.0, 0.0};
+    m.settings.analysis = Analysis::static_;
+    m.settings.time_step = 1e-2;
+    m.settings.penalty = 1e8;
+    m.settings.penetration_tolerance = 1e-6;
+    m.settings.max_lagrangian_iterations = passes;
+    System system(std::move(m));
+    return system.step();
+  };
+  const StepReport enough = first_step(4);
+  EXPECT_EQ(enough.retries, 0);
+  EXPECT_EQ(enough.lagrangian_iterations, 4);
+  const StepReport doubled = first_step(2);
+  EXPECT_EQ(doubled.retries, 1);
+  EXPECT_EQ(doubled.lagrangian_iterations, 2 + 4);
+  EXPECT_EQ(doubled.time_step, 1e-2);
+  EXPECT_LE(doubled.max_penetration, 1e-6);
+}
+
 }  // namespace
 }  // namespace hydrodda::dda
 
