@@ -204,7 +204,7 @@ namespace {
 // top: its default, a fiftieth of a_r + V_m (0.9 µm), and half that give K_eff/K_m within 0.5%
 // (measured 2.70868 and 2.70877; a quarter of it, 2.7178, 0.3% above); the DDA's own 1e-4 of
 // the allowed step displacement (15 µm) gave 2.6358, 2.7% lower, its seal base open along 1.8 m
-// instead of 9 m.
+// instead of 10.5 m.
 TEST(JointApertures, ASealsConductivityIsSettledInThePenetrationTolerance) {
   Folder folder("tolerance");
   const std::string base = replace_once(read_text(fs::path(HYDRODDA_SOURCE_DIR) / "tests/cli/scenarios/seal_at_depth.toml"),
