@@ -110,17 +110,15 @@ std::string describe_last_passes(const std::vector<std::string>& columns,
     const auto column = std::find(columns.begin(), columns.end(), "region_conductivity_" + r.name);
     if (column == columns.end() || !(r.matrix_conductivity > 0.0)) continue;
     const auto at = static_cast<std::size_t>(column - columns.begin());
-    output::RegionSummary::PassRange range{0, std::numeric_limits<double>::infinity(),
+    output::RegionSummary::PassRange range{static_cast<int>(passes), std::numeric_limits<double>::infinity(),
                                            -std::numeric_limits<double>::infinity()};
     for (std::size_t k = rows.size() - passes; k < rows.size(); ++k) {
       if (at >= rows[k].size() || rows[k][at].empty()) continue;  // a region that held no element
       const double normalised = std::stod(rows[k][at]) / r.matrix_conductivity;
       range.least = std::min(range.least, normalised);
       range.largest = std::max(range.largest, normalised);
-      ++range.passes;
     }
-    if (range.passes == 0) continue;
-    range.passes = static_cast<int>(passes);
+    if (!(range.least <= range.largest)) continue;  // no value in those passes
     r.last_passes = range;
     // A region whose answer did not move (its permeability fixed) is no news in the message.
     const double spread = (range.largest - range.least) / std::abs(r.normalised_conductivity);
@@ -274,14 +272,17 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
     }
     return summary;
   };
-  // A run that failed after some passes: its message and state, and how far each region's answer
-  // moved over its last passes.
+  // A run that ends unconverged or failed: `message` and `summary` get how far each region's
+  // answer moved over its last passes.
+  const auto add_last_passes = [&](output::RunSummary& summary, std::string& message) {
+    if (!summary.flow) return;
+    if (const std::string moved = describe_last_passes(columns, checkpoint.history, summary.flow->regions);
+        !moved.empty())
+      message += "; " + moved;
+  };
   const auto failure_with_range = [&](std::string message) {
     output::RunSummary summary = current_summary();
-    if (summary.flow)
-      if (const std::string moved = describe_last_passes(columns, checkpoint.history, summary.flow->regions);
-          !moved.empty())
-        message += "; " + moved;
+    add_last_passes(summary, message);
     return RunFailure(RunStatus::failed, std::move(message), std::move(summary));
   };
   // After every finished pass: the checkpoint of the state the model continues from
@@ -467,10 +468,7 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
     if (last_pass_moving)
       summary.message += "; in the last pass the blocks still moved after its DDA steps and the settle steps "
                          "(coupling.settle)";
-    if (summary.flow)
-      if (const std::string moved = describe_last_passes(columns, checkpoint.history, summary.flow->regions);
-          !moved.empty())
-        summary.message += "; " + moved;
+    add_last_passes(summary, summary.message);
     spdlog::warn("{}", summary.message);
   }
   context.write_summary(summary);  // the run's result is on disk before the figures are drawn

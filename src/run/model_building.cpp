@@ -348,8 +348,8 @@ dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::B
     // penetration tolerance, and from the contact stress below it: a gap within the tolerance
     // counts as closed. The DDA's own resolution, 1e-4 of the allowed step displacement (15 µm
     // for a model 30 m high), would blur the micrometres the flow sees; at a fiftieth of
-    // a_r + V_m a seal's K_eff moves by under 0.2% as the tolerance halves again
-    // (docs/coupling.md, "Joint hydraulic apertures").
+    // a_r + V_m, halving the tolerance moves a seal's K_eff by 0.1% at most (docs/coupling.md,
+    // "Joint hydraulic apertures").
     const double usual = dda::initial_penetration_tolerance(blocks, settings);
     const double resolved = kJointApertureResolution * a0;
     if (resolved < usual) {

@@ -208,7 +208,8 @@ namespace {
 TEST(JointApertures, ASealsConductivityIsSettledInThePenetrationTolerance) {
   Folder folder("tolerance");
   const std::string base = replace_once(read_text(fs::path(HYDRODDA_SOURCE_DIR) / "tests/cli/scenarios/seal_at_depth.toml"),
-                                        "head = 150.0", "head = 600.0");
+                                        "head = 150.0", "head = 600.0") +
+                           "\n[output]\nfigures = []\n";
   const auto conductivity = [&](const std::string& name, const std::string& tolerance) {
     const std::string text =
         tolerance.empty() ? base : replace_once(base, "steps = 20\n", "steps = 20\npenetration_tolerance = " + tolerance + "\n");

@@ -99,10 +99,7 @@ TEST(Resume, AndersonAcceleratedRunResumesBitForBit) {
 // FactorReuse.ARestoredSinglePrecisionFactorTakesTheSamePath.)
 TEST(Resume, AFlowFactorKeptInSinglePrecisionResumesBitForBit) {
   Folders f("single");
-  std::ifstream in(fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/seal_over_reservoir.toml");
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string scenario = text.str();
+  std::string scenario = read_file(fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/seal_over_reservoir.toml");
   const std::string head = "head = 125.0 ";
   ASSERT_NE(scenario.find(head), std::string::npos);
   scenario.replace(scenario.find(head), head.size(), "head = 175.0 ");
