@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""seal_scenario.py [--columns C] [--beds B] [--mesh-size H] [--tilt T] [--undulation U] [--joint-sets] [--in-situ] > seal.toml
+"""seal_scenario.py [--columns C] [--beds B] [--mesh-size H] [--tilt T] [--undulation U] [--joint-sets] [--in-situ] [--settle] > seal.toml
 
 A fractured seal for timing coupled runs at scale: a 100 m x 20 m layer cut by C joints that
 cross it from base to top (each tilted at random by up to T, 8 degrees by default) and B
@@ -19,6 +19,10 @@ With --in-situ the joints are closed and the seal is at depth, as docs/guide.md 
 rollers on the sides and base, the overburden on the top, the blocks started in the effective
 stress that balances the steady seepage, the pressure hydrostatic (see in_situ_loads). Without
 it, the joints are 2 mm open, the base and sides are held and the blocks are free to settle.
+
+Its passes run a fixed number of DDA steps (coupling.settle = false), as what it times is a
+pass: the free blocks take thousands of steps to come to rest. --settle lets each pass step on
+until they are at rest (the program's default).
 """
 import argparse
 import math
@@ -37,6 +41,7 @@ def main():
     parser.add_argument("--passes", type=int, default=3, help="coupling passes")
     parser.add_argument("--steps", type=int, default=20, help="DDA steps per pass")
     parser.add_argument("--joint-sets", action="store_true", help="two generated joint sets, not listed traces")
+    parser.add_argument("--settle", action="store_true", help="passes that step on until the blocks are at rest")
     parser.add_argument("--in-situ", action="store_true",
                         help="closed joints in their in-situ stress, on rollers, under an overburden (hydrostatic pressure)")
     args = parser.parse_args()
@@ -147,6 +152,7 @@ def main():
         "[coupling]",
         "tolerance = 1.0e-4",
         f"max_iterations = {args.passes}",
+        f"settle = {'true' if args.settle else 'false'}",
         "",
         "[output]",
         f"every = {args.passes}",

@@ -129,7 +129,7 @@ double return_ratio(const std::vector<double>& change, const std::vector<double>
 ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_change,
                                               const std::vector<double>& displacement_change,
                                               const std::vector<double>& head_change_two_passes, double tolerance,
-                                              std::string_view acceleration) {
+                                              std::string_view acceleration, bool settling) {
   if (head_change.empty() || head_change.size() != displacement_change.size() ||
       head_change.size() != head_change_two_passes.size())
     throw std::invalid_argument("convergence diagnosis: one head and one displacement change per pass are needed");
@@ -210,9 +210,12 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
       d.text = norms + " stayed above the tolerance: the " + name + " change drifts (" +
                (d.rate < 0.95 ? "at " + level + ", falling only as a power of the passes, not geometrically"
                               : "near " + level + ", neither falling nor alternating") +
-               "): the blocks keep moving from pass to pass; try coupling.settle = true (each pass steps on "
-               "until the blocks are at rest) or more mechanics.steps per pass, or check that the fluid load "
-               "leaves the blocks an equilibrium";
+               (settling ? std::string("): the blocks keep moving from pass to pass, each pass coming to rest a little "
+                                       "farther on; check that the fluid load leaves the blocks an equilibrium "
+                                       "(history.csv's largest_opening shows a joint that keeps opening)")
+                         : std::string("): the blocks keep moving from pass to pass; try coupling.settle = true (each "
+                                       "pass steps on until the blocks are at rest) or more mechanics.steps per pass, "
+                                       "or check that the fluid load leaves the blocks an equilibrium"));
       break;
   }
   return d;

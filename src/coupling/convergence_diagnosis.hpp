@@ -47,10 +47,11 @@ struct ConvergenceDiagnosis {
 //   k with a slope above −2 (it falls only as a power of the pass k); still converging when
 //   r < 0.95 otherwise; drifting otherwise.
 // `acceleration` is coupling.acceleration as run ("none", "aitken", "anderson"): the advice
-// names an acceleration only to a loop that had none.
+// names an acceleration only to a loop that had none; `settling` is coupling.settle as run:
+// it names settling passes only to a loop whose passes did not settle.
 ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_change,
                                               const std::vector<double>& displacement_change,
                                               const std::vector<double>& head_change_two_passes, double tolerance,
-                                              std::string_view acceleration = "none");
+                                              std::string_view acceleration = "none", bool settling = false);
 
 }  // namespace hydrodda::coupling

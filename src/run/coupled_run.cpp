@@ -458,7 +458,8 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
     for (const std::vector<std::string>& row : checkpoint.history) two_passes.push_back(std::stod(row[row.size() - 3]));
     const coupling::ConvergenceDiagnosis why =
         coupling::diagnose_non_convergence(convergence.head_change, convergence.displacement_change, two_passes,
-                                           s.coupling.tolerance, acceleration_name(s.coupling.acceleration));
+                                           s.coupling.tolerance, acceleration_name(s.coupling.acceleration),
+                                           s.coupling.settle);
     summary.message = fmt::format("the coupling loop did not converge in {} iterations (tolerance {:g}): {}",
                                   s.coupling.max_iterations, s.coupling.tolerance, why.text);
     if (why.behaviour == coupling::NonConvergence::drifting || why.behaviour == coupling::NonConvergence::diverging)

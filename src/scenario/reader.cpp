@@ -271,7 +271,7 @@ void read_mechanics(ReadContext& ctx, const TableView& root, Scenario& s) {
     mech.penetration_tolerance = *t;
     m.require("penetration_tolerance", *t > 0.0, "must be > 0");
   }
-  mech.tension_cutoff = m.boolean("tension_cutoff").value_or(false);
+  mech.tension_cutoff = m.boolean("tension_cutoff").value_or(true);
 
   for (const toml::table* ft : m.tables("fixed")) {
     const TableView f(ctx, *ft, "mechanics.fixed", {"point"});
@@ -481,10 +481,15 @@ void read_mesh(ReadContext& ctx, const TableView& root, Scenario& s) {
 }
 
 void read_coupling(ReadContext& ctx, const TableView& root, Scenario& s) {
+  // Passes settle by default where they can: at rest means nothing in a dynamic analysis,
+  // whose blocks keep their velocity.
+  const bool static_analysis = s.mechanics && s.mechanics->analysis == Analysis::Static;
+  s.coupling.settle = static_analysis;
   const toml::table* t = root.table("coupling");
   if (!t) {
     if (s.flow && s.mechanics)
-      ctx.defaults.push_back({"coupling", "{ tolerance = 1e-4, max_iterations = 50, relaxation = 1 }"});
+      ctx.defaults.push_back({"coupling", fmt::format("{{ tolerance = 1e-4, max_iterations = 50, relaxation = 1, settle = {} }}",
+                                                      static_analysis)});
     return;
   }
   const TableView c(ctx, *t, "coupling",
@@ -502,8 +507,11 @@ void read_coupling(ReadContext& ctx, const TableView& root, Scenario& s) {
   s.coupling.acceleration =
       static_cast<LoopAcceleration>(c.choice("acceleration", {"none", "aitken", "anderson"}, "none"));
   if (auto n = c.integer("ramp_passes", 1, 1'000'000)) s.coupling.ramp_passes = *n;
-  s.coupling.settle = c.boolean("settle").value_or(false);
-  // At rest means nothing in a dynamic analysis, whose blocks keep their velocity.
+  if (auto settle = c.boolean("settle")) {
+    s.coupling.settle = *settle;
+  } else if (s.flow && s.mechanics) {
+    ctx.defaults.push_back({"coupling.settle", static_analysis ? "true" : "false"});
+  }
   c.require("settle", !s.coupling.settle || !s.mechanics || s.mechanics->analysis == Analysis::Static,
             "needs mechanics.analysis = \"static\"");
 }

@@ -168,7 +168,7 @@ struct MechanicsDefinition {
   // m; empty: 1e-4 of the allowed step displacement, at most a fiftieth of the joints' a_r + V_m
   // where they carry a hydraulic aperture (run::build_mechanics_model).
   std::optional<double> penetration_tolerance;
-  bool tension_cutoff = false;    // no closed contact pulls past T l (dda::Settings::tension_cutoff)
+  bool tension_cutoff = true;     // no closed contact pulls past T l (dda::Settings::tension_cutoff)
   std::vector<FixedPoint> fixed;
   std::vector<PointLoad> loads;
   std::vector<PrescribedDisplacement> displacements;
@@ -244,7 +244,7 @@ struct CouplingDefinition {
   double relaxation = 1.0;
   LoopAcceleration acceleration = LoopAcceleration::none;
   int ramp_passes = 1;   // the fluid load raised over the first passes
-  bool settle = false;   // each pass steps on until the blocks are at rest
+  bool settle = false;   // each pass steps on until the blocks are at rest (read: static analyses)
 };
 
 // The ParaView series a run writes (output.fields).

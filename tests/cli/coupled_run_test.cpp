@@ -233,7 +233,7 @@ TEST(CoupledRun, ASealDrawnHigherWithItsHeadsRaisedGivesTheSameAnswer) {
 }
 
 // The cubic-law symmetric flexure at 30 m of head cycles between two states pass after pass
-// (head change 0.23, 0.26, 0.23, ... on the old norm): without acceleration the run ends
+// (its head change comes back near 0.13 every other pass): without acceleration the run ends
 // unconverged and says the head change oscillates; with Aitken's relaxation or Anderson's
 // mixing it converges.
 TEST(CoupledRun, OscillatingLoopIsNamedAndAitkenSettlesIt) {
@@ -277,23 +277,28 @@ TEST(CoupledRun, OscillatingLoopIsNamedAndAitkenSettlesIt) {
   // Aitken is the file's own acceleration.
   const auto aitken = run_to_summary(edited_scenario(flexure, "hydrodda-aitken", cubic_30m));
   EXPECT_EQ(aitken["converged"], true) << aitken["message"];
-  // Anderson's mixing of the last five passes settles it too (measured: 8 passes), at the
-  // state Aitken's reaches (K/K_m 10.855 both, to 1e-6; the plain loop's last pass said 12.96).
+  // Anderson's mixing of the last five passes settles it too, at an equilibrium of its own:
+  // the layer's joints carry no tension, its blocks rest on friction, and the shear a locked
+  // contact holds depends on the path the loop took (measured K/K_m 13.850 after Aitken's
+  // 32 passes, 14.084 after Anderson's; at a loop tolerance of 1e-6, 13.853 and 14.075, so two
+  // equilibria and not the tolerance). They agree within 2%.
   auto anderson_edits = cubic_30m;
   anderson_edits.push_back({"acceleration = \"aitken\"", "acceleration = \"anderson\""});
   const auto anderson = run_to_summary(edited_scenario(flexure, "hydrodda-anderson", anderson_edits));
   EXPECT_EQ(anderson["converged"], true) << anderson["message"];
   const double k_aitken = aitken["flow"]["regions"]["fractured"]["normalised_conductivity"];
   const double k_anderson = anderson["flow"]["regions"]["fractured"]["normalised_conductivity"];
-  EXPECT_NEAR(k_anderson, k_aitken, 1e-4 * k_aitken);
+  EXPECT_NEAR(k_anderson, k_aitken, 2e-2 * k_aitken);
 }
 
 // The displacement norm has a scale of its own (docs/coupling.md): a seal that starts in
 // equilibrium (in-situ stress on rollers, 300 m of overpressure in the stress gradient) moves
 // its blocks some 2.6e-7 m between passes, under 1e-4 of ℓ = 0.04 m, and converges in a few
 // passes (against ‖u‖ alone it ran out of its 20 at a change of 0.87). The jacked block at
-// 1.1 H* is pushed up millimetres every pass: its change stays above the tolerance every pass
-// and the run is not converged.
+// 1.1 H*, with passes of fixed steps (coupling.settle = false; settling passes throw it off in
+// the first: CoupledVerification.HydraulicJackingStartsAtTheForceBalance), is pushed up
+// millimetres every pass: its change stays above the tolerance every pass and the run is not
+// converged.
 TEST(CoupledRun, ModelInEquilibriumConvergesAndAMovingOneDoesNot) {
   const fs::path seal = fs::path(HYDRODDA_SOURCE_DIR) / "tests/cli/scenarios/seal_in_situ_stress.toml";
   const auto settled = run_to_summary(edited_scenario(seal, "hydrodda-settled-seal", {}));
@@ -301,7 +306,9 @@ TEST(CoupledRun, ModelInEquilibriumConvergesAndAMovingOneDoesNot) {
   EXPECT_LE(settled["iterations"].get<int>(), 4);
 
   const fs::path jacking = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/verification/coupled_hydraulic_jacking.toml";
-  const fs::path moving = edited_scenario(jacking, "hydrodda-moving-block", {{"density = 2500.0", "density = 2182.0"}});
+  const fs::path moving = edited_scenario(jacking, "hydrodda-moving-block",
+                                         {{"density = 2500.0", "density = 2182.0"},
+                                          {"relaxation = 1.0", "relaxation = 1.0\nsettle = false"}});
   const fs::path out = fs::temp_directory_path() / "hydrodda-moving-block-out";
   fs::remove_all(out);
   const auto result = run_program("-q run " + moving.string() + " -o " + out.string());
@@ -355,19 +362,19 @@ RunRecord run_and_read(const fs::path& file) {
   return record;
 }
 
-// The asymmetric flexure at 10 MPa with the tension cutoff (mechanics.tension_cutoff): its
-// unloaded joints chatter, and its passes 2 to 13 run on steps cut to about 1% of the time
-// step, moving the blocks little though they are far from equilibrium (pass 14 moves them by
-// half their displacement). With coupling.tolerance = 5e-3 both norms are under it from pass 5
-// on; counted, the loop stopped there at K_eff/K_m 1.0015 with the layer lifted 0.65 mm. Not
-// counted, it goes on and converges where a tolerance of 1e-4 does (measured 16 passes,
-// 1.0262 and 5.26 mm, against 17 passes, 1.0262 and 5.26 mm): K_eff within 1e-3 and the
-// largest displacement within 2% of the tight run's.
+// The asymmetric flexure at 10 MPa with passes of fixed steps (coupling.settle = false): its
+// joints, which carry no tension, chatter, and its passes 2 to 13 run on steps cut to about 1%
+// of the time step, moving the blocks little though they are far from equilibrium (pass 14
+// moves them by half their displacement). With coupling.tolerance = 5e-3 both norms are under
+// it from pass 5 on; counted, the loop stopped there at K_eff/K_m 1.0015 with the layer lifted
+// 0.65 mm. Not counted, it goes on and converges where a tolerance of 1e-4 does (measured 16
+// passes, 1.0262 and 5.26 mm, against 17 passes, 1.0262 and 5.26 mm): K_eff within 1e-3 and
+// the largest displacement within 2% of the tight run's.
 TEST(CoupledRun, APassWhoseStepsWereCutShortIsNotConverged) {
   const fs::path flexure = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/paper/asymmetric_flexure_10mpa.toml";
-  const std::vector<std::pair<std::string, std::string>> cutoff{{"[mechanics]", "[mechanics]\ntension_cutoff = true"},
+  const std::vector<std::pair<std::string, std::string>> fixed_steps{{"[coupling]", "[coupling]\nsettle = false"},
                                                                 {"figures = [\"png\"]", "figures = []"}};
-  auto loose_edits = cutoff;
+  auto loose_edits = fixed_steps;
   loose_edits.push_back({"tolerance = 1.0e-4", "tolerance = 5.0e-3"});
   const RunRecord cut = run_and_read(edited_scenario(flexure, "hydrodda-cut-steps-loose", loose_edits));
   const auto& history = cut.history;
@@ -378,7 +385,7 @@ TEST(CoupledRun, APassWhoseStepsWereCutShortIsNotConverged) {
     passed_over += std::stod(history[row][2]) < 5e-3 && std::stod(history[row][3]) < 5e-3;
   EXPECT_GE(passed_over, 5);
   EXPECT_NE(cut.output.find("its DDA steps were cut short"), std::string::npos) << cut.output;
-  const auto tight = run_to_summary(edited_scenario(flexure, "hydrodda-cut-steps-tight", cutoff));
+  const auto tight = run_to_summary(edited_scenario(flexure, "hydrodda-cut-steps-tight", fixed_steps));
   EXPECT_EQ(tight["converged"], true) << tight["message"];
   expect_same_state(cut.summary, tight, "fractured", 1e-3, 0.02);
 }

@@ -167,11 +167,19 @@ TEST(NonConvergence, GeometricGrowthIsDivergence) {
   EXPECT_NE(d.text.find("displacement change diverges"), std::string::npos) << d.text;
 }
 
-// Neither falling nor alternating: the same change pass after pass, rising slowly.
+// Neither falling nor alternating: the same change pass after pass, rising slowly. Settling
+// passes are advised only to a loop whose passes did not settle.
 TEST(NonConvergence, SteadyChangeIsDrift) {
-  const ConvergenceDiagnosis d = diagnose_non_convergence(geometric(1e-2, 1.001, 30), geometric(1e-6, 0.9, 30), std::vector<double>(30, 1.0), 1e-4);
+  const auto head = geometric(1e-2, 1.001, 30), displacement = geometric(1e-6, 0.9, 30);
+  const ConvergenceDiagnosis d = diagnose_non_convergence(head, displacement, std::vector<double>(30, 1.0), 1e-4);
   EXPECT_EQ(d.behaviour, NonConvergence::drifting);
   EXPECT_NE(d.text.find("drifts"), std::string::npos) << d.text;
+  EXPECT_NE(d.text.find("try coupling.settle = true"), std::string::npos) << d.text;
+  const ConvergenceDiagnosis settled =
+      diagnose_non_convergence(head, displacement, std::vector<double>(30, 1.0), 1e-4, "none", true);
+  EXPECT_EQ(settled.behaviour, NonConvergence::drifting);
+  EXPECT_EQ(settled.text.find("coupling.settle"), std::string::npos) << settled.text;
+  EXPECT_NE(settled.text.find("each pass coming to rest a little farther on"), std::string::npos) << settled.text;
 }
 
 // A cycle of four passes (0.02, 0.011, 0.006, 0.004, 0.02, ...): a fit over eight passes that

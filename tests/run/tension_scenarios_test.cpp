@@ -1,7 +1,6 @@
-// The tension cutoff (dda::Settings::tension_cutoff) on every shipped scenario with a
-// [mechanics] section: its mechanics as the scenario builds them (blocks, joint, supports and
-// loads; no fluid forces), stepped 20 times with the cutoff on, end every step with no closed
-// contact pulling.
+// Every shipped scenario with a [mechanics] section, as it is (mechanics.tension_cutoff on by
+// default): its mechanics as the scenario builds them (blocks, joint, supports and loads; no
+// fluid forces), stepped 20 times, end every step with no closed contact pulling.
 
 #include <gtest/gtest.h>
 
@@ -34,7 +33,7 @@ double find_tension_fraction(const dda::System& system) {
 }
 
 // With T = 0 (every shipped joint), tension beyond round-off (1e-9 of the largest contact
-// force) in a closed contact after any of 20 steps. Without the cutoff the paper's flexures
+// force) in a closed contact after any of 20 steps. With tension_cutoff = false the paper's flexures
 // end steps with closed contacts pulling up to the largest compression anywhere in them
 // (symmetric_flexure_*.toml), the asymmetric ones with 2–6% of it, the brick wall with 19%.
 // All of them take well under a second.
@@ -45,9 +44,7 @@ TEST(TensionScenarios, NoClosedContactPullsInAShippedScenario) {
     const scenario::Scenario s = scenario::read_scenario(entry.path());
     if (!s.mechanics) continue;
     ASSERT_EQ(s.joint.tensile_strength, 0.0) << entry.path();
-    dda::ModelDefinition model = run::build_mechanics_model(s, run::build_blocks(s));
-    model.settings.tension_cutoff = true;
-    dda::System system(std::move(model));
+    dda::System system(run::build_mechanics_model(s, run::build_blocks(s)));
     for (int k = 0; k < 20; ++k) {
       system.step();
       ASSERT_LE(find_tension_fraction(system), 1e-9) << entry.path() << ", step " << k;

@@ -97,10 +97,11 @@ TEST(ScenarioReader, ReadsEveryKeyOfTheContract) {
   EXPECT_EQ(s.output.figures, std::vector<std::string>{"png"});
 }
 
-TEST(ScenarioReader, TheTensionCutoffIsOffUnlessAsked) {
+// No closed contact pulls past the joint's strength unless the file asks for the hysteresis band.
+TEST(ScenarioReader, TheTensionCutoffIsOnUnlessTurnedOff) {
   const std::string base = kOneFreeBlock + "analysis = \"dynamic\"\nsteps = 10\n";
-  EXPECT_FALSE(parse_scenario(base, "case.toml").mechanics->tension_cutoff);
-  EXPECT_TRUE(parse_scenario(base + "tension_cutoff = true\n", "case.toml").mechanics->tension_cutoff);
+  EXPECT_TRUE(parse_scenario(base, "case.toml").mechanics->tension_cutoff);
+  EXPECT_FALSE(parse_scenario(base + "tension_cutoff = false\n", "case.toml").mechanics->tension_cutoff);
 }
 
 TEST(ScenarioReader, RecordsEveryDefaultItFillsIn) {
@@ -291,12 +292,16 @@ TEST(ScenarioReader, APrescribedDisplacementTakesItsRampTime) {
   }
 }
 
-// coupling.settle is off unless asked; asked of a dynamic analysis it is refused, naming its line.
+// coupling.settle is on by default in a static analysis, with or without a [coupling] table,
+// and off in a dynamic one; asked of a dynamic analysis it is refused, naming its line.
 TEST(ScenarioReader, SettlingPassesAreForStaticAnalysis) {
   const std::string base = kOneFreeBlock + "steps = 10\n";
+  const std::string supported = base + "[[mechanics.fixed]]\npoint = [0.5, 0.0]\n";
   EXPECT_FALSE(parse_scenario(base + "analysis = \"dynamic\"\n", "case.toml").coupling.settle);
-  EXPECT_TRUE(parse_scenario(base + "[[mechanics.fixed]]\npoint = [0.5, 0.0]\n[coupling]\nsettle = true\n", "case.toml")
-                  .coupling.settle);
+  EXPECT_FALSE(parse_scenario(base + "analysis = \"dynamic\"\n[coupling]\ntolerance = 1e-3\n", "case.toml").coupling.settle);
+  EXPECT_TRUE(parse_scenario(supported, "case.toml").coupling.settle);
+  EXPECT_TRUE(parse_scenario(supported + "[coupling]\ntolerance = 1e-3\n", "case.toml").coupling.settle);
+  EXPECT_FALSE(parse_scenario(supported + "[coupling]\nsettle = false\n", "case.toml").coupling.settle);
   const auto errors = errors_of(base + "analysis = \"dynamic\"\n[coupling]\nsettle = true\n");
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_EQ(errors[0].key, "coupling.settle");
