@@ -16,8 +16,8 @@
 // thp:always    every mapping of user memory advised MADV_HUGEPAGE;
 // metadata_thp  the allocator's own bookkeeping likewise;
 // narenas:1     one arena for every thread (the small allocations still go through each
-//               thread's cache): memory one thread frees (a flow analysis aside, the second
-//               half of a clip) serves the next large allocation of any thread, instead of
+//               thread's cache): memory one thread frees (the second half of a clip)
+//               serves the next large allocation of any thread, instead of
 //               waiting in that thread's arena to be returned. The 10,200-block seal's peak
 //               resident memory falls by about 30 MB, its run time unchanged.
 // Where the kernel keeps huge pages off the advice is ignored and ordinary pages are used.

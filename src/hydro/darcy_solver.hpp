@@ -9,7 +9,6 @@
 // conjugate gradients on the new matrix, while it serves (docs/flow.md, "Coupling passes").
 
 #include <array>
-#include <future>
 #include <memory>
 #include <span>
 #include <vector>
@@ -96,7 +95,7 @@ class DarcySolver {
   int unknown_count() const { return static_cast<int>(free_nodes_.size()); }
   long long stored_nonzeros() const { return matrix_.nonZeros(); }
   double reference_head() const { return reference_head_; }
-  // Seconds to build the pattern and analyse it (waits for an analysis running aside).
+  // Seconds to build the pattern and analyse it.
   double setup_seconds() const;
   const std::string& solver_name() const { return solver_name_; }
 
@@ -153,10 +152,6 @@ class DarcySolver {
   const mesh::TriangleMesh& mesh_;
   DarcyProblem problem_;
   std::unique_ptr<LinearSolver> solver_;
-  // The analysis of solver_ when it runs aside (its seconds), waited for before the first
-  // factorisation; declared after solver_ so that it is waited for before solver_ goes.
-  std::shared_future<double> analysis_;
-  static constexpr int kUnknownsWorthAnalysingAside = 20000;
   std::string solver_name_;
   double reference_head_ = 0.0;
   double setup_seconds_ = 0.0;
