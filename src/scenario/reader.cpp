@@ -512,8 +512,7 @@ void read_coupling(ReadContext& ctx, const TableView& root, Scenario& s) {
   } else if (s.flow && s.mechanics) {
     ctx.defaults.push_back({"coupling.settle", static_analysis ? "true" : "false"});
   }
-  c.require("settle", !s.coupling.settle || !s.mechanics || s.mechanics->analysis == Analysis::Static,
-            "needs mechanics.analysis = \"static\"");
+  c.require("settle", !s.coupling.settle || !s.mechanics || static_analysis, "needs mechanics.analysis = \"static\"");
 }
 
 // output.fields: which of the series "fluid", "blocks", "contacts" and "fractures" to write, each once.

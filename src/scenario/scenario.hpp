@@ -244,7 +244,7 @@ struct CouplingDefinition {
   double relaxation = 1.0;
   LoopAcceleration acceleration = LoopAcceleration::none;
   int ramp_passes = 1;   // the fluid load raised over the first passes
-  bool settle = false;   // each pass steps on until the blocks are at rest (read: static analyses)
+  bool settle = false;   // each pass steps on until the blocks are at rest (the reader's default: a static analysis)
 };
 
 // The ParaView series a run writes (output.fields).

@@ -22,6 +22,7 @@
 
 namespace fs = std::filesystem;
 using hydrodda::testing::column;
+using hydrodda::testing::edited_scenario;
 using hydrodda::testing::run_command;
 using hydrodda::testing::read_csv;
 using hydrodda::testing::run_program;
@@ -139,23 +140,6 @@ TEST(CoupledRun, StoppedAtMaxIterationsReportsNotConverged) {
   ASSERT_NO_THROW(boost::property_tree::read_xml((out / "figures/convergence.svg").string(), svg));
   EXPECT_EQ(svg.count("svg"), 1u);
   fs::remove_all(out);
-}
-
-// The scenario file with each (key, value) line replaced, written to a temporary file.
-fs::path edited_scenario(const fs::path& original, const std::string& name,
-                         const std::vector<std::pair<std::string, std::string>>& edits) {
-  std::ifstream in(original);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string scenario = text.str();
-  for (const auto& [from, to] : edits) {
-    const auto at = scenario.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    if (at != std::string::npos) scenario.replace(at, from.size(), to);
-  }
-  const fs::path file = fs::temp_directory_path() / (name + ".toml");
-  std::ofstream(file) << scenario;
-  return file;
 }
 
 nlohmann::json run_to_summary(const fs::path& file, std::string* output = nullptr) {

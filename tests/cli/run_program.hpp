@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -36,6 +37,24 @@ inline ProgramResult run_command(const std::string& shell_command) {
 
 inline ProgramResult run_program(const std::string& arguments) {
   return run_command(std::string(HYDRODDA_BINARY) + " " + arguments);
+}
+
+// A scenario file with each `from` text replaced once by its `to` (a missing one fails the
+// test), written to the temporary folder as NAME.toml.
+inline std::filesystem::path edited_scenario(const std::filesystem::path& original, const std::string& name,
+                                             const std::vector<std::pair<std::string, std::string>>& edits) {
+  std::ifstream in(original);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string scenario = text.str();
+  for (const auto& [from, to] : edits) {
+    const auto at = scenario.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) scenario.replace(at, from.size(), to);
+  }
+  const std::filesystem::path file = std::filesystem::temp_directory_path() / (name + ".toml");
+  std::ofstream(file) << scenario;
+  return file;
 }
 
 // Runs a shipped scenario (path relative to the source tree) into a fresh temporary folder and
