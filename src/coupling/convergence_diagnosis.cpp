@@ -101,14 +101,21 @@ int cycle_period(const std::vector<double>& c) {
   return 0;
 }
 
+// The relaxation to try next: 0.5, or half of one already at 0.5 or below.
+std::string smaller_relaxation(double relaxation) {
+  return "coupling.relaxation = " + format_number(relaxation > 0.5 ? 0.5 : 0.5 * relaxation);
+}
+
 // What to try when the loop swings or jumps between states rather than settling: an
-// acceleration if it had none, else relaxation or more steps, and that a jacking joint may have
-// no steady state.
-std::string unsettled_advice(std::string_view acceleration) {
-  if (acceleration == "none")
-    return "try coupling.acceleration = \"anderson\" (or \"aitken\"), or coupling.relaxation = 0.5";
-  return "the " + std::string(acceleration) +
-         " acceleration did not settle it: add coupling.relaxation = 0.5, or more mechanics.steps per pass; a "
+// acceleration if it had none, else a smaller relaxation or more steps, and that a jacking joint
+// may have no steady state.
+std::string unsettled_advice(const LoopAsRun& loop) {
+  if (loop.acceleration == "none")
+    return "try coupling.acceleration = \"anderson\" (or \"aitken\"), or " + smaller_relaxation(loop.relaxation);
+  return "the " + std::string(loop.acceleration) + " acceleration did not settle it: " +
+         (loop.relaxation < 1.0 ? "with coupling.relaxation = " + format_number(loop.relaxation) + " too; " : "") +
+         "try " + smaller_relaxation(loop.relaxation) +
+         ", or more mechanics.steps per pass; a "
          "joint that jacks open and shut from pass to pass (history.csv's largest_opening) may have no steady "
          "state under this load";
 }
@@ -129,7 +136,7 @@ double return_ratio(const std::vector<double>& change, const std::vector<double>
 ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_change,
                                               const std::vector<double>& displacement_change,
                                               const std::vector<double>& head_change_two_passes, double tolerance,
-                                              std::string_view acceleration, bool settling) {
+                                              const LoopAsRun& loop) {
   if (head_change.empty() || head_change.size() != displacement_change.size() ||
       head_change.size() != head_change_two_passes.size())
     throw std::invalid_argument("convergence diagnosis: one head and one displacement change per pass are needed");
@@ -156,7 +163,7 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
   else if (d.rate < 0.95) d.behaviour = NonConvergence::still_converging;
   else d.behaviour = NonConvergence::drifting;
 
-  const bool accelerated = acceleration != "none";
+  const bool accelerated = loop.acceleration != "none";
   std::string norms = d.head_failed && d.displacement_failed ? "the head and displacement changes"
                       : d.head_failed                        ? "the head change"
                                                              : "the displacement change";
@@ -182,7 +189,7 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
                 : two_states   ? std::string(", the blocks swinging between two states pass after pass")
                 : d.period == 2 ? std::string(", coming back to the same values every 2 passes")
                                 : std::string(", rising and falling by turns")) +
-               "); " + unsettled_advice(acceleration);
+               "); " + unsettled_advice(loop);
       break;
     case NonConvergence::erratic: {
       const auto [low, high] = std::minmax_element(last.begin(), last.end());
@@ -190,7 +197,7 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
                format_number(*low) + " and " + format_number(*high) + " over the last " +
                std::to_string(last.size()) +
                " passes, at " + level + "), with no steady trend, so no number of passes can be told; " +
-               unsettled_advice(acceleration);
+               unsettled_advice(loop);
       break;
     }
     case NonConvergence::diverging:
@@ -210,7 +217,7 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
       d.text = norms + " stayed above the tolerance: the " + name + " change drifts (" +
                (d.rate < 0.95 ? "at " + level + ", falling only as a power of the passes, not geometrically"
                               : "near " + level + ", neither falling nor alternating") +
-               (settling ? std::string("): the blocks keep moving from pass to pass, each pass coming to rest a little "
+               (loop.settling ? std::string("): the blocks keep moving from pass to pass, each pass coming to rest a little "
                                        "farther on; check that the fluid load leaves the blocks an equilibrium "
                                        "(history.csv's largest_opening shows a joint that keeps opening)")
                          : std::string("): the blocks keep moving from pass to pass; try coupling.settle = true (each "

@@ -46,12 +46,16 @@ struct ConvergenceDiagnosis {
 //   fitted trend (its rate then predicts nothing); drifting when r < 0.95 but log c lies nearer a line in log k than in
 //   k with a slope above −2 (it falls only as a power of the pass k); still converging when
 //   r < 0.95 otherwise; drifting otherwise.
-// `acceleration` is coupling.acceleration as run ("none", "aitken", "anderson"): the advice
-// names an acceleration only to a loop that had none; `settling` is coupling.settle as run:
-// it names settling passes only to a loop whose passes did not settle.
+// `loop` is the loop as run: the advice names an acceleration only to a loop that had none,
+// settling passes only to a loop whose passes did not settle, and a relaxation below the one it had.
+struct LoopAsRun {
+  std::string_view acceleration = "none";  // coupling.acceleration: "none", "aitken", "anderson"
+  double relaxation = 1.0;                 // coupling.relaxation
+  bool settling = false;                   // coupling.settle
+};
 ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_change,
                                               const std::vector<double>& displacement_change,
                                               const std::vector<double>& head_change_two_passes, double tolerance,
-                                              std::string_view acceleration = "none", bool settling = false);
+                                              const LoopAsRun& loop = {});
 
 }  // namespace hydrodda::coupling

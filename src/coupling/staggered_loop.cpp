@@ -208,6 +208,17 @@ PassReport StaggeredLoop::run_pass() {
     for (std::vector<Point>& block : forces)
       for (Point& f : block) f = report.load_factor * f;
   mechanics_.set_vertex_forces(std::move(forces));
+  // A run that starts in its in-situ stress: the faces take their share (1 − α) p of the first
+  // pass's pressure, which the contacts and rollers then need not carry, so that they start in
+  // the effective traction (σ + p I) n while the blocks carry σ + α p I.
+  const bool faces_loaded = std::any_of(settings_.biot_coefficients.begin(), settings_.biot_coefficients.end(),
+                                        [](double alpha) { return alpha < 1.0; });
+  if (iteration_ == 1 && faces_loaded)
+    mechanics_.relieve_start_loads([this, factor = report.load_factor](int block, Point from, Point to) {
+      const FacePressureLoads::SegmentIntegrals along = face_loads_.integrate_along(from, to, solution_.pressure);
+      return factor * (1.0 - settings_.biot_coefficients[static_cast<std::size_t>(block)]) *
+             (along.start_inside + along.start_outside);
+    });
   report.forces_seconds = seconds_since(start);
 
   // Mechanics under the mechanical and fluid loads: the pass's steps, then (settle_steps) on

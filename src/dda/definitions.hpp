@@ -110,6 +110,8 @@ struct Roller {
   Point normal;          // unit, out of the model
   double preload = 0.0;  // N/m: the force the boundary pushes the vertex in with from the start
                          // (the initial stress's share on the vertex's faces along it)
+  // The vertex's neighbours (previous, next) whose faces with it lie along the boundary.
+  std::array<bool, 2> faces_along{};
 };
 
 // A stress field linear in y, as UDEC's insitu with ygradient: σ(y) = at_reference +

@@ -6,13 +6,13 @@ namespace hydrodda::dda {
 
 namespace {
 
-Point apply(const std::array<double, 3>& s, Point n) { return {s[0] * n.x + s[2] * n.y, s[2] * n.x + s[1] * n.y}; }
+Point traction_of(const std::array<double, 3>& s, Point n) { return {s[0] * n.x + s[2] * n.y, s[2] * n.x + s[1] * n.y}; }
 
 }  // namespace
 
 Point compute_face_load(const StressField& field, Point p, Point q, Point n) {
-  const Point tp = apply(field.at(p.y), n);
-  const Point tq = apply(field.at(q.y), n);
+  const Point tp = traction_of(field.at(p.y), n);
+  const Point tq = traction_of(field.at(q.y), n);
   return geometry::distance(p, q) / 6.0 * (2.0 * tp + tq);
 }
 
@@ -30,6 +30,20 @@ ContactPreload compute_contact_preload(const StressField& field, std::span<const
   for (int k = 0; k < faces.count; ++k)
     force += compute_face_load(field, a + faces.face[k].near * s, a + faces.face[k].far * s, -1.0 * outward_j);
   return {dot(force, outward_j), dot(force, s)};
+}
+
+double compute_contact_fluid_push(const FaceShare& share, int block_i, std::span<const Point> polygon_i, int vertex,
+                                  std::span<const Point> polygon_j, int edge, double distance) {
+  const int ni = static_cast<int>(polygon_i.size());
+  const int nj = static_cast<int>(polygon_j.size());
+  const Point a = polygon_j[edge];
+  const Point b = polygon_j[(edge + 1) % nj];
+  const Point s = (b - a) / geometry::distance(a, b);
+  const FacesAlongEdge faces = find_faces_along_edge(polygon_i[vertex], polygon_i[(vertex + ni - 1) % ni],
+                                                     polygon_i[(vertex + 1) % ni], a, b, distance);
+  double push = 0.0;
+  for (int k = 0; k < faces.count; ++k) push += share(block_i, a + faces.face[k].near * s, a + faces.face[k].far * s);
+  return push;
 }
 
 }  // namespace hydrodda::dda

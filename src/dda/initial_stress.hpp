@@ -10,6 +10,7 @@
 // strain unknowns asks for, because a linear traction's consistent end forces
 // L (2 t1 + t2)/6, L (t1 + 2 t2)/6 have the traction's exact first moment along the face.
 
+#include <functional>
 #include <span>
 
 #include "dda/definitions.hpp"
@@ -31,5 +32,14 @@ struct ContactPreload {
 };
 ContactPreload compute_contact_preload(const StressField& field, std::span<const Point> polygon_i, int vertex,
                                        std::span<const Point> polygon_j, int edge, double distance);
+
+// A fluid pressure w's push on block `block`'s face from `from` to `to`, the share of the end
+// `from`: ∫ (1 − s/L) w ds, s measured from `from` (N/m).
+using FaceShare = std::function<double(int block, Point from, Point to)>;
+
+// The push `share` gives block_i over the same faces as compute_contact_preload, pushing it off
+// block j (a pressure pushes each face into its own block): what the contact need not carry.
+double compute_contact_fluid_push(const FaceShare& share, int block_i, std::span<const Point> polygon_i, int vertex,
+                                  std::span<const Point> polygon_j, int edge, double distance);
 
 }  // namespace hydrodda::dda

@@ -63,12 +63,13 @@ std::vector<Roller> make_rollers_on_segment(std::span<const BlockDefinition> blo
     Point normal{along.y, -along.x};
     if (dot(geometry::centroid(p) - a, normal) > 0.0) normal = -1.0 * normal;
     Roller roller{v.block, v.vertex, normal, 0.0};
-    if (initial_stress) {
+    const Point here = p[v.vertex];
+    const std::array<Point, 2> neighbours{p[(v.vertex + n - 1) % n], p[(v.vertex + 1) % n]};
+    for (int k = 0; k < 2; ++k) {
+      roller.faces_along[k] = geometry::distance_to_segment(neighbours[k], a, b) <= tolerance;
       // The field's push on the vertex's share of its faces along the boundary.
-      const Point here = p[v.vertex];
-      for (Point other : {p[(v.vertex + n - 1) % n], p[(v.vertex + 1) % n]})
-        if (geometry::distance_to_segment(other, a, b) <= tolerance)
-          roller.preload -= dot(compute_face_load(*initial_stress, here, other, normal), normal);
+      if (initial_stress && roller.faces_along[k])
+        roller.preload -= dot(compute_face_load(*initial_stress, here, neighbours[k], normal), normal);
     }
     out.push_back(roller);
   }

@@ -231,12 +231,29 @@ void System::detect_contacts() {
   });
 }
 
+void System::relieve_start_loads(FaceShare share) {
+  if (!initial_stress_ || time_ != 0.0) return;
+  for (RollerPoint& r : rollers_) {
+    const Polygon& p = blocks_[r.roller.block].polygon;
+    const std::size_t n = p.size();
+    const std::array<Point, 2> neighbours{p[(r.roller.vertex + n - 1) % n], p[(r.roller.vertex + 1) % n]};
+    r.relief = 0.0;
+    for (int k = 0; k < 2; ++k)
+      if (r.roller.faces_along[k]) r.relief += share(r.roller.block, p[r.roller.vertex], neighbours[k]);
+  }
+  start_face_share_ = std::move(share);
+}
+
 void System::preload_contact(ActiveContact& c) const {
   const Polygon& pj = blocks_[c.key.block_j].polygon;
   const ContactPreload preload = compute_contact_preload(*initial_stress_, blocks_[c.key.block_i].polygon, c.key.vertex,
                                                          pj, c.key.edge, contact_distance_);
-  c.record.multiplier = preload.normal;
-  c.record.normal_force = preload.normal;
+  double normal = preload.normal;
+  if (start_face_share_)
+    normal -= compute_contact_fluid_push(start_face_share_, c.key.block_i, blocks_[c.key.block_i].polygon, c.key.vertex,
+                                         pj, c.key.edge, contact_distance_);
+  c.record.multiplier = normal;
+  c.record.normal_force = normal;
   // The locked spring pushes block i along the edge by −p s, s = (p1 − p0)·t: a reference
   // point shear/p behind the vertex's projection makes it push by the shear from the start.
   const double length = geometry::distance(pj[c.key.edge], pj[(c.key.edge + 1) % pj.size()]);
@@ -339,7 +356,7 @@ void System::assemble_blocks(double dt, Matrix6Array& k, Eigen::VectorXd& f_base
     // vertex in (along −n) by the preload.
     const Vector6 w = compute_displacement_matrix(at, b.moments.centroid).transpose() * Eigen::Vector2d(n.x, n.y);
     k[b.dof] += fixed_stiffness_ * w * w.transpose();
-    f_base.segment<6>(6 * b.dof) -= w * (fixed_stiffness_ * dot(n, at - r.initial) + r.roller.preload);
+    f_base.segment<6>(6 * b.dof) -= w * (fixed_stiffness_ * dot(n, at - r.initial) + r.roller.preload - r.relief);
   }
   for (std::size_t i = 0; i < point_loads_.size(); ++i) {
     const Block& b = blocks_[load_points_[i].block];
@@ -816,6 +833,7 @@ void System::commit_step(const Eigen::VectorXd& d, double dt) {
     records_[i] = {c.key, r};
   });
   preload_new_contacts_ = false;
+  start_face_share_ = nullptr;
   time_ += dt;
 }
 

@@ -4,6 +4,7 @@
 // open–close (augmented Lagrangian inside) → update geometry → report.
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -13,6 +14,7 @@
 #include "dda/block_kernels.hpp"
 #include "dda/contact_detection.hpp"
 #include "dda/contact_search.hpp"
+#include "dda/initial_stress.hpp"
 #include "dda/definitions.hpp"
 #include "dda/linear_solver.hpp"
 
@@ -67,6 +69,7 @@ struct SystemState {
   // Current positions of the tracked points, in definition order.
   std::vector<Point> fixed_points, load_points, displacement_points, measured_points;
   std::vector<std::vector<Point>> vertex_forces;
+  std::vector<double> roller_reliefs;  // in definition order (System::relieve_start_loads)
 };
 
 class System {
@@ -100,6 +103,14 @@ class System {
   // External forces per block per vertex (N per metre), e.g. fluid forces; replaces the last.
   // forces[b] must be empty or hold one force per vertex of block b.
   void set_vertex_forces(std::vector<std::vector<Point>> forces);
+  // Before the first step of a run that starts in its in-situ stress: the blocks carry the
+  // initial stress, but a fluid that pushes on their faces takes part of what the contacts and
+  // rollers carried across them. Each roller's preload, and each contact's found touching in the
+  // first step, is made less by `share`'s push on the faces it carries (the faces of its vertex
+  // along the boundary; those along the contact's edge). For Biot's α and a pore pressure p,
+  // with faces pushed by (1 − α) p: blocks in σ + α p I, contacts and rollers in (σ + p I) n.
+  // Does nothing at a time after 0 or without an initial stress.
+  void relieve_start_loads(FaceShare share);
   // Replaces the edge tractions from the next step on (a loading path changed between steps);
   // throws std::invalid_argument for a block or edge that does not exist.
   void set_tractions(std::vector<EdgeTraction> tractions);
@@ -239,12 +250,15 @@ class System {
   std::vector<TrackedPoint> measured_;
   struct RollerPoint {
     Roller roller;
-    Point initial;  // the vertex's position at the start
+    Point initial;        // the vertex's position at the start
+    double relief = 0.0;  // N/m: the fluid's push on its faces at the start (relieve_start_loads)
   };
   std::vector<RollerPoint> rollers_;
   std::optional<StressField> initial_stress_;
-  // The contacts found touching at the first step start carrying the initial stress.
+  // The contacts found touching at the first step start carrying the initial stress, less the
+  // fluid's push on their faces when relieve_start_loads gave one.
   bool preload_new_contacts_ = false;
+  FaceShare start_face_share_;
   std::vector<std::vector<Point>> vertex_forces_;
   std::unique_ptr<LinearSolver> solver_;
 

@@ -39,6 +39,7 @@ SystemState System::export_state() const {
   for (const TrackedPoint& p : displacement_points_) s.displacement_points.push_back(p.position);
   for (const TrackedPoint& p : measured_) s.measured_points.push_back(p.position);
   s.vertex_forces = vertex_forces_;
+  for (const RollerPoint& r : rollers_) s.roller_reliefs.push_back(r.relief);
   return s;
 }
 
@@ -53,6 +54,7 @@ void System::import_state(const SystemState& s) {
   check_count(s.displacement_points.size(), displacement_points_.size(), "prescribed-displacement points");
   check_count(s.measured_points.size(), measured_.size(), "measured points");
   check_count(s.vertex_forces.size(), blocks_.size(), "vertex-force lists");
+  check_count(s.roller_reliefs.size(), rollers_.size(), "roller reliefs");
   for (std::size_t b = 0; b < blocks_.size(); ++b)
     if (!s.vertex_forces[b].empty())
       check_count(s.vertex_forces[b].size(), blocks_[b].polygon.size(), "vertex forces of a block");
@@ -97,6 +99,8 @@ void System::import_state(const SystemState& s) {
   restore(displacement_points_, s.displacement_points);
   restore(measured_, s.measured_points);
   vertex_forces_ = s.vertex_forces;
+  for (std::size_t i = 0; i < rollers_.size(); ++i) rollers_[i].relief = s.roller_reliefs[i];
+  start_face_share_ = nullptr;  // relieve_start_loads gives it again before a first step
   // Contacts carry the initial stress from the first step only.
   preload_new_contacts_ = initial_stress_ && s.time == 0.0 && s.contacts.empty();
   solver_->reset();

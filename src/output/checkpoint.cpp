@@ -22,7 +22,7 @@ constexpr std::string_view kMagic = "hydrodda checkpoint\n";
 // as the checksum; 11: the wedge tips of mesh.refine_tips (refined, and of the round's last
 // passes). Only the current format is read: a run stopped by an older hydrodda is run
 // again.
-constexpr std::int64_t kVersion = 11;
+constexpr std::int64_t kVersion = 12;
 // The last 8 bytes: the CRC-32 of every byte before them (zlib's, as a 64-bit word). A CRC
 // detects every error burst of up to 32 bits, so a flipped bit is refused, not resumed from;
 // zlib computes it four times as fast as a byte-at-a-time hash on a checkpoint of tens of MB.
@@ -252,6 +252,7 @@ void write_mechanics(Writer& w, const dda::SystemState& s) {
   w.put(s.displacement_points);
   w.put(s.measured_points);
   w.put(s.vertex_forces);
+  w.put(s.roller_reliefs);
 }
 
 void read_mechanics(Reader& r, dda::SystemState& s) {
@@ -289,6 +290,7 @@ void read_mechanics(Reader& r, dda::SystemState& s) {
   r.get(s.displacement_points);
   r.get(s.measured_points);
   r.get(s.vertex_forces);
+  r.get(s.roller_reliefs);
 }
 
 // `Flow`: a hydro::FlowSolution, const when written.

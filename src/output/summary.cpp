@@ -91,11 +91,12 @@ json to_json(const RunSummary& s) {
     for (const NamedValue& b : s.flow->boundaries) boundaries[b.name] = b.value;
     json regions = json::object();
     for (const RegionSummary& r : s.flow->regions) {
+      const auto or_null = [](const auto& value) { return value ? json(*value) : json(nullptr); };
       regions[r.name] = {{"flow", r.flow},
-                         {"effective_conductivity", r.effective_conductivity},
-                         {"matrix_conductivity", r.matrix_conductivity},
-                         {"normalised_conductivity", r.normalised_conductivity},
-                         {"direction", r.direction},
+                         {"effective_conductivity", or_null(r.effective_conductivity)},
+                         {"matrix_conductivity", or_null(r.matrix_conductivity)},
+                         {"normalised_conductivity", or_null(r.normalised_conductivity)},
+                         {"direction", or_null(r.direction)},
                          {"conductivity_tensor",
                           {{"xx", r.tensor[0]},
                            {"xy", r.tensor[1]},

@@ -31,10 +31,12 @@ struct NamedValue {
 struct RegionSummary {
   std::string name;
   double flow = 0.0;
-  double effective_conductivity = 0.0;
-  double matrix_conductivity = 0.0;      // the same region in the unfractured case
-  double normalised_conductivity = 0.0;  // effective / matrix
-  std::array<double, 2> direction{};     // the imposed head gradient's, along which both are measured
+  // Measured along the head gradient the boundary conditions impose; none (null) where they
+  // impose none (every head boundary at one head: still water).
+  std::optional<double> effective_conductivity;
+  std::optional<double> matrix_conductivity;      // the same region in the unfractured case
+  std::optional<double> normalised_conductivity;  // effective / matrix
+  std::optional<std::array<double, 2>> direction;  // the imposed head gradient's
   // The region's full effective conductivity tensor (m/s, region_tensor.hpp): xx, xy, yy, its
   // principal values (largest first) and their unit directions.
   std::array<double, 3> tensor{};

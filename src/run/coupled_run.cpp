@@ -108,20 +108,20 @@ std::string describe_last_passes(const std::vector<std::string>& columns,
   std::string text;
   for (output::RegionSummary& r : regions) {
     const auto column = std::find(columns.begin(), columns.end(), "region_conductivity_" + r.name);
-    if (column == columns.end() || !(r.matrix_conductivity > 0.0)) continue;
+    if (column == columns.end() || !(r.matrix_conductivity.value_or(0.0) > 0.0)) continue;
     const auto at = static_cast<std::size_t>(column - columns.begin());
     output::RegionSummary::PassRange range{static_cast<int>(passes), std::numeric_limits<double>::infinity(),
                                            -std::numeric_limits<double>::infinity()};
     for (std::size_t k = rows.size() - passes; k < rows.size(); ++k) {
       if (at >= rows[k].size() || rows[k][at].empty()) continue;  // a region that held no element
-      const double normalised = std::stod(rows[k][at]) / r.matrix_conductivity;
+      const double normalised = std::stod(rows[k][at]) / *r.matrix_conductivity;
       range.least = std::min(range.least, normalised);
       range.largest = std::max(range.largest, normalised);
     }
     if (!(range.least <= range.largest)) continue;  // no value in those passes
     r.last_passes = range;
     // A region whose answer did not move (its permeability fixed) is no news in the message.
-    const double spread = (range.largest - range.least) / std::abs(r.normalised_conductivity);
+    const double spread = (range.largest - range.least) / std::abs(*r.normalised_conductivity);
     if (!(spread > 1e-9)) continue;
     text += fmt::format("{}K_eff/K_m of region '{}' ranged from {:.4g} to {:.4g} ({}%)", text.empty() ? "" : ", ",
                         r.name, range.least, range.largest,
@@ -318,7 +318,7 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
       // A region that holds no element has empty cells (summary.json's warning says why).
       for (const std::optional<output::RegionSummary>& region : model.region_flows()) {
         row.push_back(region ? CsvTable::cell(region->flow) : "");
-        row.push_back(region ? CsvTable::cell(region->effective_conductivity) : "");
+        row.push_back(region && region->effective_conductivity ? CsvTable::cell(*region->effective_conductivity) : "");
       }
       row.insert(row.end(), {CsvTable::cell(r.head_change_two_passes), CsvTable::cell(r.relaxation),
                              CsvTable::cell(r.load_factor)});
@@ -458,8 +458,10 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
     for (const std::vector<std::string>& row : checkpoint.history) two_passes.push_back(std::stod(row[row.size() - 3]));
     const coupling::ConvergenceDiagnosis why =
         coupling::diagnose_non_convergence(convergence.head_change, convergence.displacement_change, two_passes,
-                                           s.coupling.tolerance, acceleration_name(s.coupling.acceleration),
-                                           s.coupling.settle);
+                                           s.coupling.tolerance,
+                                           {.acceleration = acceleration_name(s.coupling.acceleration),
+                                            .relaxation = s.coupling.relaxation,
+                                            .settling = s.coupling.settle});
     summary.message = fmt::format("the coupling loop did not converge in {} iterations (tolerance {:g}): {}",
                                   s.coupling.max_iterations, s.coupling.tolerance, why.text);
     if (why.behaviour == coupling::NonConvergence::drifting || why.behaviour == coupling::NonConvergence::diverging)

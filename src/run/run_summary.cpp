@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "run/model_building.hpp"
 #include "hydro/darcy_solver.hpp"
@@ -59,15 +60,22 @@ std::vector<RegionReference> reference_regions(const scenario::Scenario& s, cons
   if (s.flow->regions.empty()) return references;
   hydro::DarcySolver solver(mesh, build_flow_problem(*s.flow));
   const hydro::FlowSolution matrix = solver.solve(compute_matrix_permeability(s, mesh));
+  double head_scale = 0.0;  // the largest |h| of the unfractured case
+  for (double h : matrix.head) head_scale = std::max(head_scale, std::abs(h));
   for (const scenario::FlowRegion& r : s.flow->regions) {
     RegionReference reference;
     reference.triangles = select_triangles_in(mesh, r.polygon);
     if (!reference.triangles.empty()) {
       // Measured along the head gradient the boundary conditions impose: along the mean flux
       // instead, the flux's tilt by the fractures would change what is measured.
-      reference.imposed = hydro::compute_region_flow(mesh, matrix, reference.triangles).mean_head_gradient;
-      reference.matrix_conductivity =
-          hydro::compute_region_flow(mesh, matrix, reference.triangles, reference.imposed).effective_conductivity;
+      const hydro::RegionFlow unfractured = hydro::compute_region_flow(mesh, matrix, reference.triangles);
+      // Still water imposes none: its gradient is round-off, at most ~1e-16 of the heads.
+      const double drop = geometry::norm(unfractured.mean_head_gradient) * std::hypot(unfractured.length, unfractured.width);
+      if (drop > 1e-12 * head_scale) {
+        reference.imposed = unfractured.mean_head_gradient;
+        reference.matrix_conductivity =
+            hydro::compute_region_flow(mesh, matrix, reference.triangles, reference.imposed).effective_conductivity;
+      }
     }
     references.push_back(std::move(reference));
   }
@@ -103,10 +111,12 @@ std::vector<std::optional<output::RegionSummary>> summarise_regions(const scenar
     output::RegionSummary summary;
     summary.name = s.flow->regions[i].name;
     summary.flow = region.flow;
-    summary.effective_conductivity = region.effective_conductivity;
-    summary.matrix_conductivity = reference.matrix_conductivity;
-    summary.normalised_conductivity = region.effective_conductivity / reference.matrix_conductivity;
-    summary.direction = {region.direction.x, region.direction.y};
+    if (reference.imposed) {
+      summary.effective_conductivity = region.effective_conductivity;
+      summary.matrix_conductivity = reference.matrix_conductivity;
+      summary.normalised_conductivity = region.effective_conductivity / *reference.matrix_conductivity;
+      summary.direction = {region.direction.x, region.direction.y};
+    }
     if (!conductivity.empty()) {
       const hydro::EffectiveTensor t = hydro::compute_region_tensor(mesh, conductivity, reference.triangles);
       summary.tensor = {t.tensor.xx, t.tensor.xy, t.tensor.yy};
@@ -126,8 +136,15 @@ output::FlowSummary summarise_flow(const scenario::Scenario& s, const mesh::Tria
   flow.balance = solution.balance_error;
   const auto regions = summarise_regions(s, mesh, solution, references, permeability);
   for (std::size_t i = 0; i < regions.size(); ++i) {
-    if (regions[i]) flow.regions.push_back(*regions[i]);
-    else spdlog::warn("flow region \"{}\" holds no element: nothing to report", s.flow->regions[i].name);
+    if (!regions[i]) {
+      spdlog::warn("flow region \"{}\" holds no element: nothing to report", s.flow->regions[i].name);
+      continue;
+    }
+    if (!regions[i]->effective_conductivity)
+      spdlog::warn("flow region \"{}\": the boundary heads impose no head gradient across it (still water), so it has "
+                   "no effective conductivity along one (null in summary.json); its conductivity_tensor is given",
+                   s.flow->regions[i].name);
+    flow.regions.push_back(*regions[i]);
   }
   return flow;
 }

@@ -216,6 +216,53 @@ TEST(CoupledRun, ASealDrawnHigherWithItsHeadsRaisedGivesTheSameAnswer) {
   }
 }
 
+// The same seal at depth in still water (the reservoir's head that of the top), for Biot's α of
+// 1, 0.6 and 0. It starts in its in-situ stress σ + α p I (σ' − (1 − α) p I, with p = ρ_w g
+// (0 − y)) under the effective overburden traction −(ρ_r − ρ_w) g × 1,000 m (docs/coupling.md,
+// "Tractions on the domain boundary"); its contacts and rollers start in the effective traction
+// (σ + p I) n, since the faces take (1 − α) p themselves. So nothing moves it: measured 1.7e-8 m
+// at every α. Before the rollers were relieved of the faces' share, α = 0 lifted the seal by
+// 1.35e-4 m (its base rollers pushing 10 MPa too hard). The total overburden given as the
+// traction instead, 9.8 MPa more, would compress the seal by about 9.8e6 / 5e9 × 25 m = 4.9 cm.
+// The bound, 1e-6 m, is about the joints' 0.9 µm penetration tolerance. No head gradient is
+// imposed, so the regions have no effective conductivity along one: the run converges and says
+// so, writing null, not a 0/0 that would fail it.
+TEST(CoupledRun, ASealAtDepthInStillWaterStaysPutAtEveryBiotCoefficient) {
+  const fs::path deep = fs::path(HYDRODDA_SOURCE_DIR) / "tests/cli/scenarios/seal_at_depth.toml";
+  for (const double alpha : {1.0, 0.6, 0.0}) {
+    SCOPED_TRACE("biot_coefficient = " + std::to_string(alpha));
+    const double faces = (1.0 - alpha) * 9810.0;  // (1 − α) p per metre of depth, p = 9.81 MPa at the top
+    const fs::path file = edited_scenario(
+        deep, "hydrodda-seal-still",
+        {{"head = 150.0", "head = 0.0"},
+         {"[coupling]", "[output]\nfigures = []\n[coupling]"},
+         {"grain_diameter = 1.0e-6", "grain_diameter = 1.0e-6\nbiot_coefficient = " + std::to_string(alpha)},
+         {"stress = [-11379600.0, -14224500.0, 0.0]",
+          "stress = [" + std::to_string(-11379600.0 - 1000.0 * faces) + ", " + std::to_string(-14224500.0 - 1000.0 * faces) +
+              ", 0.0]"},
+         {"gradient = [11379.6, 14224.5, 0.0]",
+          "gradient = [" + std::to_string(11379.6 + faces) + ", " + std::to_string(14224.5 + faces) + ", 0.0]"}});
+    const fs::path out = fs::temp_directory_path() / "hydrodda-seal-still-out";
+    fs::remove_all(out);
+    const auto result = run_program("run " + file.string() + " -o " + out.string());
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find("flow region \"seal\": the boundary heads impose no head gradient across it"),
+              std::string::npos) << result.output;
+    const auto summary = nlohmann::json::parse(std::ifstream(out / "summary.json"));
+    EXPECT_EQ(summary["converged"], true) << summary["message"];
+    double largest = 0.0;
+    for (const auto& block : summary["blocks"])
+      largest = std::max(largest, std::hypot(block["displacement"][0].get<double>(), block["displacement"][1].get<double>()));
+    EXPECT_LT(largest, 1e-6);
+    const auto& seal = summary["flow"]["regions"]["seal"];
+    EXPECT_TRUE(seal["effective_conductivity"].is_null());
+    EXPECT_TRUE(seal["normalised_conductivity"].is_null());
+    EXPECT_TRUE(seal["direction"].is_null());
+    EXPECT_GT(seal["conductivity_tensor"]["yy"].get<double>(), 0.0);
+    EXPECT_NEAR(seal["flow"].get<double>(), 0.0, 1e-18);  // 1.1e-7 m²/s at 150 m of head
+  }
+}
+
 // The cubic-law symmetric flexure at 30 m of head cycles between two states pass after pass
 // (its head change comes back near 0.13 every other pass): without acceleration the run ends
 // unconverged and says the head change oscillates; with Aitken's relaxation or Anderson's

@@ -81,10 +81,20 @@ TEST(NonConvergence, AlternatingChangeIsOscillation) {
   EXPECT_NE(d.text.find("loop oscillates (the head change"), std::string::npos) << d.text;
   EXPECT_NE(d.text.find("anderson"), std::string::npos) << d.text;
   // A loop that oscillated under an acceleration is not sent back to one.
-  const ConvergenceDiagnosis accelerated = diagnose_non_convergence(head, displacement, two_back, 1e-4, "anderson");
+  const ConvergenceDiagnosis accelerated = diagnose_non_convergence(head, displacement, two_back, 1e-4, {.acceleration = "anderson"});
   EXPECT_EQ(accelerated.behaviour, NonConvergence::oscillating);
   EXPECT_EQ(accelerated.text.find("try coupling.acceleration"), std::string::npos) << accelerated.text;
   EXPECT_NE(accelerated.text.find("the anderson acceleration did not settle it"), std::string::npos) << accelerated.text;
+  EXPECT_NE(accelerated.text.find("try coupling.relaxation = 0.5,"), std::string::npos) << accelerated.text;
+  // A loop already relaxed to 0.5 is told what it ran with and sent to half of it, not to 0.5 again.
+  const ConvergenceDiagnosis relaxed =
+      diagnose_non_convergence(head, displacement, two_back, 1e-4, {.acceleration = "aitken", .relaxation = 0.5});
+  EXPECT_NE(relaxed.text.find("the aitken acceleration did not settle it: with coupling.relaxation = 0.5 too; try "
+                              "coupling.relaxation = 0.25,"),
+            std::string::npos) << relaxed.text;
+  const ConvergenceDiagnosis plain_relaxed =
+      diagnose_non_convergence(head, displacement, two_back, 1e-4, {.relaxation = 0.3});
+  EXPECT_NE(plain_relaxed.text.find("or coupling.relaxation = 0.15"), std::string::npos) << plain_relaxed.text;
 }
 
 // The 60 m × 30 m conjugate-jointed seal at 1,200 m over its top (measured): a head change
@@ -146,7 +156,7 @@ TEST(NonConvergence, AChangeJumpingFarFromItsTrendIsErraticNotStillConverging) {
   }
   head.front() = displacement.front() = 1.0;
   const std::vector<double> two_back(head.size(), 0.1);
-  const ConvergenceDiagnosis d = diagnose_non_convergence(head, displacement, two_back, 1e-4, "anderson");
+  const ConvergenceDiagnosis d = diagnose_non_convergence(head, displacement, two_back, 1e-4, {.acceleration = "anderson"});
   EXPECT_EQ(d.behaviour, NonConvergence::erratic);
   EXPECT_EQ(d.passes_needed, 0);
   EXPECT_EQ(d.text.find("more passes would reach it"), std::string::npos) << d.text;
@@ -176,7 +186,7 @@ TEST(NonConvergence, SteadyChangeIsDrift) {
   EXPECT_NE(d.text.find("drifts"), std::string::npos) << d.text;
   EXPECT_NE(d.text.find("try coupling.settle = true"), std::string::npos) << d.text;
   const ConvergenceDiagnosis settled =
-      diagnose_non_convergence(head, displacement, std::vector<double>(30, 1.0), 1e-4, "none", true);
+      diagnose_non_convergence(head, displacement, std::vector<double>(30, 1.0), 1e-4, {.settling = true});
   EXPECT_EQ(settled.behaviour, NonConvergence::drifting);
   EXPECT_EQ(settled.text.find("coupling.settle"), std::string::npos) << settled.text;
   EXPECT_NE(settled.text.find("each pass coming to rest a little farther on"), std::string::npos) << settled.text;

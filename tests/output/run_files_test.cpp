@@ -89,6 +89,7 @@ TEST(Summary, HoldsTheContractKeys) {
   EXPECT_EQ(j["flow"]["boundaries"]["left"], -1.5e-6);
   EXPECT_EQ(j["flow"]["balance"], 1e-14);
   EXPECT_EQ(j["flow"]["regions"]["core"]["effective_conductivity"], 2e-7);
+  EXPECT_TRUE(j["flow"]["regions"]["core"]["matrix_conductivity"].is_null());  // not measured: null, not 0
   EXPECT_FALSE(j["flow"]["regions"]["core"].contains("last_passes"));  // a converged run's
   EXPECT_EQ(j["timings"]["flow"], 0.25);
   // An unconverged run's regions say how far K_eff/K_m moved over its last passes.
