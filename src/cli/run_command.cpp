@@ -37,7 +37,11 @@ int report(const run::RunResult& result) {
       spdlog::info("{}; continue with: hydrodda run --resume {}", result.message, folder);
       return kSuccess;
     case run::RunStatus::finished:
-      spdlog::info("{}; results in {}", result.converged ? "finished" : "not converged", folder);
+      // A coupled run (the one kind with outside_mesh) says how many passes its loop took.
+      if (result.converged && result.summary.outside_mesh)
+        spdlog::info("converged in {} coupling iteration(s); results in {}", result.iterations, folder);
+      else
+        spdlog::info("{}; results in {}", result.converged ? "finished" : "not converged", folder);
       return kSuccess;
     case run::RunStatus::interrupted:
     case run::RunStatus::failed:

@@ -250,6 +250,10 @@ TEST(CoupledRun, ASealAtDepthInStillWaterStaysPutAtEveryBiotCoefficient) {
               std::string::npos) << result.output;
     const auto summary = nlohmann::json::parse(std::ifstream(out / "summary.json"));
     EXPECT_EQ(summary["converged"], true) << summary["message"];
+    // The last line says how many passes the loop took.
+    EXPECT_NE(result.output.find("converged in " + std::to_string(summary["iterations"].get<int>()) +
+                                 " coupling iteration(s); results in " + out.string()),
+              std::string::npos) << result.output;
     double largest = 0.0;
     for (const auto& block : summary["blocks"])
       largest = std::max(largest, std::hypot(block["displacement"][0].get<double>(), block["displacement"][1].get<double>()));
