@@ -686,7 +686,10 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
         break;
       }
       // Forces that have not settled are no solution to accept: the step is cut and retried.
-      if (al + 1 == lagrangian_limit_) return Unsettled::contact_forces;
+      if (al + 1 == lagrangian_limit_) {
+        unsettled_forces_ = describe_unsettled_forces(penetration_ok, friction_change, extent.force_scale);
+        return Unsettled::contact_forces;
+      }
       if (!penetration_ok) {
         for (int i : closed_) active_[i].record.multiplier = active_[i].record.normal_force;
         friction_mixing.reset();  // a new map: its history no longer applies
@@ -723,6 +726,27 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
   return Unsettled::contact_states;
 }
 
+// Where the augmented Lagrangian stopped short: the closed contact farthest from touching
+// (overlapping, or standing off its edge while closed) against the penetration tolerance, or,
+// with every contact within it, how far the sliding contacts' normal forces still moved.
+std::string System::describe_unsettled_forces(bool penetration_ok, double friction_change, double force_scale) const {
+  if (penetration_ok)
+    return "the sliding contacts' normal forces still changed by " + format_number(friction_change) + " N/m (" +
+           format_number(friction_change / std::max(force_scale, 1e-300)) + " of the largest contact force)";
+  const ActiveContact* deepest = nullptr;
+  for (int i : closed_)
+    if (!deepest || std::abs(active_[i].record.penetration) > std::abs(deepest->record.penetration)) deepest = &active_[i];
+  if (!deepest) return "no closed contact";
+  const ContactKey& k = deepest->key;
+  const Point at = blocks_[k.block_i].polygon[k.vertex];
+  const double pen = deepest->record.penetration;
+  return "the farthest from touching, vertex " + std::to_string(k.vertex) + " of block " + std::to_string(k.block_i) +
+         " against edge " + std::to_string(k.edge) + " of block " + std::to_string(k.block_j) + " at (" +
+         format_number(at.x) + ", " + format_number(at.y) + "), " + (pen > 0 ? "overlaps it by " : "stands off it by ") +
+         format_number(std::abs(pen)) + " m, against a penetration tolerance of " +
+         format_number(penetration_tolerance_) + " m";
+}
+
 // ---- the step ----
 
 void System::release_step_buffers() {
@@ -734,6 +758,7 @@ StepReport System::step() {
   StepReport report;
   dt_ = std::min(settings_.time_step, dt_);
   lagrangian_limit_ = settings_.max_lagrangian_iterations;
+  std::string first_failure;
   for (;;) {
     detect_contacts();
     Eigen::VectorXd d;
@@ -759,17 +784,22 @@ StepReport System::step() {
       commit_step(d, dt_);
       break;
     }
+    const std::string why =
+        settled ? "block " + std::to_string(largest_block) + " still moved " + format_number(largest) +
+                      " m in a step, more than the allowed " + format_number(allowed_displacement_) + " m"
+        : unsettled == Unsettled::contact_states
+            ? std::string("the open-close iteration did not settle the contact states")
+            : "the contact forces (Lagrange multipliers and friction) did not settle in " +
+                  std::to_string(lagrangian_limit_) + (lagrangian_limit_ == 1 ? " pass: " : " passes: ") +
+                  unsettled_forces_;
+    // What failed at the full step, before cuts changed the problem (a tiny step's inertia
+    // holds every overlap where it stands), is said too when the last cut failed otherwise.
+    if (report.retries == 0) first_failure = "at its first try (" + format_number(dt_) + " s), " + why;
     ++report.retries;
     if (report.retries > 40)
-      throw std::runtime_error(
-          "DDA: the time step fell below any use (cut 40 times, to " + format_number(dt_) + " s, at t = " +
-          format_number(time_) + " s): " +
-          (settled ? "block " + std::to_string(largest_block) + " still moved " + format_number(largest) +
-                         " m in a step, more than the allowed " + format_number(allowed_displacement_) + " m"
-                   : unsettled == Unsettled::contact_states
-                         ? "the open-close iteration did not settle the contact states"
-                         : "the contact forces (Lagrange multipliers and friction) did not settle in " +
-                               std::to_string(lagrangian_limit_) + " passes"));
+      throw std::runtime_error("DDA: the time step fell below any use (cut 40 times, to " + format_number(dt_) +
+                               " s, at t = " + format_number(time_) + " s): " + why +
+                               (first_failure.find(why) == std::string::npos ? "; " + first_failure : ""));
     // Contact forces that did not settle are given twice the passes once, at the same step,
     // before the step is cut. The augmented Lagrangian converges geometrically, and a shorter
     // static step cannot push out an overlap the step began with (a corner that paired with

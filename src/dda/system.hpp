@@ -297,6 +297,9 @@ class System {
   // The augmented Lagrangian's passes allowed in this attempt at a step: max_lagrangian_iterations,
   // twice that once its forces failed to settle (System::step).
   int lagrangian_limit_ = 0;
+  // What the last step whose contact forces did not settle left unsettled, for its error.
+  std::string unsettled_forces_;
+  std::string describe_unsettled_forces(bool penetration_ok, double friction_change, double force_scale) const;
 };
 
 }  // namespace hydrodda::dda

@@ -251,6 +251,35 @@ TEST(System, AStepThatNeverSettlesSaysWhatFailedAndWhen) {
   }
 }
 
+// A step whose contact forces never settle names the contact that kept them from it. A block
+// that starts 1 mm into the base, with a penalty so soft (1e3 N/m) that the augmented Lagrangian
+// hardly moves it and one pass allowed: each cut of the step leaves the overlap as it was (the
+// block's inertia holds it), and the error names the block's corner and its overlap, at the
+// last cut and at the full step.
+TEST(System, AStepWhoseContactForcesNeverSettleNamesTheContact) {
+  ModelDefinition m = testing::make_incline(0.0, 30.0, 0.0);
+  m.blocks[1].polygon = testing::make_rectangle(15.0, -1e-3, 16.0, 0.999);
+  m.settings.penalty = 1e3;
+  m.settings.penetration_tolerance = 1e-6;
+  m.settings.max_lagrangian_iterations = 1;
+  System system(std::move(m));
+  try {
+    system.step();
+    FAIL() << "the step should have failed";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("the contact forces (Lagrange multipliers and friction) did not settle in 2 passes: the "
+                        "farthest from touching, vertex "),
+              std::string::npos) << what;
+    EXPECT_NE(what.find(" of block 1 against edge 2 of block 0 at ("), std::string::npos) << what;
+    EXPECT_NE(what.find("overlaps it by 0.001 m, against a penetration tolerance of 1e-06 m"), std::string::npos) << what;
+    // What failed at the full step is said too, as it differs from the last cut's (one pass, not two).
+    EXPECT_NE(what.find("; at its first try (0.001 s), the contact forces (Lagrange multipliers and friction) did not "
+                        "settle in 1 pass: the farthest from touching, vertex "),
+              std::string::npos) << what;
+  }
+}
+
 // Contact forces that do not settle are no solution either. With a penalty so soft that the
 // block's weight pushes it past the penetration tolerance (1e-6 m) in a 1 ms step, the
 // augmented Lagrangian needs a second pass to lift it out; allowed one, every step is cut
