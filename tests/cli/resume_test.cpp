@@ -123,6 +123,29 @@ TEST(Resume, AFlowFactorKeptInSinglePrecisionResumesBitForBit) {
   fs::remove(seal);
 }
 
+// A seal that starts in its in-situ stress on rollers, with Biot's α = 0.6: its first pass takes
+// the faces' share 0.4 p off what the rollers carry (dda::System::relieve_start_loads), and the
+// checkpoint keeps it. Resumed after that pass, the run goes on with the rollers so relieved:
+// the same results as the run never stopped, bit for bit.
+TEST(Resume, RollersRelievedOfTheFacesShareOfPressureResumeBitForBit) {
+  Folders f("relieved");
+  std::string scenario = read_file(fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/seal_over_reservoir.toml");
+  const std::string porosity = "matrix_porosity = 0.1\n";
+  ASSERT_NE(scenario.find(porosity), std::string::npos);
+  scenario.replace(scenario.find(porosity), porosity.size(), porosity + "biot_coefficient = 0.6\n");
+  const fs::path seal = fs::temp_directory_path() / "hydrodda-resume-relieved.toml";
+  std::ofstream(seal) << scenario;
+  const auto whole = run_program("run " + seal.string() + " -o " + f.whole.string());
+  ASSERT_EQ(whole.exit_code, 0) << whole.output;
+  ASSERT_GE(read_summary_without_timings(f.whole)["iterations"].get<int>(), 3);
+  const auto first = run_program("run " + seal.string() + " -o " + f.parts.string() + " --stop-after 1");
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  const auto second = run_program("run --resume " + f.parts.string());
+  ASSERT_EQ(second.exit_code, 0) << second.output;
+  expect_same_results(f.whole, f.parts);
+  fs::remove(seal);
+}
+
 // A run of mesh.refine_tips stopped in its second round resumes on that round's mesh: the
 // symmetric flexure with the cubic law converges on its file's mesh (measured: 7 passes), and
 // the second round, on the mesh refined around its central joint's tip, swings for its 50
