@@ -211,9 +211,8 @@ PassReport StaggeredLoop::run_pass() {
   // A run that starts in its in-situ stress: the faces take their share (1 − α) p of the first
   // pass's pressure, which the contacts and rollers then need not carry, so that they start in
   // the effective traction (σ + p I) n while the blocks carry σ + α p I.
-  const bool faces_loaded = std::any_of(settings_.biot_coefficients.begin(), settings_.biot_coefficients.end(),
-                                        [](double alpha) { return alpha < 1.0; });
-  if (iteration_ == 1 && faces_loaded)
+  if (iteration_ == 1 && std::any_of(settings_.biot_coefficients.begin(), settings_.biot_coefficients.end(),
+                                     [](double alpha) { return alpha < 1.0; }))
     mechanics_.relieve_start_loads([this, factor = report.load_factor](int block, Point from, Point to) {
       const FacePressureLoads::SegmentIntegrals along = face_loads_.integrate_along(from, to, solution_.pressure);
       return factor * (1.0 - settings_.biot_coefficients[static_cast<std::size_t>(block)]) *

@@ -8,6 +8,25 @@ namespace {
 
 Point traction_of(const std::array<double, 3>& s, Point n) { return {s[0] * n.x + s[2] * n.y, s[2] * n.x + s[1] * n.y}; }
 
+// The faces of block i a contact carries: vertex `vertex` against edge `edge` of block j, the
+// faces incident to the vertex that lie along the edge, as parameters along it from a with unit
+// direction s.
+struct ContactFaces {
+  Point a, s;
+  FacesAlongEdge faces;
+};
+ContactFaces find_contact_faces(std::span<const Point> polygon_i, int vertex, std::span<const Point> polygon_j,
+                                int edge, double distance) {
+  const int ni = static_cast<int>(polygon_i.size());
+  const int nj = static_cast<int>(polygon_j.size());
+  const Point a = polygon_j[edge];
+  const Point b = polygon_j[(edge + 1) % nj];
+  const Point s = (b - a) / geometry::distance(a, b);
+  return {a, s,
+          find_faces_along_edge(polygon_i[vertex], polygon_i[(vertex + ni - 1) % ni], polygon_i[(vertex + 1) % ni], a,
+                                b, distance)};
+}
+
 }  // namespace
 
 Point compute_face_load(const StressField& field, Point p, Point q, Point n) {
@@ -18,14 +37,8 @@ Point compute_face_load(const StressField& field, Point p, Point q, Point n) {
 
 ContactPreload compute_contact_preload(const StressField& field, std::span<const Point> polygon_i, int vertex,
                                        std::span<const Point> polygon_j, int edge, double distance) {
-  const int ni = static_cast<int>(polygon_i.size());
-  const int nj = static_cast<int>(polygon_j.size());
-  const Point p = polygon_i[vertex];
-  const Point a = polygon_j[edge];
-  const Point b = polygon_j[(edge + 1) % nj];
-  const Point s = (b - a) / geometry::distance(a, b);
+  const auto [a, s, faces] = find_contact_faces(polygon_i, vertex, polygon_j, edge, distance);
   const Point outward_j{s.y, -s.x};  // out of block j (counter-clockwise), into block i
-  const FacesAlongEdge faces = find_faces_along_edge(p, polygon_i[(vertex + ni - 1) % ni], polygon_i[(vertex + 1) % ni], a, b, distance);
   Point force{};  // on block i, whose outward normal on these faces is −outward_j
   for (int k = 0; k < faces.count; ++k)
     force += compute_face_load(field, a + faces.face[k].near * s, a + faces.face[k].far * s, -1.0 * outward_j);
@@ -34,13 +47,7 @@ ContactPreload compute_contact_preload(const StressField& field, std::span<const
 
 double compute_contact_fluid_push(const FaceShare& share, int block_i, std::span<const Point> polygon_i, int vertex,
                                   std::span<const Point> polygon_j, int edge, double distance) {
-  const int ni = static_cast<int>(polygon_i.size());
-  const int nj = static_cast<int>(polygon_j.size());
-  const Point a = polygon_j[edge];
-  const Point b = polygon_j[(edge + 1) % nj];
-  const Point s = (b - a) / geometry::distance(a, b);
-  const FacesAlongEdge faces = find_faces_along_edge(polygon_i[vertex], polygon_i[(vertex + ni - 1) % ni],
-                                                     polygon_i[(vertex + 1) % ni], a, b, distance);
+  const auto [a, s, faces] = find_contact_faces(polygon_i, vertex, polygon_j, edge, distance);
   double push = 0.0;
   for (int k = 0; k < faces.count; ++k) push += share(block_i, a + faces.face[k].near * s, a + faces.face[k].far * s);
   return push;

@@ -792,8 +792,8 @@ StepReport System::step() {
             : "the contact forces (Lagrange multipliers and friction) did not settle in " +
                   std::to_string(lagrangian_limit_) + (lagrangian_limit_ == 1 ? " pass: " : " passes: ") +
                   unsettled_forces_;
-    // What failed at the full step, before cuts changed the problem (a tiny step's inertia
-    // holds every overlap where it stands), is said too when the last cut failed otherwise.
+    // What failed at the step's first try, before cuts changed the problem (a tiny step's
+    // inertia holds every overlap where it stands), is said too when the last cut failed otherwise.
     if (report.retries == 0) first_failure = "at its first try (" + format_number(dt_) + " s), " + why;
     ++report.retries;
     if (report.retries > 40)

@@ -90,8 +90,8 @@ json to_json(const RunSummary& s) {
     json boundaries = json::object();
     for (const NamedValue& b : s.flow->boundaries) boundaries[b.name] = b.value;
     json regions = json::object();
+    const auto or_null = [](const auto& value) { return value ? json(*value) : json(nullptr); };
     for (const RegionSummary& r : s.flow->regions) {
-      const auto or_null = [](const auto& value) { return value ? json(*value) : json(nullptr); };
       regions[r.name] = {{"flow", r.flow},
                          {"effective_conductivity", or_null(r.effective_conductivity)},
                          {"matrix_conductivity", or_null(r.matrix_conductivity)},

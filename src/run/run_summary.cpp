@@ -114,7 +114,7 @@ std::vector<std::optional<output::RegionSummary>> summarise_regions(const scenar
     if (reference.imposed) {
       summary.effective_conductivity = region.effective_conductivity;
       summary.matrix_conductivity = reference.matrix_conductivity;
-      summary.normalised_conductivity = region.effective_conductivity / *reference.matrix_conductivity;
+      summary.normalised_conductivity = region.effective_conductivity / reference.matrix_conductivity;
       summary.direction = {region.direction.x, region.direction.y};
     }
     if (!conductivity.empty()) {

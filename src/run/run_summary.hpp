@@ -32,8 +32,8 @@ std::string describe_unreached_displacement(const scenario::Scenario& scenario, 
 // and again when the boundary values change.
 struct RegionReference {
   std::vector<int> triangles;
-  std::optional<geometry::Point> imposed;      // none where the heads impose no gradient
-  std::optional<double> matrix_conductivity;  // along `imposed`
+  std::optional<geometry::Point> imposed;  // none where the heads impose no gradient
+  double matrix_conductivity = 0.0;        // along `imposed`, when there is one
 };
 
 // The references of the scenario's regions, in its order, from one solve of the unfractured

@@ -14,6 +14,7 @@
 #include "run_program.hpp"
 
 namespace fs = std::filesystem;
+using hydrodda::testing::edited_scenario;
 using hydrodda::testing::expect_same_results;
 using hydrodda::testing::read_file;
 using hydrodda::testing::read_summary_without_timings;
@@ -22,6 +23,7 @@ using hydrodda::testing::run_program;
 namespace {
 
 const fs::path kSixBlock = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/paper/six_block_lr_rl.toml";
+const fs::path kSeal = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/seal_over_reservoir.toml";
 
 // One pair of folders per test (ctest runs tests in parallel).
 struct Folders {
@@ -37,6 +39,17 @@ struct Folders {
     fs::remove_all(parts);
   }
 };
+
+// `scenario` run into f.parts, stopped after `stop_after` passes and resumed: the same results
+// as the whole run already in f.whole, bit for bit.
+void expect_stopped_and_resumed_alike(const fs::path& scenario, const Folders& f, int stop_after) {
+  const auto first = run_program("run " + scenario.string() + " -o " + f.parts.string() + " --stop-after " +
+                                 std::to_string(stop_after));
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  const auto second = run_program("run --resume " + f.parts.string());
+  ASSERT_EQ(second.exit_code, 0) << second.output;
+  expect_same_results(f.whole, f.parts);
+}
 
 TEST(Resume, StoppedAndResumedRunMatchesAnUninterruptedOneBitForBit) {
   Folders f("match");
@@ -70,24 +83,12 @@ TEST(Resume, StoppedAndResumedRunMatchesAnUninterruptedOneBitForBit) {
 // after pass 2 (one pass in the history) and resumed mixes pass 3 as the whole run does.
 TEST(Resume, AndersonAcceleratedRunResumesBitForBit) {
   Folders f("anderson");
-  std::ifstream in(kSixBlock);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string scenario = text.str();
-  const auto at = scenario.find("[coupling]\n");
-  ASSERT_NE(at, std::string::npos);
-  scenario.insert(at + 11, "acceleration = \"anderson\"\n");
-  const fs::path file = fs::temp_directory_path() / "hydrodda-resume-anderson.toml";
-  std::ofstream(file) << scenario;
-
+  const fs::path file = edited_scenario(kSixBlock, "hydrodda-resume-anderson",
+                                        {{"[coupling]\n", "[coupling]\nacceleration = \"anderson\"\n"}});
   const auto whole = run_program("run " + file.string() + " -o " + f.whole.string());
   ASSERT_EQ(whole.exit_code, 0) << whole.output;
   ASSERT_GE(read_summary_without_timings(f.whole)["iterations"].get<int>(), 4);  // mixing before and after 2
-  const auto first = run_program("run " + file.string() + " -o " + f.parts.string() + " --stop-after 2");
-  ASSERT_EQ(first.exit_code, 0) << first.output;
-  const auto second = run_program("run --resume " + f.parts.string());
-  ASSERT_EQ(second.exit_code, 0) << second.output;
-  expect_same_results(f.whole, f.parts);
+  expect_stopped_and_resumed_alike(file, f, 2);
   fs::remove(file);
 }
 
@@ -99,12 +100,7 @@ TEST(Resume, AndersonAcceleratedRunResumesBitForBit) {
 // FactorReuse.ARestoredSinglePrecisionFactorTakesTheSamePath.)
 TEST(Resume, AFlowFactorKeptInSinglePrecisionResumesBitForBit) {
   Folders f("single");
-  std::string scenario = read_file(fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/seal_over_reservoir.toml");
-  const std::string head = "head = 125.0 ";
-  ASSERT_NE(scenario.find(head), std::string::npos);
-  scenario.replace(scenario.find(head), head.size(), "head = 175.0 ");
-  const fs::path seal = fs::temp_directory_path() / "hydrodda-resume-single.toml";
-  std::ofstream(seal) << scenario;
+  const fs::path seal = edited_scenario(kSeal, "hydrodda-resume-single", {{"head = 125.0 ", "head = 175.0 "}});
   const auto whole = run_program("-v run " + seal.string() + " -o " + f.whole.string());
   ASSERT_EQ(whole.exit_code, 0) << whole.output;
   // Pass 3's line in the log: on the kept factor, nothing corrected.
@@ -115,11 +111,7 @@ TEST(Resume, AFlowFactorKeptInSinglePrecisionResumesBitForBit) {
       third_on_kept_factor = line.find(" 0 elements corrected") != std::string::npos;
   ASSERT_TRUE(third_on_kept_factor) << whole.output;
   ASSERT_GE(read_summary_without_timings(f.whole)["iterations"].get<int>(), 4);
-  const auto first = run_program("run " + seal.string() + " -o " + f.parts.string() + " --stop-after 3");
-  ASSERT_EQ(first.exit_code, 0) << first.output;
-  const auto second = run_program("run --resume " + f.parts.string());
-  ASSERT_EQ(second.exit_code, 0) << second.output;
-  expect_same_results(f.whole, f.parts);
+  expect_stopped_and_resumed_alike(seal, f, 3);
   fs::remove(seal);
 }
 
@@ -129,20 +121,12 @@ TEST(Resume, AFlowFactorKeptInSinglePrecisionResumesBitForBit) {
 // the same results as the run never stopped, bit for bit.
 TEST(Resume, RollersRelievedOfTheFacesShareOfPressureResumeBitForBit) {
   Folders f("relieved");
-  std::string scenario = read_file(fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/seal_over_reservoir.toml");
-  const std::string porosity = "matrix_porosity = 0.1\n";
-  ASSERT_NE(scenario.find(porosity), std::string::npos);
-  scenario.replace(scenario.find(porosity), porosity.size(), porosity + "biot_coefficient = 0.6\n");
-  const fs::path seal = fs::temp_directory_path() / "hydrodda-resume-relieved.toml";
-  std::ofstream(seal) << scenario;
+  const fs::path seal = edited_scenario(kSeal, "hydrodda-resume-relieved",
+                                        {{"matrix_porosity = 0.1\n", "matrix_porosity = 0.1\nbiot_coefficient = 0.6\n"}});
   const auto whole = run_program("run " + seal.string() + " -o " + f.whole.string());
   ASSERT_EQ(whole.exit_code, 0) << whole.output;
   ASSERT_GE(read_summary_without_timings(f.whole)["iterations"].get<int>(), 3);
-  const auto first = run_program("run " + seal.string() + " -o " + f.parts.string() + " --stop-after 1");
-  ASSERT_EQ(first.exit_code, 0) << first.output;
-  const auto second = run_program("run --resume " + f.parts.string());
-  ASSERT_EQ(second.exit_code, 0) << second.output;
-  expect_same_results(f.whole, f.parts);
+  expect_stopped_and_resumed_alike(seal, f, 1);
   fs::remove(seal);
 }
 
@@ -155,19 +139,10 @@ TEST(Resume, RollersRelievedOfTheFacesShareOfPressureResumeBitForBit) {
 // round_2/ match those of a run never stopped, byte for byte.
 TEST(Resume, ARunStoppedInItsSecondMeshRoundResumesOnThatMesh) {
   Folders f("refine-tips");
-  std::ifstream in(fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/paper/symmetric_flexure_20m.toml");
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string scenario = text.str();
-  for (const auto& [from, to] : {std::pair<std::string, std::string>{"permeability_law = \"kozeny-carman\"",
-                                                                     "permeability_law = \"cubic\""},
-                                 {"[mesh]\n", "[mesh]\nrefine_tips = true\n"}}) {
-    const auto at = scenario.find(from);
-    ASSERT_NE(at, std::string::npos) << from;
-    scenario.replace(at, from.size(), to);
-  }
-  const fs::path file = fs::temp_directory_path() / "hydrodda-resume-refine-tips.toml";
-  std::ofstream(file) << scenario;
+  const fs::path file = edited_scenario(fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/paper/symmetric_flexure_20m.toml",
+                                        "hydrodda-resume-refine-tips",
+                                        {{"permeability_law = \"kozeny-carman\"", "permeability_law = \"cubic\""},
+                                         {"[mesh]\n", "[mesh]\nrefine_tips = true\n"}});
 
   const auto whole = run_program("run " + file.string() + " -o " + f.whole.string());
   ASSERT_EQ(whole.exit_code, 0) << whole.output;

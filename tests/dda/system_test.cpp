@@ -263,7 +263,7 @@ TEST(System, AStepThatNeverSettlesSaysWhatFailedAndWhen) {
 // that starts 1 mm into the base, with a penalty so soft (1e3 N/m) that the augmented Lagrangian
 // hardly moves it and one pass allowed: each cut of the step leaves the overlap as it was (the
 // block's inertia holds it), and the error names the block's corner and its overlap, at the
-// last cut and at the full step.
+// last cut and at the step's first try.
 TEST(System, AStepWhoseContactForcesNeverSettleNamesTheContact) {
   ModelDefinition m = testing::make_incline(0.0, 30.0, 0.0);
   m.blocks[1].polygon = testing::make_rectangle(15.0, -1e-3, 16.0, 0.999);
@@ -276,7 +276,7 @@ TEST(System, AStepWhoseContactForcesNeverSettleNamesTheContact) {
             std::string::npos) << what;
   EXPECT_NE(what.find(" of block 1 against edge 2 of block 0 at ("), std::string::npos) << what;
   EXPECT_NE(what.find("overlaps it by 0.001 m, against a penetration tolerance of 1e-06 m"), std::string::npos) << what;
-  // What failed at the full step is said too, as it differs from the last cut's (one pass, not two).
+  // What failed at the step's first try is said too, as it differs from the last cut's (one pass, not two).
   EXPECT_NE(what.find("; at its first try (0.001 s), the contact forces (Lagrange multipliers and friction) did not "
                       "settle in 1 pass: the farthest from touching, vertex "),
             std::string::npos) << what;
