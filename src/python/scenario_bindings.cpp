@@ -3,8 +3,11 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "output/run_folder.hpp"
 #include "run/run.hpp"
@@ -23,9 +26,14 @@ py::list diagnostics_list(const scenario::ScenarioError& error) {
   return list;
 }
 
+// Lists deeper than this are no scenario value (its deepest are lists of points, two levels):
+// the conversion recurses, and a list nested 200,000 deep would overflow the stack.
+constexpr std::size_t kMaxListDepth = 32;
+
 // `value` as TOML text for apply_overrides: booleans, integers, floats, strings (quoted, so a
-// string never reads as a number) and lists of them.
-std::string toml_value(const py::handle& value) {
+// string never reads as a number) and lists of them. `enclosing`: the lists `value` is inside,
+// outermost first, to refuse a list that contains itself.
+std::string toml_value(const py::handle& value, std::vector<PyObject*>& enclosing) {
   if (py::isinstance<py::bool_>(value)) return value.cast<bool>() ? "true" : "false";
   if (py::isinstance<py::int_>(value)) return py::str(value).cast<std::string>();
   if (py::isinstance<py::float_>(value)) {
@@ -45,18 +53,37 @@ std::string toml_value(const py::handle& value) {
     return quoted + "\"";
   }
   if (py::isinstance<py::sequence>(value)) {
+    if (std::find(enclosing.begin(), enclosing.end(), value.ptr()) != enclosing.end())
+      throw py::value_error("a list that contains itself is no scenario value");
+    if (enclosing.size() >= kMaxListDepth)
+      throw py::value_error("lists nested more than " + std::to_string(kMaxListDepth) +
+                            " deep are no scenario value");
+    enclosing.push_back(value.ptr());
     std::string list = "[";
-    for (const py::handle item : value.cast<py::sequence>()) list += (list.size() > 1 ? ", " : "") + toml_value(item);
+    // An object, not a handle: a NumPy array's items are made as they are read.
+    for (const py::object item : value.cast<py::sequence>())
+      list += (list.size() > 1 ? ", " : "") + toml_value(item, enclosing);
+    enclosing.pop_back();
     return list + "]";
   }
   // NumPy scalars and other numbers.
   if (py::hasattr(value, "__float__")) {
     PyObject* number = PyNumber_Float(value.ptr());
     if (number == nullptr) throw py::error_already_set();
-    return toml_value(py::reinterpret_steal<py::object>(number));
+    return toml_value(py::reinterpret_steal<py::object>(number), enclosing);
   }
   throw py::type_error("a scenario value must be a bool, a number, a string or a list of them, not " +
                        py::str(value.get_type().attr("__name__")).cast<std::string>());
+}
+
+// The same, naming the key in a refusal.
+std::string toml_value(const std::string& key, const py::handle& value) {
+  std::vector<PyObject*> enclosing;
+  try {
+    return toml_value(value, enclosing);
+  } catch (const py::value_error& e) {
+    throw py::value_error(key + ": " + e.what());
+  }
 }
 
 const char* kind_name(run::RunKind kind) {
@@ -76,7 +103,7 @@ PythonScenario read_python_scenario(std::string text, const std::filesystem::pat
 }
 
 PythonScenario with_value(const PythonScenario& scenario, const std::string& key, const py::handle& value) {
-  std::string text = scenario::apply_overrides(scenario.text, scenario.file, {{key, toml_value(value)}});
+  std::string text = scenario::apply_overrides(scenario.text, scenario.file, {{key, toml_value(key, value)}});
   return read_python_scenario(std::move(text), scenario.file);
 }
 

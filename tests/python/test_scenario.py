@@ -125,3 +125,26 @@ def test_set_values_of_every_type():
     with pytest.raises(hydrodda.ScenarioError) as error:
         scenario.set("mechanics.contact", 3)
     assert [d.key for d in error.value.diagnostics] == ["mechanics.contact"]
+
+
+def test_a_list_that_contains_itself_is_refused():
+    scenario = hydrodda.Scenario.load(VERIFICATION / "free_fall.toml")
+    gravity = [0.0, -9.81]
+    gravity.append(gravity)
+    with pytest.raises(ValueError, match=r"mechanics.gravity: a list that contains itself"):
+        scenario.set("mechanics.gravity", gravity)
+    assert scenario.to_toml() == (VERIFICATION / "free_fall.toml").read_text()  # unchanged
+
+
+def test_lists_nested_deeper_than_any_scenario_value_are_refused():
+    """200,000 levels overflowed the stack of the conversion to TOML."""
+    scenario = hydrodda.Scenario.load(VERIFICATION / "free_fall.toml")
+    deep = [0.0]
+    for _ in range(200_000):
+        deep = [deep]
+    with pytest.raises(ValueError, match=r"mechanics.gravity: lists nested more than 32 deep"):
+        scenario.set("mechanics.gravity", deep)
+    # A list that holds the same list twice (not itself) is a value like any other.
+    point = [0.0, -9.81]
+    with pytest.raises(hydrodda.ScenarioError):
+        scenario.set("mechanics.gravity", [point, point])
