@@ -1,6 +1,7 @@
 // CHOLMOD through Eigen's CholmodSupport; supernodal_correction.cpp reads the factor it makes.
 #include <omp.h>
 
+#include <mutex>
 #include <optional>
 
 #include <Eigen/CholmodSupport>
@@ -9,6 +10,7 @@
 #include "hydro/nested_dissection.hpp"
 #include "hydro/supernodal_correction.hpp"
 #include "hydro/supernodal_factorization.hpp"
+#include "mesh/metis_lock.hpp"
 
 namespace hydrodda::hydro {
 namespace {
@@ -80,6 +82,7 @@ class CholmodSolver final : public LinearSolver {
       // factorisation and the solves are numeric_'s, which keeps its own.
       cholmod_free_work(factor_.common());
     } else {
+      const std::lock_guard<std::mutex> one_at_a_time(mesh::metis_lock());  // CHOLMOD may order with METIS
       factor_.analyzePattern(upper);
     }
     analysed_ = true;

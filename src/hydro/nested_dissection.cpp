@@ -10,10 +10,12 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
 
+#include "mesh/metis_lock.hpp"
 #include "mesh/program_files.hpp"
 
 extern char** environ;
@@ -66,6 +68,7 @@ std::vector<idx_t> order_whole(Graph& g) {
   if (n == 0) return order;
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
+  const std::lock_guard<std::mutex> one_at_a_time(mesh::metis_lock());
   check(METIS_NodeND(&n, g.xadj.data(), g.adjncy.data(), nullptr, options, order.data(), inverse.data()),
         "order the flow matrix");
   return order;
@@ -191,9 +194,12 @@ FillOrder order_by_nested_dissection(const SparseMatrix& upper, bool with_helper
   std::vector<idx_t> part(n);
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
-  check(METIS_ComputeVertexSeparator(&count, g.xadj.data(), g.adjncy.data(), nullptr, options, &separator_size,
-                                     part.data()),
-        "split the flow matrix's graph");
+  {
+    const std::lock_guard<std::mutex> one_at_a_time(mesh::metis_lock());
+    check(METIS_ComputeVertexSeparator(&count, g.xadj.data(), g.adjncy.data(), nullptr, options, &separator_size,
+                                       part.data()),
+          "split the flow matrix's graph");
+  }
   std::vector<idx_t> half[2], separator;
   for (idx_t v = 0; v < n; ++v) (part[v] == 2 ? separator : half[part[v]]).push_back(v);
   if (half[0].empty() || half[1].empty()) return as_order(order_whole(g));

@@ -4,11 +4,13 @@
 #include <dlfcn.h>
 
 #include <filesystem>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
 #include "mesh/gmsh/gmsh_plugin.hpp"
 #include "mesh/mesh_request.hpp"
+#include "mesh/metis_lock.hpp"
 #include "mesh/program_files.hpp"
 
 namespace hydrodda::mesh {
@@ -46,12 +48,14 @@ const Plugin& plugin() {
 
 TriangleMesh generate_mesh(const MeshRequest& request) {
   TriangleMesh mesh;
+  const std::lock_guard<std::mutex> one_at_a_time(metis_lock());  // Gmsh orders with METIS
   plugin().generate(request, mesh);
   return mesh;
 }
 
 TriangleMesh read_msh(const std::string& path, bool verbose) {
   TriangleMesh mesh;
+  const std::lock_guard<std::mutex> one_at_a_time(metis_lock());
   plugin().read(path, verbose, mesh);
   return mesh;
 }
