@@ -13,9 +13,18 @@ namespace hydrodda::python {
 
 class PythonCallbacks {
  public:
-  // `keep_fields`: keep the model's fields at the run's end (fields_at_end).
-  explicit PythonCallbacks(py::object progress, bool keep_fields = false)
-      : progress_(std::move(progress)), keep_fields_(keep_fields) {}
+  // `keep_fields`: keep the model's fields at the run's end (fields_at_end). Make it on the
+  // thread that runs, and keep it there until the run is over: while it lives it is the one
+  // take_interrupt() hands to.
+  explicit PythonCallbacks(py::object progress, bool keep_fields = false);
+  ~PythonCallbacks();
+  PythonCallbacks(const PythonCallbacks&) = delete;
+  PythonCallbacks& operator=(const PythonCallbacks&) = delete;
+
+  // An error that must stop the run rather than be dropped (KeyboardInterrupt raised in a
+  // logging handler while the run logged): kept by the calling thread's run, which then stops
+  // as at Ctrl-C and raises it. False when no run is under way on this thread.
+  static bool take_interrupt(py::error_already_set&& error);
 
   // Valid while this object lives; call the run with the GIL released.
   run::Callbacks callbacks();
@@ -30,6 +39,7 @@ class PythonCallbacks {
   bool keep_fields_ = false;
   std::optional<py::error_already_set> pending_;
   std::optional<py::dict> fields_at_end_;
+  PythonCallbacks* enclosing_;  // the run under way on this thread before this one, if any
 };
 
 }  // namespace hydrodda::python

@@ -48,7 +48,22 @@ py::dict result_fields(const run::RunResult& result, const PythonCallbacks& call
   return fields;
 }
 
+thread_local PythonCallbacks* current_run = nullptr;  // the innermost run under way on this thread
+
 }  // namespace
+
+PythonCallbacks::PythonCallbacks(py::object progress, bool keep_fields)
+    : progress_(std::move(progress)), keep_fields_(keep_fields), enclosing_(current_run) {
+  current_run = this;
+}
+
+PythonCallbacks::~PythonCallbacks() { current_run = enclosing_; }
+
+bool PythonCallbacks::take_interrupt(py::error_already_set&& error) {
+  if (current_run == nullptr) return false;
+  if (!current_run->pending_) current_run->pending_.emplace(std::move(error));
+  return true;
+}
 
 run::Callbacks PythonCallbacks::callbacks() {
   run::Callbacks callbacks;

@@ -5,10 +5,13 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <atomic>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <regex>
 #include <stdexcept>
+#include <thread>
 #include <variant>
 
 #include "coupling/staggered_loop.hpp"
@@ -22,6 +25,7 @@
 #include "run/flow_model.hpp"
 #include "run/mechanics_model.hpp"
 #include "run/run.hpp"
+#include "run/run_summary.hpp"
 
 namespace hydrodda::python {
 
@@ -30,6 +34,44 @@ namespace {
 py::object summary_dict(const output::RunSummary& summary) {
   return py::module_::import("json").attr("loads")(output::format_summary(summary));
 }
+
+// One caller of a model at a time. A step, pass or solve runs with the GIL released, so
+// another Python thread may call into the same model meanwhile: it waits (the GIL released
+// while it waits) until the first is done. A call from inside one under way on the same
+// thread (a signal or logging handler) would wait for itself: it is refused.
+class ModelLock {
+ public:
+  class Held {
+   public:
+    explicit Held(ModelLock& lock) : lock_(lock) {}
+    ~Held() {
+      lock_.owner_ = std::thread::id();
+      lock_.mutex_.unlock();
+    }
+    Held(const Held&) = delete;
+    Held& operator=(const Held&) = delete;
+
+   private:
+    ModelLock& lock_;
+  };
+
+  // Call with the GIL held.
+  [[nodiscard]] Held hold(const char* what) {
+    if (owner_ == std::this_thread::get_id())
+      throw std::runtime_error(std::string(what) + ": this Simulation is in a call on this thread already (a " +
+                               "handler called while it steps cannot use it)");
+    if (!mutex_.try_lock()) {
+      py::gil_scoped_release released;
+      mutex_.lock();
+    }
+    owner_ = std::this_thread::get_id();
+    return Held(*this);
+  }
+
+ private:
+  std::mutex mutex_;
+  std::atomic<std::thread::id> owner_{};
+};
 
 // A scenario's model, stepped by hand.
 class Simulation {
@@ -41,12 +83,16 @@ class Simulation {
       throw py::value_error(
           "mesh.refine_tips = true: a Simulation keeps the mesh it is built on; hydrodda.run() meshes again around "
           "the wedge tips (or set it false to step the model by hand)");
-    py::gil_scoped_release released;
-    switch (run::kind_of(scenario.definition)) {
-      case run::RunKind::flow: model_ = std::make_unique<run::FlowModel>(scenario.definition); break;
-      case run::RunKind::mechanics: model_ = std::make_unique<run::MechanicsModel>(scenario.definition); break;
-      case run::RunKind::coupled: model_ = std::make_unique<run::CoupledModel>(scenario.definition); break;
+    PythonCallbacks callbacks{py::none()};  // Ctrl-C in a logging handler while building: raised once built
+    {
+      py::gil_scoped_release released;
+      switch (run::kind_of(scenario.definition)) {
+        case run::RunKind::flow: model_ = std::make_unique<run::FlowModel>(scenario.definition); break;
+        case run::RunKind::mechanics: model_ = std::make_unique<run::MechanicsModel>(scenario.definition); break;
+        case run::RunKind::coupled: model_ = std::make_unique<run::CoupledModel>(scenario.definition); break;
+      }
     }
+    callbacks.raise_pending();
   }
 
   std::string kind() const {
@@ -55,14 +101,20 @@ class Simulation {
 
   // Flow only: the steady solve.
   void solve() {
+    const ModelLock::Held held = lock_.hold("solve()");
     run::FlowModel& model = *expect<Flow>("solve()");
-    py::gil_scoped_release released;
-    model.solve();
+    PythonCallbacks callbacks{py::none()};  // the one solve is not stopped: Ctrl-C is raised after it
+    {
+      py::gil_scoped_release released;
+      model.solve();
+    }
+    callbacks.raise_pending();
   }
 
   // Mechanics only: up to `count` DDA steps, fewer when the run reaches its end; the number
   // taken. Ctrl-C stops after the step under way (KeyboardInterrupt).
   long long step(long long count) {
+    const ModelLock::Held held = lock_.hold("step()");
     run::MechanicsModel& model = *expect<Mechanics>("step()");
     PythonCallbacks callbacks{py::none()};
     const run::Callbacks stop = callbacks.callbacks();
@@ -81,6 +133,7 @@ class Simulation {
   // Coupled: one coupling pass; what it measured. Ctrl-C abandons the pass, the model left at
   // its last finished one (KeyboardInterrupt).
   py::dict run_pass() {
+    const ModelLock::Held held = lock_.hold("run_pass()");
     run::CoupledModel& model = *expect<Coupled>("run_pass()");
     PythonCallbacks callbacks{py::none()};
     model.set_stop_request(callbacks.callbacks().stop_requested);
@@ -110,12 +163,12 @@ class Simulation {
   }
 
   bool finished() const {
-    if (const auto* m = std::get_if<Mechanics>(&model_)) return (*m)->finished();
-    if (std::holds_alternative<Coupled>(model_)) return converged_;
-    return !std::get<Flow>(model_)->flow().head.empty();
+    const ModelLock::Held held = lock_.hold("finished");
+    return is_finished();
   }
 
   py::dict fluid() const {
+    const ModelLock::Held held = lock_.hold("fluid");
     if (const auto* f = std::get_if<Flow>(&model_))
       return fluid_fields((*f)->mesh(), &(*f)->flow(), (*f)->permeability());
     const run::CoupledModel& model = *expect_const<Coupled>("fluid");
@@ -126,6 +179,7 @@ class Simulation {
   // The fractures as the blocks stand (with their flow once a coupled pass has solved it);
   // None for a scenario that lists its blocks.
   py::object fractures() {
+    const ModelLock::Held held = lock_.hold("fractures");
     const dda::System& blocks = system("fractures");
     if (!meter_) {
       meter_ = run::make_fracture_meter(scenario_.definition);
@@ -146,6 +200,7 @@ class Simulation {
   // A loading path: a new value of a flow boundary condition or of a traction, from the next
   // solve, step or pass on (the key paths of Scenario.set).
   void set(const std::string& key, const py::handle& value) {
+    const ModelLock::Held held = lock_.hold("set()");
     static const std::regex flow_key(R"(flow\.boundary\[\d+\]\.(head|pressure|flux))");
     static const std::regex traction_key(R"(mechanics\.traction\[\d+\]\.(normal|normal_end|shear|shear_end))");
     const bool flow = std::regex_match(key, flow_key);
@@ -170,13 +225,32 @@ class Simulation {
     converged_ = false;
   }
 
-  PythonScenario scenario() const { return scenario_; }  // a copy: changing it changes no model
+  PythonScenario scenario() const {  // a copy: changing it changes no model
+    const ModelLock::Held held = lock_.hold("scenario");
+    return scenario_;
+  }
 
-  py::dict blocks() const { return block_fields(system("blocks")); }
-  py::dict contacts() const { return contact_fields(system("contacts")); }
+  py::dict blocks() const {
+    const ModelLock::Held held = lock_.hold("blocks");
+    return block_fields(system("blocks"));
+  }
+  py::dict contacts() const {
+    const ModelLock::Held held = lock_.hold("contacts");
+    return contact_fields(system("contacts"));
+  }
 
+  // `converged` as a run's summary.json says it: the model finished (flow solved, steps or end
+  // time reached, the coupling loop met its tolerance) and its blocks followed every prescribed
+  // displacement (else the run fails, and `message` says which did not).
   py::object summary() const {
-    return std::visit([](const auto& model) { return summary_dict(model->summary()); }, model_);
+    const ModelLock::Held held = lock_.hold("summary");
+    output::RunSummary summary = std::visit([](const auto& model) { return model->summary(); }, model_);
+    summary.converged = is_finished();
+    if (!std::holds_alternative<Flow>(model_)) {
+      summary.message = run::describe_unreached_displacement(scenario_.definition, system("summary"));
+      if (!summary.message.empty()) summary.converged = false;
+    }
+    return summary_dict(summary);
   }
 
  private:
@@ -194,11 +268,18 @@ class Simulation {
     if (const auto* m = std::get_if<Model>(&model_)) return *m;
     throw std::logic_error(std::string(what) + " is not for a " + kind() + " simulation");
   }
+  // Flow solved; steps or end time reached; the coupling loop met its tolerance.
+  bool is_finished() const {
+    if (const auto* m = std::get_if<Mechanics>(&model_)) return (*m)->finished();
+    if (std::holds_alternative<Coupled>(model_)) return converged_;
+    return !std::get<Flow>(model_)->flow().head.empty();
+  }
   const dda::System& system(const char* what) const {
     if (const auto* m = std::get_if<Mechanics>(&model_)) return (*m)->system();
     return expect_const<Coupled>(what)->mechanics();
   }
 
+  mutable ModelLock lock_;   // every call but kind holds it
   PythonScenario scenario_;  // as built, with the changes set() made since
   std::variant<Flow, Mechanics, Coupled> model_;
   bool converged_ = false;  // coupled: the last pass met the tolerance

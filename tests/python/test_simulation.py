@@ -217,3 +217,22 @@ def test_a_simulation_refuses_to_refine_tips_it_cannot_mesh_again():
     scenario.set("mesh.refine_tips", True)
     with pytest.raises(ValueError, match="mesh.refine_tips"):
         hydrodda.Simulation(scenario)
+
+
+@pytest.mark.parametrize("name", ["flow_linear_head", "free_fall", "coupled_hydrostatic_column"])
+def test_summary_says_converged_as_the_runs_summary_does(in_tmp, name):
+    """A finished model's summary says converged, as summary.json of its run does; one not yet
+    finished says it did not."""
+    scenario = hydrodda.Scenario.load(VERIFICATION / f"{name}.toml")
+    if name == "free_fall":
+        scenario.set("mechanics.end_time", 0.005)  # 5 steps
+    sim = hydrodda.Simulation(scenario)
+    advance = {"flow": sim.solve, "mechanics": sim.step, "coupled": sim.run_pass}[sim.kind]
+    advance()
+    if not sim.finished:
+        assert sim.summary["converged"] is False
+    while not sim.finished:
+        advance()
+    result = hydrodda.run(scenario, "run")
+    assert result.converged and result.summary["converged"] is True
+    assert sim.summary["converged"] is True
