@@ -10,21 +10,36 @@ See docs/python.md for every call.
 """
 
 import json
+import numbers
+import platform
+import sys
 from pathlib import Path
 
-from ._hydrodda import (  # noqa: F401
-    Diagnostic,
-    InputError,
-    ProgressReport,
-    RunFolderError,
-    Scenario,
-    ScenarioError,
-    Simulation,
-    __version__,
-    _resume,
-    _run,
-)
-from .run_folder import read_history
+
+def _for_another_interpreter(error):
+    """`error` (the extension or NumPy not found) saying which interpreter hydrodda is built for."""
+    from ._built_for import INTERPRETER, VERSION
+    message = (f"hydrodda is built for {INTERPRETER} (Python {VERSION}) with its NumPy; this is "
+               f"{sys.executable} (Python {platform.python_version()}): {error} (docs/python.md, 'Getting it')")
+    return type(error)(message, name=error.name, path=error.path)
+
+
+try:
+    from ._hydrodda import (  # noqa: F401
+        Diagnostic,
+        InputError,
+        ProgressReport,
+        RunFolderError,
+        Scenario,
+        ScenarioError,
+        Simulation,
+        __version__,
+        _resume,
+        _run,
+    )
+    from .run_folder import read_history
+except ImportError as error:
+    raise _for_another_interpreter(error) from error
 
 __all__ = [
     "Diagnostic", "InputError", "ProgressReport", "RunFolderError", "RunResult", "Scenario",
@@ -67,16 +82,27 @@ class RunResult:
                 f"iterations={self.iterations}, folder={str(self.folder)!r}>")
 
 
+def _check_stop_after(stop_after):
+    """Refuses what `hydrodda run --stop-after` refuses: a count of passes starts at 1."""
+    if stop_after is None:
+        return None
+    if isinstance(stop_after, bool) or not isinstance(stop_after, numbers.Integral) or stop_after < 1:
+        raise ValueError(f"stop_after: must be a whole number >= 1, got {stop_after!r}")
+    return int(stop_after)
+
+
 def run(scenario, folder=None, *, progress=None, overwrite=False, stop_after=None):
     """Runs `scenario` into `folder` (default: the scenario's output.directory) as `hydrodda run`
     does, file for file. `progress(report)` is called after every DDA step, coupling pass or
     flow solve. A folder that holds files raises RunFolderError unless `overwrite`. Ctrl-C stops
     the run after its current step or pass, with the folder at the last finished one, and then
     raises KeyboardInterrupt; an exception in `progress` stops it likewise and is raised."""
+    stop_after = _check_stop_after(stop_after)
     return RunResult(_run(scenario, None if folder is None else Path(folder), overwrite, stop_after, progress))
 
 
 def resume(folder, *, progress=None, stop_after=None):
     """Continues the coupled run in `folder` (stopped by stop_after or interrupted) after its last
     finished pass, as `hydrodda run --resume` does."""
+    stop_after = _check_stop_after(stop_after)
     return RunResult(_resume(Path(folder), stop_after, progress))

@@ -113,6 +113,19 @@ def test_stop_after_on_a_flow_run_is_an_input_error(in_tmp):
     assert not (in_tmp / "stopped").exists()
 
 
+def test_stop_after_counts_from_one_as_the_programs(in_tmp):
+    """`--stop-after 0` is refused by the program; so is stop_after=0, before anything runs."""
+    name = write_scenario(in_tmp, VERIFICATION / "coupled_hydrostatic_column.toml", {}, "column.toml")
+    code, _, err = run_program("run", name, "-o", "prog", "--stop-after", "0", cwd=in_tmp)
+    assert code != 0 and "must be a whole number >= 1, got 0" in err
+    for stop_after in (0, -1):
+        with pytest.raises(ValueError, match=f"stop_after: must be a whole number >= 1, got {stop_after}"):
+            hydrodda.run(hydrodda.Scenario.load(name), "py", stop_after=stop_after)
+        with pytest.raises(ValueError, match="stop_after: must be a whole number >= 1"):
+            hydrodda.resume("py", stop_after=stop_after)
+    assert not (in_tmp / "py").exists()
+
+
 def test_a_model_error_raises_and_leaves_no_folder(in_tmp):
     scenario = hydrodda.Scenario.load(SOURCE_DIR / "tests/cli/bad_scenarios/fixed_point_in_no_block.toml")
     with pytest.raises(hydrodda.ScenarioError) as error:
