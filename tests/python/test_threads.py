@@ -1,6 +1,7 @@
 """Python threads: one Simulation called from two of them, and two runs side by side, each
 giving what it gives alone, bit for bit."""
 
+import logging
 import os
 import subprocess
 import sys
@@ -11,9 +12,9 @@ import numpy as np
 import hydrodda
 from conftest import VERIFICATION
 
-# The second thread calls while the first is inside its steps, without a clock: the first
-# keeps the GIL (a switch interval of 1000 s) until step() releases it, and only then can the
-# second, woken before, run.
+# The second thread calls once the first is inside its steps, without a clock: the first keeps
+# the GIL (no forced switch with an interval of 1000 s) until step() releases it, holding the
+# model, and only then can the second, woken before, run.
 SECOND_CALLER = """
 import sys, threading, hydrodda
 sys.setswitchinterval(1000)
@@ -42,9 +43,10 @@ print(first, second["taken"], second["steps_after"],
 
 
 def test_a_second_thread_waits_for_the_steps_under_way(in_tmp):
-    """Without the model's lock both threads step one model at once: a crash (SIGSEGV) or
-    blocks moved by two steps at a time. With it the second call waits: its step is the 201st,
-    and the model ends where 201 steps on one thread leave it."""
+    """Without the model's lock the second thread steps the model while the first does: a
+    crash (SIGSEGV) or blocks moved by two steps at once (its step came 12th). With it the
+    second call waits: its step is the 201st, and the model ends where 201 steps on one thread
+    leave it."""
     child = subprocess.run([sys.executable, "-c", SECOND_CALLER, str(VERIFICATION / "brick_wall_determinism.toml")],
                            cwd=in_tmp, capture_output=True, text=True, env=os.environ, timeout=600)
     assert child.returncode == 0, child.stderr
@@ -85,3 +87,39 @@ def test_runs_side_by_side_equal_a_run_alone(in_tmp):
         assert result.status == "finished"
         np.testing.assert_array_equal(result.fluid["head"], alone.fluid["head"])
         assert result.summary["flow"] == alone.summary["flow"]
+
+
+class CallOnALine(logging.Handler):
+    """Calls `call` while the logger "hydrodda" handles a line that contains `text`; keeps what
+    it raised."""
+
+    def __init__(self, text, call):
+        super().__init__(logging.WARNING)
+        self.text, self.call = text, call
+        self.raised = []
+
+    def emit(self, record):
+        if self.text in record.getMessage():
+            try:
+                self.call()
+            except RuntimeError as error:
+                self.raised.append(str(error))
+
+
+def test_a_handler_inside_a_call_cannot_call_its_simulation():
+    """A logging handler runs inside the Simulation's own call, on its thread: its call into
+    the same model would wait for the call that runs it, so it is refused (RuntimeError)."""
+    scenario = hydrodda.Scenario.load(VERIFICATION / "flow_linear_head.toml")
+    scenario.set("flow.boundary[1].head", 3.0)  # the left's: still water, which summary warns of
+    sim = hydrodda.Simulation(scenario)
+    sim.solve()
+    handler = CallOnALine("still water", lambda: sim.fluid)
+    logger = logging.getLogger("hydrodda")
+    logger.addHandler(handler)
+    try:
+        sim.summary  # noqa: B018
+    finally:
+        logger.removeHandler(handler)
+    assert handler.raised and all("fluid: this Simulation is in a call on this thread already" in r
+                                  for r in handler.raised)
+    assert "head" in sim.fluid  # not held after the refusal
