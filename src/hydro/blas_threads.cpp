@@ -10,11 +10,14 @@
 
 #include <dlfcn.h>
 
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <mutex>
 
 namespace {
+
+std::atomic<bool> pool_reached{false};  // OpenBLAS called blas_memory_alloc below
 
 std::mutex& pool_lock() {
   static std::mutex lock;
@@ -35,8 +38,12 @@ Function next_definition(const char* name) {
 
 extern "C" {
 
+void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha, const double* a,
+            const int* lda, const double* beta, double* c, const int* ldc);
+
 __attribute__((visibility("default"))) void* blas_memory_alloc(int procpos) {
   static const auto real = next_definition<void* (*)(int)>("blas_memory_alloc");
+  pool_reached.store(true);
   const std::lock_guard<std::mutex> guard(pool_lock());
   return real(procpos);
 }
@@ -51,9 +58,25 @@ __attribute__((visibility("default"))) void blas_memory_free(void* buffer) {
 
 namespace hydrodda::hydro {
 
+// OpenBLAS binds its calls of the pool's functions once, in the scope it was loaded in: a
+// library loaded before this code (NumPy's OpenBLAS, then the Python module) keeps its own,
+// though dlsym from here finds these. So ask OpenBLAS itself: a 1 × 1 dsyrk takes a buffer.
 bool blas_is_thread_safe() {
-  static const bool guarded = dlsym(RTLD_DEFAULT, "blas_memory_alloc") == reinterpret_cast<void*>(&blas_memory_alloc);
+  static const bool guarded = [] {
+    if (dlsym(RTLD_NEXT, "blas_memory_alloc") == nullptr) return true;  // not OpenBLAS
+    static constexpr int n = 1;
+    static constexpr double one = 1.0, zero = 0.0, a = 1.0;
+    double c = 0.0;
+    dsyrk_("L", "N", &n, &n, &one, &a, &n, &zero, &c, &n);
+    return pool_reached.load();
+  }();
   return guarded;
+}
+
+std::unique_lock<std::mutex> hold_blas() {
+  if (blas_is_thread_safe()) return {};
+  static std::mutex one_caller;
+  return std::unique_lock<std::mutex>(one_caller);
 }
 
 }  // namespace hydrodda::hydro

@@ -6,6 +6,7 @@
 
 #include <Eigen/CholmodSupport>
 
+#include "hydro/blas_threads.hpp"
 #include "hydro/linear_solver.hpp"
 #include "hydro/nested_dissection.hpp"
 #include "hydro/supernodal_correction.hpp"
@@ -99,6 +100,7 @@ class CholmodSolver final : public LinearSolver {
     }
     {
       const SerialOpenMP serial;
+      const std::unique_lock<std::mutex> blas = hold_blas();
       factor_.factorize(upper);
     }
     if (factor_.info() != Eigen::Success)
@@ -123,6 +125,7 @@ class CholmodSolver final : public LinearSolver {
 
   Eigen::VectorXd precondition(const Eigen::VectorXd& b) const override {
     if (numeric_ && factored_) return numeric_->solve(b, /*two_threads=*/true);
+    const std::unique_lock<std::mutex> blas = hold_blas();
     Eigen::VectorXd x = factor_.solve(b);
     if (factor_.info() != Eigen::Success) throw SingularSystem("CHOLMOD: the solve failed");
     return x;

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <stdexcept>
 #include <utility>
 #include <vector>
 
 #include <Eigen/Dense>
+
+#include "hydro/blas_threads.hpp"
 
 namespace hydrodda::hydro {
 namespace {
@@ -205,7 +208,11 @@ void SupernodalCorrection::apply(int system, Eigen::VectorXd& x) const {
   b.x = x.data();
   b.xtype = CHOLMOD_REAL;
   b.dtype = CHOLMOD_DOUBLE;
-  cholmod_dense* out = cholmod_solve(system, factor_, &b, common_);
+  cholmod_dense* out = nullptr;
+  {
+    const std::unique_lock<std::mutex> blas = hold_blas();
+    out = cholmod_solve(system, factor_, &b, common_);
+  }
   if (!out) throw SingularSystem("supernodal correction: CHOLMOD's solve failed");
   x = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(out->x), x.size());
   cholmod_free_dense(&out, common_);

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstring>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -14,7 +15,7 @@
 namespace hydrodda::hydro {
 
 // Fortran BLAS and LAPACK, as CHOLMOD calls them (OpenBLAS on Debian; two threads call it at
-// once only where blas_threads.cpp guards its buffers).
+// once only where blas_threads.cpp guards its buffers, else under hold_blas()).
 extern "C" {
 void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha, const double* a,
             const int* lda, const double* beta, double* c, const int* ldc);
@@ -210,10 +211,14 @@ void SupernodalFactorization::factor_supernode(int s, std::span<std::vector<int>
       const int inside = past - meet, below = d_end - meet;
       const double* ld = x + px_[d] + (meet - d_begin);
       double* c = work.update.data();
-      dsyrk_("L", "N", &inside, &d_width, &one, ld, &d_height, &zero, c, &below);
       const int rest = below - inside;
-      if (rest > 0)
-        dgemm_("N", "T", &rest, &inside, &d_width, &one, ld + inside, &d_height, ld, &d_height, &zero, c + inside, &below);
+      {
+        const std::unique_lock<std::mutex> blas = hold_blas();
+        dsyrk_("L", "N", &inside, &d_width, &one, ld, &d_height, &zero, c, &below);
+        if (rest > 0)
+          dgemm_("N", "T", &rest, &inside, &d_width, &one, ld + inside, &d_height, ld, &d_height, &zero, c + inside,
+                 &below);
+      }
       for (int j = 0; j < inside; ++j) {
         double* column = ls + static_cast<std::size_t>(rows_[meet + j] - first) * height;
         const double* cj = c + static_cast<std::size_t>(j) * below;
@@ -229,6 +234,7 @@ void SupernodalFactorization::factor_supernode(int s, std::span<std::vector<int>
     }
   }
 
+  const std::unique_lock<std::mutex> blas = hold_blas();
   int info = 0;
   dpotrf_("L", &width, ls, &height, &info);
   if (info != 0) {

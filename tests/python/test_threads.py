@@ -123,3 +123,25 @@ def test_a_handler_inside_a_call_cannot_call_its_simulation():
     assert handler.raised and all("fluid: this Simulation is in a call on this thread already" in r
                                   for r in handler.raised)
     assert "head" in sim.fluid  # not held after the refusal
+
+
+BLAS_FLAG = """
+import sys
+if sys.argv[1] == "numpy":
+    import numpy  # noqa: F401 — loads OpenBLAS before the module does
+import hydrodda
+print(hydrodda._hydrodda._blas_is_thread_safe())
+"""
+
+
+def test_blas_from_two_threads_only_where_its_buffers_are_guarded():
+    """OpenBLAS hands out its work buffers without a lock; the module puts one around them, which
+    OpenBLAS's own calls reach only where the module loaded it. NumPy imported first loads it
+    without: the module must not then call BLAS from two threads (it said it could)."""
+    said = {}
+    for first in ("numpy", "hydrodda"):
+        child = subprocess.run([sys.executable, "-c", BLAS_FLAG, first], capture_output=True, text=True,
+                               env=os.environ, timeout=60)
+        assert child.returncode == 0, child.stderr
+        said[first] = child.stdout.strip()
+    assert said == {"numpy": "False", "hydrodda": "True"}
