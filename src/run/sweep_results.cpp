@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <charconv>
 #include <csignal>
 #include <fstream>
 
@@ -91,8 +92,12 @@ Quantity name_quantity(const std::string& path, const std::vector<std::string>& 
     const std::string rest = path.substr(0, path.size() - k.ending.size());
     const std::size_t open = rest.rfind('['), dot = rest.rfind('.');
     if (rest.rfind("flow.boundary[", 0) == 0 && open != std::string::npos) {
-      const std::size_t index = std::stoul(rest.substr(open + 1));
-      owner = index < boundary_names.size() ? " at " + boundary_names[index] : "";
+      // The path is the user's, not yet followed: "boundary[x]" names no boundary.
+      std::size_t index = 0;
+      const char* first = rest.data() + open + 1;
+      const auto [end, error] = std::from_chars(first, rest.data() + rest.size(), index);
+      const bool read = error == std::errc{} && end != first;
+      owner = read && index < boundary_names.size() ? " at " + boundary_names[index] : "";
     } else if ((rest.rfind("flow.regions.", 0) == 0 || rest.rfind("measure.", 0) == 0) && dot != std::string::npos) {
       owner = " of " + rest.substr(dot + 1);
     }

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
+#include <cstdint>
 #include <map>
 #include <sstream>
 
@@ -52,12 +54,30 @@ std::vector<PathStep> split_key_path(const std::filesystem::path& file, const st
   return steps;
 }
 
+// A number written in full that TOML cannot hold: a whole number beyond 64 bits (2^70 =
+// 1180591620717411303424) or a decimal beyond a double's range (3e400).
+bool is_number_out_of_range(std::string_view text) {
+  if (text.size() > 1 && text.front() == '+') text.remove_prefix(1);
+  const char* last = text.data() + text.size();
+  std::int64_t whole = 0;
+  double decimal = 0.0;
+  const auto as_whole = std::from_chars(text.data(), last, whole);
+  const auto as_decimal = std::from_chars(text.data(), last, decimal);
+  return (as_whole.ec == std::errc::result_out_of_range && as_whole.ptr == last) ||
+         (as_decimal.ec == std::errc::result_out_of_range && as_decimal.ptr == last);
+}
+
 // The value text as TOML; text that does not read as a TOML value is taken as a string.
-toml::table parse_value(const std::string& value) {
+toml::table parse_value(const Override& o) {
+  const std::string& value = o.value;
   try {
     toml::table holder = toml::parse("v = " + value);
     if (holder.size() == 1 && holder.contains("v")) return holder;
   } catch (const toml::parse_error&) {
+    if (is_number_out_of_range(value))
+      throw ScenarioError({{fmt::format("--set {}={}", o.key, value), 0, o.key,
+                            fmt::format("{} is out of range: a number lies within ±1.8e308, a whole number within "
+                                        "±9.2e18 (2^63)", value)}});
   }
   toml::table holder;
   holder.insert("v", value);
@@ -99,7 +119,7 @@ void apply_override(const std::filesystem::path& file, toml::table& document, co
     table = node->as_table();
     if (!table) fail(file, o.key, fmt::format("{} is not a table", name));
   }
-  toml::table value = parse_value(o.value);
+  toml::table value = parse_value(o);
   toml::node& new_value = *value.get("v");
   const PathStep& last = steps.back();
   toml::node* old_value = table->get(last.key);

@@ -134,3 +134,22 @@ TEST(HostileInput, CommandLineMistakesSayWhatIsWanted) {
   EXPECT_FALSE(fs::exists(dir / "gone"));
   fs::remove_all(dir);
 }
+
+// A sweep's --set with an index that is not a number printed "error: stoul" and exited 1; a
+// number beyond what TOML holds was called a string.
+TEST(HostileInput, ASetsBadIndexOrOutOfRangeValueIsNamed) {
+  const fs::path out = fresh_folder("sweep-set");
+  const std::string sweep = "sweep " + kLoadedBlock.string() + " -o " + out.string();
+  const auto index = run_program(sweep + " --set 'flow.boundary[x].head=1,2'");
+  EXPECT_EQ(index.exit_code, 2) << index.output;
+  EXPECT_NE(index.output.find("flow.boundary[x].head: 'boundary[x]' is not a key with array indices"), std::string::npos)
+      << index.output;
+  const auto range = run_program(sweep + " --set mechanics.steps=1180591620717411303424,3e400");
+  EXPECT_EQ(range.exit_code, 2) << range.output;
+  for (const std::string value : {"1180591620717411303424", "3e400"})
+    EXPECT_NE(range.output.find("--set mechanics.steps=" + value + ": mechanics.steps: " + value + " is out of range"),
+              std::string::npos)
+        << range.output;
+  EXPECT_EQ(range.output.find("got a string"), std::string::npos) << range.output;
+  EXPECT_FALSE(fs::exists(out));
+}

@@ -112,6 +112,19 @@ TEST(ScenarioOverrides, BadKeysAreNamed) {
   }
 }
 
+// A number TOML cannot hold was taken for a string, which the reader then called one.
+TEST(ScenarioOverrides, ANumberBeyondTomlsRangeIsSaidToBeOutOfRange) {
+  for (const std::string value : {"1180591620717411303424", "-9223372036854775809", "3e400", "-3e400", "+3e400"}) {
+    SCOPED_TRACE(value);
+    EXPECT_NE(error_of({{"coupling.relaxation", value}})
+                  .find("--set coupling.relaxation=" + value + ": coupling.relaxation: " + value + " is out of range"),
+              std::string::npos)
+        << error_of({{"coupling.relaxation", value}});
+  }
+  // Text that is no number at all is still a string.
+  EXPECT_EQ(error_of({{"mechanics.contact", "penalty"}}), "");
+}
+
 TEST(ScenarioOverrides, RelativeMeshFileBecomesAbsolute) {
   const std::filesystem::path file = "/data/models/case.toml";
   const std::string text = apply_overrides("[mesh]\nfile = \"meshes/m.msh\"\n", file, {});
