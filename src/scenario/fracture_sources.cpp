@@ -9,6 +9,7 @@
 #include <limits>
 #include <sstream>
 
+#include "scenario/input_files.hpp"
 #include "scenario/validation.hpp"
 
 namespace hydrodda::scenario {
@@ -17,6 +18,8 @@ namespace {
 
 // More traces than the cutting handles in reasonable time (a few thousand take a second).
 constexpr double kMaxTracesPerSet = 100'000;
+// Bad rows of a fractures file reported one by one; a file of many is likely no such file at all.
+constexpr int kMaxRowErrors = 20;
 
 std::string_view trim(std::string_view s) {
   while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
@@ -24,20 +27,64 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
-// The comma-separated numbers of a line, or empty when a field is not a finite number.
-std::optional<std::vector<double>> parse_numbers(std::string_view line) {
-  std::vector<double> values;
+// A field of a row: a finite number (`value`), a number a double cannot hold ("1e400"), one
+// that is not finite ("nan", "inf"), a number followed by more ("1 2", "3m"), or text.
+enum class FieldKind { number, out_of_range, not_finite, partial, text };
+
+FieldKind read_field(std::string_view field, double& value) {
+  if (field.size() > 1 && field.front() == '+' && field[1] != '-') field.remove_prefix(1);
+  const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
+  if (field.empty() || error == std::errc::invalid_argument) return FieldKind::text;
+  if (end != field.data() + field.size()) return FieldKind::partial;
+  if (error == std::errc::result_out_of_range) return FieldKind::out_of_range;
+  return std::isfinite(value) ? FieldKind::number : FieldKind::not_finite;
+}
+
+// A row split at its commas, each field trimmed.
+std::vector<std::string_view> split_fields(std::string_view line) {
+  std::vector<std::string_view> fields;
   for (;;) {
     const std::size_t comma = line.find(',');
-    const std::string_view field = trim(line.substr(0, comma));
-    double v = 0.0;
-    const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), v);
-    if (field.empty() || error != std::errc() || end != field.data() + field.size() || !std::isfinite(v))
-      return std::nullopt;
-    values.push_back(v);
-    if (comma == std::string_view::npos) return values;
+    fields.push_back(trim(line.substr(0, comma)));
+    if (comma == std::string_view::npos) return fields;
     line.remove_prefix(comma + 1);
   }
+}
+
+// A row as quoted in a message: a line of a file that is not CSV may be long.
+std::string quote_row(std::string_view line) {
+  constexpr std::size_t kShown = 60;
+  return line.size() <= kShown ? fmt::format("\"{}\"", line) : fmt::format("\"{}...\"", line.substr(0, kShown));
+}
+
+// What a row is: a header (a first row with no number in it), a trace, or a problem to report.
+struct ReadRow {
+  bool header = false;
+  std::optional<Segment> trace;
+  std::string problem;
+};
+
+ReadRow read_row(std::string_view line, bool may_be_header) {
+  static constexpr const char* kColumns[] = {"x1", "y1", "x2", "y2"};
+  const std::vector<std::string_view> fields = split_fields(line);
+  std::vector<double> values(fields.size());
+  std::vector<FieldKind> kinds;
+  for (std::size_t i = 0; i < fields.size(); ++i) kinds.push_back(read_field(fields[i], values[i]));
+  if (may_be_header && std::all_of(kinds.begin(), kinds.end(), [](FieldKind k) { return k == FieldKind::text; }))
+    return {true, std::nullopt, {}};
+  const std::string expected = "expected four numbers x1,y1,x2,y2, got " + quote_row(line);
+  if (fields.size() != 4 || std::any_of(kinds.begin(), kinds.end(), [](FieldKind k) {
+        return k == FieldKind::text || k == FieldKind::partial;
+      }))
+    return {false, std::nullopt, expected};
+  for (std::size_t i = 0; i < 4; ++i) {
+    if (kinds[i] == FieldKind::out_of_range)
+      return {false, std::nullopt, fmt::format("{}: {} = {} is beyond the range of a number (about 1e-308 to 1e308)", expected,
+                                        kColumns[i], fields[i])};
+    if (kinds[i] == FieldKind::not_finite)
+      return {false, std::nullopt, fmt::format("{}: {} = {} is not a finite number", expected, kColumns[i], fields[i])};
+  }
+  return {false, Segment{{values[0], values[1]}, {values[2], values[3]}}, {}};
 }
 
 }  // namespace
@@ -79,7 +126,10 @@ void read_joint_sets(ReadContext& ctx, const TableView& g, GeometryDefinition& g
     if (set.length && !j.has("gap")) ctx.defaults.push_back({indexed + ".gap", format_number(*set.length) + " (length)"});
     if (auto region = j.points("region")) {
       set.region = std::move(*region);
-      check_polygon(ctx, j.line_of_key("region"), j.key_path("region"), set.region);
+      if (check_polygon(ctx, j.line_of_key("region"), j.key_path("region"), set.region) &&
+          geometry.domain.size() >= 3 && !polygons_overlap(set.region, geometry.domain))
+        ctx.error(j.line_of_key("region"), j.key_path("region"),
+                  "the set's region lies wholly outside geometry.domain, so none of its joints would cut it");
     }
     if (auto seed = j.integer("seed", 0, std::numeric_limits<int>::max())) {
       set.seed = static_cast<std::uint64_t>(*seed);
@@ -112,6 +162,7 @@ void read_fractures_file(ReadContext& ctx, const TableView& g, const std::filesy
   std::filesystem::path path(*name);
   if (path.is_relative()) path = scenario_file.parent_path() / path;
   geometry.fractures_file = path;
+  if (!check_named_file(ctx, line, key, path, kMaxFracturesFileBytes)) return;
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     ctx.error(line, key, fmt::format("cannot read {}", path.string()));
@@ -122,6 +173,19 @@ void read_fractures_file(ReadContext& ctx, const TableView& g, const std::filesy
   geometry.file_fractures = parse_fracture_rows(text.str(), path.string(), key, ctx.errors);
   if (geometry.file_fractures.empty())
     ctx.error(line, key, fmt::format("{} holds no fracture rows x1,y1,x2,y2", path.string()));
+  check_file_traces_meet_domain(ctx, path.string(), key, geometry);
+}
+
+void check_file_traces_meet_domain(ReadContext& ctx, const std::string& file, const std::string& key,
+                                   const GeometryDefinition& geometry) {
+  int outside = 0;
+  for (const FileFracture& f : geometry.file_fractures) {
+    if (segment_meets_polygon(f.segment.from, f.segment.to, geometry.domain)) continue;
+    if (++outside <= kMaxRowErrors) ctx.errors.push_back({file, f.line, key, "the trace lies wholly outside geometry.domain"});
+  }
+  if (outside > kMaxRowErrors)
+    ctx.errors.push_back({file, 0, key, fmt::format("{} of its {} traces lie wholly outside geometry.domain (the first {} "
+                                                    "are named above)", outside, geometry.file_fractures.size(), kMaxRowErrors)});
 }
 
 std::vector<FileFracture> parse_fracture_rows(std::string_view text, const std::string& file, const std::string& key,
@@ -131,8 +195,8 @@ std::vector<FileFracture> parse_fracture_rows(std::string_view text, const std::
   bool first_content = true;
   int reported = 0;
   const auto error = [&](std::string message) {
-    if (++reported <= 20) errors.push_back({file, line_number, key, std::move(message)});
-    else if (reported == 21) errors.push_back({file, line_number, key, "more bad rows follow; fix these first"});
+    if (++reported <= kMaxRowErrors) errors.push_back({file, line_number, key, std::move(message)});
+    else if (reported == kMaxRowErrors + 1) errors.push_back({file, line_number, key, "more bad rows follow; fix these first"});
   };
   while (!text.empty()) {
     const std::size_t end = text.find('\n');
@@ -140,16 +204,14 @@ std::vector<FileFracture> parse_fracture_rows(std::string_view text, const std::
     text.remove_prefix(end == std::string_view::npos ? text.size() : end + 1);
     ++line_number;
     if (line.empty() || line.front() == '#') continue;
-    const auto numbers = parse_numbers(line);
-    const bool header = first_content && !numbers &&
-                        std::any_of(line.begin(), line.end(), [](char c) { return std::isalpha(static_cast<unsigned char>(c)); });
+    const ReadRow row = read_row(line, first_content);
     first_content = false;
-    if (header) continue;
-    if (!numbers || numbers->size() != 4) {
-      error(fmt::format("expected four numbers x1,y1,x2,y2, got \"{}\"", line));
+    if (row.header) continue;
+    if (!row.trace) {
+      error(row.problem);
       continue;
     }
-    const Point from{(*numbers)[0], (*numbers)[1]}, to{(*numbers)[2], (*numbers)[3]};
+    const Point from = row.trace->from, to = row.trace->to;
     if (from == to) {
       error("the trace's two end points coincide");
       continue;

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "scenario/fracture_sources.hpp"
+#include "scenario/input_files.hpp"
 #include "scenario/rollers_and_initial_stress.hpp"
 #include "scenario/table_view.hpp"
 #include "scenario/validation.hpp"
@@ -26,14 +27,6 @@ const MaterialDefinition* Scenario::find_material(std::string_view name) const {
 }
 
 namespace {
-
-bool segment_meets_polygon(Point a, Point b, const Polygon& polygon) {
-  if (polygon.size() < 3) return true;  // no domain to test against: reported elsewhere
-  if (geometry::contains(polygon, a) || geometry::contains(polygon, b)) return true;
-  for (std::size_t i = 0; i < polygon.size(); ++i)
-    if (geometry::segments_intersect(a, b, polygon[i], polygon[(i + 1) % polygon.size()])) return true;
-  return false;
-}
 
 void read_geometry(ReadContext& ctx, const TableView& root, Scenario& s) {
   const toml::table* t = root.table("geometry");
@@ -459,8 +452,7 @@ void read_mesh(ReadContext& ctx, const TableView& root, Scenario& s) {
   if (auto file = m.string("file")) {
     std::filesystem::path path(*file);
     if (path.is_relative()) path = s.file.parent_path() / path;
-    if (!std::filesystem::exists(path))
-      ctx.error(m.line_of_key("file"), "mesh.file", fmt::format("no such file: {}", path.string()));
+    check_named_file(ctx, m.line_of_key("file"), "mesh.file", path, kMaxMeshFileBytes);
     mesh.file = path;
     mesh.file_line = m.line_of_key("file");
   }
@@ -617,17 +609,15 @@ Scenario parse_scenario(std::string_view text, const std::filesystem::path& file
 
 Scenario read_scenario(const std::filesystem::path& file) {
   const auto refuse = [&](const std::string& why) { return ScenarioError({{file.string(), 0, "", why}}); };
-  // Only a regular file of sane size is read: a device (/dev/zero) or a fifo would be read
-  // without end, a folder would read as empty.
-  std::error_code ec;
-  const std::filesystem::file_status status = std::filesystem::status(file, ec);
-  if (ec || !std::filesystem::exists(status)) throw refuse("cannot open the scenario file: no such file");
-  if (std::filesystem::is_directory(status)) throw refuse("is a folder, not a scenario file");
-  if (!std::filesystem::is_regular_file(status)) throw refuse("is not a regular file; give a scenario file (TOML)");
-  const std::uintmax_t size = std::filesystem::file_size(file, ec);
-  if (ec || size > kMaxScenarioBytes)
-    throw refuse(fmt::format("is larger than {} MiB; a scenario file is a few kilobytes (large inputs go in "
-                             "mesh.file)", kMaxScenarioBytes >> 20));
+  switch (inspect_input_file(file, kMaxScenarioBytes)) {
+    case InputFileProblem::none: break;
+    case InputFileProblem::missing: throw refuse("cannot open the scenario file: no such file");
+    case InputFileProblem::folder: throw refuse("is a folder, not a scenario file");
+    case InputFileProblem::not_regular: throw refuse("is not a regular file; give a scenario file (TOML)");
+    case InputFileProblem::too_large:
+      throw refuse(fmt::format("is larger than {} MiB; a scenario file is a few kilobytes (large inputs go in "
+                               "mesh.file)", kMaxScenarioBytes >> 20));
+  }
   std::ifstream in(file, std::ios::binary);
   if (!in) throw refuse("cannot open the scenario file");
   std::ostringstream text;

@@ -55,6 +55,23 @@ bool check_polygon(ReadContext& ctx, int line, const std::string& key, const Pol
   return true;
 }
 
+geometry::Box find_model_box(const Scenario& s) {
+  geometry::Box box;
+  if (!s.geometry) return box;
+  for (Point p : s.geometry->domain) box.add(p);
+  for (const BlockDefinition& b : s.geometry->blocks)
+    for (Point p : b.vertices) box.add(p);
+  return box;
+}
+
+bool segment_meets_polygon(Point a, Point b, const Polygon& polygon) {
+  if (polygon.size() < 3) return true;  // no domain to test against: reported elsewhere
+  if (geometry::contains(polygon, a) || geometry::contains(polygon, b)) return true;
+  for (std::size_t i = 0; i < polygon.size(); ++i)
+    if (geometry::segments_intersect(a, b, polygon[i], polygon[(i + 1) % polygon.size()])) return true;
+  return false;
+}
+
 namespace {
 
 std::vector<std::string> boundary_names(const Scenario& s) {
@@ -175,11 +192,8 @@ namespace {
 // magnitude |x| resolves displacements only to 2.2e-16 |x|, so coordinates far from the origin
 // (1e9 m for a metre-sized model) lose the answer. Within 1e6 sizes of the origin that
 // resolution stays 2,000 times below the penetration tolerance (5e-7 of the model's height).
-void check_model_extent(ReadContext& ctx, const TableView& root, const GeometryDefinition& g) {
-  geometry::Box box;
-  for (Point p : g.domain) box.add(p);
-  for (const BlockDefinition& b : g.blocks)
-    for (Point p : b.vertices) box.add(p);
+void check_model_extent(ReadContext& ctx, const TableView& root, const Scenario& s) {
+  const geometry::Box box = find_model_box(s);
   if (box.empty()) return;
   const double size = std::max(box.width(), box.height());
   const int line = root.line_of_key("geometry");
@@ -304,7 +318,7 @@ void validate_scenario(ReadContext& ctx, const TableView& root, Scenario& s) {
   resolve_materials(ctx, root, s);
   check_material_fields(ctx, root, s);
   if (s.geometry) {
-    check_model_extent(ctx, root, *s.geometry);
+    check_model_extent(ctx, root, s);
     check_block_overlaps(ctx, s.geometry->blocks);
   }
 

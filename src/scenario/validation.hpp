@@ -19,10 +19,17 @@ inline constexpr double kMinModelSize = 1e-3;
 inline constexpr double kMaxModelSize = 1e7;
 inline constexpr double kMaxOriginDistance = 1e6;
 
+// The box of the model's domain and blocks; empty when it has neither.
+geometry::Box find_model_box(const Scenario& scenario);
+
 // A polygon the engines can use (an empty one given is refused too): at least 3 and at most
 // kMaxPolygonVertices vertices, non-zero area, counter-clockwise, simple.
 // True when it passed.
 bool check_polygon(ReadContext& context, int line, const std::string& key, const Polygon& polygon);
+
+// Does the segment a-b touch or cross the polygon (true when the polygon is not one, as that
+// is reported where it is read)?
+bool segment_meets_polygon(Point a, Point b, const Polygon& polygon);
 
 // Do the interiors of two simple polygons share area? Touching along edges or at vertices is
 // not overlap (to a relative 1e-9 of their size: coordinates in a file carry a dozen digits).

@@ -2,6 +2,7 @@
 // or 2, never a signal, an abort or an unbounded read.
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -23,6 +24,26 @@ fs::path fresh_folder(const std::string& name) {
   fs::remove_all(dir);
   return dir;
 }
+
+// A flow scenario in `dir` whose `key` (geometry.fractures_file or mesh.file) names `named`.
+fs::path scenario_naming(const fs::path& dir, const std::string& key, const fs::path& named) {
+  const fs::path file = dir / "named.toml";
+  std::ofstream out(file);
+  out << "[geometry]\ndomain = [[0.0, 0.0], [5.0, 0.0], [5.0, 5.0], [0.0, 5.0]]\n";
+  if (key == "geometry.fractures_file") out << "fractures_file = \"" << named.string() << "\"\n";
+  out << "[material.rock]\nmatrix_porosity = 0.1\ngrain_diameter = 1.0e-5\n"
+         "[flow]\n[[flow.boundary]]\nname = \"left\"\nhead = 1.0\n";
+  if (key == "mesh.file") out << "[mesh]\nfile = \"" << named.string() << "\"\n";
+  return file;
+}
+
+// `check` under a timeout, a guard only: a pipe opened would block it until killed, and what
+// the tests assert is its message and exit code.
+hydrodda::testing::ProgramResult check_guarded(const fs::path& scenario) {
+  return run_command("timeout 120 " + std::string(HYDRODDA_BINARY) + " check " + scenario.string());
+}
+
+const std::vector<std::string> kNamedFileKeys = {"geometry.fractures_file", "mesh.file"};
 
 }  // namespace
 
@@ -133,6 +154,53 @@ TEST(HostileInput, CommandLineMistakesSayWhatIsWanted) {
       << dangling.output;
   EXPECT_FALSE(fs::exists(dir / "gone"));
   fs::remove_all(dir);
+}
+
+// A file a scenario names was read whatever it was: a pipe blocked `check` for good, /dev/zero
+// grew it without end.
+TEST(HostileInput, ANamedPipeIsRefusedUnopened) {
+  for (const std::string& key : kNamedFileKeys) {
+    SCOPED_TRACE(key);
+    const fs::path dir = fresh_folder("pipe");
+    fs::create_directories(dir);
+    const fs::path pipe = dir / "named.pipe";
+    ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+    const auto result = check_guarded(scenario_naming(dir, key, pipe));
+    EXPECT_EQ(result.exit_code, 2) << result.output;
+    EXPECT_NE(result.output.find(key + ": " + pipe.string() + " is not a regular file"), std::string::npos)
+        << result.output;
+    fs::remove_all(dir);
+  }
+}
+
+TEST(HostileInput, ANamedDeviceIsRefusedUnread) {
+  for (const std::string& key : kNamedFileKeys) {
+    SCOPED_TRACE(key);
+    const fs::path dir = fresh_folder("device");
+    fs::create_directories(dir);
+    const auto result = check_guarded(scenario_naming(dir, key, "/dev/zero"));
+    EXPECT_EQ(result.exit_code, 2) << result.output;
+    EXPECT_NE(result.output.find(key + ": /dev/zero is not a regular file"), std::string::npos) << result.output;
+    fs::remove_all(dir);
+  }
+}
+
+TEST(HostileInput, ANamedFileBeyondItsKeysSizeIsRefusedUnread) {
+  const std::vector<std::pair<std::string, std::uintmax_t>> caps = {{"geometry.fractures_file", 64}, {"mesh.file", 1024}};
+  for (const auto& [key, mebibytes] : caps) {
+    SCOPED_TRACE(key);
+    const fs::path dir = fresh_folder("large");
+    fs::create_directories(dir);
+    const fs::path large = dir / "large.dat";
+    std::ofstream(large) << "x1,y1,x2,y2\n";
+    fs::resize_file(large, (mebibytes << 20) + 1);  // a sparse tail of zeros
+    const auto result = check_guarded(scenario_naming(dir, key, large));
+    EXPECT_EQ(result.exit_code, 2) << result.output;
+    EXPECT_NE(result.output.find(key + ": " + large.string() + " is larger than " + std::to_string(mebibytes) + " MiB"),
+              std::string::npos)
+        << result.output;
+    fs::remove_all(dir);
+  }
 }
 
 // A sweep's --set with an index that is not a number printed "error: stoul" and exited 1; a

@@ -141,6 +141,66 @@ TEST(FracturesFile, BadRowsNameTheFileAndLine) {
   EXPECT_EQ(errors.size(), 4u);
 }
 
+// A bad first row was taken for a header and skipped, where the same row on line 2 was an
+// error: a header is a row with no number in it.
+TEST(FracturesFile, AFirstRowWithANumberInItIsReadAsARow) {
+  for (const std::string bad : {"x,0,1,5", "nan,0,1,5", "1,inf,1,5", "1,0,1e400,5", "1 0 1 5", "1,0,1,5,x"}) {
+    SCOPED_TRACE(bad);
+    std::vector<Diagnostic> first, second;
+    EXPECT_EQ(parse_fracture_rows(bad + "\n2,0,2,5\n", "dfn.csv", "geometry.fractures_file", first).size(), 1u);
+    EXPECT_EQ(parse_fracture_rows("2,0,2,5\n" + bad + "\n", "dfn.csv", "geometry.fractures_file", second).size(), 1u);
+    ASSERT_EQ(first.size(), 1u) << dump(first);
+    ASSERT_EQ(second.size(), 1u) << dump(second);
+    EXPECT_EQ(first[0].format(), "dfn.csv:1: geometry.fractures_file: " + second[0].message);
+  }
+  std::vector<Diagnostic> errors;
+  parse_fracture_rows("nan,0,1,5\n2,0,2,5\n", "dfn.csv", "geometry.fractures_file", errors);
+  EXPECT_TRUE(has_error(errors, "dfn.csv:1: geometry.fractures_file: expected four numbers x1,y1,x2,y2, got "
+                                "\"nan,0,1,5\": x1 = nan is not a finite number"))
+      << dump(errors);
+  errors.clear();
+  parse_fracture_rows("1,0,1e400,5\n", "dfn.csv", "geometry.fractures_file", errors);
+  EXPECT_TRUE(has_error(errors, "x2 = 1e400 is beyond the range of a number")) << dump(errors);
+  // A header still has no number in it, whatever its words.
+  for (const std::string header : {"x1,y1,x2,y2", "start x, start y, end x, end y", "trace"}) {
+    errors.clear();
+    EXPECT_EQ(parse_fracture_rows(header + "\n2,0,2,5\n", "dfn.csv", "geometry.fractures_file", errors).size(), 1u);
+    EXPECT_TRUE(errors.empty()) << header << "\n" << dump(errors);
+  }
+}
+
+// Traces wholly outside the domain were cut into nothing and the run went on on intact rock.
+TEST(FracturesFile, ATraceWhollyOutsideTheDomainIsAnErrorAtItsRow) {
+  const fs::path folder = fs::temp_directory_path() / "hydrodda-fractures-outside";
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  std::ofstream traces(folder / "traces.csv");
+  traces << "x1,y1,x2,y2\n1,0,2,5\n-5,-5,20,20\n20,0,20,5\n";  // inside, across, outside
+  for (int i = 0; i < 25; ++i) traces << "30," << i << ",31," << i << "\n";
+  traces.close();
+  const auto errors = errors_of(std::string(kHead) + "fractures_file = \"traces.csv\"\n" + kTail, folder / "case.toml");
+  const std::string file = (folder / "traces.csv").string();
+  EXPECT_TRUE(has_error(errors, file + ":4: geometry.fractures_file: the trace lies wholly outside geometry.domain"))
+      << dump(errors);
+  EXPECT_FALSE(has_error(errors, file + ":2:")) << dump(errors);
+  EXPECT_FALSE(has_error(errors, file + ":3:")) << dump(errors);
+  // The first 20 are named, then how many there are.
+  EXPECT_EQ(errors.size(), 21u) << dump(errors);
+  EXPECT_TRUE(has_error(errors, "26 of its 28 traces lie wholly outside geometry.domain")) << dump(errors);
+  fs::remove_all(folder);
+}
+
+TEST(JointSetKeys, ARegionWhollyOutsideTheDomainIsAnError) {
+  const auto errors = errors_of(std::string(kHead) + R"([[geometry.joint_set]]
+angle = 90.0
+spacing = 1.0
+region = [[20.0, 0.0], [30.0, 0.0], [30.0, 5.0], [20.0, 5.0]]
+)" + kTail);
+  EXPECT_TRUE(has_error(errors, "case.toml:7: geometry.joint_set.region: the set's region lies wholly outside geometry.domain"))
+      << dump(errors);
+  EXPECT_EQ(errors.size(), 1u) << dump(errors);
+}
+
 TEST(FracturesFile, ReadAgainstTheScenariosFolder) {
   const fs::path folder = fs::temp_directory_path() / "hydrodda-fractures-file";
   fs::remove_all(folder);
@@ -154,7 +214,7 @@ TEST(FracturesFile, ReadAgainstTheScenariosFolder) {
   EXPECT_EQ(*s.geometry->fractures_file, folder / "dfn" / "traces.csv");
   // A missing file is an error on the key's line.
   const auto errors = errors_of(std::string(kHead) + "fractures_file = \"none.csv\"\n" + kTail, folder / "case.toml");
-  EXPECT_TRUE(has_error(errors, "case.toml:4: geometry.fractures_file: cannot read")) << dump(errors);
+  EXPECT_TRUE(has_error(errors, "case.toml:4: geometry.fractures_file: no such file")) << dump(errors);
   fs::remove_all(folder);
 }
 
