@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "scenario/bounds.hpp"
 #include "scenario/fracture_sources.hpp"
 #include "scenario/input_files.hpp"
 #include "scenario/rollers_and_initial_stress.hpp"
@@ -165,12 +166,19 @@ void read_materials(ReadContext& ctx, const TableView& root, Scenario& s) {
     material.poisson = m.number("poisson");
     material.grain_diameter = m.number("grain_diameter");
     if (material.density) m.require("density", *material.density > 0.0, "must be > 0");
-    if (material.young) m.require("young", *material.young > 0.0, "must be > 0");
+    if (material.young) {
+      m.require("young", *material.young > 0.0, "must be > 0");
+      m.require("young", !(*material.young > 0.0) || (*material.young >= kMinYoung && *material.young <= kMaxYoung),
+                fmt::format("must lie in [{:g}, {:g}] Pa: from softer than any soil to ten times diamond's", kMinYoung,
+                            kMaxYoung));
+    }
     if (material.poisson)
       m.require("poisson", *material.poisson > -1.0 && *material.poisson < 0.5,
                 "must lie in (-1, 0.5)");
     if (material.grain_diameter)
-      m.require("grain_diameter", *material.grain_diameter > 0.0, "must be > 0");
+      m.require("grain_diameter", *material.grain_diameter >= kMinGrainDiameter && *material.grain_diameter <= kMaxGrainDiameter,
+                fmt::format("must lie in [{:g}, {:g}] m: from a tenth of the finest clay platelet to a boulder",
+                            kMinGrainDiameter, kMaxGrainDiameter));
     if (m.has("matrix_porosity")) {
       material.matrix_porosity = m.number("matrix_porosity").value_or(0.0);
       m.require("matrix_porosity",
@@ -251,6 +259,9 @@ void read_mechanics(ReadContext& ctx, const TableView& root, Scenario& s) {
   if (auto r = m.number("max_displacement_ratio")) {
     mech.max_displacement_ratio = *r;
     m.require("max_displacement_ratio", *r > 0.0 && *r <= 1.0, "must lie in (0, 1]");
+    m.require("max_displacement_ratio", !(*r > 0.0) || *r >= kMinDisplacementRatio,
+              fmt::format("must be at least {:g}: a step's displacement below it is lost in the positions' round-off",
+                          kMinDisplacementRatio));
   }
   mech.contact = m.choice("contact", {"augmented-lagrangian", "penalty"}, "augmented-lagrangian") == 1
                      ? ContactMethod::Penalty
@@ -258,11 +269,24 @@ void read_mechanics(ReadContext& ctx, const TableView& root, Scenario& s) {
   if (auto p = m.number("penalty")) {
     mech.penalty = *p;
     m.require("penalty", *p > 0.0, "must be > 0");
+    double stiffest = 0.0;
+    for (const MaterialDefinition& material : s.materials) stiffest = std::max(stiffest, material.young.value_or(0.0));
+    if (*p > 0.0 && stiffest > 0.0)
+      m.require("penalty", *p <= kMaxPenaltyPerYoung * stiffest,
+                fmt::format("must be at most {:g} N/m, {:g} times the stiffest material's Young's modulus × 1 m (the "
+                            "default is 50 times): stiffer contacts hold nothing more and overflow the stiffness matrix",
+                            kMaxPenaltyPerYoung * stiffest, kMaxPenaltyPerYoung));
   }
   // Its default depends on the blocks and the joints: made, and reported, where they are built.
   if (auto t = m.number("penetration_tolerance")) {
     mech.penetration_tolerance = *t;
     m.require("penetration_tolerance", *t > 0.0, "must be > 0");
+    const geometry::Box box = find_model_box(s);
+    const double size = box.empty() ? 0.0 : std::max(box.width(), box.height());
+    if (*t > 0.0 && size > 0.0)
+      m.require("penetration_tolerance", *t >= kMinPenetrationPerSize * size,
+                fmt::format("must be at least {:g} m, {:g} of the model's size: positions do not resolve less",
+                            kMinPenetrationPerSize * size, kMinPenetrationPerSize));
   }
   mech.tension_cutoff = m.boolean("tension_cutoff").value_or(true);
 
@@ -353,7 +377,13 @@ void read_flow(ReadContext& ctx, const TableView& root, Scenario& s) {
           ? PermeabilityLaw::Cubic
           : PermeabilityLaw::KozenyCarman;
   flow.permeability_cap = f.number_or("permeability_cap", flow.permeability_cap);
-  f.require("permeability_cap", flow.permeability_cap > 0.0, "must be > 0");
+  f.require("permeability_cap", flow.permeability_cap > 0.0 && flow.permeability_cap <= kMaxPermeability,
+            fmt::format("must lie in (0, {:g}] m²: beyond, pores are some 10 cm across and the flow is not Darcy's",
+                        kMaxPermeability));
+  // A head lies within kMaxPressureHead of the model: its pressure head h − y is at most 10 GPa of water.
+  const geometry::Box box = find_model_box(s);
+  const double lowest_head = (box.empty() ? 0.0 : box.lo.y) - kMaxPressureHead;
+  const double highest_head = (box.empty() ? 0.0 : box.hi.y) + kMaxPressureHead;
 
   for (const toml::table* bt : f.tables("boundary")) {
     const TableView b(ctx, *bt, "flow.boundary", {"name", "head", "pressure", "flux"});
@@ -367,9 +397,15 @@ void read_flow(ReadContext& ctx, const TableView& root, Scenario& s) {
     } else if (b.has("head")) {
       bc.kind = FlowConditionKind::Head;
       bc.value = b.number("head").value_or(0.0);
+      b.require("head", bc.value >= lowest_head && bc.value <= highest_head,
+                fmt::format("must lie within {:g} m of the model's heights ({:g} to {:g} m): a head farther off is a "
+                            "pressure past 10 GPa, beyond the strength of any rock", kMaxPressureHead,
+                            lowest_head + kMaxPressureHead, highest_head - kMaxPressureHead));
     } else if (b.has("pressure")) {
       bc.kind = FlowConditionKind::Pressure;
       bc.value = b.number("pressure").value_or(0.0);
+      b.require("pressure", std::abs(bc.value) <= kMaxStress,
+                fmt::format("must lie within ±{:g} Pa: 10 GPa is beyond the strength of any rock", kMaxStress));
     } else {
       bc.kind = FlowConditionKind::Flux;
       bc.value = b.number("flux").value_or(0.0);
@@ -403,7 +439,9 @@ void read_flow(ReadContext& ctx, const TableView& root, Scenario& s) {
     }
     if (auto k = r.number("permeability")) {
       region.permeability = *k;
-      r.require("permeability", *k > 0.0, "must be > 0");
+      r.require("permeability", *k > 0.0 && *k <= kMaxPermeability,
+                fmt::format("must lie in (0, {:g}] m²: beyond, pores are some 10 cm across and the flow is not Darcy's",
+                            kMaxPermeability));
     }
     flow.regions.push_back(std::move(region));
   }

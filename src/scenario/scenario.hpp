@@ -148,6 +148,7 @@ struct InitialStressDefinition {
   double reference_y = 0.0;                        // m
   std::array<double, 3> gradient{0.0, 0.0, 0.0};  // Pa/m
   int line = 0;
+  int gradient_line = 0;                           // the table's when it is left out
 };
 
 // The most DDA steps a run (or a coupling pass) may take: `steps`, or end_time / time_step.

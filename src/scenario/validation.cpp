@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "scenario/rollers_and_initial_stress.hpp"
+
 namespace hydrodda::scenario {
 
 bool check_polygon(ReadContext& ctx, int line, const std::string& key, const Polygon& polygon) {
@@ -323,6 +325,8 @@ void validate_scenario(ReadContext& ctx, const TableView& root, Scenario& s) {
   }
 
   check_static_support(ctx, root, s);
+  check_initial_stress_gradient(ctx, s);
+  check_initial_stress_across_model(ctx, s);
   // Joint hydraulic apertures belong to the traces a domain is cut along, and are measured on
   // the blocks' contacts.
   if (s.joint.hydraulic() && !(s.geometry && !s.geometry->domain.empty()))

@@ -205,6 +205,44 @@ steps = 1
   }
 }
 
+// Compression is negative and the gradient per metre up: a stress that grows less compressive
+// downward under gravity was run without a word.
+TEST(ScenarioReader, AnInSituStressLessCompressiveDownwardIsRefused) {
+  const std::string held = kOneFreeBlock + "[[mechanics.fixed]]\npoint = [0.5, 0.0]\n[mechanics.initial_stress]\n"
+                                           "stress = [-1.0e6, -1.0e6, 0.0]\n";
+  EXPECT_TRUE(errors_of(held + "gradient = [0.0, 24525.0, 0.0]\n").empty());
+  const auto errors = errors_of(held + "gradient = [0.0, -24525.0, 0.0]\n");
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].line, 13);
+  EXPECT_EQ(errors[0].key, "mechanics.initial_stress.gradient");
+  EXPECT_NE(errors[0].message.find("dσyy/dy = -24525 Pa/m makes the stress less compressive downward"), std::string::npos)
+      << errors[0].message;
+  // With gravity pointing up the sign turns.
+  EXPECT_TRUE(errors_of(kOneFreeBlock + "gravity = [0.0, 9.81]\n" + held.substr(kOneFreeBlock.size()) +
+                        "gradient = [0.0, -24525.0, 0.0]\n").empty());
+}
+
+// In a coupled run the blocks carry the effective stress, whose gradient an upward seepage
+// lowers: the jointed seal's is negative (100 m of head across its 6 m), and stands; with the
+// heads 1 m apart the same gradient is refused.
+TEST(ScenarioReader, AnEffectiveStressGradientMayBeAsLowAsTheSeepageMakesIt) {
+  const std::filesystem::path seal = kSource / "scenarios/examples/jointed_seal.toml";
+  std::ifstream in(seal);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NO_THROW(parse_scenario(text.str(), seal));
+  std::string weak = text.str();
+  weak.replace(weak.find("head = 106.0"), 12, "head = 7.0");
+  try {
+    parse_scenario(weak, seal);
+    ADD_FAILURE() << "a gradient the heads cannot hold was accepted";
+  } catch (const ScenarioError& e) {
+    ASSERT_EQ(e.diagnostics().size(), 1u) << e.what();
+    EXPECT_EQ(e.diagnostics()[0].key, "mechanics.initial_stress.gradient") << e.what();
+    EXPECT_NE(e.diagnostics()[0].message.find("-149766 Pa/m"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ScenarioReader, BlocksTakeTheOnlyMaterial) {
   const Scenario s = parse_scenario(R"([geometry]
 [[geometry.block]]
