@@ -214,7 +214,9 @@ mesh::TriangleMesh make_or_read_mesh(const Scenario& s, const std::optional<std:
   spdlog::info("mesh: {} expected", check_mesh_budget(s, request));
   if (!mesh_cache) return mesh::generate_mesh(request);
   mesh::CachedMesh cached = mesh::generate_or_reuse_mesh(request, *mesh_cache);
-  spdlog::info("mesh: {} {}", cached.reused ? "read from" : "made and stored in", cached.file.string());
+  for (const std::string& warning : cached.warnings) spdlog::warn("mesh: {}", warning);
+  if (cached.reused || cached.stored)
+    spdlog::info("mesh: {} {}", cached.reused ? "read from" : "made and stored in", cached.file.string());
   return std::move(cached.mesh);
 }
 }  // namespace
