@@ -148,9 +148,9 @@ int sweep_command(const SweepOptions& options, SweepRanks& ranks) {
   try {
     folder.emplace(directory, options.overwrite ? output::ExistingFolder::Overwrite : output::ExistingFolder::Refuse);
     // Meshes live as long as the sweep: none made by an earlier sweep (an older program) is read.
-    fs::remove_all(directory / kMeshCache);
+    run::clear_mesh_cache(directory / kMeshCache);
     for (const PreparedCase& c : *prepared) {
-      const output::RunFolder case_folder(directory / c.name, output::ExistingFolder::Overwrite);
+      const output::RunFolder case_folder(folder->subfolder(c.name), output::ExistingFolder::Overwrite);
       case_folder.write("scenario.toml", c.text);
       fs::remove(case_folder.file("summary.json"));  // an earlier sweep's result must not be read as this one's
     }

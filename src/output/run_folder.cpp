@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
@@ -15,6 +16,7 @@ namespace hydrodda::output {
 namespace fs = std::filesystem;
 
 void RunFolder::check_available(const fs::path& directory, ExistingFolder policy) {
+  if (directory.empty()) throw RunFolderError("no run folder given (an empty path)");
   std::error_code ec;
   if (!fs::exists(directory, ec)) return;
   if (!fs::is_directory(directory, ec))
@@ -24,6 +26,32 @@ void RunFolder::check_available(const fs::path& directory, ExistingFolder policy
         "{} already holds files; choose another folder with -o, or pass --overwrite to "
         "replace the results in it",
         directory.string()));
+  if (policy == ExistingFolder::Overwrite) check_overwritable(directory);
+}
+
+namespace {
+// `directory` is the current folder or holds it.
+bool holds_current_folder(const fs::path& directory) {
+  std::error_code ec;
+  const fs::path here = fs::current_path(ec);
+  const fs::path folder = fs::canonical(directory, ec);
+  if (ec || here.empty()) return false;
+  const auto [end_of_folder, in_here] = std::mismatch(folder.begin(), folder.end(), here.begin(), here.end());
+  return end_of_folder == folder.end();
+}
+}  // namespace
+
+void RunFolder::check_overwritable(const fs::path& directory) {
+  if (holds_current_folder(directory))
+    throw RunFolderError(fmt::format(
+        "--overwrite is refused for {}: it is the current folder or holds it, and files of yours named as a "
+        "run's files (scenario.toml, summary.json, figures/) would be replaced; give the run a folder of its own",
+        directory.string()));
+  std::error_code ec;
+  if (fs::is_symlink(fs::symlink_status(directory / "figures", ec)))
+    throw RunFolderError(fmt::format("{} is a symbolic link: a run writes only inside its folder; remove the link "
+                                     "or choose another folder",
+                                     (directory / "figures").string()));
 }
 
 RunFolder::RunFolder(fs::path directory, ExistingFolder policy) : directory_(std::move(directory)) {
@@ -49,10 +77,17 @@ void RunFolder::check_writable(const fs::path& directory) {
   ::unlink(probe.c_str());
 }
 
-fs::path RunFolder::figures() const {
-  const fs::path dir = directory_ / "figures";
+fs::path RunFolder::subfolder(std::string_view name) const {
+  const fs::path dir = directory_ / name;
   std::error_code ec;
-  fs::create_directories(dir, ec);
+  const fs::file_status status = fs::symlink_status(dir, ec);
+  if (fs::is_symlink(status))
+    throw RunFolderError(fmt::format("cannot write in {}: it is a symbolic link, and a run writes only inside its "
+                                     "folder; remove the link",
+                                     dir.string()));
+  if (fs::exists(status) && !fs::is_directory(status))
+    throw RunFolderError(fmt::format("cannot create {}: a file of that name is in the way", dir.string()));
+  fs::create_directory(dir, ec);
   if (ec) throw RunFolderError(fmt::format("cannot create {}: {}", dir.string(), ec.message()));
   return dir;
 }

@@ -11,19 +11,27 @@
 namespace hydrodda::output {
 
 // What to do when the run folder already holds files.
-enum class ExistingFolder { Refuse, Overwrite };
+enum class ExistingFolder {
+  Refuse,     // refused, so that no earlier result is lost
+  Overwrite,  // files of the same name are replaced, other files left alone
+  Continue,   // the folder of a run continued (resume): its own files, written on
+};
 
 class RunFolder {
  public:
-  // Creates the folder (and its parents) on demand. A folder that already holds files is
-  // refused with ExistingFolder::Refuse, so that no earlier result is lost; with Overwrite,
-  // files of the same name are replaced and other files are left alone.
+  // Creates the folder (and its parents) on demand, or takes it as `policy` says. Overwrite is
+  // refused for the current folder or one that holds it (a user's own scenario.toml or
+  // summary.json there would be replaced), and for a folder whose figures/ is a symbolic link
+  // (nothing is written outside the folder).
   RunFolder(std::filesystem::path directory, ExistingFolder policy);
 
   const std::filesystem::path& path() const { return directory_; }
   std::filesystem::path file(std::string_view name) const { return directory_ / name; }
+  // The folder `name` inside this one, created when missing; RunFolderError when something
+  // other than a folder is in the way, a symbolic link included (it would lead outside).
+  std::filesystem::path subfolder(std::string_view name) const;
   // The figures/ subfolder, created on first use.
-  std::filesystem::path figures() const;
+  std::filesystem::path figures() const { return subfolder("figures"); }
 
   // Writes a file in the folder atomically (temporary name, then rename); RunFolderError
   // naming the file when it cannot.
@@ -35,6 +43,8 @@ class RunFolder {
  private:
   // Throws RunFolderError when the folder could not be used under `policy`; creates nothing.
   static void check_available(const std::filesystem::path& directory, ExistingFolder policy);
+  // Throws RunFolderError when overwriting `directory` would replace files a run did not write.
+  static void check_overwritable(const std::filesystem::path& directory);
   // Throws RunFolderError when no file can be created in the folder.
   static void check_writable(const std::filesystem::path& directory);
 

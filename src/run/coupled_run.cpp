@@ -146,8 +146,7 @@ std::string describe_cut_steps(double shortest, double full) {
 // Its checkpoint is removed: the next round starts from the blocks as built, not from it.
 void move_round_files(const output::RunFolder& folder, int round, const std::vector<int>& written_iterations) {
   namespace fs = std::filesystem;
-  const fs::path into = folder.file(fmt::format("round_{}", round));
-  fs::create_directories(into);
+  const fs::path into = folder.subfolder(fmt::format("round_{}", round));
   std::vector<std::string> names{"history.csv", "measure.csv", "fractures.csv",
                                  "fluid.pvd",   "blocks.pvd",  "contacts.pvd", "fractures.pvd"};
   for (int i : written_iterations)

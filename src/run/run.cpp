@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "mesh/mesh_cache.hpp"
 #include "output/run_folder.hpp"
 #include "run/mesh_budget.hpp"
 #include "run/model_building.hpp"
@@ -101,6 +102,14 @@ std::optional<std::string> read_text_file(const fs::path& file) {
   return text.str();
 }
 
+void clear_mesh_cache(const fs::path& folder) {
+  try {
+    mesh::remove_cache_entries(folder);
+  } catch (const std::exception& e) {
+    throw output::RunFolderError(fmt::format("cannot clear the mesh cache: {}", e.what()));
+  }
+}
+
 RunKind kind_of(const scenario::Scenario& s) {
   return s.mechanics && s.flow ? RunKind::coupled : s.mechanics ? RunKind::mechanics : RunKind::flow;
 }
@@ -116,7 +125,7 @@ RunResult run(const scenario::Scenario& scenario, const RunOptions& options, con
 
 RunResult resume(const ResumedRun& resumed, std::optional<int> stop_after, const Callbacks& callbacks) {
   // The folder's own files, continued.
-  return run_in(resumed.scenario, resumed.folder, output::ExistingFolder::Overwrite, resumed.scenario_text,
+  return run_in(resumed.scenario, resumed.folder, output::ExistingFolder::Continue, resumed.scenario_text,
                 &resumed.checkpoint, stop_after, callbacks);
 }
 

@@ -123,6 +123,12 @@ RunResult run(const scenario::Scenario& scenario, const RunOptions& options, con
 // it ends where an uninterrupted run does, file for file.
 RunResult resume(const ResumedRun& resumed, std::optional<int> stop_after, const Callbacks& callbacks = {});
 
+// Removes from a folder of shared meshes (RunOptions::mesh_cache) the files the cache made, and
+// nothing else: a sweep starts with no mesh an earlier one (an older program) made, and a file
+// of the user's there is kept. Throws output::RunFolderError when it cannot (a symbolic link in
+// the folder's place is not followed).
+void clear_mesh_cache(const std::filesystem::path& folder);
+
 // The whole content of a file, or nothing when it cannot be read.
 std::optional<std::string> read_text_file(const std::filesystem::path& file);
 

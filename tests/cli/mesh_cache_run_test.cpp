@@ -86,3 +86,44 @@ TEST(MeshCacheRun, AChangedMeshKeyMeshesAnew) {
   EXPECT_NE(other.output.find("mesh: made and stored in"), std::string::npos) << other.output;
   EXPECT_EQ(count_meshes(out / "mesh-cache"), 3);
 }
+
+// A cache that cannot be made (a file where its folder should be: no write permission is
+// needed to show it, so it holds for root too) costs the run its meshing, not the run: a
+// warning says so, and the results are those of a run without the cache.
+TEST(MeshCacheRun, ACacheThatCannotBeMadeWarnsAndTheRunGoesOn) {
+  const auto folder = fresh_dir("hydrodda-mesh-cache-unusable");
+  const fs::path& out = folder.path;
+  fs::create_directories(out);
+  std::ofstream(out / "a-file") << "not a folder\n";
+  const fs::path scenario = kSource / "scenarios/verification/coupled_hydrostatic_column.toml";
+  const auto cached = run_program("run " + scenario.string() + " -o " + (out / "cached").string() +
+                                  " --mesh-cache " + (out / "a-file" / "cache").string());
+  ASSERT_EQ(cached.exit_code, 0) << cached.output;
+  EXPECT_NE(cached.output.find("warning: mesh: the mesh cache '" + (out / "a-file" / "cache").string() +
+                               "' cannot be used"),
+            std::string::npos)
+      << cached.output;
+  EXPECT_NE(cached.output.find("meshing without it"), std::string::npos) << cached.output;
+  const auto plain = run_program("run " + scenario.string() + " -o " + (out / "plain").string());
+  ASSERT_EQ(plain.exit_code, 0) << plain.output;
+  expect_same_results(out / "cached", out / "plain");
+}
+
+// sweep --overwrite starts with no mesh of an earlier sweep, and removes nothing else: a file
+// of the user's in DIR/mesh-cache/ is kept.
+TEST(MeshCacheRun, ASweepOverwritingItsFolderKeepsAUsersFileInTheMeshCache) {
+  const auto folder = fresh_dir("hydrodda-mesh-cache-overwrite");
+  const fs::path& out = folder.path;
+  const std::string sweep = "sweep " + (kSource / "scenarios/verification/flow_linear_head.toml").string() +
+                            " --set flow.boundary[0].head=3 -o " + out.string();
+  const auto first = run_program(sweep);
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  ASSERT_EQ(count_meshes(out / "mesh-cache"), 1);
+  std::ofstream(out / "mesh-cache" / "notes.txt") << "mine\n";
+  const auto again = run_program(sweep + " --overwrite");
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_EQ(hydrodda::testing::read_file(out / "mesh-cache" / "notes.txt"), "mine\n");
+  EXPECT_EQ(count_meshes(out / "mesh-cache"), 1);
+  // Made again, not read: the earlier sweep's mesh was removed.
+  EXPECT_EQ(hydrodda::testing::read_file(out / "case_000" / "run.log").find("mesh: read from"), std::string::npos);
+}

@@ -56,6 +56,58 @@ TEST(RunFolder, CreatesOnDemandAndRefusesOccupiedFolders) {
   fs::remove_all(dir.parent_path().parent_path());
 }
 
+// The current folder, named as "." (what Python's Path("") is), "" or as the folder that holds
+// it: --overwrite there would replace the user's own scenario.toml, so it is refused, and the
+// file is kept. Without --overwrite an empty current folder is a run folder like any other.
+TEST(RunFolder, OverwriteRefusesTheCurrentFolderAndTheFoldersAboveIt) {
+  const fs::path dir = fresh_dir("hydrodda-folder-current");
+  fs::create_directories(dir / "work");
+  std::ofstream(dir / "work" / "scenario.toml") << "title = \"mine\"\n";
+  const fs::path before = fs::current_path();
+  fs::current_path(dir / "work");
+  EXPECT_THROW(RunFolder(".", ExistingFolder::Overwrite), RunFolderError);
+  EXPECT_THROW(RunFolder("", ExistingFolder::Overwrite), RunFolderError);
+  EXPECT_THROW(RunFolder(dir / "work", ExistingFolder::Overwrite), RunFolderError);
+  EXPECT_THROW(RunFolder("..", ExistingFolder::Overwrite), RunFolderError);
+  try {
+    RunFolder(".", ExistingFolder::Overwrite);
+  } catch (const RunFolderError& e) {
+    EXPECT_NE(std::string(e.what()).find("current folder"), std::string::npos) << e.what();
+  }
+  RunFolder below("out", ExistingFolder::Overwrite);  // a folder of its own is fine
+  below.write("scenario.toml", "title = \"run\"\n");
+  fs::current_path(before);
+  EXPECT_EQ(read_all(dir / "work" / "scenario.toml"), "title = \"mine\"\n");
+  EXPECT_EQ(read_all(dir / "work" / "out" / "scenario.toml"), "title = \"run\"\n");
+  fs::remove_all(dir);
+}
+
+// A figures/ (or round_N/) that is a symbolic link would take the run's files outside its
+// folder, over whatever is there: refused, and nothing outside is touched.
+TEST(RunFolder, NoSymbolicLinkLeadsTheRunOutOfItsFolder) {
+  const fs::path dir = fresh_dir("hydrodda-folder-links");
+  const fs::path outside = dir / "outside", run = dir / "run";
+  fs::create_directories(outside);
+  fs::create_directories(run);
+  std::ofstream(outside / "heads.png") << "the user's own picture";
+  fs::create_directory_symlink(outside, run / "figures");
+  EXPECT_THROW(RunFolder(run, ExistingFolder::Overwrite), RunFolderError);
+
+  // Made after the folder was taken: figures() refuses it too, as does any subfolder.
+  fs::remove(run / "figures");
+  const RunFolder folder(run, ExistingFolder::Overwrite);
+  fs::create_directory_symlink(outside, run / "figures");
+  fs::create_directory_symlink(outside, run / "round_1");
+  EXPECT_THROW(folder.figures(), RunFolderError);
+  EXPECT_THROW(folder.subfolder("round_1"), RunFolderError);
+  std::ofstream(run / "round_2") << "a file";
+  EXPECT_THROW(folder.subfolder("round_2"), RunFolderError);
+  EXPECT_TRUE(fs::is_directory(folder.subfolder("round_3")));
+  EXPECT_EQ(read_all(outside / "heads.png"), "the user's own picture");
+  EXPECT_EQ(std::distance(fs::directory_iterator(outside), fs::directory_iterator{}), 1);
+  fs::remove_all(dir);
+}
+
 TEST(CsvTable, FullPrecisionAndQuoting) {
   CsvTable table({"name", "value"});
   table.add_row({"a,b", CsvTable::cell(0.1)});
