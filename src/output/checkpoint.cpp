@@ -20,9 +20,9 @@ constexpr std::string_view kMagic = "hydrodda checkpoint\n";
 // factor (its permeability) at the end; 6: Anderson's history; 7: the kept factor's
 // permeability as tensors (xx, xy, yy), joint apertures' included; 8: CRC-32 in place of FNV-1a
 // as the checksum; 11: the wedge tips of mesh.refine_tips (refined, and of the round's last
-// passes). Only the current format is read: a run stopped by an older hydrodda is run
-// again.
-constexpr std::int64_t kVersion = 12;
+// passes); 13: the hashes of the files the scenario names. Only the current format is read: a
+// run stopped by an older hydrodda is run again.
+constexpr std::int64_t kVersion = 13;
 // The last 8 bytes: the CRC-32 of every byte before them (zlib's, as a 64-bit word). A CRC
 // detects every error burst of up to 32 bits, so a flipped bit is refused, not resumed from;
 // zlib computes it four times as fast as a byte-at-a-time hash on a checkpoint of tens of MB.
@@ -325,6 +325,12 @@ void put_checkpoint(Writer& w, const RunCheckpoint& c, const dda::SystemState& m
   w.put_raw(kByteOrderMark);
   w.put(c.scenario_hash);
   w.put(c.scenario_file);
+  w.put(static_cast<std::int64_t>(c.input_files.size()));
+  for (const InputFile& f : c.input_files) {
+    w.put(f.key);
+    w.put(f.path);
+    w.put(f.hash);
+  }
   w.put(c.converged);
   w.put(c.history);
   w.put(c.measure);
@@ -396,6 +402,16 @@ RunCheckpoint decode_checkpoint(std::string_view file) {
   RunCheckpoint c;
   r.get(c.scenario_hash);
   r.get(c.scenario_file);
+  std::int64_t input_files = 0;
+  r.get(input_files);
+  if (input_files < 0 || input_files > kMaxCount) r.fail();
+  for (std::int64_t i = 0; i < input_files; ++i) {
+    InputFile f;
+    r.get(f.key);
+    r.get(f.path);
+    r.get(f.hash);
+    c.input_files.push_back(std::move(f));
+  }
   r.get(c.converged);
   r.get(c.history);
   r.get(c.measure);

@@ -24,9 +24,17 @@
 
 namespace hydrodda::output {
 
+// A file the scenario names, as the run read it at its start.
+struct InputFile {
+  std::string key;          // the scenario key that names it: geometry.fractures_file, mesh.file
+  std::string path;         // absolute
+  std::uint64_t hash = 0;   // hash_text() of its content
+};
+
 struct RunCheckpoint {
   std::uint64_t scenario_hash = 0;  // hash_text() of the scenario text the run started from
   std::string scenario_file;        // that scenario's absolute path (base of its relative paths)
+  std::vector<InputFile> input_files;  // every file the scenario names: a resumed run reads the same
   bool converged = false;
   std::vector<std::vector<std::string>> history;  // history.csv rows so far, header excluded
   std::vector<std::vector<std::string>> measure;  // measure.csv rows so far, header excluded

@@ -173,6 +173,9 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
   // written yet. A later round has earlier rounds' files to keep, and is stopped once it has
   // meshed and written its start (below), so that it can be resumed.
   const bool later_round = !resume && !refined_tips.empty();
+  // The files the scenario names, hashed as the model is built from them: a resumed run refuses
+  // to start from any that changed since.
+  std::vector<output::InputFile> input_files = resume ? resume->input_files : hash_input_files(s);
   std::optional<UnstoppableStage> building;
   if (!later_round) building.emplace(context.callbacks);
   CoupledModel model(s, context.mesh_cache, refine_points(refined_tips));
@@ -198,6 +201,7 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
   output::RunCheckpoint checkpoint;
   checkpoint.scenario_hash = output::hash_text(context.scenario_text);
   checkpoint.scenario_file = std::filesystem::absolute(s.file).string();
+  checkpoint.input_files = std::move(input_files);
   ParaviewOutput paraview(context.folder, s.output.fields);
   const std::optional<FractureMeter> meter = make_fracture_meter(s);
   const hydro::JointApertureLaw joint_law = make_joint_aperture_law(s);

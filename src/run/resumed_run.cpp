@@ -9,6 +9,38 @@ namespace hydrodda::run {
 
 namespace fs = std::filesystem;
 
+std::vector<output::InputFile> hash_input_files(const scenario::Scenario& s) {
+  std::vector<output::InputFile> files;
+  const auto add = [&](const char* key, const std::optional<fs::path>& file) {
+    if (!file) return;
+    const std::optional<std::string> text = read_text_file(*file);
+    if (!text) throw InputError(fmt::format("cannot read {} ({})", file->string(), key));
+    files.push_back({key, fs::absolute(*file).string(), output::hash_text(*text)});
+  };
+  if (s.geometry) add("geometry.fractures_file", s.geometry->fractures_file);
+  if (s.mesh) add("mesh.file", s.mesh->file);
+  return files;
+}
+
+namespace {
+
+// Throws InputError naming the first file the scenario names that is not as the run read it.
+void check_input_files(const fs::path& directory, const output::RunCheckpoint& checkpoint) {
+  for (const output::InputFile& f : checkpoint.input_files) {
+    const std::optional<std::string> text = read_text_file(f.path);
+    if (!text)
+      throw InputError(fmt::format("--resume {}: cannot read {} ({}), which the run read at its start; a resumed "
+                                   "run must use the same model (restore the file, or start a new run)",
+                                   directory.string(), f.path, f.key));
+    if (output::hash_text(*text) != f.hash)
+      throw InputError(fmt::format("--resume {}: {} ({}) changed since the run started; a resumed run must use the "
+                                   "same model (restore the file, or start a new run to use the new one)",
+                                   directory.string(), f.path, f.key));
+  }
+}
+
+}  // namespace
+
 SavedRun read_saved_run(const fs::path& directory) {
   const std::string dir = directory.string();
   std::error_code ec;
@@ -35,6 +67,7 @@ SavedRun read_saved_run(const fs::path& directory) {
     throw InputError(fmt::format("{} differs from the scenario the run started with; a resumed run must use the "
                                  "same model (start a new run to change it)",
                                  copy.string()));
+  check_input_files(directory, run.checkpoint);
   run.scenario_text = *text;
   return run;
 }

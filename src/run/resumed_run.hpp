@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "output/checkpoint.hpp"
 #include "scenario/scenario.hpp"
@@ -24,8 +25,13 @@ struct ResumedRun {
   output::RunCheckpoint checkpoint;
 };
 
+// Every file the scenario names (geometry.fractures_file, mesh.file) with the hash of its
+// content, for the checkpoint. Throws InputError naming a file that cannot be read.
+std::vector<output::InputFile> hash_input_files(const scenario::Scenario& scenario);
+
 // Reads DIR/checkpoint.bin and DIR/scenario.toml. Throws InputError saying why when there is no
-// checkpoint, when it is damaged, or when the scenario copy was edited since the start.
+// checkpoint, when it is damaged, or when the scenario copy or a file it names
+// (RunCheckpoint::input_files) was edited, moved or deleted since the start.
 SavedRun read_saved_run(const std::filesystem::path& directory);
 
 // Throws InputError when the run cannot be continued: it is not a coupled run, or it already

@@ -67,8 +67,8 @@ RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output:
     folder.write("summary.json", checked.text);
   };
   const RunContext context{s, folder, callbacks, scenario_text, resume, stop_after, write_final_summary, mesh_cache};
+  const RunKind kind = kind_of(s);
   try {
-    const RunKind kind = kind_of(s);
     const output::RunSummary summary = kind == RunKind::coupled     ? run_coupled(context)
                                        : kind == RunKind::mechanics ? run_mechanics(context)
                                                                     : run_flow(context);
@@ -83,6 +83,12 @@ RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output:
   } catch (const RunFailure& failure) {
     return record_failure(folder, failure.status(), failure.what(), failure.summary());
   } catch (const std::exception& e) {
+    // A resumed run that could not take up its state (its model no longer fits the checkpoint)
+    // has no result of its own: the folder's summary.json, of the run it continues, is kept.
+    if (resume)
+      throw InputError(fmt::format("--resume {}: the run could not be continued: {}; its summary.json is left as it "
+                                   "was",
+                                   directory.string(), e.what()));
     // A failure before any result exists (meshing, a singular system): reported, never hidden.
     output::RunSummary summary;
     summary.title = s.title;

@@ -199,6 +199,53 @@ TEST(Resume, FoldersThatCannotBeResumedAreRefused) {
   EXPECT_EQ(run_program("run").exit_code, 2);
 }
 
+// The six-block model with its two shorter traces read from a file beside the scenario
+// (geometry.fractures_file), both written to the temporary folder under `name`.
+fs::path six_block_with_traces_file(const std::string& name, const std::string& traces) {
+  std::ofstream(fs::temp_directory_path() / (name + ".csv")) << traces;
+  return edited_scenario(kSixBlock, name,
+                         {{"  [[2.088, 3.9], [5.0, 4.3]],    # from the near-vertical fracture to the right side\n"
+                           "  [[0.0, 0.9], [2.296, 1.3]],    # from the left side to the near-vertical fracture\n]\n",
+                           "]\nfractures_file = \"" + name + ".csv\"\n"}});
+}
+
+// A fractures file edited (one trace's end moved 2 cm) or deleted after the stop: the resumed
+// run would cut other blocks than the checkpoint's and say "converged". It is refused, naming
+// the file and its key, and the stopped run's summary.json is left as it was; with the file as
+// it was, the run resumes.
+TEST(Resume, AnEditedOrDeletedFracturesFileIsRefusedNamingIt) {
+  Folders f("traces");
+  const std::string name = "hydrodda-resume-traces";
+  const std::string traces = "x1,y1,x2,y2\n2.088,3.9,5.0,4.3\n0.0,0.9,2.296,1.3\n";
+  const fs::path file = six_block_with_traces_file(name, traces);
+  const fs::path csv = fs::temp_directory_path() / (name + ".csv");
+  const auto first = run_program("run " + file.string() + " -o " + f.parts.string() + " --stop-after 1");
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  const std::string stopped = read_file(f.parts / "summary.json");
+
+  std::ofstream(csv) << "x1,y1,x2,y2\n2.088,3.9,5.0,4.3\n0.0,0.92,2.296,1.3\n";
+  auto result = run_program("run --resume " + f.parts.string());
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find(csv.string() + " (geometry.fractures_file) changed since the run started"),
+            std::string::npos)
+      << result.output;
+  EXPECT_EQ(read_file(f.parts / "summary.json"), stopped);
+
+  fs::remove(csv);
+  result = run_program("run --resume " + f.parts.string());
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("cannot read " + csv.string() + " (geometry.fractures_file)"), std::string::npos)
+      << result.output;
+  EXPECT_EQ(read_file(f.parts / "summary.json"), stopped);
+
+  std::ofstream(csv) << traces;
+  result = run_program("run --resume " + f.parts.string());
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_EQ(read_summary_without_timings(f.parts)["converged"], true);
+  fs::remove(file);
+  fs::remove(csv);
+}
+
 }  // namespace
 
 namespace {

@@ -19,6 +19,8 @@ RunCheckpoint make_checkpoint() {
   RunCheckpoint c;
   c.scenario_hash = hash_text("title = \"x\"\n");
   c.scenario_file = "/data/runs/seal.toml";
+  c.input_files = {{"geometry.fractures_file", "/data/runs/traces.csv", hash_text("0,0,1,1\n")},
+                   {"mesh.file", "/data/runs/seal.msh", 0xffffffffffffffffull}};
   c.converged = false;
   c.history = {{"1", "0.10000000000000001", "1"}, {"2", "0.20000000000000001", "0.5"}};
   c.measure = {{"1", "0.10000000000000001", "top", "0.5", "1", "0", "-1e-06"}};
@@ -72,6 +74,12 @@ TEST(Checkpoint, DecodesToTheSameValuesBitForBit) {
   const RunCheckpoint d = decode_checkpoint(encode_checkpoint(c));
   EXPECT_EQ(d.scenario_hash, c.scenario_hash);
   EXPECT_EQ(d.scenario_file, c.scenario_file);
+  ASSERT_EQ(d.input_files.size(), c.input_files.size());
+  for (std::size_t i = 0; i < c.input_files.size(); ++i) {
+    EXPECT_EQ(d.input_files[i].key, c.input_files[i].key);
+    EXPECT_EQ(d.input_files[i].path, c.input_files[i].path);
+    EXPECT_EQ(d.input_files[i].hash, c.input_files[i].hash);
+  }
   EXPECT_EQ(d.converged, c.converged);
   EXPECT_EQ(d.history, c.history);
   EXPECT_EQ(d.measure, c.measure);

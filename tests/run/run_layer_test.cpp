@@ -280,6 +280,51 @@ TEST(RunLayer, AStopRequestedAfterTheFirstPassLeavesTheFolderAtThatPass) {
   expect_same_results(whole.path, parts.path);
 }
 
+// A resume whose model no longer fits its checkpoint (here a block fewer in the saved state,
+// as a changed cut would give) fails before it runs a pass: it is refused, and the stopped
+// run's summary.json is not replaced by a failure's with no result in it.
+TEST(RunLayer, AResumeThatCannotTakeUpItsStateKeepsTheStoppedSummary) {
+  const scenario::Scenario s = scenario::read_scenario(kVerification / "coupled_hydrostatic_column.toml");
+  Folder folder("resume-refused");
+  const run::RunResult stopped = run::run(s, {folder.path, false, 1});
+  ASSERT_EQ(stopped.status, run::RunStatus::stopped);
+  const std::string summary = read_file(folder.path / "summary.json");
+  run::ResumedRun resumed = run::open_resumed_run(folder.path);
+  resumed.checkpoint.mechanics.blocks.pop_back();
+  try {
+    run::resume(resumed, std::nullopt);
+    ADD_FAILURE() << "a state that does not fit the model was resumed";
+  } catch (const run::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("could not be continued"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(read_file(folder.path / "summary.json"), summary);
+}
+
+// The checkpoint's input files: every file the scenario names, by key, absolute path and the
+// hash of its content, which an edit of one byte changes; one that cannot be read is named.
+TEST(RunLayer, TheInputFilesAreEveryFileTheScenarioNames) {
+  Folder folder("input-files");
+  fs::create_directories(folder.path);
+  std::ofstream(folder.path / "traces.csv") << "0,0,1,1\n";
+  std::ofstream(folder.path / "model.msh") << "$MeshFormat\n";
+  scenario::Scenario s;
+  s.geometry.emplace();
+  s.geometry->fractures_file = folder.path / "traces.csv";
+  s.mesh.emplace();
+  s.mesh->file = folder.path / "model.msh";
+  const std::vector<hydrodda::output::InputFile> files = run::hash_input_files(s);
+  ASSERT_EQ(files.size(), 2u);
+  EXPECT_EQ(files[0].key, "geometry.fractures_file");
+  EXPECT_EQ(files[0].path, (folder.path / "traces.csv").string());
+  EXPECT_EQ(files[0].hash, hydrodda::output::hash_text("0,0,1,1\n"));
+  EXPECT_EQ(files[1].key, "mesh.file");
+  EXPECT_EQ(files[1].hash, hydrodda::output::hash_text("$MeshFormat\n"));
+  std::ofstream(folder.path / "model.msh") << "$MeshFormaT\n";
+  EXPECT_NE(run::hash_input_files(s)[1].hash, files[1].hash);
+  fs::remove(folder.path / "traces.csv");
+  EXPECT_THROW(run::hash_input_files(s), run::InputError);
+}
+
 TEST(RunLayer, StopAfterIsForCoupledRunsOnlyAndLeavesNoFolder) {
   const scenario::Scenario s = scenario::read_scenario(kVerification / "flow_linear_head.toml");
   Folder folder("stop-after");
