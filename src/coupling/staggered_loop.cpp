@@ -157,10 +157,14 @@ PassReport StaggeredLoop::run_pass() {
   // Porosity and permeability from the blocks as they are now: recomputed every pass.
   auto start = Clock::now();
   const std::vector<geometry::Polygon> blocks = current_blocks();
-  // The last pass's fields let go first: at a million triangles they are 26 MB beside the
-  // kept flow factor.
+  // The last pass's fields moved aside (not copied: at a million triangles they are 26 MB beside
+  // the kept flow factor), for an abandoned pass to put back.
+  pass_start_->porosity = std::move(porosity_);
+  pass_start_->permeability = std::move(permeability_);
+  pass_start_->permeability_tensors = std::move(permeability_tensors_);
   porosity_ = {};
   permeability_ = {};
+  permeability_tensors_ = {};
   porosity_ = porosity_mapper_.compute(blocks, settings_.permeability.matrix_porosity, seepage_ ? &pieces_ : nullptr);
   // A block moved off the domain boundary leaves a strip that is no fracture (boundary_gaps.hpp).
   exclude_boundary_gaps(porosity_, boundary_gaps_.compute_gap_areas(blocks), porosity_mapper_.element_areas(),
@@ -302,6 +306,9 @@ void StaggeredLoop::abandon_pass() {
   relaxation_ = start.relaxation;
   if (settings_.acceleration == Acceleration::anderson) anderson_.restore(std::move(start.anderson_history));
   darcy_.restore_kept_factor(std::move(start.kept_factor), start.kept_factor_single_precision);
+  porosity_ = std::move(start.porosity);
+  permeability_ = std::move(start.permeability);
+  permeability_tensors_ = std::move(start.permeability_tensors);
   pass_start_.reset();
 }
 

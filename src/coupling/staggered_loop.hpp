@@ -157,6 +157,12 @@ struct LoopState {
   // with the solver rather than copied.
   std::shared_ptr<const hydro::PermeabilityField> kept_factor_permeability;
   bool kept_factor_single_precision = false;  // that factor held in single precision
+  // The fields the last pass ran on, per element (empty before any pass): every pass computes
+  // them afresh from the blocks, but a run continued after its last pass (to write a summary the
+  // disk could not take) has no pass left to, and shows these.
+  PorosityField porosity;
+  std::vector<double> permeability;
+  std::vector<hydro::PermeabilityTensor> permeability_tensors;  // with joints; else empty
 };
 
 class StaggeredLoop {
@@ -172,8 +178,8 @@ class StaggeredLoop {
   PassReport run_pass();
 
   // The state between passes, and its restoration (throws std::invalid_argument when the
-  // sizes do not fit this mesh and system). The porosity and permeability are not part of it:
-  // every pass recomputes them from the blocks.
+  // sizes do not fit this mesh and system). The porosity and permeability in it are the last
+  // pass's, for what is shown of that pass: every pass recomputes its own from the blocks.
   LoopState export_state() const;
   void import_state(LoopState state);
 
@@ -223,6 +229,10 @@ class StaggeredLoop {
     std::deque<dda::AndersonAccelerator::Pass> anderson_history;
     std::shared_ptr<const hydro::PermeabilityField> kept_factor;
     bool kept_factor_single_precision = false;
+    // The last pass's fields (part of the state export_state() gives), moved aside.
+    PorosityField porosity;
+    std::vector<double> permeability;
+    std::vector<hydro::PermeabilityTensor> permeability_tensors;
   };
   std::optional<PassStart> pass_start_;
 

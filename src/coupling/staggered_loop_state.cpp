@@ -9,7 +9,8 @@ namespace hydrodda::coupling {
 LoopState StaggeredLoop::export_state() const {
   LoopState state{completed_,       solution_,   previous_heads_, heads_two_back_, previous_displacements_, growth_,
                   previous_update_, relaxation_, {},              {},              darcy_.kept_factor(),
-                  darcy_.kept_factor_in_single_precision()};
+                  darcy_.kept_factor_in_single_precision(), porosity_, permeability_,
+                  permeability_tensors_};
   for (const dda::AndersonAccelerator::Pass& pass : anderson_.history()) {
     state.anderson_residuals.emplace_back(pass.residual.begin(), pass.residual.end());
     state.anderson_images.emplace_back(pass.image.begin(), pass.image.end());
@@ -35,7 +36,11 @@ void StaggeredLoop::import_state(LoopState state) {
   for (std::size_t i = 0; anderson_fits && i < state.anderson_residuals.size(); ++i)
     anderson_fits = state.anderson_residuals[i].size() == 2 * nodes && state.anderson_images[i].size() == 2 * nodes;
   const std::size_t kept = state.kept_factor_permeability ? state.kept_factor_permeability->size() : 0;
-  if (!fits || !anderson_fits || (kept != 0 && kept != static_cast<std::size_t>(mesh_.triangle_count())))
+  const auto per_element = [&](std::size_t n) { return n == 0 || n == static_cast<std::size_t>(mesh_.triangle_count()); };
+  const bool fields_fit = per_element(state.porosity.porosity.size()) &&
+                          per_element(state.porosity.fracture_area.size()) &&
+                          per_element(state.permeability.size()) && per_element(state.permeability_tensors.size());
+  if (!fits || !anderson_fits || !per_element(kept) || !fields_fit)
     throw std::invalid_argument("coupling state: sizes do not fit the mesh and the blocks");
   // The flow solver's kept factor, made again from its permeability: the next pass's solve
   // then starts from the very factor it had.
@@ -48,6 +53,9 @@ void StaggeredLoop::import_state(LoopState state) {
   growth_ = state.growth;
   previous_update_ = std::move(state.previous_update);
   relaxation_ = state.relaxation;
+  porosity_ = std::move(state.porosity);
+  permeability_ = std::move(state.permeability);
+  permeability_tensors_ = std::move(state.permeability_tensors);
   std::deque<dda::AndersonAccelerator::Pass> history;
   for (std::size_t i = 0; i < state.anderson_residuals.size(); ++i)
     history.push_back({Eigen::Map<const Eigen::VectorXd>(state.anderson_residuals[i].data(),

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -16,9 +17,16 @@ namespace {
   throw std::runtime_error(fmt::format("cannot write {}: {}: {}", path.string(), what,
                                        std::strerror(errno)));
 }
+// A test hook: HYDRODDA_TEST_FULL_DISK=NAME makes every write of a file named NAME fail as on a
+// full disk, so that tests reach what a full disk does to a run without filling one.
+bool full_disk_for(const std::filesystem::path& path) {
+  const char* name = std::getenv("HYDRODDA_TEST_FULL_DISK");
+  return name && *name && path.filename() == name;
+}
 }  // namespace
 
-AtomicFile::AtomicFile(const std::filesystem::path& path) : path_(path), temporary_(path) {
+AtomicFile::AtomicFile(const std::filesystem::path& path)
+    : path_(path), temporary_(path), full_disk_(full_disk_for(path)) {
   // The temporary name carries the process id so that two runs never share one.
   temporary_ += fmt::format(".tmp.{}", ::getpid());
   fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
@@ -38,6 +46,10 @@ void AtomicFile::write(std::string_view bytes) {
 
 void AtomicFile::write_at(std::size_t position, std::string_view bytes) {
   if (fd_ < 0) throw std::logic_error("AtomicFile: a write after commit");
+  if (full_disk_ && !bytes.empty()) {
+    errno = ENOSPC;
+    fail(temporary_, "write");
+  }
   std::size_t written = 0;
   while (written < bytes.size()) {
     const ssize_t n = ::pwrite(fd_, bytes.data() + written, bytes.size() - written,

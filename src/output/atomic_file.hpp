@@ -30,6 +30,7 @@ class AtomicFile {
   std::filesystem::path temporary_;
   int fd_ = -1;
   std::size_t size_ = 0;  // bytes appended so far
+  bool full_disk_ = false;  // writes fail as on a full disk (HYDRODDA_TEST_FULL_DISK, for tests)
 };
 
 // The whole `content` through an AtomicFile.

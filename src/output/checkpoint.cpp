@@ -20,7 +20,8 @@ constexpr std::string_view kMagic = "hydrodda checkpoint\n";
 // factor (its permeability) at the end; 6: Anderson's history; 7: the kept factor's
 // permeability as tensors (xx, xy, yy), joint apertures' included; 8: CRC-32 in place of FNV-1a
 // as the checksum; 11: the wedge tips of mesh.refine_tips (refined, and of the round's last
-// passes); 13: the hashes of the files the scenario names. Only the current format is read: a
+// passes); 13: the hashes of the files the scenario names, and the porosity and permeability
+// of the last pass. Only the current format is read: a
 // run stopped by an older hydrodda is run again.
 constexpr std::int64_t kVersion = 13;
 // The last 8 bytes: the CRC-32 of every byte before them (zlib's, as a 64-bit word). A CRC
@@ -358,6 +359,10 @@ void put_checkpoint(Writer& w, const RunCheckpoint& c, const dda::SystemState& m
   w.put(coupling.anderson_images);
   w.put(coupling.kept_factor_permeability);
   w.put(static_cast<std::int64_t>(coupling.kept_factor_single_precision));
+  w.put(coupling.porosity.fracture_area);
+  w.put(coupling.porosity.porosity);
+  w.put(coupling.permeability);
+  w.put(coupling.permeability_tensors);
   w.finish();
 }
 }  // namespace
@@ -448,6 +453,10 @@ RunCheckpoint decode_checkpoint(std::string_view file) {
   r.get(single_precision);
   if (single_precision != 0 && single_precision != 1) r.fail();
   c.coupling.kept_factor_single_precision = single_precision == 1;
+  r.get(c.coupling.porosity.fracture_area);
+  r.get(c.coupling.porosity.porosity);
+  r.get(c.coupling.permeability);
+  r.get(c.coupling.permeability_tensors);
   r.expect_end();
   return c;
 }

@@ -223,6 +223,9 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
     for (const std::vector<std::string>& row : saved.history) history.add_row(row);
     paraview.list_written(saved.written_iterations);
     if (meter) fractures.continue_from(loop.iterations(), s.output.fields.fractures ? saved.written_iterations : std::vector<int>{});
+    // The fractures as the last pass left them: a run resumed after its last pass (to write its
+    // summary) measures no pass of its own.
+    if (meter && loop.iterations() > 0) measure_fractures();
     spdlog::info("resuming after coupling iteration {}", loop.iterations());
   } else {
     context.folder.write("scenario.toml", context.scenario_text);
@@ -238,7 +241,8 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
     checkpoint.written_iterations.push_back(iteration);
   };
   int last_written = checkpoint.written_iterations.empty() ? 0 : checkpoint.written_iterations.back();
-  bool converged = false;
+  // A run resumed after its last pass (its summary was not written) only writes it.
+  bool converged = resume && resume->converged;
   bool last_pass_cut_short = false;  // its last DDA step was cut short (PassReport::full_time_step)
   bool last_pass_moving = false;     // its blocks still moved after the settle steps (PassReport::at_rest)
   double shortest_time_step = 0.0;   // of the last pass

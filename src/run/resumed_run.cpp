@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "output/summary_reading.hpp"
 #include "run/run.hpp"
 #include "scenario/reader.hpp"
 
@@ -36,6 +37,17 @@ void check_input_files(const fs::path& directory, const output::RunCheckpoint& c
       throw InputError(fmt::format("--resume {}: {} ({}) changed since the run started; a resumed run must use the "
                                    "same model (restore the file, or start a new run to use the new one)",
                                    directory.string(), f.path, f.key));
+  }
+}
+
+// DIR/summary.json records the end of a run that did `iterations` passes (status "ok", or
+// "failed" once they were done); not when it is missing, unreadable, or of an earlier state.
+bool summary_records_end(const fs::path& directory, int iterations) {
+  try {
+    const auto values = output::read_summary_values(directory / "summary.json", {"status", "iterations"});
+    return (values[0] == "ok" || values[0] == "failed") && values[1] == std::to_string(iterations);
+  } catch (const std::runtime_error&) {
+    return false;
   }
 }
 
@@ -78,13 +90,14 @@ void check_resumable(const fs::path& directory, const scenario::Scenario& scenar
   if (!scenario.mechanics || !scenario.flow)
     throw InputError(fmt::format("--resume {}: only coupled runs ([mechanics] and [flow]) can be resumed", dir));
   const int done = checkpoint.coupling.iterations;
+  const bool ended = checkpoint.converged || done >= scenario.coupling.max_iterations;
+  if (!ended || !summary_records_end(directory, done)) return;
   if (checkpoint.converged)
     throw InputError(
         fmt::format("--resume {}: the run already converged at coupling iteration {}; nothing to resume", dir, done));
-  if (done >= scenario.coupling.max_iterations)
-    throw InputError(fmt::format("--resume {}: the run used all {} coupling iterations (coupling.max_iterations) "
-                                 "without converging; nothing to resume",
-                                 dir, done));
+  throw InputError(fmt::format("--resume {}: the run used all {} coupling iterations (coupling.max_iterations) "
+                               "without converging; nothing to resume",
+                               dir, done));
 }
 
 ResumedRun open_resumed_run(const fs::path& directory) {

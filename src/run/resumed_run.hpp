@@ -35,7 +35,8 @@ std::vector<output::InputFile> hash_input_files(const scenario::Scenario& scenar
 SavedRun read_saved_run(const std::filesystem::path& directory);
 
 // Throws InputError when the run cannot be continued: it is not a coupled run, or it already
-// converged or used all its coupling iterations.
+// converged or used all its coupling iterations and its summary.json says so. One whose
+// summary.json does not (the disk filled as it was written) is resumed to write it.
 void check_resumable(const std::filesystem::path& directory, const scenario::Scenario& scenario,
                      const output::RunCheckpoint& checkpoint);
 

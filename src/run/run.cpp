@@ -51,6 +51,33 @@ std::string describe_non_finite(const std::vector<std::string>& paths) {
                      names);
 }
 
+// summary.json of a run that reached its end could not be written (a full disk): the result
+// in memory is not turned into a failure's summary, and no summary.json claims one.
+class SummaryNotWritten : public std::runtime_error {
+ public:
+  SummaryNotWritten(const std::string& message, output::RunSummary summary)
+      : std::runtime_error(message), summary_(std::move(summary)) {}
+  const output::RunSummary& summary() const { return summary_; }
+
+ private:
+  output::RunSummary summary_;
+};
+
+// The run's result, held in memory, that summary.json could not take: said, not recorded.
+RunResult report_unwritten_summary(const SummaryNotWritten& e, RunKind kind, const fs::path& folder) {
+  output::RunSummary summary = e.summary();
+  summary.converged = false;
+  summary.status = "failed";
+  summary.message = fmt::format(
+      "{}: the run's result ({}, {} iteration(s)) is not recorded; {}", e.what(),
+      e.summary().converged ? "converged" : e.summary().status, e.summary().iterations,
+      kind == RunKind::coupled
+          ? fmt::format("its last state is in checkpoint.bin: make room, then `hydrodda run --resume {}` writes it",
+                        folder.string())
+          : "make room and run it again");
+  return {RunStatus::failed, false, summary.iterations, summary.message, summary, folder};
+}
+
 RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output::ExistingFolder policy,
                  const std::string& scenario_text, const output::RunCheckpoint* resume,
                  std::optional<int> stop_after, const Callbacks& callbacks,
@@ -60,11 +87,19 @@ RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output:
   std::error_code ec;
   const bool folder_is_new = !fs::exists(directory, ec);
   const output::RunFolder folder(directory, policy);
-  const auto write_final_summary = [&folder](const output::RunSummary& summary) {
+  // What summary.json holds once the run's result is written: a later failure (a figure that
+  // cannot be drawn) does not replace it.
+  std::optional<output::RunSummary> written;
+  const auto write_final_summary = [&folder, &written](const output::RunSummary& summary) {
     const output::CheckedSummary checked = output::format_checked_summary(summary);
     if (!checked.non_finite.empty())
       throw RunFailure(RunStatus::failed, describe_non_finite(checked.non_finite), summary);
-    folder.write("summary.json", checked.text);
+    try {
+      folder.write("summary.json", checked.text);
+    } catch (const output::RunFolderError& e) {
+      throw SummaryNotWritten(e.what(), summary);
+    }
+    written = summary;
   };
   const RunContext context{s, folder, callbacks, scenario_text, resume, stop_after, write_final_summary, mesh_cache};
   const RunKind kind = kind_of(s);
@@ -80,9 +115,18 @@ RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output:
     // behind. Nothing has been written by then; a folder this run made is removed.
     if (folder_is_new) fs::remove_all(directory, ec);
     throw;
+  } catch (const SummaryNotWritten& e) {
+    // An earlier run's summary.json (--overwrite) would be taken for this run's: removed. A
+    // resumed run's is of the run it continues, and stays; so does anything not a file.
+    if (!resume && fs::is_regular_file(fs::symlink_status(folder.file("summary.json"), ec)))
+      fs::remove(folder.file("summary.json"), ec);
+    return report_unwritten_summary(e, kind, folder.path());
   } catch (const RunFailure& failure) {
     return record_failure(folder, failure.status(), failure.what(), failure.summary());
   } catch (const std::exception& e) {
+    if (written)  // summary.json holds the run's result: a failure after it (a figure) leaves it be
+      return {RunStatus::failed, false, written->iterations,
+              fmt::format("{} (summary.json holds the run's result)", e.what()), *written, folder.path()};
     // A resumed run that could not take up its state (its model no longer fits the checkpoint)
     // has no result of its own: the folder's summary.json, of the run it continues, is kept.
     if (resume)

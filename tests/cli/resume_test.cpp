@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "output/checkpoint.hpp"
 #include "run_folder_compare.hpp"
 #include "run_program.hpp"
 
@@ -244,6 +245,44 @@ TEST(Resume, AnEditedOrDeletedFracturesFileIsRefusedNamingIt) {
   EXPECT_EQ(read_summary_without_timings(f.parts)["converged"], true);
   fs::remove(file);
   fs::remove(csv);
+}
+
+// A disk that fills as the final summary.json is written (HYDRODDA_TEST_FULL_DISK, the tests'
+// stand-in for one) does not turn the converged run into "failed, 0 iterations": the run says
+// it could not record its result and how to, no summary.json claims anything, and the
+// checkpoint of the converged state is kept. --resume then writes the summary (and the figures)
+// of the run never troubled by the disk; after that there is nothing left to resume.
+TEST(Resume, AConvergedResultTheDiskCouldNotRecordIsWrittenByResume) {
+  Folders f("full-disk");
+  const auto whole = run_program("run " + kSixBlock.string() + " -o " + f.whole.string());
+  ASSERT_EQ(whole.exit_code, 0) << whole.output;
+  const int iterations = read_summary_without_timings(f.whole)["iterations"].get<int>();
+
+  const auto full = hydrodda::testing::run_command("HYDRODDA_TEST_FULL_DISK=summary.json " +
+                                                   std::string(HYDRODDA_BINARY) + " run " + kSixBlock.string() +
+                                                   " -o " + f.parts.string());
+  EXPECT_EQ(full.exit_code, 1) << full.output;
+  EXPECT_NE(full.output.find("No space left on device"), std::string::npos) << full.output;
+  EXPECT_NE(full.output.find("converged, " + std::to_string(iterations) + " iteration(s)"), std::string::npos)
+      << full.output;
+  EXPECT_NE(full.output.find("hydrodda run --resume " + f.parts.string()), std::string::npos) << full.output;
+  EXPECT_FALSE(fs::exists(f.parts / "summary.json"));
+  const auto checkpoint = hydrodda::output::decode_checkpoint(read_file(f.parts / "checkpoint.bin"));
+  EXPECT_TRUE(checkpoint.converged);
+  EXPECT_EQ(checkpoint.coupling.iterations, iterations);
+
+  const auto resumed = run_program("run --resume " + f.parts.string());
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("converged in " + std::to_string(iterations) + " coupling iteration(s)"),
+            std::string::npos)
+      << resumed.output;
+  expect_same_results(f.whole, f.parts);
+  for (const auto& figure : fs::directory_iterator(f.whole / "figures"))
+    EXPECT_TRUE(read_file(figure.path()) == read_file(f.parts / "figures" / figure.path().filename()))
+        << figure.path().filename() << " differs";
+  const auto again = run_program("run --resume " + f.parts.string());
+  EXPECT_EQ(again.exit_code, 2) << again.output;
+  EXPECT_NE(again.output.find("already converged"), std::string::npos) << again.output;
 }
 
 }  // namespace

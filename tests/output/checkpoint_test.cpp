@@ -66,6 +66,10 @@ RunCheckpoint make_checkpoint() {
   c.coupling.kept_factor_permeability = std::make_shared<const hydro::PermeabilityField>(
       std::vector<hydro::PermeabilityTensor>{{1e-15, 0.0, 1e-15}, {3.7e-9, -1.2e-10, 2.5e-11}});
   c.coupling.kept_factor_single_precision = true;
+  c.coupling.porosity.fracture_area = {0.0, 1.25e-3};
+  c.coupling.porosity.porosity = {0.1, 0.35};
+  c.coupling.permeability = {1e-15, 3.7e-9};
+  c.coupling.permeability_tensors = {{1e-15, 0.0, 1e-15}, {3.7e-9, -1.2e-10, 2.5e-11}};
   return c;
 }
 
@@ -125,6 +129,10 @@ TEST(Checkpoint, DecodesToTheSameValuesBitForBit) {
   ASSERT_TRUE(d.coupling.kept_factor_permeability);
   EXPECT_EQ(d.coupling.kept_factor_permeability->tensors(), c.coupling.kept_factor_permeability->tensors());
   EXPECT_TRUE(d.coupling.kept_factor_single_precision);
+  EXPECT_EQ(d.coupling.porosity.fracture_area, c.coupling.porosity.fracture_area);
+  EXPECT_EQ(d.coupling.porosity.porosity, c.coupling.porosity.porosity);
+  EXPECT_EQ(d.coupling.permeability, c.coupling.permeability);
+  EXPECT_EQ(d.coupling.permeability_tensors, c.coupling.permeability_tensors);
 }
 
 TEST(Checkpoint, ACutOrDamagedFileIsRefused) {

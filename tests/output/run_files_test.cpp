@@ -1,5 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -105,6 +109,27 @@ TEST(RunFolder, NoSymbolicLinkLeadsTheRunOutOfItsFolder) {
   EXPECT_TRUE(fs::is_directory(folder.subfolder("round_3")));
   EXPECT_EQ(read_all(outside / "heads.png"), "the user's own picture");
   EXPECT_EQ(std::distance(fs::directory_iterator(outside), fs::directory_iterator{}), 1);
+  fs::remove_all(dir);
+}
+
+// HYDRODDA_TEST_FULL_DISK=NAME, the tests' stand-in for a full disk: a write of a file so named
+// fails as on one (ENOSPC) and leaves the file as it was; other files are written.
+TEST(AtomicFile, TheFullDiskHookFailsWritesOfTheNamedFileOnly) {
+  const fs::path dir = fresh_dir("hydrodda-atomic-full");
+  fs::create_directories(dir);
+  write_file_atomically(dir / "summary.json", "before\n");
+  ::setenv("HYDRODDA_TEST_FULL_DISK", "summary.json", 1);
+  try {
+    write_file_atomically(dir / "summary.json", "after\n");
+    ADD_FAILURE() << "the write went through";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(std::strerror(ENOSPC)), std::string::npos) << e.what();
+  }
+  write_file_atomically(dir / "history.csv", "written\n");
+  ::unsetenv("HYDRODDA_TEST_FULL_DISK");
+  EXPECT_EQ(read_all(dir / "summary.json"), "before\n");
+  EXPECT_EQ(read_all(dir / "history.csv"), "written\n");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}), 2);
   fs::remove_all(dir);
 }
 
