@@ -139,24 +139,34 @@ class Reader {
   Fnv1a hash_;
 };
 
-// An exclusive flock held for as long as it lives; released by the kernel if the process dies.
+// An exclusive flock held for as long as it lives, if it could be taken (held()); released by
+// the kernel if the process dies.
 class FileLock {
  public:
   explicit FileLock(const fs::path& file) : fd_(::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644)) {
-    if (fd_ < 0) throw std::runtime_error("cannot open '" + file.string() + "': " + std::strerror(errno));
+    if (fd_ < 0) {
+      error_ = "cannot open '" + file.string() + "': " + std::strerror(errno);
+      return;
+    }
     while (::flock(fd_, LOCK_EX) != 0) {
       if (errno == EINTR) continue;
-      const int error = errno;
+      error_ = "cannot lock '" + file.string() + "': " + std::strerror(errno);
       ::close(fd_);
-      throw std::runtime_error("cannot lock '" + file.string() + "': " + std::strerror(error));
+      fd_ = -1;
+      return;
     }
   }
-  ~FileLock() { ::close(fd_); }
+  ~FileLock() {
+    if (fd_ >= 0) ::close(fd_);
+  }
   FileLock(const FileLock&) = delete;
   FileLock& operator=(const FileLock&) = delete;
+  bool held() const { return fd_ >= 0; }
+  const std::string& error() const { return error_; }  // why it is not held
 
  private:
   int fd_;
+  std::string error_;
 };
 
 }  // namespace
@@ -279,23 +289,21 @@ CachedMesh generate_or_reuse_mesh(const MeshRequest& request, const fs::path& fo
   cached.file = folder / (name + ".mesh");
   // A cache that cannot be used (a read-only or full disk, a file where the folder should be)
   // costs the run its meshing time, not the run.
-  std::optional<FileLock> lock;
-  try {
-    fs::create_directories(folder);
-    lock.emplace(folder / (name + ".lock"));
-  } catch (const std::exception& e) {
-    cached.warnings.push_back("the mesh cache '" + folder.string() + "' cannot be used (" + e.what() +
+  std::error_code ignored;
+  fs::create_directories(folder, ignored);  // if it cannot be made, the lock says why
+  const FileLock lock(folder / (name + ".lock"));
+  if (!lock.held()) {
+    cached.warnings.push_back("the mesh cache '" + folder.string() + "' cannot be used (" + lock.error() +
                               "); meshing without it");
+    cached.mesh = generate_mesh(request);
+    return cached;
   }
-  if (lock) {
-    if (std::optional<TriangleMesh> mesh = read_entry(cached.file, key, cached.warnings)) {
-      cached.mesh = std::move(*mesh);
-      cached.reused = true;
-      return cached;
-    }
+  if (std::optional<TriangleMesh> mesh = read_entry(cached.file, key, cached.warnings)) {
+    cached.mesh = std::move(*mesh);
+    cached.reused = true;
+    return cached;
   }
   cached.mesh = generate_mesh(request);
-  if (!lock) return cached;
   try {
     save_cached_mesh(cached.file, cached.mesh, key);
     cached.stored = true;
