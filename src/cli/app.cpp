@@ -8,6 +8,7 @@
 #include <spdlog/spdlog.h>
 
 #include "cli/commands.hpp"
+#include "cli/hold_points.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/progress.hpp"
 #include "cli/sweep_ranks.hpp"
@@ -51,14 +52,21 @@ class AfterLiveLine : public spdlog::sinks::sink {
 
 // The run layer logs through the default logger; the program decides where and how much.
 void configure_logging(Verbosity verbosity) {
-  auto logger = std::make_shared<spdlog::logger>(
-      "hydrodda", std::make_shared<AfterLiveLine>(std::make_shared<spdlog::sinks::stderr_color_sink_mt>()));
+  const auto level = verbosity == Verbosity::Quiet     ? spdlog::level::warn
+                     : verbosity == Verbosity::Verbose ? spdlog::level::debug
+                                                       : spdlog::level::info;
+  auto printed = std::make_shared<AfterLiveLine>(std::make_shared<spdlog::sinks::stderr_color_sink_mt>());
+  printed->set_level(level);
+  auto logger = std::make_shared<spdlog::logger>("hydrodda", printed);
   auto formatter = std::make_unique<spdlog::pattern_formatter>();
   formatter->add_flag<SeverityPrefix>('*').set_pattern("%^%*%$%v");
   logger->set_formatter(std::move(formatter));
-  logger->set_level(verbosity == Verbosity::Quiet     ? spdlog::level::warn
-                    : verbosity == Verbosity::Verbose ? spdlog::level::debug
-                                                      : spdlog::level::info);
+  logger->set_level(level);
+  // A test's hold point (cli/hold_points.hpp) sees every line, printed or not.
+  if (auto hold = make_line_hold_sink()) {
+    logger->sinks().push_back(std::move(hold));
+    logger->set_level(spdlog::level::trace);
+  }
   spdlog::set_default_logger(logger);
 }
 }  // namespace

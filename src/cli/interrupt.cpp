@@ -15,6 +15,7 @@ namespace hydrodda::cli {
 
 namespace {
 std::atomic<bool> requested{false};
+std::atomic<bool> taken{false};  // and the process goes on
 // Held while deciding to end the process, so that a stage is never ended after it said it ended.
 std::mutex exit_mutex;
 bool exit_on_interrupt = false;
@@ -42,8 +43,14 @@ void take_signals() {
     int signal = 0;
     if (::sigwait(&set, &signal) != 0) continue;
     requested = true;
-    const std::lock_guard lock(exit_mutex);
-    if (exit_on_interrupt) exit_now();
+    {
+      const std::lock_guard lock(exit_mutex);
+      if (exit_on_interrupt) exit_now();
+    }
+    // Only now, the process going on: a thread waiting for the interrupt never runs past an
+    // interrupt that ends the process.
+    taken = true;
+    taken.notify_all();
   }
 }
 }  // namespace
@@ -59,6 +66,8 @@ void start_interrupt_thread() {
 }
 
 bool interrupt_requested() { return requested; }
+
+void wait_for_interrupt() { taken.wait(false); }
 
 void set_exit_on_interrupt(bool on, const std::filesystem::path& folder) {
   const std::lock_guard lock(exit_mutex);

@@ -17,6 +17,8 @@ void block_interrupt_signals();
 // Call before any other thread starts: threads inherit the blocked set.
 void start_interrupt_thread();
 bool interrupt_requested();
+// Returns once an interrupt has been taken and has not ended the process (at once if one has).
+void wait_for_interrupt();
 
 // While a stage runs that cannot stop and leaves nothing to keep (building the model, which
 // Gmsh may spend minutes on), an interrupt ends the process at once with exit code 1, removing

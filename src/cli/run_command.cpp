@@ -8,6 +8,7 @@
 
 #include "cli/app.hpp"
 #include "cli/commands.hpp"
+#include "cli/hold_points.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/scenario_loading.hpp"
 #include "output/run_folder.hpp"
@@ -75,7 +76,10 @@ int run_command(const RunOptions& options) {
   std::filesystem::path folder;  // removed when an interrupt while building the model leaves it empty
   run::Callbacks callbacks;
   callbacks.progress = [&](const run::ProgressReport& r) { progress.update(r.message); };
-  callbacks.stop_requested = interrupt_requested;
+  callbacks.stop_requested = [] {
+    pass_stop_check();
+    return interrupt_requested();
+  };
   callbacks.unstoppable_stage = [&](bool unstoppable) { set_exit_on_interrupt(unstoppable, folder); };
   try {
     std::optional<run::RunResult> result;

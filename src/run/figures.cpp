@@ -1,6 +1,7 @@
 #include "run/figures.hpp"
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include "output/field_figure.hpp"
 #include "output/plot_line.hpp"
@@ -21,6 +22,7 @@ std::string warning_of(bool converged) { return converged ? std::string() : "NOT
 void draw_figures(const scenario::Scenario& s, const output::RunFolder& folder, const FlowPicture& p) {
   if (s.output.figures.empty()) return;
   const std::filesystem::path dir = folder.figures();
+  spdlog::debug("figures: drawing in {}", dir.string());
   for (const std::string& format : s.output.figures) {
     output::FieldFigure head;
     head.title = s.title;

@@ -1,6 +1,7 @@
 #include "run/fracture_output.hpp"
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include <fstream>
 #include <sstream>
@@ -120,6 +121,7 @@ void draw_aperture_figure(const scenario::Scenario& s, const output::RunFolder& 
                           std::span<const geometry::Polygon> blocks, const FractureState& state,
                           const FigureState& shown) {
   if (s.output.figures.empty() || state.pieces.empty()) return;
+  spdlog::debug("figures: drawing in {}", folder.figures().string());
   output::FieldFigure figure;
   figure.title = s.title;
   figure.subtitle = "Fracture apertures (closed fractures in grey), " + shown.when;

@@ -1,91 +1,56 @@
-// SIGINT in the middle of a long coupling pass: the program does not wait for the pass to end,
-// it exits with 1 and leaves summary.json describing the last finished state.
+// Interrupts (SIGINT, SIGTERM) and kills at known points of a run: the program is held there
+// (cli/hold_points.hpp) or signalled on an event the test sees, never after a delay.
 
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
-#include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 #include <thread>
 
+#include "result_files.hpp"
 #include "run_folder_compare.hpp"
 #include "run_program.hpp"
 #include "spawn_program.hpp"
 
 namespace fs = std::filesystem;
-using hydrodda::testing::start_program_silently;
+using hydrodda::testing::RunningProgram;
+using hydrodda::testing::TemporaryFolder;
 
 namespace {
 
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+TemporaryFolder fresh_dir(const std::string& name) { return TemporaryFolder(name + "-" + std::to_string(::getpid())); }
 
-// Waits for `pid` up to `limit`; kills it and returns false when it is still running then.
-bool wait_for_exit(pid_t pid, std::chrono::seconds limit, int& status) {
-  const auto deadline = std::chrono::steady_clock::now() + limit;
-  while (std::chrono::steady_clock::now() < deadline) {
-    if (::waitpid(pid, &status, WNOHANG) == pid) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  }
-  ::kill(pid, SIGKILL);
-  ::waitpid(pid, &status, 0);
-  return false;
-}
-
-// `hydrodda run SCENARIO -o OUT` started in a child process, its output discarded.
-pid_t start_run(const fs::path& scenario, const fs::path& out) {
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    const int null = ::open("/dev/null", O_WRONLY);
-    ::dup2(null, STDOUT_FILENO);
-    ::dup2(null, STDERR_FILENO);
-    ::execl(HYDRODDA_BINARY, HYDRODDA_BINARY, "run", scenario.c_str(), "-o", out.c_str(),
-            static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  return pid;
+nlohmann::json read_summary(const fs::path& folder) {
+  return nlohmann::json::parse(std::ifstream(folder / "summary.json"));
 }
 
 }  // namespace
 
+// SIGINT in the middle of a long coupling pass (held at its 50th DDA step's stop check, of a
+// million): the program does not wait for the pass to end, it exits with 1 and leaves
+// summary.json describing the last finished state.
 TEST(Interrupt, ALongCouplingPassStopsAtTheNextStepAndReportsTheLastFinishedState) {
-  const fs::path dir = fs::temp_directory_path() / ("hydrodda-interrupt-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  // The six-block model with a first pass of a million DDA steps (many minutes): only an
-  // interrupt between steps ends it in time.
-  std::string text = read_text(fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/paper/six_block_lr_rl.toml");
-  const std::string steps = "steps = 100\n";
-  ASSERT_NE(text.find(steps), std::string::npos);
-  text.replace(text.find(steps), steps.size(), "steps = 1000000\n");
-  const fs::path scenario = dir / "long_pass.toml";
-  std::ofstream(scenario) << text;
-  const fs::path out = dir / "run";
+  const TemporaryFolder dir = fresh_dir("hydrodda-interrupt");
+  const fs::path scenario = hydrodda::testing::edited_scenario(
+      fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/paper/six_block_lr_rl.toml",
+      "hydrodda-long-pass-" + std::to_string(::getpid()), {{"steps = 100\n", "steps = 1000000\n"}});
+  const fs::path out = dir.path / "run";
+  RunningProgram program({"run", scenario.string(), "-o", out.string()}, dir.path.string() + ".log",
+                         {"HYDRODDA_HOLD_AT_STOP_CHECK=50"});
+  ASSERT_TRUE(program.wait_until_held()) << program.output();
+  program.signal(SIGINT);
+  // A million steps take many minutes: only an interrupt between steps ends the pass in time.
+  ASSERT_TRUE(program.wait_for_exit(std::chrono::seconds(120))) << "the interrupt was not taken mid-pass";
+  EXPECT_EQ(program.exit_code(), 1) << program.output();
 
-  const pid_t pid = start_run(scenario, out);
-  ASSERT_GE(pid, 0);
-  // scenario.toml is written just before the first pass starts.
-  for (int i = 0; i < 600 && !fs::exists(out / "scenario.toml"); ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // well inside the first pass
-  ::kill(pid, SIGINT);
-  int status = 0;
-  ASSERT_TRUE(wait_for_exit(pid, std::chrono::seconds(60), status)) << "the interrupt was not taken mid-pass";
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 1);
-
-  const auto summary = nlohmann::json::parse(std::ifstream(out / "summary.json"));
+  const auto summary = read_summary(out);
   EXPECT_EQ(summary["status"], "interrupted");
   EXPECT_EQ(summary["converged"], false);
   EXPECT_EQ(summary["iterations"], 0);
@@ -97,114 +62,119 @@ TEST(Interrupt, ALongCouplingPassStopsAtTheNextStepAndReportsTheLastFinishedStat
     EXPECT_EQ(block["displacement"][0].get<double>(), 0.0) << "block " << block["id"];
     EXPECT_EQ(block["displacement"][1].get<double>(), 0.0) << "block " << block["id"];
   }
-  fs::remove_all(dir);
+  fs::remove(scenario);
+  fs::remove(dir.path.string() + ".log");
 }
 
-// SIGTERM (twice, 50 ms apart) at every moment of the first 0.6 s of a small coupled run, which
-// orders its flow matrix with CHOLMOD (METIS swaps signal handlers there): every run ends with
-// exit code 0 or 1 and a folder it can be continued from, never killed, never a lost signal
-// reported as success.
+namespace {
+
+// How a run interrupted somewhere ended: exit code 0 and converged (the interrupt came after its
+// last stop check), or 1 with nothing left (while building its model) or a summary.json that
+// does not say converged. The first folder with a checkpoint is resumed to its end.
+void expect_a_clean_end(RunningProgram& program, const fs::path& out, bool& resumed_one) {
+  ASSERT_TRUE(program.wait_for_exit()) << program.output();
+  const int code = program.exit_code();
+  if (code == 0) {
+    EXPECT_EQ(read_summary(out)["converged"], true);
+    return;
+  }
+  ASSERT_EQ(code, 1) << program.output();  // 128 + a signal when one killed it
+  if (!fs::exists(out)) return;  // interrupted while building the model: nothing was written
+  ASSERT_TRUE(fs::exists(out / "summary.json")) << program.output();
+  EXPECT_EQ(read_summary(out)["converged"], false);
+  if (fs::exists(out / "checkpoint.bin") && !resumed_one) {
+    const auto resumed = hydrodda::testing::run_program("run -q --resume " + out.string());
+    EXPECT_EQ(resumed.exit_code, 0) << resumed.output;
+    EXPECT_EQ(read_summary(out)["converged"], true);
+    resumed_one = true;
+  }
+}
+
+// The number of lines in `text`.
+std::size_t count_lines(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
+
+}  // namespace
+
+// SIGTERM twice at every point of a small coupled run that logs a line (-v: the scenario read,
+// meshed, the mechanics built, each pass; the run is held after its k-th line until the first
+// comes, the second sent once it has gone on), and sent as each line appears without holding
+// it, so that it lands wherever the run has got to (ordering the flow matrix with CHOLMOD,
+// where METIS swaps signal handlers, among them): every run ends with exit code 0 or 1 and a
+// folder it can be continued from, never killed, never a lost signal reported as success.
 TEST(Interrupt, SigtermAtAnyMomentOfACoupledRunEndsItCleanly) {
   const fs::path scenario = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/verification/coupled_hydrostatic_column.toml";
-  const fs::path out = fs::temp_directory_path() / ("hydrodda-sigterm-" + std::to_string(::getpid()));
+  const TemporaryFolder dir = fresh_dir("hydrodda-sigterm");
+  const fs::path out = dir.path / "run", log = dir.path.string() + ".log";
   bool resumed_one = false;
-  for (int delay_ms = 0; delay_ms <= 600; delay_ms += 60) {
-    SCOPED_TRACE("SIGTERM " + std::to_string(delay_ms) + " ms after the run folder appeared");
-    fs::remove_all(out);
-    const pid_t pid = start_run(scenario, out);
-    ASSERT_GE(pid, 0);
-    // Loading the program's libraries takes up to a second on a busy machine, before any code
-    // of ours runs; the run folder appearing says the signal thread is up.
-    int status = 0;
-    bool ended = false;
-    for (int i = 0; i < 4000 && !fs::exists(out); ++i) {
-      if (::waitpid(pid, &status, WNOHANG) == pid) {
-        ended = true;
-        break;
+  bool held = true;
+  for (int line = 1; held && line < 200; ++line) {
+    SCOPED_TRACE("SIGTERM after line " + std::to_string(line));
+    {
+      SCOPED_TRACE("held there");
+      fs::remove_all(out);
+      RunningProgram program({"run", "-v", scenario.string(), "-o", out.string()}, log,
+                             {"HYDRODDA_HOLD_AFTER_LINE=", "HYDRODDA_HOLD_COUNT=" + std::to_string(line)});
+      held = program.wait_until_held();
+      if (held) {
+        const std::size_t at_hold = program.output().size();
+        program.signal(SIGTERM);
+        // The second once the run has gone on past the hold (a line more, or its end).
+        if (program.wait_for_output_change(at_hold)) program.signal(SIGTERM);
       }
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      expect_a_clean_end(program, out, resumed_one);
+      if (!held) EXPECT_EQ(program.exit_code(), 0) << "the run had fewer lines and was never signalled";
     }
-    ASSERT_FALSE(ended) << "the run ended before making its folder";
-    std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
-    ::kill(pid, SIGTERM);
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    ::kill(pid, SIGTERM);
-    ASSERT_TRUE(wait_for_exit(pid, std::chrono::seconds(60), status));
-    ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
-    const int code = WEXITSTATUS(status);
-    if (code == 0) {
-      // Finished before the first signal came.
-      EXPECT_EQ(nlohmann::json::parse(std::ifstream(out / "summary.json"))["converged"], true);
-      continue;
-    }
-    ASSERT_EQ(code, 1);
-    if (!fs::exists(out)) continue;  // interrupted while building the model: nothing was written
-    ASSERT_TRUE(fs::exists(out / "summary.json"));
-    EXPECT_EQ(nlohmann::json::parse(std::ifstream(out / "summary.json"))["converged"], false);
-    if (fs::exists(out / "checkpoint.bin") && !resumed_one) {
-      const auto resumed = hydrodda::testing::run_program("run -q --resume " + out.string());
-      EXPECT_EQ(resumed.exit_code, 0) << resumed.output;
-      EXPECT_EQ(nlohmann::json::parse(std::ifstream(out / "summary.json"))["converged"], true);
-      resumed_one = true;
+    if (!held) break;
+    {
+      SCOPED_TRACE("sent as it appeared");
+      fs::remove_all(out);
+      RunningProgram program({"run", "-v", scenario.string(), "-o", out.string()}, log);
+      if (program.wait_for([&](const std::string& output) { return count_lines(output) >= static_cast<std::size_t>(line); })) {
+        program.signal(SIGTERM);
+        program.signal(SIGTERM);
+      }
+      expect_a_clean_end(program, out, resumed_one);
     }
   }
-  fs::remove_all(out);
+  EXPECT_FALSE(held) << "the run never ended without being held";
+  EXPECT_TRUE(resumed_one) << "no signal stopped the run with a checkpoint to resume";
+  fs::remove(log);
 }
 
 // SIGTERM in a later mesh round of mesh.refine_tips (the asymmetric flexure with the cubic law:
 // round 1 converges, round 2 runs on the mesh refined around its wedge tips): the run ends with
 // exit code 1 and a folder that resumes on round 2's mesh, to the folder of a run never stopped,
 // byte for byte (round_1/ too). A round 2 stopped before its first pass ends resumes from its
-// start, which the round writes as a checkpoint once it has meshed. The signal is sent at
-// fractions of the whole run's own wall time, later and later, until one lands in round 2.
+// start, which the round writes as a checkpoint once it has meshed. The run is held when round 1
+// says it runs again on a refined mesh, until the signal comes.
 TEST(Interrupt, ARunStoppedInALaterMeshRoundResumesOnThatRoundsMesh) {
-  const fs::path flexure = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/paper/asymmetric_flexure_20mpa.toml";
-  std::string scenario = read_text(flexure);
-  for (const auto& [from, to] : {std::pair<std::string, std::string>{"permeability_law = \"kozeny-carman\"",
-                                                                     "permeability_law = \"cubic\""},
-                                 {"[mesh]\n", "[mesh]\nrefine_tips = true\n"},
-                                 {"figures = [\"png\"]", "figures = []"}}) {
-    const auto at = scenario.find(from);
-    ASSERT_NE(at, std::string::npos) << from;
-    scenario.replace(at, from.size(), to);
-  }
   const std::string tag = std::to_string(::getpid());
-  const fs::path file = fs::temp_directory_path() / ("hydrodda-rounds-" + tag + ".toml");
-  std::ofstream(file) << scenario;
-  const fs::path whole = fs::temp_directory_path() / ("hydrodda-rounds-whole-" + tag);
-  const fs::path out = fs::temp_directory_path() / ("hydrodda-rounds-" + tag);
-  fs::remove_all(whole);
-  const auto start = std::chrono::steady_clock::now();
-  const auto uninterrupted = hydrodda::testing::run_program("run -q " + file.string() + " -o " + whole.string());
-  const auto whole_time = std::chrono::steady_clock::now() - start;
+  const fs::path file = hydrodda::testing::edited_scenario(
+      fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/paper/asymmetric_flexure_20mpa.toml", "hydrodda-rounds-" + tag,
+      {{"permeability_law = \"kozeny-carman\"", "permeability_law = \"cubic\""},
+       {"[mesh]\n", "[mesh]\nrefine_tips = true\n"},
+       {"figures = [\"png\"]", "figures = []"}});
+  const TemporaryFolder whole = fresh_dir("hydrodda-rounds-whole");
+  const TemporaryFolder out = fresh_dir("hydrodda-rounds");
+  const auto uninterrupted = hydrodda::testing::run_program("run -q " + file.string() + " -o " + whole.path.string());
   ASSERT_EQ(uninterrupted.exit_code, 0) << uninterrupted.output;
-  ASSERT_TRUE(fs::exists(whole / "round_1"));
-  bool resumed = false;
-  for (int percent = 50; percent <= 100 && !resumed; percent += 5) {
-    SCOPED_TRACE("SIGTERM at " + std::to_string(percent) + "% of the whole run's time");
-    fs::remove_all(out);
-    const auto started = std::chrono::steady_clock::now();
-    const pid_t pid = start_run(file, out);
-    ASSERT_GE(pid, 0);
-    std::this_thread::sleep_until(started + whole_time * percent / 100);
-    ::kill(pid, SIGTERM);
-    int status = 0;
-    ASSERT_TRUE(wait_for_exit(pid, std::chrono::seconds(60), status));
-    ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
-    if (WEXITSTATUS(status) == 0 || !fs::exists(out / "round_1")) continue;  // ended, or stopped in round 1
-    ASSERT_EQ(WEXITSTATUS(status), 1);
-    EXPECT_EQ(nlohmann::json::parse(std::ifstream(out / "summary.json"))["status"], "interrupted");
-    ASSERT_TRUE(fs::exists(out / "checkpoint.bin"));
-    const auto continued = hydrodda::testing::run_program("run -q --resume " + out.string());
-    ASSERT_EQ(continued.exit_code, 0) << continued.output;
-    hydrodda::testing::expect_same_results(whole, out);
-    hydrodda::testing::expect_same_results(whole / "round_1", out / "round_1");
-    resumed = true;
-  }
-  EXPECT_TRUE(resumed) << "no signal landed in round 2";
-  fs::remove_all(whole);
-  fs::remove_all(out);
+  ASSERT_TRUE(fs::exists(whole.path / "round_1"));
+
+  RunningProgram program({"run", file.string(), "-o", out.path.string()}, out.path.string() + ".log",
+                         {"HYDRODDA_HOLD_AFTER_LINE=running again on a mesh refined"});
+  ASSERT_TRUE(program.wait_until_held()) << program.output();
+  program.signal(SIGTERM);
+  ASSERT_TRUE(program.wait_for_exit()) << program.output();
+  ASSERT_EQ(program.exit_code(), 1) << program.output();
+  ASSERT_TRUE(fs::exists(out.path / "round_1"));
+  EXPECT_EQ(read_summary(out.path)["status"], "interrupted");
+  ASSERT_TRUE(fs::exists(out.path / "checkpoint.bin"));
+  const auto continued = hydrodda::testing::run_program("run -q --resume " + out.path.string());
+  ASSERT_EQ(continued.exit_code, 0) << continued.output;
+  hydrodda::testing::expect_same_results(whole.path, out.path);
+  hydrodda::testing::expect_same_results(whole.path / "round_1", out.path / "round_1");
   fs::remove(file);
+  fs::remove(out.path.string() + ".log");
 }
 
 namespace {
@@ -224,66 +194,56 @@ bool blocks_sigterm(pid_t pid) {
 // An interrupt in the first moments of the program, for every command: main blocks SIGINT and
 // SIGTERM first thing, so from then on one waits for the signal thread instead of ending the
 // process by the default action. `check` had no signal thread at all and died of the signal.
+// The signal is sent as soon as the blocked set shows SIGTERM (main's first act), and with the
+// program held after each of its first lines.
 TEST(Interrupt, AnInterruptRightAfterStartIsAMessageNotASignal) {
   const fs::path scenario = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/jointed_seal.toml";
-  const fs::path out = fs::temp_directory_path() / ("hydrodda-early-" + std::to_string(::getpid()));
-  for (const char* command : {"check", "run"}) {
-    for (int delay_ms : {0, 2, 5, 10, 20, 40}) {
-      SCOPED_TRACE(std::string(command) + ", SIGTERM " + std::to_string(delay_ms) + " ms after main began");
+  const TemporaryFolder dir = fresh_dir("hydrodda-early");
+  const fs::path out = dir.path / "run", log = dir.path.string() + ".log";
+  for (const std::string command : {"check", "run"}) {
+    const std::vector<std::string> arguments =
+        command == "check" ? std::vector<std::string>{"check", scenario.string()}
+                           : std::vector<std::string>{"run", scenario.string(), "-o", out.string()};
+    for (int line = 0; line <= 3; ++line) {
+      SCOPED_TRACE(command + (line == 0 ? ", SIGTERM once main began" : ", held after line " + std::to_string(line)));
       fs::remove_all(out);
-      const pid_t pid = std::string(command) == "check"
-                            ? start_program_silently({"check", scenario.string()})
-                            : start_program_silently({"run", scenario.string(), "-o", out.string()});
-      ASSERT_GE(pid, 0);
-      // Before main (the dynamic loader mapping the libraries) nothing of ours can take a
-      // signal; main's first act shows in the blocked set.
-      int status = 0;
-      bool blocked = false, ended = false;
-      for (int i = 0; i < 20000 && !blocked && !ended; ++i) {
-        blocked = blocks_sigterm(pid);
-        if (!blocked && ::waitpid(pid, &status, WNOHANG) == pid) ended = true;
-        else if (!blocked) std::this_thread::sleep_for(std::chrono::microseconds(250));
+      std::vector<std::string> hold;
+      if (line > 0) hold = {"HYDRODDA_HOLD_AFTER_LINE=", "HYDRODDA_HOLD_COUNT=" + std::to_string(line)};
+      RunningProgram program(arguments, log, hold);
+      if (line == 0) {
+        // Before main (the dynamic loader mapping the libraries) nothing of ours can take a
+        // signal; main's first act shows in the blocked set.
+        ASSERT_TRUE(program.wait_for([&](const std::string&) { return blocks_sigterm(program.pid()); }))
+            << "the program never blocked SIGTERM";
+      } else {
+        ASSERT_TRUE(program.wait_until_held()) << program.output();
       }
-      ASSERT_TRUE(blocked) << "the program never blocked SIGTERM (ended: " << ended << ")";
-      std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
-      ::kill(pid, SIGTERM);
-      ASSERT_TRUE(wait_for_exit(pid, std::chrono::seconds(60), status));
-      ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
-      // 1 interrupted; 0 when it ended before the signal came (check on an idle machine).
-      EXPECT_TRUE(WEXITSTATUS(status) == 1 || WEXITSTATUS(status) == 0) << WEXITSTATUS(status);
+      program.signal(SIGTERM);
+      ASSERT_TRUE(program.wait_for_exit()) << program.output();
+      // 1 interrupted; 0 only when it ended before a signal it was not held for (check on an
+      // idle machine).
+      if (line == 0) EXPECT_TRUE(program.exit_code() == 1 || program.exit_code() == 0) << program.exit_code();
+      else EXPECT_EQ(program.exit_code(), 1) << program.output();
     }
   }
-  fs::remove_all(out);
+  fs::remove(log);
 }
 
 namespace {
 
-// `hydrodda run SCENARIO` killed (SIGKILL) as soon as figures/ appears: the folder's
-// summary.json then, or null when there is none. Fails the test when the run ended first.
+// `hydrodda run SCENARIO` killed (SIGKILL) when it begins to draw its figures (held there): the
+// folder's summary.json then, or null when there is none.
 nlohmann::json kill_while_drawing_figures(const fs::path& scenario, const std::string& name) {
-  const fs::path out = fs::temp_directory_path() / ("hydrodda-killed-figures-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(out);
-  const pid_t pid = start_program_silently({"run", scenario.string(), "-o", out.string()});
-  EXPECT_GE(pid, 0);
-  if (pid < 0) return nullptr;
-  int status = 0;
-  bool ended = false;
-  for (int i = 0; i < 600000 && !fs::exists(out / "figures"); ++i) {
-    if (::waitpid(pid, &status, WNOHANG) == pid) {
-      ended = true;
-      break;
-    }
-    std::this_thread::sleep_for(std::chrono::microseconds(200));
-  }
-  EXPECT_FALSE(ended) << "the run ended before drawing its figures";
-  if (!ended) {
-    ::kill(pid, SIGKILL);
-    ::waitpid(pid, &status, 0);
-  }
-  nlohmann::json summary = nullptr;
-  if (fs::exists(out / "summary.json")) summary = nlohmann::json::parse(std::ifstream(out / "summary.json"));
-  fs::remove_all(out);
-  return summary;
+  const TemporaryFolder out = fresh_dir("hydrodda-killed-figures-" + name);
+  RunningProgram program({"run", scenario.string(), "-o", out.path.string()}, out.path.string() + ".log",
+                         {"HYDRODDA_HOLD_AFTER_LINE=figures: drawing in"});
+  const bool held = program.wait_until_held();
+  EXPECT_TRUE(held) << "the run never began to draw its figures: " << program.output();
+  program.signal(SIGKILL);
+  program.wait_for_exit();
+  fs::remove(out.path.string() + ".log");
+  if (!held || !fs::exists(out.path / "summary.json")) return nullptr;
+  return read_summary(out.path);
 }
 
 }  // namespace
@@ -328,33 +288,22 @@ bool has_loaded(pid_t pid, const std::string& library) {
 
 }  // namespace
 
-// Item 4: an interrupt while Gmsh meshes ends the run within a second or two (Gmsh cannot be
-// stopped between steps; nothing exists yet to keep). A unit square of some 160,000 triangles
-// takes 5-20 s to mesh on this machine; SIGTERM 1 s after the mesher plugin is loaded (it is
-// loaded when meshing begins) finds Gmsh at work.
+// Item 4: an interrupt while Gmsh meshes ends the run at once (Gmsh cannot be stopped between
+// steps; nothing exists yet to keep). A unit square of some 160,000 triangles takes 5-20 s to
+// mesh on this machine; SIGTERM as soon as the mesher plugin is loaded (it is loaded when
+// meshing begins) finds Gmsh at work, and the run ends without the mesh it was making.
 TEST(Interrupt, AnInterruptWhileMeshingEndsTheRunAtOnce) {
   const fs::path scenario = fs::path(HYDRODDA_SOURCE_DIR) / "tests/cli/scenarios/fine_square_mesh.toml";
-  const fs::path out = fs::temp_directory_path() / ("hydrodda-meshing-" + std::to_string(::getpid()));
-  fs::remove_all(out);
-  const pid_t pid = start_program_silently({"run", scenario.string(), "-o", out.string()});
-  ASSERT_GE(pid, 0);
-  int status = 0;
-  bool ended = false, meshing = false;
-  for (int i = 0; i < 3000 && !meshing && !ended; ++i) {
-    meshing = has_loaded(pid, "hydrodda_gmsh_mesher.so");
-    if (!meshing) ended = ::waitpid(pid, &status, WNOHANG) == pid;
-    if (!meshing && !ended) std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  ASSERT_TRUE(meshing) << "the mesher was never loaded (ended: " << ended << ")";
-  std::this_thread::sleep_for(std::chrono::seconds(1));
-  ASSERT_NE(::waitpid(pid, &status, WNOHANG), pid) << "the run ended before the signal";
-  const auto sent = std::chrono::steady_clock::now();
-  ::kill(pid, SIGTERM);
-  ASSERT_TRUE(wait_for_exit(pid, std::chrono::seconds(60), status));
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
-  EXPECT_LT(seconds, 2.0) << "the interrupt took " << seconds << " s to end the run";
-  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
-  EXPECT_EQ(WEXITSTATUS(status), 1);
-  EXPECT_FALSE(fs::exists(out)) << "the run folder it made, empty, is removed";
-  fs::remove_all(out);
+  const TemporaryFolder out = fresh_dir("hydrodda-meshing");
+  RunningProgram program({"run", scenario.string(), "-o", out.path.string()}, out.path.string() + ".log");
+  ASSERT_TRUE(program.wait_for([&](const std::string&) { return has_loaded(program.pid(), "hydrodda_gmsh_mesher.so"); }))
+      << "the mesher was never loaded: " << program.output();
+  program.signal(SIGTERM);
+  ASSERT_TRUE(program.wait_for_exit()) << program.output();
+  EXPECT_EQ(program.exit_code(), 1) << program.output();
+  const std::string output = program.output();
+  EXPECT_NE(output.find("interrupted before any result was written"), std::string::npos) << output;
+  EXPECT_EQ(output.find(" nodes, "), std::string::npos) << "the run waited for the mesh: " << output;
+  EXPECT_FALSE(fs::exists(out.path)) << "the run folder it made, empty, is removed";
+  fs::remove(out.path.string() + ".log");
 }
