@@ -199,7 +199,10 @@ int sweep_command(const SweepOptions& options, SweepRanks& ranks) {
       never_started = ranks.run_cases(plan, case_finished);
     } else {
       never_started = run_child_processes(commands, jobs, [&](std::size_t index, int exit_code) {
-        case_finished(index, run::read_case_result((*prepared)[index].name, plan.folders[index], exit_code, columns), 0);
+        case_finished(index,
+                      run::read_case_result((*prepared)[index].name, plan.folders[index], exit_code, columns,
+                                            interrupt_requested()),
+                      0);
       });
     }
   } catch (const std::exception& e) {

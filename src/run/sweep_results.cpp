@@ -147,12 +147,16 @@ SweepResults::SweepResults(std::vector<SweepAxis> axes, std::vector<std::vector<
 void SweepResults::set_name(std::size_t index, std::string name) { results_[index].name = std::move(name); }
 
 CaseResult read_case_result(const std::string& name, const std::filesystem::path& case_dir, int exit_code,
-                            const std::vector<std::string>& columns) {
+                            const std::vector<std::string>& columns, bool asked_to_stop) {
   CaseResult r;
   r.name = name;
-  r.status = ended_by_interrupt(exit_code) ? CaseStatus::interrupted : CaseStatus::failed;
   const std::filesystem::path summary = case_dir / "summary.json";
-  if (std::filesystem::exists(summary)) {
+  const bool has_summary = std::filesystem::exists(summary);
+  // A run interrupted while it builds its model ends at once with 1 and writes nothing.
+  const bool stopped_while_building = asked_to_stop && exit_code == 1 && !has_summary;
+  r.status = ended_by_interrupt(exit_code) || stopped_while_building ? CaseStatus::interrupted : CaseStatus::failed;
+  if (stopped_while_building) r.message = find_last_error(case_dir / "run.log");
+  if (has_summary) {
     std::vector<std::string> paths{"status", "message", "converged", "iterations"};
     paths.insert(paths.end(), columns.begin(), columns.end());
     try {

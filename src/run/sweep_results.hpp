@@ -47,11 +47,13 @@ std::string value_label(const scenario::Override& value, const std::vector<std::
 
 // A finished case's result from its folder: "ok" when its run exited with 0, its summary.json
 // says "ok" and it converged; "not converged" when it exited with 0 but did not converge;
-// "interrupted" when it says so or a signal ended it (exit code 130 or 143) before it wrote
-// one; otherwise "failed", with what the summary or the end of run.log says. Warns of a column
-// an ok case lacks.
+// "interrupted" when it says so, when a signal ended it (exit code 130 or 143) before it wrote
+// one, or when it was `asked_to_stop` (the sweep passed an interrupt on) and exited with 1
+// without one (interrupted while building its model, which leaves nothing); otherwise
+// "failed", with what the summary or the end of run.log says. Warns of a column an ok case
+// lacks.
 CaseResult read_case_result(const std::string& name, const std::filesystem::path& case_dir, int exit_code,
-                            const std::vector<std::string>& columns);
+                            const std::vector<std::string>& columns, bool asked_to_stop = false);
 
 class SweepResults {
  public:

@@ -3,16 +3,14 @@
 
 #include <gtest/gtest.h>
 #include <signal.h>
-#include <sys/wait.h>
-#include <fcntl.h>
 #include <unistd.h>
 
 #include <array>
-#include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <memory>
 #include <sstream>
-#include <thread>
 
 #include "run_program.hpp"
 #include "spawn_program.hpp"
@@ -20,7 +18,6 @@
 namespace fs = std::filesystem;
 using hydrodda::testing::read_csv;
 using hydrodda::testing::run_program;
-using hydrodda::testing::start_program_silently;
 
 namespace {
 
@@ -253,60 +250,94 @@ TEST(Sweep, AKeyGivenTwiceIsRefused) {
   }
 }
 
-// Starts a sweep of the six-block model over `heads` in its own process group (so that the
-// signal reaches the sweep only, which must pass it on to its cases), sends SIGINT once
-// `wait_for` exists, and returns sweep.csv's rows after the sweep exited with 1.
-// `more`: further arguments of the sweep.
+// A sweep of `scenario` (in the source tree) with `arguments` (--set ..., -o ...), started in its
+// own process group (so that a signal reaches the sweep only, which must pass it on to its
+// cases), its output in LOG, with `environment` (a hold point, cli/hold_points.hpp, for it or its
+// cases, which inherit it).
+std::unique_ptr<hydrodda::testing::RunningProgram> start_sweep(const std::string& scenario,
+                                                               const std::vector<std::string>& arguments,
+                                                               const fs::path& log,
+                                                               const std::vector<std::string>& environment) {
+  std::vector<std::string> all{"sweep", (kSource / scenario).string()};
+  all.insert(all.end(), arguments.begin(), arguments.end());
+  return std::make_unique<hydrodda::testing::RunningProgram>(all, log, environment, true);
+}
+
+// A sweep of the six-block model over `heads`, `jobs` at a time, whose cases hold where
+// `hold` says; SIGINT to the sweep once `ready()`, and sweep.csv's rows after the sweep exited
+// with 1.
 std::vector<std::vector<std::string>> interrupt_sweep(const fs::path& out, const std::string& heads, const std::string& jobs,
-                                                      const fs::path& wait_for, std::chrono::milliseconds poll,
-                                                      const std::vector<std::string>& more = {}) {
-  const std::string scenario = (kSource / "scenarios/paper/six_block_lr_rl.toml").string();
-  std::vector<std::string> arguments{"sweep", scenario, "--set", "flow.boundary[0].head=" + heads, "--jobs", jobs,
-                                     "-o", out.string()};
-  arguments.insert(arguments.end(), more.begin(), more.end());
-  const pid_t pid = start_program_silently(arguments, true);
-  EXPECT_GE(pid, 0);
-  for (auto waited = std::chrono::milliseconds(0); waited < std::chrono::seconds(30) && !fs::exists(wait_for);
-       waited += poll)
-    std::this_thread::sleep_for(poll);
-  ::kill(pid, SIGINT);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << status;
+                                                      const std::vector<std::string>& hold,
+                                                      const std::function<bool()>& ready) {
+  const auto sweep = start_sweep("scenarios/paper/six_block_lr_rl.toml",
+                                 {"--set", "flow.boundary[0].head=" + heads, "--jobs", jobs, "-o", out.string()},
+                                 out.string() + ".log", hold);
+  EXPECT_TRUE(sweep->wait_for([&](const std::string&) { return ready(); })) << sweep->output();
+  sweep->signal(SIGINT);
+  EXPECT_TRUE(sweep->wait_for_exit()) << sweep->output();
+  EXPECT_EQ(sweep->exit_code(), 1) << sweep->output();
+  fs::remove(out.string() + ".log");
   return read_csv(out / "sweep.csv");
 }
 
-// A case interrupted while its program still loads (the sweep passes the interrupt on at
-// once) says it was interrupted: it starts with SIGINT and SIGTERM blocked, so the signal waits
-// for its signal thread instead of killing it with an empty run.log ("exit code 130").
+// A case interrupted as it starts (the sweep passes the interrupt on at once) says it was
+// interrupted: it starts with SIGINT and SIGTERM blocked, so a signal that comes while its
+// program still loads waits for its signal thread instead of killing it with an empty run.log
+// ("exit code 130"). The interrupt is sent as soon as the second case's log appears (opened as
+// it is started, before its program has loaded); the cases hold at their first stop check, so
+// that neither can end before it comes.
 TEST(Sweep, ACaseInterruptedAtStartUpSaysInterrupted) {
   const fs::path out = fresh_dir("hydrodda-sweep-startup");
-  // The cases' logs are opened as they are started, before their program has loaded.
-  const auto rows = interrupt_sweep(out, "5,10", "2", out / "case_001/run.log", std::chrono::milliseconds(1));
+  const auto rows = interrupt_sweep(out, "5,10", "2", {"HYDRODDA_HOLD_AT_STOP_CHECK=1"},
+                                    [&] { return fs::exists(out / "case_001/run.log"); });
   ASSERT_EQ(rows.size(), 3u);
+  ASSERT_EQ(rows[0][2], "status");  // case, the head, status, ...
   for (std::size_t r = 1; r < rows.size(); ++r) {
-    EXPECT_EQ(rows[r][2], "failed");
+    EXPECT_EQ(rows[r][2], "interrupted");
     EXPECT_NE(rows[r].back().find("interrupted"), std::string::npos) << rows[r].back();
     EXPECT_EQ(rows[r].back().find("exit code 13"), std::string::npos) << rows[r].back();
   }
   fs::remove_all(out);
 }
 
+// The first case is held after its first coupling iteration until the interrupt comes: it
+// stops there, and no further case starts.
 TEST(Sweep, InterruptStopsLaunchingAndReachesTheRunningCase) {
   const fs::path out = fresh_dir("hydrodda-sweep-interrupt");
-  // Once the first case has written its first coupling iteration. A tolerance no pass meets
-  // keeps each case running for its 50 passes (several seconds), so that the interrupt finds
-  // it running: at the paper's tolerance the case ends 4 passes in, about 1 s, and the
-  // interrupt, sent up to a poll later, could come after it.
-  const auto rows = interrupt_sweep(out, "5,10,15", "1", out / "case_000/history.csv", std::chrono::milliseconds(50),
-                                    {"--set", "coupling.tolerance=1e-14"});
+  const auto rows = interrupt_sweep(out, "5,10,15", "1", {"HYDRODDA_HOLD_AFTER_LINE=iteration 1: head change"}, [&] {
+    return hydrodda::testing::read_whole_file(out / "case_000/run.log").find("held: ") != std::string::npos;
+  });
   ASSERT_EQ(rows.size(), 4u);
-  ASSERT_EQ(rows[0][3], "status");  // case, the head, the tolerance, status, ...
-  EXPECT_EQ(rows[1][3], "interrupted");  // the running case stopped at the interrupt ...
-  EXPECT_NE(rows[1].back().find("interrupted"), std::string::npos) << rows[1].back();
-  EXPECT_EQ(rows[2][3], "not run");  // ... and no further case started
-  EXPECT_EQ(rows[3][3], "not run");
+  ASSERT_EQ(rows[0][2], "status");
+  EXPECT_EQ(rows[1][2], "interrupted");  // the running case stopped at the interrupt ...
+  EXPECT_NE(rows[1].back().find("interrupted after coupling iteration 1"), std::string::npos) << rows[1].back();
+  EXPECT_EQ(rows[2][2], "not run");  // ... and no further case started
+  EXPECT_EQ(rows[3][2], "not run");
   EXPECT_FALSE(fs::exists(out / "case_001/summary.json"));
+  fs::remove_all(out);
+}
+
+// A case interrupted while it builds its model (held as it is about to mesh) ends at once with
+// exit code 1 and writes nothing; the sweep passed the interrupt on, so the case is listed as
+// interrupted, not failed.
+TEST(Sweep, ACaseInterruptedWhileBuildingItsModelIsListedAsInterrupted) {
+  const fs::path out = fresh_dir("hydrodda-sweep-meshing");
+  const auto sweep = start_sweep("tests/cli/scenarios/fine_square_mesh.toml",
+                                 {"--set", "flow.boundary[0].head=1,2", "--jobs", "1", "-o", out.string()},
+                                 out.string() + ".log", {"HYDRODDA_HOLD_AFTER_LINE=expected"});
+  ASSERT_TRUE(hydrodda::testing::wait_for_text(out / "case_000/run.log", "held: ", [&] { return sweep->running(); }))
+      << sweep->output();
+  sweep->signal(SIGINT);
+  ASSERT_TRUE(sweep->wait_for_exit()) << sweep->output();
+  EXPECT_EQ(sweep->exit_code(), 1) << sweep->output();
+  const auto rows = read_csv(out / "sweep.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  ASSERT_EQ(rows[0][2], "status");
+  EXPECT_EQ(rows[1][2], "interrupted");
+  EXPECT_NE(rows[1].back().find("interrupted before any result was written"), std::string::npos) << rows[1].back();
+  EXPECT_EQ(rows[2][2], "not run");
+  EXPECT_NE(sweep->output().find("1 interrupted, 1 not run"), std::string::npos) << sweep->output();
+  fs::remove(out.string() + ".log");
   fs::remove_all(out);
 }
 

@@ -165,7 +165,7 @@ class LocalCase {
     }
     if (const std::optional<int> code = poll_child_process(pid_))
       result_ = run::read_case_result(plan_.folders[index_].filename().string(), plan_.folders[index_], *code,
-                                      plan_.columns);
+                                      plan_.columns, interrupt_requested());
     return result_;
   }
 
