@@ -80,18 +80,27 @@ std::vector<std::string> boundary_names_of(const scenario::Scenario& s) {
   return names;
 }
 
-// Every case's scenario file, each read and checked as `run` would; nothing when any fails
-// (after every problem has been printed).
-std::optional<std::vector<PreparedCase>> prepare_cases(const fs::path& file, const fs::path& directory,
-                                                       const std::vector<std::vector<scenario::Override>>& cases,
-                                                       const scenario::Scenario& base,
-                                                       std::vector<std::string>& region_names) {
+// What preparing the cases gave: every case's scenario file, or why not.
+struct Preparation {
+  std::vector<PreparedCase> cases;
+  bool bad_input = false;    // some case failed its check (each problem printed)
+  bool interrupted = false;  // an interrupt came first: `cases` holds those checked by then
+};
+
+// Every case's scenario file, each read and checked as `run` would, all of them even after one
+// fails; an interrupt stops it between cases.
+Preparation prepare_cases(const fs::path& file, const fs::path& directory,
+                          const std::vector<std::vector<scenario::Override>>& cases, const scenario::Scenario& base,
+                          std::vector<std::string>& region_names) {
   const std::string& base_title = base.title;
   const std::vector<std::string> boundary_names = boundary_names_of(base);
   const std::string original = run::read_text_file(file).value_or("");
-  std::vector<PreparedCase> prepared;
-  bool ok = true;
+  Preparation prepared;
   for (std::size_t i = 0; i < cases.size(); ++i) {
+    if (interrupt_requested()) {
+      prepared.interrupted = true;
+      break;
+    }
     const std::string name = fmt::format("case_{:03}", i);
     const fs::path case_file = directory / name / "scenario.toml";
     std::string text;
@@ -104,16 +113,16 @@ std::optional<std::vector<PreparedCase>> prepare_cases(const fs::path& file, con
       run::check_model(s);  // as `check` does
       if (i == 0 && s.flow)
         for (const scenario::FlowRegion& r : s.flow->regions) region_names.push_back(r.name);
-      prepared.push_back({name, std::move(text)});
+      prepared.cases.push_back({name, std::move(text)});
+      spdlog::debug("{} ({}): checked", name, describe_case(cases[i]));
     } catch (const scenario::ScenarioError& e) {
       print_error(fmt::format("{} ({}):", name, describe_case(cases[i])));
       // Cited in the scenario file and the --set the user wrote: the case's file is not kept.
       for (const scenario::Diagnostic& d : scenario::locate_in_original(e.diagnostics(), text, case_file, original, file, cases[i]))
         print_error(d.format());
-      ok = false;
+      prepared.bad_input = true;
     }
   }
-  if (!ok) return std::nullopt;
   return prepared;
 }
 
@@ -134,11 +143,17 @@ int sweep_command(const SweepOptions& options, SweepRanks& ranks) {
   const fs::path directory =
       options.output.value_or(fs::path("out") / (options.scenario.stem().string() + "-sweep"));
   std::vector<std::string> region_names;
-  const auto prepared = prepare_cases(options.scenario, directory, cases, *base, region_names);
-  if (!prepared) {
+  const Preparation preparation = prepare_cases(options.scenario, directory, cases, *base, region_names);
+  if (preparation.interrupted) {
+    print_error(fmt::format("interrupted while checking the cases ({} of {} checked); nothing was run or written",
+                            preparation.cases.size(), cases.size()));
+    return kRunFailed;
+  }
+  if (preparation.bad_input) {
     std::fputs(fmt::format("{}: the sweep was not started\n", options.scenario.string()).c_str(), stderr);
     return kBadInput;
   }
+  const std::vector<PreparedCase>& prepared = preparation.cases;
   std::vector<std::string> columns = options.columns;
   if (columns.empty())
     for (const std::string& region : region_names)
@@ -149,7 +164,8 @@ int sweep_command(const SweepOptions& options, SweepRanks& ranks) {
     folder.emplace(directory, options.overwrite ? output::ExistingFolder::Overwrite : output::ExistingFolder::Refuse);
     // Meshes live as long as the sweep: none made by an earlier sweep (an older program) is read.
     run::clear_mesh_cache(directory / kMeshCache);
-    for (const PreparedCase& c : *prepared) {
+    for (const PreparedCase& c : prepared) {
+      if (interrupt_requested()) break;  // no case will start: each is listed as not run
       const output::RunFolder case_folder(folder->subfolder(c.name), output::ExistingFolder::Overwrite);
       case_folder.write("scenario.toml", c.text);
       fs::remove(case_folder.file("summary.json"));  // an earlier sweep's result must not be read as this one's
@@ -161,7 +177,7 @@ int sweep_command(const SweepOptions& options, SweepRanks& ranks) {
 
   const fs::path program = fs::read_symlink("/proc/self/exe");
   std::vector<ChildCommand> commands;
-  for (const PreparedCase& c : *prepared) {
+  for (const PreparedCase& c : prepared) {
     const fs::path case_dir = directory / c.name;
     commands.push_back({{program.string(), "-q", "run", (case_dir / "scenario.toml").string(), "-o",
                          case_dir.string(), "--overwrite", "--mesh-cache", (directory / kMeshCache).string()},
@@ -172,7 +188,7 @@ int sweep_command(const SweepOptions& options, SweepRanks& ranks) {
                ranks.size() > 1 ? " (one per MPI rank)" : "", directory.string());
 
   run::SweepResults results(axes, cases, columns, options.zip);
-  for (std::size_t i = 0; i < prepared->size(); ++i) results.set_name(i, (*prepared)[i].name);
+  for (std::size_t i = 0; i < prepared.size(); ++i) results.set_name(i, prepared[i].name);
   results.set_boundary_names(boundary_names_of(*base));
   std::size_t finished = 0;
   std::vector<std::size_t> never_started;
@@ -182,11 +198,11 @@ int sweep_command(const SweepOptions& options, SweepRanks& ranks) {
       ++finished;
       // A case's warnings (a mesh that does not resolve what it must, blocks off the mesh)
       // qualify its numbers: say that its run.log has some.
-      const int warnings = count_warnings(directory / (*prepared)[index].name / "run.log");
+      const int warnings = count_warnings(directory / prepared[index].name / "run.log");
       const std::string line = fmt::format(
-          "{} ({}): {}{}{}  [{}/{}{}]", (*prepared)[index].name, describe_case(cases[index]),
+          "{} ({}): {}{}{}  [{}/{}{}]", prepared[index].name, describe_case(cases[index]),
           run::status_name(r.status), r.message.empty() ? "" : ": " + r.message,
-          warnings > 0 ? fmt::format(" ({} warning(s) in {}/run.log)", warnings, (*prepared)[index].name) : "",
+          warnings > 0 ? fmt::format(" ({} warning(s) in {}/run.log)", warnings, prepared[index].name) : "",
           finished, cases.size(), ranks.size() > 1 ? fmt::format(", rank {}", rank) : "");
       if (r.status == run::CaseStatus::ok) spdlog::info("{}", line);
       else if (r.status == run::CaseStatus::failed) spdlog::error("{}", line);
@@ -194,13 +210,13 @@ int sweep_command(const SweepOptions& options, SweepRanks& ranks) {
       folder->write("sweep.csv", results.csv_text());
     };
     SweepPlan plan{commands, {}, columns};
-    for (const PreparedCase& c : *prepared) plan.folders.push_back(directory / c.name);
+    for (const PreparedCase& c : prepared) plan.folders.push_back(directory / c.name);
     if (ranks.size() > 1) {
       never_started = ranks.run_cases(plan, case_finished);
     } else {
       never_started = run_child_processes(commands, jobs, [&](std::size_t index, int exit_code) {
         case_finished(index,
-                      run::read_case_result((*prepared)[index].name, plan.folders[index], exit_code, columns,
+                      run::read_case_result(prepared[index].name, plan.folders[index], exit_code, columns,
                                             interrupt_requested()),
                       0);
       });

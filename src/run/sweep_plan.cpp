@@ -51,6 +51,23 @@ void check_distinct_keys(const std::vector<SweepAxis>& axes) {
                                                 axes[i].key, axes[i].key));
 }
 
+// Refuses a sweep of more than kMaxSweepCases cases, before any is built: `count` of them, the
+// product of the lists' lengths (their common length with `zipped`).
+void check_case_count(const std::vector<SweepAxis>& axes, bool zipped) {
+  double count = axes.empty() ? 1.0 : static_cast<double>(axes[0].values.size());
+  std::string factors;
+  for (std::size_t k = 0; k < axes.size(); ++k) {
+    if (!zipped && k > 0) count *= static_cast<double>(axes[k].values.size());
+    factors += fmt::format("{}--set {}: {} value(s)", k == 0 ? "" : zipped ? ", " : " × ", axes[k].key,
+                           axes[k].values.size());
+  }
+  if (count <= static_cast<double>(kMaxSweepCases)) return;
+  throw std::invalid_argument(fmt::format(
+      "the sweep has {} cases ({}{}); at most {} run in one sweep: split it into several with fewer values",
+      count < 1e15 ? fmt::format("{:.0f}", count) : fmt::format("{:.3g}", count), factors,
+      zipped ? ", taken together with --zip" : "", kMaxSweepCases));
+}
+
 }  // namespace
 
 SweepAxis parse_sweep_axis(const std::string& option) {
@@ -69,6 +86,7 @@ SweepAxis parse_sweep_axis(const std::string& option) {
 
 std::vector<std::vector<scenario::Override>> enumerate_cases(const std::vector<SweepAxis>& axes) {
   check_distinct_keys(axes);
+  check_case_count(axes, false);
   std::vector<std::vector<scenario::Override>> cases{{}};
   for (const SweepAxis& axis : axes) {
     std::vector<std::vector<scenario::Override>> longer;
@@ -91,6 +109,7 @@ std::vector<std::vector<scenario::Override>> zip_cases(const std::vector<SweepAx
       throw std::invalid_argument("--zip: --set " + axes[0].key + " has " + std::to_string(axes[0].values.size()) +
                                   " value(s) but --set " + axis.key + " has " + std::to_string(axis.values.size()) +
                                   "; zipped keys need as many values each");
+  check_case_count(axes, true);
   for (std::size_t i = 0; i < axes[0].values.size(); ++i) {
     cases.emplace_back();
     for (const SweepAxis& axis : axes) cases.back().push_back({axis.key, axis.values[i]});

@@ -341,4 +341,47 @@ TEST(Sweep, ACaseInterruptedWhileBuildingItsModelIsListedAsInterrupted) {
   fs::remove_all(out);
 }
 
+// More cases than one sweep runs are refused before any is built (10^9 ended in bad_alloc),
+// naming the keys whose values multiply to the count: none of the values is even read (the
+// viscosities here are all invalid, and no case's error is printed).
+TEST(Sweep, TooManyCasesAreRefusedBeforeAnyIsBuilt) {
+  const fs::path out = fresh_dir("hydrodda-sweep-too-many");
+  std::string heads, viscosities;
+  for (int i = 1; i <= 101; ++i) heads += (i > 1 ? "," : "") + std::to_string(i);
+  for (int i = 1; i <= 100; ++i) viscosities += (i > 1 ? ",-" : "-") + std::to_string(i);
+  const auto result = run_program("sweep " + (kSource / "scenarios/verification/flow_linear_head.toml").string() +
+                                  " --set flow.boundary[0].head=" + heads + " --set flow.fluid.viscosity=" +
+                                  viscosities + " -o " + out.string());
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.output.find("the sweep has 10100 cases (--set flow.boundary[0].head: 101 value(s) × --set "
+                               "flow.fluid.viscosity: 100 value(s)); at most 10000"),
+            std::string::npos)
+      << result.output.substr(0, 2000);
+  EXPECT_EQ(result.output.find("case_000"), std::string::npos) << result.output.substr(0, 2000);
+  EXPECT_FALSE(fs::exists(out));
+}
+
+// An interrupt while the sweep checks its cases (40,000 took a minute, and the interrupt waited
+// for all of them) stops it there: exit code 1, saying so, and nothing written. The sweep is
+// held once it has checked its third case.
+TEST(Sweep, AnInterruptWhileCheckingTheCasesStopsTheSweepThere) {
+  const fs::path out = fresh_dir("hydrodda-sweep-preparing");
+  const auto sweep = start_sweep("scenarios/verification/flow_linear_head.toml",
+                                 {"--set", "flow.boundary[0].head=1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17,18,19,20",
+                                  "--set", "flow.region[0].permeability=1e-12,2e-12,3e-12,4e-12,5e-12,6e-12,7e-12,8e-12,"
+                                           "9e-12,1e-11",
+                                  "-o", out.string()},
+                                 out.string() + ".log", {"HYDRODDA_HOLD_AFTER_LINE=case_002 ("});
+  ASSERT_TRUE(sweep->wait_until_held()) << sweep->output();
+  sweep->signal(SIGTERM);
+  ASSERT_TRUE(sweep->wait_for_exit()) << sweep->output();
+  EXPECT_EQ(sweep->exit_code(), 1) << sweep->output();
+  EXPECT_NE(sweep->output().find("error: interrupted while checking the cases (3 of 200 checked); nothing was run or "
+                                 "written"),
+            std::string::npos)
+      << sweep->output();
+  EXPECT_FALSE(fs::exists(out));
+  fs::remove(out.string() + ".log");
+}
+
 }  // namespace
