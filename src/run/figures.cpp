@@ -23,7 +23,9 @@ void draw_figures(const scenario::Scenario& s, const output::RunFolder& folder, 
   if (s.output.figures.empty()) return;
   const std::filesystem::path dir = folder.figures();
   spdlog::debug("figures: drawing in {}", dir.string());
+  const auto stop = [&p] { return p.stop_requested && p.stop_requested(); };
   for (const std::string& format : s.output.figures) {
+    if (stop()) return;
     output::FieldFigure head;
     head.title = s.title;
     head.subtitle = "Hydraulic head and Darcy flux" + state_of(p);
@@ -44,7 +46,7 @@ void draw_figures(const scenario::Scenario& s, const output::RunFolder& folder, 
     map.blocks = p.blocks;
     map.faint_blocks = true;
     map.logarithmic = true;
-    if (!p.porosity.empty()) {
+    if (!p.porosity.empty() && !stop()) {
       map.subtitle = "Equivalent porosity" + state_of(p);
       map.field_label = "porosity (log scale)";
       map.element_field = p.porosity;
@@ -53,6 +55,7 @@ void draw_figures(const scenario::Scenario& s, const output::RunFolder& folder, 
     map.subtitle = "Permeability" + state_of(p);
     map.field_label = "permeability (m², log scale)";
     map.element_field = p.permeability;
+    if (stop()) return;
     output::render_field_figure(dir / ("permeability." + format), map);
   }
 }

@@ -1,6 +1,7 @@
 #pragma once
 // The figures a run draws into figures/, in each format output.figures asks for.
 
+#include <functional>
 #include <vector>
 
 #include "geometry/polygon.hpp"
@@ -20,6 +21,8 @@ struct FlowPicture {
   // A coupled run that used all its iterations without converging: every figure says so.
   bool converged = true;
   int iterations = 0;  // of a coupled run; 0 for a flow-only run
+  // Asked before each figure: true leaves the rest undrawn (the run reports the interrupt).
+  std::function<bool()> stop_requested{};
 };
 
 // The relative changes of a coupled run's passes, as history.csv lists them.

@@ -7,6 +7,16 @@
 
 namespace hydrodda::run {
 
+namespace {
+
+// Between the phases after the solve (fields, summary, figures, which take as long as the solve
+// on a large mesh): an interrupt stops the run there, its summary.json saying so.
+void stop_if_requested(const RunContext& context, const output::RunSummary& summary, const std::string& where) {
+  if (context.stop_requested()) throw RunFailure(RunStatus::interrupted, "interrupted " + where, summary);
+}
+
+}  // namespace
+
 output::RunSummary run_flow(const RunContext& context) {
   std::optional<UnstoppableStage> building(context.callbacks);  // nothing is written before the solve ends
   FlowModel model(context.scenario, context.mesh_cache);
@@ -21,15 +31,22 @@ output::RunSummary run_flow(const RunContext& context) {
   report.message = fmt::format("flow solved: balance error {:.2e}", solution.balance_error);
   context.report(report);
 
+  output::RunSummary unsummarised;  // summarising a large mesh's flow takes seconds
+  unsummarised.title = context.scenario.title;
+  unsummarised.scenario = context.scenario.file.string();
+  stop_if_requested(context, unsummarised, "after the flow solve, before its results were summarised");
   output::RunSummary summary = model.summary();
   summary.timings = model.timings();
   summary.converged = true;  // one linear solve: nothing to iterate
   summary.iterations = 1;
+  stop_if_requested(context, summary, "after the flow solve, before its fields were written");
   const std::vector<double> no_porosity;
   ParaviewOutput(context.folder, context.scenario.output.fields).write_fluid(0, 0.0, model.mesh(), solution, no_porosity, model.permeability());
   context.write_summary(summary);  // the run's result is on disk before the figures are drawn
-  draw_figures(context.scenario, context.folder,
-               {model.mesh(), solution, no_porosity, model.permeability(), model.blocks()});
+  FlowPicture picture{model.mesh(), solution, no_porosity, model.permeability(), model.blocks()};
+  picture.stop_requested = [&context] { return context.stop_requested(); };
+  draw_figures(context.scenario, context.folder, picture);
+  stop_if_requested(context, summary, "after the results were written, before all figures were drawn");
   return summary;
 }
 

@@ -56,9 +56,10 @@ struct ModelAtEnd {
 struct Callbacks {
   // Called after every step, pass or solve; unset: nothing is reported.
   std::function<void(const ProgressReport&)> progress;
-  // Asked before every DDA step (those inside a coupling pass too) and every pass; a flow-only
-  // run's one solve is not stopped. True stops the run there, with the run folder and
-  // summary.json at the last finished step or pass (RunStatus::interrupted). Unset: never.
+  // Asked before every DDA step (those inside a coupling pass too) and every pass, and in a
+  // flow-only run after its one solve (which is not stopped) and before each of its figures.
+  // True stops the run there, with the run folder and summary.json at the last finished step or
+  // pass, or a flow run's solution (RunStatus::interrupted). Unset: never.
   // Called on the thread that runs, so a flag a signal handler sets will do.
   std::function<bool()> stop_requested;
   // Called with true before a stage that cannot stop at a stop request and leaves nothing to

@@ -307,3 +307,46 @@ TEST(Interrupt, AnInterruptWhileMeshingEndsTheRunAtOnce) {
   EXPECT_FALSE(fs::exists(out.path)) << "the run folder it made, empty, is removed";
   fs::remove(out.path.string() + ".log");
 }
+
+// A flow-only run honours an interrupt after its solve (which, with the fields, the summary and
+// the figures, takes as long again as the meshing on a large mesh): held when it reports the
+// solve, it stops with exit code 1 and says so, in its last line and in summary.json, which has
+// no result of a solve it never summarised. It went on to write everything and exited with 0.
+TEST(Interrupt, AFlowRunInterruptedAfterItsSolveSaysSo) {
+  const fs::path scenario = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/verification/flow_three_fractures.toml";
+  const TemporaryFolder out = fresh_dir("hydrodda-flow-interrupted");
+  RunningProgram program({"run", scenario.string(), "-o", out.path.string()}, out.path.string() + ".log",
+                         {"HYDRODDA_HOLD_AFTER_LINE=flow solved"});
+  ASSERT_TRUE(program.wait_until_held()) << program.output();
+  program.signal(SIGTERM);
+  ASSERT_TRUE(program.wait_for_exit()) << program.output();
+  EXPECT_EQ(program.exit_code(), 1) << program.output();
+  EXPECT_NE(program.output().find("error: interrupted after the flow solve"), std::string::npos) << program.output();
+  const auto summary = read_summary(out.path);
+  EXPECT_EQ(summary["status"], "interrupted");
+  EXPECT_EQ(summary["converged"], false);
+  EXPECT_TRUE(!summary.contains("flow") || summary["flow"].is_null()) << summary["flow"];
+  EXPECT_FALSE(fs::exists(out.path / "figures"));
+  fs::remove(out.path.string() + ".log");
+}
+
+// ... and between its figures: held as it begins to draw them, it draws none and says so; its
+// results, written by then, are kept.
+TEST(Interrupt, AFlowRunInterruptedWhileDrawingItsFiguresSaysSo) {
+  const fs::path scenario = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/verification/flow_three_fractures.toml";
+  const TemporaryFolder out = fresh_dir("hydrodda-flow-figures-interrupted");
+  RunningProgram program({"run", scenario.string(), "-o", out.path.string()}, out.path.string() + ".log",
+                         {"HYDRODDA_HOLD_AFTER_LINE=figures: drawing in"});
+  ASSERT_TRUE(program.wait_until_held()) << program.output();
+  program.signal(SIGINT);
+  ASSERT_TRUE(program.wait_for_exit()) << program.output();
+  EXPECT_EQ(program.exit_code(), 1) << program.output();
+  EXPECT_NE(program.output().find("error: interrupted after the results were written, before all figures were drawn"),
+            std::string::npos)
+      << program.output();
+  const auto summary = read_summary(out.path);
+  EXPECT_EQ(summary["status"], "interrupted");
+  EXPECT_TRUE(summary.contains("flow") && !summary["flow"].is_null());
+  EXPECT_TRUE(fs::is_empty(out.path / "figures"));
+  fs::remove(out.path.string() + ".log");
+}
