@@ -35,7 +35,7 @@ def test_ctrl_c_between_passes_stops_cleanly_and_resumes(in_tmp):
 CHILD = """
 import sys, hydrodda
 scenario = hydrodda.Scenario.load(sys.argv[1])
-scenario.set("mechanics.end_time", 100.0)  # far longer than the test waits
+scenario.set("mechanics.end_time", 1.0e5)  # 10^8 steps: it cannot end before the signal comes
 
 def progress(report):
     if report.count == 1:
@@ -63,7 +63,7 @@ def test_ctrl_c_while_the_run_holds_no_gil(in_tmp):
     assert child.returncode == 130, err
     assert out.strip() == "KeyboardInterrupt"
     summary = json.loads((in_tmp / "py/summary.json").read_text())
-    assert 1 <= summary["iterations"] < 100000 and summary["status"] != "ok"
+    assert 1 <= summary["iterations"] < 100000000 and summary["status"] != "ok"
     assert "interrupt" in summary["message"]
 
 
