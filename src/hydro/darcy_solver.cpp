@@ -8,6 +8,7 @@
 #include <string>
 
 #include "geometry/parallel.hpp"
+#include "hydro/flow_failure.hpp"
 
 namespace hydrodda::hydro {
 namespace {
@@ -391,13 +392,13 @@ FlowSolution DarcySolver::solve(PermeabilityView permeability) {
   return solve_and_keep(permeability);
 }
 
-void DarcySolver::factorize_system(SolveTimings& timings) {
+void DarcySolver::factorize_system(SolveTimings& timings, PermeabilityView permeability) {
   const auto clock = Clock::now();
   try {
     solver_->factorize(matrix_);
-  } catch (const SingularSystem& e) {
-    throw SingularSystem(std::string(e.what()) +
-                         " (flow: is every part of the mesh connected to a fixed-head boundary?)");
+  } catch (const SingularSystem&) {
+    // The solver's own words are linear algebra's: the user is told what the model met.
+    throw FlowSolveFailed(describe_flow_failure(mesh_, permeability, fixed_head_, "its matrix could not be factored"));
   }
   timings.factorize = seconds_since(clock);
 }
@@ -418,7 +419,6 @@ Eigen::VectorXd DarcySolver::solve_directly(int& refinement_steps) const {
     x += solver_->solve(residual.r);
     ++refinement_steps;
   }
-  if (!x.allFinite()) throw SingularSystem("flow: the solution is not finite (singular system?)");
   return x;
 }
 
@@ -431,9 +431,11 @@ FlowSolution DarcySolver::solve_with(PermeabilityView permeability) {
   Eigen::VectorXd x(unknown_count());
   int refinement_steps = 0;
   if (unknown_count() > 0) {
-    factorize_system(timings);
+    factorize_system(timings, permeability);
     clock = Clock::now();
     x = solve_directly(refinement_steps);
+    if (!x.allFinite())
+      throw FlowSolveFailed(describe_flow_failure(mesh_, permeability, fixed_head_, "its heads came out not finite"));
     timings.solve = seconds_since(clock);
   }
   clock = Clock::now();
@@ -692,7 +694,7 @@ void DarcySolver::restore_kept_factor(std::shared_ptr<const PermeabilityField> k
     check_size(kept->view());
     assemble_system(kept->view());
     SolveTimings timings;
-    if (unknown_count() > 0) factorize_system(timings);
+    if (unknown_count() > 0) factorize_system(timings, kept->view());
     factored_ = kept;
   }
   kept_ = std::move(kept);

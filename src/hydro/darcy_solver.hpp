@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "hydro/boundary_condition.hpp"
+#include "hydro/flow_failure.hpp"
 #include "hydro/flow_solution.hpp"
 #include "hydro/fluid.hpp"
 #include "hydro/linear_solver.hpp"
@@ -38,6 +39,7 @@ class DarcySolver {
               std::unique_ptr<LinearSolver> solver = make_cholmod_solver());
 
   // Solves with an intrinsic permeability (m²) per triangle: isotropic scalars or tensors.
+  // FlowSolveFailed, in the model's terms, when it cannot (here and in every solve below).
   FlowSolution solve(PermeabilityView permeability);
 
   // New values for the same conditions (the same boundaries, kinds and order), e.g. a head
@@ -120,8 +122,9 @@ class DarcySolver {
   FlowSolution solve_with(PermeabilityView permeability);
   // solve_with(), keeping `permeability` as the factor's for the next solve_reusing_factor().
   FlowSolution solve_and_keep(PermeabilityView permeability);
-  // Factorises the assembled matrix (SingularSystem, with a hint, when it cannot).
-  void factorize_system(SolveTimings& timings);
+  // Factorises the matrix assembled from `permeability` (FlowSolveFailed, in the model's terms,
+  // when it cannot).
+  void factorize_system(SolveTimings& timings, PermeabilityView permeability);
   // x = A⁻¹ f with the fresh factor, refined in extended precision (see solve_with).
   Eigen::VectorXd solve_directly(int& refinement_steps) const;
   // PCG with the kept factor, or that factor corrected when `corrected` is given, from x

@@ -1,14 +1,36 @@
 #include "hydro/region_tensor.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <stdexcept>
 #include <vector>
 
+#include "hydro/flow_failure.hpp"
 #include "hydro/linear_solver.hpp"
 
 namespace hydrodda::hydro {
 
 using geometry::Point;
+
+namespace {
+
+// Why a region's tensor could not be solved for, in the model's terms: the contrast it met.
+std::string describe_conductivity_contrast(std::span<const Conductivity> conductivity, std::span<const int> triangles) {
+  double least = INFINITY, largest = -INFINITY;
+  for (int t : triangles) {
+    const Conductivity& k = conductivity[t];
+    least = std::min({least, k.xx, k.yy});
+    largest = std::max({largest, k.xx, k.yy});
+  }
+  char text[160];
+  std::snprintf(text, sizeof text, "the region's conductivity spans %.3g to %.3g m/s, a contrast its solve could not "
+                "resolve in double precision", least, largest);
+  return std::string("a flow region's effective conductivity tensor could not be solved for: ") + text;
+}
+
+}  // namespace
 
 EffectiveTensor compute_region_tensor(const mesh::TriangleMesh& mesh, std::span<const Conductivity> conductivity,
                                       std::span<const int> triangles) {
@@ -55,7 +77,11 @@ EffectiveTensor compute_region_tensor(const mesh::TriangleMesh& mesh, std::span<
     upper.setFromTriplets(entries.begin(), entries.end());
     std::unique_ptr<LinearSolver> solver = make_cholmod_solver(FillOrdering::automatic);
     solver->analyse(upper);
-    solver->factorize(upper);
+    try {
+      solver->factorize(upper);
+    } catch (const SingularSystem&) {
+      throw FlowSolveFailed(describe_conductivity_contrast(conductivity, triangles));
+    }
     u_x = solver->solve(rhs_x);
     u_y = solver->solve(rhs_y);
   }

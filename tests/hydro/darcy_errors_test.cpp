@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <memory>
 #include <limits>
 #include <string>
 #include <vector>
@@ -73,6 +75,65 @@ TEST(DarcyErrors, FloatingPartIsASingularSystem) {
   m.boundary_names = {"left"};
   m.boundary_edges = {{{2, 0}, 0}};
   EXPECT_THROW(DarcySolver(m, make_problem({{"left", BoundaryKind::head, 1.0}})), SingularSystem);
+}
+
+// A solver whose factorisation always fails, in linear algebra's words, as CHOLMOD's does
+// near jacking (a contrast of 1e20 between an open joint and the rock).
+class FailingSolver : public LinearSolver {
+ public:
+  void analyse(const SparseMatrix&) override {}
+  void factorize(const SparseMatrix&) override {
+    throw SingularSystem("CHOLMOD: the matrix is singular or not positive definite");
+  }
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const override { return b; }
+  std::string name() const override { return "failing"; }
+};
+
+// The permeability of the left-fixed square: 1e-12 m² everywhere, 1e-2 m² in one triangle
+// (the open joint), and 1e-31 m² in the triangles whose centroid lies between x = tight_from
+// and tight_to (none by default).
+std::vector<double> joint_and_rock(double tight_from = 2.0, double tight_to = 2.0) {
+  std::vector<double> k(square().triangles.size(), 1e-12);
+  k[5] = 1e-2;
+  for (int t = 0; t < square().triangle_count(); ++t) {
+    const double x = mesh::triangle_centroid(square(), t).x;
+    if (x >= tight_from && x <= tight_to) k[t] = 1e-31;
+  }
+  return k;
+}
+
+TEST(DarcyErrors, AFailedFactorisationNamesThePermeabilityContrast) {
+  // Every part of the mesh reaches the fixed head through rock of 1e-12 m²: the message gives the
+  // contrast the solve met and where, no linear-algebra words, and no hint about connectivity,
+  // which is not the cause.
+  DarcySolver solver(square(), make_problem({{"left", BoundaryKind::head, 1.0}}), std::make_unique<FailingSolver>());
+  const std::vector<double> k = joint_and_rock();
+  const std::string message = message_of([&] { solver.solve(k); });
+  const geometry::Point joint = mesh::triangle_centroid(square(), 5);
+  char where[64];
+  std::snprintf(where, sizeof where, "(element 5 at (%.3g, %.3g))", joint.x, joint.y);
+  EXPECT_NE(message.find("the flow solve failed (its matrix could not be factored): the permeability spans 1e-12 m²"),
+            std::string::npos) << message;
+  EXPECT_NE(message.find(std::string("to 0.01 m² ") + where), std::string::npos) << message;
+  EXPECT_NE(message.find("a contrast of 1e+10"), std::string::npos) << message;
+  EXPECT_EQ(message.find("CHOLMOD"), std::string::npos) << message;
+  EXPECT_EQ(message.find("positive definite"), std::string::npos) << message;
+  EXPECT_EQ(message.find("fixed-head boundary"), std::string::npos) << message;
+  EXPECT_THROW(solver.solve(k), FlowSolveFailed);
+  // The same through the kept factor's path (a coupling pass).
+  EXPECT_EQ(message_of([&] { solver.solve_reusing_factor(k, {}); }), message);
+}
+
+TEST(DarcyErrors, TheConnectivityHintIsGivenOnlyWhereItIsTrue) {
+  // A band of 1e-31 m² across the square (elements of 0.2 m: wider than one, so that no node
+  // has elements on both sides of it), under 1e-16 of the largest permeability: the right part
+  // reaches the fixed head at the left only through it, which round-off loses.
+  DarcySolver solver(square(), make_problem({{"left", BoundaryKind::head, 1.0}}), std::make_unique<FailingSolver>());
+  const std::string message = message_of([&] { solver.solve(joint_and_rock(0.25, 0.75)); });
+  EXPECT_NE(message.find("past the 1e16 that double precision resolves"), std::string::npos) << message;
+  EXPECT_NE(message.find("reaches a fixed-head boundary only through elements whose permeability is under 1e-16 of "
+                         "the largest"),
+            std::string::npos) << message;
 }
 
 // Hand-computed element matrix of the right triangle (0,0), (1,0), (0,1) with K = I:
