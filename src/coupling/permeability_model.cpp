@@ -1,5 +1,6 @@
 #include "coupling/permeability_model.hpp"
 
+#include <limits>
 #include <stdexcept>
 
 #include "hydro/permeability_law.hpp"
@@ -39,7 +40,14 @@ std::vector<double> PermeabilityModel::compute(const PorosityField& porosity, st
 }
 
 double PermeabilityModel::matrix_permeability() const {
-  return hydro::kozeny_carman_permeability(matrix_porosity, grain_diameter, cap);
+  // The cap keeps Kozeny–Carman finite as φ → 1; the cubic law's k_m is the rock's as given.
+  const double bound = law == PermeabilityLaw::cubic ? std::numeric_limits<double>::infinity() : cap;
+  return hydro::kozeny_carman_permeability(matrix_porosity, grain_diameter, bound);
+}
+
+bool PermeabilityModel::matrix_capped() const {
+  return law == PermeabilityLaw::kozeny_carman &&
+         hydro::kozeny_carman_permeability(matrix_porosity, grain_diameter, std::numeric_limits<double>::infinity()) > cap;
 }
 
 }  // namespace hydrodda::coupling

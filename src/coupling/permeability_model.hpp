@@ -26,8 +26,11 @@ struct PermeabilityModel {
   // paper's device for Kozeny–Carman and does not apply to the cubic law.
   std::vector<double> compute(const PorosityField& porosity, std::span<const double> element_areas,
                               std::span<const double> apertures = {}) const;
-  // k_m: what both laws give an element with no open area (Kozeny–Carman of the matrix porosity).
+  // k_m: what both laws give an element with no open area (Kozeny–Carman of the matrix porosity;
+  // capped under Kozeny–Carman only).
   double matrix_permeability() const;
+  // Kozeny–Carman's cap lowers k_m itself: the matrix's own value is above it.
+  bool matrix_capped() const;
 };
 
 }  // namespace hydrodda::coupling

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "dda/selection.hpp"
 #include "dda/support.hpp"
@@ -154,6 +155,19 @@ coupling::PermeabilityModel make_permeability_model(const Scenario& s) {
   return model;
 }
 
+std::optional<std::string> describe_capped_matrix(const Scenario& s) {
+  if (!s.flow || s.materials.empty()) return std::nullopt;  // a flow-only model of fixed permeability
+  const coupling::PermeabilityModel model = make_permeability_model(s);
+  if (!model.matrix_capped()) return std::nullopt;
+  const double own = hydro::kozeny_carman_permeability(model.matrix_porosity, model.grain_diameter,
+                                                       std::numeric_limits<double>::infinity());
+  return fmt::format(
+      "material.{}: the Kozeny-Carman permeability of its matrix (matrix_porosity = {:g}, grain_diameter = {:g} m) is "
+      "{:.3g} m², above flow.permeability_cap = {:.4g} m², which replaces it in every element of intact rock: raise "
+      "flow.permeability_cap above it, or fix the permeability with a [[flow.region]]",
+      s.materials.front().name, model.matrix_porosity, model.grain_diameter, own, model.cap);
+}
+
 std::vector<double> find_biot_coefficients(const Scenario& s, const std::vector<dda::BlockDefinition>& blocks) {
   std::vector<double> biot;
   for (const dda::BlockDefinition& b : blocks) biot.push_back(s.materials[b.material].biot_coefficient);
@@ -252,10 +266,7 @@ std::vector<double> compute_matrix_permeability(const Scenario& s, const mesh::T
   std::optional<double> k_matrix;  // only where some element is not fixed is a material needed
   std::vector<double> k(fixed.size());
   for (std::size_t t = 0; t < fixed.size(); ++t) {
-    if (!fixed[t] && !k_matrix) {
-      const coupling::PermeabilityModel model = make_permeability_model(s);
-      k_matrix = hydro::kozeny_carman_permeability(model.matrix_porosity, model.grain_diameter, model.cap);
-    }
+    if (!fixed[t] && !k_matrix) k_matrix = make_permeability_model(s).matrix_permeability();
     k[t] = fixed[t] ? *fixed[t] : *k_matrix;
   }
   return k;

@@ -55,6 +55,10 @@ std::vector<dda::EdgeTraction> build_tractions(const scenario::Scenario& scenari
 // then has its opening, a closed one nothing).
 hydro::JointApertureLaw make_joint_aperture_law(const scenario::Scenario& scenario);
 coupling::PermeabilityModel make_permeability_model(const scenario::Scenario& scenario);
+// Under Kozeny–Carman, where flow.permeability_cap lowers the matrix's own permeability: a
+// warning naming the material, its value and the key; none otherwise (the cubic law's matrix
+// is never capped).
+std::optional<std::string> describe_capped_matrix(const scenario::Scenario& scenario);
 
 // Per block, the Biot coefficient of its material.
 std::vector<double> find_biot_coefficients(const scenario::Scenario& scenario,

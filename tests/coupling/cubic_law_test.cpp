@@ -10,9 +10,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "coupling/local_aperture.hpp"
+#include "coupling/permeability_model.hpp"
 #include "coupling/porosity.hpp"
 #include "hydro/darcy_solver.hpp"
 #include "hydro/permeability_law.hpp"
@@ -79,6 +82,30 @@ TEST(CubicLaw, ParallelFracturesKeepTheirTransmissivity) {
                 100 * (r.cubic / exact - 1), r.kozeny_carman, r.kozeny_carman / exact);
     EXPECT_NEAR(r.cubic, exact, 0.02 * exact) << "h = " << h / w << " w";
   }
+}
+
+// A matrix of grain size and porosity whose Kozeny–Carman permeability is 1.02e-7 m², a
+// thousand times the default cap: the cubic law takes it as it is, in every element with no
+// open area and as k_m; Kozeny–Carman caps it, and says so (matrix_capped).
+TEST(PermeabilityModel, CubicLawMatrixIsNotCapped) {
+  PermeabilityModel model;
+  model.matrix_porosity = 0.3;
+  model.grain_diameter = std::sqrt(1.02e-7 * 180.0 * 0.7 * 0.7 / (0.3 * 0.3 * 0.3));
+  const double own = hydro::kozeny_carman_permeability(0.3, model.grain_diameter, INFINITY);
+  ASSERT_NEAR(own, 1.02e-7, 1e-12);
+  ASSERT_GT(own, 1000 * model.cap);
+  model.law = PermeabilityLaw::cubic;
+  EXPECT_EQ(model.matrix_permeability(), own);
+  EXPECT_FALSE(model.matrix_capped());
+  PorosityField intact;
+  intact.porosity = {0.3, 0.3};
+  intact.fracture_area = {0.0, 0.0};
+  const std::vector<double> areas{1.0, 1.0}, apertures{0.0, 0.0};
+  EXPECT_EQ(model.compute(intact, areas, apertures), (std::vector<double>{own, own}));
+  model.law = PermeabilityLaw::kozeny_carman;
+  EXPECT_EQ(model.matrix_permeability(), model.cap);
+  EXPECT_TRUE(model.matrix_capped());
+  EXPECT_EQ(model.compute(intact, areas), (std::vector<double>{model.cap, model.cap}));
 }
 
 }  // namespace
