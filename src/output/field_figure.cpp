@@ -294,7 +294,11 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
   if (!f.warning.empty()) {
     cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
     cairo_set_source_rgb(cr, 0.8, 0.0, 0.0);
-    draw_text(cr, f.subtitle.empty() ? f.warning : f.subtitle + ": " + f.warning, 0.5 * width, 28, 0.5, 0.0);
+    const std::string line = f.subtitle.empty() ? f.warning : f.subtitle + ": " + f.warning;
+    const double line_width = text_width(cr, line);  // a run's status may be long: shrunk to the page
+    if (line_width > width - 20) cairo_set_font_size(cr, 11 * (width - 20) / line_width);
+    draw_text(cr, line, 0.5 * width, 28, 0.5, 0.0);
+    cairo_set_font_size(cr, 11);
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   } else if (!f.subtitle.empty()) {

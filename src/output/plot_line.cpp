@@ -212,6 +212,17 @@ void draw_ticks(cairo_t* cr, const Axis& a, const TickLabels& t, bool horizontal
   }
 }
 
+// A cross of half-width r: a point with no value.
+void draw_cross(cairo_t* cr, double x, double y, double r = 3.4) {
+  cairo_set_source_rgb(cr, 0.8, 0.0, 0.0);
+  cairo_set_line_width(cr, 1.6);
+  cairo_move_to(cr, x - r, y - r);
+  cairo_line_to(cr, x + r, y + r);
+  cairo_move_to(cr, x - r, y + r);
+  cairo_line_to(cr, x + r, y - r);
+  cairo_stroke(cr);
+}
+
 // The legend, in the corner of the frame that hides the fewest data points.
 void draw_legend(cairo_t* cr, const LinePlotSpec& spec, const Axis& x, const Axis& y) {
   double text_w = 0.0;
@@ -224,6 +235,11 @@ void draw_legend(cairo_t* cr, const LinePlotSpec& spec, const Axis& x, const Axi
   const bool open_row = !spec.open_label.empty() && has_open_point(spec);
   if (open_row) {
     text_w = std::max(text_w, text_width(cr, spec.open_label));
+    ++rows;
+  }
+  const bool marks_row = !spec.marks_label.empty() && !spec.marks_x.empty();
+  if (marks_row) {
+    text_w = std::max(text_w, text_width(cr, spec.marks_label));
     ++rows;
   }
   if (rows == 0) return;
@@ -270,10 +286,16 @@ void draw_legend(cairo_t* cr, const LinePlotSpec& spec, const Axis& x, const Axi
     draw_text(cr, spec.series[k].name, bx + 31.0, y, 0.0, 0.5);
   }
   if (open_row) {
-    const double y = by + 3.0 + row * (r + 0.5);
+    const double y = by + 3.0 + row * (r++ + 0.5);
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
     draw_marker(cr, 0, bx + 16.0, y, true);
     draw_text(cr, spec.open_label, bx + 31.0, y, 0.0, 0.5);
+  }
+  if (marks_row) {
+    const double y = by + 3.0 + row * (r + 0.5);
+    draw_cross(cr, bx + 16.0, y, 3.0);
+    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+    draw_text(cr, spec.marks_label, bx + 31.0, y, 0.0, 0.5);
   }
 }
 
@@ -293,7 +315,13 @@ void render_line_plot(const std::filesystem::path& path, const LinePlotSpec& spe
       yhi = std::max(yhi, s.y[i]);
     }
   }
+  for (double mark : spec.marks_x)
+    if (is_plottable(mark, spec.x_log)) {
+      xlo = std::min(xlo, mark);
+      xhi = std::max(xhi, mark);
+    }
   if (!(xlo <= xhi)) throw std::invalid_argument(fmt::format("line plot {}: nothing to plot", path.string()));
+  if (!(ylo <= yhi)) ylo = spec.y_log ? 0.1 : 0.0, yhi = 1.0;  // crosses alone
   for (const ReferenceLine& r : spec.references)
     if (is_plottable(r.y, spec.y_log)) {
       ylo = std::min(ylo, r.y);
@@ -356,6 +384,8 @@ void render_line_plot(const std::filesystem::path& path, const LinePlotSpec& spe
     cairo_set_line_width(cr, 0.8);
     cairo_rectangle(cr, left, top, right - left, bottom - top);
     cairo_stroke(cr);
+    for (double mark : spec.marks_x)
+      if (is_plottable(mark, spec.x_log)) draw_cross(cr, x.to_page(mark), bottom);
     draw_legend(cr, spec, x, y);
 
     cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
@@ -376,6 +406,9 @@ void render_line_plot(const std::filesystem::path& path, const LinePlotSpec& spe
     if (!spec.warning.empty()) {
       cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
       cairo_set_font_size(cr, 10.0);
+      // A run's status may be long: shrunk to the page, as the title is.
+      const double warning_width = text_width(cr, spec.warning), room = 0.96 * (spec.width - 16.0);
+      if (warning_width > room) cairo_set_font_size(cr, 10.0 * room / warning_width);
       cairo_set_source_rgb(cr, 0.8, 0.0, 0.0);
       draw_text(cr, spec.warning, 0.5 * spec.width, spec.title.empty() ? 10.0 : 26.0, 0.5, 0.0);
     }

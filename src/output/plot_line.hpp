@@ -30,12 +30,17 @@ struct LinePlotSpec {
   std::vector<LineSeries> series;
   std::vector<ReferenceLine> references;
   std::string open_label;  // the legend entry of the hollow markers, shown when some point is open
+  // Points with no value (a sweep case that failed): a red cross at each x on the frame's
+  // bottom edge, with the legend entry `marks_label` when there is one.
+  std::vector<double> marks_x;
+  std::string marks_label;
   double width = 460.0, height = 320.0;  // points
 };
 
 // On a log axis non-positive values are skipped (the line breaks there). Throws
 // std::invalid_argument naming the path if a series' x and y (or a non-empty open) differ in length or nothing is
-// plottable, std::runtime_error naming the path if the file cannot be written.
+// plottable (crosses alone are: the y axis then spans 0 to 1), std::runtime_error naming the
+// path if the file cannot be written.
 void render_line_plot(const std::filesystem::path& path, const LinePlotSpec& spec);
 
 }  // namespace hydrodda::output

@@ -109,6 +109,7 @@ json to_json(const RunSummary& s) {
                                           {"largest", r.last_passes->largest}};
     }
     out["flow"] = {{"boundaries", boundaries}, {"balance", s.flow->balance}, {"regions", regions}};
+    if (s.flow->iteration) out["flow"]["iteration"] = *s.flow->iteration;
   }
   if (s.outside_mesh)
     out["outside_mesh"] = {{"largest_distance", s.outside_mesh->largest_distance},

@@ -62,6 +62,9 @@ struct FlowSummary {
   std::vector<NamedValue> boundaries;  // outward flow per metre of thickness, m2/s
   double balance = 0.0;                // relative mass-balance error
   std::vector<RegionSummary> regions;
+  // Coupled runs: the coupling iteration whose flow this is, the last that finished (of a run
+  // that failed or was stopped, the one before the pass that did not finish).
+  std::optional<int> iteration;
 };
 
 // One fracture's row (fractures.csv's columns at the run's last step).

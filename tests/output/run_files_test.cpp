@@ -8,9 +8,12 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "output/atomic_file.hpp"
 #include "output/csv_table.hpp"
+#include "output/item_list.hpp"
 #include "output/run_folder.hpp"
 #include "output/summary.hpp"
 
@@ -130,6 +133,28 @@ TEST(AtomicFile, TheFullDiskHookFailsWritesOfTheNamedFileOnly) {
   EXPECT_EQ(read_all(dir / "summary.json"), "before\n");
   EXPECT_EQ(read_all(dir / "history.csv"), "written\n");
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}), 2);
+  fs::remove_all(dir);
+}
+
+// A line lists a few items; the full list goes to a file in the run folder that it names.
+TEST(ItemList, AFewInTheLineAndAllInAFileItNames) {
+  const fs::path dir = fresh_dir("hydrodda-item-list");
+  const RunFolder folder(dir, ExistingFolder::Refuse);
+  std::vector<std::string> tables;
+  for (int i = 0; i < 100; ++i) tables.push_back("[[mesh.refine]] point = [" + std::to_string(i) + ", 0]");
+  const std::string line = list_items(tables, &folder, "tables.toml", "; ");
+  EXPECT_EQ(line, "[[mesh.refine]] point = [0, 0]; [[mesh.refine]] point = [1, 0]; [[mesh.refine]] point = [2, 0]; "
+                  "[[mesh.refine]] point = [3, 0]; [[mesh.refine]] point = [4, 0] and 95 more (all 100 in " +
+                      (dir / "tables.toml").string() + ")");
+  std::string all;
+  for (const std::string& t : tables) all += t + "\n";
+  EXPECT_EQ(read_all(dir / "tables.toml"), all);
+  // A few are all in the line, and no file is written; without a folder the line counts the rest.
+  const std::vector<std::string> few(tables.begin(), tables.begin() + kListedItems);
+  EXPECT_EQ(list_items(few, &folder, "few.txt").find(" more"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir / "few.txt"));
+  const std::string bare = list_items(tables, nullptr, "tables.toml");
+  EXPECT_TRUE(bare.ends_with("[4, 0] and 95 more")) << bare;
   fs::remove_all(dir);
 }
 
