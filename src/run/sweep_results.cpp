@@ -176,7 +176,11 @@ CaseResult read_case_result(const std::string& name, const std::filesystem::path
       r.message = e.what();
     }
   }
-  if (r.columns.empty()) r.columns.assign(columns.size(), std::nullopt);
+  // A case that failed or was interrupted has no result: its summary.json holds the last good
+  // state it reached (the blocks as built, a pass before the one that failed), whose numbers
+  // would read as the case's answer.
+  if (r.columns.empty() || r.status == CaseStatus::failed || r.status == CaseStatus::interrupted)
+    r.columns.assign(columns.size(), std::nullopt);
   if (r.status != CaseStatus::ok && r.message.empty()) {
     const std::string error = find_last_error(case_dir / "run.log");
     r.message = fmt::format("exit code {}{}; see {}", exit_code, error.empty() ? "" : ": " + error,
@@ -230,6 +234,7 @@ SweepPlot SweepResults::plot_spec(const std::string& title) const {
   spec.x_label = quantity_label(axes_[0].key, boundary_names_);
   spec.y_label = quantity_label(columns_[0], boundary_names_);
   spec.open_label = "not converged";
+  bool interrupted = false;  // some case marked as having no value was interrupted, not failed
   for (std::size_t i = 0; i < results_.size(); ++i) {
     const CaseResult& r = results_[i];
     const std::optional<double> x = to_number(cases_[i][0].value);
@@ -240,7 +245,14 @@ SweepPlot SweepResults::plot_spec(const std::string& title) const {
     }
     const bool drawn = r.status == CaseStatus::ok || r.status == CaseStatus::not_converged;
     const std::optional<double> y = drawn && r.columns[0] ? to_number(*r.columns[0]) : std::nullopt;
-    if (!y) continue;
+    if (!y) {
+      // A case that ran and gave no value is a cross on the x axis, not a gap in the line.
+      if (r.status != CaseStatus::not_run && r.status != CaseStatus::pending) {
+        spec.marks_x.push_back(*x);
+        interrupted = interrupted || r.status == CaseStatus::interrupted;
+      }
+      continue;
+    }
     std::string series;
     for (std::size_t k = 1; !zipped_ && k < cases_[i].size(); ++k)
       series += fmt::format("{}{}", series.empty() ? "" : ", ", value_label(cases_[i][k], boundary_names_));
@@ -251,7 +263,8 @@ SweepPlot SweepResults::plot_spec(const std::string& title) const {
     it->y.push_back(*y);
     it->open.push_back(r.status == CaseStatus::not_converged);
   }
-  if (spec.series.empty()) {
+  if (!spec.marks_x.empty()) spec.marks_label = interrupted ? "failed or interrupted: no value" : "failed: no value";
+  if (spec.series.empty() && spec.marks_x.empty()) {
     plot.why_not = fmt::format("no case gave a number for {}", columns_[0]);
     return plot;
   }
@@ -274,7 +287,7 @@ SweepPlot SweepResults::plot_spec(const std::string& title) const {
 
 void SweepResults::plot(const std::filesystem::path& file, const std::string& title) const {
   const SweepPlot plot = plot_spec(title);
-  if (plot.spec.series.empty()) {
+  if (plot.spec.series.empty() && plot.spec.marks_x.empty()) {
     if (columns_.empty()) spdlog::info("{}: {} not drawn", plot.why_not, file.string());
     else spdlog::warn("{}: {} not drawn", plot.why_not, file.string());
     return;

@@ -72,7 +72,8 @@ class SweepResults {
   std::string csv_text() const;
   // The first chosen column against the first swept key, one series per combination of the
   // other keys' values; a case that did not converge is a hollow marker off the line (legend
-  // "not converged"); failed, interrupted and unstarted cases are left out. Logs why when
+  // "not converged"); a failed or interrupted case (which has no value) a red cross on the x
+  // axis at its value (legend "failed: no value"); unstarted cases are left out. Logs why when
   // nothing can be drawn.
   void plot(const std::filesystem::path& file, const std::string& title) const;
   SweepPlot plot_spec(const std::string& title) const;

@@ -1,5 +1,6 @@
 // SweepResults on case folders written by hand: each way a case can end gets its own status in
-// sweep.csv and the summary line, and only converged cases are drawn on the line.
+// sweep.csv and the summary line, only converged cases are drawn on the line, and a case that
+// failed or was interrupted has no value.
 
 #include "run/sweep_results.hpp"
 
@@ -111,8 +112,38 @@ TEST_F(SweepResultsTest, ACaseWithoutSummaryIsInterruptedOrFailed) {
   EXPECT_EQ(record(0, odd, 1).status, run::CaseStatus::failed);
 }
 
-// The converged cases make the line; the unconverged one is a hollow marker off it; the failed,
-// interrupted and unstarted ones are not drawn.
+// A failed or interrupted case has no value: its summary.json holds the last good state it
+// reached (here K/K_m 1.75 and 1.1), whose numbers are no answer. Its cells are empty, and
+// the plot marks it with a cross on the x axis, with a legend entry, rather than leave it out.
+TEST_F(SweepResultsTest, FailedAndInterruptedCasesHaveNoValue) {
+  const std::string csv = results->csv_text();
+  EXPECT_NE(csv.find("case_003,20,failed,false,2,,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("case_004,25,interrupted,false,1,,"), std::string::npos) << csv;
+  EXPECT_EQ(csv.find("1.75"), std::string::npos) << csv;
+  EXPECT_EQ(csv.find("1.1"), std::string::npos) << csv;
+  const run::SweepPlot plot = results->plot_spec("Seal");
+  EXPECT_EQ(plot.spec.marks_x, (std::vector<double>{20.0, 25.0}));
+  EXPECT_EQ(plot.spec.marks_label, "failed or interrupted: no value");
+  const fs::path png = folder.path / "sweep_marks.png";
+  results->plot(png, "Seal");
+  EXPECT_GT(fs::file_size(png), 1000u);
+  // Only failed cases: the legend says so; with no case giving a value the crosses are drawn alone.
+  std::vector<std::vector<hydrodda::scenario::Override>> cases{{{axis.key, "5"}}, {{axis.key, "10"}}};
+  run::SweepResults failed_only(std::vector<run::SweepAxis>{{axis.key, {"5", "10"}}}, cases, columns);
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    failed_only.set_name(i, "case_00" + std::to_string(i));
+    failed_only.set_result(i, run::read_case_result("case_003", folder.path / "case_003", 1, columns));
+  }
+  const run::SweepPlot crosses = failed_only.plot_spec("Seal");
+  EXPECT_TRUE(crosses.spec.series.empty());
+  EXPECT_EQ(crosses.spec.marks_label, "failed: no value");
+  const fs::path alone = folder.path / "sweep_failed.png";
+  failed_only.plot(alone, "Seal");
+  EXPECT_GT(fs::file_size(alone), 1000u);
+}
+
+// The converged cases make the line; the unconverged one is a hollow marker off it; the failed
+// and interrupted ones are crosses (above), the unstarted one is not drawn.
 TEST_F(SweepResultsTest, OnlyConvergedCasesMakeTheLine) {
   const run::SweepPlot plot = results->plot_spec("Seal");
   ASSERT_EQ(plot.spec.series.size(), 1u) << plot.why_not;
