@@ -48,7 +48,12 @@ int report(const run::RunResult& result) {
     case run::RunStatus::failed:
       break;
   }
-  spdlog::error("{}; the last good state is in {}", result.message, folder);
+  if (result.good_state_kept)
+    spdlog::error("{}; the last good state is in {}", result.message, folder);
+  else
+    spdlog::error("{}; no good state was kept (summary.json holds none, or values that are not finite, as null); "
+                  "what was written is in {}",
+                  result.message, folder);
   return kRunFailed;
 }
 

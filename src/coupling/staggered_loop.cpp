@@ -157,14 +157,11 @@ PassReport StaggeredLoop::run_pass() {
   // Porosity and permeability from the blocks as they are now: recomputed every pass.
   auto start = Clock::now();
   const std::vector<geometry::Polygon> blocks = current_blocks();
-  // The last pass's fields moved aside (not copied: at a million triangles they are 26 MB beside
-  // the kept flow factor), for an abandoned pass to put back.
-  pass_start_->porosity = std::move(porosity_);
-  pass_start_->permeability = std::move(permeability_);
-  pass_start_->permeability_tensors = std::move(permeability_tensors_);
-  porosity_ = {};
-  permeability_ = {};
-  permeability_tensors_ = {};
+  // The last pass's fields set aside, given back if this pass fails or is stopped.
+  pass_start_->porosity = std::exchange(porosity_, {});
+  pass_start_->permeability = std::exchange(permeability_, {});
+  pass_start_->permeability_tensors = std::exchange(permeability_tensors_, {});
+  pass_start_->joint_apertures = std::exchange(joint_apertures_, {});
   porosity_ = porosity_mapper_.compute(blocks, settings_.permeability.matrix_porosity, seepage_ ? &pieces_ : nullptr);
   // A block moved off the domain boundary leaves a strip that is no fracture (boundary_gaps.hpp).
   exclude_boundary_gaps(porosity_, boundary_gaps_.compute_gap_areas(blocks), porosity_mapper_.element_areas(),
@@ -191,6 +188,7 @@ PassReport StaggeredLoop::run_pass() {
   relax(fresh);
   report.relaxation = previous_heads_.empty() ? 1.0 : relaxation_;
   pass_start_->solution = std::exchange(solution_, std::move(fresh));
+  pass_start_->flow_solved = true;
   report.flow_seconds = seconds_since(start);
 
   // The P1 pressure field to forces on the blocks as they are now: the faces' share (1 − α)
@@ -299,16 +297,20 @@ PassReport StaggeredLoop::run_pass() {
 }
 
 void StaggeredLoop::abandon_pass() {
+  if (!pass_start_) return;
   PassStart& start = *pass_start_;
   iteration_ = completed_;
-  solution_ = std::move(start.solution);
-  previous_update_ = std::move(start.previous_update);
-  relaxation_ = start.relaxation;
-  if (settings_.acceleration == Acceleration::anderson) anderson_.restore(std::move(start.anderson_history));
-  darcy_.restore_kept_factor(std::move(start.kept_factor), start.kept_factor_single_precision);
   porosity_ = std::move(start.porosity);
   permeability_ = std::move(start.permeability);
   permeability_tensors_ = std::move(start.permeability_tensors);
+  joint_apertures_ = std::move(start.joint_apertures);
+  if (start.flow_solved) {  // else the heads and the relaxation are still the last pass's
+    solution_ = std::move(start.solution);
+    previous_update_ = std::move(start.previous_update);
+    relaxation_ = start.relaxation;
+    if (settings_.acceleration == Acceleration::anderson) anderson_.restore(std::move(start.anderson_history));
+  }
+  darcy_.restore_kept_factor(std::move(start.kept_factor), start.kept_factor_single_precision);
   pass_start_.reset();
 }
 

@@ -176,6 +176,10 @@ class StaggeredLoop {
   // then as the last finished pass left it (export_state() gives that state); the DDA system,
   // which it has stepped, is the caller's to put back.
   PassReport run_pass();
+  // After a pass that threw: puts back what it had changed (its porosity, permeability and
+  // heads included), so that the loop describes the last finished pass again; nothing when no
+  // pass is under way. The DDA system is the caller's to put back.
+  void abandon_pass();
 
   // The state between passes, and its restoration (throws std::invalid_argument when the
   // sizes do not fit this mesh and system). The porosity and permeability in it are the last
@@ -215,14 +219,18 @@ class StaggeredLoop {
   hydro::FlowSolution solve_flow(const std::vector<geometry::Polygon>& blocks);
   void relax(hydro::FlowSolution& fresh);
   void accelerate_by_anderson(hydro::FlowSolution& fresh);
-  // Puts back what the pass under way had changed (PassStart).
-  void abandon_pass();
 
   // What a pass changes of the loop's state before its mechanics, as it was when the pass
   // began: given back when the pass is abandoned, let go when it finishes. Held by moving the
   // old values aside rather than by copying the state: at a million triangles a copy is
-  // tens of megabytes beside the flow factorisation.
+  // tens of megabytes beside the flow factorisation. The fields are held too (26 MB at a
+  // million triangles), so that a pass that fails leaves the last finished one to report.
   struct PassStart {
+    PorosityField porosity;
+    std::vector<double> permeability;
+    std::vector<hydro::PermeabilityTensor> permeability_tensors;
+    std::vector<double> joint_apertures;
+    bool flow_solved = false;  // the solution and relaxation below were set aside
     hydro::FlowSolution solution;
     std::vector<double> previous_update;
     double relaxation = 1.0;

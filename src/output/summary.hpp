@@ -64,7 +64,7 @@ struct FlowSummary {
   std::vector<RegionSummary> regions;
   // Coupled runs: the coupling iteration whose flow this is, the last that finished (of a run
   // that failed or was stopped, the one before the pass that did not finish).
-  std::optional<int> iteration;
+  std::optional<int> iteration{};
 };
 
 // One fracture's row (fractures.csv's columns at the run's last step).

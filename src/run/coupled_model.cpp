@@ -84,6 +84,11 @@ coupling::PassReport CoupledModel::run_pass() {
   return r;
 }
 
+void CoupledModel::abandon_pass() {
+  loop_->abandon_pass();
+  system_->import_state(last_mechanics_);
+}
+
 void CoupledModel::set_flow_boundaries(std::vector<scenario::FlowBoundaryCondition> boundaries) {
   scenario::Scenario changed = scenario_;
   changed.flow->boundaries = std::move(boundaries);
@@ -118,6 +123,7 @@ output::RunSummary CoupledModel::summary() const {
                                   loop_->permeability_tensors().empty()
                                       ? hydro::PermeabilityView(loop_->permeability())
                                       : hydro::PermeabilityView(loop_->permeability_tensors()));
+    summary.flow->iteration = loop_->iterations();
     const coupling::MeshExcursion outside = loop_->outside_mesh();
     summary.outside_mesh = output::OutsideMeshSummary{outside.distance, outside.block, outside.blocks_outside};
   }

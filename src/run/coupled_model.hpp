@@ -47,8 +47,12 @@ class CoupledModel {
   // there from a checkpoint does: importing restarts the DDA linear solver, whose reused factors
   // would otherwise carry round-off history that no checkpoint holds. A pass the stop request
   // abandons (coupling::PassInterrupted, rethrown) leaves the model at its last finished pass,
-  // or as built. Any other failure leaves the engines where it happened.
+  // or as built. Any other failure leaves the engines where it happened, until abandon_pass().
   coupling::PassReport run_pass();
+  // After a pass that failed: the model back at its last finished pass (or as built), its
+  // fields and heads included, so that its summary describes that pass; nothing when no pass
+  // is under way.
+  void abandon_pass();
   // Asked before every DDA step of a pass; unset: never.
   void set_stop_request(std::function<bool()> stop_requested) { stop_requested_ = std::move(stop_requested); }
 

@@ -22,6 +22,7 @@
 #include "run/runs.hpp"
 #include "run/tip_refinement.hpp"
 #include "output/csv_table.hpp"
+#include "output/item_list.hpp"
 
 namespace hydrodda::run {
 
@@ -61,14 +62,14 @@ std::string_view acceleration_name(scenario::LoopAcceleration a) {
                                                    : "none";
 }
 
-// "no mechanical equilibrium ...: blocks 12 (moved 2.91 m, size 1 m), ...", the farthest eight.
-std::string describe_escape(const std::vector<coupling::EscapingBlock>& escaping, int iteration) {
-  std::string blocks;
-  const std::size_t named = std::min<std::size_t>(escaping.size(), 8);
-  for (std::size_t i = 0; i < named; ++i)
-    blocks += fmt::format("{}block {} (moved {:.3g} m, size {:.3g} m)", i == 0 ? "" : ", ", escaping[i].block,
-                          escaping[i].distance, escaping[i].size);
-  if (named < escaping.size()) blocks += fmt::format(" and {} more", escaping.size() - named);
+// "no mechanical equilibrium ...: blocks 12 (moved 2.91 m, size 1 m), ...", the farthest few
+// (every one in `folder`'s escaping_blocks.txt when there are more).
+std::string describe_escape(const std::vector<coupling::EscapingBlock>& escaping, int iteration,
+                            const output::RunFolder& folder) {
+  std::vector<std::string> named;
+  for (const coupling::EscapingBlock& b : escaping)
+    named.push_back(fmt::format("block {} (moved {:.3g} m, size {:.3g} m)", b.block, b.distance, b.size));
+  const std::string blocks = output::list_items(named, &folder, "escaping_blocks.txt");
   return fmt::format(
       "no mechanical equilibrium under this load: at coupling iteration {}, {} block(s) have moved farther than "
       "their own size (the square root of their area) and the loop still moves them: {}; the fluid load exceeds "
@@ -94,17 +95,48 @@ std::string describe_farthest(const std::vector<geometry::Point>& displacements)
   return text;
 }
 
+// What a failed run's summary and figures hold: the last pass that finished, or nothing.
+std::string describe_results_kept(int finished) {
+  return finished > 0 ? fmt::format("summary.json and the figures hold coupling iteration {}, the last that finished",
+                                    finished)
+                      : "no coupling iteration finished: there are no results";
+}
+
+// A failed run's status line on its figures: "failed at pass 6: " and what failed, the
+// message's first clause (after "coupling iteration 6 failed: ", up to its first ':' or ';'),
+// cut to part of a line: the figures shrink a long line to their width.
+std::string describe_failure_for_figures(int pass, const std::string& message) {
+  constexpr std::size_t kLine = 70;
+  const std::string prefix = fmt::format("coupling iteration {} failed: ", pass);
+  std::string what = message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message;
+  what = what.substr(0, what.find_first_of(":;"));
+  if (what.size() > kLine) what = what.substr(0, kLine - 3) + "...";
+  return fmt::format("failed at pass {}: {}", pass, what);
+}
+
+// The largest opening of any fracture (fractures.csv's max_aperture), 0 when all are closed.
+double find_largest_opening(const FractureState& state) {
+  double largest = 0.0;
+  for (const FractureResult& f : state.fractures) largest = std::max(largest, f.max_aperture);
+  return largest;
+}
+
 // Passes of an unconverged run over which its regions' answers are ranged.
 constexpr std::size_t kRangePasses = 10;
 
 // Sets each region's range of K_eff/K_m over the last passes (up to kRangePasses) of a run that
 // did not converge, from history.csv's rows (`columns` its header): how far its answer still
-// moved, and so what it is worth. "K_eff/K_m of region 'seal' ranged from 4.98 to 5.56 (11%)
-// ...", or "" without a region.
+// moved, and so what it is worth. Only passes after the first `ramp_passes` count: a pass
+// solves its flow on the blocks the pass before left, so the first pass's flow is that of the
+// blocks as built, under no fluid load at all, and the ramp's under part of it: no answer to
+// the load asked. "K_eff/K_m of region 'seal' ranged from 4.98 to 5.56 (11%) ...", or ""
+// without a region or such a pass.
 std::string describe_last_passes(const std::vector<std::string>& columns,
-                                 const std::vector<std::vector<std::string>>& rows,
+                                 const std::vector<std::vector<std::string>>& rows, int ramp_passes,
                                  std::vector<output::RegionSummary>& regions) {
-  const std::size_t passes = std::min(kRangePasses, rows.size());
+  const std::size_t loaded = rows.size() > static_cast<std::size_t>(ramp_passes) ? rows.size() - ramp_passes : 0;
+  const std::size_t passes = std::min(kRangePasses, loaded);
+  if (passes == 0) return {};
   std::string text;
   for (output::RegionSummary& r : regions) {
     const auto column = std::find(columns.begin(), columns.end(), "region_conductivity_" + r.name);
@@ -283,13 +315,46 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
   // answer moved over its last passes.
   const auto add_last_passes = [&](output::RunSummary& summary, std::string& message) {
     if (!summary.flow) return;
-    if (const std::string moved = describe_last_passes(columns, checkpoint.history, summary.flow->regions);
+    if (const std::string moved =
+            describe_last_passes(columns, checkpoint.history, s.coupling.ramp_passes, summary.flow->regions);
         !moved.empty())
       message += "; " + moved;
   };
-  const auto failure_with_range = [&](std::string message) {
-    output::RunSummary summary = current_summary();
-    add_last_passes(summary, message);
+  // The figures of the state the model is in, each with `status` on it ("" for a converged
+  // run): the fields of its last finished pass (none before the first), the passes' changes
+  // and the fractures' apertures.
+  const auto draw_run_figures = [&](const std::string& status) {
+    if (loop.has_flow())
+      draw_figures(s, context.folder,
+                   {mesh, loop.flow(), loop.porosity().porosity, loop.permeability(), model.block_polygons(), status,
+                    loop.iterations()});
+    ConvergenceHistory convergence = read_convergence(checkpoint.history, s.coupling.tolerance);
+    convergence.status = status;
+    draw_convergence(s, context.folder, convergence);
+    if (meter && loop.iterations() > 0) {
+      if (!fracture_state) measure_fractures();
+      draw_aperture_figure(s, context.folder, model.block_polygons(), *fracture_state,
+                           {fmt::format("coupling iteration {}", loop.iterations()), status});
+    }
+  };
+  // A run that failed at pass `pass`: its summary (with how far each region's answer moved,
+  // when `with_range`) and its figures, of the last finished pass, each saying how it failed.
+  const auto failure = [&](std::string message, bool with_range, int pass) {
+    output::RunSummary summary;
+    try {
+      summary = current_summary();
+    } catch (const std::exception& e) {  // the failure is still the news, with what is known
+      message += fmt::format("; and no summary of coupling iteration {} could be made: {}", loop.iterations(), e.what());
+      summary.title = s.title;
+      summary.scenario = s.file.string();
+      summary.iterations = loop.iterations();
+    }
+    if (with_range) add_last_passes(summary, message);
+    try {
+      draw_run_figures(describe_failure_for_figures(pass, message));
+    } catch (const std::exception& e) {
+      spdlog::warn("the failed run's figures could not be drawn: {}", e.what());
+    }
     return RunFailure(RunStatus::failed, std::move(message), std::move(summary));
   };
   // After every finished pass: the checkpoint of the state the model continues from
@@ -316,9 +381,13 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
         break;
       }
       const coupling::PassReport r = model.run_pass();
+      if (meter) measure_fractures();
+      // The fractures' widest opening as fractures.csv measures it; without fracture traces,
+      // the widest gap of an open contact between blocks.
+      const double largest_opening = meter ? find_largest_opening(*fracture_state) : r.largest_opening;
       std::vector<std::string> row{CsvTable::cell(static_cast<long long>(r.iteration)), CsvTable::cell(r.time),
                                    CsvTable::cell(r.head_change), CsvTable::cell(r.displacement_change),
-                                   CsvTable::cell(r.largest_opening), CsvTable::cell(r.mean_porosity),
+                                   CsvTable::cell(largest_opening), CsvTable::cell(r.mean_porosity),
                                    CsvTable::cell(r.max_permeability)};
       for (const scenario::FlowBoundaryCondition& bc : s.flow->boundaries)
         row.push_back(CsvTable::cell(loop.flow().boundary_flow(bc.name)));
@@ -343,10 +412,7 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
         checkpoint.measure.push_back(std::move(measured));
       }
       if (!measures.empty()) context.folder.write("measure.csv", measure.text());
-      if (meter) {
-        measure_fractures();
-        fractures.add_rows(r.iteration, r.time, *fracture_state);
-      }
+      if (meter) fractures.add_rows(r.iteration, r.time, *fracture_state);
       if (follow_tips) {
         const std::vector<WedgeTipElement> tips = find_wedge_tip_elements(
             *fracture_state, matrix_permeability, joint_law, mesh, tip_locator(), meter->layout().traces);
@@ -381,13 +447,12 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
       }
       save_checkpoint();
       if (r.diverging) {
-        throw failure_with_range(fmt::format("the coupling loop diverges: its change grew {} passes in a row, to a "
-                                             "head change of {:.3e} and a displacement change of {:.3e} at coupling "
-                                             "iteration {}",
-                                             r.growing_passes, r.head_change, r.displacement_change, r.iteration));
+        throw failure(fmt::format("the coupling loop diverges: its change grew {} passes in a row, to a head change "
+                                  "of {:.3e} and a displacement change of {:.3e} at coupling iteration {}",
+                                  r.growing_passes, r.head_change, r.displacement_change, r.iteration),
+                      true, r.iteration);
       }
-      if (!r.escaping.empty())
-        throw RunFailure(RunStatus::failed, describe_escape(r.escaping, r.iteration), current_summary());
+      if (!r.escaping.empty()) throw failure(describe_escape(r.escaping, r.iteration, context.folder), false, r.iteration);
     }
     // The last state's fields, unless the run is to be continued (it writes them at its end).
     if (!stopped && loop.iterations() > 0 && last_written != loop.iterations()) {
@@ -406,8 +471,14 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
   } catch (const std::exception& e) {
     // A DDA step that fails while blocks fly off is the escape, not the step, to report.
     const std::vector<coupling::EscapingBlock> escaping = loop.blocks_beyond_their_size();
-    throw failure_with_range(fmt::format("coupling iteration {} failed: {}{}", loop.iterations() + 1, e.what(),
-                                         escaping.empty() ? "" : "; " + describe_escape(escaping, loop.iterations() + 1)));
+    const int failed = loop.iterations() + 1;
+    // Back to the last finished pass, which the summary, the figures and the checkpoint then
+    // describe alike (its heads, fields and blocks), not the pass that failed half-way.
+    model.abandon_pass();
+    throw failure(fmt::format("coupling iteration {} failed: {}{}; {}", failed, e.what(),
+                              escaping.empty() ? "" : "; " + describe_escape(escaping, failed, context.folder),
+                              describe_results_kept(loop.iterations())),
+                  true, failed);
   }
   if (stopped) {
     output::RunSummary summary = current_summary();
@@ -416,7 +487,7 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
     return {summary, {}, {}};
   }
   if (const std::string unreached = describe_unreached_displacement(s, system); !unreached.empty())
-    throw RunFailure(RunStatus::failed, unreached, current_summary());
+    throw failure(unreached, false, loop.iterations());
   // A round that ends with wedge tips its mesh does not resolve ends there: the next meshes again
   // around them (mesh.refine_tips), while rounds remain. So does one that did not converge: its
   // unresolved tips may be why (the symmetric flexure's bed joint, docs/coupling.md).
@@ -436,7 +507,6 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
     }
   }
   ConvergenceHistory convergence = read_convergence(checkpoint.history, s.coupling.tolerance);
-  convergence.converged = converged;
   output::RunSummary summary = current_summary();
   summary.converged = converged;
   // Round-off beyond the mesh edge (blocks resting on it) is no excursion: warn only past the
@@ -452,7 +522,7 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
     if (!fracture_state) measure_fractures();
     const std::vector<WedgeTipElement> tips = find_wedge_tip_elements(
         *fracture_state, matrix_permeability, joint_law, mesh, tip_locator(), meter->layout().traces);
-    if (const auto text = describe_unresolved_wedge_tips(tips, *s.mesh))
+    if (const auto text = describe_unresolved_wedge_tips(tips, *s.mesh, &context.folder))
       spdlog::warn("{}{}",
                    s.mesh->refine_tips
                        ? fmt::format("after {} round(s) of mesh.refine_tips (at most {}), ", current_round(refined_tips) - 1,
@@ -482,15 +552,7 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
     spdlog::warn("{}", summary.message);
   }
   context.write_summary(summary);  // the run's result is on disk before the figures are drawn
-  draw_figures(s, context.folder,
-               {mesh, loop.flow(), loop.porosity().porosity, loop.permeability(), model.block_polygons(), converged,
-                loop.iterations()});
-  draw_convergence(s, context.folder, convergence);
-  if (meter && loop.iterations() > 0) {
-    if (!fracture_state) measure_fractures();
-    draw_aperture_figure(s, context.folder, model.block_polygons(), *fracture_state,
-                         {fmt::format("coupling iteration {}", loop.iterations()), converged});
-  }
+  draw_run_figures(converged ? "" : fmt::format("not converged after {} passes", loop.iterations()));
   return {summary, {}, {}};
 }
 

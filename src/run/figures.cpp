@@ -10,12 +10,10 @@ namespace hydrodda::run {
 
 namespace {
 
-// "coupling iteration 4" or nothing (flow-only run), and the warning of an unconverged run.
+// "coupling iteration 4" or nothing (flow-only run).
 std::string state_of(const FlowPicture& p) {
   return p.iterations > 0 ? fmt::format(", coupling iteration {}", p.iterations) : std::string();
 }
-
-std::string warning_of(bool converged) { return converged ? std::string() : "NOT CONVERGED"; }
 
 }  // namespace
 
@@ -29,7 +27,7 @@ void draw_figures(const scenario::Scenario& s, const output::RunFolder& folder, 
     output::FieldFigure head;
     head.title = s.title;
     head.subtitle = "Hydraulic head and Darcy flux" + state_of(p);
-    head.warning = warning_of(p.converged);
+    head.warning = p.status;
     head.field_label = "hydraulic head (m)";
     head.nodes = p.mesh.nodes;
     head.triangles = p.mesh.triangles;
@@ -64,7 +62,7 @@ void draw_convergence(const scenario::Scenario& s, const output::RunFolder& fold
   if (s.output.figures.empty() || h.iteration.empty()) return;
   output::LinePlotSpec plot;
   plot.title = s.title;
-  plot.warning = h.converged ? "" : "NOT CONVERGED: the changes stayed above the tolerance";
+  plot.warning = h.status;
   plot.x_label = "coupling iteration";
   plot.y_label = "relative change between coupling iterations";
   plot.y_log = true;

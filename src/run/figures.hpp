@@ -2,6 +2,7 @@
 // The figures a run draws into figures/, in each format output.figures asks for.
 
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "geometry/polygon.hpp"
@@ -18,8 +19,9 @@ struct FlowPicture {
   const std::vector<double>& porosity;      // per element; may be empty
   const std::vector<double>& permeability;  // per element
   const std::vector<geometry::Polygon>& blocks;
-  // A coupled run that used all its iterations without converging: every figure says so.
-  bool converged = true;
+  // How a coupled run ended, when not converged ("not converged after 40 passes", "failed at
+  // pass 6: ..."): every figure says so in red under its title. Empty: nothing to say.
+  std::string status{};
   int iterations = 0;  // of a coupled run; 0 for a flow-only run
   // Asked before each figure: true leaves the rest undrawn (the run reports the interrupt).
   std::function<bool()> stop_requested{};
@@ -29,7 +31,7 @@ struct FlowPicture {
 struct ConvergenceHistory {
   std::vector<double> iteration, head_change, displacement_change;
   double tolerance = 0.0;
-  bool converged = true;
+  std::string status{};  // as FlowPicture's
 };
 
 // head.* (heads with contours, blocks, flux arrows under 1% of the largest hidden, as the

@@ -125,7 +125,7 @@ void draw_aperture_figure(const scenario::Scenario& s, const output::RunFolder& 
   output::FieldFigure figure;
   figure.title = s.title;
   figure.subtitle = "Fracture apertures (closed fractures in grey), " + shown.when;
-  if (!shown.converged) figure.warning = "NOT CONVERGED";
+  figure.warning = shown.status;
   figure.field_label = "mechanical aperture (mm)";
   figure.blocks.assign(blocks.begin(), blocks.end());
   for (const FracturePiece& p : state.pieces) {

@@ -39,11 +39,11 @@ class FractureOutput {
   std::optional<output::PvdSeries> series_;
 };
 
-// What a figure shows: at which coupling iteration or DDA step, and whether the coupled run it
-// ends converged (an unconverged one is marked "NOT CONVERGED").
+// What a figure shows: at which coupling iteration or DDA step, and how the run ended when not
+// as asked ("not converged after 40 passes", "failed at pass 6: ...", in red; empty: nothing).
 struct FigureState {
   std::string when;  // e.g. "coupling iteration 4", "DDA step 200"
-  bool converged = true;
+  std::string status{};
 };
 
 // summary.json's `fractures` section from a step's results (docs/output.md).

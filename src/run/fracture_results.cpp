@@ -11,6 +11,7 @@
 #include "coupling/embedded_joints.hpp"
 #include "geometry/parallel.hpp"
 #include "geometry/spatial_grid.hpp"
+#include "output/item_list.hpp"
 #include "run/model_geometry.hpp"
 
 namespace hydrodda::run {
@@ -274,7 +275,8 @@ std::vector<WedgeTipElement> find_wedge_tip_elements(const FractureState& state,
 }
 
 std::optional<std::string> describe_unresolved_wedge_tips(std::span<const WedgeTipElement> tips,
-                                                          const scenario::MeshDefinition& mesh) {
+                                                          const scenario::MeshDefinition& mesh,
+                                                          const output::RunFolder* folder) {
   const auto unresolved = [](const WedgeTipElement& e) { return !resolves_wedge_tip(e); };
   if (tips.empty() || !unresolved(tips.front())) return std::nullopt;
   const WedgeTipElement& worst = tips.front();
@@ -289,18 +291,18 @@ std::optional<std::string> describe_unresolved_wedge_tips(std::span<const WedgeT
   if (mesh.file)
     return found + fmt::format("refine the mesh file to {:.2g} m (s*/4) around the tip, or check them between two meshes",
                                quarter);
-  std::string tables;
-  int count = 0;
+  std::vector<std::string> tables, to_paste;  // in the line; in the file, as TOML to paste
   for (const WedgeTipElement& e : tips)
     if (unresolved(e)) {
-      tables += fmt::format(" [[mesh.refine]] point = [{:.5g}, {:.5g}], size = {:.2g};", e.tip.point.x, e.tip.point.y,
-                            0.25 * e.tip.length);
-      ++count;
+      const std::string point = fmt::format("[{:.5g}, {:.5g}]", e.tip.point.x, e.tip.point.y);
+      const std::string size = fmt::format("{:.2g}", 0.25 * e.tip.length);
+      tables.push_back(fmt::format("[[mesh.refine]] point = {}, size = {}", point, size));
+      to_paste.push_back(fmt::format("[[mesh.refine]]\npoint = {}\nsize = {}\n", point, size));
     }
-  tables.pop_back();  // the last ';'
-  std::string refine =
-      fmt::format("refine around {} (size s*/4):{}", count == 1 ? "the tip" : fmt::format("the {} unresolved tips", count),
-                  tables);
+  std::string refine = fmt::format(
+      "refine around {} (size s*/4): {}",
+      tables.size() == 1 ? "the tip" : fmt::format("the {} unresolved tips", tables.size()),
+      output::list_items(tables, folder, "unresolved_tips.toml", "; ", to_paste));
   if (!mesh.refine_tips) refine += "; or give mesh.refine_tips = true, and the run meshes again around them itself";
   if (worst.trace_distance <= mesh.fracture_size)
     return found + fmt::format("give mesh.fracture_size = {:.2g} m (s*/4), or {}", quarter, refine);

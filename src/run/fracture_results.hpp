@@ -24,6 +24,7 @@
 #include "hydro/permeability_law.hpp"
 #include "mesh/point_locator.hpp"
 #include "mesh/triangle_mesh.hpp"
+#include "output/run_folder.hpp"
 #include "scenario/scenario.hpp"
 
 namespace hydrodda::run {
@@ -172,8 +173,10 @@ inline bool resolves_wedge_tip(const WedgeTipElement& e) { return e.element_size
 // `mesh` (the scenario's [mesh]): where the tip lies on its trace (within mesh.fracture_size), a
 // smaller mesh.fracture_size; else refinement around the tips, a [[mesh.refine]] table for each
 // unresolved one, or mesh.refine_tips (unless it is on); in a mesh file, a refinement of the
-// file. None when every tip is resolved.
+// file. None when every tip is resolved. Past a few tables the rest are in `folder`'s
+// unresolved_tips.toml, which the message names (output::list_items).
 std::optional<std::string> describe_unresolved_wedge_tips(std::span<const WedgeTipElement> tips,
-                                                          const scenario::MeshDefinition& mesh);
+                                                          const scenario::MeshDefinition& mesh,
+                                                          const output::RunFolder* folder = nullptr);
 
 }  // namespace hydrodda::run

@@ -100,6 +100,9 @@ output::RunSummary run_mechanics(const RunContext& context) {
     throw;
   } catch (const std::exception& e) {
     write_tables();
+    // The fractures were measured at an earlier output step, not at the state the run failed
+    // in: a front end is told of none, as summary.json gives none.
+    fracture_state.reset();
     throw RunFailure(RunStatus::failed,
                      fmt::format("mechanics failed at step {} (t = {:g} s): {}", model.steps() + 1, system.time(),
                                  e.what()),

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "mesh/mesh_cache.hpp"
+#include "output/item_list.hpp"
 #include "output/run_folder.hpp"
 #include "run/mesh_budget.hpp"
 #include "run/model_building.hpp"
@@ -20,35 +21,30 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void write_summary(const output::RunFolder& folder, const output::RunSummary& summary) {
-  folder.write("summary.json", output::format_summary(summary));
-}
-
 // A run that stopped before its end: summary.json says so (converged = false, status
-// "interrupted" or "failed", what happened).
+// "interrupted" or "failed", what happened). `has_state`: the summary describes a state of the
+// model, which is good only when every value in it is finite.
 RunResult record_failure(const output::RunFolder& folder, RunStatus status, const std::string& what,
-                         output::RunSummary summary) {
+                         output::RunSummary summary, bool has_state = true) {
   summary.converged = false;
   summary.status = status == RunStatus::interrupted ? "interrupted" : "failed";
   summary.message = what;
+  const output::CheckedSummary checked = output::format_checked_summary(summary);
   try {
-    write_summary(folder, summary);
+    folder.write("summary.json", checked.text);
   } catch (const output::RunFolderError& e) {
     // Nowhere left to record the failure: the caller says both (once when they are the same).
     if (what == e.what()) throw;
     throw output::RunFolderError(fmt::format("{}; and the failure could not be recorded: {}", what, e.what()));
   }
-  return {status, false, summary.iterations, what, summary, folder.path()};
+  return {status, false, summary.iterations, what, summary, folder.path(), has_state && checked.non_finite.empty()};
 }
 
 // Results that overflowed (a conductivity of k ρ g / μ with μ = 1e-300) or came out NaN: the
-// run failed, whatever its loop said, naming each value (the first few).
-std::string describe_non_finite(const std::vector<std::string>& paths) {
-  constexpr std::size_t kNamed = 5;
-  std::string names = fmt::format("{}", fmt::join(paths.begin(), paths.begin() + std::min(paths.size(), kNamed), ", "));
-  if (paths.size() > kNamed) names += fmt::format(" and {} more", paths.size() - kNamed);
+// run failed, whatever its loop said, naming the first few values (all in non_finite.txt).
+std::string describe_non_finite(const std::vector<std::string>& paths, const output::RunFolder& folder) {
   return fmt::format("{} result(s) not finite (overflow or 0/0; written as null in summary.json): {}", paths.size(),
-                     names);
+                     output::list_items(paths, &folder, "non_finite.txt"));
 }
 
 // summary.json of a run that reached its end could not be written (a full disk): the result
@@ -93,7 +89,7 @@ RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output:
   const auto write_final_summary = [&folder, &written](const output::RunSummary& summary) {
     const output::CheckedSummary checked = output::format_checked_summary(summary);
     if (!checked.non_finite.empty())
-      throw RunFailure(RunStatus::failed, describe_non_finite(checked.non_finite), summary);
+      throw RunFailure(RunStatus::failed, describe_non_finite(checked.non_finite, folder), summary);
     try {
       folder.write("summary.json", checked.text);
     } catch (const output::RunFolderError& e) {
@@ -103,13 +99,14 @@ RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output:
   };
   const RunContext context{s, folder, callbacks, scenario_text, resume, stop_after, write_final_summary, mesh_cache};
   const RunKind kind = kind_of(s);
+  if (const std::optional<std::string> capped = describe_capped_matrix(s)) spdlog::warn("{}", *capped);
   try {
     const output::RunSummary summary = kind == RunKind::coupled     ? run_coupled(context)
                                        : kind == RunKind::mechanics ? run_mechanics(context)
                                                                     : run_flow(context);
     write_final_summary(summary);
     const RunStatus status = summary.status == "stopped" ? RunStatus::stopped : RunStatus::finished;
-    return {status, summary.converged, summary.iterations, summary.message, summary, folder.path()};
+    return {status, summary.converged, summary.iterations, summary.message, summary, folder.path(), true};
   } catch (const scenario::ScenarioError&) {
     // Found while building the model: still bad input, and bad input leaves no run folder
     // behind. Nothing has been written by then; a folder this run made is removed.
@@ -137,7 +134,7 @@ RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output:
     output::RunSummary summary;
     summary.title = s.title;
     summary.scenario = s.file.string();
-    return record_failure(folder, RunStatus::failed, e.what(), summary);
+    return record_failure(folder, RunStatus::failed, e.what(), summary, /*has_state=*/false);
   }
 }
 
@@ -180,6 +177,7 @@ RunResult resume(const ResumedRun& resumed, std::optional<int> stop_after, const
 }
 
 std::string check_model(const scenario::Scenario& s) {
+  if (const std::optional<std::string> capped = describe_capped_matrix(s)) spdlog::warn("{}", *capped);
   std::string geometry;
   if (s.geometry && !s.geometry->domain.empty()) {
     const ModelGeometry model = build_and_log_geometry(s);

@@ -87,6 +87,10 @@ struct RunResult {
   std::string message;            // why it stopped or failed; empty when finished
   output::RunSummary summary;     // as written to summary.json
   std::filesystem::path folder;
+  // A run that failed or was interrupted: summary.json holds a state of its model (the last
+  // good one) and every value in it is finite. False where it holds none (the run failed
+  // before it had a model) or one with values not finite (written as null).
+  bool good_state_kept = false;
 };
 
 struct RunOptions {

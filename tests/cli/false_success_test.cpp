@@ -127,6 +127,9 @@ TEST(FalseSuccess, AnOverflowedResultFailsTheRunNamingIt) {
   const auto summary = read_summary(dir / "run");
   EXPECT_EQ(summary["converged"], false);
   EXPECT_EQ(summary["status"], "failed");
+  // Its state is not a good one: the last line does not send the user to it.
+  EXPECT_EQ(result.output.find("the last good state is in"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("no good state was kept"), std::string::npos) << result.output;
   fs::remove_all(dir);
 }
 

@@ -14,8 +14,10 @@
 #include <vector>
 
 #include "../cli/run_folder_compare.hpp"
+#include "../cli/run_program.hpp"
 #include "output/checkpoint.hpp"
 #include "run/coupled_model.hpp"
+#include "run/model_building.hpp"
 #include "run/run.hpp"
 #include "scenario/overrides.hpp"
 #include "scenario/reader.hpp"
@@ -323,6 +325,110 @@ TEST(RunLayer, TheInputFilesAreEveryFileTheScenarioNames) {
   EXPECT_NE(run::hash_input_files(s)[1].hash, files[1].hash);
   fs::remove(folder.path / "traces.csv");
   EXPECT_THROW(run::hash_input_files(s), run::InputError);
+}
+
+TEST(RunLayer, AFailedPassLeavesTheRunAtTheLastFinishedPass) {
+  // A failure during pass 2's DDA steps, after its flow solve (a stop request that throws
+  // stands for a step that fails): the run fails, and its summary, blocks, heads and flows
+  // alike, is pass 1's, as the model's after one pass; its flow section says so; the figures of
+  // that pass are drawn, as every failed run's.
+  scenario::Scenario s = scenario::read_scenario(kVerification / "coupled_drained_fracture.toml");
+  s.output.figures = {"png"};
+  Folder folder("failed-pass");
+  int reports = 0, asked_since = 0;
+  run::Callbacks callbacks;
+  callbacks.progress = [&](const run::ProgressReport&) { ++reports; };
+  callbacks.stop_requested = [&] {
+    // Asked before pass 2, then before each of its DDA steps: the third is its second step.
+    if (reports == 1 && ++asked_since == 3) throw std::runtime_error("a DDA step failed");
+    return false;
+  };
+  const run::RunResult failed = run::run(s, {folder.path}, callbacks);
+  ASSERT_EQ(failed.status, run::RunStatus::failed) << failed.message;
+  EXPECT_EQ(failed.iterations, 1);
+  EXPECT_EQ(failed.message.rfind("coupling iteration 2 failed: a DDA step failed; summary.json and the figures hold "
+                                 "coupling iteration 1, the last that finished",
+                                 0),
+            0u)
+      << failed.message;
+  EXPECT_TRUE(failed.good_state_kept);
+
+  run::CoupledModel one_pass(s);
+  one_pass.run_pass();
+  const hydrodda::output::RunSummary expected = one_pass.summary();
+  ASSERT_EQ(failed.summary.blocks.size(), expected.blocks.size());
+  for (std::size_t b = 0; b < expected.blocks.size(); ++b)
+    EXPECT_EQ(failed.summary.blocks[b].displacement, expected.blocks[b].displacement) << "block " << b;
+  ASSERT_TRUE(failed.summary.flow);
+  EXPECT_EQ(failed.summary.flow->iteration, 1);
+  ASSERT_EQ(failed.summary.flow->boundaries.size(), expected.flow->boundaries.size());
+  for (std::size_t i = 0; i < expected.flow->boundaries.size(); ++i)
+    EXPECT_EQ(failed.summary.flow->boundaries[i].value, expected.flow->boundaries[i].value)
+        << expected.flow->boundaries[i].name;
+  EXPECT_EQ(read_file(folder.path / "summary.json"), hydrodda::output::format_summary(failed.summary));
+  for (const char* figure : {"head.png", "permeability.png", "convergence.png"})
+    EXPECT_TRUE(fs::exists(folder.path / "figures" / figure)) << figure;
+}
+
+TEST(RunLayer, AFailureInTheFirstPassLeavesNoFlowToReport) {
+  // No pass finished: no flow section (the first pass's heads, of the blocks as built, are no
+  // result), no iteration counted, no figure of a state that does not exist.
+  scenario::Scenario s = scenario::read_scenario(kVerification / "coupled_drained_fracture.toml");
+  s.output.figures = {"png"};
+  Folder folder("failed-first-pass");
+  int asked = 0;
+  run::Callbacks callbacks;
+  callbacks.stop_requested = [&] {
+    if (++asked == 3) throw std::runtime_error("a DDA step failed");
+    return false;
+  };
+  const run::RunResult failed = run::run(s, {folder.path}, callbacks);
+  ASSERT_EQ(failed.status, run::RunStatus::failed) << failed.message;
+  EXPECT_EQ(failed.iterations, 0);
+  EXPECT_FALSE(failed.summary.flow.has_value());
+  EXPECT_NE(failed.message.find("no coupling iteration finished: there are no results"), std::string::npos)
+      << failed.message;
+  EXPECT_FALSE(fs::exists(folder.path / "figures" / "head.png"));
+}
+
+TEST(RunLayer, ACappedMatrixIsNamedInAWarning) {
+  scenario::Scenario s = scenario::read_scenario(kVerification / "coupled_drained_fracture.toml");
+  s.flow->permeability_law = scenario::PermeabilityLaw::KozenyCarman;
+  s.materials.front().matrix_porosity = 0.3;
+  s.materials.front().grain_diameter = 0.018;  // Kozeny–Carman: 9.9e-8 m², a thousand times the cap
+  const std::optional<std::string> warning = run::describe_capped_matrix(s);
+  ASSERT_TRUE(warning.has_value());
+  EXPECT_NE(warning->find("material." + s.materials.front().name + ": "), std::string::npos) << *warning;
+  EXPECT_NE(warning->find("above flow.permeability_cap = 9.869e-11 m²"), std::string::npos) << *warning;
+  s.flow->permeability_law = scenario::PermeabilityLaw::Cubic;
+  EXPECT_FALSE(run::describe_capped_matrix(s).has_value());
+  EXPECT_GT(run::make_permeability_model(s).matrix_permeability(), 1e-8);
+}
+
+TEST(CoupledOutput, LargestOpeningIsTheFracturesOpening) {
+  // history.csv's largest_opening is the widest opening of any fracture as fractures.csv
+  // measures it that pass (its largest max_aperture), not a gap of a contact elsewhere: in this
+  // seal every fracture stays closed, while an open contact pair among its blocks had a gap of
+  // 0.019 m, which largest_opening was.
+  const scenario::Scenario s =
+      scenario::read_scenario(fs::path(HYDRODDA_SOURCE_DIR) / "tests/cli/scenarios/seal_in_situ_stress.toml");
+  Folder folder("largest-opening");
+  const run::RunResult result = run::run(s, {folder.path});
+  ASSERT_NE(result.status, run::RunStatus::failed) << result.message;
+  const auto history = hydrodda::testing::read_csv(folder.path / "history.csv");
+  const auto fractures = hydrodda::testing::read_csv(folder.path / "fractures.csv");
+  const auto column = [](const std::vector<std::string>& header, const std::string& name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  const std::size_t opening = column(history[0], "largest_opening"), step = column(fractures[0], "step"),
+                    widest = column(fractures[0], "max_aperture");
+  ASSERT_GE(history.size(), 2u);
+  for (std::size_t row = 1; row < history.size(); ++row) {
+    double largest = 0.0;
+    for (std::size_t f = 1; f < fractures.size(); ++f)
+      if (fractures[f][step] == history[row][0]) largest = std::max(largest, std::stod(fractures[f][widest]));
+    EXPECT_EQ(std::stod(history[row][opening]), largest) << "iteration " << history[row][0];
+  }
 }
 
 TEST(RunLayer, StopAfterIsForCoupledRunsOnlyAndLeavesNoFolder) {
