@@ -237,10 +237,6 @@ class StaggeredLoop {
     std::deque<dda::AndersonAccelerator::Pass> anderson_history;
     std::shared_ptr<const hydro::PermeabilityField> kept_factor;
     bool kept_factor_single_precision = false;
-    // The last pass's fields (part of the state export_state() gives), moved aside.
-    PorosityField porosity;
-    std::vector<double> permeability;
-    std::vector<hydro::PermeabilityTensor> permeability_tensors;
   };
   std::optional<PassStart> pass_start_;
 

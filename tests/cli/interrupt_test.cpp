@@ -22,10 +22,9 @@
 namespace fs = std::filesystem;
 using hydrodda::testing::RunningProgram;
 using hydrodda::testing::TemporaryFolder;
+using hydrodda::testing::fresh_dir;
 
 namespace {
-
-TemporaryFolder fresh_dir(const std::string& name) { return TemporaryFolder(name + "-" + std::to_string(::getpid())); }
 
 nlohmann::json read_summary(const fs::path& folder) {
   return nlohmann::json::parse(std::ifstream(folder / "summary.json"));

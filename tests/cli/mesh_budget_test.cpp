@@ -15,16 +15,13 @@
 #include "run_program.hpp"
 
 namespace fs = std::filesystem;
+using hydrodda::testing::fresh_dir;
 using hydrodda::testing::run_program;
 
 namespace {
 
 const fs::path kSource = HYDRODDA_SOURCE_DIR;
 const fs::path kFractures = kSource / "scenarios/verification/flow_three_fractures.toml";
-
-hydrodda::testing::TemporaryFolder fresh_dir(const std::string& name) {
-  return hydrodda::testing::TemporaryFolder(name + "-" + std::to_string(::getpid()));
-}
 
 // The three-fracture square with its [mesh] replaced.
 fs::path with_mesh(const fs::path& dir, const std::string& mesh) {

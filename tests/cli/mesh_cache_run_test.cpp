@@ -13,16 +13,13 @@
 #include "run_program.hpp"
 
 namespace fs = std::filesystem;
+using hydrodda::testing::fresh_dir;
 using hydrodda::testing::expect_same_results;
 using hydrodda::testing::run_program;
 
 namespace {
 
 const fs::path kSource = HYDRODDA_SOURCE_DIR;
-
-hydrodda::testing::TemporaryFolder fresh_dir(const std::string& name) {
-  return hydrodda::testing::TemporaryFolder(name + "-" + std::to_string(::getpid()));
-}
 
 int count_meshes(const fs::path& folder) {
   int n = 0;

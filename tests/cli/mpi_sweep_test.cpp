@@ -12,6 +12,7 @@
 #include "run_program.hpp"
 
 namespace fs = std::filesystem;
+using hydrodda::testing::fresh_dir;
 using hydrodda::testing::read_file;
 using hydrodda::testing::run_command;
 using hydrodda::testing::run_program;
@@ -19,10 +20,6 @@ using hydrodda::testing::run_program;
 namespace {
 
 const fs::path kSource = HYDRODDA_SOURCE_DIR;
-
-hydrodda::testing::TemporaryFolder fresh_dir(const std::string& name) {
-  return hydrodda::testing::TemporaryFolder(name + "-" + std::to_string(::getpid()));
-}
 
 // mpirun with two ranks on this machine, whatever its core count; CI runs as root, which Open
 // MPI refuses unless told. Under `make asan` the ranks run without LeakSanitizer (-x sets their

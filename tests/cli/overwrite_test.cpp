@@ -13,6 +13,7 @@
 #include "run_program.hpp"
 
 namespace fs = std::filesystem;
+using hydrodda::testing::fresh_dir;
 using hydrodda::testing::read_file;
 using hydrodda::testing::run_command;
 using hydrodda::testing::run_program;
@@ -20,10 +21,6 @@ using hydrodda::testing::run_program;
 namespace {
 
 const fs::path kSource = HYDRODDA_SOURCE_DIR;
-
-hydrodda::testing::TemporaryFolder fresh_dir(const std::string& name) {
-  return hydrodda::testing::TemporaryFolder(name + "-" + std::to_string(::getpid()));
-}
 
 }  // namespace
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 namespace hydrodda::testing {
 
@@ -22,6 +23,12 @@ struct TemporaryFolder {
   }
   ~TemporaryFolder() { std::filesystem::remove_all(path); }
 };
+
+// A TemporaryFolder whose name carries the process id, so that two suites running at once
+// (`make test` beside `make asan`) never share one.
+inline TemporaryFolder fresh_dir(const std::string& name) {
+  return TemporaryFolder(name + "-" + std::to_string(::getpid()));
+}
 
 // The index of a CSV header's column; a test failure when there is none.
 inline int column(const std::vector<std::string>& header, const std::string& name) {
