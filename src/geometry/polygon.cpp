@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/spatial_grid.hpp"
+
 namespace hydrodda::geometry {
 
 double signed_area(std::span<const Point> polygon) {
@@ -74,6 +76,11 @@ int sign(double v) { return (v > 0.0) - (v < 0.0); }
 }  // namespace
 
 bool segments_intersect(Point a, Point b, Point c, Point d) {
+  // Segments whose boxes are apart cannot meet, whatever the round-off in the orientations of
+  // nearly collinear ones says.
+  if (std::max(a.x, b.x) < std::min(c.x, d.x) || std::max(c.x, d.x) < std::min(a.x, b.x) ||
+      std::max(a.y, b.y) < std::min(c.y, d.y) || std::max(c.y, d.y) < std::min(a.y, b.y))
+    return false;
   const int d1 = sign(orient(c, d, a));
   const int d2 = sign(orient(c, d, b));
   const int d3 = sign(orient(a, b, c));
@@ -94,28 +101,49 @@ std::optional<double> line_intersection_parameter(Point a, Point b, Point c, Poi
   return cross(c - a, s) / denom;
 }
 
+namespace {
+
+// Do edges i < j of the polygon meet where they should not: non-adjacent ones anywhere,
+// adjacent ones folded back onto each other (collinear and overlapping beyond the shared vertex)?
+bool edges_meet(std::span<const Point> polygon, int i, int j) {
+  const int n = static_cast<int>(polygon.size());
+  const Point a = polygon[i], b = polygon[(i + 1) % n];
+  const Point c = polygon[j], d = polygon[(j + 1) % n];
+  if ((j == i + 1) || (i == 0 && j == n - 1)) {
+    const Point shared = (j == i + 1) ? b : a;
+    const Point other_i = (j == i + 1) ? a : b;
+    const Point other_j = (j == i + 1) ? d : c;
+    return orient(other_i, shared, other_j) == 0.0 && dot(other_i - shared, other_j - shared) > 0.0;
+  }
+  return segments_intersect(a, b, c, d);
+}
+
+// Past this many edges the pairs to test come from a grid of the edges' boxes.
+constexpr int kEdgesTestedPairwise = 32;
+
+}  // namespace
+
 std::optional<std::pair<int, int>> find_self_intersection(std::span<const Point> polygon) {
   const int n = static_cast<int>(polygon.size());
+  if (n <= kEdgesTestedPairwise) {
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 1; j < n; ++j)
+        if (edges_meet(polygon, i, j)) return std::pair{i, j};
+    return std::nullopt;
+  }
+  // Edges that meet have boxes that overlap: the same first pair as testing every pair.
+  std::vector<Box> boxes(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) {
-    const Point a = polygon[i];
-    const Point b = polygon[(i + 1) % n];
-    for (int j = i + 1; j < n; ++j) {
-      const bool adjacent = (j == i + 1) || (i == 0 && j == n - 1);
-      const Point c = polygon[j];
-      const Point d = polygon[(j + 1) % n];
-      if (adjacent) {
-        // Adjacent edges share a vertex; they intersect improperly only when they fold back
-        // onto each other (collinear and overlapping beyond the shared vertex).
-        const Point shared = (j == i + 1) ? b : a;
-        const Point other_i = (j == i + 1) ? a : b;
-        const Point other_j = (j == i + 1) ? d : c;
-        if (orient(other_i, shared, other_j) == 0.0 &&
-            dot(other_i - shared, other_j - shared) > 0.0)
-          return std::pair{i, j};
-        continue;
-      }
-      if (segments_intersect(a, b, c, d)) return std::pair{i, j};
-    }
+    boxes[i].add(polygon[i]);
+    boxes[i].add(polygon[(i + 1) % n]);
+  }
+  const SpatialGrid grid(boxes);
+  for (int i = 0; i < n; ++i) {
+    int first = n;
+    grid.for_each_overlap(boxes[i], [&](int j) {
+      if (j > i && j < first && edges_meet(polygon, i, j)) first = j;
+    });
+    if (first < n) return std::pair{i, first};
   }
   return std::nullopt;
 }

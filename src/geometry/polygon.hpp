@@ -36,8 +36,10 @@ bool segments_intersect(Point a, Point b, Point c, Point d);
 // (a + t (b − a)); empty when the lines are parallel.
 std::optional<double> line_intersection_parameter(Point a, Point b, Point c, Point d);
 
-// First pair of non-adjacent edges that intersect, as edge indices (i, j), i < j; the edge i
-// runs from vertex i to vertex i+1. O(n²): for input validation, not for hot loops.
+// First pair of non-adjacent edges that intersect (or adjacent ones folded back onto each
+// other), as edge indices (i, j), i < j, the first i then the first j; the edge i runs from
+// vertex i to vertex i+1. Past a few dozen edges only the pairs whose boxes overlap are tested
+// (a grid of the edges' boxes): time near-linear in n for a polygon whose edges are short.
 std::optional<std::pair<int, int>> find_self_intersection(std::span<const Point> polygon);
 
 // Point in polygon by the crossing-number rule; points on the boundary may go either way.
