@@ -53,6 +53,7 @@ struct BlockNetwork {
   int merged_small = 0;           // blocks below min_block_area, merged
   int merged_thin = 0;            // blocks the aperture would have turned inside out or halved, merged
   int unmerged_small = 0;         // blocks below min_block_area with no neighbour to merge into
+  long merge_visits = 0;          // blocks the merges looked at: slivers taken from their queue, neighbours weighed
 };
 
 // Why no network could be made, and which input it is about.
@@ -66,15 +67,16 @@ class BlockNetworkError : public std::runtime_error {
   Cause cause_;
 };
 
-// The merge of a block into its neighbour:
+// The merge of a block into its neighbour (block_merging.hpp):
 //   the neighbour is the one it shares the longest boundary with (of equal ones, the first),
 //   among those whose shared boundary is one chain of edges and whose union is simple;
 //   the union walks the block's own edges from the chain's end round to its start, then the
 //   neighbour's, so that every other edge and its fracture id are kept.
-// Blocks below the minimum area are merged, smallest first, until none is left (or none can
-// be merged); then every block is shrunk by the aperture, and one the aperture would turn
-// inside out or shrink to less than half its area is merged the same way and the shrink
-// tried again. Throws BlockNetworkError when a block can be neither shrunk nor merged, or
+// Blocks below the minimum area are merged, smallest first (of equal ones, the first), until
+// none is left (or none can be merged); then every block is shrunk by the aperture, and one
+// the aperture would turn inside out or shrink to less than half its area is merged the same
+// way and the shrink tried again. Each merge looks at the block and its neighbours only, so
+// the whole takes time near-linear in the number of blocks. Throws BlockNetworkError when a block can be neither shrunk nor merged, or
 // the traces make a block that touches itself.
 BlockNetwork build_block_network(const BlockNetworkRequest& request);
 

@@ -256,21 +256,30 @@ CutResult cut_domain(const Polygon& domain, const std::vector<Segment2>& fractur
     // only there: its walk from the first pass to the second (or the rest) turns clockwise,
     // round the cluster. The face would be a block with a hole, pinched at the vertex: the
     // cluster is dropped like an island (its boundary here, then its inside as an island).
+    // Every such face is dropped in the same round, but for one that lost an edge to another's
+    // drop, which waits for the next round's faces: a face whose edges all remain is the same
+    // face next round, walked from the same start, and what a drop makes an island is dropped
+    // either way, so the edges dropped in the end are those of dropping one face a round.
+    std::vector<bool> gone(faces.half.size() / 2, false);
     for (const std::vector<int>& loop : faces.loops) {
+      if (std::any_of(loop.begin(), loop.end(), [&](int h) { return gone[h / 2]; })) continue;
       Polygon walk;
       for (int h : loop) walk.push_back(points[faces.half[h].first]);
       if (signed_area(walk) <= 0.0) continue;  // the outer face
       std::map<int, std::size_t> first_pass;
-      for (std::size_t k = 0; k < loop.size() && !changed; ++k) {
+      for (std::size_t k = 0; k < loop.size(); ++k) {
         const auto [it, fresh] = first_pass.emplace(faces.half[loop[k]].first, k);
         if (fresh) continue;
         const Polygon part(walk.begin() + static_cast<std::ptrdiff_t>(it->second), walk.begin() + static_cast<std::ptrdiff_t>(k));
         const bool part_goes_round = signed_area(part) < 0.0;
         for (std::size_t m = 0; m < loop.size(); ++m)
-          if ((m >= it->second && m < k) == part_goes_round) drop_half_edge(loop[m]);
+          if ((m >= it->second && m < k) == part_goes_round) {
+            drop_half_edge(loop[m]);
+            gone[loop[m] / 2] = true;
+          }
         changed = true;
+        break;
       }
-      if (changed) break;
     }
     if (!changed) break;
   }

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "geometry/joint_sets.hpp"
+#include "geometry/portable_random.hpp"
 
 namespace hydrodda::geometry {
 namespace {
@@ -107,6 +108,76 @@ TEST(BlockNetwork, SliverMergesIntoTheNeighbourWithTheLongestSharedEdge) {
   // A threshold given explicitly keeps them.
   const BlockNetwork kept = build_block_network({kSquare, traces, {}, 1e-3, 0.0});
   EXPECT_EQ(kept.blocks.size(), 5u);
+}
+
+// Random short traces (1 to 3 m) in a 30 m square, seeded: 1,500 make some two thousand
+// blocks, with slivers. Directions from uniform draws and a square root only, so the same
+// traces on every machine.
+std::vector<FractureTrace> random_short_traces(int count, std::uint64_t seed) {
+  PortableRandom random(seed);
+  std::vector<FractureTrace> traces;
+  while (static_cast<int>(traces.size()) < count) {
+    const Point middle{30.0 * random.uniform(), 30.0 * random.uniform()};
+    const Point d{random.uniform() - 0.5, random.uniform() - 0.5};
+    const double norm = std::sqrt(dot(d, d)), half = 0.5 + random.uniform();
+    if (norm < 0.1 || norm > 0.5) continue;  // uniform directions: inside a ring
+    const Point along = (half / norm) * d;
+    traces.push_back({{middle - along, middle + along}, {TraceSource::file, -1, static_cast<int>(traces.size()) + 1}});
+  }
+  return traces;
+}
+
+// The blocks' vertices (to a nanometre) and edges' fractures, hashed (FNV-1a).
+std::uint64_t hash_blocks(const BlockNetwork& net) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  const auto mix = [&](std::int64_t v) { h = (h ^ static_cast<std::uint64_t>(v)) * 0x100000001b3ull; };
+  for (std::size_t b = 0; b < net.blocks.size(); ++b) {
+    mix(static_cast<std::int64_t>(net.blocks[b].size()));
+    for (std::size_t k = 0; k < net.blocks[b].size(); ++k) {
+      mix(std::llround(net.blocks[b][k].x * 1e9));
+      mix(std::llround(net.blocks[b][k].y * 1e9));
+      mix(net.edge_fractures[b][k]);
+    }
+  }
+  return h;
+}
+
+TEST(BlockNetwork, SliversOfARandomNetworkMergeAsBefore) {
+  // 1,500 random traces: the blocks and counts the merging made when it scanned every block
+  // for the smallest sliver and for its neighbours (measured then), as it keeps its own now.
+  const Polygon square{{0, 0}, {30, 0}, {30, 30}, {0, 30}};
+  const BlockNetwork net = build_block_network({square, random_short_traces(1500, 5), {}, 0.0, 0.0});
+  EXPECT_EQ(net.cut_blocks, 1710);
+  EXPECT_EQ(net.merged_small, 420);
+  EXPECT_EQ(net.unmerged_small, 0);
+  EXPECT_EQ(net.blocks.size(), 1290u);
+  EXPECT_EQ(net.faces.size(), 4079u);
+  EXPECT_EQ(hash_blocks(net), 0x2b65def46b111e4full);
+  // A smaller threshold and a 5 cm aperture: most merges are of blocks too thin for it.
+  const BlockNetwork opened = build_block_network({square, random_short_traces(1500, 5), {}, 1e-4, 0.05});
+  EXPECT_EQ(opened.merged_small, 69);
+  EXPECT_EQ(opened.merged_thin, 862);
+  EXPECT_EQ(opened.blocks.size(), 779u);
+  EXPECT_EQ(opened.faces.size(), 3344u);
+  EXPECT_EQ(hash_blocks(opened), 0xbac29cd63272f44dull);
+}
+
+TEST(BlockNetwork, EachMergeLooksAtItsNeighboursOnly) {
+  // The merges' work grows with the slivers, not with the blocks times the slivers: on
+  // networks of 1,700 and 7,000 blocks, the blocks looked at per merge stay a handful (a
+  // block's neighbours and its turn in the queue), where a scan of every block would look at
+  // thousands. With an aperture, the thin blocks' merges too.
+  const Polygon square{{0, 0}, {30, 0}, {30, 30}, {0, 30}};
+  for (int count : {1500, 3000}) {
+    for (double aperture : {0.0, 0.01}) {
+      SCOPED_TRACE(std::to_string(count) + " traces, aperture " + std::to_string(aperture));
+      const BlockNetwork net = build_block_network({square, random_short_traces(count, 5), {}, 0.0, aperture});
+      const int merges = net.merged_small + net.merged_thin + net.unmerged_small;
+      ASSERT_GT(net.cut_blocks, 1000);
+      ASSERT_GT(merges, 100);
+      EXPECT_LT(static_cast<double>(net.merge_visits) / merges, 12.0) << net.merge_visits << " visits, " << merges << " merges";
+    }
+  }
 }
 
 TEST(BlockNetwork, BlocksTooThinForTheApertureAreMerged) {
