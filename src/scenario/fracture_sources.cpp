@@ -9,6 +9,7 @@
 #include <limits>
 #include <sstream>
 
+#include "geometry/trace_crossings.hpp"
 #include "scenario/input_files.hpp"
 #include "scenario/validation.hpp"
 
@@ -20,6 +21,10 @@ namespace {
 constexpr double kMaxTracesPerSet = 100'000;
 // Bad rows of a fractures file reported one by one; a file of many is likely no such file at all.
 constexpr int kMaxRowErrors = 20;
+// A fractures file's limits: its rows, and the blocks its traces could make (estimated from
+// their crossings): 10^6 blocks take some 35 s and 1.5 GB to cut, and are past what a model runs.
+constexpr std::size_t kMaxFileTraces = 100'000;
+constexpr double kMaxFileBlocks = 1e6;
 
 std::string_view trim(std::string_view s) {
   while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
@@ -85,6 +90,37 @@ ReadRow read_row(std::string_view line, bool may_be_header) {
       return {false, std::nullopt, fmt::format("{}: {} = {} is not a finite number", expected, kColumns[i], fields[i])};
   }
   return {false, Segment{{values[0], values[1]}, {values[2], values[3]}}, {}};
+}
+
+// Refuses a fractures file of more rows than can be cut, or of traces that would cross into
+// more blocks than can be made, before any cutting (the crossings are estimated over the part
+// of the domain's box the traces span).
+void check_file_size(ReadContext& ctx, int line, const std::string& key, const std::filesystem::path& path,
+                     const GeometryDefinition& geometry) {
+  const std::vector<FileFracture>& rows = geometry.file_fractures;
+  if (rows.size() > kMaxFileTraces) {
+    ctx.error(line, key, fmt::format("{} holds {} traces; at most {} can be cut into blocks", path.string(),
+                                     rows.size(), kMaxFileTraces));
+    return;
+  }
+  std::vector<geometry::Segment2> traces;
+  geometry::Box span;
+  for (const FileFracture& f : rows) {
+    traces.push_back({f.segment.from, f.segment.to});
+    span.add(f.segment.from);
+    span.add(f.segment.to);
+  }
+  if (geometry.domain.size() >= 3) {
+    const geometry::Box domain = geometry::bounding_box(geometry.domain);
+    span.lo = {std::max(span.lo.x, domain.lo.x), std::max(span.lo.y, domain.lo.y)};
+    span.hi = {std::min(span.hi.x, domain.hi.x), std::min(span.hi.y, domain.hi.y)};
+  }
+  const double blocks = geometry::estimate_crossings(traces, span);
+  if (blocks > kMaxFileBlocks)
+    ctx.error(line, key,
+              fmt::format("the {} traces of {} would cut the domain into some {:.2g} blocks (as often as they would "
+                          "cross, spread evenly over the {:.3g} m x {:.3g} m they span); at most {:g} can be made",
+                          rows.size(), path.string(), blocks, span.width(), span.height(), kMaxFileBlocks));
 }
 
 }  // namespace
@@ -173,6 +209,8 @@ void read_fractures_file(ReadContext& ctx, const TableView& g, const std::filesy
   geometry.file_fractures = parse_fracture_rows(text.str(), path.string(), key, ctx.errors);
   if (geometry.file_fractures.empty())
     ctx.error(line, key, fmt::format("{} holds no fracture rows x1,y1,x2,y2", path.string()));
+  else
+    check_file_size(ctx, line, key, path, geometry);
   check_file_traces_meet_domain(ctx, path.string(), key, geometry);
 }
 
