@@ -103,15 +103,11 @@ std::string describe_results_kept(int finished) {
 }
 
 // A failed run's status line on its figures: "failed at pass 6: " and what failed, the
-// message's first clause (after "coupling iteration 6 failed: ", up to its first ':' or ';'),
-// cut to part of a line: the figures shrink a long line to their width.
+// message's first clause after "coupling iteration 6 failed: ".
 std::string describe_failure_for_figures(int pass, const std::string& message) {
-  constexpr std::size_t kLine = 70;
   const std::string prefix = fmt::format("coupling iteration {} failed: ", pass);
-  std::string what = message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message;
-  what = what.substr(0, what.find_first_of(":;"));
-  if (what.size() > kLine) what = what.substr(0, kLine - 3) + "...";
-  return fmt::format("failed at pass {}: {}", pass, what);
+  return describe_status_for_figures(fmt::format("failed at pass {}", pass),
+                                     message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message);
 }
 
 // The largest opening of any fracture (fractures.csv's max_aperture), 0 when all are closed.
@@ -357,6 +353,16 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
     }
     return RunFailure(RunStatus::failed, std::move(message), std::move(summary));
   };
+  // A run interrupted after its last finished pass: its summary, and its figures saying so.
+  const auto interrupted = [&](std::string message) {
+    output::RunSummary summary = current_summary();
+    try {
+      draw_run_figures(describe_status_for_figures(fmt::format("interrupted after pass {}", loop.iterations()), ""));
+    } catch (const std::exception& e) {
+      spdlog::warn("the interrupted run's figures could not be drawn: {}", e.what());
+    }
+    return RunFailure(RunStatus::interrupted, std::move(message), std::move(summary));
+  };
   // After every finished pass: the checkpoint of the state the model continues from
   // (CoupledModel::run_pass), which a resumed run continues from too.
   const auto save_checkpoint = [&] {
@@ -374,8 +380,7 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
   try {
     for (int k = loop.iterations(); k < s.coupling.max_iterations && !converged; ++k) {
       if (context.stop_requested())
-        throw RunFailure(RunStatus::interrupted, fmt::format("interrupted after coupling iteration {}", loop.iterations()),
-                         current_summary());
+        throw interrupted(fmt::format("interrupted after coupling iteration {}", loop.iterations()));
       if (context.stop_after && loop.iterations() >= *context.stop_after) {
         stopped = true;
         break;
@@ -464,10 +469,8 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
   } catch (const coupling::PassInterrupted& e) {
     // The model is back at the last finished pass, the state the run folder and the checkpoint
     // hold (before the first pass: the blocks as built), so that summary.json describes it.
-    throw RunFailure(RunStatus::interrupted,
-                     fmt::format("interrupted: {}; the results are those of coupling iteration {}", e.what(),
-                                 loop.iterations()),
-                     current_summary());
+    throw interrupted(
+        fmt::format("interrupted: {}; the results are those of coupling iteration {}", e.what(), loop.iterations()));
   } catch (const std::exception& e) {
     // A DDA step that fails while blocks fly off is the escape, not the step, to report.
     const std::vector<coupling::EscapingBlock> escaping = loop.blocks_beyond_their_size();

@@ -58,6 +58,14 @@ void draw_figures(const scenario::Scenario& s, const output::RunFolder& folder, 
   }
 }
 
+std::string describe_status_for_figures(const std::string& head, const std::string& message) {
+  constexpr std::size_t kLine = 70;
+  if (message.empty()) return head;
+  std::string what = message.substr(0, message.find_first_of(":;"));
+  if (what.size() > kLine) what = what.substr(0, kLine - 3) + "...";
+  return head + ": " + what;
+}
+
 void draw_convergence(const scenario::Scenario& s, const output::RunFolder& folder, const ConvergenceHistory& h) {
   if (s.output.figures.empty() || h.iteration.empty()) return;
   output::LinePlotSpec plot;

@@ -39,6 +39,11 @@ struct ConvergenceHistory {
 // joints show), each titled with the scenario's title.
 void draw_figures(const scenario::Scenario& scenario, const output::RunFolder& folder, const FlowPicture& picture);
 
+// A stopped run's status line on its figures: `head` ("failed at pass 6", "interrupted at step
+// 40"), then, when `message` is not empty, ": " and its first clause (up to its first ':' or
+// ';'), cut to part of a line: the figures shrink a long line to their width.
+std::string describe_status_for_figures(const std::string& head, const std::string& message);
+
 // convergence.*: head and displacement change (log scale) against coupling iteration, with the
 // tolerance both must fall below.
 void draw_convergence(const scenario::Scenario& scenario, const output::RunFolder& folder,

@@ -1,9 +1,11 @@
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include <chrono>
 #include <optional>
 
+#include "run/figures.hpp"
 #include "run/fracture_output.hpp"
 #include "run/model_building.hpp"
 #include "run/mechanics_model.hpp"
@@ -43,30 +45,50 @@ output::RunSummary run_mechanics(const RunContext& context) {
   const std::optional<FractureMeter> meter = make_fracture_meter(s);
   const hydro::JointApertureLaw joint_law = make_joint_aperture_law(s);
   FractureOutput fractures(context.folder, /*with_flow=*/false);
-  std::vector<geometry::Polygon> polygons;
-  std::optional<FractureState> fracture_state;  // at the last output step
+  std::optional<FractureState> fracture_state;  // of the blocks as they are, when measured at this step
+  // The blocks and fractures of the last output step: what the figure of a run that stops shows.
+  struct OutputState {
+    long long step = 0;
+    std::vector<geometry::Polygon> polygons;
+    FractureState fractures;
+  };
+  std::optional<OutputState> last_output;
   const TellModelAtEnd tell_model_at_end(context.callbacks, model, fracture_state);
   // Blocks and contacts, and the fractures' rows and lines, at an output step.
   const auto write_step = [&](long long step, double time) {
     paraview.write_blocks(static_cast<int>(step), time, system);
     if (!meter) return;
-    polygons.clear();
-    for (int b = 0; b < system.block_count(); ++b) polygons.push_back(system.polygon(b));
-    fracture_state = meter->measure(polygons, system.penetration_tolerance(), system.contacts(), joint_law);
-    const FractureState& state = *fracture_state;
-    fractures.add_rows(step, time, state);
-    if (s.output.fields.fractures) fractures.write_series(static_cast<int>(step), time, state);
+    OutputState& out = last_output.emplace();
+    out.step = step;
+    for (int b = 0; b < system.block_count(); ++b) out.polygons.push_back(system.polygon(b));
+    out.fractures = meter->measure(out.polygons, system.penetration_tolerance(), system.contacts(), joint_law);
+    fracture_state = out.fractures;
+    fractures.add_rows(step, time, out.fractures);
+    if (s.output.fields.fractures) fractures.write_series(static_cast<int>(step), time, out.fractures);
+  };
+  const auto draw_figure = [&](const std::string& status) {
+    if (last_output)
+      draw_aperture_figure(s, context.folder, last_output->polygons, last_output->fractures,
+                           {fmt::format("DDA step {}", last_output->step), status});
+  };
+  // A run that stops before its end: its figure of the last output step says how it stopped.
+  const auto stop = [&](RunStatus status, std::string message, const std::string& figure_status) {
+    write_tables();
+    try {
+      draw_figure(figure_status);
+    } catch (const std::exception& e) {
+      spdlog::warn("the figure of the stopped run could not be drawn: {}", e.what());
+    }
+    return RunFailure(status, std::move(message), model.summary());
   };
   write_step(0, 0.0);
   long long last_written = 0;
   try {
     while (!model.finished()) {
-      if (context.stop_requested()) {
-        write_tables();
-        throw RunFailure(RunStatus::interrupted,
-                         fmt::format("interrupted at step {} (t = {:g} s)", model.steps(), system.time()),
-                         model.summary());
-      }
+      if (context.stop_requested())
+        throw stop(RunStatus::interrupted,
+                   fmt::format("interrupted at step {} (t = {:g} s)", model.steps(), system.time()),
+                   fmt::format("interrupted at step {}", model.steps()));
       const dda::StepReport r = model.step();
       fracture_state.reset();  // no longer the blocks' state: measured again at an output step
       const long long step = model.steps();
@@ -99,19 +121,18 @@ output::RunSummary run_mechanics(const RunContext& context) {
   } catch (const RunFailure&) {
     throw;
   } catch (const std::exception& e) {
-    write_tables();
     // The fractures were measured at an earlier output step, not at the state the run failed
     // in: a front end is told of none, as summary.json gives none.
     fracture_state.reset();
-    throw RunFailure(RunStatus::failed,
-                     fmt::format("mechanics failed at step {} (t = {:g} s): {}", model.steps() + 1, system.time(),
-                                 e.what()),
-                     model.summary());
+    const long long failed = model.steps() + 1;
+    throw stop(RunStatus::failed,
+               fmt::format("mechanics failed at step {} (t = {:g} s): {}", failed, system.time(), e.what()),
+               describe_status_for_figures(fmt::format("failed at step {}", failed), e.what()));
   }
   write_tables();
   if (last_written != model.steps()) write_step(model.steps(), system.time());
   if (const std::string unreached = describe_unreached_displacement(s, system); !unreached.empty())
-    throw RunFailure(RunStatus::failed, unreached, model.summary());
+    throw stop(RunStatus::failed, unreached, describe_status_for_figures("failed", unreached));
 
   output::RunSummary summary = model.summary();
   if (fracture_state) summary.fractures = summarise_fractures(*fracture_state);
@@ -120,8 +141,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
   summary.timings.push_back(
       {"mechanics", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
   context.write_summary(summary);  // the run's result is on disk before the figure is drawn
-  if (fracture_state)  // measured at the last step, written just above or in the loop
-    draw_aperture_figure(s, context.folder, polygons, *fracture_state, {fmt::format("DDA step {}", model.steps())});
+  draw_figure("");  // of the last step, written just above or in the loop
   return summary;
 }
 

@@ -17,6 +17,7 @@
 #include "../cli/run_program.hpp"
 #include "output/checkpoint.hpp"
 #include "run/coupled_model.hpp"
+#include "run/figures.hpp"
 #include "run/model_building.hpp"
 #include "run/run.hpp"
 #include "scenario/overrides.hpp"
@@ -263,6 +264,7 @@ TEST(RunLayer, AStopRequestedAfterTheFirstPassLeavesTheFolderAtThatPass) {
   EXPECT_EQ(count_lines(parts.path / "history.csv"), 2u);  // header and pass 1
   EXPECT_TRUE(fs::exists(parts.path / "fluid_0001.vtu"));
   EXPECT_FALSE(fs::exists(parts.path / "fluid_0002.vtu"));
+
   const auto checkpoint = hydrodda::output::decode_checkpoint(read_file(parts.path / "checkpoint.bin"));
   EXPECT_EQ(checkpoint.coupling.iterations, 1);
   EXPECT_FALSE(checkpoint.converged);
@@ -389,6 +391,60 @@ TEST(RunLayer, AFailureInTheFirstPassLeavesNoFlowToReport) {
   EXPECT_NE(failed.message.find("no coupling iteration finished: there are no results"), std::string::npos)
       << failed.message;
   EXPECT_FALSE(fs::exists(folder.path / "figures" / "head.png"));
+}
+
+// in_situ_column.toml (mechanics alone, nine joints) to step `steps`, its fields every 10.
+scenario::Scenario in_situ_column(int steps) {
+  const fs::path file = kVerification / "in_situ_column.toml";
+  const std::string text = scenario::apply_overrides(
+      read_file(file), file, {{"mechanics.steps", std::to_string(steps)}, {"output.every", "10"}});
+  return scenario::parse_scenario(text, file);
+}
+
+TEST(RunLayer, AFailedMechanicsRunDrawsItsLastOutputStepSayingHowItFailed) {
+  // A step that fails at step 26 (a stop request that throws stands for it): the run fails,
+  // and its apertures figure is drawn of step 20, the last output step, with a status line.
+  // The same state drawn by a run that ends at step 20 has no status line: the pictures differ.
+  Folder failed_folder("mechanics-failed"), finished_folder("mechanics-to-20");
+  int asked = 0;
+  run::Callbacks callbacks;
+  callbacks.stop_requested = [&] {
+    if (++asked == 26) throw std::runtime_error("a DDA step failed: its matrix is singular");
+    return false;
+  };
+  const run::RunResult failed = run::run(in_situ_column(100), {failed_folder.path}, callbacks);
+  ASSERT_EQ(failed.status, run::RunStatus::failed) << failed.message;
+  EXPECT_EQ(failed.message.rfind("mechanics failed at step 26 ", 0), 0u) << failed.message;
+  const fs::path figure = failed_folder.path / "figures" / "apertures.png";
+  ASSERT_TRUE(fs::exists(figure));
+
+  const run::RunResult finished = run::run(in_situ_column(20), {finished_folder.path});
+  ASSERT_EQ(finished.status, run::RunStatus::finished) << finished.message;
+  EXPECT_NE(read_file(figure), read_file(finished_folder.path / "figures" / "apertures.png"));
+  EXPECT_EQ(run::describe_status_for_figures("failed at step 26", "a DDA step failed: its matrix is singular"),
+            "failed at step 26: a DDA step failed");
+}
+
+TEST(RunLayer, AnInterruptedMechanicsRunDrawsItsLastOutputStep) {
+  Folder folder("mechanics-interrupted");
+  Recorder recorder;
+  recorder.stop_after_reports = 15;
+  const run::RunResult stopped = run::run(in_situ_column(100), {folder.path}, recorder.callbacks());
+  ASSERT_EQ(stopped.status, run::RunStatus::interrupted) << stopped.message;
+  EXPECT_EQ(stopped.message, "interrupted at step 15 (t = 0.15 s)");
+  EXPECT_TRUE(fs::exists(folder.path / "figures" / "apertures.png"));
+}
+
+TEST(RunLayer, AnInterruptedCoupledRunDrawsItsLastFinishedPass) {
+  scenario::Scenario s = scenario::read_scenario(kVerification / "coupled_hydrostatic_column.toml");
+  s.output.figures = {"png"};
+  Folder folder("coupled-interrupted");
+  Recorder recorder;
+  recorder.stop_after_reports = 1;
+  const run::RunResult stopped = run::run(s, {folder.path}, recorder.callbacks());
+  ASSERT_EQ(stopped.status, run::RunStatus::interrupted) << stopped.message;
+  for (const char* figure : {"head.png", "permeability.png", "convergence.png", "apertures.png"})
+    EXPECT_TRUE(fs::exists(folder.path / "figures" / figure)) << figure;
 }
 
 TEST(RunLayer, ACappedMatrixIsNamedInAWarning) {
