@@ -1,11 +1,10 @@
-// examples/paraview/render_run.py, the script docs/paraview.md shows, run as a user runs it:
-// `xvfb-run -a pvbatch render_run.py RUN_FOLDER FIELD OUT.png` on a small coupled run. Checks
-// that it draws the fluid, blocks and fractures series at the run's last coupling iteration
-// and writes a PNG of the size it asks for. Skipped, saying why, when pvbatch or xvfb-run is
+// examples/paraview/render_run.py, the script docs/paraview.md shows, run as a user runs it,
+// `pvbatch render_run.py RUN_FOLDER FIELD OUT.png` on an X server of its own, on a small
+// coupled run. Checks that it draws the fluid, blocks and fractures series at the run's last
+// coupling iteration and writes a PNG of the size it asks for. Skipped, saying why, when pvbatch or Xvfb is
 // not installed (Debian packages paraview, python3-paraview, xvfb, xauth).
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -20,7 +19,7 @@ using hydrodda::testing::run_program;
 namespace {
 
 TEST(ParaviewScript, RendersARunFolderHeadless) {
-  for (const char* tool : {"pvbatch", "xvfb-run"})
+  for (const char* tool : {"pvbatch", "Xvfb"})
     if (run_command(std::string("command -v ") + tool).exit_code != 0)
       GTEST_SKIP() << tool << " is not installed (Debian packages paraview, python3-paraview, xvfb, xauth): "
                    << "examples/paraview/render_run.py was not run";
@@ -35,22 +34,20 @@ TEST(ParaviewScript, RendersARunFolderHeadless) {
   const int iterations = summary.at("iterations").get<int>();
 
   const fs::path png = out / "pressure.png";
-  // xvfb-run -a picks its display by looking for lock files, without taking one: X servers
-  // started at the same moment (another suite on the host) pick the same display, and all but
-  // one client then fail to connect (3 of 6 started 0.3 s apart, measured); it was also seen
-  // once in a whole suite with no other X server running. Either way the X server failed, not
-  // the script: it is tried again, up to three times, and only for those messages. The search
-  // starts from a display of this process's own (-n), so that two suites seldom meet at all.
-  const std::string draw = "xvfb-run -a -n " + std::to_string(100 + ::getpid() % 800) + " pvbatch " +
-                           (source / "examples/paraview/render_run.py").string() + " " + out.string() +
-                           " pressure " + png.string();
-  const auto x_server_failed = [](const std::string& output) {
-    return output.find("bad X server connection") != std::string::npos ||
-           output.find("Xvfb failed to start") != std::string::npos;
-  };
-  auto drawn = run_command(draw);
-  for (int retry = 0; retry < 2 && drawn.exit_code != 0 && x_server_failed(drawn.output); ++retry)
-    drawn = run_command(draw);
+  // The X server is started here rather than by xvfb-run -a, which guesses a free display from
+  // lock files without taking one (two suites' servers met on one display, the client failing
+  // with "bad X server connection"). Xvfb -displayfd takes a free display itself and writes
+  // its number once it accepts connections: the script starts then. -noreset: pvbatch
+  // connects once early and again to render, and a server that resets as the first
+  // connection closes refused the second.
+  const std::string draw =
+      "bash -c 'exec 3< <(exec Xvfb -displayfd 1 -noreset -screen 0 1280x1024x24 -nolisten tcp 2> \"$0/xvfb.log\"); "
+      "xvfb=$!; "
+      "if ! read -r display <&3; then echo \"Xvfb failed to start:\"; cat \"$0/xvfb.log\"; exit 90; fi; "
+      "DISPLAY=:$display pvbatch \"$@\"; status=$?; kill $xvfb; exit $status' " +
+      out.string() + " " + (source / "examples/paraview/render_run.py").string() + " " + out.string() +
+      " pressure " + png.string();
+  const auto drawn = run_command(draw);
   ASSERT_EQ(drawn.exit_code, 0) << drawn.output;
   EXPECT_NE(drawn.output.find("drew fluid, blocks, fractures at time " + std::to_string(iterations) +
                               ", coloured by pressure"),
