@@ -3,7 +3,11 @@
 // under normal load follows the Barton–Bandis closure. Both in an all but impermeable matrix,
 // where the right side's outflow is the joint's flow:
 //   Q = (ρ g / μ) (a³ / 12) Δh / L,
-// L the joint's length, Δh = 1 mm between the left and right sides.
+// L the joint's length, Δh = 1 mm between the left and right sides (the parallel-plate law,
+// Witherspoon et al. 1980), and the closure under an effective normal stress σn,
+//   a = a_r + V_m − σn V_m / (k_ni V_m + σn)   (Barton, Bandis
+// & Bakhtar 1985). Tolerances: the closed joint's flow within 2% on every mesh; the loaded
+// joint's flow within 1%, its normal stress within 1% and its aperture within 0.5%.
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -16,8 +20,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "result_files.hpp"
-#include "run_program.hpp"
+#include "../cli/result_files.hpp"
+#include "../cli/run_program.hpp"
 
 namespace fs = std::filesystem;
 using hydrodda::testing::column;

@@ -2,7 +2,10 @@
 // program: it converges, it stays mirror-symmetric, and a larger head differential flexes the
 // layer more and raises the central region's conductivity (the trend of the paper's Fig. 9);
 // and their answers, and the up-down six-block model's with settling passes, do not move with
-// the DDA steps a pass.
+// the DDA steps a pass. Reference: Rouainia et al. (2006), the flexure trends of Figs. 9 and 11
+// (qualitative: more head differential or end load, more conductivity). Tolerances: mirror
+// pairs within 1% of the largest displacement; the answers at 100 and 400 steps a pass within
+// 1e-5 (asymmetric flexure) and 1e-6 (six blocks) of K/K_m.
 
 #include <gtest/gtest.h>
 
@@ -14,7 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "run_program.hpp"
+#include "../cli/run_program.hpp"
 
 using hydrodda::testing::read_csv;
 using hydrodda::testing::run_program;
