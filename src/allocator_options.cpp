@@ -5,7 +5,7 @@
 // costs a fault of some 10 µs on first touch: a 1,601-block wall's first step touches some
 // 30 MB. On huge pages that is one fault per 2 MiB, and jemalloc packs arrays of every size
 // into them and reuses freed memory rather than handing it back to the kernel, where the C
-// library rounds each large array to its own pages (docs/performance.md, "Memory").
+// library rounds each large array to its own pages (docs/studies/dda_step.md, "Memory:").
 //
 // jemalloc reads its options from the string `malloc_conf` of the program (jemalloc(3),
 // "TUNING"); the environment variable MALLOC_CONF still overrides them. This file is compiled

@@ -1,7 +1,7 @@
 #pragma once
 // Growing the step's large arrays (the factor's blocks, the contacts, the springs) without
 // touching more fresh memory than they need: fresh pages cost a page fault each on first
-// touch, which on a virtual machine is some 10 µs (docs/performance.md, "Memory").
+// touch, which on a virtual machine is some 10 µs (docs/studies/dda_step.md, "Memory:").
 
 #include <cstddef>
 
