@@ -11,7 +11,7 @@
 #include "cli/hold_points.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/progress.hpp"
-#include "cli/sweep_ranks.hpp"
+#include "sweep/ranks.hpp"
 #include "cli/version.hpp"
 
 namespace hydrodda::cli {
@@ -89,7 +89,7 @@ const CLI::Validator kWholeNumberFromOne(
 
 int run_app(int argc, char** argv) {
   CLI::App app{"hydrodda: fluid flow through deforming, fractured, blocky rock (HYDRO-DDA)"};
-  app.set_version_flag("--version", std::string("hydrodda ") + kVersion + ", sweeps " + SweepRanks::build_description());
+  app.set_version_flag("--version", std::string("hydrodda ") + kVersion + ", sweeps " + sweep::SweepRanks::build_description());
   app.require_subcommand(1);
   bool quiet = false;
   bool verbose = false;
@@ -178,9 +178,9 @@ int run_app(int argc, char** argv) {
   }
   if (*sweep_cmd) {
     if (!sweep_output.empty()) sweep.output = sweep_output;
-    std::optional<SweepRanks> ranks;
+    std::optional<sweep::SweepRanks> ranks;
     try {
-      ranks.emplace();
+      ranks.emplace(interrupt_requested);
     } catch (const std::runtime_error& e) {
       spdlog::error("sweep: {}", e.what());
       return kBadInput;

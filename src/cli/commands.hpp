@@ -8,6 +8,10 @@
 
 #include "cli/progress.hpp"
 
+namespace hydrodda::sweep {
+class SweepRanks;
+}
+
 namespace hydrodda::cli {
 
 struct RunOptions {
@@ -33,8 +37,7 @@ struct SweepOptions {
 
 int check_command(const std::filesystem::path& scenario);
 int run_command(const RunOptions& options);
-class SweepRanks;
 // Under mpirun, rank 0's sweep (the other ranks serve it, cli/sweep_ranks.hpp).
-int sweep_command(const SweepOptions& options, SweepRanks& ranks);
+int sweep_command(const SweepOptions& options, sweep::SweepRanks& ranks);
 
 }  // namespace hydrodda::cli

@@ -4,11 +4,11 @@
 #include <stdexcept>
 #include <string>
 
-#include "cli/sweep_ranks.hpp"
+#include "sweep/ranks.hpp"
 
-namespace hydrodda::cli {
+namespace hydrodda::sweep {
 
-SweepRanks::SweepRanks() {
+SweepRanks::SweepRanks(std::function<bool()> stop_requested) : stop_requested_(std::move(stop_requested)) {
   const int launched = launcher_rank_count();
   if (launched > 1)
     throw std::runtime_error("this hydrodda was built without MPI, so " + std::to_string(launched) +
@@ -28,4 +28,4 @@ int SweepRanks::serve() { throw std::logic_error("SweepRanks::serve: one rank on
 
 std::string SweepRanks::build_description() { return "without MPI"; }
 
-}  // namespace hydrodda::cli
+}  // namespace hydrodda::sweep

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "output/plot_line.hpp"
-#include "run/sweep_plan.hpp"
+#include "sweep/cases.hpp"
 
-namespace hydrodda::run {
+namespace hydrodda::sweep {
 
 // What became of a case. Only `ok` is a result: `not_converged` ran to its end without meeting
 // the coupling tolerance, `failed` stopped on an error (or left no summary), `interrupted`
@@ -97,4 +97,4 @@ class SweepResults {
   std::vector<std::string> boundary_names_;
 };
 
-}  // namespace hydrodda::run
+}  // namespace hydrodda::sweep

@@ -1,4 +1,4 @@
-#include "run/sweep_results.hpp"
+#include "sweep/results.hpp"
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -12,7 +12,7 @@
 #include "output/plot_line.hpp"
 #include "output/summary_reading.hpp"
 
-namespace hydrodda::run {
+namespace hydrodda::sweep {
 
 namespace {
 
@@ -316,4 +316,4 @@ std::string SweepResults::describe_not_ok() const {
   return text;
 }
 
-}  // namespace hydrodda::run
+}  // namespace hydrodda::sweep

@@ -1,4 +1,4 @@
-#include "cli/child_processes.hpp"
+#include "sweep/child_processes.hpp"
 
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -15,11 +15,10 @@
 #include <stdexcept>
 #include <thread>
 
-#include "cli/interrupt.hpp"
 
 extern char** environ;
 
-namespace hydrodda::cli {
+namespace hydrodda::sweep {
 
 namespace {
 
@@ -95,18 +94,19 @@ std::optional<int> poll_child_process(int pid) {
 }
 
 std::vector<std::size_t> run_child_processes(const std::vector<ChildCommand>& commands, int jobs,
-                                             const std::function<void(std::size_t, int)>& on_finish) {
+                                             const std::function<void(std::size_t, int)>& on_finish,
+                                             const std::function<bool()>& stop_requested) {
   const std::vector<std::string> env = child_environment();
   std::map<pid_t, std::size_t> running;
   std::size_t next = 0;
   bool forwarded = false;
   // Polled rather than blocking in waitpid, so that an interrupt is seen within 50 ms.
   while (next < commands.size() || !running.empty()) {
-    if (interrupt_requested() && !forwarded) {
+    if (stop_requested() && !forwarded) {
       for (const auto& [pid, index] : running) ::kill(pid, SIGINT);
       forwarded = true;
     }
-    while (!interrupt_requested() && next < commands.size() && static_cast<int>(running.size()) < jobs) {
+    while (!stop_requested() && next < commands.size() && static_cast<int>(running.size()) < jobs) {
       try {
         running[start_child(commands[next], env)] = next;
       } catch (const std::runtime_error&) {
@@ -139,4 +139,4 @@ std::vector<std::size_t> run_child_processes(const std::vector<ChildCommand>& co
   return never_started;
 }
 
-}  // namespace hydrodda::cli
+}  // namespace hydrodda::sweep

@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "cli/child_processes.hpp"
-#include "run/sweep_results.hpp"
+#include "sweep/child_processes.hpp"
+#include "sweep/results.hpp"
 
-namespace hydrodda::cli {
+namespace hydrodda::sweep {
 
 // What a sweep's cases are: each one's command and folder, and the summary.json columns read
 // from its result.
@@ -26,14 +26,14 @@ struct SweepPlan {
 };
 
 // Called on rank 0 as each case's result arrives, with the rank that ran it.
-using CaseFinished = std::function<void(std::size_t index, const run::CaseResult& result, int rank)>;
+using CaseFinished = std::function<void(std::size_t index, const CaseResult& result, int rank)>;
 
 class SweepRanks {
  public:
   // Joins the MPI job when an MPI launcher started the program (its variables are in the
   // environment). Throws std::runtime_error when one started it with several ranks and MPI is
   // not built in.
-  SweepRanks();
+  explicit SweepRanks(std::function<bool()> stop_requested);
   ~SweepRanks();
   SweepRanks(const SweepRanks&) = delete;
   SweepRanks& operator=(const SweepRanks&) = delete;
@@ -42,7 +42,7 @@ class SweepRanks {
   int size() const { return size_; }
 
   // Rank 0: runs the plan's cases over every rank, one case per rank at a time, calling
-  // `finished` for each. Once interrupt_requested() (or a rank reports one), no case is
+  // `finished` for each. Once stop_requested() (or a rank reports one), no case is
   // started; returns when every running case has ended, with the indices never started.
   std::vector<std::size_t> run_cases(const SweepPlan& plan, const CaseFinished& finished);
   // Rank 0, once the sweep is over (also when it never started): the exit code to every rank.
@@ -55,6 +55,7 @@ class SweepRanks {
   static std::string build_description();
 
  private:
+  std::function<bool()> stop_requested_;
   int rank_ = 0;
   int size_ = 1;
   bool joined_ = false;
@@ -70,4 +71,4 @@ inline int launcher_rank_count() {
   return 0;
 }
 
-}  // namespace hydrodda::cli
+}  // namespace hydrodda::sweep

@@ -2,7 +2,7 @@
 // sweep.csv and the summary line, only converged cases are drawn on the line, and a case that
 // failed or was interrupted has no value.
 
-#include "run/sweep_results.hpp"
+#include "sweep/results.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -13,7 +13,7 @@
 #include <string>
 
 namespace fs = std::filesystem;
-namespace run = hydrodda::run;
+namespace sweep = hydrodda::sweep;
 
 namespace {
 
@@ -50,7 +50,7 @@ class SweepResultsTest : public ::testing::Test {
   void SetUp() override {
     std::vector<std::vector<hydrodda::scenario::Override>> cases;
     for (const std::string& v : axis.values) cases.push_back({{axis.key, v}});
-    results.emplace(std::vector<run::SweepAxis>{axis}, cases, columns);
+    results.emplace(std::vector<sweep::SweepAxis>{axis}, cases, columns);
     for (std::size_t i = 0; i < cases.size(); ++i) results->set_name(i, "case_00" + std::to_string(i));
     const fs::path& root = folder.path;
     record(0, write_case(root, "case_000", summary("ok", true, 4, 1.25)), 0);
@@ -66,15 +66,15 @@ class SweepResultsTest : public ::testing::Test {
     results->record_not_run(5);
   }
   // A finished case read from its folder and recorded, as the sweep does; what was read.
-  run::CaseResult record(std::size_t index, const fs::path& case_dir, int exit_code) {
-    run::CaseResult r = run::read_case_result("case_00" + std::to_string(index), case_dir, exit_code, columns);
+  sweep::CaseResult record(std::size_t index, const fs::path& case_dir, int exit_code) {
+    sweep::CaseResult r = sweep::read_case_result("case_00" + std::to_string(index), case_dir, exit_code, columns);
     results->set_result(index, r);
     return r;
   }
   const std::vector<std::string> columns{"flow.regions.seal.normalised_conductivity"};
-  run::SweepAxis axis{"flow.boundary[0].head", {"5", "10", "15", "20", "25", "30"}};
+  sweep::SweepAxis axis{"flow.boundary[0].head", {"5", "10", "15", "20", "25", "30"}};
   Folder folder;
-  std::optional<run::SweepResults> results;
+  std::optional<sweep::SweepResults> results;
 };
 
 TEST_F(SweepResultsTest, EachCaseSaysHowItEnded) {
@@ -89,11 +89,11 @@ TEST_F(SweepResultsTest, EachCaseSaysHowItEnded) {
   EXPECT_NE(csv.find("case_005,30,not run,"), std::string::npos) << csv;
 
   const auto counts = results->count_by_status();
-  EXPECT_EQ(counts[static_cast<std::size_t>(run::CaseStatus::ok)], 2u);
-  EXPECT_EQ(counts[static_cast<std::size_t>(run::CaseStatus::not_converged)], 1u);
-  EXPECT_EQ(counts[static_cast<std::size_t>(run::CaseStatus::failed)], 1u);
-  EXPECT_EQ(counts[static_cast<std::size_t>(run::CaseStatus::interrupted)], 1u);
-  EXPECT_EQ(counts[static_cast<std::size_t>(run::CaseStatus::not_run)], 1u);
+  EXPECT_EQ(counts[static_cast<std::size_t>(sweep::CaseStatus::ok)], 2u);
+  EXPECT_EQ(counts[static_cast<std::size_t>(sweep::CaseStatus::not_converged)], 1u);
+  EXPECT_EQ(counts[static_cast<std::size_t>(sweep::CaseStatus::failed)], 1u);
+  EXPECT_EQ(counts[static_cast<std::size_t>(sweep::CaseStatus::interrupted)], 1u);
+  EXPECT_EQ(counts[static_cast<std::size_t>(sweep::CaseStatus::not_run)], 1u);
   EXPECT_EQ(results->count_not_ok(), 4u);
   EXPECT_EQ(results->describe_not_ok(), "1 not converged, 1 failed, 1 interrupted, 1 not run");
 }
@@ -102,14 +102,14 @@ TEST_F(SweepResultsTest, EachCaseSaysHowItEnded) {
 // summary is a failure, whose message points at the log.
 TEST_F(SweepResultsTest, ACaseWithoutSummaryIsInterruptedOrFailed) {
   const fs::path killed = write_case(folder.path, "case_003", "");
-  EXPECT_EQ(record(3, killed, 128 + SIGTERM).status, run::CaseStatus::interrupted);
+  EXPECT_EQ(record(3, killed, 128 + SIGTERM).status, sweep::CaseStatus::interrupted);
   const fs::path crashed = write_case(folder.path, "case_004", "", "error: cannot mesh the domain\n");
-  const run::CaseResult r = record(4, crashed, 128 + SIGSEGV);
-  EXPECT_EQ(r.status, run::CaseStatus::failed);
+  const sweep::CaseResult r = record(4, crashed, 128 + SIGSEGV);
+  EXPECT_EQ(r.status, sweep::CaseStatus::failed);
   EXPECT_NE(r.message.find("exit code 139: cannot mesh the domain"), std::string::npos) << r.message;
   // A summary that says "ok" from a run that exited with an error is not taken as a result.
   const fs::path odd = write_case(folder.path, "case_000", summary("ok", true, 4, 1.25));
-  EXPECT_EQ(record(0, odd, 1).status, run::CaseStatus::failed);
+  EXPECT_EQ(record(0, odd, 1).status, sweep::CaseStatus::failed);
 }
 
 // A failed or interrupted case has no value: its summary.json holds the last good state it
@@ -121,7 +121,7 @@ TEST_F(SweepResultsTest, FailedAndInterruptedCasesHaveNoValue) {
   EXPECT_NE(csv.find("case_004,25,interrupted,false,1,,"), std::string::npos) << csv;
   EXPECT_EQ(csv.find("1.75"), std::string::npos) << csv;
   EXPECT_EQ(csv.find("1.1"), std::string::npos) << csv;
-  const run::SweepPlot plot = results->plot_spec("Seal");
+  const sweep::SweepPlot plot = results->plot_spec("Seal");
   EXPECT_EQ(plot.spec.marks_x, (std::vector<double>{20.0, 25.0}));
   EXPECT_EQ(plot.spec.marks_label, "failed or interrupted: no value");
   const fs::path png = folder.path / "sweep_marks.png";
@@ -129,12 +129,12 @@ TEST_F(SweepResultsTest, FailedAndInterruptedCasesHaveNoValue) {
   EXPECT_GT(fs::file_size(png), 1000u);
   // Only failed cases: the legend says so; with no case giving a value the crosses are drawn alone.
   std::vector<std::vector<hydrodda::scenario::Override>> cases{{{axis.key, "5"}}, {{axis.key, "10"}}};
-  run::SweepResults failed_only(std::vector<run::SweepAxis>{{axis.key, {"5", "10"}}}, cases, columns);
+  sweep::SweepResults failed_only(std::vector<sweep::SweepAxis>{{axis.key, {"5", "10"}}}, cases, columns);
   for (std::size_t i = 0; i < cases.size(); ++i) {
     failed_only.set_name(i, "case_00" + std::to_string(i));
-    failed_only.set_result(i, run::read_case_result("case_003", folder.path / "case_003", 1, columns));
+    failed_only.set_result(i, sweep::read_case_result("case_003", folder.path / "case_003", 1, columns));
   }
-  const run::SweepPlot crosses = failed_only.plot_spec("Seal");
+  const sweep::SweepPlot crosses = failed_only.plot_spec("Seal");
   EXPECT_TRUE(crosses.spec.series.empty());
   EXPECT_EQ(crosses.spec.marks_label, "failed: no value");
   const fs::path alone = folder.path / "sweep_failed.png";
@@ -145,7 +145,7 @@ TEST_F(SweepResultsTest, FailedAndInterruptedCasesHaveNoValue) {
 // The converged cases make the line; the unconverged one is a hollow marker off it; the failed
 // and interrupted ones are crosses (above), the unstarted one is not drawn.
 TEST_F(SweepResultsTest, OnlyConvergedCasesMakeTheLine) {
-  const run::SweepPlot plot = results->plot_spec("Seal");
+  const sweep::SweepPlot plot = results->plot_spec("Seal");
   ASSERT_EQ(plot.spec.series.size(), 1u) << plot.why_not;
   const auto& s = plot.spec.series[0];
   EXPECT_EQ(s.x, (std::vector<double>{5.0, 10.0, 15.0}));
@@ -163,15 +163,15 @@ TEST_F(SweepResultsTest, OnlyConvergedCasesMakeTheLine) {
 // know stays as it is.
 TEST(QuantityLabel, NamesTheQuantityAndItsUnit) {
   const std::vector<std::string> boundaries{"base", "top"};
-  EXPECT_EQ(run::quantity_label("flow.boundary[0].head", boundaries), "head at base (m)");
-  EXPECT_EQ(run::quantity_label("flow.boundary[1].pressure", boundaries), "pressure at top (Pa)");
-  EXPECT_EQ(run::quantity_label("flow.regions.fractured.normalised_conductivity"), "K_eff / K_matrix of fractured");
-  EXPECT_EQ(run::quantity_label("flow.boundaries.top"), "flow out of top (m²/s)");
-  EXPECT_EQ(run::quantity_label("flow.regions.core.effective_conductivity"), "K_eff of core (m/s)");
-  EXPECT_EQ(run::quantity_label("measure.top.displacement.1"), "y displacement of top (m)");
-  EXPECT_EQ(run::quantity_label("mechanics.traction[0].normal_end"), "normal traction at the end (Pa)");
-  EXPECT_EQ(run::quantity_label("material.rock.density"), "density (kg/m³)");
-  EXPECT_EQ(run::quantity_label("output.every"), "output.every");
+  EXPECT_EQ(sweep::quantity_label("flow.boundary[0].head", boundaries), "head at base (m)");
+  EXPECT_EQ(sweep::quantity_label("flow.boundary[1].pressure", boundaries), "pressure at top (Pa)");
+  EXPECT_EQ(sweep::quantity_label("flow.regions.fractured.normalised_conductivity"), "K_eff / K_matrix of fractured");
+  EXPECT_EQ(sweep::quantity_label("flow.boundaries.top"), "flow out of top (m²/s)");
+  EXPECT_EQ(sweep::quantity_label("flow.regions.core.effective_conductivity"), "K_eff of core (m/s)");
+  EXPECT_EQ(sweep::quantity_label("measure.top.displacement.1"), "y displacement of top (m)");
+  EXPECT_EQ(sweep::quantity_label("mechanics.traction[0].normal_end"), "normal traction at the end (Pa)");
+  EXPECT_EQ(sweep::quantity_label("material.rock.density"), "density (kg/m³)");
+  EXPECT_EQ(sweep::quantity_label("output.every"), "output.every");
 }
 
 }  // namespace

@@ -7,7 +7,7 @@
 
 #include "scenario/overrides.hpp"
 
-namespace hydrodda::run {
+namespace hydrodda::sweep {
 
 // One swept key and its values, from "KEY=V1,V2,...".
 struct SweepAxis {
@@ -34,4 +34,4 @@ std::vector<std::vector<scenario::Override>> enumerate_cases(const std::vector<S
 // std::invalid_argument naming the axes when they do not all have the same number of values.
 std::vector<std::vector<scenario::Override>> zip_cases(const std::vector<SweepAxis>& axes);
 
-}  // namespace hydrodda::run
+}  // namespace hydrodda::sweep

@@ -1,10 +1,10 @@
-#include "run/sweep_plan.hpp"
+#include "sweep/cases.hpp"
 
 #include <fmt/format.h>
 
 #include <stdexcept>
 
-namespace hydrodda::run {
+namespace hydrodda::sweep {
 
 namespace {
 
@@ -117,4 +117,4 @@ std::vector<std::vector<scenario::Override>> zip_cases(const std::vector<SweepAx
   return cases;
 }
 
-}  // namespace hydrodda::run
+}  // namespace hydrodda::sweep

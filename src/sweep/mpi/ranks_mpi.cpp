@@ -21,10 +21,9 @@
 #include <stdexcept>
 #include <thread>
 
-#include "cli/interrupt.hpp"
-#include "cli/sweep_ranks.hpp"
+#include "sweep/ranks.hpp"
 
-namespace hydrodda::cli {
+namespace hydrodda::sweep {
 
 namespace {
 
@@ -92,8 +91,8 @@ SweepPlan unpack_plan(const std::string& bytes) {
 }
 
 // A request: the case just run (-1 for none), whether this rank was interrupted, its result.
-std::string pack_request(long long index, bool interrupted, const run::CaseResult& r) {
-  std::vector<std::string> f{std::to_string(index), interrupted ? "1" : "0", std::string(run::status_name(r.status)), r.converged, r.iterations,
+std::string pack_request(long long index, bool interrupted, const CaseResult& r) {
+  std::vector<std::string> f{std::to_string(index), interrupted ? "1" : "0", std::string(status_name(r.status)), r.converged, r.iterations,
                              r.message};
   for (const auto& c : r.columns) f.push_back(c ? "=" + *c : "");
   return pack(f);
@@ -102,14 +101,14 @@ std::string pack_request(long long index, bool interrupted, const run::CaseResul
 struct Request {
   long long index = -1;
   bool interrupted = false;
-  run::CaseResult result;
+  CaseResult result;
 };
 
 Request unpack_request(const std::string& bytes) {
   const std::vector<std::string> f = unpack(bytes);
   if (f.size() < 6) throw std::runtime_error("sweep over MPI: a case's result arrived cut short");
   Request q{std::stoll(f[0]), f[1] == "1", {}};
-  q.result.status = run::status_from_name(f[2]);
+  q.result.status = status_from_name(f[2]);
   q.result.converged = f[3];
   q.result.iterations = f[4];
   q.result.message = f[5];
@@ -145,41 +144,43 @@ long long receive_number(int from, Tag tag) { return std::stoll(receive_bytes(fr
 // One case run as a child process on this rank, an interrupt passed on to it.
 class LocalCase {
  public:
-  LocalCase(const SweepPlan& plan, std::size_t index) : plan_(plan), index_(index) {
+  LocalCase(const SweepPlan& plan, std::size_t index, const std::function<bool()>& stop_requested)
+      : plan_(plan), index_(index), stop_requested_(stop_requested) {
     try {
       pid_ = start_child_process(plan.commands[index]);
     } catch (const std::runtime_error& e) {
-      result_ = run::CaseResult{};
-      result_->status = run::CaseStatus::failed;
+      result_ = CaseResult{};
+      result_->status = CaseStatus::failed;
       result_->message = e.what();
       result_->columns.assign(plan.columns.size(), std::nullopt);
     }
   }
   std::size_t index() const { return index_; }
   // The result once the case has ended, else nothing.
-  const std::optional<run::CaseResult>& poll() {
+  const std::optional<CaseResult>& poll() {
     if (result_) return result_;
-    if (interrupt_requested() && !forwarded_) {
+    if (stop_requested_() && !forwarded_) {
       ::kill(pid_, SIGINT);
       forwarded_ = true;
     }
     if (const std::optional<int> code = poll_child_process(pid_))
-      result_ = run::read_case_result(plan_.folders[index_].filename().string(), plan_.folders[index_], *code,
-                                      plan_.columns, interrupt_requested());
+      result_ = read_case_result(plan_.folders[index_].filename().string(), plan_.folders[index_], *code,
+                                      plan_.columns, stop_requested_());
     return result_;
   }
 
  private:
   const SweepPlan& plan_;
   std::size_t index_;
+  const std::function<bool()>& stop_requested_;
   int pid_ = -1;
   bool forwarded_ = false;
-  std::optional<run::CaseResult> result_;
+  std::optional<CaseResult> result_;
 };
 
 }  // namespace
 
-SweepRanks::SweepRanks() {
+SweepRanks::SweepRanks(std::function<bool()> stop_requested) : stop_requested_(std::move(stop_requested)) {
   const bool launched = launcher_rank_count() > 0 || std::getenv("PMIX_RANK");
   if (!launched) return;
   MPI_Init(nullptr, nullptr);
@@ -203,8 +204,8 @@ std::vector<std::size_t> SweepRanks::run_cases(const SweepPlan& plan, const Case
   bool stopping = false;
   std::optional<LocalCase> local;
   for (;;) {
-    stopping = stopping || interrupt_requested();
-    if (!local && !stopping && next < n) local.emplace(plan, next++);
+    stopping = stopping || stop_requested_();
+    if (!local && !stopping && next < n) local.emplace(plan, next++, stop_requested_);
     bool progressed = false;
     int waiting = 0;
     MPI_Status status;
@@ -249,12 +250,12 @@ int SweepRanks::serve() {
   if (!plan_bytes.empty()) {
     const SweepPlan plan = unpack_plan(plan_bytes);
     long long done = -1;
-    run::CaseResult result;
+    CaseResult result;
     for (;;) {
-      send_bytes(pack_request(done, interrupt_requested(), result), 0, kRequest);
+      send_bytes(pack_request(done, stop_requested_(), result), 0, kRequest);
       const long long assigned = receive_number(0, kAssign);
       if (assigned < 0) break;
-      LocalCase running(plan, static_cast<std::size_t>(assigned));
+      LocalCase running(plan, static_cast<std::size_t>(assigned), stop_requested_);
       while (!running.poll()) std::this_thread::sleep_for(kPollInterval);
       done = assigned;
       result = *running.poll();
@@ -272,4 +273,4 @@ std::string SweepRanks::build_description() {
   return "with MPI (" + name + ")";
 }
 
-}  // namespace hydrodda::cli
+}  // namespace hydrodda::sweep
