@@ -37,7 +37,7 @@ struct SweepOptions {
 
 int check_command(const std::filesystem::path& scenario);
 int run_command(const RunOptions& options);
-// Under mpirun, rank 0's sweep (the other ranks serve it, cli/sweep_ranks.hpp).
+// Under mpirun, rank 0's sweep (the other ranks serve it, sweep/ranks.hpp).
 int sweep_command(const SweepOptions& options, sweep::SweepRanks& ranks);
 
 }  // namespace hydrodda::cli

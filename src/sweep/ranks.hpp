@@ -3,7 +3,7 @@
 // then hands its cases out one at a time to whichever rank is free (itself included), each
 // case a child `hydrodda run` as in a plain sweep; the others run what they are given and send
 // back its result. Rank 0 alone writes sweep.csv and sweep.png. Every rank ends with the
-// sweep's exit code. Built with MPI (Open MPI) when CMake finds it (cli/mpi/); without it, a
+// sweep's exit code. Built with MPI (Open MPI) when CMake finds it (sweep/mpi/); without it, a
 // launch by mpirun with several ranks is refused rather than run N times over.
 
 #include <cstdlib>
