@@ -20,34 +20,78 @@ double compute_open_fraction(double fracture_area, double element_area) {
   return fraction < kRoundOff ? 0.0 : fraction;
 }
 
-}  // namespace
+// What a law computes, from the model's parameters: one type per law behind this interface.
+class Law {
+ public:
+  virtual ~Law() = default;
+  virtual std::vector<double> compute(const PermeabilityModel& model, const PorosityField& porosity,
+                                      std::span<const double> element_areas, std::span<const double> apertures) const = 0;
+  // k_m: an element with no open area.
+  virtual double matrix_permeability(const PermeabilityModel& model) const = 0;
+  // Whether the law's own bound lowers k_m below the matrix's value.
+  virtual bool matrix_capped(const PermeabilityModel&) const { return false; }
+};
 
-std::vector<double> PermeabilityModel::compute(const PorosityField& porosity, std::span<const double> element_areas,
-                                               std::span<const double> apertures) const {
-  std::vector<double> k(porosity.porosity.size());
-  if (law == PermeabilityLaw::cubic) {
+// The paper's eq. 9 on φ_e, capped so that open fractures (φ → 1) stay finite.
+class KozenyCarmanLaw final : public Law {
+ public:
+  std::vector<double> compute(const PermeabilityModel& model, const PorosityField& porosity, std::span<const double>,
+                              std::span<const double>) const override {
+    std::vector<double> k(porosity.porosity.size());
+    for (std::size_t e = 0; e < k.size(); ++e)
+      k[e] = hydro::kozeny_carman_permeability(porosity.porosity[e], model.grain_diameter, model.cap);
+    return k;
+  }
+  double matrix_permeability(const PermeabilityModel& model) const override {
+    return hydro::kozeny_carman_permeability(model.matrix_porosity, model.grain_diameter, model.cap);
+  }
+  bool matrix_capped(const PermeabilityModel& model) const override {
+    return hydro::kozeny_carman_permeability(model.matrix_porosity, model.grain_diameter,
+                                             std::numeric_limits<double>::infinity()) > model.cap;
+  }
+};
+
+// k_m + (A_f/A_e) w_e²/12, k_m the Kozeny–Carman value of the matrix porosity, uncapped: the
+// cap is the paper's device for Kozeny–Carman, and the cubic law's k_m is the rock's as given.
+class CubicLaw final : public Law {
+ public:
+  std::vector<double> compute(const PermeabilityModel& model, const PorosityField& porosity,
+                              std::span<const double> element_areas, std::span<const double> apertures) const override {
+    std::vector<double> k(porosity.porosity.size());
     if (apertures.size() != k.size() || element_areas.size() != k.size())
       throw std::invalid_argument("cubic law: one aperture and one area per element are needed");
-    const double k_matrix = matrix_permeability();
+    const double k_matrix = matrix_permeability(model);
     for (std::size_t e = 0; e < k.size(); ++e)
       k[e] = hydro::cubic_law_permeability(compute_open_fraction(porosity.fracture_area[e], element_areas[e]),
                                            apertures[e], k_matrix);
     return k;
   }
-  for (std::size_t e = 0; e < k.size(); ++e)
-    k[e] = hydro::kozeny_carman_permeability(porosity.porosity[e], grain_diameter, cap);
-  return k;
+  double matrix_permeability(const PermeabilityModel& model) const override {
+    return hydro::kozeny_carman_permeability(model.matrix_porosity, model.grain_diameter,
+                                             std::numeric_limits<double>::infinity());
+  }
+};
+
+// The one factory: the type of the law the scenario named.
+const Law& find_law(PermeabilityLaw law) {
+  static const KozenyCarmanLaw kozeny_carman;
+  static const CubicLaw cubic;
+  switch (law) {
+    case PermeabilityLaw::kozeny_carman: return kozeny_carman;
+    case PermeabilityLaw::cubic: return cubic;
+  }
+  throw std::logic_error("a permeability law without a type");
 }
 
-double PermeabilityModel::matrix_permeability() const {
-  // The cap keeps Kozeny–Carman finite as φ → 1; the cubic law's k_m is the rock's as given.
-  const double bound = law == PermeabilityLaw::cubic ? std::numeric_limits<double>::infinity() : cap;
-  return hydro::kozeny_carman_permeability(matrix_porosity, grain_diameter, bound);
+}  // namespace
+
+std::vector<double> PermeabilityModel::compute(const PorosityField& porosity, std::span<const double> element_areas,
+                                               std::span<const double> apertures) const {
+  return find_law(law).compute(*this, porosity, element_areas, apertures);
 }
 
-bool PermeabilityModel::matrix_capped() const {
-  return law == PermeabilityLaw::kozeny_carman &&
-         hydro::kozeny_carman_permeability(matrix_porosity, grain_diameter, std::numeric_limits<double>::infinity()) > cap;
-}
+double PermeabilityModel::matrix_permeability() const { return find_law(law).matrix_permeability(*this); }
+
+bool PermeabilityModel::matrix_capped() const { return find_law(law).matrix_capped(*this); }
 
 }  // namespace hydrodda::coupling

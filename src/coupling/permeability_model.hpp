@@ -1,14 +1,14 @@
 #pragma once
-// Permeability per fluid element from its equivalent porosity, by the scenario's law.
+// Permeability per fluid element from its equivalent porosity, by the scenario's law
+// (permeability_laws.hpp; each law's computation is its own type in permeability_model.cpp).
 
 #include <span>
 #include <vector>
 
+#include "coupling/permeability_laws.hpp"
 #include "coupling/porosity.hpp"
 
 namespace hydrodda::coupling {
-
-enum class PermeabilityLaw { kozeny_carman, cubic };
 
 struct PermeabilityModel {
   PermeabilityLaw law = PermeabilityLaw::kozeny_carman;
@@ -31,6 +31,8 @@ struct PermeabilityModel {
   double matrix_permeability() const;
   // Kozeny–Carman's cap lowers k_m itself: the matrix's own value is above it.
   bool matrix_capped() const;
+  // Whether compute() needs the elements' local apertures.
+  bool reads_apertures() const { return describe(law).reads_apertures; }
 };
 
 }  // namespace hydrodda::coupling

@@ -167,7 +167,7 @@ PassReport StaggeredLoop::run_pass() {
   exclude_boundary_gaps(porosity_, boundary_gaps_.compute_gap_areas(blocks), porosity_mapper_.element_areas(),
                         settings_.permeability.matrix_porosity);
   std::vector<double> apertures;
-  if (settings_.permeability.law == PermeabilityLaw::cubic)
+  if (settings_.permeability.reads_apertures())
     apertures = compute_local_apertures(mesh_, porosity_.fracture_area, blocks, settings_.permeability.domain,
                                         settings_.permeability.aperture_reach);
   permeability_ = settings_.permeability.compute(porosity_, porosity_mapper_.element_areas(), apertures);

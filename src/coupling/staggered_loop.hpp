@@ -19,6 +19,7 @@
 
 #include "coupling/boundary_gaps.hpp"
 #include "coupling/embedded_joints.hpp"
+#include "coupling/loop_acceleration.hpp"
 #include "coupling/permeability_model.hpp"
 #include "coupling/porosity.hpp"
 #include "coupling/pressure_forces.hpp"
@@ -29,8 +30,6 @@
 #include "mesh/triangle_mesh.hpp"
 
 namespace hydrodda::coupling {
-
-enum class Acceleration { none, aitken, anderson };
 
 struct LoopSettings {
   double tolerance = 1.0e-4;

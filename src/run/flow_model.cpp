@@ -48,7 +48,7 @@ std::vector<double> assign_permeability(const scenario::Scenario& s, const mesh:
   }
   const coupling::PermeabilityModel model = make_permeability_model(s);
   std::vector<double> apertures;
-  if (model.law == coupling::PermeabilityLaw::cubic)
+  if (model.reads_apertures())
     apertures = coupling::compute_local_apertures(mesh, porosity.fracture_area, polygons, model.domain,
                                                   model.aperture_reach);
   const std::vector<double> from_porosity = model.compute(porosity, mapper.element_areas(), apertures);
