@@ -39,9 +39,7 @@ CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::option
 
   settings.tolerance = s.coupling.tolerance;
   settings.relaxation = s.coupling.relaxation;
-  settings.acceleration = s.coupling.acceleration == scenario::LoopAcceleration::anderson ? coupling::Acceleration::anderson
-                          : s.coupling.acceleration == scenario::LoopAcceleration::aitken ? coupling::Acceleration::aitken
-                                                                                           : coupling::Acceleration::none;
+  settings.acceleration = s.coupling.acceleration;
   settings.ramp_passes = s.coupling.ramp_passes;
   settings.steps_per_pass = s.mechanics->steps.value_or(
       static_cast<int>(std::ceil(*s.mechanics->end_time / s.mechanics->time_step)));

@@ -23,6 +23,7 @@
 #include "run/tip_refinement.hpp"
 #include "output/csv_table.hpp"
 #include "output/item_list.hpp"
+#include "scenario/spellings.hpp"
 
 namespace hydrodda::run {
 
@@ -53,13 +54,6 @@ ProgressReport report_pass(const coupling::PassReport& r) {
   report.message = fmt::format("iteration {}: head change {:.2e}, displacement change {:.2e}", r.iteration,
                                r.head_change, r.displacement_change);
   return report;
-}
-
-// coupling.acceleration as the scenario spells it.
-std::string_view acceleration_name(scenario::LoopAcceleration a) {
-  return a == scenario::LoopAcceleration::anderson ? "anderson"
-         : a == scenario::LoopAcceleration::aitken ? "aitken"
-                                                   : "none";
 }
 
 // "no mechanical equilibrium ...: blocks 12 (moved 2.91 m, size 1 m), ...", the farthest few
@@ -276,7 +270,7 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
   double shortest_time_step = 0.0;   // of the last pass
   bool stopped = false;  // by stop_after
   // The cubic law's wedge tips (docs/coupling.md, "Wedge tips").
-  const bool cubic_law = s.flow->permeability_law == scenario::PermeabilityLaw::Cubic;
+  const bool cubic_law = s.flow->permeability_law == coupling::PermeabilityLaw::cubic;
   const double matrix_permeability = make_permeability_model(s).matrix_permeability();
   // The fluid mesh's triangle finder for the tips' elements, made when first needed.
   std::optional<mesh::PointLocator> locator;
@@ -539,7 +533,7 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
     const coupling::ConvergenceDiagnosis why =
         coupling::diagnose_non_convergence(convergence.head_change, convergence.displacement_change, two_passes,
                                            s.coupling.tolerance,
-                                           {.acceleration = acceleration_name(s.coupling.acceleration),
+                                           {.acceleration = scenario::spell(s.coupling.acceleration),
                                             .relaxation = s.coupling.relaxation,
                                             .settling = s.coupling.settle});
     summary.message = fmt::format("the coupling loop did not converge in {} iterations (tolerance {:g}): {}",

@@ -18,6 +18,7 @@
 #include "run/model_geometry.hpp"
 #include "hydro/permeability_law.hpp"
 #include "scenario/diagnostics.hpp"
+#include "scenario/spellings.hpp"
 
 namespace hydrodda::run {
 
@@ -81,8 +82,8 @@ void report_unsupported_blocks(const Scenario& s, const dda::ModelDefinition& mo
                       fmt::format("static analysis: {} has no support (no fixed block, [[mechanics.fixed]] point, "
                                   "[[mechanics.displacement]] or [[mechanics.roller]] holds it or a block within "
                                   "{:g} m of it, the contact distance), so a load moves it without end; add a "
-                                  "support or use analysis = \"dynamic\"",
-                                  which, touching)});
+                                  "support or use analysis = \"{}\"",
+                                  which, touching, scenario::spell(dda::Analysis::dynamic))});
   }
 }
 
@@ -144,8 +145,7 @@ hydro::JointApertureLaw make_joint_aperture_law(const Scenario& s) {
 coupling::PermeabilityModel make_permeability_model(const Scenario& s) {
   coupling::PermeabilityModel model;
   const scenario::MaterialDefinition& material = s.materials.front();
-  model.law = s.flow->permeability_law == scenario::PermeabilityLaw::Cubic ? coupling::PermeabilityLaw::cubic
-                                                                          : coupling::PermeabilityLaw::kozeny_carman;
+  model.law = s.flow->permeability_law;
   model.grain_diameter = material.grain_diameter.value_or(0.0);
   model.cap = s.flow->permeability_cap;
   model.matrix_porosity = material.matrix_porosity;
@@ -276,15 +276,8 @@ hydro::DarcyProblem build_flow_problem(const scenario::FlowDefinition& f) {
   hydro::DarcyProblem problem;
   problem.fluid.density = f.fluid_density;
   problem.fluid.viscosity = f.fluid_viscosity;
-  problem.pressure = f.pressure == scenario::PressureConvention::Hydrostatic
-                         ? hydro::PressureConvention::hydrostatic
-                         : hydro::PressureConvention::overpressure;
-  for (const scenario::FlowBoundaryCondition& bc : f.boundaries) {
-    const hydro::BoundaryKind kind = bc.kind == scenario::FlowConditionKind::Head       ? hydro::BoundaryKind::head
-                                     : bc.kind == scenario::FlowConditionKind::Pressure ? hydro::BoundaryKind::pressure
-                                                                                        : hydro::BoundaryKind::flux;
-    problem.boundaries.push_back({bc.name, kind, bc.value});
-  }
+  problem.pressure = f.pressure;
+  for (const scenario::FlowBoundaryCondition& bc : f.boundaries) problem.boundaries.push_back({bc.name, bc.kind, bc.value});
   return problem;
 }
 
@@ -334,8 +327,8 @@ dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::B
   model.joint = {s.joint.friction_angle, s.joint.cohesion, s.joint.tensile_strength};
 
   dda::Settings& settings = model.settings;
-  settings.analysis = m.analysis == scenario::Analysis::Dynamic ? dda::Analysis::dynamic : dda::Analysis::static_;
-  settings.plane = m.plane == scenario::Plane::Stress ? dda::Plane::stress : dda::Plane::strain;
+  settings.analysis = m.analysis;
+  settings.plane = m.plane;
   settings.gravity = m.gravity;
   settings.time_step = m.time_step;
   if (m.max_displacement_ratio) {
@@ -350,8 +343,7 @@ dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::B
     else
       spdlog::debug("default used: mechanics.max_displacement_ratio = {:g}", usual);
   }
-  settings.contact = m.contact == scenario::ContactMethod::Penalty ? dda::ContactMethod::penalty
-                                                                   : dda::ContactMethod::augmented_lagrangian;
+  settings.contact = m.contact;
   settings.penalty = m.penalty.value_or(0.0);
   settings.tension_cutoff = m.tension_cutoff;
   if (m.penetration_tolerance) {

@@ -232,9 +232,8 @@ void read_mechanics(ReadContext& ctx, const TableView& root, Scenario& s) {
                      "max_displacement_ratio", "contact", "penalty", "penetration_tolerance", "tension_cutoff",
                      "fixed", "load", "displacement", "traction", "measure", "roller", "initial_stress"});
   MechanicsDefinition mech;
-  mech.analysis = m.choice("analysis", {"static", "dynamic"}, "static") == 1 ? Analysis::Dynamic
-                                                                             : Analysis::Static;
-  mech.plane = m.choice("plane", {"strain", "stress"}, "strain") == 1 ? Plane::Stress : Plane::Strain;
+  mech.analysis = m.choice("analysis", dda::Analysis::static_);
+  mech.plane = m.choice("plane", dda::Plane::strain);
   if (auto g = m.point("gravity")) mech.gravity = *g;
   else if (!m.has("gravity")) ctx.defaults.push_back({"mechanics.gravity", "[0, -9.81]"});
   mech.time_step = m.number_or("time_step", mech.time_step);
@@ -263,9 +262,7 @@ void read_mechanics(ReadContext& ctx, const TableView& root, Scenario& s) {
               fmt::format("must be at least {:g}: a step's displacement below it is lost in the positions' round-off",
                           kMinDisplacementRatio));
   }
-  mech.contact = m.choice("contact", {"augmented-lagrangian", "penalty"}, "augmented-lagrangian") == 1
-                     ? ContactMethod::Penalty
-                     : ContactMethod::AugmentedLagrangian;
+  mech.contact = m.choice("contact", dda::ContactMethod::augmented_lagrangian);
   if (auto p = m.number("penalty")) {
     mech.penalty = *p;
     m.require("penalty", *p > 0.0, "must be > 0");
@@ -369,13 +366,8 @@ void read_flow(ReadContext& ctx, const TableView& root, Scenario& s) {
   } else if (!f.has("fluid")) {
     ctx.defaults.push_back({"flow.fluid", "{ density = 1000, viscosity = 0.001 }"});
   }
-  flow.pressure = f.choice("pressure", {"overpressure", "hydrostatic"}, "hydrostatic") == 1
-                      ? PressureConvention::Hydrostatic
-                      : PressureConvention::Overpressure;
-  flow.permeability_law =
-      f.choice("permeability_law", {"kozeny-carman", "cubic"}, "kozeny-carman") == 1
-          ? PermeabilityLaw::Cubic
-          : PermeabilityLaw::KozenyCarman;
+  flow.pressure = f.choice("pressure", hydro::PressureConvention::hydrostatic);
+  flow.permeability_law = f.choice("permeability_law", coupling::PermeabilityLaw::kozeny_carman);
   flow.permeability_cap = f.number_or("permeability_cap", flow.permeability_cap);
   f.require("permeability_cap", flow.permeability_cap > 0.0 && flow.permeability_cap <= kMaxPermeability,
             fmt::format("must lie in (0, {:g}] m²: beyond, pores are some 10 cm across and the flow is not Darcy's",
@@ -391,24 +383,24 @@ void read_flow(ReadContext& ctx, const TableView& root, Scenario& s) {
     bc.line = b.line();
     bc.name = b.string("name").value_or("");
     if (!b.has("name")) ctx.error(b.line(), "flow.boundary.name", "required key is missing");
-    const int given = b.has("head") + b.has("pressure") + b.has("flux");
+    // The condition's kind is the key its value is given under.
+    int given = 0;
+    hydro::BoundaryKind kind = bc.kind;
+    for (const Spelling<hydro::BoundaryKind>& k : Spellings<hydro::BoundaryKind>::table)
+      if (b.has(k.text)) ++given, kind = k.value;
     if (given != 1) {
       ctx.error(b.line(), "flow.boundary", "give exactly one of 'head', 'pressure' or 'flux'");
-    } else if (b.has("head")) {
-      bc.kind = FlowConditionKind::Head;
-      bc.value = b.number("head").value_or(0.0);
-      b.require("head", bc.value >= lowest_head && bc.value <= highest_head,
-                fmt::format("must lie within {:g} m of the model's heights ({:g} to {:g} m): a head farther off is a "
-                            "pressure past 10 GPa, beyond the strength of any rock", kMaxPressureHead,
-                            lowest_head + kMaxPressureHead, highest_head - kMaxPressureHead));
-    } else if (b.has("pressure")) {
-      bc.kind = FlowConditionKind::Pressure;
-      bc.value = b.number("pressure").value_or(0.0);
-      b.require("pressure", std::abs(bc.value) <= kMaxStress,
-                fmt::format("must lie within ±{:g} Pa: 10 GPa is beyond the strength of any rock", kMaxStress));
     } else {
-      bc.kind = FlowConditionKind::Flux;
-      bc.value = b.number("flux").value_or(0.0);
+      bc.kind = kind;
+      bc.value = b.number(spell(bc.kind)).value_or(0.0);
+      if (bc.kind == hydro::BoundaryKind::head)
+        b.require("head", bc.value >= lowest_head && bc.value <= highest_head,
+                  fmt::format("must lie within {:g} m of the model's heights ({:g} to {:g} m): a head farther off is "
+                              "a pressure past 10 GPa, beyond the strength of any rock", kMaxPressureHead,
+                              lowest_head + kMaxPressureHead, highest_head - kMaxPressureHead));
+      else if (bc.kind == hydro::BoundaryKind::pressure)
+        b.require("pressure", std::abs(bc.value) <= kMaxStress,
+                  fmt::format("must lie within ±{:g} Pa: 10 GPa is beyond the strength of any rock", kMaxStress));
     }
     for (const FlowBoundaryCondition& other : flow.boundaries)
       if (!bc.name.empty() && other.name == bc.name)
@@ -501,9 +493,10 @@ void read_mesh(ReadContext& ctx, const TableView& root, Scenario& s) {
     const int line = m.line_of_key("refine_tips");
     if (mesh.file)
       ctx.error(line, "mesh.refine_tips", "refines a mesh the run generates; mesh.file gives one: refine the file");
-    else if (!s.flow || s.flow->permeability_law != PermeabilityLaw::Cubic)
+    else if (!s.flow || s.flow->permeability_law != coupling::PermeabilityLaw::cubic)
       ctx.error(line, "mesh.refine_tips",
-                "refines around the wedge tips of the cubic law; needs flow.permeability_law = \"cubic\"");
+                fmt::format("refines around the wedge tips of the cubic law; needs flow.permeability_law = \"{}\"",
+                            spell(coupling::PermeabilityLaw::cubic)));
     else if (!s.geometry || s.geometry->domain.empty() || !s.mechanics)
       ctx.error(line, "mesh.refine_tips", "needs a coupled run of a [geometry] domain cut by fractures");
   }
@@ -513,7 +506,7 @@ void read_mesh(ReadContext& ctx, const TableView& root, Scenario& s) {
 void read_coupling(ReadContext& ctx, const TableView& root, Scenario& s) {
   // Passes settle by default where they can: at rest means nothing in a dynamic analysis,
   // whose blocks keep their velocity.
-  const bool static_analysis = s.mechanics && s.mechanics->analysis == Analysis::Static;
+  const bool static_analysis = s.mechanics && s.mechanics->analysis == dda::Analysis::static_;
   s.coupling.settle = static_analysis;
   const toml::table* t = root.table("coupling");
   if (!t) {
@@ -534,15 +527,15 @@ void read_coupling(ReadContext& ctx, const TableView& root, Scenario& s) {
   s.coupling.relaxation = c.number_or("relaxation", s.coupling.relaxation);
   c.require("relaxation", s.coupling.relaxation > 0.0 && s.coupling.relaxation <= 1.0,
             "must lie in (0, 1]");
-  s.coupling.acceleration =
-      static_cast<LoopAcceleration>(c.choice("acceleration", {"none", "aitken", "anderson"}, "none"));
+  s.coupling.acceleration = c.choice("acceleration", coupling::Acceleration::none);
   if (auto n = c.integer("ramp_passes", 1, 1'000'000)) s.coupling.ramp_passes = *n;
   if (auto settle = c.boolean("settle")) {
     s.coupling.settle = *settle;
   } else if (s.flow && s.mechanics) {
     ctx.defaults.push_back({"coupling.settle", static_analysis ? "true" : "false"});
   }
-  c.require("settle", !s.coupling.settle || !s.mechanics || static_analysis, "needs mechanics.analysis = \"static\"");
+  c.require("settle", !s.coupling.settle || !s.mechanics || static_analysis,
+            fmt::format("needs mechanics.analysis = \"{}\"", spell(dda::Analysis::static_)));
 }
 
 // output.fields: which of the series "fluid", "blocks", "contacts" and "fractures" to write, each once.

@@ -42,13 +42,13 @@ std::optional<double> find_boundary_head_range(const Scenario& s) {
   fluid.density = flow.fluid_density;
   double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
   for (const FlowBoundaryCondition& bc : flow.boundaries)
-    if (bc.kind == FlowConditionKind::Head) lowest = std::min(lowest, bc.value), highest = std::max(highest, bc.value);
+    if (bc.kind == hydro::BoundaryKind::head) lowest = std::min(lowest, bc.value), highest = std::max(highest, bc.value);
   const double reference = std::isfinite(lowest) ? lowest : 0.0;  // the overpressure's h_ref
   for (const FlowBoundaryCondition& bc : flow.boundaries) {
-    if (bc.kind == FlowConditionKind::Flux && bc.value != 0.0) return std::nullopt;
-    if (bc.kind != FlowConditionKind::Pressure) continue;
+    if (bc.kind == hydro::BoundaryKind::flux && bc.value != 0.0) return std::nullopt;
+    if (bc.kind != hydro::BoundaryKind::pressure) continue;
     const double pressure_head = bc.value / fluid.unit_weight();
-    if (flow.pressure == PressureConvention::Overpressure) {
+    if (flow.pressure == hydro::PressureConvention::overpressure) {
       lowest = std::min(lowest, pressure_head + reference), highest = std::max(highest, pressure_head + reference);
       continue;
     }
@@ -77,7 +77,7 @@ void check_initial_stress_gradient(ReadContext& ctx, const Scenario& s) {
   const double g = -s.mechanics->gravity.y;  // gravity pointing down: > 0
   if (!(g > 0.0)) return;
   const bool coupled = s.flow.has_value();
-  const bool hydrostatic = coupled && s.flow->pressure == PressureConvention::Hydrostatic;
+  const bool hydrostatic = coupled && s.flow->pressure == hydro::PressureConvention::hydrostatic;
   hydro::Fluid fluid;
   if (coupled) fluid.density = s.flow->fluid_density;
   // The lightest rock and the largest Biot coefficient: the least gradient any block may need.

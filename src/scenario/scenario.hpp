@@ -1,6 +1,7 @@
 #pragma once
 // The scenario as plain definition structs: what the user asked for, validated, in SI units.
-// Nothing here knows the engines; the run command turns these into engine inputs.
+// Its choices are the engines' own enums (spelled in the file as spellings.hpp says); it builds
+// no engine: run/ turns these into engine inputs.
 
 #include <array>
 #include <cstdint>
@@ -9,8 +10,12 @@
 #include <string>
 #include <vector>
 
+#include "coupling/loop_acceleration.hpp"
+#include "coupling/permeability_laws.hpp"
+#include "dda/definitions.hpp"
 #include "geometry/point.hpp"
 #include "geometry/polygon.hpp"
+#include "hydro/boundary_condition.hpp"
 
 namespace hydrodda::scenario {
 
@@ -95,10 +100,6 @@ struct JointDefinition {
   bool hydraulic() const { return residual_aperture || normal_stiffness || max_closure; }
 };
 
-enum class Analysis { Static, Dynamic };
-enum class Plane { Strain, Stress };
-enum class ContactMethod { AugmentedLagrangian, Penalty };
-
 struct FixedPoint {
   Point point;
   int line = 0;
@@ -155,8 +156,8 @@ struct InitialStressDefinition {
 inline constexpr int kMaxSteps = 100'000'000;
 
 struct MechanicsDefinition {
-  Analysis analysis = Analysis::Static;
-  Plane plane = Plane::Strain;
+  dda::Analysis analysis = dda::Analysis::static_;
+  dda::Plane plane = dda::Plane::strain;
   Point gravity{0.0, -9.81};
   double time_step = 1.0e-3;
   std::optional<int> steps;
@@ -164,7 +165,7 @@ struct MechanicsDefinition {
   // Empty: 0.01, or less where the blocks are thin against the model (run::build_mechanics_model,
   // dda::displacement_ratio_for_blocks).
   std::optional<double> max_displacement_ratio;
-  ContactMethod contact = ContactMethod::AugmentedLagrangian;
+  dda::ContactMethod contact = dda::ContactMethod::augmented_lagrangian;
   std::optional<double> penalty;  // N/m; derived from the stiffest material when absent
   // m; empty: 1e-4 of the allowed step displacement, at most a fiftieth of the joints' a_r + V_m
   // where they carry a hydraulic aperture (run::build_mechanics_model).
@@ -179,13 +180,9 @@ struct MechanicsDefinition {
   std::optional<InitialStressDefinition> initial_stress;
 };
 
-enum class PressureConvention { Overpressure, Hydrostatic };
-enum class PermeabilityLaw { KozenyCarman, Cubic };
-enum class FlowConditionKind { Head, Pressure, Flux };
-
 struct FlowBoundaryCondition {
   std::string name;
-  FlowConditionKind kind = FlowConditionKind::Head;
+  hydro::BoundaryKind kind = hydro::BoundaryKind::head;
   double value = 0.0;  // m, Pa or m/s (outward normal)
   int line = 0;
 };
@@ -200,8 +197,8 @@ struct FlowRegion {
 struct FlowDefinition {
   double fluid_density = 1000.0;   // kg/m3
   double fluid_viscosity = 1.0e-3; // Pa s
-  PressureConvention pressure = PressureConvention::Overpressure;
-  PermeabilityLaw permeability_law = PermeabilityLaw::KozenyCarman;
+  hydro::PressureConvention pressure = hydro::PressureConvention::overpressure;
+  coupling::PermeabilityLaw permeability_law = coupling::PermeabilityLaw::kozeny_carman;
   double permeability_cap = 9.869e-11;  // m2 (1e5 mD)
   std::vector<FlowBoundaryCondition> boundaries;
   std::vector<FlowRegion> regions;
@@ -235,15 +232,11 @@ struct MeshDefinition {
   int file_line = 0;                          // line of mesh.file, for messages about it
 };
 
-// coupling.acceleration: none; "aitken", the relaxation adapted from pass to pass; "anderson",
-// the heads mixed from the last passes.
-enum class LoopAcceleration { none, aitken, anderson };
-
 struct CouplingDefinition {
   double tolerance = 1.0e-4;
   int max_iterations = 50;
   double relaxation = 1.0;
-  LoopAcceleration acceleration = LoopAcceleration::none;
+  coupling::Acceleration acceleration = coupling::Acceleration::none;
   int ramp_passes = 1;   // the fluid load raised over the first passes
   bool settle = false;   // each pass steps on until the blocks are at rest (the reader's default: a static analysis)
 };

@@ -12,6 +12,7 @@
 
 #include "scenario/diagnostics.hpp"
 #include "scenario/scenario.hpp"
+#include "scenario/spellings.hpp"
 
 namespace hydrodda::scenario {
 
@@ -65,6 +66,14 @@ class TableView {
   // One of `choices` (index), or the index of `fallback` recorded as a default used.
   int choice(std::string_view key, const std::vector<std::string>& choices,
              const std::string& fallback) const;
+  // One of Enum's values by its spelling (spellings.hpp), or `fallback` recorded as a default used.
+  template <typename Enum>
+  Enum choice(std::string_view key, Enum fallback) const {
+    const auto& table = Spellings<Enum>::table;
+    std::vector<std::string> texts;
+    for (const Spelling<Enum>& s : table) texts.emplace_back(s.text);
+    return table[choice(key, texts, std::string(spell(fallback)))].value;
+  }
 
   // Range checks: add an error naming the key when `valid` is false.
   void require(std::string_view key, bool valid, const std::string& message) const;

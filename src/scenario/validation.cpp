@@ -283,9 +283,9 @@ void check_material_fields(ReadContext& ctx, const TableView& root, const Scenar
       require(m.young, "young");
       require(m.poisson, "poisson");
     }
-    if (s.flow && s.flow->permeability_law == PermeabilityLaw::KozenyCarman && !m.grain_diameter)
+    if (s.flow && coupling::describe(s.flow->permeability_law).needs_grain_diameter && !m.grain_diameter)
       ctx.error(line, "material." + m.name + ".grain_diameter",
-                "required by flow.permeability_law = \"kozeny-carman\"");
+                fmt::format("required by flow.permeability_law = \"{}\"", spell(s.flow->permeability_law)));
   }
 }
 
@@ -293,15 +293,17 @@ void check_material_fields(ReadContext& ctx, const TableView& root, const Scenar
 // prescribed displacement) the stiffness has the rigid-body motions of the whole assembly in its
 // null space, so any load moves it without end. Dynamic analysis has inertia and is fine.
 void check_static_support(ReadContext& ctx, const TableView& root, const Scenario& s) {
-  if (!s.mechanics || s.mechanics->analysis != Analysis::Static || !s.geometry) return;
+  if (!s.mechanics || s.mechanics->analysis != dda::Analysis::static_ || !s.geometry) return;
   const bool fixed_block = std::any_of(s.geometry->blocks.begin(), s.geometry->blocks.end(),
                                        [](const BlockDefinition& b) { return b.fixed; });
   if (fixed_block || !s.mechanics->fixed.empty() || !s.mechanics->displacements.empty() || !s.mechanics->rollers.empty())
     return;
   ctx.error(root.line_of_key("mechanics"), "mechanics.analysis",
-            "static analysis with nothing to hold the blocks: no fixed block (geometry.block fixed = "
-            "true), no [[mechanics.fixed]] point, no [[mechanics.displacement]] and no [[mechanics.roller]], "
-            "so nothing stops rigid-body motion; add a support or use analysis = \"dynamic\"");
+            fmt::format("static analysis with nothing to hold the blocks: no fixed block (geometry.block fixed = "
+                        "true), no [[mechanics.fixed]] point, no [[mechanics.displacement]] and no "
+                        "[[mechanics.roller]], so nothing stops rigid-body motion; add a support or use analysis = "
+                        "\"{}\"",
+                        spell(dda::Analysis::dynamic)));
 }
 
 }  // namespace
@@ -354,7 +356,7 @@ void validate_scenario(ReadContext& ctx, const TableView& root, Scenario& s) {
         check_boundary_reference(ctx, s, bc.line, "flow.boundary.name", bc.name);
         check_flow_boundary_on_domain(ctx, s, bc);
       }
-      head_fixed = head_fixed || bc.kind != FlowConditionKind::Flux;
+      head_fixed = head_fixed || bc.kind != hydro::BoundaryKind::flux;
     }
     if (!head_fixed)
       ctx.error(root.line_of_key("flow"), "flow.boundary",

@@ -26,6 +26,7 @@
 namespace fs = std::filesystem;
 using hydrodda::testing::expect_same_results;
 using hydrodda::testing::read_file;
+namespace coupling = hydrodda::coupling;
 namespace run = hydrodda::run;
 namespace scenario = hydrodda::scenario;
 
@@ -449,14 +450,14 @@ TEST(RunLayer, AnInterruptedCoupledRunDrawsItsLastFinishedPass) {
 
 TEST(RunLayer, ACappedMatrixIsNamedInAWarning) {
   scenario::Scenario s = scenario::read_scenario(kVerification / "coupled_drained_fracture.toml");
-  s.flow->permeability_law = scenario::PermeabilityLaw::KozenyCarman;
+  s.flow->permeability_law = coupling::PermeabilityLaw::kozeny_carman;
   s.materials.front().matrix_porosity = 0.3;
   s.materials.front().grain_diameter = 0.018;  // Kozeny–Carman: 9.9e-8 m², a thousand times the cap
   const std::optional<std::string> warning = run::describe_capped_matrix(s);
   ASSERT_TRUE(warning.has_value());
   EXPECT_NE(warning->find("material." + s.materials.front().name + ": "), std::string::npos) << *warning;
   EXPECT_NE(warning->find("above flow.permeability_cap = 9.869e-11 m²"), std::string::npos) << *warning;
-  s.flow->permeability_law = scenario::PermeabilityLaw::Cubic;
+  s.flow->permeability_law = coupling::PermeabilityLaw::cubic;
   EXPECT_FALSE(run::describe_capped_matrix(s).has_value());
   EXPECT_GT(run::make_permeability_model(s).matrix_permeability(), 1e-8);
 }
@@ -524,7 +525,7 @@ TEST(CoupledModel, AnAbandonedPassLeavesTheModelAtTheLastFinishedPass) {
   // (heads, Aitken's update and factor, the flow factor's permeability, the blocks); the model
   // then runs pass 2 again to the very state of a model never stopped.
   scenario::Scenario s = scenario::read_scenario(kVerification / "coupled_hydrostatic_column.toml");
-  s.coupling.acceleration = scenario::LoopAcceleration::aitken;
+  s.coupling.acceleration = coupling::Acceleration::aitken;
   const auto encoded = [](const run::CoupledModel& model) {
     const run::CoupledState state = model.export_state();
     return hydrodda::output::encode_checkpoint({}, state.mechanics, state.coupling);

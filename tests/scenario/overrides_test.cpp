@@ -45,7 +45,7 @@ TEST(ScenarioOverrides, SetsValuesInTablesAndArraysOfTables) {
   EXPECT_EQ(s.flow->boundaries[0].name, "right");
   EXPECT_EQ(s.flow->boundaries[0].value, 5.0);
   EXPECT_EQ(s.flow->boundaries[1].value, 0.0);  // the other boundary untouched
-  EXPECT_EQ(s.mechanics->contact, ContactMethod::Penalty);
+  EXPECT_EQ(s.mechanics->contact, dda::ContactMethod::penalty);
   EXPECT_EQ(s.mechanics->gravity, (Point{0.0, -10.0}));
   EXPECT_EQ(s.title, "case 1");
   // A whole number replacing a decimal stays a decimal in the file.
@@ -80,7 +80,7 @@ TEST(ScenarioOverrides, MakesAMissingTableOfSettings) {
   const std::string text = without_table(without_table(read_text(kSixBlock), "coupling"), "output");
   const Scenario s = parse_scenario(
       apply_overrides(text, kSixBlock, {{"coupling.acceleration", "aitken"}, {"output.figures", "[]"}}), "case.toml");
-  EXPECT_EQ(s.coupling.acceleration, LoopAcceleration::aitken);
+  EXPECT_EQ(s.coupling.acceleration, coupling::Acceleration::aitken);
   EXPECT_EQ(s.coupling.max_iterations, Scenario{}.coupling.max_iterations);  // the rest the defaults
   EXPECT_TRUE(s.output.figures.empty());
   try {

@@ -62,10 +62,10 @@ TEST(ScenarioReader, ReadsEveryKeyOfTheContract) {
   EXPECT_DOUBLE_EQ(s.joint.cohesion, 3.0e5);
 
   ASSERT_TRUE(s.mechanics);
-  EXPECT_EQ(s.mechanics->analysis, Analysis::Static);
-  EXPECT_EQ(s.mechanics->plane, Plane::Strain);
+  EXPECT_EQ(s.mechanics->analysis, dda::Analysis::static_);
+  EXPECT_EQ(s.mechanics->plane, dda::Plane::strain);
   EXPECT_EQ(*s.mechanics->steps, 500);
-  EXPECT_EQ(s.mechanics->contact, ContactMethod::AugmentedLagrangian);
+  EXPECT_EQ(s.mechanics->contact, dda::ContactMethod::augmented_lagrangian);
   ASSERT_EQ(s.mechanics->displacements.size(), 1u);
   EXPECT_EQ(s.mechanics->displacements[0].boundary, "right");
   EXPECT_EQ(s.mechanics->displacements[0].value, (Point{-0.005, 0.0}));
@@ -82,10 +82,10 @@ TEST(ScenarioReader, ReadsEveryKeyOfTheContract) {
   EXPECT_EQ(s.mechanics->initial_stress->gradient, (std::array<double, 3>{1.2e4, 2.4e4, 0.0}));
 
   ASSERT_TRUE(s.flow);
-  EXPECT_EQ(s.flow->pressure, PressureConvention::Overpressure);
-  EXPECT_EQ(s.flow->permeability_law, PermeabilityLaw::KozenyCarman);
+  EXPECT_EQ(s.flow->pressure, hydro::PressureConvention::overpressure);
+  EXPECT_EQ(s.flow->permeability_law, coupling::PermeabilityLaw::kozeny_carman);
   ASSERT_EQ(s.flow->boundaries.size(), 2u);
-  EXPECT_EQ(s.flow->boundaries[0].kind, FlowConditionKind::Head);
+  EXPECT_EQ(s.flow->boundaries[0].kind, hydro::BoundaryKind::head);
   EXPECT_DOUBLE_EQ(s.flow->boundaries[0].value, 20.0);
   ASSERT_EQ(s.flow->regions.size(), 1u);
   EXPECT_FALSE(s.flow->regions[0].permeability.has_value());
@@ -122,7 +122,7 @@ head = 1.0
     return false;
   };
   EXPECT_TRUE(has_default("flow.pressure"));
-  EXPECT_EQ(s.flow->pressure, PressureConvention::Hydrostatic);  // p = ρ g (h − z) unless named
+  EXPECT_EQ(s.flow->pressure, hydro::PressureConvention::hydrostatic);  // p = ρ g (h − z) unless named
   EXPECT_TRUE(has_default("flow.permeability_law"));
   EXPECT_TRUE(has_default("mesh.size"));
   EXPECT_TRUE(has_default("output.directory"));
