@@ -92,6 +92,7 @@ StaggeredLoop::StaggeredLoop(const mesh::TriangleMesh& mesh, hydro::DarcyProblem
     if (!(alpha >= 0.0 && alpha <= 1.0)) throw std::invalid_argument("coupling: a Biot coefficient must lie in [0, 1]");
     seepage_ = seepage_ || alpha > 0.0;
   }
+  last_mechanics_ = mechanics_.export_state();
 }
 
 std::vector<geometry::Polygon> StaggeredLoop::current_blocks() const {
@@ -222,11 +223,18 @@ PassReport StaggeredLoop::run_pass() {
     });
   report.forces_seconds = seconds_since(start);
 
-  // Mechanics under the mechanical and fluid loads: the pass's steps, then (settle_steps) on
-  // until the blocks are at rest, as its fixed steps may stop them part-way to the equilibrium
-  // of its loads and the next pass would meet them there (docs/coupling.md, "Passes that
-  // settle").
-  start = Clock::now();
+  step_mechanics(report);
+  measure_convergence(report, unrelaxed_head_change);
+  finish_pass(report);
+  return report;
+}
+
+// Mechanics under the mechanical and fluid loads: the pass's steps, then (settle_steps) on
+// until the blocks are at rest, as its fixed steps may stop them part-way to the equilibrium
+// of its loads and the next pass would meet them there (docs/coupling.md, "Passes that
+// settle").
+void StaggeredLoop::step_mechanics(PassReport& report) {
+  const auto start = Clock::now();
   const int most_steps = settings_.steps_per_pass + settings_.settle_steps;
   int taken = 0;
   bool at_rest = false;
@@ -259,8 +267,11 @@ PassReport StaggeredLoop::run_pass() {
   report.mechanics_seconds = seconds_since(start);
   report.time = mechanics_.time();
   report.outside_mesh = outside_mesh();
+}
 
-  // Convergence norms.
+// The pass's convergence norms against the last pass (the heads' judged unrelaxed), whether it
+// converged, diverges or lets blocks escape, and the fields' summary numbers.
+void StaggeredLoop::measure_convergence(PassReport& report, double unrelaxed_head_change) {
   const std::vector<Point> u = block_displacements();
   for (std::size_t b = 0; b < u.size(); ++b)
     if (!std::isfinite(u[b].x) || !std::isfinite(u[b].y))
@@ -291,12 +302,22 @@ PassReport StaggeredLoop::run_pass() {
   for (double k : permeability_) report.max_permeability = std::max(report.max_permeability, k);
   for (const dda::ContactInfo& c : mechanics_.contacts())
     report.largest_opening = std::max(report.largest_opening, -c.penetration);
+}
+
+// The pass counted, its times added, and the DDA system continued from its exported state.
+void StaggeredLoop::finish_pass(const PassReport& report) {
   completed_ = iteration_;
   pass_start_.reset();
-  return report;
+  seconds_.porosity += report.porosity_seconds;
+  seconds_.flow += report.flow_seconds;
+  seconds_.forces += report.forces_seconds;
+  seconds_.mechanics += report.mechanics_seconds;
+  last_mechanics_ = mechanics_.export_state();
+  mechanics_.import_state(last_mechanics_);
 }
 
 void StaggeredLoop::abandon_pass() {
+  mechanics_.import_state(last_mechanics_);
   if (!pass_start_) return;
   PassStart& start = *pass_start_;
   iteration_ = completed_;

@@ -20,6 +20,8 @@
 #include "coupling/boundary_gaps.hpp"
 #include "coupling/embedded_joints.hpp"
 #include "coupling/loop_acceleration.hpp"
+#include "coupling/pass_loop.hpp"
+#include "coupling/pass_report.hpp"
 #include "coupling/permeability_model.hpp"
 #include "coupling/porosity.hpp"
 #include "coupling/pressure_forces.hpp"
@@ -69,57 +71,9 @@ struct LoopSettings {
 };
 
 // Thrown by run_pass when LoopSettings::stop_requested says so; the pass is not counted and the
-// blocks stand wherever its last DDA step left them.
+// blocks are back where the last finished pass left them.
 struct PassInterrupted : std::runtime_error {
   using std::runtime_error::runtime_error;
-};
-
-// A block that has moved farther than its own size, √(its area), while the loop still moves
-// it: in a static analysis blocks in equilibrium move by their strains and by sliding to a new
-// seat, not by their own size, so the load has no equilibrium the contacts and supports can
-// give it.
-struct EscapingBlock {
-  int block = 0;
-  double distance = 0.0;  // of its centroid from where it was built (m)
-  double size = 0.0;      // √(its area) (m)
-};
-
-// What one pass did and measured.
-struct PassReport {
-  int iteration = 0;              // 1-based
-  double time = 0.0;              // mechanics time at the end of the pass
-  double head_change = 0.0;       // rms(h̃_k − h_{k−1}) / (max h̃_k − min h̃_k), h̃_k unrelaxed (1 on pass 1)
-  // The same against the heads of two passes back (1 before pass 3): far below head_change
-  // when the loop swings between two states.
-  double head_change_two_passes = 1.0;
-  // max_b |u_k − u_{k−1}| / max(max_b |u_k|, ℓ) over block centroids, ℓ DDA's allowed step
-  // displacement (displacement_change below; 1 on the first pass)
-  double displacement_change = 0.0;
-  double largest_opening = 0.0;   // widest open contact gap (m)
-  double mean_porosity = 0.0;
-  double max_permeability = 0.0;
-  double relaxation = 1.0;        // ω the heads were relaxed with in this pass
-  double load_factor = 1.0;       // of the fluid forces, below 1 while ramped
-  int settling_steps = 0;         // DDA steps past steps_per_pass (LoopSettings::settle_steps)
-  bool at_rest = true;            // false: settle_steps ran out with the blocks still moving
-  // Whether the pass's last DDA step ran at the full mechanics.time_step, and the shortest
-  // step of the pass. A step cut short moves the blocks little however far they are from
-  // equilibrium, so a pass that ends on one does not count as converged.
-  bool full_time_step = true;
-  double shortest_time_step = 0.0;
-  // Everything convergence asks but the full step: both norms under the tolerance at the full
-  // load, the blocks at rest. Set without full_time_step, the steps cut short kept the pass
-  // from counting.
-  bool under_tolerance = false;
-  MeshExcursion outside_mesh;     // how far the blocks had left the fluid mesh after the pass
-  bool converged = false;
-  // The change has grown LoopSettings::diverging_passes passes in a row.
-  bool diverging = false;
-  // Not converged and some blocks escape (farthest first): no equilibrium to converge to.
-  std::vector<EscapingBlock> escaping;
-  int growing_passes = 0;         // passes in a row whose change grew
-  // Seconds per phase in this pass.
-  double porosity_seconds = 0.0, flow_seconds = 0.0, forces_seconds = 0.0, mechanics_seconds = 0.0;
 };
 
 // How the pass-to-pass change has grown lately: passes in a row whose change (the larger norm)
@@ -164,27 +118,35 @@ struct LoopState {
   std::vector<hydro::PermeabilityTensor> permeability_tensors;  // with joints; else empty
 };
 
-class StaggeredLoop {
+class StaggeredLoop final : public PassRunner {
  public:
   // Keeps references to the mesh and the DDA system, which must outlive the loop.
   StaggeredLoop(const mesh::TriangleMesh& mesh, hydro::DarcyProblem flow, dda::System& mechanics,
                 LoopSettings settings);
 
-  // One pass; throws on numerical failure (with what failed). A pass the stop request abandons
-  // (PassInterrupted) first puts back what it had changed of the loop's state: the loop is
-  // then as the last finished pass left it (export_state() gives that state); the DDA system,
-  // which it has stepped, is the caller's to put back.
-  PassReport run_pass();
+  // Passes until `limits` or an end the passes measure (pass_loop.hpp), `observer` told after
+  // each. A pass that throws is rethrown: abandon_pass() then puts the last finished one back.
+  LoopResult run(const LoopLimits& limits, PassObserver& observer) { return run_passes(*this, limits, observer); }
+
+  // One pass; throws on numerical failure (with what failed). After it the DDA system continues
+  // from its state as exported (mechanics_state()), exactly as a run resumed there from a
+  // checkpoint does: importing restarts the DDA linear solver, whose reused factors would
+  // otherwise carry round-off history that no checkpoint holds. A pass the stop request
+  // abandons (PassInterrupted) first puts back what it had changed, the DDA system included:
+  // the loop and the blocks are then as the last finished pass left them (or as built).
+  PassReport run_pass() override;
   // After a pass that threw: puts back what it had changed (its porosity, permeability and
-  // heads included), so that the loop describes the last finished pass again; nothing when no
-  // pass is under way. The DDA system is the caller's to put back.
+  // heads included), so that the loop describes the last finished pass again, and the DDA
+  // system as that pass left it (as built before the first), whether or not a pass was under way.
   void abandon_pass();
 
   // The state between passes, and its restoration (throws std::invalid_argument when the
   // sizes do not fit this mesh and system). The porosity and permeability in it are the last
   // pass's, for what is shown of that pass: every pass recomputes its own from the blocks.
+  // With it, the DDA system's after the last finished pass (as built before the first).
   LoopState export_state() const;
-  void import_state(LoopState state);
+  const dda::SystemState& mechanics_state() const { return last_mechanics_; }
+  void import_state(LoopState state, const dda::SystemState& mechanics);
 
   // New values of the flow boundary conditions (DarcySolver::set_boundary_values), taken from
   // the next pass on: a loading path scripted between passes.
@@ -206,7 +168,12 @@ class StaggeredLoop {
   // The blocks farther from where they were built than their own size, farthest first.
   std::vector<EscapingBlock> blocks_beyond_their_size() const;
   // Passes run to their end (a pass that threw is not counted).
-  int iterations() const { return completed_; }
+  int iterations() const override { return completed_; }
+  // Seconds per phase over the passes that finished.
+  struct PhaseSeconds {
+    double porosity = 0.0, flow = 0.0, forces = 0.0, mechanics = 0.0;
+  };
+  const PhaseSeconds& phase_seconds() const { return seconds_; }
   // A flow solution exists (false until the first pass's solve succeeds).
   bool has_flow() const { return !solution_.head.empty(); }
 
@@ -217,6 +184,9 @@ class StaggeredLoop {
   std::vector<geometry::Polygon> current_blocks() const;
   hydro::FlowSolution solve_flow(const std::vector<geometry::Polygon>& blocks);
   void relax(hydro::FlowSolution& fresh);
+  void step_mechanics(PassReport& report);
+  void measure_convergence(PassReport& report, double unrelaxed_head_change);
+  void finish_pass(const PassReport& report);
   void accelerate_by_anderson(hydro::FlowSolution& fresh);
 
   // What a pass changes of the loop's state before its mechanics, as it was when the pass
@@ -268,6 +238,10 @@ class StaggeredLoop {
   std::vector<double> previous_update_;
   double relaxation_ = 1.0;
   dda::AndersonAccelerator anderson_;
+  // The DDA system after the last finished pass (as built before the first): what an
+  // abandoned pass puts back, and what every pass's system continues from.
+  dda::SystemState last_mechanics_;
+  PhaseSeconds seconds_;
 };
 
 // The displacement norm: the largest distance a block's centroid moved between the passes over

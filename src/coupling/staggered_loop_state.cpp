@@ -18,7 +18,8 @@ LoopState StaggeredLoop::export_state() const {
   return state;
 }
 
-void StaggeredLoop::import_state(LoopState state) {
+void StaggeredLoop::import_state(LoopState state, const dda::SystemState& mechanics) {
+  mechanics_.import_state(mechanics);
   const auto nodes = static_cast<std::size_t>(mesh_.node_count());
   const auto blocks = static_cast<std::size_t>(mechanics_.block_count());
   const bool started = state.iterations > 0;
@@ -63,6 +64,7 @@ void StaggeredLoop::import_state(LoopState state) {
                        Eigen::Map<const Eigen::VectorXd>(state.anderson_images[i].data(),
                                                          static_cast<Eigen::Index>(state.anderson_images[i].size()))});
   anderson_.restore(std::move(history));
+  last_mechanics_ = mechanics;
 }
 
 }  // namespace hydrodda::coupling

@@ -59,32 +59,6 @@ CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::option
   loop_.emplace(mesh_, build_flow_problem(*s.flow), *system_, std::move(settings));
   // The unfractured case does not change between passes: solved once.
   region_references_ = reference_regions(s, mesh_);
-  last_mechanics_ = system_->export_state();
-}
-
-coupling::PassReport CoupledModel::run_pass() {
-  coupling::PassReport r;
-  try {
-    r = loop_->run_pass();
-  } catch (const coupling::PassInterrupted&) {
-    // Back to the last finished pass, the state a run folder and its checkpoint hold (before
-    // the first pass: the blocks as built), so that a summary describes it. The loop has put
-    // its own state back.
-    system_->import_state(last_mechanics_);
-    throw;
-  }
-  porosity_seconds_ += r.porosity_seconds;
-  flow_seconds_ += r.flow_seconds;
-  forces_seconds_ += r.forces_seconds;
-  mechanics_seconds_ += r.mechanics_seconds;
-  last_mechanics_ = system_->export_state();
-  system_->import_state(last_mechanics_);
-  return r;
-}
-
-void CoupledModel::abandon_pass() {
-  loop_->abandon_pass();
-  system_->import_state(last_mechanics_);
 }
 
 void CoupledModel::set_flow_boundaries(std::vector<scenario::FlowBoundaryCondition> boundaries) {
@@ -102,11 +76,7 @@ void CoupledModel::set_tractions(std::vector<scenario::Traction> tractions) {
   scenario_ = std::move(changed);
 }
 
-void CoupledModel::import_state(const CoupledState& state) {
-  system_->import_state(state.mechanics);
-  loop_->import_state(state.coupling);
-  last_mechanics_ = state.mechanics;
-}
+void CoupledModel::import_state(const CoupledState& state) { loop_->import_state(state.coupling, state.mechanics); }
 
 std::vector<geometry::Polygon> CoupledModel::block_polygons() const {
   std::vector<geometry::Polygon> blocks;
@@ -134,8 +104,9 @@ std::vector<std::optional<output::RegionSummary>> CoupledModel::region_flows() c
 }
 
 std::vector<output::NamedValue> CoupledModel::timings() const {
-  return {{"mesh", mesh_seconds_}, {"porosity", porosity_seconds_}, {"flow", flow_seconds_},
-          {"forces", forces_seconds_}, {"mechanics", mechanics_seconds_}};
+  const coupling::StaggeredLoop::PhaseSeconds& passes = loop_->phase_seconds();
+  return {{"mesh", mesh_seconds_}, {"porosity", passes.porosity}, {"flow", passes.flow},
+          {"forces", passes.forces}, {"mechanics", passes.mechanics}};
 }
 
 }  // namespace hydrodda::run

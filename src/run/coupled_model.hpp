@@ -42,17 +42,20 @@ class CoupledModel {
   CoupledModel(const CoupledModel&) = delete;
   CoupledModel& operator=(const CoupledModel&) = delete;
 
-  // One pass: porosity → permeability → flow → pressures → vertex forces → DDA steps. After it
-  // the engines continue from their state as exported (export_state), exactly as a run resumed
-  // there from a checkpoint does: importing restarts the DDA linear solver, whose reused factors
-  // would otherwise carry round-off history that no checkpoint holds. A pass the stop request
-  // abandons (coupling::PassInterrupted, rethrown) leaves the model at its last finished pass,
-  // or as built. Any other failure leaves the engines where it happened, until abandon_pass().
-  coupling::PassReport run_pass();
+  // One pass: porosity → permeability → flow → pressures → vertex forces → DDA steps
+  // (coupling::StaggeredLoop::run_pass). A pass the stop request abandons
+  // (coupling::PassInterrupted, rethrown) leaves the model at its last finished pass, or as
+  // built. Any other failure leaves the engines where it happened, until abandon_pass().
+  coupling::PassReport run_pass() { return loop_->run_pass(); }
+  // Passes until `limits` or an end the passes measure, `observer` told after each
+  // (coupling::StaggeredLoop::run); a pass that throws is rethrown, as by run_pass().
+  coupling::LoopResult run(const coupling::LoopLimits& limits, coupling::PassObserver& observer) {
+    return loop_->run(limits, observer);
+  }
   // After a pass that failed: the model back at its last finished pass (or as built), its
   // fields and heads included, so that its summary describes that pass; nothing when no pass
   // is under way.
-  void abandon_pass();
+  void abandon_pass() { loop_->abandon_pass(); }
   // Asked before every DDA step of a pass; unset: never.
   void set_stop_request(std::function<bool()> stop_requested) { stop_requested_ = std::move(stop_requested); }
 
@@ -67,7 +70,7 @@ class CoupledModel {
   // The state after the last finished pass (as built before the first), and its restoration
   // into a model built from the same scenario (continuing a run); throws std::invalid_argument
   // when it does not fit.
-  CoupledState export_state() const { return {last_mechanics_, loop_->export_state()}; }
+  CoupledState export_state() const { return {loop_->mechanics_state(), loop_->export_state()}; }
   void import_state(const CoupledState& state);
 
   int iterations() const { return loop_->iterations(); }
@@ -88,8 +91,7 @@ class CoupledModel {
   std::vector<output::NamedValue> timings() const;
  private:
   scenario::Scenario scenario_;
-  double mesh_seconds_ = 0.0, porosity_seconds_ = 0.0, flow_seconds_ = 0.0, forces_seconds_ = 0.0,
-         mechanics_seconds_ = 0.0;
+  double mesh_seconds_ = 0.0;
   mesh::TriangleMesh mesh_;
   std::vector<dda::BlockDefinition> initial_blocks_;  // where the tractions' edges are found
   std::optional<dda::System> system_;
@@ -98,9 +100,6 @@ class CoupledModel {
   // new boundary values.
   std::vector<RegionReference> region_references_;
   std::function<bool()> stop_requested_;
-  // The DDA system after the last finished pass (as built before the first): what an
-  // abandoned pass puts back, and what every pass's system continues from.
-  dda::SystemState last_mechanics_;
 };
 
 }  // namespace hydrodda::run

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -517,6 +518,42 @@ TEST(CoupledModel, PassesRunByHandEndWhereTheRunEnds) {
   ASSERT_TRUE(by_hand.flow);
   EXPECT_EQ(by_hand.flow->balance, result.summary.flow->balance);
   expect_column_settled(by_hand);
+}
+
+TEST(CoupledModel, TheLoopRunWithAnObserverEndsWherePassesByHandEnd) {
+  // CoupledModel::run (the staggered loop's bounded loop) tells its observer after every pass
+  // and reaches, bit for bit, the state of the same passes run by hand; an observer that asks
+  // to stop ends it before the next pass, the model at the last finished one.
+  const scenario::Scenario s = scenario::read_scenario(kVerification / "coupled_hydrostatic_column.toml");
+  const auto encoded = [](const run::CoupledModel& model) {
+    const run::CoupledState state = model.export_state();
+    return hydrodda::output::encode_checkpoint({}, state.mechanics, state.coupling);
+  };
+  struct Observer final : hydrodda::coupling::PassObserver {
+    std::vector<int> passes;
+    int stop_before = 0;  // 0: never
+    bool stop_requested() override { return stop_before > 0 && static_cast<int>(passes.size()) + 1 >= stop_before; }
+    void after_pass(const hydrodda::coupling::PassReport& r) override { passes.push_back(r.iteration); }
+  };
+  run::CoupledModel by_hand(s), looped(s), stopped(s);
+  bool converged = false;
+  while (!converged && by_hand.iterations() < s.coupling.max_iterations) converged = by_hand.run_pass().converged;
+  ASSERT_TRUE(converged);
+  Observer all;
+  const hydrodda::coupling::LoopResult result = looped.run({s.coupling.max_iterations, std::nullopt}, all);
+  EXPECT_EQ(result.end, hydrodda::coupling::LoopEnd::converged);
+  EXPECT_EQ(static_cast<int>(all.passes.size()), by_hand.iterations());
+  EXPECT_EQ(all.passes.back(), by_hand.iterations());
+  EXPECT_EQ(encoded(looped), encoded(by_hand));
+
+  Observer stopping;
+  stopping.stop_before = 2;
+  EXPECT_EQ(stopped.run({s.coupling.max_iterations, std::nullopt}, stopping).end,
+            hydrodda::coupling::LoopEnd::stop_requested);
+  EXPECT_EQ(stopped.iterations(), 1);
+  run::CoupledModel one_pass(s);
+  one_pass.run_pass();
+  EXPECT_EQ(encoded(stopped), encoded(one_pass));
 }
 
 TEST(CoupledModel, AnAbandonedPassLeavesTheModelAtTheLastFinishedPass) {

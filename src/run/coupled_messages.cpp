@@ -1,0 +1,96 @@
+#include "run/coupled_messages.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "output/item_list.hpp"
+#include "run/figures.hpp"
+
+namespace hydrodda::run {
+
+std::string describe_escape(const std::vector<coupling::EscapingBlock>& escaping, int iteration,
+                            const output::RunFolder& folder) {
+  std::vector<std::string> named;
+  for (const coupling::EscapingBlock& b : escaping)
+    named.push_back(fmt::format("block {} (moved {:.3g} m, size {:.3g} m)", b.block, b.distance, b.size));
+  const std::string blocks = output::list_items(named, &folder, "escaping_blocks.txt");
+  return fmt::format(
+      "no mechanical equilibrium under this load: at coupling iteration {}, {} block(s) have moved farther than "
+      "their own size (the square root of their area) and the loop still moves them: {}; the fluid load exceeds "
+      "what the blocks' weight, their contacts and the supports can hold",
+      iteration, escaping.size(), blocks);
+}
+
+std::string describe_farthest(const std::vector<geometry::Point>& displacements) {
+  std::vector<int> order(displacements.size());
+  for (std::size_t b = 0; b < order.size(); ++b) order[b] = static_cast<int>(b);
+  const auto distance = [&](int b) { return std::hypot(displacements[b].x, displacements[b].y); };
+  const std::size_t named = std::min<std::size_t>(order.size(), 5);
+  std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(named), order.end(),
+                    [&](int a, int b) { return distance(a) > distance(b) || (distance(a) == distance(b) && a < b); });
+  std::string text;
+  for (std::size_t i = 0; i < named; ++i) {
+    const int b = order[i];
+    text += fmt::format("{}block {} moved {:.3g} m (ux {:.3g} m, uy {:.3g} m)", i == 0 ? "" : ", ", b, distance(b),
+                        displacements[b].x, displacements[b].y);
+  }
+  return text;
+}
+
+std::string describe_results_kept(int finished) {
+  return finished > 0 ? fmt::format("summary.json and the figures hold coupling iteration {}, the last that finished",
+                                    finished)
+                      : "no coupling iteration finished: there are no results";
+}
+
+std::string describe_failure_for_figures(int pass, const std::string& message) {
+  const std::string prefix = fmt::format("coupling iteration {} failed: ", pass);
+  return describe_status_for_figures(fmt::format("failed at pass {}", pass),
+                                     message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message);
+}
+
+std::string describe_last_passes(const std::vector<std::string>& columns,
+                                 const std::vector<std::vector<std::string>>& rows, int ramp_passes,
+                                 std::vector<output::RegionSummary>& regions) {
+  const std::size_t loaded = rows.size() > static_cast<std::size_t>(ramp_passes) ? rows.size() - ramp_passes : 0;
+  const std::size_t passes = std::min(kRangePasses, loaded);
+  if (passes == 0) return {};
+  std::string text;
+  for (output::RegionSummary& r : regions) {
+    const auto column = std::find(columns.begin(), columns.end(), "region_conductivity_" + r.name);
+    if (column == columns.end() || !(r.matrix_conductivity.value_or(0.0) > 0.0)) continue;
+    const auto at = static_cast<std::size_t>(column - columns.begin());
+    output::RegionSummary::PassRange range{static_cast<int>(passes), std::numeric_limits<double>::infinity(),
+                                           -std::numeric_limits<double>::infinity()};
+    for (std::size_t k = rows.size() - passes; k < rows.size(); ++k) {
+      if (at >= rows[k].size() || rows[k][at].empty()) continue;  // a region that held no element
+      const double normalised = std::stod(rows[k][at]) / *r.matrix_conductivity;
+      range.least = std::min(range.least, normalised);
+      range.largest = std::max(range.largest, normalised);
+    }
+    if (!(range.least <= range.largest)) continue;  // no value in those passes
+    r.last_passes = range;
+    // A region whose answer did not move (its permeability fixed) is no news in the message.
+    const double spread = (range.largest - range.least) / std::abs(*r.normalised_conductivity);
+    if (!(spread > 1e-9)) continue;
+    text += fmt::format("{}K_eff/K_m of region '{}' ranged from {:.4g} to {:.4g} ({}%)", text.empty() ? "" : ", ",
+                        r.name, range.least, range.largest,
+                        spread >= 0.1 ? fmt::format("{:.0f}", 100.0 * spread) : fmt::format("{:.2g}", 100.0 * spread));
+  }
+  return text.empty() ? text : fmt::format("over the last {} passes {}", passes, text);
+}
+
+std::string describe_cut_steps(double shortest, double full) {
+  return fmt::format(
+      "its DDA steps were cut short (to {:.3g} s at the shortest, against mechanics.time_step = {:g} s) and its last "
+      "one had not grown back: steps cut short move the blocks little however far they are from equilibrium, so a "
+      "small change proves nothing. The contacts did not settle at the full step (their states or their forces): "
+      "look for blocks thinner than the contact distance (set by mechanics.max_displacement_ratio), or give more "
+      "mechanics.steps so that the step can grow back",
+      shortest, full);
+}
+
+}  // namespace hydrodda::run
