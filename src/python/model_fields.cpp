@@ -105,7 +105,7 @@ py::dict contact_fields(const dda::System& system) {
   return fields;
 }
 
-py::dict fracture_fields(const run::FractureState& state) {
+py::dict fracture_fields(const fractures::FractureState& state) {
   const auto n = static_cast<py::ssize_t>(state.fractures.size());
   py::array_t<int> id(n), set(n), number(n);
   py::array_t<bool> open(n);
@@ -113,9 +113,9 @@ py::dict fracture_fields(const run::FractureState& state) {
       normal_stress(n), tip_opening_angle(n), flow(n);
   py::list origin;
   for (py::ssize_t i = 0; i < n; ++i) {
-    const run::FractureResult& r = state.fractures[static_cast<std::size_t>(i)];
+    const fractures::FractureResult& r = state.fractures[static_cast<std::size_t>(i)];
     id.mutable_at(i) = r.id;
-    origin.append(run::origin_name(r.origin.source));
+    origin.append(fractures::origin_name(r.origin.source));
     set.mutable_at(i) = r.origin.source == geometry::TraceSource::joint_set ? r.origin.set : -1;
     number.mutable_at(i) = r.origin.number;
     length.mutable_at(i) = r.length;

@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "dda/system.hpp"
+#include "fractures/fracture_results.hpp"
 #include "hydro/flow_solution.hpp"
 #include "mesh/triangle_mesh.hpp"
 #include "python/bindings.hpp"
-#include "run/fracture_results.hpp"
 #include "run/run.hpp"
 
 namespace hydrodda::python {
@@ -31,7 +31,7 @@ py::dict contact_fields(const dda::System& system);
 // set (-1 unless from a set), number, length, open_length (m), open (bool), mean_aperture,
 // max_aperture, max_shear (m), hydraulic_aperture (m), normal_stress (Pa), flow (m²/s, NaN
 // where not computed).
-py::dict fracture_fields(const run::FractureState& state);
+py::dict fracture_fields(const fractures::FractureState& state);
 // {"fluid", "blocks", "contacts", "fractures"} of a run's model at its end, each present when
 // the kind of run has it (fractures: when the run measured them).
 py::dict fields_at_end(const run::ModelAtEnd& end);

@@ -15,17 +15,18 @@
 #include <variant>
 
 #include "coupling/staggered_loop.hpp"
+#include "fractures/fracture_results.hpp"
 #include "output/summary.hpp"
 #include "python/bindings.hpp"
 #include "python/model_fields.hpp"
 #include "python/python_callbacks.hpp"
 #include "run/coupled_model.hpp"
-#include "run/fracture_results.hpp"
 #include "run/model_building.hpp"
 #include "run/flow_model.hpp"
 #include "run/mechanics_model.hpp"
 #include "run/run.hpp"
 #include "run/run_summary.hpp"
+#include "run/scenario_fractures.hpp"
 
 namespace hydrodda::python {
 
@@ -188,7 +189,7 @@ class Simulation {
     std::vector<geometry::Polygon> polygons;
     for (int b = 0; b < blocks.block_count(); ++b) polygons.push_back(blocks.polygon(b));
     if (!joint_law_) joint_law_ = run::make_joint_aperture_law(scenario_.definition);
-    run::FractureState state =
+    fractures::FractureState state =
         meter_->measure(polygons, blocks.penetration_tolerance(), blocks.contacts(), *joint_law_);
     if (const auto* coupled = std::get_if<Coupled>(&model_); coupled && (*coupled)->loop().has_flow()) {
       if (!flow_zones_) flow_zones_ = meter_->flow_zones((*coupled)->mesh());
@@ -283,8 +284,8 @@ class Simulation {
   PythonScenario scenario_;  // as built, with the changes set() made since
   std::variant<Flow, Mechanics, Coupled> model_;
   bool converged_ = false;  // coupled: the last pass met the tolerance
-  std::optional<run::FractureMeter> meter_;                  // made on the first call of fractures
-  std::optional<run::FractureMeter::FlowZones> flow_zones_;  // likewise, for a coupled model
+  std::optional<fractures::FractureMeter> meter_;                  // made on the first call of fractures
+  std::optional<fractures::FractureMeter::FlowZones> flow_zones_;  // likewise, for a coupled model
   std::optional<hydro::JointApertureLaw> joint_law_;         // likewise
 };
 

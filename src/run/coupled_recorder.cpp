@@ -9,6 +9,7 @@
 
 #include "run/coupled_messages.hpp"
 #include "run/model_building.hpp"
+#include "run/scenario_fractures.hpp"
 
 namespace hydrodda::run {
 
@@ -43,9 +44,9 @@ ProgressReport report_pass(const coupling::PassReport& r) {
 }
 
 // The largest opening of any fracture (fractures.csv's max_aperture), 0 when all are closed.
-double find_largest_opening(const FractureState& state) {
+double find_largest_opening(const fractures::FractureState& state) {
   double largest = 0.0;
-  for (const FractureResult& f : state.fractures) largest = std::max(largest, f.max_aperture);
+  for (const fractures::FractureResult& f : state.fractures) largest = std::max(largest, f.max_aperture);
   return largest;
 }
 
@@ -64,7 +65,7 @@ CoupledRecorder::CoupledRecorder(const RunContext& context, const CoupledModel& 
       paraview_(context.folder, context.scenario.output.fields),
       meter_(make_fracture_meter(context.scenario)),
       joint_law_(make_joint_aperture_law(context.scenario)),
-      flow_zones_(meter_ ? meter_->flow_zones(model.mesh()) : FractureMeter::FlowZones{}),
+      flow_zones_(meter_ ? meter_->flow_zones(model.mesh()) : fractures::FractureMeter::FlowZones{}),
       fractures_(context.folder, /*with_flow=*/true) {
   const scenario::Scenario& s = scenario_;
   checkpoint_.scenario_hash = output::hash_text(context.scenario_text);
@@ -158,7 +159,7 @@ void CoupledRecorder::add_measures(const coupling::PassReport& r) {
 }
 
 void CoupledRecorder::follow_tips(const coupling::PassReport& r) {
-  const std::vector<WedgeTipElement> tips = find_tip_elements();
+  const std::vector<fractures::WedgeTipElement> tips = find_tip_elements();
   recent_.push_back({r.iteration, tips_to_refine(tips, scenario_.mesh->size, current_round(refined_tips_))});
   if (recent_.size() > kTipPasses) recent_.pop_front();
 }
@@ -219,16 +220,16 @@ void CoupledRecorder::measure_fractures() {
   meter_->add_flow(*fracture_state_, flow_zones_, model_.mesh(), model_.loop().flow());
 }
 
-const FractureState* CoupledRecorder::measured_fractures() {
+const fractures::FractureState* CoupledRecorder::measured_fractures() {
   if (!meter_) return nullptr;
   if (!fracture_state_) measure_fractures();
   return &*fracture_state_;
 }
 
-std::vector<WedgeTipElement> CoupledRecorder::find_tip_elements() {
-  const FractureState* state = measured_fractures();
+std::vector<fractures::WedgeTipElement> CoupledRecorder::find_tip_elements() {
+  const fractures::FractureState* state = measured_fractures();
   if (!state) return {};
-  return find_wedge_tip_elements(*state, matrix_permeability_, joint_law_, model_.mesh(), tip_locator(),
+  return fractures::find_wedge_tip_elements(*state, matrix_permeability_, joint_law_, model_.mesh(), tip_locator(),
                                  meter_->layout().traces);
 }
 
@@ -244,12 +245,12 @@ output::RunSummary CoupledRecorder::summary() {
     summary.fractures = summarise_fractures(*fracture_state_);
     summary.fractures->refined_tips = refined_tips_;
     if (scenario_.mesh->refine_tips) summary.fractures->rounds = current_round(refined_tips_);
-    const std::optional<WedgeTip> tip =
-        cubic_law_ ? find_sharpest_wedge_tip(*fracture_state_, matrix_permeability_, joint_law_) : std::nullopt;
+    const std::optional<fractures::WedgeTip> tip =
+        cubic_law_ ? fractures::find_sharpest_wedge_tip(*fracture_state_, matrix_permeability_, joint_law_) : std::nullopt;
     if (tip) {
       summary.fractures->tip_length = tip->length;
       summary.fractures->tip_length_id = tip->fracture;
-      if (const auto element = find_wedge_tip_element(*tip, model_.mesh(), tip_locator(), meter_->layout().traces))
+      if (const auto element = fractures::find_wedge_tip_element(*tip, model_.mesh(), tip_locator(), meter_->layout().traces))
         summary.fractures->tip_element_size = element->element_size;
     }
   }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "coupling/pass_loop.hpp"
+#include "fractures/fracture_results.hpp"
 #include "hydro/permeability_law.hpp"
 #include "mesh/point_locator.hpp"
 #include "output/checkpoint.hpp"
@@ -18,7 +19,6 @@
 #include "output/summary.hpp"
 #include "run/coupled_model.hpp"
 #include "run/fracture_output.hpp"
-#include "run/fracture_results.hpp"
 #include "run/paraview_output.hpp"
 #include "run/runs.hpp"
 #include "run/tip_refinement.hpp"
@@ -65,12 +65,12 @@ class CoupledRecorder final : public coupling::PassObserver {
 
   // The fractures as the model's blocks are now (measured when not yet), or null for a
   // scenario that lists its blocks.
-  const FractureState* measured_fractures();
+  const fractures::FractureState* measured_fractures();
   // The fractures of the last finished pass, once measured (what the front end is shown).
-  const std::optional<FractureState>& fracture_state() const { return fracture_state_; }
+  const std::optional<fractures::FractureState>& fracture_state() const { return fracture_state_; }
   // The cubic law's wedge tips in the fluid elements, the least resolved first (none without
   // fracture traces).
-  std::vector<WedgeTipElement> find_tip_elements();
+  std::vector<fractures::WedgeTipElement> find_tip_elements();
   // mesh.refine_tips: whether this round may end with tips to refine, and the tips unresolved
   // over its last passes (PassTips, newest last).
   bool follows_tips() const { return follow_tips_; }
@@ -100,11 +100,11 @@ class CoupledRecorder final : public coupling::PassObserver {
   // What a checkpoint holds besides the engines' states; restored first when resuming.
   output::RunCheckpoint checkpoint_;
   ParaviewOutput paraview_;
-  std::optional<FractureMeter> meter_;
+  std::optional<fractures::FractureMeter> meter_;
   hydro::JointApertureLaw joint_law_;
-  FractureMeter::FlowZones flow_zones_;
+  fractures::FractureMeter::FlowZones flow_zones_;
   FractureOutput fractures_;
-  std::optional<FractureState> fracture_state_;  // of the last finished pass
+  std::optional<fractures::FractureState> fracture_state_;  // of the last finished pass
   int last_written_ = 0;
   bool converged_ = false;
   bool last_pass_cut_short_ = false;  // its last DDA step was cut short (PassReport::full_time_step)

@@ -21,6 +21,7 @@
 #include "run/resumed_run.hpp"
 #include "run/run_summary.hpp"
 #include "run/runs.hpp"
+#include "run/scenario_fractures.hpp"
 #include "run/tip_refinement.hpp"
 #include "scenario/spellings.hpp"
 
@@ -95,7 +96,7 @@ void draw_round_figures(const Round& round, const std::string& status) {
   convergence.status = status;
   draw_convergence(s, round.context.folder, convergence);
   if (loop.iterations() > 0)
-    if (const FractureState* fractures = round.recorder.measured_fractures())
+    if (const fractures::FractureState* fractures = round.recorder.measured_fractures())
       draw_aperture_figure(s, round.context.folder, round.model.block_polygons(), *fractures,
                            {fmt::format("coupling iteration {}", loop.iterations()), status});
 }
@@ -228,7 +229,7 @@ void warn_at_end(const Round& round, const output::RunSummary& summary) {
   // The cubic law's answer depends on the mesh where the elements at a wedge tip are wider than
   // its exchange length (docs/coupling.md, "Wedge tips").
   if (!round.recorder.cubic_law() || !s.mesh) return;
-  const std::vector<WedgeTipElement> tips = round.recorder.find_tip_elements();  // none without traces
+  const std::vector<fractures::WedgeTipElement> tips = round.recorder.find_tip_elements();  // none without traces
   if (const auto text = describe_unresolved_wedge_tips(tips, *s.mesh, &round.context.folder))
     spdlog::warn("{}{}",
                  s.mesh->refine_tips

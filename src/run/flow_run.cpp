@@ -20,7 +20,7 @@ void stop_if_requested(const RunContext& context, const output::RunSummary& summ
 output::RunSummary run_flow(const RunContext& context) {
   std::optional<UnstoppableStage> building(context.callbacks);  // nothing is written before the solve ends
   FlowModel model(context.scenario, context.mesh_cache);
-  const std::optional<FractureState> no_fractures;
+  const std::optional<fractures::FractureState> no_fractures;
   const TellModelAtEnd tell_model_at_end(context.callbacks, model, no_fractures);
   const hydro::FlowSolution& solution = model.solve();
   building.reset();

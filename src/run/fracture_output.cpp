@@ -47,13 +47,13 @@ void FractureOutput::continue_from(int last_step, const std::vector<int>& writte
   for (int step : written) list_if_present(*series_, folder_, step, fmt::format("fractures_{:04d}.vtu", step));
 }
 
-void FractureOutput::add_rows(long long step, double time, const FractureState& state) {
-  for (const FractureResult& r : state.fractures) {
+void FractureOutput::add_rows(long long step, double time, const fractures::FractureState& state) {
+  for (const fractures::FractureResult& r : state.fractures) {
     const bool from_set = r.origin.source == geometry::TraceSource::joint_set;
     std::vector<std::string> row{CsvTable::cell(step),
                                  CsvTable::cell(time),
                                  CsvTable::cell(static_cast<long long>(r.id)),
-                                 origin_name(r.origin.source),
+                                 fractures::origin_name(r.origin.source),
                                  from_set ? CsvTable::cell(static_cast<long long>(r.origin.set)) : "",
                                  CsvTable::cell(static_cast<long long>(r.origin.number)),
                                  CsvTable::cell(r.length),
@@ -71,14 +71,14 @@ void FractureOutput::add_rows(long long step, double time, const FractureState& 
   folder_.write("fractures.csv", table_.text());
 }
 
-void FractureOutput::write_series(int step, double time, const FractureState& state) {
+void FractureOutput::write_series(int step, double time, const fractures::FractureState& state) {
   std::vector<std::array<geometry::Point, 2>> segments;
   DataArray fracture{"fracture", 1, {}}, aperture{"aperture", 1, {}}, shear{"shear", 1, {}}, open{"open", 1, {}},
       hydraulic{"hydraulic_aperture", 1, {}}, flow{"flow", 1, {}};
   std::vector<double> flow_of(state.fractures.empty() ? 0 : state.fractures.back().id + 1, 0.0);
-  for (const FractureResult& r : state.fractures)
+  for (const fractures::FractureResult& r : state.fractures)
     if (r.flow) flow_of[r.id] = *r.flow;
-  for (const FracturePiece& p : state.pieces) {
+  for (const fractures::FracturePiece& p : state.pieces) {
     segments.push_back(p.segment);
     fracture.values.push_back(p.fracture);
     aperture.values.push_back(p.aperture);
@@ -95,12 +95,12 @@ void FractureOutput::write_series(int step, double time, const FractureState& st
   series_->add(time, name);
 }
 
-output::FractureSummary summarise_fractures(const FractureState& state) {
+output::FractureSummary summarise_fractures(const fractures::FractureState& state) {
   output::FractureSummary summary;
-  for (const FractureResult& r : state.fractures) {
+  for (const fractures::FractureResult& r : state.fractures) {
     output::FractureRow row;
     row.id = r.id;
-    row.origin = origin_name(r.origin.source);
+    row.origin = fractures::origin_name(r.origin.source);
     if (r.origin.source == geometry::TraceSource::joint_set) row.set = r.origin.set;
     row.number = r.origin.number;
     row.length = r.length;
@@ -118,7 +118,7 @@ output::FractureSummary summarise_fractures(const FractureState& state) {
 }
 
 void draw_aperture_figure(const scenario::Scenario& s, const output::RunFolder& folder,
-                          std::span<const geometry::Polygon> blocks, const FractureState& state,
+                          std::span<const geometry::Polygon> blocks, const fractures::FractureState& state,
                           const FigureState& shown) {
   if (s.output.figures.empty() || state.pieces.empty()) return;
   spdlog::debug("figures: drawing in {}", folder.figures().string());
@@ -128,7 +128,7 @@ void draw_aperture_figure(const scenario::Scenario& s, const output::RunFolder& 
   figure.warning = shown.status;
   figure.field_label = "mechanical aperture (mm)";
   figure.blocks.assign(blocks.begin(), blocks.end());
-  for (const FracturePiece& p : state.pieces) {
+  for (const fractures::FracturePiece& p : state.pieces) {
     figure.segments.push_back(p.segment);
     figure.segment_values.push_back(p.aperture * 1e3);
     figure.segment_highlighted.push_back(p.open);

@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
+#include "fractures/fracture_results.hpp"
 #include "output/csv_table.hpp"
 #include "output/pvd_series.hpp"
 #include "output/summary.hpp"
 #include "output/run_folder.hpp"
-#include "run/fracture_results.hpp"
 #include "scenario/scenario.hpp"
 
 namespace hydrodda::run {
@@ -28,9 +28,9 @@ class FractureOutput {
   // still there.
   void continue_from(int last_step, const std::vector<int>& written);
   // One step's rows, written at once.
-  void add_rows(long long step, double time, const FractureState& state);
+  void add_rows(long long step, double time, const fractures::FractureState& state);
   // fractures_NNNN.vtu, listed in fractures.pvd at `time`.
-  void write_series(int step, double time, const FractureState& state);
+  void write_series(int step, double time, const fractures::FractureState& state);
 
  private:
   const output::RunFolder& folder_;
@@ -47,7 +47,7 @@ struct FigureState {
 };
 
 // summary.json's `fractures` section from a step's results (docs/output.md).
-output::FractureSummary summarise_fractures(const FractureState& state);
+output::FractureSummary summarise_fractures(const fractures::FractureState& state);
 
 // figures/apertures.* for each format output.figures asks for: the blocks as they are, each
 // fracture piece coloured by its mechanical aperture (mm), closed pieces thin and grey; titled
@@ -55,7 +55,7 @@ output::FractureSummary summarise_fractures(const FractureState& state);
 // residual_aperture, normal_stiffness, max_closure) also figures/hydraulic_apertures.*: every
 // piece coloured by the aperture the flow sees (µm, log scale).
 void draw_aperture_figure(const scenario::Scenario& scenario, const output::RunFolder& folder,
-                          std::span<const geometry::Polygon> blocks, const FractureState& state,
+                          std::span<const geometry::Polygon> blocks, const fractures::FractureState& state,
                           const FigureState& shown);
 
 }  // namespace hydrodda::run

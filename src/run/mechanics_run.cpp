@@ -12,6 +12,7 @@
 #include "run/paraview_output.hpp"
 #include "run/run_summary.hpp"
 #include "run/runs.hpp"
+#include "run/scenario_fractures.hpp"
 #include "output/csv_table.hpp"
 
 namespace hydrodda::run {
@@ -42,15 +43,15 @@ output::RunSummary run_mechanics(const RunContext& context) {
   };
 
   ParaviewOutput paraview(context.folder, s.output.fields);
-  const std::optional<FractureMeter> meter = make_fracture_meter(s);
+  const std::optional<fractures::FractureMeter> meter = make_fracture_meter(s);
   const hydro::JointApertureLaw joint_law = make_joint_aperture_law(s);
   FractureOutput fractures(context.folder, /*with_flow=*/false);
-  std::optional<FractureState> fracture_state;  // of the blocks as they are, when measured at this step
+  std::optional<fractures::FractureState> fracture_state;  // of the blocks as they are, when measured at this step
   // The blocks and fractures of the last output step: what the figure of a run that stops shows.
   struct OutputState {
     long long step = 0;
     std::vector<geometry::Polygon> polygons;
-    FractureState fractures;
+    fractures::FractureState fractures;
   };
   std::optional<OutputState> last_output;
   const TellModelAtEnd tell_model_at_end(context.callbacks, model, fracture_state);

@@ -23,6 +23,10 @@
 #include "run/resumed_run.hpp"
 #include "scenario/scenario.hpp"
 
+namespace hydrodda::fractures {
+struct FractureState;
+}
+
 namespace hydrodda::run {
 
 // What a run reports as it goes: each DDA step of a mechanics-only run, each pass of a coupled
@@ -43,14 +47,13 @@ struct ProgressReport {
 class FlowModel;
 class MechanicsModel;
 class CoupledModel;
-struct FractureState;
 
 // A run's model as the run ends, for a front end that reads its fields from memory (the Python
 // module): the model in its last state (a coupled run's last finished pass) and, when the
 // scenario has fracture traces and the run measured them, the fractures' results then.
 struct ModelAtEnd {
   std::variant<const FlowModel*, const MechanicsModel*, const CoupledModel*> model;
-  const FractureState* fractures = nullptr;
+  const fractures::FractureState* fractures = nullptr;
 };
 
 struct Callbacks {

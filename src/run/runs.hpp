@@ -8,10 +8,10 @@
 #include <optional>
 #include <string>
 
+#include "fractures/fracture_results.hpp"
 #include "output/checkpoint.hpp"
 #include "output/run_folder.hpp"
 #include "output/summary.hpp"
-#include "run/fracture_results.hpp"
 #include "run/run.hpp"
 #include "scenario/scenario.hpp"
 
@@ -61,7 +61,7 @@ class UnstoppableStage {
 template <class Model>
 class TellModelAtEnd {
  public:
-  TellModelAtEnd(const Callbacks& callbacks, const Model& model, const std::optional<FractureState>& fractures)
+  TellModelAtEnd(const Callbacks& callbacks, const Model& model, const std::optional<fractures::FractureState>& fractures)
       : tell_(&callbacks.model_at_end), model_(model), fractures_(fractures) {}
   ~TellModelAtEnd() {
     if (!tell_ || !*tell_) return;
@@ -79,7 +79,7 @@ class TellModelAtEnd {
  private:
   const std::function<void(const ModelAtEnd&)>* tell_;
   const Model& model_;
-  const std::optional<FractureState>& fractures_;
+  const std::optional<fractures::FractureState>& fractures_;
 };
 
 // A run that stopped before its end: what failed or stopped it, and where. The summary holds

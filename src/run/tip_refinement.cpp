@@ -7,11 +7,11 @@ namespace hydrodda::run {
 
 int current_round(const std::vector<output::RefinedTip>& tips) { return tips.empty() ? 1 : tips.back().round + 1; }
 
-std::vector<output::RefinedTip> tips_to_refine(std::span<const WedgeTipElement> tips, double mesh_size, int round) {
+std::vector<output::RefinedTip> tips_to_refine(std::span<const fractures::WedgeTipElement> tips, double mesh_size, int round) {
   std::vector<output::RefinedTip> added;
-  if (tips.empty() || resolves_wedge_tip(tips.front())) return added;
-  for (const WedgeTipElement& e : tips)
-    if (!resolves_wedge_tip(e)) {
+  if (tips.empty() || fractures::resolves_wedge_tip(tips.front())) return added;
+  for (const fractures::WedgeTipElement& e : tips)
+    if (!fractures::resolves_wedge_tip(e)) {
       const double size = 0.25 * e.tip.length;
       added.push_back({e.tip.point.x, e.tip.point.y, size, scenario::default_refine_radius(mesh_size, size), round});
     }

@@ -8,8 +8,8 @@
 #include <span>
 #include <vector>
 
+#include "fractures/fracture_results.hpp"
 #include "output/summary.hpp"
-#include "run/fracture_results.hpp"
 #include "scenario/scenario.hpp"
 
 namespace hydrodda::run {
@@ -21,7 +21,7 @@ int current_round(const std::vector<output::RefinedTip>& tips);
 // A point at s*/4 of every tip the mesh does not resolve (find_wedge_tip_elements: least
 // resolved first), with mesh.refine's default radius in a mesh of `mesh_size`, found in
 // `round`; none when the least resolved is resolved.
-std::vector<output::RefinedTip> tips_to_refine(std::span<const WedgeTipElement> tips, double mesh_size, int round);
+std::vector<output::RefinedTip> tips_to_refine(std::span<const fractures::WedgeTipElement> tips, double mesh_size, int round);
 
 // The [[mesh.refine]] points of refined tips.
 std::vector<scenario::MeshRefinePoint> refine_points(const std::vector<output::RefinedTip>& tips);

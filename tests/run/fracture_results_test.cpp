@@ -10,11 +10,13 @@
 #include <functional>
 #include <vector>
 
+#include "fractures/fracture_results.hpp"
 #include "geometry/block_network.hpp"
 #include "mesh/triangle_mesh.hpp"
-#include "run/fracture_results.hpp"
+#include "run/scenario_fractures.hpp"
 
 namespace geometry = hydrodda::geometry;
+namespace fractures = hydrodda::fractures;
 namespace run = hydrodda::run;
 using geometry::Point;
 
@@ -22,17 +24,17 @@ namespace {
 
 constexpr double kAperture = 1e-3;
 
-run::FractureMeter two_block_meter() {
+fractures::FractureMeter two_block_meter() {
   geometry::BlockNetworkRequest request;
   request.domain = {{0, 0}, {2, 0}, {2, 1}, {0, 1}};
   request.traces = {{{{1, 0}, {1, 1}}, {geometry::TraceSource::joint_set, 1, 3}}};
   request.aperture = kAperture;
-  run::FractureLayout layout{request.traces, geometry::build_block_network(request)};
-  return run::FractureMeter(std::move(layout), 0.1);
+  fractures::FractureLayout layout{request.traces, geometry::build_block_network(request)};
+  return fractures::FractureMeter(std::move(layout), 0.1);
 }
 
 // The network's blocks with the right one (centroid x > 1) mapped by `move`.
-std::vector<geometry::Polygon> moved(const run::FractureMeter& meter, const std::function<Point(Point)>& move) {
+std::vector<geometry::Polygon> moved(const fractures::FractureMeter& meter, const std::function<Point(Point)>& move) {
   std::vector<geometry::Polygon> blocks = meter.layout().network.blocks;
   for (geometry::Polygon& b : blocks)
     if (geometry::centroid(b).x > 1.0)
@@ -41,13 +43,13 @@ std::vector<geometry::Polygon> moved(const run::FractureMeter& meter, const std:
 }
 
 TEST(FractureResults, TranslatedBlockOpensAndSlidesByItsDisplacement) {
-  const run::FractureMeter meter = two_block_meter();
+  const fractures::FractureMeter meter = two_block_meter();
   ASSERT_EQ(meter.layout().network.blocks.size(), 2u);
   const double d = 2e-4, s = -3e-4;  // opening and sliding
   const auto blocks = moved(meter, [&](Point p) { return p + Point{d, s}; });
-  const run::FractureState state = meter.measure(blocks, 0.0);
+  const fractures::FractureState state = meter.measure(blocks, 0.0);
   ASSERT_EQ(state.fractures.size(), 1u);
-  const run::FractureResult& r = state.fractures[0];
+  const fractures::FractureResult& r = state.fractures[0];
   EXPECT_EQ(r.id, 0);
   EXPECT_EQ(r.origin.source, geometry::TraceSource::joint_set);
   EXPECT_EQ(r.origin.set, 1);
@@ -58,7 +60,7 @@ TEST(FractureResults, TranslatedBlockOpensAndSlidesByItsDisplacement) {
   EXPECT_NEAR(r.max_shear, std::abs(s), 1e-15);
   // Pieces at most 0.1 m long along the whole face, all open.
   EXPECT_EQ(state.pieces.size(), 10u);
-  for (const run::FracturePiece& p : state.pieces) {
+  for (const fractures::FracturePiece& p : state.pieces) {
     EXPECT_TRUE(p.open);
     EXPECT_NEAR(p.aperture, kAperture + d, 1e-15);
   }
@@ -71,12 +73,12 @@ TEST(FractureResults, TranslatedBlockOpensAndSlidesByItsDisplacement) {
 // displacement βy × sin(θ/2), at most |β| θ/2 = 2e-6 m. The open length is exact: the gap
 // vanishes at y*.
 TEST(FractureResults, TiltedBlockClosesHalfTheFaceExactly) {
-  const run::FractureMeter meter = two_block_meter();
+  const fractures::FractureMeter meter = two_block_meter();
   const double beta = -2.0 * kAperture;
   const auto blocks = moved(meter, [&](Point p) { return p + Point{beta * p.y, 0.0}; });
-  const run::FractureState state = meter.measure(blocks, 0.0);
+  const fractures::FractureState state = meter.measure(blocks, 0.0);
   ASSERT_EQ(state.fractures.size(), 1u);
-  const run::FractureResult& r = state.fractures[0];
+  const fractures::FractureResult& r = state.fractures[0];
   const double theta = std::atan(std::abs(beta));
   EXPECT_NEAR(r.open_length, 0.5, 1e-12);
   EXPECT_NEAR(r.mean_aperture, kAperture / 4.0 * std::cos(theta / 2.0), 1e-15);
@@ -88,7 +90,7 @@ TEST(FractureResults, TiltedBlockClosesHalfTheFaceExactly) {
   EXPECT_NEAR(r.tip.y, 0.5, 1e-9);
   // The pieces are cut where the face closes: every piece is wholly open (below y*) or closed.
   double open = 0.0, closed = 0.0;
-  for (const run::FracturePiece& p : state.pieces) {
+  for (const fractures::FracturePiece& p : state.pieces) {
     const double length = geometry::distance(p.segment[0], p.segment[1]);
     const double top = std::max(p.segment[0].y, p.segment[1].y), bottom = std::min(p.segment[0].y, p.segment[1].y);
     if (p.open) {
@@ -120,9 +122,9 @@ TEST(FractureResults, EachFaceIsReadOnItsOwnBlocksAtAJunction) {
   const geometry::TraceOrigin listed{geometry::TraceSource::listed, 0, 0};
   request.traces = {{{{1, 0}, {1, 2}}, listed}, {{{0, 1}, {2, 1}}, {geometry::TraceSource::listed, 0, 1}}};
   request.aperture = kAperture;
-  run::FractureLayout layout{request.traces, geometry::build_block_network(request)};
+  fractures::FractureLayout layout{request.traces, geometry::build_block_network(request)};
   ASSERT_EQ(layout.network.blocks.size(), 4u);
-  const run::FractureMeter meter(std::move(layout), 0.1);
+  const fractures::FractureMeter meter(std::move(layout), 0.1);
   const double d = 5e-4, epsilon = 1e-5, gamma = 2e-3;
   std::vector<geometry::Polygon> blocks = meter.layout().network.blocks;
   for (geometry::Polygon& b : blocks) {
@@ -130,16 +132,16 @@ TEST(FractureResults, EachFaceIsReadOnItsOwnBlocksAtAJunction) {
     if (c.x < 1.0) continue;
     for (Point& p : b) p = c.y < 1.0 ? p + Point{d, 0.0} : p + Point{-kAperture - epsilon + gamma * (p.y - 1.0), 0.0};
   }
-  const run::FractureState state = meter.measure(blocks, 0.0);
-  const run::FractureResult* vertical = nullptr;
-  for (const run::FractureResult& r : state.fractures)
+  const fractures::FractureState state = meter.measure(blocks, 0.0);
+  const fractures::FractureResult* vertical = nullptr;
+  for (const fractures::FractureResult& r : state.fractures)
     if (r.id == 0) vertical = &r;
   ASSERT_NE(vertical, nullptr);
   const double theta = std::atan(gamma), tip_y = 1.0 + epsilon / gamma;
   EXPECT_NEAR(vertical->tip_opening_angle, gamma * std::cos(theta / 2.0), 1e-12 * gamma);
   EXPECT_NEAR(vertical->tip.y, tip_y, 1e-9);
   int lower = 0, upper = 0;
-  for (const run::FracturePiece& p : state.pieces) {
+  for (const fractures::FracturePiece& p : state.pieces) {
     if (p.fracture != 0) continue;
     const double bottom = std::min(p.segment[0].y, p.segment[1].y), top = std::max(p.segment[0].y, p.segment[1].y);
     if (top <= 1.0 + 1e-6) {
@@ -156,7 +158,7 @@ TEST(FractureResults, EachFaceIsReadOnItsOwnBlocksAtAJunction) {
 }
 
 TEST(FractureResults, BlocksThatDoNotFitTheNetworkAreRefused) {
-  const run::FractureMeter meter = two_block_meter();
+  const fractures::FractureMeter meter = two_block_meter();
   std::vector<geometry::Polygon> blocks = meter.layout().network.blocks;
   blocks.pop_back();
   EXPECT_THROW(meter.measure(blocks, 0.0), std::invalid_argument);
@@ -175,9 +177,9 @@ TEST(FractureResults, FlowZonesAreTheNearestProjectingFace) {
   request.traces.push_back({{{0.2, 0}, {9.7, 4}}, joint});
   request.traces.push_back({{{0, 3.6}, {7.3, 0}}, joint});
   request.aperture = 1e-3;
-  run::FractureLayout layout{request.traces, geometry::build_block_network(request)};
+  fractures::FractureLayout layout{request.traces, geometry::build_block_network(request)};
   const std::vector<geometry::FractureFace> faces = layout.network.faces;
-  const run::FractureMeter meter(std::move(layout), 0.1);
+  const fractures::FractureMeter meter(std::move(layout), 0.1);
 
   hydrodda::mesh::TriangleMesh mesh;
   constexpr int nx = 200, ny = 80;
@@ -189,7 +191,7 @@ TEST(FractureResults, FlowZonesAreTheNearestProjectingFace) {
       mesh.triangles.push_back({node(i, j), node(i + 1, j), node(i + 1, j + 1)});
       mesh.triangles.push_back({node(i, j), node(i + 1, j + 1), node(i, j + 1)});
     }
-  const run::FractureMeter::FlowZones zones = meter.flow_zones(mesh);
+  const fractures::FractureMeter::FlowZones zones = meter.flow_zones(mesh);
   ASSERT_EQ(zones.fracture.size(), mesh.triangles.size());
   int in_a_zone = 0;
   for (int t = 0; t < mesh.triangle_count(); ++t) {
@@ -227,8 +229,8 @@ hydrodda::mesh::TriangleMesh square_mesh(Point c, double h) {
 // fits where the tip lies: on its trace a smaller mesh.fracture_size; carried off it, a mesh
 // refined around the tip; in a mesh file, a refinement of the file.
 TEST(FractureResults, AWedgeTipTheMeshDoesNotResolveIsNamed) {
-  run::FractureState state;
-  run::FractureResult sharp, blunt, none;
+  fractures::FractureState state;
+  fractures::FractureResult sharp, blunt, none;
   sharp.id = 3;
   sharp.tip_opening_angle = 2e-3;
   sharp.tip = {1.5, 0.25};
@@ -250,9 +252,9 @@ TEST(FractureResults, AWedgeTipTheMeshDoesNotResolveIsNamed) {
   // Elements of 2 mm across: the sharp tip (s* = 1.22 mm) is the least resolved.
   const hydrodda::mesh::TriangleMesh coarse = square_mesh(sharp.tip, 2e-3 / std::sqrt(2.0));
   const hydrodda::mesh::PointLocator coarse_locator(coarse);
-  const auto elements = run::find_wedge_tip_elements(state, k_m, bare, coarse, coarse_locator, traces);
+  const auto elements = fractures::find_wedge_tip_elements(state, k_m, bare, coarse, coarse_locator, traces);
   ASSERT_EQ(elements.size(), 2u);
-  const run::WedgeTipElement* least = &elements.front();
+  const fractures::WedgeTipElement* least = &elements.front();
   EXPECT_EQ(least->tip.fracture, 3);
   EXPECT_EQ(elements.back().tip.fracture, 5);  // s* = 9.8 mm: resolved
   EXPECT_NEAR(least->element_size, 2e-3, 1e-15);
@@ -272,10 +274,10 @@ TEST(FractureResults, AWedgeTipTheMeshDoesNotResolveIsNamed) {
   // fracture_size would refine the trace, not the tip.
   const hydrodda::mesh::TriangleMesh wide = square_mesh(sharp.tip, 14e-3 / std::sqrt(2.0));
   const hydrodda::mesh::PointLocator wide_locator(wide);
-  run::FractureState blunt_only;
+  fractures::FractureState blunt_only;
   blunt_only.fractures = {blunt};
   const auto carried =
-      run::find_wedge_tip_element(*run::find_sharpest_wedge_tip(blunt_only, k_m, bare), wide, wide_locator, traces);
+      fractures::find_wedge_tip_element(*fractures::find_sharpest_wedge_tip(blunt_only, k_m, bare), wide, wide_locator, traces);
   ASSERT_TRUE(carried.has_value());
   EXPECT_NEAR(carried->trace_distance, 2e-3, 1e-12);
   const auto off_trace = run::describe_unresolved_wedge_tips({&*carried, 1}, settings);
@@ -290,7 +292,7 @@ TEST(FractureResults, AWedgeTipTheMeshDoesNotResolveIsNamed) {
   EXPECT_NE(run::describe_unresolved_wedge_tips({&*carried, 1}, from_file)->find("refine the mesh file to"),
             std::string::npos);
   // Two unresolved tips: a table for each.
-  const std::vector<run::WedgeTipElement> both = run::find_wedge_tip_elements(state, k_m, bare, wide, wide_locator, traces);
+  const std::vector<fractures::WedgeTipElement> both = fractures::find_wedge_tip_elements(state, k_m, bare, wide, wide_locator, traces);
   ASSERT_EQ(both.size(), 2u);
   EXPECT_NE(run::describe_unresolved_wedge_tips(both, settings)->find("refine around the 2 unresolved tips"),
             std::string::npos);
@@ -298,29 +300,29 @@ TEST(FractureResults, AWedgeTipTheMeshDoesNotResolveIsNamed) {
   // Elements under s*/2 resolve the tip; a tip outside the mesh is not judged.
   const hydrodda::mesh::TriangleMesh fine = square_mesh(sharp.tip, 0.5e-3 / std::sqrt(2.0));
   const hydrodda::mesh::PointLocator fine_locator(fine);
-  const auto resolved = run::find_wedge_tip_elements(state, k_m, bare, fine, fine_locator, traces);
+  const auto resolved = fractures::find_wedge_tip_elements(state, k_m, bare, fine, fine_locator, traces);
   ASSERT_EQ(resolved.size(), 2u);
   EXPECT_FALSE(run::describe_unresolved_wedge_tips(resolved, settings).has_value());
   const hydrodda::mesh::TriangleMesh elsewhere = square_mesh({5.0, 5.0}, 1.0);
   const hydrodda::mesh::PointLocator elsewhere_locator(elsewhere);
-  EXPECT_TRUE(run::find_wedge_tip_elements(state, k_m, bare, elsewhere, elsewhere_locator, traces).empty());
+  EXPECT_TRUE(fractures::find_wedge_tip_elements(state, k_m, bare, elsewhere, elsewhere_locator, traces).empty());
 
   // A joint whose aperture at zero opening is the wedge's at s* has no sharp tip.
   hydrodda::hydro::JointApertureLaw residual;
   residual.residual_aperture = 3e-6;
-  const auto residual_elements = run::find_wedge_tip_elements(state, k_m, residual, coarse, coarse_locator, traces);
+  const auto residual_elements = fractures::find_wedge_tip_elements(state, k_m, residual, coarse, coarse_locator, traces);
   ASSERT_EQ(residual_elements.size(), 1u);
   EXPECT_EQ(residual_elements.front().tip.fracture, 5);
   // The tip itself (summary.json's tip_length): the sharpest, or none without a sharp one.
-  const auto tip = run::find_sharpest_wedge_tip(state, k_m, bare);
+  const auto tip = fractures::find_sharpest_wedge_tip(state, k_m, bare);
   ASSERT_TRUE(tip.has_value());
   EXPECT_EQ(tip->fracture, 3);
   EXPECT_NEAR(tip->length, s_star, 1e-15);
   EXPECT_EQ(tip->point.y, 0.25);
-  EXPECT_EQ(run::find_sharpest_wedge_tip(state, k_m, residual)->fracture, 5);
-  run::FractureState without_tips;
+  EXPECT_EQ(fractures::find_sharpest_wedge_tip(state, k_m, residual)->fracture, 5);
+  fractures::FractureState without_tips;
   without_tips.fractures = {none};
-  EXPECT_FALSE(run::find_sharpest_wedge_tip(without_tips, k_m, bare).has_value());
+  EXPECT_FALSE(fractures::find_sharpest_wedge_tip(without_tips, k_m, bare).has_value());
 }
 
 }  // namespace

@@ -11,8 +11,8 @@ namespace hydrodda::run {
 namespace {
 
 // A tip of s* = `length` at (x, y) in an element `element` across.
-WedgeTipElement tip_in(double x, double y, double length, double element) {
-  WedgeTipElement e;
+fractures::WedgeTipElement tip_in(double x, double y, double length, double element) {
+  fractures::WedgeTipElement e;
   e.tip.point = {x, y};
   e.tip.length = length;
   e.element_size = element;
@@ -23,7 +23,7 @@ WedgeTipElement tip_in(double x, double y, double length, double element) {
 // (mesh.size − size) / 0.2; a resolved one none; when the least resolved (first) is resolved,
 // nothing is refined.
 TEST(TipRefinement, EveryUnresolvedTipGetsAPointAtAQuarterOfItsLength) {
-  const std::vector<WedgeTipElement> tips{tip_in(5.0, 1.0, 0.002, 0.004), tip_in(6.0, 0.0, 0.004, 0.0015),
+  const std::vector<fractures::WedgeTipElement> tips{tip_in(5.0, 1.0, 0.002, 0.004), tip_in(6.0, 0.0, 0.004, 0.0015),
                                           tip_in(4.0, 0.0, 0.001, 0.0006)};
   const std::vector<output::RefinedTip> added = tips_to_refine(tips, 0.15, 2);
   ASSERT_EQ(added.size(), 2u);
@@ -33,7 +33,7 @@ TEST(TipRefinement, EveryUnresolvedTipGetsAPointAtAQuarterOfItsLength) {
   EXPECT_EQ(added[0].round, 2);
   EXPECT_EQ(added[1].x, 4.0);
   EXPECT_DOUBLE_EQ(added[1].size, 0.00025);
-  EXPECT_TRUE(tips_to_refine(std::vector<WedgeTipElement>{tip_in(6.0, 0.0, 0.004, 0.002)}, 0.15, 1).empty());
+  EXPECT_TRUE(tips_to_refine(std::vector<fractures::WedgeTipElement>{tip_in(6.0, 0.0, 0.004, 0.002)}, 0.15, 1).empty());
   EXPECT_EQ(current_round({}), 1);
   EXPECT_EQ(current_round(added), 3);
 }

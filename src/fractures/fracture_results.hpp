@@ -24,10 +24,8 @@
 #include "hydro/permeability_law.hpp"
 #include "mesh/point_locator.hpp"
 #include "mesh/triangle_mesh.hpp"
-#include "output/run_folder.hpp"
-#include "scenario/scenario.hpp"
 
-namespace hydrodda::run {
+namespace hydrodda::fractures {
 
 // What a model's blocks were cut from: every trace (its index the fracture id) and the
 // network, whose block order is the DDA system's.
@@ -35,10 +33,6 @@ struct FractureLayout {
   std::vector<geometry::FractureTrace> traces;
   geometry::BlockNetwork network;
 };
-
-// The layout of a scenario with a [geometry] domain (the same cut the model's blocks come
-// from: the cut is deterministic); none for a scenario that lists its blocks.
-std::optional<FractureLayout> fracture_layout(const scenario::Scenario& scenario);
 
 // "listed", "set", "file": a trace's origin as fractures.csv writes it.
 std::string origin_name(geometry::TraceSource source);
@@ -126,10 +120,6 @@ class FractureMeter {
   std::vector<Face> faces_;
 };
 
-// The meter of a scenario with a [geometry] domain, nodes at most 1/50 of the domain's larger
-// side apart; none for a scenario that lists its blocks.
-std::optional<FractureMeter> make_fracture_meter(const scenario::Scenario& scenario);
-
 // Under the cubic law, the sharpest wedge tip: of the fractures whose opening grows from a tip
 // (FractureResult::tip_opening_angle), the one with the shortest tip length s*
 // (hydro::cubic_law_tip_length with k_m). A joint whose hydraulic aperture at zero opening
@@ -168,15 +158,5 @@ std::vector<WedgeTipElement> find_wedge_tip_elements(const FractureState& state,
 // Whether the element at a tip resolves it: at most s*/2 across.
 inline bool resolves_wedge_tip(const WedgeTipElement& e) { return e.element_size <= 0.5 * e.tip.length; }
 
-// A message when the element at the first of `tips` (find_wedge_tip_elements) is more than s*/2
-// across: naming the fracture, its tip, α, s* and the element's size, and what resolves it under
-// `mesh` (the scenario's [mesh]): where the tip lies on its trace (within mesh.fracture_size), a
-// smaller mesh.fracture_size; else refinement around the tips, a [[mesh.refine]] table for each
-// unresolved one, or mesh.refine_tips (unless it is on); in a mesh file, a refinement of the
-// file. None when every tip is resolved. Past a few tables the rest are in `folder`'s
-// unresolved_tips.toml, which the message names (output::list_items).
-std::optional<std::string> describe_unresolved_wedge_tips(std::span<const WedgeTipElement> tips,
-                                                          const scenario::MeshDefinition& mesh,
-                                                          const output::RunFolder* folder = nullptr);
 
-}  // namespace hydrodda::run
+}  // namespace hydrodda::fractures
