@@ -51,7 +51,7 @@ json format_fractures(const FractureSummary& f) {
   if (f.rounds) summary["rounds"] = *f.rounds;
   if (!f.refined_tips.empty()) {
     json& refined = summary["refined_tips"] = json::array();
-    for (const RefinedTip& t : f.refined_tips)
+    for (const fractures::RefinedTip& t : f.refined_tips)
       refined.push_back({{"point", {t.x, t.y}}, {"size", t.size}, {"radius", t.radius},
                          {"round", t.round}});
   }

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "fractures/refined_tip.hpp"
+
 namespace hydrodda::output {
 
 struct BlockSummary {
@@ -78,15 +80,6 @@ struct FractureRow {
   std::optional<double> flow;   // coupled runs
 };
 
-// A wedge tip a run refined its fluid mesh around (mesh.refine_tips): a [[mesh.refine]] point
-// it added when a round ended with the tip unresolved.
-struct RefinedTip {
-  double x = 0.0, y = 0.0;  // m
-  double size = 0.0;        // m: s*/4 of the tip
-  double radius = 0.0;      // m
-  int round = 0;            // the round that found it: 1 on the scenario's own mesh
-};
-
 // The fractures at a glance: how many, which are open, the widest, and every row by id.
 struct FractureSummary {
   std::vector<FractureRow> rows;  // by id
@@ -97,7 +90,7 @@ struct FractureSummary {
   // The longest edge of the fluid element at that tip (m; run::find_wedge_tip_element): under
   // s*/2 the mesh resolves the tip.
   std::optional<double> tip_element_size;
-  std::vector<RefinedTip> refined_tips;  // in the order they were added
+  std::vector<fractures::RefinedTip> refined_tips;  // in the order they were added
   std::optional<int> rounds;             // with mesh.refine_tips: the rounds run, 1 when none refined
 };
 

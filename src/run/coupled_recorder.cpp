@@ -53,7 +53,7 @@ double find_largest_opening(const fractures::FractureState& state) {
 }  // namespace
 
 CoupledRecorder::CoupledRecorder(const RunContext& context, const CoupledModel& model,
-                                 std::vector<output::RefinedTip> refined_tips,
+                                 std::vector<fractures::RefinedTip> refined_tips,
                                  std::vector<output::InputFile> input_files)
     : context_(context),
       scenario_(context.scenario),
@@ -73,7 +73,7 @@ CoupledRecorder::CoupledRecorder(const RunContext& context, const CoupledModel& 
   checkpoint_.input_files = std::move(input_files);
   cubic_law_ = s.flow->permeability_law == coupling::PermeabilityLaw::cubic;
   matrix_permeability_ = make_permeability_model(s).matrix_permeability();
-  follow_tips_ = meter_ && s.mesh->refine_tips && current_round(refined_tips_) <= scenario::kRefineTipRounds;
+  follow_tips_ = meter_ && s.mesh->refine_tips && fractures::current_round(refined_tips_) <= scenario::kRefineTipRounds;
 }
 
 void CoupledRecorder::start() { context_.folder.write("scenario.toml", context_.scenario_text); }
@@ -97,7 +97,7 @@ void CoupledRecorder::resume_from(const output::RunCheckpoint& saved, CoupledMod
   last_written_ = checkpoint_.written_iterations.empty() ? 0 : checkpoint_.written_iterations.back();
   // A run resumed after its last pass (its summary was not written) only writes it.
   converged_ = saved.converged;
-  recent_ = read_recent_tips(saved.recent_tips);
+  recent_ = fractures::read_recent_tips(saved.recent_tips);
 }
 
 void CoupledRecorder::after_pass(const coupling::PassReport& r) {
@@ -160,8 +160,9 @@ void CoupledRecorder::add_measures(const coupling::PassReport& r) {
 
 void CoupledRecorder::follow_tips(const coupling::PassReport& r) {
   const std::vector<fractures::WedgeTipElement> tips = find_tip_elements();
-  recent_.push_back({r.iteration, tips_to_refine(tips, scenario_.mesh->size, current_round(refined_tips_))});
-  if (recent_.size() > kTipPasses) recent_.pop_front();
+  recent_.push_back({r.iteration, fractures::tips_to_refine(tips, fractures::current_round(refined_tips_),
+                                                            default_refine_radius(*scenario_.mesh))});
+  if (recent_.size() > fractures::kTipPasses) recent_.pop_front();
 }
 
 void CoupledRecorder::log_pass(const coupling::PassReport& r) const {
@@ -205,8 +206,8 @@ void CoupledRecorder::write_last_fields() {
 
 void CoupledRecorder::save_checkpoint() {
   checkpoint_.converged = converged_;
-  checkpoint_.refined_tips = write_refined_tips(refined_tips_);
-  checkpoint_.recent_tips = write_recent_tips(recent_);
+  checkpoint_.refined_tips = fractures::write_refined_tips(refined_tips_);
+  checkpoint_.recent_tips = fractures::write_recent_tips(recent_);
   const CoupledState state = model_.export_state();
   context_.folder.write_with("checkpoint.bin", [&](output::AtomicFile& file) {
     output::write_checkpoint(file, checkpoint_, state.mechanics, state.coupling);
@@ -244,7 +245,7 @@ output::RunSummary CoupledRecorder::summary() {
   if (fracture_state_) {
     summary.fractures = summarise_fractures(*fracture_state_);
     summary.fractures->refined_tips = refined_tips_;
-    if (scenario_.mesh->refine_tips) summary.fractures->rounds = current_round(refined_tips_);
+    if (scenario_.mesh->refine_tips) summary.fractures->rounds = fractures::current_round(refined_tips_);
     const std::optional<fractures::WedgeTip> tip =
         cubic_law_ ? fractures::find_sharpest_wedge_tip(*fracture_state_, matrix_permeability_, joint_law_) : std::nullopt;
     if (tip) {

@@ -12,6 +12,7 @@
 
 #include "coupling/pass_loop.hpp"
 #include "fractures/fracture_results.hpp"
+#include "fractures/tip_refinement.hpp"
 #include "hydro/permeability_law.hpp"
 #include "mesh/point_locator.hpp"
 #include "output/checkpoint.hpp"
@@ -21,7 +22,6 @@
 #include "run/fracture_output.hpp"
 #include "run/paraview_output.hpp"
 #include "run/runs.hpp"
-#include "run/tip_refinement.hpp"
 
 namespace hydrodda::run {
 
@@ -29,7 +29,7 @@ class CoupledRecorder final : public coupling::PassObserver {
  public:
   // A round of `model` on the scenario's mesh refined around `refined_tips`; `input_files` the
   // files the scenario names with their hashes, for the checkpoint. Writes nothing yet.
-  CoupledRecorder(const RunContext& context, const CoupledModel& model, std::vector<output::RefinedTip> refined_tips,
+  CoupledRecorder(const RunContext& context, const CoupledModel& model, std::vector<fractures::RefinedTip> refined_tips,
                   std::vector<output::InputFile> input_files);
   CoupledRecorder(const CoupledRecorder&) = delete;
   CoupledRecorder& operator=(const CoupledRecorder&) = delete;
@@ -72,11 +72,11 @@ class CoupledRecorder final : public coupling::PassObserver {
   // fracture traces).
   std::vector<fractures::WedgeTipElement> find_tip_elements();
   // mesh.refine_tips: whether this round may end with tips to refine, and the tips unresolved
-  // over its last passes (PassTips, newest last).
+  // over its last passes (fractures::PassTips, newest last).
   bool follows_tips() const { return follow_tips_; }
-  const std::deque<PassTips>& recent_tips() const { return recent_; }
+  const std::deque<fractures::PassTips>& recent_tips() const { return recent_; }
   bool cubic_law() const { return cubic_law_; }
-  const std::vector<output::RefinedTip>& refined_tips() const { return refined_tips_; }
+  const std::vector<fractures::RefinedTip>& refined_tips() const { return refined_tips_; }
 
   // summary.json of the model now: its blocks, flow, timings and fractures.
   output::RunSummary summary();
@@ -93,7 +93,7 @@ class CoupledRecorder final : public coupling::PassObserver {
   const RunContext& context_;
   const scenario::Scenario& scenario_;
   const CoupledModel& model_;
-  std::vector<output::RefinedTip> refined_tips_;
+  std::vector<fractures::RefinedTip> refined_tips_;
   std::vector<std::string> columns_;
   output::CsvTable history_;
   output::CsvTable measure_;
@@ -116,7 +116,7 @@ class CoupledRecorder final : public coupling::PassObserver {
   // The fluid mesh's triangle finder for the tips' elements, made when first needed.
   std::optional<mesh::PointLocator> locator_;
   bool follow_tips_ = false;
-  std::deque<PassTips> recent_;  // in the checkpoint, so that a resumed round refines the same
+  std::deque<fractures::PassTips> recent_;  // in the checkpoint, so that a resumed round refines the same
 };
 
 }  // namespace hydrodda::run

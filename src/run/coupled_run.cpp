@@ -22,7 +22,6 @@
 #include "run/run_summary.hpp"
 #include "run/runs.hpp"
 #include "run/scenario_fractures.hpp"
-#include "run/tip_refinement.hpp"
 #include "scenario/spellings.hpp"
 
 namespace hydrodda::run {
@@ -60,7 +59,7 @@ void move_round_files(const output::RunFolder& folder, int round, const std::vec
 // How a round ended: with the run's summary, or with the tips to mesh again around.
 struct RoundEnd {
   std::optional<output::RunSummary> summary;
-  std::vector<output::RefinedTip> added;
+  std::vector<fractures::RefinedTip> added;
   std::vector<int> written_iterations;
 };
 
@@ -195,15 +194,15 @@ bool run_passes(const Round& round) {
 // around them (mesh.refine_tips), while rounds remain. So does one that did not converge: its
 // unresolved tips may be why (the symmetric flexure's bed joint, docs/coupling.md). The tips
 // to refine, none when the run ends with this round.
-std::vector<output::RefinedTip> find_tips_for_next_round(const Round& round) {
+std::vector<fractures::RefinedTip> find_tips_for_next_round(const Round& round) {
   const CoupledRecorder& recorder = round.recorder;
   if (!recorder.follows_tips() || round.model.iterations() == 0) return {};
-  const std::deque<PassTips>& recent = recorder.recent_tips();
+  const std::deque<fractures::PassTips>& recent = recorder.recent_tips();
   const bool converged = recorder.converged();
-  std::vector<output::RefinedTip> added =
-      converged ? (recent.empty() ? std::vector<output::RefinedTip>{} : recent.back().tips) : merge_tips(recent);
+  std::vector<fractures::RefinedTip> added =
+      converged ? (recent.empty() ? std::vector<fractures::RefinedTip>{} : recent.back().tips) : fractures::merge_tips(recent);
   if (!added.empty()) {
-    const int round_number = current_round(recorder.refined_tips());
+    const int round_number = fractures::current_round(recorder.refined_tips());
     spdlog::info(
         "round {}: {} in {} coupling iterations, with {} wedge tip(s) in fluid elements wider than s*/2{} (the "
         "first at ({:.4g}, {:.4g}), s* = {:.2g} m): running again on a mesh refined to s*/4 around them "
@@ -234,7 +233,7 @@ void warn_at_end(const Round& round, const output::RunSummary& summary) {
     spdlog::warn("{}{}",
                  s.mesh->refine_tips
                      ? fmt::format("after {} round(s) of mesh.refine_tips (at most {}), ",
-                                   current_round(round.recorder.refined_tips()) - 1, scenario::kRefineTipRounds)
+                                   fractures::current_round(round.recorder.refined_tips()) - 1, scenario::kRefineTipRounds)
                      : "",
                  *text);
 }
@@ -282,7 +281,7 @@ output::RunSummary summarise_round(const Round& round) {
 // `refined_tips` as well, continued from `resume` when given. With mesh.refine_tips, a round
 // that ends with wedge tips its mesh does not resolve returns them instead of a summary.
 RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resume,
-                   const std::vector<output::RefinedTip>& refined_tips) {
+                   const std::vector<fractures::RefinedTip>& refined_tips) {
   const scenario::Scenario& s = context.scenario;
   // The first round (or a resumed one) may end at once while it meshes: nothing of it is
   // written yet. A later round has earlier rounds' files to keep, and is stopped once it has
@@ -313,7 +312,7 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
   }
   if (const std::string unreached = describe_unreached_displacement(s, model.mechanics()); !unreached.empty())
     throw fail_round(round, unreached, false, model.iterations());
-  if (std::vector<output::RefinedTip> added = find_tips_for_next_round(round); !added.empty()) {
+  if (std::vector<fractures::RefinedTip> added = find_tips_for_next_round(round); !added.empty()) {
     tell_model_at_end.dismiss();
     return {std::nullopt, std::move(added), recorder.written_iterations()};
   }
@@ -327,13 +326,13 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
 
 output::RunSummary run_coupled(const RunContext& context) {
   // A resumed run takes up the round it stopped in, on the mesh of the tips refined before it.
-  std::vector<output::RefinedTip> refined_tips;
-  if (context.resume) refined_tips = read_refined_tips(context.resume->refined_tips);
+  std::vector<fractures::RefinedTip> refined_tips;
+  if (context.resume) refined_tips = fractures::read_refined_tips(context.resume->refined_tips);
   const output::RunCheckpoint* resume = context.resume;
   for (;;) {
     RoundEnd end = run_round(context, resume, refined_tips);
     if (end.summary) return std::move(*end.summary);
-    move_round_files(context.folder, current_round(refined_tips), end.written_iterations);
+    move_round_files(context.folder, fractures::current_round(refined_tips), end.written_iterations);
     refined_tips.insert(refined_tips.end(), end.added.begin(), end.added.end());
     resume = nullptr;
   }

@@ -66,4 +66,15 @@ std::optional<FractureMeter> make_fracture_meter(const scenario::Scenario& s) {
   return FractureMeter(std::move(*layout), std::max(box.width(), box.height()) / 50.0);
 }
 
+std::vector<scenario::MeshRefinePoint> refine_points(const std::vector<fractures::RefinedTip>& tips) {
+  std::vector<scenario::MeshRefinePoint> points;
+  for (const fractures::RefinedTip& t : tips) points.push_back({{t.x, t.y}, t.size, t.radius});
+  return points;
+}
+
+
+std::function<double(double size)> default_refine_radius(const scenario::MeshDefinition& mesh) {
+  return [mesh_size = mesh.size](double size) { return scenario::default_refine_radius(mesh_size, size); };
+}
+
 }  // namespace hydrodda::run

@@ -1,12 +1,16 @@
 #pragma once
-// The fractures of a scenario (fractures/fracture_results.hpp measures them): the traces its
-// blocks were cut along, the meter over them, and what resolves a wedge tip under its [mesh].
+// The fractures of a scenario (fractures/ measures them): the traces its blocks were cut along,
+// the meter over them, what resolves a wedge tip under its [mesh], and the [[mesh.refine]]
+// points of the tips a run refines around.
 
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "fractures/fracture_results.hpp"
+#include "fractures/tip_refinement.hpp"
 #include "output/run_folder.hpp"
 #include "scenario/scenario.hpp"
 
@@ -30,5 +34,12 @@ std::optional<fractures::FractureMeter> make_fracture_meter(const scenario::Scen
 std::optional<std::string> describe_unresolved_wedge_tips(std::span<const fractures::WedgeTipElement> tips,
                                                           const scenario::MeshDefinition& mesh,
                                                           const output::RunFolder* folder = nullptr);
+
+// The [[mesh.refine]] points of refined tips.
+std::vector<scenario::MeshRefinePoint> refine_points(const std::vector<fractures::RefinedTip>& tips);
+
+// mesh.refine's default radius for a refinement of `size` in the scenario's `mesh` (for
+// fractures::tips_to_refine).
+std::function<double(double size)> default_refine_radius(const scenario::MeshDefinition& mesh);
 
 }  // namespace hydrodda::run

@@ -1,34 +1,29 @@
-#include "run/tip_refinement.hpp"
+#include "fractures/tip_refinement.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace hydrodda::run {
+namespace hydrodda::fractures {
 
-int current_round(const std::vector<output::RefinedTip>& tips) { return tips.empty() ? 1 : tips.back().round + 1; }
+int current_round(const std::vector<RefinedTip>& tips) { return tips.empty() ? 1 : tips.back().round + 1; }
 
-std::vector<output::RefinedTip> tips_to_refine(std::span<const fractures::WedgeTipElement> tips, double mesh_size, int round) {
-  std::vector<output::RefinedTip> added;
-  if (tips.empty() || fractures::resolves_wedge_tip(tips.front())) return added;
-  for (const fractures::WedgeTipElement& e : tips)
-    if (!fractures::resolves_wedge_tip(e)) {
+std::vector<RefinedTip> tips_to_refine(std::span<const WedgeTipElement> tips, int round,
+                                       const std::function<double(double size)>& refine_radius) {
+  std::vector<RefinedTip> added;
+  if (tips.empty() || resolves_wedge_tip(tips.front())) return added;
+  for (const WedgeTipElement& e : tips)
+    if (!resolves_wedge_tip(e)) {
       const double size = 0.25 * e.tip.length;
-      added.push_back({e.tip.point.x, e.tip.point.y, size, scenario::default_refine_radius(mesh_size, size), round});
+      added.push_back({e.tip.point.x, e.tip.point.y, size, refine_radius(size), round});
     }
   return added;
 }
 
-std::vector<scenario::MeshRefinePoint> refine_points(const std::vector<output::RefinedTip>& tips) {
-  std::vector<scenario::MeshRefinePoint> points;
-  for (const output::RefinedTip& t : tips) points.push_back({{t.x, t.y}, t.size, t.radius});
-  return points;
-}
-
-std::vector<output::RefinedTip> merge_tips(const std::deque<PassTips>& passes) {
-  std::vector<output::RefinedTip> merged;
+std::vector<RefinedTip> merge_tips(const std::deque<PassTips>& passes) {
+  std::vector<RefinedTip> merged;
   for (auto pass = passes.rbegin(); pass != passes.rend(); ++pass)
-    for (const output::RefinedTip& t : pass->tips) {
-      const auto same = std::find_if(merged.begin(), merged.end(), [&](const output::RefinedTip& m) {
+    for (const RefinedTip& t : pass->tips) {
+      const auto same = std::find_if(merged.begin(), merged.end(), [&](const RefinedTip& m) {
         return std::hypot(m.x - t.x, m.y - t.y) < 4.0 * std::min(m.size, t.size);
       });
       if (same == merged.end())
@@ -39,15 +34,15 @@ std::vector<output::RefinedTip> merge_tips(const std::deque<PassTips>& passes) {
   return merged;
 }
 
-std::vector<double> write_refined_tips(const std::vector<output::RefinedTip>& tips) {
+std::vector<double> write_refined_tips(const std::vector<RefinedTip>& tips) {
   std::vector<double> numbers;
-  for (const output::RefinedTip& t : tips)
+  for (const RefinedTip& t : tips)
     numbers.insert(numbers.end(), {t.x, t.y, t.size, t.radius, static_cast<double>(t.round)});
   return numbers;
 }
 
-std::vector<output::RefinedTip> read_refined_tips(const std::vector<double>& numbers) {
-  std::vector<output::RefinedTip> tips;
+std::vector<RefinedTip> read_refined_tips(const std::vector<double>& numbers) {
+  std::vector<RefinedTip> tips;
   for (std::size_t i = 0; i + 5 <= numbers.size(); i += 5)
     tips.push_back({numbers[i], numbers[i + 1], numbers[i + 2], numbers[i + 3], static_cast<int>(numbers[i + 4])});
   return tips;
@@ -77,4 +72,4 @@ std::deque<PassTips> read_recent_tips(const std::vector<double>& numbers) {
   return passes;
 }
 
-}  // namespace hydrodda::run
+}  // namespace hydrodda::fractures
