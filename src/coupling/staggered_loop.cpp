@@ -9,6 +9,7 @@
 
 #include "coupling/local_aperture.hpp"
 #include "hydro/element_pressure.hpp"
+#include "numerics/aitken.hpp"
 
 namespace hydrodda::coupling {
 
@@ -340,12 +341,9 @@ void StaggeredLoop::abandon_pass() {
 namespace hydrodda::coupling {
 
 // Relaxes the fresh solution against the last pass's: h ← h_old + ω (h̃ − h_old), and the
-// pressures alike. With Aitken's Δ² method for vectors (Irons & Tuck 1969; Küttler & Wall 2008,
-// Comput. Mech. 43, eq. 44) ω follows the last two updates r = h̃ − h_old:
-//   ω_k = −ω_{k−1} r_{k−1}·(r_k − r_{k−1}) / ‖r_k − r_{k−1}‖²,  clipped to [0.05, 1]
-// (the secant estimate of the step that would land on the fixed point along r). A loop whose
-// updates flip sign pass after pass (cycling between two states) gets ω near 1/2 and settles;
-// one whose updates keep their direction keeps ω near 1.
+// pressures alike. With Aitken's Δ² method (numerics/aitken.hpp) ω follows the last two
+// updates r = h̃ − h_old: a loop whose updates flip sign pass after pass (cycling between two
+// states) gets ω near 1/2 and settles; one whose updates keep their direction keeps ω near 1.
 void StaggeredLoop::relax(hydro::FlowSolution& fresh) {
   if (previous_heads_.empty()) return;
   if (settings_.acceleration == Acceleration::anderson) {
@@ -354,15 +352,8 @@ void StaggeredLoop::relax(hydro::FlowSolution& fresh) {
   }
   std::vector<double> update(fresh.head.size());
   for (std::size_t i = 0; i < update.size(); ++i) update[i] = fresh.head[i] - previous_heads_[i];
-  if (settings_.acceleration == Acceleration::aitken && previous_update_.size() == update.size()) {
-    double numerator = 0.0, denominator = 0.0;
-    for (std::size_t i = 0; i < update.size(); ++i) {
-      const double change = update[i] - previous_update_[i];
-      numerator += previous_update_[i] * change;
-      denominator += change * change;
-    }
-    if (denominator > 0.0) relaxation_ = std::clamp(-relaxation_ * numerator / denominator, 0.05, 1.0);
-  }
+  if (settings_.acceleration == Acceleration::aitken && previous_update_.size() == update.size())
+    relaxation_ = numerics::aitken_relaxation(relaxation_, previous_update_, update);
   previous_update_ = std::move(update);
   const double w = relaxation_;
   if (w == 1.0) return;
@@ -372,7 +363,7 @@ void StaggeredLoop::relax(hydro::FlowSolution& fresh) {
   }
 }
 
-// Anderson acceleration of the loop's fixed point x = G(x) (dda::AndersonAccelerator: Walker &
+// Anderson acceleration of the loop's fixed point x = G(x) (numerics::AndersonAccelerator: Walker &
 // Ni 2011, alg. AA), x the heads and pressures a pass's forces come from and G(x) the next
 // pass's solve on the blocks those forces moved:
 //   f_k = G(x_k) − x_k;  γ = argmin ‖f_k − ΔF γ‖₂ over the last anderson_depth passes;

@@ -26,10 +26,10 @@
 #include "coupling/porosity.hpp"
 #include "coupling/pressure_forces.hpp"
 #include "coupling/seepage_forces.hpp"
-#include "dda/anderson.hpp"
 #include "dda/system.hpp"
 #include "hydro/darcy_solver.hpp"
 #include "mesh/triangle_mesh.hpp"
+#include "numerics/anderson.hpp"
 
 namespace hydrodda::coupling {
 
@@ -104,7 +104,7 @@ struct LoopState {
   std::vector<double> previous_update;
   double relaxation = 1.0;
   // Anderson's history, oldest first: each pass's residual G(x) − x and image G(x), x the heads
-  // and pressures the pass started from, G(x) its solve (dda::AndersonAccelerator::Pass).
+  // and pressures the pass started from, G(x) its solve (numerics::AndersonAccelerator::Pass).
   std::vector<std::vector<double>> anderson_residuals, anderson_images;
   // The permeability whose factor the flow solver keeps for the next pass (null: none), shared
   // with the solver rather than copied.
@@ -203,7 +203,7 @@ class StaggeredLoop final : public PassRunner {
     hydro::FlowSolution solution;
     std::vector<double> previous_update;
     double relaxation = 1.0;
-    std::deque<dda::AndersonAccelerator::Pass> anderson_history;
+    std::deque<numerics::AndersonAccelerator::Pass> anderson_history;
     std::shared_ptr<const hydro::PermeabilityField> kept_factor;
     bool kept_factor_single_precision = false;
   };
@@ -237,7 +237,7 @@ class StaggeredLoop final : public PassRunner {
   ChangeGrowth growth_;
   std::vector<double> previous_update_;
   double relaxation_ = 1.0;
-  dda::AndersonAccelerator anderson_;
+  numerics::AndersonAccelerator anderson_;
   // The DDA system after the last finished pass (as built before the first): what an
   // abandoned pass puts back, and what every pass's system continues from.
   dda::SystemState last_mechanics_;

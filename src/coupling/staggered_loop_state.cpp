@@ -11,7 +11,7 @@ LoopState StaggeredLoop::export_state() const {
                   previous_update_, relaxation_, {},              {},              darcy_.kept_factor(),
                   darcy_.kept_factor_in_single_precision(), porosity_, permeability_,
                   permeability_tensors_};
-  for (const dda::AndersonAccelerator::Pass& pass : anderson_.history()) {
+  for (const numerics::AndersonAccelerator::Pass& pass : anderson_.history()) {
     state.anderson_residuals.emplace_back(pass.residual.begin(), pass.residual.end());
     state.anderson_images.emplace_back(pass.image.begin(), pass.image.end());
   }
@@ -57,7 +57,7 @@ void StaggeredLoop::import_state(LoopState state, const dda::SystemState& mechan
   porosity_ = std::move(state.porosity);
   permeability_ = std::move(state.permeability);
   permeability_tensors_ = std::move(state.permeability_tensors);
-  std::deque<dda::AndersonAccelerator::Pass> history;
+  std::deque<numerics::AndersonAccelerator::Pass> history;
   for (std::size_t i = 0; i < state.anderson_residuals.size(); ++i)
     history.push_back({Eigen::Map<const Eigen::VectorXd>(state.anderson_residuals[i].data(),
                                                          static_cast<Eigen::Index>(state.anderson_residuals[i].size())),

@@ -77,7 +77,7 @@ class CholmodSolver final : public KeptFactorSolver {
     Eigen::VectorXd x;
     iterations = 0;
     if (factor_ != nullptr && !stale_) {
-      iterations = solve_by_conjugate_gradients(
+      iterations = numerics::solve_by_conjugate_gradients(
           [this](const Eigen::VectorXd& v, Eigen::VectorXd& y) { y = multiply(v); },
           [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { z = apply_factor(r); }, b, guess, tolerance,
           max_iterations_, x, counts_.iterations);

@@ -199,7 +199,7 @@ class BlockFactorSolver final : public KeptFactorSolver {
   // CG on the current matrix, preconditioned by the corrected factor.
   int run_preconditioned_cg(const Eigen::VectorXd& b, const Eigen::VectorXd& guess, double tolerance,
                             Eigen::VectorXd& x) const {
-    return solve_by_conjugate_gradients(
+    return numerics::solve_by_conjugate_gradients(
         [this](const Eigen::VectorXd& v, Eigen::VectorXd& y) { product_.multiply(v, y); },
         [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { apply_preconditioner(r, z); }, b, guess,
         tolerance, max_iterations_, x, counts_.iterations);

@@ -41,7 +41,7 @@ class ConjugateGradientSolver final : public LinearSolver {
   // x with ‖b − A x‖ ≤ tolerance ‖b‖, by CG from `guess`.
   Eigen::VectorXd solve_to(const Eigen::VectorXd& b, const Eigen::VectorXd& guess, double tolerance) const {
     Eigen::VectorXd x;
-    const int iterations = solve_by_conjugate_gradients(
+    const int iterations = numerics::solve_by_conjugate_gradients(
         [this](const Eigen::VectorXd& v, Eigen::VectorXd& y) { matrix_.multiply(v, y); },
         [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { precondition(r, z); }, b, guess, tolerance,
         max_iterations_, x, counts_.iterations);

@@ -11,6 +11,7 @@
 #include <Eigen/Sparse>
 
 #include "dda/block_matrix.hpp"
+#include "numerics/conjugate_gradients.hpp"
 
 namespace hydrodda::dda {
 
@@ -80,20 +81,6 @@ class SpringMatrixProduct {
   // Per half of the rows: index << 2 | which ends (kEndA, kEndB) lie in it, in index order.
   std::array<std::vector<int>, 2> touching_;
 };
-
-// y = A x, or z = M⁻¹ r: the two operations conjugate gradients needs.
-using VectorOperator = std::function<void(const Eigen::VectorXd&, Eigen::VectorXd&)>;
-
-// Preconditioned conjugate gradients on A x = b to ‖b − A x‖ ≤ tolerance ‖b‖, started from
-// `guess` when it has b's size and leaves a smaller residual than zero does. Iterates on
-// b/‖b‖, so that a load all but balanced (‖b‖ ~ 1e-150 at a static equilibrium) does not
-// underflow the inner products. Returns the iterations taken (also added to `iterations`),
-// or −1 if max_iterations did not reach the tolerance or CG broke down (no descent left: A or
-// M not positive definite in exact arithmetic any more).
-int solve_by_conjugate_gradients(const VectorOperator& multiply, const VectorOperator& precondition,
-                                 const Eigen::VectorXd& b, const Eigen::VectorXd& guess,
-                                 double tolerance, int max_iterations, Eigen::VectorXd& x,
-                                 long& iterations);
 
 // What a solver has done so far, for benchmarks and tests.
 struct SolverCounts {

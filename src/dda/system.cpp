@@ -8,10 +8,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "dda/anderson.hpp"
 #include "dda/array_growth.hpp"
 #include "dda/initial_stress.hpp"
 #include "geometry/parallel.hpp"
+#include "numerics/anderson.hpp"
 
 namespace hydrodda::dda {
 
@@ -644,7 +644,7 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
       if (active_[i].record.state == ContactState::sliding) sliding.push_back(&active_[i]);
     Eigen::VectorXd used(sliding.size());
     Eigen::VectorXd image(sliding.size());
-    AndersonAccelerator friction_mixing;
+    numerics::AndersonAccelerator friction_mixing;
     for (int al = 0; al < lagrangian_limit_; ++al) {
       ++report.lagrangian_iterations;
       for (std::size_t k = 0; k < sliding.size(); ++k) used[k] = sliding[k]->record.normal_force;

@@ -9,6 +9,7 @@
 
 #include "geometry/parallel.hpp"
 #include "hydro/flow_failure.hpp"
+#include "numerics/conjugate_gradients.hpp"
 
 namespace hydrodda::hydro {
 namespace {
@@ -701,20 +702,18 @@ void DarcySolver::restore_kept_factor(std::shared_ptr<const PermeabilityField> k
   if (kept_ && single_precision && unknown_count() > 0) solver_->keep_for_preconditioning();
 }
 
-// Pseudocode (Saad, alg. 9.1), M the kept factor: r = f − A x; z = M⁻¹ r; p = z;
-// repeat: α = rᵀz / pᵀAp; x += α p; r −= α A p; z = M⁻¹ r; stop when converged;
-// β = r'ᵀz' / rᵀz; p = z + β p.
-// Converged: |z|∞ ≤ kHeadTolerance · range(h), z = M⁻¹ r being the error A⁻¹ r as far as M
-// is A; and |Σ r| ≤ kBalanceTolerance / 10 of the boundary flow at the start, Σ r being what
-// the boundary flows fail to balance by (compute_boundary_flows). Gives up past `budget`
-// iterations, as soon as the rate so far says the budget will not do, or when CG breaks down.
+// Preconditioned CG (numerics/conjugate_gradients.hpp), M the kept factor, stopped here when
+// |z|∞ ≤ kHeadTolerance · range(h), z = M⁻¹ r being the error A⁻¹ r as far as M is A; and
+// |Σ r| ≤ kBalanceTolerance / 10 of the boundary flow at the start, Σ r being what the boundary
+// flows fail to balance by (compute_boundary_flows). Gives up past `budget` iterations, as soon
+// as the rate so far says the budget will not do, or when CG breaks down.
 bool DarcySolver::solve_by_conjugate_gradients(Eigen::VectorXd& x, int budget, int& iterations,
                                                const CorrectedFactor* corrected) const {
-  const auto multiply = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd {
-    return matrix_.selfadjointView<Eigen::Upper>() * v;
+  const auto multiply = [&](const Eigen::VectorXd& v, Eigen::VectorXd& y) {
+    y = matrix_.selfadjointView<Eigen::Upper>() * v;
   };
-  const auto precondition = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd {
-    return corrected ? corrected->solve(v) : solver_->precondition(v);
+  const auto precondition = [&](const Eigen::VectorXd& v, Eigen::VectorXd& z) {
+    z = corrected ? corrected->solve(v) : solver_->precondition(v);
   };
   // The heads' range, fixed ones included: the scale of the head error that counts.
   const auto head_tolerance = [&] {
@@ -729,38 +728,25 @@ bool DarcySolver::solve_by_conjugate_gradients(Eigen::VectorXd& x, int budget, i
   // balance is relative to is the smaller.
   const double balance_tolerance = 0.1 * kBalanceTolerance * std::min(start.boundary, start.net);
   Eigen::VectorXd r = start.r;
-  Eigen::VectorXd z = precondition(r);
-  const auto converged = [&](double error) {
-    return error <= head_tolerance() && std::abs(r.sum()) <= balance_tolerance;
-  };
-  double error = z.lpNorm<Eigen::Infinity>();
-  const double first_error = error;
-  if (converged(error)) return true;
-  Eigen::VectorXd p = z;
-  double rz = r.dot(z);
-  for (int it = 1; it <= budget; ++it) {
-    ++iterations;
-    const Eigen::VectorXd q = multiply(p);
-    const double curvature = p.dot(q);
-    if (!(curvature > 0.0) || !(rz > 0.0)) return false;
-    const double alpha = rz / curvature;
-    x += alpha * p;
-    r -= alpha * q;
-    z = precondition(r);
-    error = z.lpNorm<Eigen::Infinity>();
-    if (converged(error)) return true;
+  double first_error = 0.0;
+  const auto check = [&](int it, const Eigen::VectorXd& residual, const Eigen::VectorXd& z) {
+    const double error = z.lpNorm<Eigen::Infinity>();
+    if (it == 0) first_error = error;
+    if (error <= head_tolerance() && std::abs(residual.sum()) <= balance_tolerance) return numerics::CgVerdict::converged;
     // At the mean rate so far CG would need more than the budget: give up now rather than
     // at its end (a fracture that opened or closed changed the matrix too much for the old
     // factor). Not before four iterations: CG often starts slowly, then speeds up.
     if (it >= 4) {
       const double rate = std::pow(error / first_error, 1.0 / it);
-      if (!(rate < 1.0) || it + std::log(head_tolerance() / error) / std::log(rate) > budget) return false;
+      if (!(rate < 1.0) || it + std::log(head_tolerance() / error) / std::log(rate) > budget)
+        return numerics::CgVerdict::give_up;
     }
-    const double rz_new = r.dot(z);
-    p = z + (rz_new / rz) * p;
-    rz = rz_new;
-  }
-  return false;
+    return numerics::CgVerdict::go_on;
+  };
+  long taken = iterations;
+  const int result = numerics::run_preconditioned_cg(multiply, precondition, {{}, check}, budget, x, r, taken);
+  iterations = static_cast<int>(taken);
+  return result >= 0;
 }
 
 FlowSolution DarcySolver::make_solution(const Eigen::VectorXd& x, PermeabilityView permeability) const {

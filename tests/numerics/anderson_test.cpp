@@ -1,8 +1,8 @@
-#include "dda/anderson.hpp"
+#include "numerics/anderson.hpp"
 
 #include <gtest/gtest.h>
 
-namespace hydrodda::dda {
+namespace hydrodda::numerics {
 namespace {
 
 // A linear contraction G(x) = M x + b, spectral radius 0.9: plain iteration needs about
@@ -48,4 +48,4 @@ TEST(Anderson, WithoutHistoryTakesThePlainStep) {
 }
 
 }  // namespace
-}  // namespace hydrodda::dda
+}  // namespace hydrodda::numerics

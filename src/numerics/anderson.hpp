@@ -1,5 +1,7 @@
 #pragma once
-// Anderson acceleration of a fixed-point iteration x = G(x).
+// Anderson acceleration of a fixed-point iteration x = G(x): the DDA step's friction loads
+// (dda/system.cpp) and the coupling loop's heads (coupling/staggered_loop.cpp) both mix their
+// last few passes with it.
 //
 // The friction loads of sliding contacts depend on their normal forces, which depend on the
 // solution the loads produce: a fixed point the step iterates, one linear solve per pass.
@@ -19,7 +21,7 @@
 
 #include <Eigen/Dense>
 
-namespace hydrodda::dda {
+namespace hydrodda::numerics {
 
 class AndersonAccelerator {
  public:
@@ -46,4 +48,4 @@ class AndersonAccelerator {
   std::deque<Pass> history_;
 };
 
-}  // namespace hydrodda::dda
+}  // namespace hydrodda::numerics

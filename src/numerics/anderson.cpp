@@ -1,6 +1,6 @@
-#include "dda/anderson.hpp"
+#include "numerics/anderson.hpp"
 
-namespace hydrodda::dda {
+namespace hydrodda::numerics {
 
 Eigen::VectorXd AndersonAccelerator::next(const Eigen::VectorXd& x, const Eigen::VectorXd& g) {
   if (!history_.empty() && history_.back().image.size() != g.size()) history_.clear();
@@ -24,4 +24,4 @@ Eigen::VectorXd AndersonAccelerator::next(const Eigen::VectorXd& x, const Eigen:
   return g - delta_g * gamma;
 }
 
-}  // namespace hydrodda::dda
+}  // namespace hydrodda::numerics
