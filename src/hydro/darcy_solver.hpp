@@ -1,8 +1,7 @@
 #pragma once
-// Steady Darcy flow in hydraulic head with P1 finite elements on a fixed triangle mesh:
-//   −∇·(K ∇h) = 0 in Ω,  K = k ρ_w g / μ,
-//   h = h_D on fixed-head (or fixed-pressure) boundaries, q·n = q_N on flux boundaries,
-//   q·n = 0 elsewhere.
+// Steady Darcy flow in hydraulic head with P1 finite elements on a fixed triangle mesh: the
+// system (darcy_assembly.hpp) solved by a sparse Cholesky factorisation, and the answer made
+// into heads, pressures, fluxes and boundary flows (darcy_postprocessing.hpp).
 // Built once per mesh and set of boundary conditions (numbering, sparsity pattern, symbolic
 // factorisation); each solve() refills the matrix values in place and refactors numerically.
 // solve_reusing_factor() keeps the last numeric factor instead, as the preconditioner of
@@ -14,21 +13,15 @@
 #include <vector>
 
 #include "hydro/boundary_condition.hpp"
+#include "hydro/darcy_assembly.hpp"
 #include "hydro/flow_failure.hpp"
 #include "hydro/flow_solution.hpp"
 #include "hydro/fluid.hpp"
 #include "hydro/linear_solver.hpp"
-#include "hydro/p1_element.hpp"
 #include "hydro/permeability_field.hpp"
 #include "mesh/triangle_mesh.hpp"
 
 namespace hydrodda::hydro {
-
-struct DarcyProblem {
-  Fluid fluid;
-  std::vector<BoundaryCondition> boundaries;
-  PressureConvention pressure = PressureConvention::overpressure;
-};
 
 class DarcySolver {
  public:
@@ -46,7 +39,7 @@ class DarcySolver {
   // raised between coupling passes: the fixed nodes stay, so the pattern and its analysis are
   // kept. Throws std::invalid_argument when the conditions differ in anything but their values.
   void set_boundary_values(std::span<const BoundaryCondition> boundaries);
-  const std::vector<BoundaryCondition>& boundary_conditions() const { return problem_.boundaries; }
+  const std::vector<BoundaryCondition>& boundary_conditions() const { return assembler_.problem().boundaries; }
 
   // Solves with a permeability, isotropic or a tensor, the factor of an earlier matrix serving as the
   // preconditioner of conjugate gradients on this one (Saad, Iterative Methods, alg. 9.1),
@@ -94,31 +87,14 @@ class DarcySolver {
   std::shared_ptr<const PermeabilityField> kept_factor() const { return kept_; }
   void restore_kept_factor(std::shared_ptr<const PermeabilityField> kept, bool single_precision = false);
 
-  int unknown_count() const { return static_cast<int>(free_nodes_.size()); }
-  long long stored_nonzeros() const { return matrix_.nonZeros(); }
-  double reference_head() const { return reference_head_; }
+  int unknown_count() const { return assembler_.unknown_count(); }
+  long long stored_nonzeros() const { return assembler_.matrix().nonZeros(); }
+  double reference_head() const { return assembler_.reference_head(); }
   // Seconds to build the pattern and analyse it.
-  double setup_seconds() const;
+  double setup_seconds() const { return setup_seconds_; }
   const std::string& solver_name() const { return solver_name_; }
 
  private:
-  void setup_boundary_conditions();
-  void check_every_part_is_fixed() const;
-  void setup_pattern();
-  void assemble_system(PermeabilityView permeability);
-  struct Residual {
-    Eigen::VectorXd r;  // f − A x over the unknowns
-    double balance;     // the relative mass-balance error it implies
-    double boundary;    // the flow it is relative to: Σ |nodal flow through the boundary| / 2
-    double net;         // the larger of the boundaries' total inflow and total outflow
-  };
-  Residual compute_residual(const Eigen::VectorXd& x) const;
-  template <class Body>
-  void over_two_halves(int count, Body&& body) const;
-  std::vector<long double> compute_a_times_h(const std::vector<double>& h) const;
-  std::vector<double> expand_heads(const Eigen::VectorXd& x) const;
-  // One permeability per triangle, each finite and positive definite (std::runtime_error).
-  void check_size(PermeabilityView permeability) const;
   FlowSolution solve_with(PermeabilityView permeability);
   // solve_with(), keeping `permeability` as the factor's for the next solve_reusing_factor().
   FlowSolution solve_and_keep(PermeabilityView permeability);
@@ -145,37 +121,11 @@ class DarcySolver {
   // K_e(k_e) − K_e(k⁰_e) of the given elements over the unknowns, as U S Uᵀ (two columns an
   // element at most, from the eigenvectors of the change of its conductivity tensor).
   LowRankTerm element_changes(std::span<const int> elements, PermeabilityView permeability) const;
-  FlowSolution make_solution(const Eigen::VectorXd& x, PermeabilityView permeability) const;
-  void compute_boundary_flows(FlowSolution& out) const;
-  // The flow out through each mesh boundary, from A h (compute_a_times_h).
-  std::vector<double> boundary_totals(const std::vector<long double>& a_times_h) const;
-  // The larger of the boundaries' total inflow and total outflow.
-  static double net_boundary_flow(const std::vector<double>& flow);
 
-  const mesh::TriangleMesh& mesh_;
-  DarcyProblem problem_;
+  DarcyAssembler assembler_;
   std::unique_ptr<LinearSolver> solver_;
   std::string solver_name_;
-  double reference_head_ = 0.0;
   double setup_seconds_ = 0.0;
-
-  std::vector<double> fixed_head_;        // per node: NaN where the head is free
-  std::array<double, 2> fixed_head_range_{};  // the smallest and largest fixed head
-  std::vector<int> unknown_of_node_;      // per node: index of its unknown, −1 if fixed
-  std::vector<int> free_nodes_;           // per unknown: its node
-  std::vector<double> neumann_outflow_;   // per node: ∫ φ_i q_N over flux edges (m²/s)
-  std::vector<int> entry_;                // per triangle, its 3 off-diagonal value positions (−1: none)
-  std::vector<int> fixed_elements_;       // triangles with at least one fixed node
-  struct FixedShare {                     // part of a fixed node's reaction owed to a boundary
-    int node;
-    int boundary;
-    double weight;                        // share of the node's fixed-boundary edge length
-  };
-  std::vector<FixedShare> fixed_shares_;  // sorted by node
-  std::vector<double> prescribed_flow_;   // per mesh boundary: ∫ q_N ds over its flux edges
-  std::vector<double> element_coupling_;  // per triangle, K_e(0,1), K_e(0,2), K_e(1,2)
-  SparseMatrix matrix_;                   // upper triangle over the unknowns
-  Eigen::VectorXd rhs_;
   // The permeability whose factor solver_ holds, and the one offered for reuse: the same, or
   // null when the next solve is to factor afresh.
   std::shared_ptr<const PermeabilityField> factored_, kept_;

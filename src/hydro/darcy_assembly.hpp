@@ -1,0 +1,140 @@
+#pragma once
+// The linear system of Darcy flow in hydraulic head with P1 finite elements on a fixed mesh:
+//   −∇·(K ∇h) = 0 in Ω,  K = k ρ_w g / μ,
+//   h = h_D on fixed-head (or fixed-pressure) boundaries, q·n = q_N on flux boundaries,
+//   q·n = 0 elsewhere;
+// reduced to the unknown (free) heads, A x = f. Built once per mesh and set of boundary
+// conditions (numbering, sparsity pattern); assemble() refills the values in place. What the
+// linear solver does with it is darcy_solver.hpp's; what is made of its answer,
+// darcy_postprocessing.hpp's.
+//
+// Room for storage: add_storage() adds S/Δt · M, M the P1 mass matrix (lumped or consistent),
+// and S/Δt · M h_old to the right-hand side, for a backward-Euler step of
+//   S ∂h/∂t − ∇·(K ∇h) = 0.
+// No run takes a step yet: steady solves never add it.
+
+#include <array>
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "geometry/parallel.hpp"
+#include "hydro/boundary_condition.hpp"
+#include "hydro/fluid.hpp"
+#include "hydro/linear_solver.hpp"
+#include "hydro/p1_element.hpp"
+#include "hydro/permeability_field.hpp"
+#include "mesh/triangle_mesh.hpp"
+
+namespace hydrodda::hydro {
+
+struct DarcyProblem {
+  Fluid fluid;
+  std::vector<BoundaryCondition> boundaries;
+  PressureConvention pressure = PressureConvention::overpressure;
+};
+
+// K = k ρ_w g / μ, `factor` = ρ_w g / μ.
+inline Conductivity conductivity(const PermeabilityTensor& k, double factor) {
+  return {k.xx * factor, k.xy * factor, k.yy * factor};
+}
+
+// The P1 mass matrix M_e(i, j) = ∫_e φ_i φ_j: consistent, A/12 (1 + δ_ij); or lumped, its
+// rows summed onto the diagonal, A/3 δ_ij. Both integrate a P1 function exactly: 1ᵀ M u = ∫ u.
+enum class MassMatrix { lumped, consistent };
+std::array<std::array<double, 3>, 3> compute_element_mass_matrix(double area, MassMatrix kind);
+// M over every node of the mesh.
+Eigen::SparseMatrix<double> assemble_mass_matrix(const mesh::TriangleMesh& mesh, MassMatrix kind);
+
+class DarcyAssembler {
+ public:
+  // Keeps a reference to `mesh`, which must outlive the assembler. Throws std::runtime_error
+  // when a condition names an unknown or empty boundary, or when nothing fixes the head
+  // (SingularSystem when some connected part of the mesh has no fixed head).
+  DarcyAssembler(const mesh::TriangleMesh& mesh, DarcyProblem problem);
+
+  // New values for the same conditions (DarcySolver::set_boundary_values).
+  void set_boundary_values(std::span<const BoundaryCondition> boundaries);
+  const DarcyProblem& problem() const { return problem_; }
+  const mesh::TriangleMesh& mesh() const { return mesh_; }
+
+  // One permeability per triangle, each finite and positive definite (std::runtime_error).
+  void check_size(PermeabilityView permeability) const;
+  // A and f from an intrinsic permeability (m²) per triangle; A's pattern stays.
+  void assemble(PermeabilityView permeability);
+  // A += c M and f += c M h_old over the unknowns (the fixed heads' columns of c M carried to
+  // f), c = S/Δt (1/s): the storage term of a backward-Euler step from `previous_heads` (one
+  // per node). residual() and the boundary flows stay those of the conductance alone.
+  void add_storage(double storage_over_step, MassMatrix kind, std::span<const double> previous_heads);
+  // The upper triangle of A over the unknowns, and f.
+  const SparseMatrix& matrix() const { return matrix_; }
+  const Eigen::VectorXd& rhs() const { return rhs_; }
+
+  int unknown_count() const { return static_cast<int>(free_nodes_.size()); }
+  const std::vector<int>& free_nodes() const { return free_nodes_; }      // per unknown: its node
+  const std::vector<int>& unknown_of_node() const { return unknown_of_node_; }  // −1: fixed
+  const std::vector<double>& fixed_head() const { return fixed_head_; }  // per node: NaN where free
+  std::array<double, 2> fixed_head_range() const { return fixed_head_range_; }
+  double reference_head() const { return reference_head_; }
+  double setup_seconds() const { return setup_seconds_; }
+
+  // Every node's head: the fixed ones and x over the unknowns.
+  std::vector<double> expand_heads(const Eigen::VectorXd& x) const;
+  // (A h)_i for every node, from the last assemble(), in extended precision (see the .cpp).
+  std::vector<long double> compute_a_times_h(const std::vector<double>& h) const;
+  struct Residual {
+    Eigen::VectorXd r;  // f − A x over the unknowns
+    double balance;     // the relative mass-balance error it implies
+    double boundary;    // the flow it is relative to: Σ |nodal flow through the boundary| / 2
+    double net;         // the larger of the boundaries' total inflow and total outflow
+  };
+  Residual compute_residual(const Eigen::VectorXd& x) const;
+  // The flow out through each mesh boundary, from A h (compute_a_times_h).
+  std::vector<double> boundary_totals(const std::vector<long double>& a_times_h) const;
+  // The larger of the boundaries' total inflow and total outflow.
+  static double net_boundary_flow(const std::vector<double>& flow);
+
+  // body(first, last) over the two halves of 0 … count − 1, side by side on two threads where the
+  // mesh is large enough (from some 50,000 triangles) to pay for waking the second.
+  template <class Body>
+  void over_two_halves(int count, Body&& body) const {
+    geometry::run_two_parts(mesh_.triangle_count() >= 50000, [&](int part) {
+      const auto [first, last] = geometry::half_range(part, static_cast<std::size_t>(count));
+      body(static_cast<int>(first), static_cast<int>(last));
+    });
+  }
+
+ private:
+  void setup_boundary_conditions();
+  void check_every_part_is_fixed() const;
+  void setup_pattern();
+
+  const mesh::TriangleMesh& mesh_;
+  DarcyProblem problem_;
+  double reference_head_ = 0.0;
+  double setup_seconds_ = 0.0;
+
+  std::vector<double> fixed_head_;        // per node: NaN where the head is free
+  std::array<double, 2> fixed_head_range_{};  // the smallest and largest fixed head
+  std::vector<int> unknown_of_node_;      // per node: index of its unknown, −1 if fixed
+  std::vector<int> free_nodes_;           // per unknown: its node
+  std::vector<double> neumann_outflow_;   // per node: ∫ φ_i q_N over flux edges (m²/s)
+  std::vector<int> entry_;                // per triangle, its 3 off-diagonal value positions (−1: none)
+  std::vector<int> fixed_elements_;       // triangles with at least one fixed node
+  struct FixedShare {                     // part of a fixed node's reaction owed to a boundary
+    int node;
+    int boundary;
+    double weight;                        // share of the node's fixed-boundary edge length
+  };
+  std::vector<FixedShare> fixed_shares_;  // sorted by node
+  std::vector<double> prescribed_flow_;   // per mesh boundary: ∫ q_N ds over its flux edges
+  std::vector<double> element_coupling_;  // per triangle, K_e(0,1), K_e(0,2), K_e(1,2)
+  SparseMatrix matrix_;                   // upper triangle over the unknowns
+  Eigen::VectorXd rhs_;
+};
+
+}  // namespace hydrodda::hydro
