@@ -69,7 +69,7 @@ std::vector<double> make_permeability(const mesh::TriangleMesh& m, double strip_
   return k;
 }
 
-std::unique_ptr<hydro::LinearSolver> make_solver() {
+std::unique_ptr<numerics::SparseCholesky> make_solver() {
   const char* ordering = std::getenv("HYDRODDA_ORDERING");
   return hydro::make_cholmod_solver(ordering && std::string(ordering) == "automatic"
                                         ? hydro::FillOrdering::automatic

@@ -16,7 +16,7 @@
 //   solve(b):          conjugate gradients on the current A preconditioned by M (Saad,
 //                      alg. 9.1) from the last solution; M differs from A by the geometric
 //                      drift only, so a few iterations reach ‖b − A x‖ ≤ tol ‖b‖.
-// When the corrections grow past kMaxCorrections, or CG needs more than kRefactorAfter
+// When the corrections grow past kMaxCorrections, or CG needs more than kRefactorAfterIterations
 // iterations (the drift has grown; kept_factor_solver.hpp), A is factored afresh.
 #include <algorithm>
 #include <stdexcept>

@@ -6,6 +6,7 @@
 // solve_to().
 
 #include "dda/linear_solver.hpp"
+#include "numerics/kept_factor.hpp"
 
 namespace hydrodda::dda {
 
@@ -22,7 +23,7 @@ class KeptFactorSolver : public LinearSolver {
     int iterations = 0;
     last_solution_ = solve_to(rhs, last_solution_, tolerance_, iterations);
     // The drift has grown past what pays: factor afresh before the next solve.
-    if (iterations > kRefactorAfter) stale_ = true;
+    if (iterations > numerics::kRefactorAfterIterations) stale_ = true;
     return last_solution_;
   }
 
@@ -53,8 +54,6 @@ class KeptFactorSolver : public LinearSolver {
   mutable SolverCounts counts_;
 
  private:
-  // Past this many CG iterations a fresh factorisation costs less than the drift does.
-  static constexpr int kRefactorAfter = 6;
   mutable Eigen::VectorXd last_solution_;  // the starting guess of the next solve
 };
 

@@ -61,7 +61,7 @@ class SupernodalLLT : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Up
   cholmod_common* common() const { return &const_cast<SupernodalLLT*>(this)->cholmod(); }
 };
 
-class CholmodSolver final : public LinearSolver {
+class CholmodSolver final : public numerics::SparseCholesky {
  public:
   explicit CholmodSolver(FillOrdering ordering) : ordering_(ordering) {
     // The ordering is paid once per mesh, the numeric factorisation every coupling
@@ -161,7 +161,7 @@ class CholmodSolver final : public LinearSolver {
 
 }  // namespace
 
-std::unique_ptr<LinearSolver> make_cholmod_solver(FillOrdering ordering) {
+std::unique_ptr<numerics::SparseCholesky> make_cholmod_solver(FillOrdering ordering) {
   return std::make_unique<CholmodSolver>(ordering);
 }
 

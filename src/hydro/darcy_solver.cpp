@@ -10,6 +10,7 @@
 #include "hydro/darcy_postprocessing.hpp"
 #include "hydro/flow_failure.hpp"
 #include "numerics/conjugate_gradients.hpp"
+#include "numerics/kept_factor.hpp"
 
 namespace hydrodda::hydro {
 namespace {
@@ -24,7 +25,7 @@ constexpr double kTargetBalance = 1e-14;  // relative mass balance that ends the
 
 }  // namespace
 
-DarcySolver::DarcySolver(const mesh::TriangleMesh& mesh, DarcyProblem problem, std::unique_ptr<LinearSolver> solver)
+DarcySolver::DarcySolver(const mesh::TriangleMesh& mesh, DarcyProblem problem, std::unique_ptr<numerics::SparseCholesky> solver)
     : assembler_(mesh, std::move(problem)), solver_(std::move(solver)) {
   const auto start = Clock::now();
   if (!solver_) throw std::invalid_argument("DarcySolver needs a linear solver");
@@ -112,7 +113,7 @@ FlowSolution DarcySolver::solve_reusing_factor(PermeabilityView permeability, st
   if (!start_heads.empty() && start_heads.size() != assembler_.mesh().nodes.size())
     throw std::invalid_argument("flow: the starting heads must be one per node");
   if (unknown_count() == 0) return solve_and_keep(permeability);
-  Preconditioning plan = plan_preconditioning(permeability, true);
+  numerics::ReusePlan plan = plan_preconditioning(permeability, true);
   if (plan.bound > kHopelessIterations) return solve_and_keep(permeability);
 
   SolveTimings timings;
@@ -121,33 +122,21 @@ FlowSolution DarcySolver::solve_reusing_factor(PermeabilityView permeability, st
   timings.assemble = seconds_since(clock);
   clock = Clock::now();
   // The elements that jumped, taken exactly by a low-rank correction of the kept factor; where
-  // the solver has none, or the corrected matrix is singular to working precision, the kept
+  // that cannot serve (numerics::KeptFactorPreconditioner::use_corrected_factor), the kept
   // factor alone if it will do. Without a correction the kept factor only preconditions from
   // here, in single precision where the solver can: CG's iterations read half the memory, and
-  // the factor holds half while the blocks move. A correction of such a factor only adds: a
-  // stretch that closed by 10⁷ leaves 10⁻⁷ of its elements' conductance in the corrected
-  // matrix, no more than the factor's rounding to float, which would then swamp it (made so in
-  // bench_hydro's LatePassFlow/10/1/60, it left CG too slow for every other pass, which
-  // factored afresh); such a correction is not made.
-  std::unique_ptr<CorrectedFactor> corrected;
+  // the factor holds half while the blocks move. (A downdate of such a factor, made in
+  // bench_hydro's LatePassFlow/10/1/60, left CG too slow for every other pass, which factored
+  // afresh.)
+  numerics::KeptFactorPreconditioner preconditioner(*solver_);
   if (plan.corrected.empty()) {
-    solver_->keep_for_preconditioning();
-  } else {
-    const LowRankTerm term = element_changes(plan.corrected, permeability);
-    const bool downdates = std::any_of(term.weight.begin(), term.weight.end(), [](double w) { return w < 0.0; });
-    if (!downdates || !solver_->kept_for_preconditioning()) {
-      try {
-        corrected = solver_->correct(term);
-      } catch (const SingularSystem&) {
-      }
-    }
-    if (!corrected) {
-      plan = plan_preconditioning(permeability, false);
-      if (plan.bound > kHopelessIterations) {
-        FlowSolution out = solve_and_keep(permeability);
-        out.timings.assemble += timings.assemble;
-        return out;
-      }
+    preconditioner.use_factor_alone();
+  } else if (!preconditioner.use_corrected_factor(element_changes(plan.corrected, permeability))) {
+    plan = plan_preconditioning(permeability, false);
+    if (plan.bound > kHopelessIterations) {
+      FlowSolution out = solve_and_keep(permeability);
+      out.timings.assemble += timings.assemble;
+      return out;
     }
   }
   timings.factorize = seconds_since(clock);
@@ -168,7 +157,7 @@ FlowSolution DarcySolver::solve_reusing_factor(PermeabilityView permeability, st
   int taken = 0;
   FlowSolution out;
   for (int round = 0; round < 2; ++round) {
-    if (!solve_by_conjugate_gradients(x, kMaxIterations - taken, taken, corrected.get())) break;
+    if (!solve_by_conjugate_gradients(x, kMaxIterations - taken, taken, preconditioner)) break;
     timings.solve = seconds_since(clock);
     clock = Clock::now();
     out = make_flow_solution(assembler_, x, permeability);
@@ -188,7 +177,7 @@ FlowSolution DarcySolver::solve_reusing_factor(PermeabilityView permeability, st
   // correction let go first: at a million triangles the answer is 30 MB beside the
   // factorisation).
   out = {};
-  corrected.reset();
+  preconditioner.release();
   out = solve_and_keep(permeability);
   out.timings.assemble += timings.assemble;
   out.cg_iterations = taken;
@@ -197,19 +186,24 @@ FlowSolution DarcySolver::solve_reusing_factor(PermeabilityView permeability, st
 
 namespace {
 
-constexpr std::array<double, 8> kSpreads{1.001, 1.003, 1.01, 1.03, 1.1, 1.3, 2.0, 10.0};
-constexpr int kNoBound = std::numeric_limits<int>::max();
-// How many elements corrected exactly cost about one CG iteration: the half-solves along their
-// paths up the elimination tree, and the iterations CG then adds where they closed (a downdate
-// by 1e7 of an element's conductance leaves the correction accurate to about 1% in its
-// directions). bench_hydro's LatePassFlow at 10^6 triangles: 100 closed elements cost 0.02 s
-// to correct and one more iteration; an iteration (a whole solve and a product) 0.08 s.
+// Two costs the plan weighs (numerics::plan_factor_reuse), tuned on one machine at 10^6
+// triangles and kept as tuned, since which passes factor afresh shows in the heads at
+// round-off (their measurements: docs/flow.md, "Fractures that open or close").
+// How many elements corrected exactly cost about one CG iteration: the half-solves along
+// their paths up the elimination tree, and the iterations CG adds where they closed. Larger:
+// more elements corrected, fewer fresh factors, and longer corrections applied at every
+// iteration.
 constexpr double kCorrectedPerIteration = 80.0;
-// What keeping the factor saves over a fresh one, in iterations: at 10^6 triangles a fresh
-// factorisation and its exact solve take 0.43–0.48 s on two threads (0.60–0.67 s on one), a
-// pass of four CG iterations on the kept factor 0.38–0.44 s (0.54–0.58 s): about one
-// iteration. A correction that costs more is not made.
+// What keeping the factor saves over a fresh one, in iterations: a correction that costs more
+// is not made. Larger: corrections made where a fresh factor would be cheaper; smaller: fresh
+// factors where a corrected one would do.
 constexpr double kIterationsSavedByKeeping = 1.0;
+
+// The plan's weights for the flow matrix: an element's change has rank two (its conductance
+// matrix is area Bᵀ K B, B 2 × 3).
+constexpr numerics::FactorReuseCosts kReuseCosts{DarcySolver::kHeadTolerance, DarcySolver::kMaxIterations, 2,
+                                                 DarcySolver::kMaxCorrectedElements, kCorrectedPerIteration,
+                                                 kIterationsSavedByKeeping};
 
 // An element's spread: the larger of λ_max and 1/λ_min of the pencil (k, k⁰).
 double spread_of(const PermeabilityTensor& k, const PermeabilityTensor& k0) {
@@ -228,12 +222,6 @@ double spread_of(const PermeabilityTensor& k, const PermeabilityTensor& k0) {
   return std::max(hi, 1.0 / lo);
 }
 
-// CG's iterations to cut the error by kHeadTolerance when every eigenvalue is in [1/c, c].
-long chebyshev_iterations(double c) {
-  return static_cast<long>(
-      std::ceil(std::log(0.5 * DarcySolver::kHeadTolerance) / std::log((c - 1.0) / (c + 1.0))));
-}
-
 }  // namespace
 
 // The kept factor is M = Σ_e K_e(k⁰_e), the new matrix A = Σ_e K_e(k_e), with
@@ -241,65 +229,25 @@ long chebyshev_iterations(double c) {
 // gradients). For any x, with g = B x, xᵀK_e(k)x / xᵀK_e(k⁰)x = gᵀ k g / gᵀ k⁰ g lies between
 // the generalised eigenvalues of the pencil (k, k⁰), the roots λ of det(k − λ k⁰) = 0:
 //   λ² det k⁰ − λ (k⁰xx kyy + k⁰yy kxx − 2 k⁰xy kxy) + det k = 0;
-// for isotropic or axis-aligned tensors simply kxx/k⁰xx and kyy/k⁰yy. An element's spread is
-// the larger of λ_max and 1/λ_min. Elements with spread ≤ c keep the eigenvalues of M⁻¹A in
-// [1/c, c] (Rayleigh quotients of sums of semidefinite terms); each element outside moves at
-// most two eigenvalues out (its K_e has rank two). CG then needs at most
-// 2 · #outside + log(ε/2) / log((c − 1)/(c + 1)) iterations to cut the error by ε (Saad,
-// Iterative Methods, §6.11.3, with the outlying eigenvalues removed first; Axelsson and
-// Lindskog, Numer. Math. 48, 1986). The least over a ladder of c, with ε = kHeadTolerance.
-// With the elements outside taken into M exactly (a low-rank correction), the first term goes.
-std::vector<long> DarcySolver::count_outside(PermeabilityView permeability) const {
-  std::vector<long> outside(kSpreads.size(), 0);
+// for isotropic or axis-aligned tensors simply kxx/k⁰xx and kyy/k⁰yy: each element's spread,
+// from which numerics::plan_factor_reuse bounds CG's iterations (numerics/kept_factor.hpp),
+// with ε = kHeadTolerance. A storage term would enter each element's pencil alike.
+std::vector<double> DarcySolver::element_spreads(PermeabilityView permeability) const {
+  std::vector<double> spreads(permeability.size());
   const PermeabilityView kept = kept_->view();
-  for (std::size_t e = 0; e < permeability.size(); ++e) {
-    const double spread = spread_of(permeability[e], kept[e]);
-    for (std::size_t i = 0; i < kSpreads.size() && !(spread <= kSpreads[i]); ++i) ++outside[i];
-  }
-  return outside;
+  for (std::size_t e = 0; e < permeability.size(); ++e) spreads[e] = spread_of(permeability[e], kept[e]);
+  return spreads;
 }
 
 int DarcySolver::bound_iterations(PermeabilityView permeability) const {
   return plan_preconditioning(permeability, false).bound;
 }
 
-// The cheapest of: the kept factor alone (bound_iterations), or corrected for the elements
-// outside one spread of the ladder, each corrected element costing 1/kCorrectedPerIteration of
-// an iteration. A correction is made only where the elements left let CG finish within its
-// kMaxIterations, and where it costs less than keeping the factor saves: where a whole
-// fracture network drifts by several per cent a pass, or hundreds of elements jump, a fresh
-// factor is the cheaper.
-DarcySolver::Preconditioning DarcySolver::plan_preconditioning(PermeabilityView permeability, bool correcting) const {
-  if (!kept_ || kept_->size() != permeability.size()) return {{}, kNoBound};
-  const std::vector<long> outside = count_outside(permeability);
-  long bound = kNoBound;
-  double cost = INFINITY;
-  int corrected_outside = -1;  // the ladder step whose outside elements are corrected
-  for (std::size_t i = 0; i < kSpreads.size(); ++i) {
-    const long plain = 2 * outside[i] + chebyshev_iterations(kSpreads[i]);
-    if (plain < cost) {
-      cost = static_cast<double>(plain);
-      bound = plain;
-      corrected_outside = -1;
-    }
-    const double correction_cost = outside[i] / kCorrectedPerIteration;
-    const double with_correction = static_cast<double>(chebyshev_iterations(kSpreads[i])) + correction_cost;
-    if (correcting && outside[i] > 0 && outside[i] <= kMaxCorrectedElements &&
-        chebyshev_iterations(kSpreads[i]) <= kMaxIterations && correction_cost < kIterationsSavedByKeeping &&
-        with_correction < cost) {
-      cost = with_correction;
-      bound = chebyshev_iterations(kSpreads[i]);
-      corrected_outside = static_cast<int>(i);
-    }
-  }
-  Preconditioning plan{{}, static_cast<int>(std::min<long>(bound, kNoBound))};
-  if (corrected_outside >= 0) {
-    const PermeabilityView kept = kept_->view();
-    for (std::size_t e = 0; e < permeability.size(); ++e)
-      if (!(spread_of(permeability[e], kept[e]) <= kSpreads[corrected_outside]))
-        plan.corrected.push_back(static_cast<int>(e));
-  }
-  return plan;
+// Where a whole fracture network drifts by several per cent a pass, or hundreds of elements
+// jump, a fresh factor is the cheaper.
+numerics::ReusePlan DarcySolver::plan_preconditioning(PermeabilityView permeability, bool correcting) const {
+  if (!kept_ || kept_->size() != permeability.size()) return {{}, numerics::kNoReuseBound};
+  return numerics::plan_factor_reuse(element_spreads(permeability), correcting, kReuseCosts);
 }
 
 // K_e(k) − K_e(k⁰) = area_e Bᵀ (K − K⁰) B, K the conductivity; with the change of the tensor
@@ -369,13 +317,11 @@ void DarcySolver::restore_kept_factor(std::shared_ptr<const PermeabilityField> k
 // flows fail to balance by (compute_boundary_flows). Gives up past `budget` iterations, as soon
 // as the rate so far says the budget will not do, or when CG breaks down.
 bool DarcySolver::solve_by_conjugate_gradients(Eigen::VectorXd& x, int budget, int& iterations,
-                                               const CorrectedFactor* corrected) const {
+                                               const numerics::KeptFactorPreconditioner& preconditioner) const {
   const auto multiply = [&](const Eigen::VectorXd& v, Eigen::VectorXd& y) {
     y = assembler_.matrix().selfadjointView<Eigen::Upper>() * v;
   };
-  const auto precondition = [&](const Eigen::VectorXd& v, Eigen::VectorXd& z) {
-    z = corrected ? corrected->solve(v) : solver_->precondition(v);
-  };
+  const auto precondition = [&](const Eigen::VectorXd& v, Eigen::VectorXd& z) { preconditioner.apply(v, z); };
   // The heads' range, fixed ones included: the scale of the head error that counts.
   const auto head_tolerance = [&] {
     const auto [lowest_fixed, highest_fixed] = assembler_.fixed_head_range();

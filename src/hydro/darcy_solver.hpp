@@ -20,6 +20,7 @@
 #include "hydro/linear_solver.hpp"
 #include "hydro/permeability_field.hpp"
 #include "mesh/triangle_mesh.hpp"
+#include "numerics/kept_factor.hpp"
 
 namespace hydrodda::hydro {
 
@@ -29,7 +30,7 @@ class DarcySolver {
   // when a condition names an unknown or empty boundary, or when nothing fixes the head
   // (SingularSystem when some connected part of the mesh has no fixed head).
   DarcySolver(const mesh::TriangleMesh& mesh, DarcyProblem problem,
-              std::unique_ptr<LinearSolver> solver = make_cholmod_solver());
+              std::unique_ptr<numerics::SparseCholesky> solver = make_cholmod_solver());
 
   // Solves with an intrinsic permeability (m²) per triangle: isotropic scalars or tensors.
   // FlowSolveFailed, in the model's terms, when it cannot (here and in every solve below).
@@ -59,7 +60,7 @@ class DarcySolver {
   static constexpr double kBalanceTolerance = 1e-12;
   static constexpr double kBalanceBound = 1e-10;  // the mass balance every solve meets
   static constexpr int kMaxIterations = 12;
-  static constexpr int kRefactorAfter = 6;
+  static constexpr int kRefactorAfter = numerics::kRefactorAfterIterations;
   static constexpr int kHopelessIterations = 3 * kMaxIterations;
   // At most this many elements whose permeability jumped since the kept factor (a fracture
   // opening or closing) are taken into the preconditioner exactly, by a low-rank correction of
@@ -103,27 +104,22 @@ class DarcySolver {
   void factorize_system(SolveTimings& timings, PermeabilityView permeability);
   // x = A⁻¹ f with the fresh factor, refined in extended precision (see solve_with).
   Eigen::VectorXd solve_directly(int& refinement_steps) const;
-  // PCG with the kept factor, or that factor corrected when `corrected` is given, from x
-  // (updated in place), `iterations` added to; false when it gave up (x is then to be discarded).
+  // PCG with the kept factor, alone or corrected, from x (updated in place), `iterations` added
+  // to; false when it gave up (x is then to be discarded).
   bool solve_by_conjugate_gradients(Eigen::VectorXd& x, int budget, int& iterations,
-                                    const CorrectedFactor* corrected) const;
-  // How many elements have moved further than each spread of a ladder from the kept factor's
-  // permeability (see bound_iterations in the .cpp).
-  std::vector<long> count_outside(PermeabilityView permeability) const;
+                                    const numerics::KeptFactorPreconditioner& preconditioner) const;
+  // Per element, how far its permeability has moved from the kept factor's (see the .cpp).
+  std::vector<double> element_spreads(PermeabilityView permeability) const;
   // The preconditioner of solve_reusing_factor(): the elements whose change since the kept
   // factor it takes exactly (none: the kept factor alone), and the bound on CG's iterations
-  // that leaves.
-  struct Preconditioning {
-    std::vector<int> corrected;
-    int bound = 0;
-  };
-  Preconditioning plan_preconditioning(PermeabilityView permeability, bool correcting) const;
+  // that leaves (numerics::plan_factor_reuse).
+  numerics::ReusePlan plan_preconditioning(PermeabilityView permeability, bool correcting) const;
   // K_e(k_e) − K_e(k⁰_e) of the given elements over the unknowns, as U S Uᵀ (two columns an
   // element at most, from the eigenvectors of the change of its conductivity tensor).
   LowRankTerm element_changes(std::span<const int> elements, PermeabilityView permeability) const;
 
   DarcyAssembler assembler_;
-  std::unique_ptr<LinearSolver> solver_;
+  std::unique_ptr<numerics::SparseCholesky> solver_;
   std::string solver_name_;
   double setup_seconds_ = 0.0;
   // The permeability whose factor solver_ holds, and the one offered for reuse: the same, or

@@ -1,80 +1,26 @@
 #pragma once
-// The sparse symmetric positive definite solver behind the flow model: the pattern is
-// analysed once (ordering, symbolic factorisation), then each new set of values is only
-// factorised numerically. Another backend (e.g. PETSc) implements the same three calls.
+// The flow model's sparse Cholesky backend (numerics/sparse_cholesky.hpp's interface):
+// CHOLMOD's analysis, on an ordering by nested dissection made beside the program
+// (nested_dissection.hpp), and the program's own numeric factorisation on two threads
+// (supernodal_factorization.hpp) with its low-rank correction (supernodal_correction.hpp).
 
 #include <memory>
-#include <stdexcept>
-#include <string>
-#include <vector>
 
-#include <Eigen/Core>
-#include <Eigen/SparseCore>
+#include "numerics/sparse_cholesky.hpp"
 
 namespace hydrodda::hydro {
 
-// Column-major; only the upper triangle (row <= column) is stored and read: the triangle
-// CHOLMOD's supernodal factorisation works on, which it then permutes into one copy; a lower
-// triangle it transposes twice, holding two (45 MB each at 10^6 triangles).
-using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
-
-// A factorisation failed: the matrix is singular or not positive definite.
-class SingularSystem : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-// A low-rank term U S Uᵀ to add to a factored matrix: column j of U has the entries
-// (row[k], value[k]) for k in [start[j], start[j + 1]); S = diag(weight).
-struct LowRankTerm {
-  std::vector<int> start{0};
-  std::vector<int> row;
-  std::vector<double> value;
-  std::vector<double> weight;
-  int columns() const { return static_cast<int>(weight.size()); }
-};
-
-// The inverse of a factored matrix with a low-rank term added, applied without factoring
-// the sum. Valid while the factorisation it was made from stands.
-class CorrectedFactor {
- public:
-  virtual ~CorrectedFactor() = default;
-  // x = (A + U S Uᵀ)⁻¹ b.
-  virtual Eigen::VectorXd solve(const Eigen::VectorXd& b) const = 0;
-};
-
-class LinearSolver {
- public:
-  virtual ~LinearSolver() = default;
-  // Symbolic analysis of the pattern of `upper`; its values are not read.
-  virtual void analyse(const SparseMatrix& upper) = 0;
-  // Numeric factorisation of a matrix with the analysed pattern; throws SingularSystem.
-  virtual void factorize(const SparseMatrix& upper) = 0;
-  // x = A⁻¹ b with the last factorisation. Refused (std::logic_error) while the factor is kept
-  // for preconditioning.
-  virtual Eigen::VectorXd solve(const Eigen::VectorXd& b) const = 0;
-  // From here until the next factorize(), the factor serves as a preconditioner only
-  // (precondition() and correct()): a backend may keep it in lower precision.
-  virtual void keep_for_preconditioning() {}
-  // Whether the factor is kept for preconditioning in lower precision now.
-  virtual bool kept_for_preconditioning() const { return false; }
-  // x = M⁻¹ b, M the factored matrix as kept for preconditioning: A itself, or its factor's
-  // values rounded (still a fixed symmetric positive definite M, close to A).
-  virtual Eigen::VectorXd precondition(const Eigen::VectorXd& b) const { return solve(b); }
-  virtual std::string name() const = 0;
-  // The last factorisation (as kept for preconditioning) corrected by `term`; null where the
-  // backend has no such update.
-  virtual std::unique_ptr<CorrectedFactor> correct(const LowRankTerm& term) const {
-    (void)term;
-    return nullptr;
-  }
-};
+// The interface's types, as the backend's files name them.
+using numerics::CorrectedFactor;
+using numerics::LowRankTerm;
+using numerics::SingularSystem;
+using numerics::SparseMatrix;
 
 // Fill-reducing ordering of the symbolic analysis: METIS (nested dissection; slower to
 // analyse, faster to refactor) or CHOLMOD's automatic choice (AMD first).
 enum class FillOrdering { metis, automatic };
 
 // CHOLMOD supernodal Cholesky (LLᵀ) through Eigen's CholmodSupport.
-std::unique_ptr<LinearSolver> make_cholmod_solver(FillOrdering ordering = FillOrdering::metis);
+std::unique_ptr<numerics::SparseCholesky> make_cholmod_solver(FillOrdering ordering = FillOrdering::metis);
 
 }  // namespace hydrodda::hydro

@@ -75,7 +75,7 @@ EffectiveTensor compute_region_tensor(const mesh::TriangleMesh& mesh, std::span<
   if (n > 0) {
     SparseMatrix upper(n, n);
     upper.setFromTriplets(entries.begin(), entries.end());
-    std::unique_ptr<LinearSolver> solver = make_cholmod_solver(FillOrdering::automatic);
+    std::unique_ptr<numerics::SparseCholesky> solver = make_cholmod_solver(FillOrdering::automatic);
     solver->analyse(upper);
     try {
       solver->factorize(upper);

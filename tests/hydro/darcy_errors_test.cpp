@@ -79,7 +79,7 @@ TEST(DarcyErrors, FloatingPartIsASingularSystem) {
 
 // A solver whose factorisation always fails, in linear algebra's words, as CHOLMOD's does
 // near jacking (a contrast of 1e20 between an open joint and the rock).
-class FailingSolver : public LinearSolver {
+class FailingSolver : public numerics::SparseCholesky {
  public:
   void analyse(const SparseMatrix&) override {}
   void factorize(const SparseMatrix&) override {

@@ -1,4 +1,4 @@
-// LinearSolver::correct on CHOLMOD's supernodal factor: (A + U S Uᵀ)⁻¹ b applied from the
+// SparseCholesky::correct on CHOLMOD's supernodal factor: (A + U S Uᵀ)⁻¹ b applied from the
 // factor of A (Sherman–Morrison–Woodbury, hydro/supernodal_correction.cpp) against a fresh
 // factorisation of A + U S Uᵀ. Both are exact up to round-off: the matrices here have
 // condition numbers near 1e3–1e4, so the two answers agree to 1e-11 relative.
