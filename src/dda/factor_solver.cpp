@@ -10,7 +10,8 @@
 //                      P = Πᵀ L Lᵀ Π and Y = L⁻¹ Π W, M = Πᵀ L (I + Y S Yᵀ) Lᵀ Π, and by the
 //                      Sherman–Morrison–Woodbury identity
 //                        M⁻¹ = Πᵀ L⁻ᵀ (I − Y C⁻¹ Yᵀ) L⁻¹ Π,   C = S⁻¹ + Yᵀ Y
-//                      (Hager, "Updating the inverse of a matrix", SIAM Review 31, 1989).
+//                      (Hager, "Updating the inverse of a matrix", SIAM Review 31, 1989;
+//                      numerics/woodbury.hpp).
 //                      A spring spans two blocks, so its column of Y is nonzero only on their
 //                      paths to the root of the elimination tree: a sparse half-solve each.
 //   solve(b):          conjugate gradients on the current A preconditioned by M (Saad,
@@ -25,6 +26,7 @@
 
 #include "dda/block_cholesky.hpp"
 #include "dda/kept_factor_solver.hpp"
+#include "numerics/woodbury.hpp"
 
 namespace hydrodda::dda {
 namespace {
@@ -151,7 +153,7 @@ class BlockFactorSolver final : public KeptFactorSolver {
       for (Eigen::Index a = 0; a <= b; ++a) c(a, b) = c(b, a) = sparse_dot(corrections_[a].y, corrections_[b].y);
       c(b, b) += 1.0 / corrections_[b].sign;
     }
-    capacitance_.compute(c);
+    capacitance_.factor(c);
   }
 
   // z = M⁻¹ r: u = L⁻¹ Π r; u −= Y C⁻¹ Yᵀ u; z = Πᵀ L⁻ᵀ u.
@@ -234,7 +236,7 @@ class BlockFactorSolver final : public KeptFactorSolver {
   mutable RankOneTerms factored_terms_;  // as held by the factor
   mutable BlockCholesky factor_;
   mutable std::vector<Correction> corrections_;
-  mutable Eigen::PartialPivLU<Eigen::MatrixXd> capacitance_;
+  mutable numerics::WoodburyCapacitance capacitance_;
   mutable Eigen::VectorXd u_;
 };
 

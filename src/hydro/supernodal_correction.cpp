@@ -10,12 +10,13 @@
 #include <Eigen/Dense>
 
 #include "hydro/blas_threads.hpp"
+#include "numerics/woodbury.hpp"
 
 namespace hydrodda::hydro {
 namespace {
 
 // Pseudocode (Hager, "Updating the inverse of a matrix", SIAM Review 31, 1989; the identity
-// dda/factor_solver.cpp uses for its block factor). CHOLMOD factors L Lᵀ = P A Pᵀ. With the
+// of numerics/woodbury.hpp, which dda/factor_solver.cpp uses too). CHOLMOD factors L Lᵀ = P A Pᵀ. With the
 // columns scaled, Ũ = U |S|^½ and σ = sign S:
 //   A + U S Uᵀ = Pᵀ L (I + W σ Wᵀ) Lᵀ P,        W = L⁻¹ P Ũ,
 //   (A + U S Uᵀ)⁻¹ = Pᵀ L⁻ᵀ (I − W C⁻¹ Wᵀ) L⁻¹ P,   C = σ + Wᵀ W   (σ⁻¹ = σ).
@@ -71,7 +72,7 @@ class SupernodalCorrection final : public CorrectedFactor {
   std::vector<Reached> reached_;  // ascending supernodes
   std::vector<int> columns_;
   std::vector<double> values_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> capacitance_;
+  numerics::WoodburyCapacitance capacitance_;
 };
 
 void check_supernodal(const cholmod_factor* factor) {
@@ -194,9 +195,8 @@ void SupernodalCorrection::factor_capacitance(const LowRankTerm& term) {
     for (int q = 0; q < r.column_count; ++q)
       for (int p = 0; p < r.column_count; ++p) c(j[p], j[q]) += gram(p, q);
   }
-  capacitance_.compute(c);
-  const double rcond = capacitance_.rcond();
-  if (!(rcond > 1e-14))
+  capacitance_.factor(c);
+  if (capacitance_.singular(1e-14))
     throw SingularSystem("supernodal correction: the corrected matrix is singular to working precision");
 }
 
@@ -238,7 +238,7 @@ Eigen::VectorXd SupernodalCorrection::solve(const Eigen::VectorXd& b) const {
 
 // y ← y − W C⁻¹ Wᵀ y
 void SupernodalCorrection::correct_half_solved(Eigen::VectorXd& y) const {
-  Eigen::VectorXd t = Eigen::VectorXd::Zero(capacitance_.rows());
+  Eigen::VectorXd t = Eigen::VectorXd::Zero(capacitance_.size());
   for (const Reached& r : reached_) {
     const Eigen::VectorXd part = block(r).transpose() * y.segment(super_[r.supernode], width(r.supernode));
     for (int c = 0; c < r.column_count; ++c) t[columns_[r.first_column + c]] += part[c];
