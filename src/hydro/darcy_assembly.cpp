@@ -126,35 +126,46 @@ void DarcyAssembler::setup_boundary_conditions() {
     }
   }
   // Each fixed node's reaction is shared among its fixed boundaries by edge length.
-  std::sort(shares.begin(), shares.end(), [](const FixedShare& a, const FixedShare& b) {
-    return a.node != b.node ? a.node < b.node : a.boundary < b.boundary;
-  });
-  fixed_shares_.clear();
-  for (std::size_t i = 0; i < shares.size();) {
-    std::size_t j = i;
-    double total = 0.0;
-    while (j < shares.size() && shares[j].node == shares[i].node) total += shares[j++].weight;
-    for (std::size_t k = i; k < j; ++k) {
-      if (!fixed_shares_.empty() && fixed_shares_.back().node == shares[k].node &&
-          fixed_shares_.back().boundary == shares[k].boundary)
-        fixed_shares_.back().weight += shares[k].weight / total;
-      else
-        fixed_shares_.push_back({shares[k].node, shares[k].boundary, shares[k].weight / total});
-    }
-    i = j;
-  }
+  fixed_shares_ = share_by_edge_length(std::move(shares));
   if (fixed_shares_.empty())
     throw std::runtime_error(
         "flow: nothing fixes the head (give a head or pressure condition on at least one "
         "named boundary); the problem has no unique solution");
 
   check_every_part_is_fixed();
+  number_unknowns();
+}
+
+// Each fixed node's shares (one per fixed edge end) summed per boundary and scaled to sum to one.
+std::vector<DarcyAssembler::FixedShare> DarcyAssembler::share_by_edge_length(std::vector<FixedShare> shares) {
+  std::vector<FixedShare> fixed_shares;
+  std::sort(shares.begin(), shares.end(), [](const FixedShare& a, const FixedShare& b) {
+    return a.node != b.node ? a.node < b.node : a.boundary < b.boundary;
+  });
+  for (std::size_t i = 0; i < shares.size();) {
+    std::size_t j = i;
+    double total = 0.0;
+    while (j < shares.size() && shares[j].node == shares[i].node) total += shares[j++].weight;
+    for (std::size_t k = i; k < j; ++k) {
+      if (!fixed_shares.empty() && fixed_shares.back().node == shares[k].node &&
+          fixed_shares.back().boundary == shares[k].boundary)
+        fixed_shares.back().weight += shares[k].weight / total;
+      else
+        fixed_shares.push_back({shares[k].node, shares[k].boundary, shares[k].weight / total});
+    }
+    i = j;
+  }
+  return fixed_shares;
+}
+
+// The free nodes numbered in node order, and the range of the fixed heads.
+void DarcyAssembler::number_unknowns() {
   fixed_head_range_ = {INFINITY, -INFINITY};
   for (double h : fixed_head_)
     if (!std::isnan(h)) fixed_head_range_ = {std::min(fixed_head_range_[0], h), std::max(fixed_head_range_[1], h)};
-  unknown_of_node_.assign(node_count, -1);
+  unknown_of_node_.assign(fixed_head_.size(), -1);
   free_nodes_.clear();
-  for (int v = 0; v < node_count; ++v)
+  for (int v = 0; v < static_cast<int>(fixed_head_.size()); ++v)
     if (std::isnan(fixed_head_[v])) {
       unknown_of_node_[v] = static_cast<int>(free_nodes_.size());
       free_nodes_.push_back(v);

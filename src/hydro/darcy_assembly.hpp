@@ -111,6 +111,7 @@ class DarcyAssembler {
  private:
   void setup_boundary_conditions();
   void check_every_part_is_fixed() const;
+  void number_unknowns();
   void setup_pattern();
 
   const mesh::TriangleMesh& mesh_;
@@ -130,6 +131,7 @@ class DarcyAssembler {
     int boundary;
     double weight;                        // share of the node's fixed-boundary edge length
   };
+  static std::vector<FixedShare> share_by_edge_length(std::vector<FixedShare> shares);
   std::vector<FixedShare> fixed_shares_;  // sorted by node
   std::vector<double> prescribed_flow_;   // per mesh boundary: ∫ q_N ds over its flux edges
   std::vector<double> element_coupling_;  // per triangle, K_e(0,1), K_e(0,2), K_e(1,2)
