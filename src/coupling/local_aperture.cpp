@@ -142,9 +142,8 @@ std::vector<double> apertures_at(std::size_t count, Centroid&& centroid, std::sp
   for (const auto& b : blocks) boxes.push_back(geometry::bounding_box(b));
   const geometry::SpatialGrid grid(boxes, 1.0);
   std::vector<double> aperture(count, 0.0);
-  // Each element on its own: the halves side by side give the same apertures as one thread.
-  geometry::run_two_parts(count >= 20000, [&](int part) {
-    const auto [begin, end] = geometry::half_range(part, count);
+  // Each element on its own: chunks over the threads give the same apertures as one thread.
+  geometry::for_each_chunk(count >= 20000, count, 1024, [&](std::size_t, std::size_t begin, std::size_t end) {
     std::vector<Wall> walls;
     for (std::size_t e = begin; e < end; ++e)
       if (fracture_area[e] > 0.0) aperture[e] = compute_local_aperture(centroid(e), blocks, grid, domain, reach, walls);

@@ -77,14 +77,18 @@ PorosityField PorosityMapper::compute(std::span<const geometry::Polygon> blocks,
   PorosityField field;
   field.fracture_area.resize(n);
   field.porosity.resize(n);
-  // Each element on its own: the halves side by side give the same field as one thread.
-  geometry::run_two_parts(n >= 20000, [&](int part) {
-    const auto [begin, end] = geometry::half_range(part, n);
-    std::vector<BlockPiece>* own = pieces ? &pieces->halves_[static_cast<std::size_t>(part)] : nullptr;
+  const std::size_t chunk = BlockPieces::kElementsPerList;
+  if (pieces) {
+    pieces->lists_.resize(geometry::chunk_count(n, chunk));
+    pieces->released_sizes_.resize(pieces->lists_.size());
+  }
+  // Each element on its own: chunks over the threads give the same field as one thread.
+  geometry::for_each_chunk(n >= 20000, n, chunk, [&](std::size_t k, std::size_t begin, std::size_t end) {
+    std::vector<BlockPiece>* own = pieces ? &pieces->lists_[k] : nullptr;
     if (own) {
       own->clear();
       // As many as the last clip found, and a few more: no doubling, no copy to make it tight.
-      const std::size_t expected = pieces->released_sizes_[static_cast<std::size_t>(part)];
+      const std::size_t expected = pieces->released_sizes_[k];
       own->reserve(expected + expected / 16);
     }
     Scratch scratch;
@@ -101,12 +105,12 @@ PorosityField PorosityMapper::compute(std::span<const geometry::Polygon> blocks,
   // A list grown by doubling may hold up to twice its pieces: made tight once (with room for
   // a few more), it is reused so from then on.
   if (pieces)
-    for (std::vector<BlockPiece>& half : pieces->halves_)
-      if (half.capacity() > half.size() + half.size() / 8) {
+    for (std::vector<BlockPiece>& list : pieces->lists_)
+      if (list.capacity() > list.size() + list.size() / 8) {
         std::vector<BlockPiece> tight;
-        tight.reserve(half.size() + half.size() / 16);
-        tight.assign(half.begin(), half.end());
-        half.swap(tight);
+        tight.reserve(list.size() + list.size() / 16);
+        tight.assign(list.begin(), list.end());
+        list.swap(tight);
       }
   return field;
 }

@@ -37,26 +37,32 @@ struct BlockPiece {
   Point centroid;
 };
 
-// Every block ∩ element part a clip found, in element order: the parts over the first half of
-// the elements, then those over the second. Each half is filled by its own thread and kept
-// where it was made: joined into one list they would be copied once more (at a million
-// triangles some 40 MB).
+// Every block ∩ element part a clip found, in element order: a list for each chunk of
+// kElementsPerList elements, the chunks in order. Each list is filled by the thread that clips
+// its chunk and kept where it was made: joined into one they would be copied once more (at a
+// million triangles some 40 MB).
 class BlockPieces {
  public:
-  std::size_t size() const { return halves_[0].size() + halves_[1].size(); }
-  // The pieces over the first half of the elements, then over the second.
-  const std::array<std::vector<BlockPiece>, 2>& halves() const { return halves_; }
+  static constexpr std::size_t kElementsPerList = 4096;
+  std::size_t size() const {
+    std::size_t n = 0;
+    for (const auto& list : lists_) n += list.size();
+    return n;
+  }
+  // The pieces over each chunk of the elements, the chunks in order.
+  const std::vector<std::vector<BlockPiece>>& lists() const { return lists_; }
   // Lets go of the lists and their storage (76 MB at 10^6 triangles and 10^4 blocks): a
   // coupled pass needs them from the clip to the seepage force only, not while the blocks move.
   void release() {
-    for (std::size_t h = 0; h < 2; ++h) released_sizes_[h] = halves_[h].size();
-    halves_ = {};
+    released_sizes_.resize(lists_.size());
+    for (std::size_t k = 0; k < lists_.size(); ++k) released_sizes_[k] = lists_[k].size();
+    lists_ = {};
   }
 
  private:
   friend class PorosityMapper;
-  std::array<std::vector<BlockPiece>, 2> halves_;
-  std::array<std::size_t, 2> released_sizes_{};  // how many each half held when let go
+  std::vector<std::vector<BlockPiece>> lists_;
+  std::vector<std::size_t> released_sizes_;  // how many each list held when let go
 };
 
 // Keeps an index of the fixed mesh's elements (an ElementIndex, shared or its own, with views

@@ -12,8 +12,8 @@ std::vector<std::vector<Point>> compute_seepage_forces(std::span<const geometry:
     throw std::invalid_argument("seepage forces: one Biot coefficient per block is needed");
   std::vector<ForceMoments> moments(blocks.size());
   for (std::size_t b = 0; b < blocks.size(); ++b) moments[b].origin = vertex_mean(blocks[b]);
-  for (const std::vector<BlockPiece>& half : pieces.halves())
-    for (const BlockPiece& piece : half) {
+  for (const std::vector<BlockPiece>& list : pieces.lists())
+    for (const BlockPiece& piece : list) {
       if (piece.block < 0 || piece.block >= static_cast<int>(blocks.size()) || piece.element < 0 ||
           piece.element >= static_cast<int>(pressure_gradients.size()))
         throw std::invalid_argument("seepage forces: a piece names a missing block or element");

@@ -161,10 +161,12 @@ void SpringMatrixProduct::reset(const BlockMatrix& base, const RankOneTerms& spr
   springs_ = &springs;
   split_ = worth_two_threads(springs.size()) && geometry::two_threads_available();
   if (!split_) return;
-  geometry::run_two_parts(true, [&](int part) {
-    const auto [begin, end] = geometry::half_range(part, static_cast<std::size_t>(base.block_count));
+  touching_.resize(static_cast<std::size_t>(geometry::thread_count()));
+  const int shares = static_cast<int>(touching_.size());
+  geometry::for_each_share(shares, touching_.size(), [&](int share, std::size_t, std::size_t) {
+    const auto [begin, end] = geometry::share_range(share, shares, static_cast<std::size_t>(base.block_count));
     const auto inside = [&](int block) { return block >= static_cast<int>(begin) && block < static_cast<int>(end); };
-    std::vector<int>& touching = touching_[part];
+    std::vector<int>& touching = touching_[share];
     touching.clear();
     for (std::size_t i = 0; i < springs.size(); ++i) {
       const RankOneTerm& t = springs[i];
@@ -180,12 +182,13 @@ void SpringMatrixProduct::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y)
     return;
   }
   y.resize(base_->size());
-  geometry::run_two_parts(true, [&](int part) {
-    const auto [begin, end] = geometry::half_range(part, static_cast<std::size_t>(base_->block_count));
+  const int shares = static_cast<int>(touching_.size());
+  geometry::for_each_share(shares, static_cast<std::size_t>(base_->block_count),
+                           [&](int share, std::size_t begin, std::size_t end) {
     base_->multiply_rows(x, y, static_cast<int>(begin), static_cast<int>(end));
-    for (const int entry : touching_[part]) {
+    for (const int entry : touching_[share]) {
       const RankOneTerm& t = (*springs_)[static_cast<std::size_t>(entry >> 2)];
-      // As multiply_with_springs, for this half's ends of the spring only.
+      // As multiply_with_springs, for this share's ends of the spring only.
       double s = 0.0;
       if (t.block_a >= 0) s += t.w_a.dot(x.segment<6>(6 * t.block_a));
       if (t.block_b >= 0) s += t.w_b.dot(x.segment<6>(6 * t.block_b));

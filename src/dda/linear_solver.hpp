@@ -59,18 +59,18 @@ void add_springs(const BlockMatrix& base, const RankOneTerms& springs, BlockMatr
 void multiply_with_springs(const BlockMatrix& base, const RankOneTerms& springs,
                            const Eigen::VectorXd& x, Eigen::VectorXd& y);
 
-// multiply_with_springs bit for bit, the block rows of y in two halves side by side on two
-// threads. Each half takes its rows' terms of the base and then every spring with an end in
-// it, in the springs' order, so that each row sums the same terms in the same order as one
-// multiply does; a spring across the split is dotted by both halves. Which springs touch
-// which half is found once a matrix: conjugate gradients multiplies three or four times a
-// solve, a fifth of a DDA step's work on the 1,601-block wall.
+// multiply_with_springs bit for bit, the block rows of y in one share per thread
+// (geometry::for_each_share). Each share takes its rows' terms of the base and then every
+// spring with an end in it, in the springs' order, so that each row sums the same terms in the
+// same order as one multiply does, whatever the shares; a spring across two shares is dotted by
+// both. Which springs touch which share is found once a matrix: conjugate gradients multiplies
+// three or four times a solve, a fifth of a DDA step's work on the 1,601-block wall.
 class SpringMatrixProduct {
  public:
   // The matrix base + Σ w wᵀ over `springs`, both read where they are until the next reset.
   void reset(const BlockMatrix& base, const RankOneTerms& springs);
   void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
-  // Whether multiply shares the rows between two threads.
+  // Whether multiply shares the rows between threads.
   bool splits() const { return split_; }
 
  private:
@@ -78,8 +78,8 @@ class SpringMatrixProduct {
   const BlockMatrix* base_ = nullptr;
   const RankOneTerms* springs_ = nullptr;
   bool split_ = false;  // enough springs, and two threads to share them
-  // Per half of the rows: index << 2 | which ends (kEndA, kEndB) lie in it, in index order.
-  std::array<std::vector<int>, 2> touching_;
+  // Per share of the rows: index << 2 | which ends (kEndA, kEndB) lie in it, in index order.
+  std::vector<std::vector<int>> touching_;
 };
 
 // What a solver has done so far, for benchmarks and tests.

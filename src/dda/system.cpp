@@ -17,6 +17,11 @@ namespace hydrodda::dda {
 
 namespace {
 
+// Contacts and blocks per chunk of the loops shared between threads: the same chunks on any
+// machine, a few thousand in a large model, each long enough to outlast its scheduling.
+constexpr std::size_t kContactChunk = 1024;
+constexpr std::size_t kBlockChunk = 128;
+
 void add_segment(Eigen::VectorXd& f, int dof, const Vector6& v) {
   if (dof >= 0) f.segment<6>(6 * dof) += v;
 }
@@ -126,7 +131,7 @@ System::System(ModelDefinition def, std::unique_ptr<LinearSolver> solver)
   contact_search_ = ContactSearch(contact_distance_,
                                   settings_.contact_skin >= 0 ? settings_.contact_skin : 0.2 * contact_distance_);
   for (const Block& b : blocks_) detection_.fixed.push_back(b.dof < 0);
-  if (many_blocks()) geometry::start_second_thread();
+  if (many_blocks()) geometry::start_threads();
 }
 
 void System::check_tractions(std::span<const EdgeTraction> tractions) const {
@@ -199,9 +204,9 @@ void System::detect_contacts() {
   ContactCandidates& candidates = buffers.candidates;
   contact_search_.find(buffers.polygons, buffers.fixed, candidates);
   resize_for_overwrite(active_, candidates.size());
-  // The linearisation in two halves, side by side on two threads where there are two.
-  geometry::run_two_parts(many_contacts_to_linearise(), [&](int part) {
-    const auto [begin, end] = geometry::half_range(part, candidates.size());
+  // The linearisation in chunks of contacts, over the threads: each contact writes only its own.
+  geometry::for_each_chunk(many_contacts_to_linearise(), candidates.size(), kContactChunk,
+                           [&](std::size_t, std::size_t begin, std::size_t end) {
     if (begin == end) return;
     // Both lists are in key order: one walk finds each candidate's record from the last step.
     auto record = std::lower_bound(records_.begin(), records_.end(), candidates[begin].key,
@@ -320,7 +325,7 @@ void System::assemble_blocks(double dt, Matrix6Array& k, Eigen::VectorXd& f_base
         fixed_stiffness_ * t.transpose() * Eigen::Vector2d(target_displacement.x, target_displacement.y);
   };
   // Each block writes only its own rows.
-  geometry::for_each_in_halves(many_blocks(), blocks_.size(), [&](std::size_t bi) {
+  geometry::for_each_index(many_blocks(), blocks_.size(), [&](std::size_t bi) {
     const Block& b = blocks_[bi];
     if (b.dof < 0) return;
     const Material& mat = materials_[b.material];
@@ -396,11 +401,12 @@ void System::factor_with_contacts() {
   // A normal spring for each closed contact, a shear one for each locked, and the closed
   // contacts listed (closed_: the pass's loops over contacts that carry load walk that list,
   // not every candidate); each half of the contacts writes its springs and its list entries
-  // from where the first half's end.
+  // from where the chunks before it end.
   struct Counts {
     std::size_t springs = 0, closed = 0;
   };
-  const auto counts = geometry::results_in_halves(many_contacts(), active_.size(), [&](std::size_t begin, std::size_t end) {
+  const auto counts = geometry::results_in_chunks(many_contacts(), active_.size(), kContactChunk,
+                                                  [&](std::size_t begin, std::size_t end) {
     Counts count;
     for (std::size_t i = begin; i < end; ++i) {
       const ContactState state = active_[i].record.state;
@@ -409,13 +415,20 @@ void System::factor_with_contacts() {
     }
     return count;
   });
-  resize_for_overwrite(terms, counts[0].springs + counts[1].springs);
-  resize_for_overwrite(closed_, counts[0].closed + counts[1].closed);
+  std::vector<Counts> starts(counts.size());  // where each chunk's springs and entries go
+  Counts total;
+  for (std::size_t k = 0; k < counts.size(); ++k) {
+    starts[k] = total;
+    total.springs += counts[k].springs;
+    total.closed += counts[k].closed;
+  }
+  resize_for_overwrite(terms, total.springs);
+  resize_for_overwrite(closed_, total.closed);
   const double root_penalty = std::sqrt(penalty_);
-  geometry::run_two_parts(many_contacts(), [&](int part) {
-    const auto [begin, end] = geometry::half_range(part, active_.size());
-    RankOneTerm* next = terms.data() + (part == 0 ? 0 : counts[0].springs);
-    int* next_closed = closed_.data() + (part == 0 ? 0 : counts[0].closed);
+  geometry::for_each_chunk(many_contacts(), active_.size(), kContactChunk,
+                           [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    RankOneTerm* next = terms.data() + starts[chunk].springs;
+    int* next_closed = closed_.data() + starts[chunk].closed;
     const auto add_term = [&](const ActiveContact& c, int kind, const Vector6& e_i, const Vector6& e_j) {
       const ContactKey& k = c.key;
       RankOneTerm& t = *next++;
@@ -515,7 +528,9 @@ double System::compute_shear_strength(const ActiveContact& c, double normal_forc
 }
 
 System::ContactForceExtent System::update_contact_forces(const Eigen::VectorXd& d) {
-  const auto halves = geometry::results_in_halves(many_closed_contacts(), closed_.size(), [&](std::size_t begin, std::size_t end) {
+  // Largest values: the same whatever the chunks.
+  const auto chunks = geometry::results_in_chunks(many_closed_contacts(), closed_.size(), kContactChunk,
+                                                  [&](std::size_t begin, std::size_t end) {
     ContactForceExtent extent;
     for (std::size_t k = begin; k < end; ++k) {
       ActiveContact& c = active_[closed_[k]];
@@ -528,24 +543,30 @@ System::ContactForceExtent System::update_contact_forces(const Eigen::VectorXd& 
     }
     return extent;
   });
-  return {std::max(halves[0].deepest, halves[1].deepest), std::max(halves[0].force_scale, halves[1].force_scale)};
+  ContactForceExtent all;
+  for (const ContactForceExtent& chunk : chunks) {
+    all.deepest = std::max(all.deepest, chunk.deepest);
+    all.force_scale = std::max(all.force_scale, chunk.force_scale);
+  }
+  return all;
 }
 
 double System::largest_vertex_motion(const Eigen::VectorXd& change) const {
-  const auto largest = geometry::results_in_halves(many_blocks(), blocks_.size(), [&](std::size_t begin, std::size_t end) {
-    double half_largest = 0.0;  // squared: one square root at the end
+  const auto largest = geometry::results_in_chunks(many_blocks(), blocks_.size(), kBlockChunk,
+                                                   [&](std::size_t begin, std::size_t end) {
+    double chunk_largest = 0.0;  // squared: one square root at the end
     for (std::size_t bi = begin; bi < end; ++bi) {
       const Block& b = blocks_[bi];
       if (b.dof < 0) continue;
       const Vector6 db = change.segment<6>(6 * b.dof);
       for (Point p : b.polygon) {
         const Point moved = first_order_displacement(p, b.moments.centroid, db);
-        half_largest = std::max(half_largest, moved.x * moved.x + moved.y * moved.y);
+        chunk_largest = std::max(chunk_largest, moved.x * moved.x + moved.y * moved.y);
       }
     }
-    return half_largest;
+    return chunk_largest;
   });
-  return std::sqrt(std::max(largest[0], largest[1]));
+  return std::sqrt(largest.empty() ? 0.0 : *std::max_element(largest.begin(), largest.end()));
 }
 
 // Moves contact c to the state the solution d puts it in: open ↔ closed by penetration and
@@ -711,12 +732,13 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
     // The tension a closed contact may carry past T l: round-off with the tension cutoff, else
     // the force of the band's length on the penalty spring.
     const double tension_allowance = settings_.tension_cutoff ? 1e-9 * force_scale : penalty_ * band;
-    const auto changed = geometry::results_in_halves(many_contacts(), active_.size(), [&](std::size_t begin, std::size_t end) {
-      bool any = false;
+    const auto changed = geometry::results_in_chunks(many_contacts(), active_.size(), kContactChunk,
+                                                     [&](std::size_t begin, std::size_t end) {
+      char any = 0;  // char, not bool: vector<bool>'s elements share bytes between threads
       for (std::size_t i = begin; i < end; ++i) any = update_state(active_[i], d, band, tension_allowance) || any;
       return any;
     });
-    if (!changed[0] && !changed[1]) return Unsettled::no;
+    if (std::none_of(changed.begin(), changed.end(), [](char c) { return c != 0; })) return Unsettled::no;
     // A pass whose states changed leaves its friction loads settled for the states it had; a
     // few contacts that change state at the margin of Mohr–Coulomb (slip starting at a
     // shear force a hair above the strength) hardly move the blocks, so the next pass's
@@ -830,7 +852,7 @@ void System::commit_step(const Eigen::VectorXd& d, double dt) {
   };
   for (auto* list : {&fixed_points_, &load_points_, &displacement_points_, &measured_})
     for (TrackedPoint& tp : *list) move(tp);
-  geometry::for_each_in_halves(many_blocks(), blocks_.size(), [&](std::size_t bi) {
+  geometry::for_each_index(many_blocks(), blocks_.size(), [&](std::size_t bi) {
     Block& b = blocks_[bi];
     if (b.dof < 0) return;
     const Vector6 db = d.segment<6>(6 * b.dof);
@@ -846,7 +868,7 @@ void System::commit_step(const Eigen::VectorXd& d, double dt) {
     b.moments = compute_moments(b.polygon);
   });
   resize_for_overwrite(records_, active_.size());  // active_ is in key order, and so stays records_
-  geometry::for_each_in_halves(many_contacts(), active_.size(), [&](std::size_t i) {
+  geometry::for_each_index(many_contacts(), active_.size(), [&](std::size_t i) {
     const ActiveContact& c = active_[i];
     ContactRecord r = c.record;  // its penetration the last pass's, from this d (update_state)
     if (r.state == ContactState::open) {

@@ -340,8 +340,9 @@ void DarcyAssembler::add_storage(double storage_over_step, MassMatrix kind, std:
 // pair enters node i and node j with opposite signs, bit for bit, so Σ_i (A h)_i = 0 to the
 // long-double accumulation: the boundary flows then balance to round-off whatever the
 // contrast, and the residual that drives the iterative refinement is the same one.
-// On two threads each takes the nodes of one half of the numbering and adds, for them only, the
-// same terms in the same order as one thread does: the sums are the same, bit for bit.
+// On several threads each takes the nodes of one share of the numbering and adds, for them
+// only, the same terms in the same order as one thread does: the sums are the same, bit for
+// bit, whatever the shares.
 std::vector<long double> DarcyAssembler::compute_a_times_h(const std::vector<double>& h) const {
   std::vector<long double> ah(h.size(), 0.0L);
   const int nodes = static_cast<int>(h.size());
@@ -357,7 +358,7 @@ std::vector<long double> DarcyAssembler::compute_a_times_h(const std::vector<dou
       }
     }
   };
-  over_two_halves(nodes, add_for_nodes);
+  over_thread_shares(nodes, add_for_nodes);
   return ah;
 }
 

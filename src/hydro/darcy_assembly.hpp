@@ -98,12 +98,13 @@ class DarcyAssembler {
   // The larger of the boundaries' total inflow and total outflow.
   static double net_boundary_flow(const std::vector<double>& flow);
 
-  // body(first, last) over the two halves of 0 … count − 1, side by side on two threads where the
-  // mesh is large enough (from some 50,000 triangles) to pay for waking the second.
+  // body(first, last) over one share of 0 … count − 1 per thread, side by side where the mesh is
+  // large enough (from some 50,000 triangles) to pay for waking the threads. For bodies whose
+  // every index comes out the same whatever share holds it (geometry::for_each_share).
   template <class Body>
-  void over_two_halves(int count, Body&& body) const {
-    geometry::run_two_parts(mesh_.triangle_count() >= 50000, [&](int part) {
-      const auto [first, last] = geometry::half_range(part, static_cast<std::size_t>(count));
+  void over_thread_shares(int count, Body&& body) const {
+    const int shares = mesh_.triangle_count() >= 50000 ? geometry::thread_count() : 1;
+    geometry::for_each_share(shares, static_cast<std::size_t>(count), [&](int, std::size_t first, std::size_t last) {
       body(static_cast<int>(first), static_cast<int>(last));
     });
   }

@@ -50,7 +50,7 @@ FlowSolution make_flow_solution(const DarcyAssembler& system, const Eigen::Vecto
                           : rho_g * (out.head[v] - mesh.nodes[v].y);    // p = ρg (h − z)
   out.flux.resize(mesh.triangles.size());
   const double factor = problem.fluid.conductivity_per_permeability();
-  system.over_two_halves(mesh.triangle_count(), [&](int first, int last) {
+  system.over_thread_shares(mesh.triangle_count(), [&](int first, int last) {
     for (int t = first; t < last; ++t) {
       const auto& tri = mesh.triangles[t];
       const auto g = compute_shape_gradients(mesh.nodes[tri[0]], mesh.nodes[tri[1]], mesh.nodes[tri[2]]);

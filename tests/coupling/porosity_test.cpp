@@ -84,10 +84,10 @@ TEST(Porosity, PiecesTileEachBlockInsideTheMesh) {
       {{0.0, 1.5}, {2.0, 1.5}, {2.0, 2.2}, {1.0, 2.2}, {1.0, 3.0}, {0.0, 3.0}},  // L-shaped
       {{2.5, 0.4}, {3.7, 0.9}, {3.1, 2.6}},
       rectangle(3.5, 2.5, 4.5, 3.0)};  // half outside the mesh
-  BlockPieces halves;
-  const PorosityField with = mapper.compute(blocks, 0.1, &halves);
-  std::vector<BlockPiece> pieces = halves.halves()[0];
-  pieces.insert(pieces.end(), halves.halves()[1].begin(), halves.halves()[1].end());
+  BlockPieces lists;
+  const PorosityField with = mapper.compute(blocks, 0.1, &lists);
+  std::vector<BlockPiece> pieces;
+  for (const std::vector<BlockPiece>& list : lists.lists()) pieces.insert(pieces.end(), list.begin(), list.end());
   const PorosityField without = mapper.compute(blocks, 0.1);
   EXPECT_EQ(with.fracture_area, without.fracture_area);
   EXPECT_EQ(with.porosity, without.porosity);

@@ -88,8 +88,8 @@ TEST(SeepageForces, StrainLoadDiffersByAlphaTimesTheIntegralOfPressure) {
   BlockPieces pieces;
   PorosityMapper(mesh.nodes, mesh.triangles).compute(kBlocks, 0.0, &pieces);
   std::vector<double> integral(kBlocks.size(), 0.0);
-  for (const std::vector<BlockPiece>& half : pieces.halves())
-    for (const BlockPiece& piece : half)
+  for (const std::vector<BlockPiece>& list : pieces.lists())
+    for (const BlockPiece& piece : list)
       integral[piece.block] += piece.area * hydro::interpolate_pressure(mesh, p, piece.element, piece.centroid);
   const auto total = fluid_forces(mesh, p, 0.0);
   const auto effective = fluid_forces(mesh, p, 1.0);

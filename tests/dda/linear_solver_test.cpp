@@ -200,9 +200,16 @@ TEST(LinearSolver, SplitSpringProductIsTheSerialOneBitForBit) {
   EXPECT_TRUE(product.splits());
   Eigen::VectorXd split = Eigen::VectorXd::Constant(180, 1e300);  // every entry must be written
   product.multiply(x, split);
+  omp_set_num_threads(3);  // three shares of the rows: a spring may cross two of them
+  SpringMatrixProduct in_three;
+  in_three.reset(base, springs);
+  Eigen::VectorXd split_three = Eigen::VectorXd::Constant(180, 1e300);
+  in_three.multiply(x, split_three);
   omp_set_num_threads(threads);
   ASSERT_EQ(split.size(), serial.size());
   for (Eigen::Index i = 0; i < serial.size(); ++i) EXPECT_EQ(split[i], serial[i]) << "entry " << i;
+  ASSERT_EQ(split_three.size(), serial.size());
+  for (Eigen::Index i = 0; i < serial.size(); ++i) EXPECT_EQ(split_three[i], serial[i]) << "entry " << i;
   EXPECT_LT((serial - chain.dense_with(springs) * x).norm(), 1e-12 * serial.norm());
 }
 

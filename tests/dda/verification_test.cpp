@@ -183,8 +183,9 @@ TEST(Verification, BrickWallRunIsBitwiseReproducible) {
 }
 
 // A wall large enough (901 blocks: 2,600 block pairs, a factor of 15,000 blocks) that contact
-// detection and the factor run in two parts side by side gives the same vertices to the last
-// bit on one thread as on two.
+// detection and the factor run in two parts side by side, and the loops over blocks and
+// contacts in chunks over the threads, gives the same vertices to the last bit on one thread as
+// on two, three or eight.
 TEST(Verification, BrickWallRunIsTheSameOnOneThreadOrTwo) {
   const int threads_before = omp_get_max_threads();
   const auto run = [](int threads) {
@@ -195,9 +196,15 @@ TEST(Verification, BrickWallRunIsTheSameOnOneThreadOrTwo) {
   };
   const auto one = run(1);
   const auto two = run(2);
+  const auto three = run(3);
+  const auto eight = run(8);
   omp_set_num_threads(threads_before);
   ASSERT_EQ(one.size(), two.size());
   EXPECT_EQ(std::memcmp(one.data(), two.data(), one.size() * sizeof(double)), 0);
+  for (const auto* more : {&three, &eight}) {
+    ASSERT_EQ(one.size(), more->size());
+    EXPECT_EQ(std::memcmp(one.data(), more->data(), one.size() * sizeof(double)), 0);
+  }
 }
 
 // The contact lists kept from step to step (a skin of a fifth of the contact distance) give
