@@ -192,7 +192,7 @@ std::string canonical_request_text(const MeshRequest& r) {
   }
   key << "size " << exact(r.size) << "\nfracture_size " << exact(r.fracture_size) << "\nrefine_distance "
       << exact(r.refine_distance) << "\nalgorithm " << r.algorithm << "\nthreads " << r.threads
-      << "\ntile_triangles " << r.tile_triangles << "\nprocesses " << r.processes << "\nsmoothing " << r.smoothing
+      << "\ntile_triangles " << r.tile_triangles << "\ntiles meshed apart\nsmoothing " << r.smoothing
       << '\n';
   return key.str();
 }

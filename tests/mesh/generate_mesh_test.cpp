@@ -209,14 +209,24 @@ MeshRequest tiled_request() {
   return request;
 }
 
+// How far the nodes of two meshes with as many nodes lie apart, at most; infinite when their
+// counts differ.
+double largest_node_shift(const TriangleMesh& a, const TriangleMesh& b) {
+  if (a.nodes.size() != b.nodes.size()) return std::numeric_limits<double>::infinity();
+  double largest = 0.0;
+  for (std::size_t i = 0; i < a.nodes.size(); ++i) largest = std::max(largest, geometry::distance(a.nodes[i], b.nodes[i]));
+  return largest;
+}
+
 // A mesh cut into tiles (tile_triangles 400 on a request of about 19,000 triangles: about 48
 // tiles) honours what the one-surface mesh honours: regions to 1e-12 of their area, the size
 // field along a refinement line (triangles within 0.005 of it: mean longest edge within
 // [0.75, 1.5] × fracture_size, as RefinesAlongLines), the default boundary names (1 m each);
 // it is the same mesh on every call, and has within 3% of the triangles of the one-surface
 // mesh of the same request (the tile edges only add nodes on them). The tiles are meshed by
-// two processes (the default) or by one: each mesh is the same on every call and conforms
-// across the tiles, and the two have the same triangles within 1%.
+// two processes at once (the default), by one or by three: each mesh is the same on every call
+// and conforms across the tiles, and all are the same mesh, node for node (each tile is meshed
+// in a process of its own, whatever their number).
 TEST(GenerateMesh, TiledMeshHonoursRegionsSizesAndBoundaries) {
   MeshRequest request = tiled_request();
   const TriangleMesh tiled = generate_mesh(request), again = generate_mesh(request);
@@ -242,14 +252,21 @@ TEST(GenerateMesh, TiledMeshHonoursRegionsSizesAndBoundaries) {
   EXPECT_LE(near_sum / near_count, 1.5 * 0.004);
   for (const auto& [name, length] : boundary_lengths(tiled)) EXPECT_NEAR(length, 1.0, 1e-12) << name;
 
-  // The tiles meshed by one process instead of two: another mesh of the same request, as
-  // reproducible, as conforming (a crack between tiles would leave unnamed boundary edges).
+  // The tiles meshed one process at a time instead of two: as reproducible, as conforming (a
+  // crack between tiles would leave unnamed boundary edges), and the same mesh; and three.
   ASSERT_EQ(request.processes, 2);
   request.processes = 1;
   const TriangleMesh one = generate_mesh(request), one_again = generate_mesh(request);
   EXPECT_EQ(one.triangles, one_again.triangles);
   for (const auto& [name, length] : boundary_lengths(one)) EXPECT_NEAR(length, 1.0, 1e-12) << name;
   EXPECT_NEAR(one.triangle_count(), tiled.triangle_count(), 0.01 * tiled.triangle_count());
+  EXPECT_EQ(one.triangles, tiled.triangles);
+  EXPECT_EQ(largest_node_shift(one, tiled), 0.0);
+  request.processes = 3;
+  const TriangleMesh three = generate_mesh(request);
+  EXPECT_EQ(three.triangles, tiled.triangles);
+  EXPECT_EQ(largest_node_shift(three, tiled), 0.0);
+  request.processes = 2;
 
   request.tile_triangles = 0;
   const TriangleMesh whole = generate_mesh(request);
@@ -266,15 +283,6 @@ double smallest_angle(const TriangleMesh& m, int t) {
     smallest = std::min(smallest, std::atan2(std::abs(geometry::cross(u, v)), geometry::dot(u, v)) * 180.0 / M_PI);
   }
   return smallest;
-}
-
-// How far the nodes of two meshes with as many nodes lie apart, at most; infinite when their
-// counts differ.
-double largest_node_shift(const TriangleMesh& a, const TriangleMesh& b) {
-  if (a.nodes.size() != b.nodes.size()) return std::numeric_limits<double>::infinity();
-  double largest = 0.0;
-  for (std::size_t i = 0; i < a.nodes.size(); ++i) largest = std::max(largest, geometry::distance(a.nodes[i], b.nodes[i]));
-  return largest;
 }
 
 struct AngleCounts {

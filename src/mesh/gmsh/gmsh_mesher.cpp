@@ -14,6 +14,7 @@
 #include <csignal>
 #include <cstring>
 #include <cstdint>
+#include <deque>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -284,31 +285,18 @@ void mesh_surfaces_only(const std::vector<int>& tags, const std::vector<int>& ot
   gmsh::model::mesh::generate(2);
 }
 
-// The surfaces' meshes made by two processes at once: their curves are meshed first, here,
-// so that both see the same nodes along the edges they share; then a child process (fork)
-// meshes every other surface while this one meshes the rest, and sends its triangles and new
-// nodes back through a pipe. Each process meshes its surfaces one after another on one
-// thread, so the mesh is the same from run to run and machine to machine; Gmsh's own threads
-// mesh surfaces at once but not reproducibly (545,305 or 545,307 nodes for the
-// 1.09-million-triangle seal from one run to the next). It is not the mesh one process makes
-// of all the surfaces in turn (545,369 nodes against 545,301 there; the same on a seal of
-// 132,028 triangles): what Gmsh makes of a surface depends on the surfaces meshed before it in
-// the same process. A child dies with this process (PR_SET_PDEATHSIG), so an interrupt while
-// meshing ends both. Nodes are numbered the curves' first, then each surface's new nodes in
-// the surfaces' order, each surface's in the order made.
-SurfaceMeshes mesh_surfaces_in_two_processes(const std::vector<int>& tags) {
-  gmsh::model::mesh::generate(1);
-  std::size_t curve_nodes = 0;  // the largest tag of the curves' nodes
-  {
-    std::vector<std::size_t> node_tags;
-    std::vector<double> coords, parametric;
-    gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, false, false);
-    for (std::size_t tag : node_tags) curve_nodes = std::max(curve_nodes, tag);
-  }
-  std::vector<int> mine, theirs;  // the even and the odd surfaces of `tags`
-  for (std::size_t i = 0; i < tags.size(); ++i) (i % 2 == 0 ? mine : theirs).push_back(tags[i]);
+// A child process meshing one surface, and the pipe it sends its mesh back through.
+struct MeshingChild {
+  pid_t pid = -1;
+  int channel = -1;
+};
+
+// Forks a child that meshes surface `tag` alone (the others of `tags` hidden) from this
+// process's state, sends "M" and its triangles and new nodes (or "E" and what went wrong), and
+// exits. It dies with this process (PR_SET_PDEATHSIG), so an interrupt while meshing ends all.
+MeshingChild start_meshing_child(int tag, const std::vector<int>& tags) {
   int channel[2];
-  if (::pipe(channel) != 0) throw std::runtime_error(std::string("no pipe for the meshing process: ") + std::strerror(errno));
+  if (::pipe(channel) != 0) throw std::runtime_error(std::string("no pipe for a meshing process: ") + std::strerror(errno));
   const pid_t parent = ::getpid();
   const pid_t child = ::fork();
   if (child < 0) {
@@ -323,8 +311,11 @@ SurfaceMeshes mesh_surfaces_in_two_processes(const std::vector<int>& tags) {
     std::string message;
     int status = 0;
     try {
-      mesh_surfaces_only(theirs, mine);
-      message = "M" + encode_surface_meshes(take_surface_meshes(theirs));
+      std::vector<int> others;
+      for (int t : tags)
+        if (t != tag) others.push_back(t);
+      mesh_surfaces_only({tag}, others);
+      message = "M" + encode_surface_meshes(take_surface_meshes({tag}));
     } catch (const std::exception& e) {
       message = std::string("E") + e.what();
       status = 1;
@@ -339,34 +330,72 @@ SurfaceMeshes mesh_surfaces_in_two_processes(const std::vector<int>& tags) {
     ::_exit(status);  // Gmsh's state is the parent's to finalise
   }
   ::close(channel[1]);
-  SurfaceMeshes own;
+  return {child, channel[0]};
+}
+
+// The mesh `child` sends; throws std::runtime_error if it failed.
+SurfaceMeshes finish_meshing_child(MeshingChild& child) {
+  const std::string message = read_all(child.channel);
+  ::close(child.channel);
+  int status = 0;
+  while (::waitpid(child.pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  child.pid = -1;
+  if (message.empty() || message[0] != 'M' || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error("a meshing process failed" +
+                             (message.size() > 1 && message[0] == 'E' ? ": " + message.substr(1) : std::string()));
+  return decode_surface_meshes(message.substr(1));
+}
+
+void stop_meshing_child(MeshingChild& child) {
+  if (child.pid < 0) return;
+  ::kill(child.pid, SIGKILL);
+  ::close(child.channel);
+  ::waitpid(child.pid, nullptr, 0);
+  child.pid = -1;
+}
+
+// The surfaces' meshes, each made by a child process of its own, up to `processes` at once:
+// their curves are meshed first, here, so that every surface sees the same nodes along the
+// edges it shares; then each child, forked from that state, meshes its one surface on one
+// thread. Each surface is so meshed from the same state whatever the number of processes, and
+// the mesh is the same from run to run, machine to machine and core count to core count.
+// (Gmsh's own threads mesh surfaces at once but not reproducibly, 545,305 or 545,307 nodes for
+// the 1.09-million-triangle seal from one run to the next; and one process meshing surfaces in
+// turn makes of each something that depends on those meshed before it in that process.) Nodes
+// are numbered the curves' first, then each surface's new nodes in the surfaces' order, each
+// surface's in the order made.
+SurfaceMeshes mesh_surfaces_in_processes(const std::vector<int>& tags, int processes) {
+  gmsh::model::mesh::generate(1);
+  std::size_t curve_nodes = 0;  // the largest tag of the curves' nodes
+  {
+    std::vector<std::size_t> node_tags;
+    std::vector<double> coords, parametric;
+    gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, false, false);
+    for (std::size_t tag : node_tags) curve_nodes = std::max(curve_nodes, tag);
+  }
+  // The children's meshes read in the surfaces' order; the next child starts as one ends.
+  std::vector<SurfaceMeshes> each(tags.size());
+  std::deque<std::pair<std::size_t, MeshingChild>> running;
   try {
-    mesh_surfaces_only(mine, theirs);
-    own = take_surface_meshes(mine);
+    std::size_t next = 0;
+    while (next < tags.size() || !running.empty()) {
+      for (; next < tags.size() && running.size() < static_cast<std::size_t>(processes); ++next)
+        running.emplace_back(next, start_meshing_child(tags[next], tags));
+      each[running.front().first] = finish_meshing_child(running.front().second);
+      running.pop_front();
+    }
   } catch (...) {
-    ::kill(child, SIGKILL);
-    ::close(channel[0]);
-    ::waitpid(child, nullptr, 0);
+    for (auto& [index, child] : running) stop_meshing_child(child);
     throw;
   }
-  const std::string message = read_all(channel[0]);
-  ::close(channel[0]);
-  int status = 0;
-  while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
-  }
-  if (message.empty() || message[0] != 'M' || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw std::runtime_error("the second meshing process failed" +
-                             (message.size() > 1 && message[0] == 'E' ? ": " + message.substr(1) : std::string()));
-  const SurfaceMeshes other = decode_surface_meshes(message.substr(1));
 
   // Renumber the surfaces' new nodes as one process meshing the surfaces in order would.
-  const NodeTable own_nodes = node_table(own.nodes), other_nodes = node_table(other.nodes);
   SurfaceMeshes all;
   std::size_t next = curve_nodes + 1;
   for (std::size_t i = 0; i < tags.size(); ++i) {
-    const SurfaceMeshes& from = i % 2 == 0 ? own : other;
-    const NodeTable& from_nodes = i % 2 == 0 ? own_nodes : other_nodes;
-    const std::vector<std::size_t>& triangles = from.triangles[i / 2];
+    const NodeTable from_nodes = node_table(each[i].nodes);
+    const std::vector<std::size_t>& triangles = each[i].triangles.at(0);
     std::map<std::size_t, std::size_t> renumber;  // this surface's new nodes
     for (std::size_t tag : triangles)
       if (tag > curve_nodes) renumber.emplace(tag, 0);
@@ -469,7 +498,7 @@ void check_request(const MeshRequest& request) {
   for (const NamedPolygon& r : request.regions) check_polygon(r.polygon, "region '" + r.name + "'");
   if (!(request.size > 0.0)) throw std::runtime_error("mesh size must be positive");
   if (request.threads < 1) throw std::runtime_error("mesh threads must be at least 1");
-  if (request.processes < 1 || request.processes > 2) throw std::runtime_error("mesh processes must be 1 or 2");
+  if (request.processes < 1) throw std::runtime_error("mesh processes must be at least 1");
   if (request.tile_triangles < 0) throw std::runtime_error("mesh tile_triangles must not be negative");
   if (request.smoothing < -1) throw std::runtime_error("mesh smoothing must be -1 (chosen) or a number of passes >= 0");
   if (request.algorithm != 1 && request.algorithm != 5 && request.algorithm != 6)
@@ -534,9 +563,8 @@ TriangleMesh generate_mesh_with_gmsh(const MeshRequest& request) {
     gmsh::model::occ::synchronize();
   });
 
-  // A tiled mesh is made by two processes at once (MeshRequest::processes), whatever the
-  // machine's cores, so that the same request gives the same mesh everywhere.
-  const bool two_processes = request.processes > 1 && tiled && surfaces.size() >= 2;
+  // A tiled mesh is made by a process per tile, MeshRequest::processes at once.
+  const bool in_processes = tiled && surfaces.size() >= 2;
   call_gmsh("Gmsh could not mesh the domain", [&] {
     gmsh::option::setNumber("Mesh.Algorithm", request.algorithm);
     gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
@@ -556,13 +584,14 @@ TriangleMesh generate_mesh_with_gmsh(const MeshRequest& request) {
             return refined_size(request, lines->nearest({x, y}), {x, y});
           });
     }
-    if (!two_processes) gmsh::model::mesh::generate(2);
+    if (!in_processes) gmsh::model::mesh::generate(2);
   });
 
   call_gmsh("Gmsh produced an unusable mesh", [&] {
     std::vector<int> tags;
     for (const auto& [tag, region] : surfaces) tags.push_back(tag);
-    const SurfaceMeshes meshes = two_processes ? mesh_surfaces_in_two_processes(tags) : take_surface_meshes(tags);
+    const SurfaceMeshes meshes =
+        in_processes ? mesh_surfaces_in_processes(tags, request.processes) : take_surface_meshes(tags);
     const NodeTable table = node_table(meshes.nodes);
     mesh.nodes = table.nodes;
     reserve_triangles(mesh, meshes.triangles);
