@@ -82,27 +82,34 @@ class RunResult:
                 f"iterations={self.iterations}, folder={str(self.folder)!r}>")
 
 
-def _check_stop_after(stop_after):
-    """Refuses what `hydrodda run --stop-after` refuses: a count of passes starts at 1."""
-    if stop_after is None:
+def _check_count(name, count, most=None):
+    """Refuses what `hydrodda run --stop-after` and `--threads` refuse: a count starts at 1."""
+    if count is None:
         return None
-    if isinstance(stop_after, bool) or not isinstance(stop_after, numbers.Integral) or stop_after < 1:
-        raise ValueError(f"stop_after: must be a whole number >= 1, got {stop_after!r}")
-    return int(stop_after)
+    if (isinstance(count, bool) or not isinstance(count, numbers.Integral) or count < 1
+            or (most is not None and count > most)):
+        limit = f"from 1 to {most}" if most is not None else ">= 1"
+        raise ValueError(f"{name}: must be a whole number {limit}, got {count!r}")
+    return int(count)
 
 
-def run(scenario, folder=None, *, progress=None, overwrite=False, stop_after=None):
+def run(scenario, folder=None, *, progress=None, overwrite=False, stop_after=None, threads=None):
     """Runs `scenario` into `folder` (default: the scenario's output.directory) as `hydrodda run`
     does, file for file. `progress(report)` is called after every DDA step, coupling pass or
     flow solve. A folder that holds files raises RunFolderError unless `overwrite`. Ctrl-C stops
     the run after its current step or pass, with the folder at the last finished one, and then
-    raises KeyboardInterrupt; an exception in `progress` stops it likewise and is raised."""
-    stop_after = _check_stop_after(stop_after)
-    return RunResult(_run(scenario, None if folder is None else Path(folder), overwrite, stop_after, progress))
+    raises KeyboardInterrupt; an exception in `progress` stops it likewise and is raised.
+    `threads`: how many this run uses (default: HYDRODDA_THREADS, else every core the process
+    may use); the results are the same on any number."""
+    stop_after = _check_count("stop_after", stop_after)
+    threads = _check_count("threads", threads, 4096)
+    return RunResult(_run(scenario, None if folder is None else Path(folder), overwrite, stop_after, progress,
+                          threads))
 
 
-def resume(folder, *, progress=None, stop_after=None):
+def resume(folder, *, progress=None, stop_after=None, threads=None):
     """Continues the coupled run in `folder` (stopped by stop_after or interrupted) after its last
-    finished pass, as `hydrodda run --resume` does."""
-    stop_after = _check_stop_after(stop_after)
-    return RunResult(_resume(Path(folder), stop_after, progress))
+    finished pass, as `hydrodda run --resume` does; `threads` as for run()."""
+    stop_after = _check_count("stop_after", stop_after)
+    threads = _check_count("threads", threads, 4096)
+    return RunResult(_resume(Path(folder), stop_after, progress, threads))

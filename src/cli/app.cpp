@@ -71,7 +71,7 @@ void configure_logging(Verbosity verbosity) {
 }
 }  // namespace
 
-// For counts that start at 1 (--jobs, --stop-after): CLI11's PositiveNumber said "Value 0 not
+// For counts that start at 1 (--jobs, --stop-after, --threads): CLI11's PositiveNumber said "Value 0 not
 // in range 0.000000 to 1.79e308".
 const CLI::Validator kWholeNumberFromOne(
     [](std::string& value) -> std::string {
@@ -117,6 +117,10 @@ int run_app(int argc, char** argv) {
       "--mesh-cache", mesh_cache,
       "A folder of meshes shared between runs: the mesh is read from it when a run with the same geometry and "
       "mesh settings left it there, else stored there (a sweep's cases share one)");
+  const char* const threads_help =
+      "Threads to use (default: HYDRODDA_THREADS, else every core this process may use); the results are the "
+      "same on any number";
+  run_cmd->add_option("--threads", run.threads, threads_help)->check(kWholeNumberFromOne);
   resume_opt->excludes(scenario_opt)->excludes(output_opt)->excludes(overwrite_opt)->excludes(mesh_cache_opt);
 
   std::filesystem::path check_file;
@@ -132,7 +136,10 @@ int run_app(int argc, char** argv) {
       ->allow_extra_args(false);
   CLI::Option* sweep_output_opt =
       sweep_cmd->add_option("-o,--output", sweep_output, "Sweep folder (default: out/<scenario name>-sweep)");
-  sweep_cmd->add_option("--jobs", sweep.jobs, "Cases run at a time (default: the hardware threads)")
+  sweep_cmd->add_option("--jobs", sweep.jobs, "Cases run at a time (default: the threads)")
+      ->check(kWholeNumberFromOne);
+  sweep_cmd->add_option("--threads", sweep.threads, "Threads of all the cases at a time, shared between the --jobs "
+                        "cases (default: HYDRODDA_THREADS, else every core this process may use)")
       ->check(kWholeNumberFromOne);
   sweep_cmd->add_option("--column", sweep.columns,
                         "A summary.json path to gather, e.g. flow.regions.core.effective_conductivity (repeatable)")

@@ -21,6 +21,7 @@ struct RunOptions {
   bool overwrite = false;
   std::optional<int> stop_after;  // --stop-after N: a coupled run stops after iteration N, resumable
   std::optional<std::filesystem::path> mesh_cache;  // --mesh-cache DIR: meshes shared with other runs
+  std::optional<int> threads;                       // --threads N (run/threads.hpp)
   Verbosity verbosity = Verbosity::Normal;
 };
 
@@ -28,7 +29,8 @@ struct SweepOptions {
   std::filesystem::path scenario;
   std::vector<std::string> sets;                // "KEY=V1,V2,..."
   std::optional<std::filesystem::path> output;  // default out/<scenario stem>-sweep
-  std::optional<int> jobs;                      // default: the hardware threads
+  std::optional<int> jobs;                      // default: the threads
+  std::optional<int> threads;                   // --threads N: of all the cases (run/threads.hpp)
   std::vector<std::string> columns;             // dotted paths into summary.json
   bool overwrite = false;
   bool zip = false;                             // the --set lists taken together, not combined

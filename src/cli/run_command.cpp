@@ -1,4 +1,3 @@
-#include <omp.h>
 #include <spdlog/spdlog.h>
 #include <unistd.h>
 
@@ -14,6 +13,7 @@
 #include "output/run_folder.hpp"
 #include "run/resumed_run.hpp"
 #include "run/run.hpp"
+#include "run/threads.hpp"
 #include "scenario/diagnostics.hpp"
 
 namespace hydrodda::cli {
@@ -57,26 +57,15 @@ int report(const run::RunResult& result) {
   return kRunFailed;
 }
 
-// One OpenMP thread when other processes already keep every core busy (the last minute's load
-// average at least the core count) and the user has not chosen (OMP_NUM_THREADS). At each
-// barrier OpenMP's waiting thread spins before it sleeps, and on a full machine it spins
-// on the core the thread it waits for needs: the 1,601-block wall's 20 steps took 3.9 s of CPU
-// and 25–30 s on two threads under a load of 13, 0.35 s and 3–5 s on one. The results are the
-// same bit for bit on any number of threads.
-void choose_thread_count() {
-  if (std::getenv("OMP_NUM_THREADS")) return;
-  double load[1] = {0.0};
-  const long cores = ::sysconf(_SC_NPROCESSORS_ONLN);
-  if (::getloadavg(load, 1) == 1 && cores > 1 && load[0] >= static_cast<double>(cores)) {
-    omp_set_num_threads(1);
-    spdlog::debug("one thread: the machine's load ({:.1f}) fills its {} cores", load[0], cores);
-  }
-}
-
 }  // namespace
 
 int run_command(const RunOptions& options) {
-  choose_thread_count();
+  try {
+    run::use_threads(options.threads, /*spare_busy_machine=*/true);
+  } catch (const run::InputError& e) {
+    spdlog::error("{}", e.what());
+    return kBadInput;
+  }
   Progress progress(options.verbosity, ::isatty(STDERR_FILENO) == 1);
   std::filesystem::path folder;  // removed when an interrupt while building the model leaves it empty
   run::Callbacks callbacks;

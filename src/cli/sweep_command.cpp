@@ -6,13 +6,14 @@
 
 #include <cstdio>
 #include <string>
-#include <thread>
+#include <algorithm>
 
 #include "cli/app.hpp"
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/scenario_loading.hpp"
 #include "output/run_folder.hpp"
+#include "run/threads.hpp"
 #include "sweep/cases.hpp"
 #include "sweep/preparation.hpp"
 #include "sweep/sweep.hpp"
@@ -42,10 +43,12 @@ int sweep_command(const SweepOptions& options, sweep::SweepRanks& ranks) {
   sweep::SweepJob job;
   job.scenario = options.scenario;
   job.zip = options.zip;
+  int threads = 1;  // of all the cases at a time
   try {
+    threads = run::use_threads(options.threads, /*spare_busy_machine=*/false);
     for (const std::string& set : options.sets) job.axes.push_back(sweep::parse_sweep_axis(set));
     job.cases = options.zip ? sweep::zip_cases(job.axes) : sweep::enumerate_cases(job.axes);
-  } catch (const std::invalid_argument& e) {
+  } catch (const std::exception& e) {  // std::invalid_argument, run::InputError
     print_error(e.what());
     return kBadInput;
   }
@@ -64,7 +67,8 @@ int sweep_command(const SweepOptions& options, sweep::SweepRanks& ranks) {
   }
   job.columns = choose_columns(options, preparation);
   job.boundary_names = sweep::boundary_names_of(*base);
-  job.jobs = options.jobs.value_or(std::max(1u, std::thread::hardware_concurrency()));
+  job.jobs = options.jobs.value_or(threads);
+  job.case_threads = std::max(1, threads / (ranks.size() > 1 ? ranks.size() : job.jobs));
   job.overwrite = options.overwrite;
   job.title = options.title.value_or(base->title);
 

@@ -11,6 +11,7 @@
 #include "python/python_callbacks.hpp"
 #include "run/resumed_run.hpp"
 #include "run/run.hpp"
+#include "run/threads.hpp"
 
 namespace hydrodda::python {
 
@@ -122,34 +123,38 @@ void bind_run(py::module_& module) {
   module.def(
       "_run",
       [](const PythonScenario& scenario, const std::optional<std::filesystem::path>& folder, bool overwrite,
-         std::optional<int> stop_after, py::object progress) {
+         std::optional<int> stop_after, py::object progress, std::optional<int> threads) {
         const run::RunOptions options{folder.value_or(scenario.definition.output.directory), overwrite, stop_after,
                                       scenario.text};
         PythonCallbacks callbacks(std::move(progress), /*keep_fields=*/true);
         std::optional<run::RunResult> result;
         {
           py::gil_scoped_release released;
+          const run::ThreadsOfThisCall own_threads(threads);
           result = run::run(scenario.definition, options, callbacks.callbacks());
         }
         callbacks.raise_pending();
         return result_fields(*result, callbacks);
       },
-      py::arg("scenario"), py::arg("folder"), py::arg("overwrite"), py::arg("stop_after"), py::arg("progress"));
+      py::arg("scenario"), py::arg("folder"), py::arg("overwrite"), py::arg("stop_after"), py::arg("progress"),
+      py::arg("threads"));
 
   module.def(
       "_resume",
-      [](const std::filesystem::path& folder, std::optional<int> stop_after, py::object progress) {
+      [](const std::filesystem::path& folder, std::optional<int> stop_after, py::object progress,
+         std::optional<int> threads) {
         const run::ResumedRun resumed = run::open_resumed_run(folder);
         PythonCallbacks callbacks(std::move(progress), /*keep_fields=*/true);
         std::optional<run::RunResult> result;
         {
           py::gil_scoped_release released;
+          const run::ThreadsOfThisCall own_threads(threads);
           result = run::resume(resumed, stop_after, callbacks.callbacks());
         }
         callbacks.raise_pending();
         return result_fields(*result, callbacks);
       },
-      py::arg("folder"), py::arg("stop_after"), py::arg("progress"));
+      py::arg("folder"), py::arg("stop_after"), py::arg("progress"), py::arg("threads"));
 }
 
 }  // namespace hydrodda::python

@@ -51,7 +51,8 @@ SweepPlan plan_cases(const SweepJob& job, const std::vector<PreparedCase>& prepa
   for (const PreparedCase& c : prepared) {
     const fs::path case_dir = job.directory / c.name;
     plan.commands.push_back({{program.string(), "-q", "run", (case_dir / "scenario.toml").string(), "-o",
-                              case_dir.string(), "--overwrite", "--mesh-cache", (job.directory / kMeshCache).string()},
+                              case_dir.string(), "--overwrite", "--mesh-cache", (job.directory / kMeshCache).string(),
+                              "--threads", std::to_string(job.case_threads)},
                              case_dir / "run.log"});
     plan.folders.push_back(case_dir);
   }

@@ -25,6 +25,7 @@ struct SweepJob {
   std::vector<std::string> columns;                    // summary.json paths sweep.csv holds
   std::vector<std::string> boundary_names;             // of the base scenario, naming the swept values
   int jobs = 1;                                        // cases at a time on one rank
+  int case_threads = 1;                                // each case's --threads
   bool overwrite = false;                              // replace the results in `directory`
   std::string title;                                   // sweep.png's
 };

@@ -1,0 +1,87 @@
+// How many threads a run uses (run/threads.hpp): the front end's choice, HYDRODDA_THREADS, or
+// the machine's; bad values are refused naming the variable.
+
+#include "run/threads.hpp"
+
+#include <gtest/gtest.h>
+#include <stdlib.h>
+
+#include <optional>
+#include <string>
+
+#include "geometry/parallel.hpp"
+#include "run/run.hpp"
+
+namespace hydrodda::run {
+namespace {
+
+// HYDRODDA_THREADS set (or unset) for one test, and put back.
+class ThreadsVariable {
+ public:
+  explicit ThreadsVariable(const char* value) {
+    if (const char* before = std::getenv(kThreadsVariable)) before_ = before;
+    if (value)
+      ::setenv(kThreadsVariable, value, 1);
+    else
+      ::unsetenv(kThreadsVariable);
+  }
+  ~ThreadsVariable() {
+    if (before_)
+      ::setenv(kThreadsVariable, before_->c_str(), 1);
+    else
+      ::unsetenv(kThreadsVariable);
+  }
+
+ private:
+  std::optional<std::string> before_;
+};
+
+TEST(Threads, CountsAreWholeNumbersFromOneTo4096) {
+  EXPECT_EQ(parse_thread_count("1"), 1);
+  EXPECT_EQ(parse_thread_count("8"), 8);
+  EXPECT_EQ(parse_thread_count("4096"), 4096);
+  for (const char* bad : {"", "0", "-1", "+2", "2.0", "2 ", " 2", "two", "4097", "99999999999", "0x10"})
+    EXPECT_EQ(parse_thread_count(bad), std::nullopt) << "'" << bad << "'";
+}
+
+TEST(Threads, TheFrontEndsChoiceComesFirstThenTheVariable) {
+  {
+    const ThreadsVariable variable("3");
+    EXPECT_EQ(chosen_thread_count(std::nullopt), 3);
+    EXPECT_EQ(chosen_thread_count(5), 5);
+  }
+  {
+    const ThreadsVariable unset(nullptr);
+    EXPECT_EQ(chosen_thread_count(std::nullopt), std::nullopt);
+    EXPECT_EQ(chosen_thread_count(2), 2);
+  }
+}
+
+TEST(Threads, ABadVariableIsNamedWithItsValue) {
+  const ThreadsVariable variable("lots");
+  try {
+    chosen_thread_count(std::nullopt);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("HYDRODDA_THREADS"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("'lots'"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(chosen_thread_count(4), 4);  // the front end's choice does not read it
+}
+
+TEST(Threads, ACallsOwnCountHoldsOnItsThreadWhileItLasts) {
+  const ThreadsVariable unset(nullptr);
+  const int before = geometry::thread_count();
+  {
+    const ThreadsOfThisCall call(7);
+    EXPECT_EQ(geometry::thread_count(), 7);
+  }
+  EXPECT_EQ(geometry::thread_count(), before);
+  {
+    const ThreadsOfThisCall call(std::nullopt);  // nothing chosen: the process's
+    EXPECT_EQ(geometry::thread_count(), before);
+  }
+}
+
+}  // namespace
+}  // namespace hydrodda::run
