@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "geometry/parallel.hpp"
 #include "mesh/metis_lock.hpp"
 #include "mesh/program_files.hpp"
 
@@ -206,7 +207,7 @@ FillOrder order_by_nested_dissection(const SparseMatrix& upper, bool with_helper
 
   Graph second = subgraph(g, half[1]);
   OrderingProcess helper;
-  const bool aside = with_helper && helper.start(second);
+  const bool aside = with_helper && geometry::two_threads_available() && helper.start(second);
   std::vector<idx_t> order[2];
   Graph first = subgraph(g, half[0]);
   order[0] = order_whole(first);
