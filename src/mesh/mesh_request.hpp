@@ -54,9 +54,9 @@ struct MeshRequest {
   // varies from run to run (the 10^5-triangle seal over 20 tiles: 101,196 to 101,228
   // triangles on 2 threads, 101,194 every time on 1); 1 is reproducible.
   int threads = 1;
-  // Processes meshing the tiles of a tiled request at once, each tile in a child process of
-  // its own (gmsh_mesher.cpp); the run sets it to its thread count. The mesh is the same on
-  // any number, so it is not part of the mesh cache's key.
+  // Processes meshing the tiles of a tiled request at once, each a fixed group of tiles
+  // (gmsh_mesher.cpp); the run sets it to its thread count. The mesh is the same on any
+  // number, so it is not part of the mesh cache's key.
   int processes = 2;
   // Passes of Gmsh's Laplacian smoothing (Mesh.Smoothing), which moves each node towards the
   // mean of its neighbours where that improves the triangles' angles; −1 chooses: one pass on

@@ -225,8 +225,8 @@ double largest_node_shift(const TriangleMesh& a, const TriangleMesh& b) {
 // it is the same mesh on every call, and has within 3% of the triangles of the one-surface
 // mesh of the same request (the tile edges only add nodes on them). The tiles are meshed by
 // two processes at once (the default), by one or by three: each mesh is the same on every call
-// and conforms across the tiles, and all are the same mesh, node for node (each tile is meshed
-// in a process of its own, whatever their number).
+// and conforms across the tiles, and all are the same mesh, node for node (the tiles are meshed
+// in groups fixed by the tiles alone, whatever the number of processes).
 TEST(GenerateMesh, TiledMeshHonoursRegionsSizesAndBoundaries) {
   MeshRequest request = tiled_request();
   const TriangleMesh tiled = generate_mesh(request), again = generate_mesh(request);
