@@ -157,3 +157,23 @@ def test_an_error_in_the_progress_callback_stops_the_run_and_is_raised(in_tmp):
         hydrodda.run(hydrodda.Scenario.load(name), "py", progress=progress)
     summary = json.loads((in_tmp / "py/summary.json").read_text())
     assert summary["iterations"] == 1 and not summary["converged"]
+
+
+def test_threads_change_no_result_and_bad_counts_are_refused(in_tmp, monkeypatch):
+    """threads= as `--threads`: the same run folder on one thread and on three; 0, 4097, 1.5 and
+    True raise ValueError before anything runs; a bad HYDRODDA_THREADS raises InputError naming it."""
+    name = write_scenario(in_tmp, VERIFICATION / "coupled_hydrostatic_column.toml", {}, "column.toml")
+    for threads, folder in ((1, "one"), (3, "three")):
+        assert hydrodda.run(hydrodda.Scenario.load(name), folder, threads=threads).status == "finished"
+    expect_same_folders(in_tmp / "one", in_tmp / "three")
+    for threads in (0, 4097, 1.5, True):
+        with pytest.raises(ValueError, match="threads: must be a whole number from 1 to 4096"):
+            hydrodda.run(hydrodda.Scenario.load(name), "bad", threads=threads)
+        with pytest.raises(ValueError, match="threads: must be a whole number from 1 to 4096"):
+            hydrodda.resume("one", threads=threads)
+    monkeypatch.setenv("HYDRODDA_THREADS", "many")
+    with pytest.raises(hydrodda.InputError, match="HYDRODDA_THREADS must be a whole number from 1 to 4096, got 'many'"):
+        hydrodda.run(hydrodda.Scenario.load(name), "bad")
+    assert not (in_tmp / "bad").exists()
+    # The call's own count comes first.
+    assert hydrodda.run(hydrodda.Scenario.load(name), "two", threads=2).status == "finished"
