@@ -74,7 +74,8 @@ Frame make_frame(const geometry::Box& box, double width, double height) {
                       (height - kMarginTop - kMarginBottom) / box.height());
   fr.x0 = box.lo.x;
   fr.y0 = box.lo.y;
-  fr.left = kMarginLeft;
+  // A domain narrower than the page (a tall one) stands in its middle, with its colour bar.
+  fr.left = kMarginLeft + 0.5 * std::max(0.0, width - kMarginLeft - kMarginRight - box.width() * fr.scale);
   fr.bottom = kMarginTop + box.height() * fr.scale;
   return fr;
 }
@@ -297,6 +298,22 @@ ArrowKey draw_flux_arrows(cairo_t* cr, const Frame& fr, const geometry::Box& box
   return key;
 }
 
+// An axis's ticks, as many as 6 and as few as two, spaced so that their labels stand apart:
+// the width of a 1 m column beside its 10 m height printed six labels over one another.
+std::vector<double> readable_ticks(cairo_t* cr, double lo, double hi, double page_per_metre, bool horizontal) {
+  constexpr double kGap = 8, kLineHeight = 11;
+  std::vector<double> ticks;
+  for (int count = 6; count >= 1; --count) {
+    ticks = nice_ticks(lo, hi, count);
+    if (ticks.size() < 3) return ticks;
+    double room = kLineHeight + kGap;
+    if (horizontal)
+      for (double v : ticks) room = std::max(room, text_width(cr, tick_label(v)) + kGap);
+    if ((ticks[1] - ticks[0]) * page_per_metre >= room) return ticks;
+  }
+  return ticks;
+}
+
 // Axes with ticks in metres.
 void draw_axes(cairo_t* cr, const Frame& fr, const geometry::Box& box) {
   cairo_set_source_rgb(cr, 0, 0, 0);
@@ -308,13 +325,13 @@ void draw_axes(cairo_t* cr, const Frame& fr, const geometry::Box& box) {
   // Ticks reach a hair beyond the box, so that a domain whose blocks moved a few microns in from
   // its edge (0.00001 to 5.99999 m) is still ticked at 0 and 6.
   const double reach = 1e-3 * std::max(box.width(), box.height());
-  for (double x : nice_ticks(box.lo.x - reach, box.hi.x + reach, 6)) {
+  for (double x : readable_ticks(cr, box.lo.x - reach, box.hi.x + reach, fr.scale, true)) {
     cairo_move_to(cr, fr.px(x), fr.py(box.lo.y));
     cairo_line_to(cr, fr.px(x), fr.py(box.lo.y) + 5);
     cairo_stroke(cr);
     draw_text(cr, tick_label(x), fr.px(x), fr.py(box.lo.y) + 8, 0.5, 0.0);
   }
-  for (double y : nice_ticks(box.lo.y - reach, box.hi.y + reach, 6)) {
+  for (double y : readable_ticks(cr, box.lo.y - reach, box.hi.y + reach, fr.scale, false)) {
     cairo_move_to(cr, fr.px(box.lo.x), fr.py(y));
     cairo_line_to(cr, fr.px(box.lo.x) - 5, fr.py(y));
     cairo_stroke(cr);
@@ -433,9 +450,15 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
 
 void render_field_figure(const std::filesystem::path& path, const FieldFigure& figure) {
   // The page follows the domain's shape: a wide, flat layer gets a short page rather than a
-  // strip above a blank one; a tall domain is held to the largest height.
-  const double width = 760, largest_height = 640;
+  // strip above a blank one; a tall domain is held to the largest height, on a narrower page
+  // (down to one that holds a title) rather than beside a blank one.
+  const double largest_width = 760, narrowest_width = 480, largest_height = 640;
   const geometry::Box box = figure_box(figure);
+  const double largest_plot_height = largest_height - kMarginTop - kMarginBottom;
+  const double tall_plot_width =
+      box.height() > 0 ? largest_plot_height * box.width() / box.height() : largest_width;
+  const double width =
+      std::clamp(kMarginLeft + kMarginRight + tall_plot_width, narrowest_width, largest_width);
   const double plot_width = width - kMarginLeft - kMarginRight;
   const double plot_height = box.width() > 0 ? plot_width * box.height() / box.width() : plot_width;
   const double height = std::min(

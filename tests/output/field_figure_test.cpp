@@ -115,6 +115,45 @@ TEST(FieldFigure, AWarningIsWrittenInRedUnderTheTitle) {
   fs::remove_all(dir);
 }
 
+// A column 1 m wide and 10 m tall: drawn 53 points wide and 530 high (the largest height), on a
+// page narrowed to 480 points rather than 760 with the column at one side; its x axis has
+// three ticks (0, 0.5, 1) whose labels stand apart, where six (every 0.2 m) printed over one
+// another. The tick marks are counted as runs of dark pixels just under the plot's frame
+// (at 580 points down: 50 of margin and 530 of plot).
+TEST(FieldFigure, ATallDomainHasANarrowPageAndReadableTicks) {
+  const std::vector<Point> nodes{{0, 0}, {1, 0}, {1, 10}, {0, 10}};
+  const std::vector<std::array<int, 3>> triangles{{0, 1, 2}, {0, 2, 3}};
+  FieldFigure f;
+  f.title = "A column";
+  f.field_label = "head (m)";
+  f.nodes = nodes;
+  f.triangles = triangles;
+  f.node_field = {0.0, 0.0, 1.0, 1.0};
+  const fs::path dir = fs::temp_directory_path() / ("hydrodda-figure-tall-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path png = dir / "tall.png";
+  render_field_figure(png, f);
+  cairo_surface_t* image = cairo_image_surface_create_from_png(png.c_str());
+  ASSERT_EQ(cairo_surface_status(image), CAIRO_STATUS_SUCCESS);
+  EXPECT_EQ(cairo_image_surface_get_width(image), 2 * 480);
+  // The row 583 points down (2 × 583 in pixels), across the plot's width
+  // (the column stands in the page's middle, from 188.5 to 241.5 points; the y axis's
+  // labels end 8 points left of it).
+  const int stride = cairo_image_surface_get_stride(image);
+  const auto* row = reinterpret_cast<const std::uint32_t*>(cairo_image_surface_get_data(image) + 2 * 583 * stride);
+  int ticks = 0;
+  bool in_tick = false;
+  for (int x = 2 * 185; x < 2 * 245; ++x) {
+    const std::uint32_t pixel = row[x];  // ARGB32
+    const bool dark = ((pixel >> 16) & 0xffu) < 100 && ((pixel >> 8) & 0xffu) < 100 && (pixel & 0xffu) < 100;
+    ticks += dark && !in_tick;
+    in_tick = dark;
+  }
+  cairo_surface_destroy(image);
+  EXPECT_EQ(ticks, 3);
+  fs::remove_all(dir);
+}
+
 // A 20 m × 2 m strip of 40 × 4 squares, each cut in two triangles: drawn 570 points wide and
 // 57 high, from 70 points in and 50 down.
 void make_flat_strip(std::vector<Point>& nodes, std::vector<std::array<int, 3>>& triangles) {
