@@ -34,6 +34,7 @@ try:
         ScenarioError,
         Simulation,
         __version__,
+        _breach,
         _resume,
         _run,
     )
@@ -42,8 +43,8 @@ except ImportError as error:
     raise _for_another_interpreter(error) from error
 
 __all__ = [
-    "Diagnostic", "InputError", "ProgressReport", "RunFolderError", "RunResult", "Scenario",
-    "ScenarioError", "Simulation", "__version__", "read_history", "resume", "run",
+    "BreachResult", "Diagnostic", "InputError", "ProgressReport", "RunFolderError", "RunResult", "Scenario",
+    "ScenarioError", "Simulation", "__version__", "breach", "read_history", "resume", "run",
 ]
 
 
@@ -113,3 +114,42 @@ def resume(folder, *, progress=None, stop_after=None, threads=None):
     stop_after = _check_count("stop_after", stop_after)
     threads = _check_count("threads", threads, 4096)
     return RunResult(_resume(Path(folder), stop_after, progress, threads))
+
+
+class BreachResult:
+    """Where a breach search ended (docs/breach.md): held (the largest load that held) and
+    broken (the least that did not), either None; broken_status ('beyond limit', 'not
+    converged', 'no equilibrium', 'failed'); narrowed (the bracket reached the tolerance);
+    verdict (the line `hydrodda breach` prints); folder; steps, one dict per step tried (index,
+    load, kind, status, passes, message); summary (breach.json as a dict)."""
+
+    def __init__(self, fields):
+        self.held = fields["held"]
+        self.broken = fields["broken"]
+        self.broken_status = fields["broken_status"]
+        self.narrowed = fields["narrowed"]
+        self.interrupted = fields["interrupted"]
+        self.verdict = fields["verdict"]
+        self.folder = Path(fields["folder"])
+        self.steps = fields["steps"]
+        self.summary = json.loads((self.folder / "breach.json").read_text())
+
+    def __repr__(self):
+        return f"<BreachResult {self.verdict!r}>"
+
+
+def breach(scenario, vary, start, stop, *, steps=10, tolerance=0.005, limit=None, folder=None, overwrite=False,
+           threads=None):
+    """Raises the load `vary` (a key path, or a list of key paths that take the same value) of a
+    coupled `scenario` from `start` towards `stop` in `steps` equal steps, each from the last
+    state that held, then bisects the first step that did not hold until the bracket is within
+    `tolerance` of the load, as `hydrodda breach` does, into `folder` (default: the scenario's
+    output.directory + "-breach"). `limit`: (path, value), a summary.json value a state must keep
+    at or below to hold. Ctrl-C ends the search after its current pass and raises
+    KeyboardInterrupt. Returns a BreachResult."""
+    keys = [vary] if isinstance(vary, str) else list(vary)
+    steps = _check_count("steps", steps)
+    threads = _check_count("threads", threads, 4096)
+    limit_path, limit_value = (None, None) if limit is None else (str(limit[0]), float(limit[1]))
+    return BreachResult(_breach(scenario, keys, float(start), float(stop), steps, float(tolerance), limit_path,
+                                limit_value, None if folder is None else Path(folder), overwrite, threads))

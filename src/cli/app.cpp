@@ -150,7 +150,32 @@ int run_app(int argc, char** argv) {
                       "running every combination");
   sweep_cmd->add_option("--title", sweep.title, "Title of sweep.png (default: the scenario's title)");
 
-  for (CLI::App* sub : {run_cmd, check_cmd, sweep_cmd}) {
+  BreachOptions breach;
+  std::string breach_output;
+  CLI::App* breach_cmd = app.add_subcommand(
+      "breach", "Raise one load of a coupled scenario step by step, each from the last state that held, and "
+                "bracket the load at which it stops holding");
+  breach_cmd->add_option("scenario", breach.scenario, "Scenario file (TOML), coupled")->required();
+  breach_cmd->add_option("--vary", breach.keys,
+                         "The load's key path: flow.boundary[i].head, .pressure or .flux, or "
+                         "mechanics.traction[i].normal or .shear (repeatable: the keys take the same value)")
+      ->required()
+      ->allow_extra_args(false);
+  breach_cmd->add_option("--from", breach.from, "The first load (the key's unit)")->required();
+  breach_cmd->add_option("--to", breach.to, "The last load tried when every step holds")->required();
+  breach_cmd->add_option("--steps", breach.steps, "Equal steps from --from to --to (default 10)")
+      ->check(kWholeNumberFromOne);
+  breach_cmd->add_option("--tolerance", breach.tolerance,
+                         "The bracket's width once narrowed, as a share of the load (default 0.005)");
+  breach_cmd->add_option("--limit", breach.limit,
+                         "PATH=VALUE: a state holds only while this summary.json value stays at or below VALUE, e.g. "
+                         "flow.regions.seal.normalised_conductivity=100");
+  CLI::Option* breach_output_opt =
+      breach_cmd->add_option("-o,--output", breach_output, "Breach folder (default: out/<scenario name>-breach)");
+  breach_cmd->add_option("--threads", breach.threads, threads_help)->check(kWholeNumberFromOne);
+  breach_cmd->add_flag("--overwrite", breach.overwrite, "Replace results in a breach folder that already holds files");
+
+  for (CLI::App* sub : {run_cmd, check_cmd, sweep_cmd, breach_cmd}) {
     sub->add_flag("-q,--quiet", quiet, "Print warnings and errors only");
     sub->add_flag("-v,--verbose", verbose, "Print every step and every default used");
   }
@@ -164,7 +189,7 @@ int run_app(int argc, char** argv) {
 
   run.verbosity = quiet ? Verbosity::Quiet : verbose ? Verbosity::Verbose : Verbosity::Normal;
   configure_logging(run.verbosity);
-  for (const CLI::Option* o : {output_opt, sweep_output_opt})
+  for (const CLI::Option* o : {output_opt, sweep_output_opt, breach_output_opt})
     if (o->count() > 0 && o->as<std::string>().empty()) {
       spdlog::error("{}: the folder's path is empty", o->get_name());
       return kBadInput;
@@ -182,6 +207,10 @@ int run_app(int argc, char** argv) {
   if (*check_cmd) {
     set_exit_on_interrupt(true);  // check writes nothing: an interrupt ends it at once
     return check_command(check_file);
+  }
+  if (*breach_cmd) {
+    if (!breach_output.empty()) breach.output = breach_output;
+    return breach_command(breach);
   }
   if (*sweep_cmd) {
     if (!sweep_output.empty()) sweep.output = sweep_output;

@@ -37,9 +37,22 @@ struct SweepOptions {
   std::optional<std::string> title;             // sweep.png's title (default: the scenario's)
 };
 
+struct BreachOptions {
+  std::filesystem::path scenario;
+  std::vector<std::string> keys;                // --vary KEY (repeatable: moved together)
+  double from = 0.0, to = 0.0;                  // --from, --to
+  int steps = 10;                               // --steps
+  double tolerance = 5e-3;                      // --tolerance: the bracket's width, a share of the load
+  std::optional<std::string> limit;             // --limit PATH=VALUE
+  std::optional<std::filesystem::path> output;  // default out/<scenario stem>-breach
+  std::optional<int> threads;
+  bool overwrite = false;
+};
+
 int check_command(const std::filesystem::path& scenario);
 int run_command(const RunOptions& options);
 // Under mpirun, rank 0's sweep (the other ranks serve it, sweep/ranks.hpp).
 int sweep_command(const SweepOptions& options, sweep::SweepRanks& ranks);
+int breach_command(const BreachOptions& options);
 
 }  // namespace hydrodda::cli

@@ -51,6 +51,19 @@ std::optional<std::string> format_cell(const json& value) {
 
 }  // namespace
 
+namespace {
+
+std::vector<std::optional<std::string>> values_at(const json& root, const std::vector<std::string>& paths) {
+  std::vector<std::optional<std::string>> values;
+  for (const std::string& path : paths) {
+    const json* value = find_value(root, path);
+    values.push_back(value ? format_cell(*value) : std::nullopt);
+  }
+  return values;
+}
+
+}  // namespace
+
 std::vector<std::optional<std::string>> read_summary_values(const std::filesystem::path& file,
                                                             const std::vector<std::string>& paths) {
   std::ifstream in(file);
@@ -61,12 +74,17 @@ std::vector<std::optional<std::string>> read_summary_values(const std::filesyste
   } catch (const json::exception& e) {
     throw std::runtime_error(fmt::format("{} is not valid JSON: {}", file.string(), e.what()));
   }
-  std::vector<std::optional<std::string>> values;
-  for (const std::string& path : paths) {
-    const json* value = find_value(root, path);
-    values.push_back(value ? format_cell(*value) : std::nullopt);
+  return values_at(root, paths);
+}
+
+std::vector<std::optional<std::string>> summary_values(std::string_view text, const std::vector<std::string>& paths) {
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::exception& e) {
+    throw std::runtime_error(fmt::format("a summary that is not valid JSON: {}", e.what()));
   }
-  return values;
+  return values_at(root, paths);
 }
 
 }  // namespace hydrodda::output

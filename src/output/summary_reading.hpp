@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace hydrodda::output {
@@ -14,5 +15,7 @@ namespace hydrodda::output {
 // Throws std::runtime_error naming the file when it cannot be read or is not JSON.
 std::vector<std::optional<std::string>> read_summary_values(const std::filesystem::path& file,
                                                             const std::vector<std::string>& paths);
+// The same from summary.json's text (format_summary's); std::runtime_error when it is not JSON.
+std::vector<std::optional<std::string>> summary_values(std::string_view text, const std::vector<std::string>& paths);
 
 }  // namespace hydrodda::output

@@ -5,6 +5,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include "breach/breach.hpp"
 #include "output/summary.hpp"
 #include "python/bindings.hpp"
 #include "python/model_fields.hpp"
@@ -46,6 +47,32 @@ py::dict result_fields(const run::RunResult& result, const PythonCallbacks& call
   fields["summary_json"] = output::format_summary(result.summary);
   fields["folder"] = result.folder;
   fields["fields"] = callbacks.fields_at_end();
+  return fields;
+}
+
+// A breach search's outcome, for the package's BreachResult.
+py::dict breach_fields(const breach::BreachOutcome& outcome) {
+  const breach::SearchResult& r = outcome.search;
+  py::dict fields;
+  fields["held"] = r.held ? py::object(py::float_(*r.held)) : py::object(py::none());
+  fields["broken"] = r.broken ? py::object(py::float_(*r.broken)) : py::object(py::none());
+  fields["broken_status"] = r.broken_status ? py::object(py::str(breach::status_name(*r.broken_status))) : py::object(py::none());
+  fields["narrowed"] = r.narrowed;
+  fields["interrupted"] = r.interrupted;
+  fields["verdict"] = outcome.verdict;
+  fields["folder"] = outcome.folder;
+  py::list steps;
+  for (const breach::SearchStep& s : r.steps) {
+    py::dict step;
+    step["index"] = s.index;
+    step["load"] = s.load;
+    step["kind"] = s.bisection ? "bisection" : "step";
+    step["status"] = breach::status_name(s.result.status);
+    step["passes"] = s.result.passes;
+    step["message"] = s.result.message;
+    steps.append(step);
+  }
+  fields["steps"] = steps;
   return fields;
 }
 
@@ -155,6 +182,33 @@ void bind_run(py::module_& module) {
         return result_fields(*result, callbacks);
       },
       py::arg("folder"), py::arg("stop_after"), py::arg("progress"), py::arg("threads"));
+
+  module.def(
+      "_breach",
+      [](const PythonScenario& scenario, std::vector<std::string> keys, double start, double stop, int steps,
+         double tolerance, std::optional<std::string> limit_path, std::optional<double> limit_value,
+         const std::optional<std::filesystem::path>& folder, bool overwrite, std::optional<int> threads) {
+        breach::BreachJob job;
+        job.scenario = scenario.file;
+        job.text = scenario.text;
+        job.keys = std::move(keys);
+        job.search = {start, stop, steps, tolerance};
+        if (limit_path) job.limit = breach::Limit{*limit_path, limit_value.value_or(0.0)};
+        job.directory = folder.value_or(scenario.definition.output.directory.parent_path() /
+                                        (scenario.definition.output.directory.filename().string() + "-breach"));
+        job.overwrite = overwrite;
+        PythonCallbacks callbacks{py::none()};
+        std::optional<breach::BreachOutcome> outcome;
+        {
+          py::gil_scoped_release released;
+          const run::ThreadsOfThisCall own_threads(threads);
+          outcome = breach::run_breach(job, callbacks.callbacks().stop_requested);
+        }
+        callbacks.raise_pending();
+        return breach_fields(*outcome);
+      },
+      py::arg("scenario"), py::arg("keys"), py::arg("start"), py::arg("stop"), py::arg("steps"), py::arg("tolerance"),
+      py::arg("limit_path"), py::arg("limit_value"), py::arg("folder"), py::arg("overwrite"), py::arg("threads"));
 }
 
 }  // namespace hydrodda::python

@@ -1,0 +1,197 @@
+#include "breach/breach_files.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+
+#include "output/plot_line.hpp"
+#include "output/summary_reading.hpp"
+#include "output/summary.hpp"
+#include "run/figures.hpp"
+#include "run/fracture_output.hpp"
+
+namespace hydrodda::breach {
+
+namespace {
+
+using output::CsvTable;
+
+std::vector<std::string> region_names(const scenario::Scenario& s) {
+  std::vector<std::string> names;
+  if (s.flow)
+    for (const auto& region : s.flow->regions) names.push_back(region.name);
+  return names;
+}
+
+std::vector<std::string> columns_of(const std::vector<std::string>& regions, const std::optional<Limit>& limit) {
+  std::vector<std::string> columns{"step", "load", "kind", "status", "passes", "largest_opening", "open_fractures"};
+  for (const std::string& region : regions) columns.push_back(fmt::format("flow.regions.{}.normalised_conductivity", region));
+  if (limit) columns.push_back(limit->path);
+  columns.push_back("message");
+  return columns;
+}
+
+bool is_state(StepStatus status) { return status == StepStatus::held || status == StepStatus::beyond_limit; }
+
+std::string cell(const std::optional<double>& value) { return value ? CsvTable::cell(*value) : ""; }
+
+nlohmann::json held_json(const HeldState& h, const std::vector<std::string>& regions) {
+  nlohmann::json j{{"load", h.load}, {"largest_opening", h.largest_opening}, {"open_fractures", h.open_fractures}};
+  nlohmann::json k = nlohmann::json::object();
+  for (std::size_t r = 0; r < regions.size(); ++r)
+    k[regions[r]] = h.conductivity[r] ? nlohmann::json(*h.conductivity[r]) : nlohmann::json(nullptr);
+  j["normalised_conductivity"] = k;
+  return j;
+}
+
+}  // namespace
+
+BreachFiles::BreachFiles(const output::RunFolder& folder, const scenario::Scenario& scenario, std::string key,
+                         std::optional<Limit> limit)
+    : folder_(folder),
+      scenario_(scenario),
+      key_(std::move(key)),
+      limit_(std::move(limit)),
+      regions_(region_names(scenario)),
+      table_(columns_of(regions_, limit_)),
+      paraview_(folder, scenario.output.fields) {}
+
+void BreachFiles::write_scenario(const std::string& text) const { folder_.write("scenario.toml", text); }
+
+HeldState BreachFiles::measure(const SearchStep& step, const CoupledStepper& stepper,
+                               const output::RunSummary& summary) const {
+  HeldState h;
+  h.load = step.load;
+  h.beyond_limit = step.result.status == StepStatus::beyond_limit;
+  for (const std::string& region : regions_) {
+    std::optional<double> value;
+    if (summary.flow)
+      for (const output::RegionSummary& r : summary.flow->regions)
+        if (r.name == region) value = r.normalised_conductivity;
+    h.conductivity.push_back(value);
+  }
+  if (summary.fractures)
+    for (const output::FractureRow& f : summary.fractures->rows) {
+      h.largest_opening = std::max(h.largest_opening, f.max_aperture);
+      if (f.open_length > 0.0) h.open_fractures.push_back(f.id);
+    }
+  if (limit_) {
+    const std::string text = output::format_summary(summary);
+    if (const auto v = output::summary_values(text, {limit_->path})[0]) h.limit_value = std::stod(*v);
+  }
+  (void)stepper;
+  return h;
+}
+
+std::vector<std::string> BreachFiles::row_of(const SearchStep& step, const std::optional<HeldState>& held) const {
+  std::vector<std::string> row{std::to_string(step.index), CsvTable::cell(step.load), step.bisection ? "bisection" : "step",
+                               status_name(step.result.status), std::to_string(step.result.passes)};
+  row.push_back(held ? CsvTable::cell(held->largest_opening) : "");
+  row.push_back(held ? std::to_string(held->open_fractures.size()) : "");
+  for (std::size_t r = 0; r < regions_.size(); ++r) row.push_back(held ? cell(held->conductivity[r]) : "");
+  if (limit_) row.push_back(held ? cell(held->limit_value) : "");
+  row.push_back(step.result.message);
+  return row;
+}
+
+void BreachFiles::add_step(const SearchStep& step, const CoupledStepper& stepper) {
+  std::optional<HeldState> held;
+  if (is_state(step.result.status)) {
+    output::RunSummary summary = stepper.summary();
+    summary.message = step.result.message;
+    folder_.subfolder("steps");
+    folder_.write(fmt::format("steps/step_{:03d}.json", step.index), output::format_summary(summary));
+    held = measure(step, stepper, summary);
+    held_.push_back(*held);
+    const run::CoupledModel& model = stepper.model();
+    const auto& loop = model.loop();
+    paraview_.write_fluid(step.index, step.load, model.mesh(), loop.flow(), loop.porosity().porosity, loop.permeability());
+    paraview_.write_blocks(step.index, step.load, model.mechanics());
+  }
+  steps_.push_back(step);
+  table_.add_row(row_of(step, held));
+  folder_.write("breach.csv", table_.text());
+}
+
+void BreachFiles::write_last_held(double load, const CoupledStepper& stepper) {
+  output::RunSummary summary = stepper.summary();
+  folder_.write("last_held.json", output::format_summary(summary));
+  if (scenario_.output.figures.empty()) return;
+  const run::CoupledModel& model = stepper.model();
+  const auto& loop = model.loop();
+  const std::vector<geometry::Polygon> blocks = model.block_polygons();
+  const std::string when = fmt::format("the last state that held, {} = {:.6g}", key_, load);
+  try {
+    run::draw_figures(scenario_, folder_,
+                      {model.mesh(), loop.flow(), loop.porosity().porosity, loop.permeability(), blocks, when,
+                       model.iterations()});
+    if (const std::optional<fractures::FractureState> state = stepper.measure_fractures())
+      run::draw_aperture_figure(scenario_, folder_, blocks, *state, {when, ""});
+  } catch (const std::exception& e) {
+    spdlog::warn("the figures of the last state that held could not be drawn: {}", e.what());
+  }
+}
+
+void BreachFiles::finish(const SearchResult& result, const std::string& verdict, const SearchSettings& settings) {
+  nlohmann::json j{{"key", key_},          {"from", settings.from},           {"to", settings.to},
+                   {"steps", settings.steps}, {"tolerance", settings.tolerance}, {"verdict", verdict},
+                   {"interrupted", result.interrupted}, {"narrowed", result.narrowed}};
+  j["held"] = result.held ? nlohmann::json(*result.held) : nlohmann::json(nullptr);
+  j["broken"] = result.broken ? nlohmann::json(*result.broken) : nlohmann::json(nullptr);
+  j["broken_status"] = result.broken_status ? nlohmann::json(status_name(*result.broken_status)) : nlohmann::json(nullptr);
+  j["broken_message"] = nlohmann::json(nullptr);
+  for (const SearchStep& step : steps_)
+    if (result.broken && step.load == *result.broken && !is_state(step.result.status)) j["broken_message"] = step.result.message;
+  j["last_held"] = nlohmann::json(nullptr);
+  for (const HeldState& h : held_)
+    if (result.held && h.load == *result.held && !h.beyond_limit) j["last_held"] = held_json(h, regions_);
+  folder_.write("breach.json", j.dump(2) + "\n");
+  for (const std::string& format : scenario_.output.figures) {
+    try {
+      draw_curves(format);
+    } catch (const std::exception& e) {
+      spdlog::warn("the breach curves could not be drawn: {}", e.what());
+    }
+  }
+}
+
+void BreachFiles::draw_curves(const std::string& format) const {
+  std::vector<HeldState> held = held_;
+  std::sort(held.begin(), held.end(), [](const HeldState& a, const HeldState& b) { return a.load < b.load; });
+  std::vector<double> broken;
+  for (const SearchStep& step : steps_)
+    if (!is_state(step.result.status)) broken.push_back(step.load);
+  output::LinePlotSpec k;
+  k.title = scenario_.title;
+  k.x_label = key_;
+  k.y_label = "K_eff / K_matrix";
+  k.y_log = true;
+  k.open_label = "beyond the limit";
+  k.marks_x = broken;
+  k.marks_label = "did not hold";
+  for (std::size_t r = 0; r < regions_.size(); ++r) {
+    output::LineSeries series{regions_[r], {}, {}, {}};
+    for (const HeldState& h : held)
+      if (h.conductivity[r]) {
+        series.x.push_back(h.load);
+        series.y.push_back(*h.conductivity[r]);
+        series.open.push_back(h.beyond_limit);
+      }
+    if (!series.x.empty()) k.series.push_back(std::move(series));
+  }
+  if (!k.series.empty()) output::render_line_plot(folder_.figures() / ("breach." + format), k);
+  output::LinePlotSpec w = k;
+  w.y_label = "largest fracture opening (mm)";
+  w.y_log = false;
+  w.series = {output::LineSeries{"largest opening", {}, {}, {}}};
+  for (const HeldState& h : held) {
+    w.series[0].x.push_back(h.load);
+    w.series[0].y.push_back(1e3 * h.largest_opening);
+    w.series[0].open.push_back(h.beyond_limit);
+  }
+  if (!w.series[0].x.empty()) output::render_line_plot(folder_.figures() / ("breach_opening." + format), w);
+}
+
+}  // namespace hydrodda::breach

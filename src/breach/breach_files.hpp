@@ -1,0 +1,58 @@
+#pragma once
+// What `hydrodda breach` writes into its folder, step by step (docs/breach.md): breach.csv,
+// steps/step_NNN.json, the ParaView series of the held states (time = the load), and at the
+// end breach.json, the curves and the figures of the last state that held.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "breach/coupled_stepper.hpp"
+#include "breach/load_search.hpp"
+#include "output/csv_table.hpp"
+#include "output/run_folder.hpp"
+#include "run/paraview_output.hpp"
+#include "scenario/scenario.hpp"
+
+namespace hydrodda::breach {
+
+// What a state that held measured, as breach.csv and the curves hold it.
+struct HeldState {
+  double load = 0.0;
+  bool beyond_limit = false;
+  std::vector<std::optional<double>> conductivity;  // K_eff/K_m per flow region
+  double largest_opening = 0.0;                     // m, over the fractures
+  std::vector<int> open_fractures;                  // ids
+  std::optional<double> limit_value;
+};
+
+class BreachFiles {
+ public:
+  BreachFiles(const output::RunFolder& folder, const scenario::Scenario& scenario, std::string key,
+              std::optional<Limit> limit);
+
+  void write_scenario(const std::string& text) const;
+  // A step's row (breach.csv written again), and for a state that held its summary and fields.
+  void add_step(const SearchStep& step, const CoupledStepper& stepper);
+  // The figures of the last state that held (the model at it), and last_held.json.
+  void write_last_held(double load, const CoupledStepper& stepper);
+  // breach.json and the curves.
+  void finish(const SearchResult& result, const std::string& verdict, const SearchSettings& settings);
+
+ private:
+  HeldState measure(const SearchStep& step, const CoupledStepper& stepper, const output::RunSummary& summary) const;
+  std::vector<std::string> row_of(const SearchStep& step, const std::optional<HeldState>& held) const;
+  void draw_curves(const std::string& format) const;
+
+  const output::RunFolder& folder_;
+  const scenario::Scenario& scenario_;
+  std::string key_;
+  std::optional<Limit> limit_;
+  std::vector<std::string> regions_;
+  output::CsvTable table_;
+  run::ParaviewOutput paraview_;
+  std::vector<SearchStep> steps_;
+  std::vector<HeldState> held_;  // in the order tried
+};
+
+}  // namespace hydrodda::breach
