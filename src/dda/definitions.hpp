@@ -31,6 +31,9 @@ struct BlockDefinition {
   Polygon polygon;  // simple, counter-clockwise, no repeated closing vertex
   int material = 0;
   bool fixed = false;
+  // Per edge (vertex k → k + 1): the joint type of the contacts against it (0: `joint`, i:
+  // joint_types[i − 1]); empty: 0 for every edge.
+  std::vector<int> edge_joints;
   std::array<double, 3> initial_stress{0.0, 0.0, 0.0};    // σxx, σyy, τxy (Pa)
   std::array<double, 3> initial_velocity{0.0, 0.0, 0.0};  // vx, vy (m/s), ω (rad/s)
 };
@@ -131,7 +134,8 @@ struct StressField {
 struct ModelDefinition {
   std::vector<BlockDefinition> blocks;
   std::vector<Material> materials;
-  Joint joint;
+  Joint joint;                    // type 0, the default
+  std::vector<Joint> joint_types; // types 1, 2, ...: a contact takes the type of its edge
   Settings settings;
   std::vector<FixedPoint> fixed_points;
   std::vector<PointLoad> point_loads;

@@ -36,9 +36,12 @@ std::string format_number(double v) {
 
 }  // namespace
 
+System::JointStrength System::strength_of(const Joint& j) {
+  return {std::tan(j.friction_angle_deg * std::numbers::pi / 180.0), j.cohesion, j.tensile_strength};
+}
+
 System::System(ModelDefinition def, std::unique_ptr<LinearSolver> solver)
     : materials_(std::move(def.materials)),
-      joint_(def.joint),
       settings_(def.settings),
       point_loads_(std::move(def.point_loads)),
       displacements_(std::move(def.displacements)),
@@ -79,6 +82,12 @@ System::System(ModelDefinition def, std::unique_ptr<LinearSolver> solver)
         0, 0;
     if (bd.fixed) blk.velocity.setZero();
     blk.material_centroid = blk.initial_centroid = blk.moments.centroid;
+    if (!bd.edge_joints.empty() && bd.edge_joints.size() != bd.polygon.size())
+      throw std::invalid_argument(name + "edge_joints needs one joint type per edge");
+    for (int type : bd.edge_joints)
+      if (type < 0 || type > static_cast<int>(def.joint_types.size()))
+        throw std::invalid_argument(name + "joint type index out of range");
+    edge_joints_.push_back(bd.edge_joints);
     for (Point p : blk.polygon) all.add(p);
     blocks_.push_back(std::move(blk));
   }
@@ -121,7 +130,8 @@ System::System(ModelDefinition def, std::unique_ptr<LinearSolver> solver)
                                ? settings_.penetration_tolerance
                                : 1e-4 * allowed_displacement_;
   penalty_ = settings_.penalty > 0 ? settings_.penalty : 50.0 * young_max * 1.0;
-  tan_friction_angle_ = std::tan(joint_.friction_angle_deg * std::numbers::pi / 180.0);
+  joints_.push_back(strength_of(def.joint));
+  for (const Joint& j : def.joint_types) joints_.push_back(strength_of(j));
   fixed_stiffness_ = 10.0 * penalty_;
   dt_ = settings_.time_step;
   vertex_forces_.resize(blocks_.size());
@@ -482,8 +492,9 @@ void System::add_contact_loads(std::size_t begin, std::size_t end, Eigen::Vector
       add_segment(f, c.dof_j, -penalty_ * c.shear0 * c.es_j);
     } else {
       // Sliding: Mohr–Coulomb friction f = N tan φ + c l against the sliding direction.
+      const JointStrength& joint = joint_of(c.key);
       const double friction =
-          (std::max(r.normal_force, 0.0) * tan_friction_angle_ + joint_.cohesion * c.length) * r.slide_sign;
+          (std::max(r.normal_force, 0.0) * joint.tan_friction + joint.cohesion * c.length) * r.slide_sign;
       add_segment(f, c.dof_i, -friction * c.es_i);
       add_segment(f, c.dof_j, -friction * c.es_j);
     }
@@ -498,7 +509,7 @@ Eigen::VectorXd System::friction_load_change(const std::vector<ActiveContact*>& 
     // The friction load −(N tan φ + c l) s es of assemble_contact_rhs, from N = from to N = to.
     const double change = (std::max(to[static_cast<Eigen::Index>(k)], 0.0) -
                            std::max(from[static_cast<Eigen::Index>(k)], 0.0)) *
-                          tan_friction_angle_ * c.record.slide_sign;
+                          joint_of(c.key).tan_friction * c.record.slide_sign;
     add_segment(f, c.dof_i, -change * c.es_i);
     add_segment(f, c.dof_j, -change * c.es_j);
   }
@@ -524,7 +535,8 @@ double System::compute_normal_force(const ActiveContact& c, double penetration) 
 }
 
 double System::compute_shear_strength(const ActiveContact& c, double normal_force) const {
-  return std::max(normal_force, 0.0) * tan_friction_angle_ + joint_.cohesion * c.length;
+  const JointStrength& joint = joint_of(c.key);
+  return std::max(normal_force, 0.0) * joint.tan_friction + joint.cohesion * c.length;
 }
 
 System::ContactForceExtent System::update_contact_forces(const Eigen::VectorXd& d) {
@@ -602,7 +614,7 @@ bool System::update_state(ActiveContact& c, const Eigen::VectorXd& d, double ban
     return false;
   }
   const double normal = compute_normal_force(c, pen);
-  if (normal < -joint_.tensile_strength * c.length - tension_allowance) {
+  if (normal < -joint_of(c.key).tensile_strength * c.length - tension_allowance) {
     r.state = ContactState::open;
     r.multiplier = 0.0;
     r.normal_force = 0.0;

@@ -239,7 +239,20 @@ class System {
   std::vector<Block> blocks_;
   std::vector<Material> materials_;
   std::vector<Eigen::Matrix3d> elasticity_;
-  Joint joint_;
+  // A joint type's strengths as the contact laws read them.
+  struct JointStrength {
+    double tan_friction = 0.0;
+    double cohesion = 0.0;          // Pa
+    double tensile_strength = 0.0;  // Pa
+  };
+  static JointStrength strength_of(const Joint& j);
+  std::vector<JointStrength> joints_;           // by type (ModelDefinition::joint, joint_types)
+  std::vector<std::vector<int>> edge_joints_;   // per block, per edge: the type; empty: 0
+  // The joint type of a contact: that of the edge its vertex touches.
+  const JointStrength& joint_of(const ContactKey& key) const {
+    const std::vector<int>& edges = edge_joints_[static_cast<std::size_t>(key.block_j)];
+    return joints_[edges.empty() ? 0 : static_cast<std::size_t>(edges[static_cast<std::size_t>(key.edge)])];
+  }
   Settings settings_;
   std::vector<TrackedPoint> fixed_points_;
   std::vector<PointLoad> point_loads_;  // point = current position
@@ -288,7 +301,6 @@ class System {
   double time_ = 0.0;
   double dt_ = 0.0;
   double penalty_ = 0.0;
-  double tan_friction_angle_ = 0.0;  // of the joints
   double fixed_stiffness_ = 0.0;
   double model_size_ = 0.0;
   double allowed_displacement_ = 0.0;

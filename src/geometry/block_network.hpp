@@ -23,6 +23,7 @@ struct TraceOrigin {
 struct FractureTrace {
   Segment2 segment;
   TraceOrigin origin;
+  int joint_type = 0;  // the joint type it is of (an index the caller keeps; 0: the default)
 };
 
 // A piece of a fracture between two blocks.

@@ -29,6 +29,7 @@ json format_fractures(const FractureSummary& f) {
                 {"max_shear", r.max_shear},
                 {"tip_opening_angle", r.tip_opening_angle}};
     if (r.set) row["set"] = *r.set;
+    if (!r.type.empty()) row["type"] = r.type;
     if (r.flow) row["flow"] = *r.flow;
     by_id[std::to_string(r.id)] = row;
     if (r.open_length > 0.0) {

@@ -75,6 +75,7 @@ struct FractureRow {
   std::string origin;           // "listed", "set", "file"
   std::optional<int> set;       // the joint set, for "set"
   int number = 0;
+  std::string type;             // its joint type: [joint.NAME]'s NAME, "joint" for [joint]
   double length = 0.0, open_length = 0.0, mean_aperture = 0.0, max_aperture = 0.0, hydraulic_aperture = 0.0,
          normal_stress = 0.0, max_shear = 0.0, tip_opening_angle = 0.0;
   std::optional<double> flow;   // coupled runs

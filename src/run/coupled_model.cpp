@@ -50,7 +50,8 @@ CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::option
   settings.permeability = make_permeability_model(s);
   // Left empty where no region fixes a permeability: one optional per element is 16 MB at a
   // million triangles.
-  if (std::any_of(s.flow->regions.begin(), s.flow->regions.end(),
+  if (s.any_joint_barrier() ||
+      std::any_of(s.flow->regions.begin(), s.flow->regions.end(),
                   [](const scenario::FlowRegion& r) { return r.permeability.has_value(); }))
     settings.fixed_permeability = find_fixed_permeability(s, mesh_);
   if (s.joint.hydraulic())

@@ -66,7 +66,7 @@ CoupledRecorder::CoupledRecorder(const RunContext& context, const CoupledModel& 
       meter_(make_fracture_meter(context.scenario)),
       joint_law_(make_joint_aperture_law(context.scenario)),
       flow_zones_(meter_ ? meter_->flow_zones(model.mesh()) : fractures::FractureMeter::FlowZones{}),
-      fractures_(context.folder, /*with_flow=*/true) {
+      fractures_(context.folder, /*with_flow=*/true, fracture_type_names(context.scenario)) {
   const scenario::Scenario& s = scenario_;
   checkpoint_.scenario_hash = output::hash_text(context.scenario_text);
   checkpoint_.scenario_file = std::filesystem::absolute(s.file).string();
@@ -243,7 +243,7 @@ output::RunSummary CoupledRecorder::summary() {
   output::RunSummary summary = model_.summary();
   summary.timings = model_.timings();
   if (fracture_state_) {
-    summary.fractures = summarise_fractures(*fracture_state_);
+    summary.fractures = summarise_fractures(*fracture_state_, fracture_type_names(scenario_));
     summary.fractures->refined_tips = refined_tips_;
     if (scenario_.mesh->refine_tips) summary.fractures->rounds = fractures::current_round(refined_tips_);
     const std::optional<fractures::WedgeTip> tip =

@@ -9,6 +9,7 @@
 
 #include "output/field_figure.hpp"
 #include "output/vtk_writer.hpp"
+#include "run/model_geometry.hpp"
 #include "run/paraview_output.hpp"
 
 namespace hydrodda::run {
@@ -20,7 +21,7 @@ namespace {
 
 std::vector<std::string> columns(bool with_flow) {
   std::vector<std::string> c{"step",          "time",          "fracture",     "origin",    "set",
-                             "number",        "length",        "open_length",  "open",      "mean_aperture",
+                             "number",        "type",          "length",        "open_length",  "open",      "mean_aperture",
                              "max_aperture",  "hydraulic_aperture", "normal_stress", "max_shear",
                              "tip_opening_angle"};
   if (with_flow) c.push_back("flow");
@@ -29,8 +30,23 @@ std::vector<std::string> columns(bool with_flow) {
 
 }  // namespace
 
-FractureOutput::FractureOutput(const output::RunFolder& folder, bool with_flow)
-    : folder_(folder), with_flow_(with_flow), table_(columns(with_flow)) {}
+// The name of fracture `id`'s joint type; empty where none is known.
+std::string type_of(const std::vector<std::string>& types, int id) {
+  return id >= 0 && id < static_cast<int>(types.size()) ? types[static_cast<std::size_t>(id)] : std::string();
+}
+
+FractureOutput::FractureOutput(const output::RunFolder& folder, bool with_flow, std::vector<std::string> types)
+    : folder_(folder), with_flow_(with_flow), types_(std::move(types)), table_(columns(with_flow)) {}
+
+std::vector<std::string> fracture_type_names(const scenario::Scenario& s) {
+  std::vector<std::string> names;
+  if (!s.geometry || s.geometry->domain.empty()) return names;
+  for (const geometry::FractureTrace& t : collect_fracture_traces(s)) {
+    const std::string& name = s.joint_type(t.joint_type).name;
+    names.push_back(name.empty() ? "joint" : name);
+  }
+  return names;
+}
 
 void FractureOutput::continue_from(int last_step, const std::vector<int>& written) {
   std::ifstream in(folder_.file("fractures.csv"));
@@ -56,6 +72,7 @@ void FractureOutput::add_rows(long long step, double time, const fractures::Frac
                                  fractures::origin_name(r.origin.source),
                                  from_set ? CsvTable::cell(static_cast<long long>(r.origin.set)) : "",
                                  CsvTable::cell(static_cast<long long>(r.origin.number)),
+                                 type_of(types_, r.id),
                                  CsvTable::cell(r.length),
                                  CsvTable::cell(r.open_length),
                                  CsvTable::cell(static_cast<long long>(r.open_length > 0.0 ? 1 : 0)),
@@ -95,7 +112,7 @@ void FractureOutput::write_series(int step, double time, const fractures::Fractu
   series_->add(time, name);
 }
 
-output::FractureSummary summarise_fractures(const fractures::FractureState& state) {
+output::FractureSummary summarise_fractures(const fractures::FractureState& state, const std::vector<std::string>& types) {
   output::FractureSummary summary;
   for (const fractures::FractureResult& r : state.fractures) {
     output::FractureRow row;
@@ -103,6 +120,7 @@ output::FractureSummary summarise_fractures(const fractures::FractureState& stat
     row.origin = fractures::origin_name(r.origin.source);
     if (r.origin.source == geometry::TraceSource::joint_set) row.set = r.origin.set;
     row.number = r.origin.number;
+    row.type = type_of(types, r.id);
     row.length = r.length;
     row.open_length = r.open_length;
     row.mean_aperture = r.mean_aperture;

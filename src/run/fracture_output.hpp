@@ -20,8 +20,9 @@ namespace hydrodda::run {
 
 class FractureOutput {
  public:
-  // `with_flow`: coupled runs, whose rows have the flow along each fracture.
-  FractureOutput(const output::RunFolder& folder, bool with_flow);
+  // `with_flow`: coupled runs, whose rows have the flow along each fracture. `types`: each
+  // fracture's joint type by id (fracture_type_names).
+  FractureOutput(const output::RunFolder& folder, bool with_flow, std::vector<std::string> types = {});
 
   // A continued run: keeps the rows fractures.csv has for steps up to `last_step` and lists
   // again the .vtu files an earlier part of the run wrote at `written` (time = step) that are
@@ -35,6 +36,7 @@ class FractureOutput {
  private:
   const output::RunFolder& folder_;
   bool with_flow_;
+  std::vector<std::string> types_;
   output::CsvTable table_;
   std::optional<output::PvdSeries> series_;
 };
@@ -46,8 +48,14 @@ struct FigureState {
   std::string status{};
 };
 
-// summary.json's `fractures` section from a step's results (docs/output.md).
-output::FractureSummary summarise_fractures(const fractures::FractureState& state);
+// Each fracture's joint type by id, as fractures.csv and summary.json name it: the NAME of its
+// [joint.NAME], "joint" for the default type [joint].
+std::vector<std::string> fracture_type_names(const scenario::Scenario& scenario);
+
+// summary.json's `fractures` section from a step's results (docs/output.md); `types` as
+// fracture_type_names gives them.
+output::FractureSummary summarise_fractures(const fractures::FractureState& state,
+                                            const std::vector<std::string>& types = {});
 
 // figures/apertures.* for each format output.figures asks for: the blocks as they are, each
 // fracture piece coloured by its mechanical aperture (mm), closed pieces thin and grey; titled

@@ -45,7 +45,8 @@ output::RunSummary run_mechanics(const RunContext& context) {
   ParaviewOutput paraview(context.folder, s.output.fields);
   const std::optional<fractures::FractureMeter> meter = make_fracture_meter(s);
   const hydro::JointApertureLaw joint_law = make_joint_aperture_law(s);
-  FractureOutput fractures(context.folder, /*with_flow=*/false);
+  const std::vector<std::string> fracture_types = fracture_type_names(s);
+  FractureOutput fractures(context.folder, /*with_flow=*/false, fracture_types);
   std::optional<fractures::FractureState> fracture_state;  // of the blocks as they are, when measured at this step
   // The blocks and fractures of the last output step: what the figure of a run that stops shows.
   struct OutputState {
@@ -136,7 +137,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
     throw stop(RunStatus::failed, unreached, describe_status_for_figures("failed", unreached));
 
   output::RunSummary summary = model.summary();
-  if (fracture_state) summary.fractures = summarise_fractures(*fracture_state);
+  if (fracture_state) summary.fractures = summarise_fractures(*fracture_state, fracture_types);
   // Mechanics alone has no coupling loop: `converged` says the run reached its end.
   summary.converged = true;
   summary.timings.push_back(

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include "dda/selection.hpp"
 #include "dda/support.hpp"
@@ -15,6 +16,7 @@
 #include "mesh/mesh_cache.hpp"
 #include "mesh/mesh_request.hpp"
 #include "mesh/spatial_order.hpp"
+#include "run/joint_barriers.hpp"
 #include "run/mesh_budget.hpp"
 #include "run/model_geometry.hpp"
 #include "hydro/permeability_law.hpp"
@@ -120,7 +122,13 @@ ModelGeometry build_and_log_geometry(const Scenario& s, GeometryWarnings warning
 
 std::vector<dda::BlockDefinition> blocks_of(const ModelGeometry& model) {
   std::vector<dda::BlockDefinition> blocks;
-  for (const geometry::Polygon& p : model.network.blocks) blocks.push_back({p, 0, false});
+  for (std::size_t b = 0; b < model.network.blocks.size(); ++b) {
+    dda::BlockDefinition block{model.network.blocks[b], 0, false};
+    // Each edge on a trace takes the trace's joint type; one on the domain boundary the default.
+    for (int fracture : model.network.edge_fractures[b])
+      block.edge_joints.push_back(fracture < 0 ? 0 : model.traces[static_cast<std::size_t>(fracture)].joint_type);
+    blocks.push_back(std::move(block));
+  }
   return blocks;
 }
 
@@ -214,6 +222,8 @@ mesh::MeshRequest make_mesh_request(const Scenario& s) {
   for (const geometry::FractureTrace& t : collect_fracture_traces(s))
     request.refinement_lines.push_back({t.segment.from, t.segment.to});
   for (const scenario::FlowRegion& r : s.flow->regions) request.regions.push_back({r.name, r.polygon});
+  // Joint barriers: strips the elements follow, after the flow regions so that they prevail.
+  for (const BarrierStrip& strip : find_barrier_strips(s)) request.regions.push_back({strip.region, strip.polygon});
   request.size = m.size;
   request.fracture_size = m.fracture_size;
   request.refine_distance = m.refine_distance;
@@ -259,6 +269,16 @@ std::vector<std::optional<double>> find_fixed_permeability(const Scenario& s, co
     if (!r->permeability) continue;
     for (int t : select_triangles_in(mesh, r->polygon))
       if (!fixed[t]) fixed[t] = *r->permeability;
+  }
+  // A joint barrier's strip prevails over the regions: its elements are those of its mesh
+  // region (joint_barriers.hpp).
+  if (!s.any_joint_barrier()) return fixed;
+  std::map<std::string, double> strip_permeability;
+  for (const BarrierStrip& strip : find_barrier_strips(s)) strip_permeability[strip.region] = strip.permeability;
+  for (int t = 0; t < mesh.triangle_count(); ++t) {
+    const int region = mesh.region[static_cast<std::size_t>(t)];
+    const auto k = strip_permeability.find(mesh.region_names[static_cast<std::size_t>(region)]);
+    if (k != strip_permeability.end()) fixed[t] = k->second;
   }
   return fixed;
 }
@@ -327,6 +347,8 @@ dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::B
   for (const scenario::MaterialDefinition& mat : s.materials)
     model.materials.push_back({mat.density.value_or(0.0), mat.young.value_or(0.0), mat.poisson.value_or(0.0)});
   model.joint = {s.joint.friction_angle, s.joint.cohesion, s.joint.tensile_strength};
+  for (const scenario::JointDefinition& j : s.joint_types)
+    model.joint_types.push_back({j.friction_angle, j.cohesion, j.tensile_strength});
 
   dda::Settings& settings = model.settings;
   settings.analysis = m.analysis;

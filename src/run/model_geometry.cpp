@@ -24,8 +24,12 @@ std::string plural(std::size_t count, const char* one, const char* many) {
 std::vector<FractureTrace> collect_fracture_traces(const scenario::Scenario& s) {
   const scenario::GeometryDefinition& g = *s.geometry;
   std::vector<FractureTrace> traces;
+  // A name that names no type is refused by the reader; the default type stands in for it here.
+  const auto type = [&](const std::string& name) { return std::max(0, s.joint_type_index(name)); };
   for (std::size_t i = 0; i < g.fractures.size(); ++i)
-    traces.push_back({{g.fractures[i].from, g.fractures[i].to}, {TraceSource::listed, -1, static_cast<int>(i)}});
+    traces.push_back({{g.fractures[i].from, g.fractures[i].to},
+                      {TraceSource::listed, -1, static_cast<int>(i)},
+                      i < g.fracture_joints.size() ? type(g.fracture_joints[i].name) : 0});
   for (std::size_t k = 0; k < g.joint_sets.size(); ++k) {
     const scenario::JointSetDefinition& d = g.joint_sets[k];
     geometry::JointSet set;
@@ -47,10 +51,10 @@ std::vector<FractureTrace> collect_fracture_traces(const scenario::Scenario& s) 
       throw scenario::ScenarioError({{s.file.string(), d.line, "geometry.joint_set.spacing", e.what()}});
     }
     for (std::size_t j = 0; j < generated.size(); ++j)
-      traces.push_back({generated[j], {TraceSource::joint_set, static_cast<int>(k), static_cast<int>(j)}});
+      traces.push_back({generated[j], {TraceSource::joint_set, static_cast<int>(k), static_cast<int>(j)}, type(d.joint.name)});
   }
   for (const scenario::FileFracture& f : g.file_fractures)
-    traces.push_back({{f.segment.from, f.segment.to}, {TraceSource::file, -1, f.line}});
+    traces.push_back({{f.segment.from, f.segment.to}, {TraceSource::file, -1, f.line}, type(f.joint)});
   return traces;
 }
 

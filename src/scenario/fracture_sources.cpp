@@ -67,6 +67,7 @@ struct ReadRow {
   bool header = false;
   std::optional<Segment> trace;
   std::string problem;
+  std::string joint;  // the fifth column, when given
 };
 
 ReadRow read_row(std::string_view line, bool may_be_header) {
@@ -78,7 +79,13 @@ ReadRow read_row(std::string_view line, bool may_be_header) {
   if (may_be_header && std::all_of(kinds.begin(), kinds.end(), [](FieldKind k) { return k == FieldKind::text; }))
     return {true, std::nullopt, {}};
   const std::string expected = "expected four numbers x1,y1,x2,y2, got " + quote_row(line);
-  if (fields.size() != 4 || std::any_of(kinds.begin(), kinds.end(), [](FieldKind k) {
+  // The optional fifth column names the trace's joint type ([joint.NAME]); empty: [joint].
+  std::string joint;
+  if (fields.size() == 5) {
+    joint = std::string(fields[4]);
+    kinds.pop_back();
+  }
+  if ((fields.size() != 4 && fields.size() != 5) || std::any_of(kinds.begin(), kinds.end(), [](FieldKind k) {
         return k == FieldKind::text || k == FieldKind::partial;
       }))
     return {false, std::nullopt, expected};
@@ -89,7 +96,7 @@ ReadRow read_row(std::string_view line, bool may_be_header) {
     if (kinds[i] == FieldKind::not_finite)
       return {false, std::nullopt, fmt::format("{}: {} = {} is not a finite number", expected, kColumns[i], fields[i])};
   }
-  return {false, Segment{{values[0], values[1]}, {values[2], values[3]}}, {}};
+  return {false, Segment{{values[0], values[1]}, {values[2], values[3]}}, {}, std::move(joint)};
 }
 
 // Refuses a fractures file of more rows than can be cut, or of traces that would cross into
@@ -131,9 +138,10 @@ void read_joint_sets(ReadContext& ctx, const TableView& g, GeometryDefinition& g
     ++index;
     const TableView j(ctx, *table, "geometry.joint_set",
                       {"angle", "spacing", "angle_spread", "spacing_spread", "length", "length_spread", "gap",
-                       "gap_spread", "offset", "region", "seed"});
+                       "gap_spread", "offset", "region", "seed", "joint"});
     JointSetDefinition set;
     set.line = j.line();
+    if (auto joint = j.string("joint")) set.joint = {*joint, j.line_of_key("joint")};
     for (const char* key : {"angle", "spacing"})
       if (!j.has(key)) ctx.error(j.line(), j.key_path(key), "required key is missing");
     set.angle = j.number("angle").value_or(0.0);
@@ -254,7 +262,7 @@ std::vector<FileFracture> parse_fracture_rows(std::string_view text, const std::
       error("the trace's two end points coincide");
       continue;
     }
-    rows.push_back({{from, to}, line_number});
+    rows.push_back({{from, to}, line_number, row.joint});
   }
   return rows;
 }

@@ -27,35 +27,78 @@ const MaterialDefinition* Scenario::find_material(std::string_view name) const {
   return nullptr;
 }
 
+int Scenario::joint_type_index(std::string_view name) const {
+  if (name.empty()) return 0;
+  for (std::size_t i = 0; i < joint_types.size(); ++i)
+    if (joint_types[i].name == name) return static_cast<int>(i) + 1;
+  return -1;
+}
+
+bool Scenario::any_joint_hydraulic() const {
+  return joint.hydraulic() ||
+         std::any_of(joint_types.begin(), joint_types.end(), [](const JointDefinition& j) { return j.hydraulic(); });
+}
+
+bool Scenario::any_joint_barrier() const {
+  return joint.barrier() ||
+         std::any_of(joint_types.begin(), joint_types.end(), [](const JointDefinition& j) { return j.barrier(); });
+}
+
 namespace {
+
+// A straight cut of the domain, `from` its file position: `key` names it in messages.
+bool check_fracture_trace(ReadContext& ctx, int line, const std::string& key, const Polygon& points,
+                          const Polygon& domain) {
+  if (points.size() != 2) {
+    ctx.error(line, key, "a fracture is a straight cut: two points [[x1, y1], [x2, y2]]");
+    return false;
+  }
+  if (points[0] == points[1]) {
+    ctx.error(line, key, "a fracture's two end points coincide");
+    return false;
+  }
+  if (!segment_meets_polygon(points[0], points[1], domain)) {
+    ctx.error(line, key, "the fracture lies wholly outside the domain");
+    return false;
+  }
+  return true;
+}
+
+// [[geometry.fracture]]: one trace with its joint type, after the `fractures` list.
+void read_fracture_tables(ReadContext& ctx, const TableView& g, GeometryDefinition& geometry) {
+  for (const toml::table* table : g.tables("fracture")) {
+    const TableView f(ctx, *table, "geometry.fracture", {"trace", "joint"});
+    TraceJoint joint;
+    if (auto name = f.string("joint")) joint = {*name, f.line_of_key("joint")};
+    if (!f.has("trace")) {
+      ctx.error(f.line(), "geometry.fracture.trace", "required key is missing");
+      continue;
+    }
+    const auto points = f.points("trace");
+    if (!points || !check_fracture_trace(ctx, f.line_of_key("trace"), "geometry.fracture.trace", *points, geometry.domain))
+      continue;
+    geometry.fractures.push_back({(*points)[0], (*points)[1]});
+    geometry.fracture_joints.push_back(std::move(joint));
+  }
+}
 
 void read_geometry(ReadContext& ctx, const TableView& root, Scenario& s) {
   const toml::table* t = root.table("geometry");
   if (!t) return;
   const TableView g(ctx, *t, "geometry",
-                    {"domain", "fractures", "welded", "initial_aperture", "block", "joint_set", "fractures_file",
-                     "min_block_area"});
+                    {"domain", "fractures", "fracture", "welded", "initial_aperture", "block", "joint_set",
+                     "fractures_file", "min_block_area"});
   GeometryDefinition geometry;
   if (auto domain = g.points("domain")) {
     geometry.domain = std::move(*domain);
     check_polygon(ctx, g.line_of_key("domain"), "geometry.domain", geometry.domain);
   }
   for (auto& [line_points, line] : g.point_lists("fractures")) {
-    const std::string key = "geometry.fractures";
-    if (line_points.size() != 2) {
-      ctx.error(line, key, "a fracture is a straight cut: two points [[x1, y1], [x2, y2]]");
-      continue;
-    }
-    if (line_points[0] == line_points[1]) {
-      ctx.error(line, key, "a fracture's two end points coincide");
-      continue;
-    }
-    if (!segment_meets_polygon(line_points[0], line_points[1], geometry.domain)) {
-      ctx.error(line, key, "the fracture lies wholly outside the domain");
-      continue;
-    }
+    if (!check_fracture_trace(ctx, line, "geometry.fractures", line_points, geometry.domain)) continue;
     geometry.fractures.push_back({line_points[0], line_points[1]});
+    geometry.fracture_joints.push_back({});
   }
+  read_fracture_tables(ctx, g, geometry);
   read_joint_sets(ctx, g, geometry);
   read_fractures_file(ctx, g, s.file, geometry);
   const bool has_traces = !geometry.fractures.empty() || !geometry.joint_sets.empty() || !geometry.file_fractures.empty();
@@ -192,36 +235,79 @@ void read_materials(ReadContext& ctx, const TableView& root, Scenario& s) {
   }
 }
 
+const std::vector<std::string> kJointKeys{"friction_angle",    "cohesion",         "tensile_strength",
+                                          "residual_aperture", "normal_stiffness", "max_closure",
+                                          "barrier_permeability", "barrier_width"};
+
+// The keys of one joint type over `joint` (the default type's values, or the built-in ones).
+void read_joint_keys(ReadContext& ctx, const TableView& j, JointDefinition& joint) {
+  joint.line = j.line();
+  joint.friction_angle = j.number_or("friction_angle", joint.friction_angle);
+  joint.cohesion = j.number_or("cohesion", joint.cohesion);
+  joint.tensile_strength = j.number_or("tensile_strength", joint.tensile_strength);
+  j.require("friction_angle", joint.friction_angle >= 0.0 && joint.friction_angle < 90.0,
+            "must lie in [0, 90) degrees");
+  j.require("cohesion", joint.cohesion >= 0.0, "must be >= 0");
+  j.require("tensile_strength", joint.tensile_strength >= 0.0, "must be >= 0");
+  if (j.has("residual_aperture")) joint.residual_aperture = j.number("residual_aperture");
+  if (j.has("normal_stiffness")) joint.normal_stiffness = j.number("normal_stiffness");
+  if (j.has("max_closure")) joint.max_closure = j.number("max_closure");
+  for (const char* key : {"residual_aperture", "normal_stiffness", "max_closure"})
+    if (j.has(key)) {
+      joint.hydraulic_line = j.line_of_key(key);
+      break;
+    }
+  if (j.has("residual_aperture") && joint.residual_aperture)
+    j.require("residual_aperture", *joint.residual_aperture >= 0.0 && *joint.residual_aperture < 1.0,
+              "must lie in [0, 1) m");
+  if (j.has("normal_stiffness") && joint.normal_stiffness)
+    j.require("normal_stiffness", *joint.normal_stiffness > 0.0, "must be > 0 (Pa/m)");
+  if (j.has("max_closure") && joint.max_closure)
+    j.require("max_closure", *joint.max_closure > 0.0 && *joint.max_closure < 1.0, "must lie in (0, 1) m");
+  // The Barton–Bandis closure needs both its stiffness and its largest closure.
+  if (joint.normal_stiffness && !joint.max_closure)
+    ctx.error(j.line_of_key("normal_stiffness"), j.key_path("max_closure"), "required with normal_stiffness");
+  if (joint.max_closure && !joint.normal_stiffness)
+    ctx.error(j.line_of_key("max_closure"), j.key_path("normal_stiffness"), "required with max_closure");
+  // A barrier is a layer: its permeability and its width, both or neither.
+  if (j.has("barrier_permeability")) joint.barrier_permeability = j.number("barrier_permeability");
+  if (j.has("barrier_width")) joint.barrier_width = j.number("barrier_width");
+  for (const char* key : {"barrier_permeability", "barrier_width"})
+    if (j.has(key)) {
+      joint.barrier_line = j.line_of_key(key);
+      break;
+    }
+  if (j.has("barrier_permeability") && joint.barrier_permeability)
+    j.require("barrier_permeability", *joint.barrier_permeability > 0.0, "must be > 0 (m2)");
+  if (j.has("barrier_width") && joint.barrier_width)
+    j.require("barrier_width", *joint.barrier_width > 0.0 && *joint.barrier_width < 1.0, "must lie in (0, 1) m");
+  if (joint.barrier_permeability && !joint.barrier_width)
+    ctx.error(joint.barrier_line, j.key_path("barrier_width"), "required with barrier_permeability");
+  if (joint.barrier_width && !joint.barrier_permeability)
+    ctx.error(joint.barrier_line, j.key_path("barrier_permeability"), "required with barrier_width");
+}
+
+// [joint], the default type, and its sub-tables [joint.NAME], each a type whose keys default
+// to [joint]'s values.
 void read_joint(ReadContext& ctx, const TableView& root, Scenario& s) {
   const toml::table* t = root.table("joint");
   if (!t) return;
-  const TableView j(ctx, *t, "joint",
-                    {"friction_angle", "cohesion", "tensile_strength", "residual_aperture", "normal_stiffness",
-                     "max_closure"});
-  s.joint.friction_angle = j.number_or("friction_angle", s.joint.friction_angle);
-  s.joint.cohesion = j.number_or("cohesion", s.joint.cohesion);
-  s.joint.tensile_strength = j.number_or("tensile_strength", s.joint.tensile_strength);
-  j.require("friction_angle", s.joint.friction_angle >= 0.0 && s.joint.friction_angle < 90.0,
-            "must lie in [0, 90) degrees");
-  j.require("cohesion", s.joint.cohesion >= 0.0, "must be >= 0");
-  j.require("tensile_strength", s.joint.tensile_strength >= 0.0, "must be >= 0");
-  JointDefinition& joint = s.joint;
-  joint.residual_aperture = j.number("residual_aperture");
-  joint.normal_stiffness = j.number("normal_stiffness");
-  joint.max_closure = j.number("max_closure");
-  for (const char* key : {"residual_aperture", "normal_stiffness", "max_closure"})
-    if (j.has(key) && joint.hydraulic_line == 0) joint.hydraulic_line = j.line_of_key(key);
-  if (joint.residual_aperture)
-    j.require("residual_aperture", *joint.residual_aperture >= 0.0 && *joint.residual_aperture < 1.0,
-              "must lie in [0, 1) m");
-  if (joint.normal_stiffness) j.require("normal_stiffness", *joint.normal_stiffness > 0.0, "must be > 0 (Pa/m)");
-  if (joint.max_closure) j.require("max_closure", *joint.max_closure > 0.0 && *joint.max_closure < 1.0,
-                                   "must lie in (0, 1) m");
-  // The Barton–Bandis closure needs both its stiffness and its largest closure.
-  if (joint.normal_stiffness && !joint.max_closure)
-    ctx.error(j.line_of_key("normal_stiffness"), "joint.max_closure", "required with joint.normal_stiffness");
-  if (joint.max_closure && !joint.normal_stiffness)
-    ctx.error(j.line_of_key("max_closure"), "joint.normal_stiffness", "required with joint.max_closure");
+  std::vector<std::string> allowed = kJointKeys;
+  std::vector<std::pair<std::string, const toml::table*>> named;
+  for (auto&& [key, value] : *t)
+    if (const toml::table* sub = value.as_table()) {
+      named.emplace_back(std::string(key.str()), sub);
+      allowed.emplace_back(key.str());
+    }
+  const TableView j(ctx, *t, "joint", allowed);
+  read_joint_keys(ctx, j, s.joint);
+  for (const auto& [name, table] : named) {
+    const TableView type(ctx, *table, "joint." + name, kJointKeys);
+    JointDefinition joint = s.joint;
+    joint.name = name;
+    read_joint_keys(ctx, type, joint);
+    s.joint_types.push_back(std::move(joint));
+  }
 }
 
 void read_mechanics(ReadContext& ctx, const TableView& root, Scenario& s) {

@@ -34,6 +34,12 @@ struct BlockDefinition {
   int line = 0;               // where it was defined, for messages
 };
 
+// The joint type a trace names (`joint = "NAME"`): empty for the default type, [joint].
+struct TraceJoint {
+  std::string name;
+  int line = 0;  // where it is named, for messages (a fractures file's row: its line there)
+};
+
 // A generated set of parallel joints ([[geometry.joint_set]]); see geometry/joint_sets.hpp.
 struct JointSetDefinition {
   double angle = 0.0;               // degrees counter-clockwise from +x
@@ -47,18 +53,23 @@ struct JointSetDefinition {
   std::optional<double> offset;     // m, first joint from the region's lowest corner; empty: spacing / 2
   Polygon region;                   // empty: the domain
   std::uint64_t seed = 0;
+  TraceJoint joint;
   int line = 0;
 };
 
-// A trace read from geometry.fractures_file, with its line there.
+// A trace read from geometry.fractures_file, with its line there and its optional fifth
+// column, the joint type.
 struct FileFracture {
   Segment segment;
   int line = 0;
+  std::string joint;
 };
 
 struct GeometryDefinition {
   Polygon domain;                    // empty when blocks are given one by one
+  // `fractures`, then the [[geometry.fracture]] tables, in file order.
   std::vector<Segment> fractures;
+  std::vector<TraceJoint> fracture_joints;  // per entry of `fractures`: its joint type
   std::vector<JointSetDefinition> joint_sets;
   std::optional<std::filesystem::path> fractures_file;  // resolved against the scenario's folder
   std::vector<FileFracture> file_fractures;             // its rows, in order
@@ -87,7 +98,11 @@ struct MaterialDefinition {
   double biot_coefficient = 1.0;
 };
 
+// A joint type: [joint] (the default, name empty) or [joint.NAME], whose keys default to
+// [joint]'s values.
 struct JointDefinition {
+  std::string name;
+  int line = 0;                   // the table's
   double friction_angle = 30.0;   // degrees
   double cohesion = 0.0;          // Pa
   double tensile_strength = 0.0;  // Pa
@@ -97,7 +112,15 @@ struct JointDefinition {
   std::optional<double> normal_stiffness;   // k_ni, Pa/m: Barton–Bandis closure, with max_closure
   std::optional<double> max_closure;        // V_m, m
   int hydraulic_line = 0;                   // where the first of them is, for messages
+  // A barrier across the joint (docs/flow.md, "Joints that hinder flow"): a layer of this
+  // permeability (m²) and width (m), both given or neither.
+  std::optional<double> barrier_permeability;
+  std::optional<double> barrier_width;
+  int barrier_line = 0;
   bool hydraulic() const { return residual_aperture || normal_stiffness || max_closure; }
+  bool barrier() const { return barrier_permeability && barrier_width; }
+  // The barrier's resistance across it per unit area, width / permeability (m⁻¹); 0: none.
+  double barrier_resistance() const { return barrier() ? *barrier_width / *barrier_permeability : 0.0; }
 };
 
 struct FixedPoint {
@@ -271,7 +294,8 @@ struct Scenario {
   std::optional<GeometryDefinition> geometry;
   std::vector<BoundarySegment> boundaries;
   std::vector<MaterialDefinition> materials;  // in file order
-  JointDefinition joint;
+  JointDefinition joint;                   // the default type, [joint]
+  std::vector<JointDefinition> joint_types;  // [joint.NAME], by name
   std::optional<MechanicsDefinition> mechanics;
   std::optional<FlowDefinition> flow;
   std::optional<MeshDefinition> mesh;
@@ -281,6 +305,14 @@ struct Scenario {
 
   const BoundarySegment* find_boundary(std::string_view name) const;
   const MaterialDefinition* find_material(std::string_view name) const;
+  // The joint type of a trace: 0 for [joint], i + 1 for joint_types[i]; -1 for a name that
+  // names none (refused by the reader).
+  int joint_type_index(std::string_view name) const;
+  // Type `index` as joint_type_index numbers them.
+  const JointDefinition& joint_type(int index) const { return index == 0 ? joint : joint_types.at(index - 1); }
+  int joint_type_count() const { return 1 + static_cast<int>(joint_types.size()); }
+  bool any_joint_hydraulic() const;
+  bool any_joint_barrier() const;
 };
 
 }  // namespace hydrodda::scenario

@@ -329,15 +329,7 @@ void validate_scenario(ReadContext& ctx, const TableView& root, Scenario& s) {
   check_static_support(ctx, root, s);
   check_initial_stress_gradient(ctx, s);
   check_initial_stress_across_model(ctx, s);
-  // Joint hydraulic apertures belong to the traces a domain is cut along, and are measured on
-  // the blocks' contacts.
-  if (s.joint.hydraulic() && !(s.geometry && !s.geometry->domain.empty()))
-    ctx.error(s.joint.hydraulic_line, "joint.residual_aperture",
-              "joint hydraulic apertures need a geometry.domain cut by fractures (joints are its traces)");
-  if (s.joint.hydraulic() && s.flow && !s.mechanics)
-    ctx.error(s.joint.hydraulic_line, "joint.residual_aperture",
-              "joint hydraulic apertures are measured on the blocks' contacts: they need a [mechanics] section "
-              "(a flow-only run keeps the porosity law)");
+  check_joint_types(ctx, s);
   if (s.mechanics) {
     for (const PrescribedDisplacement& d : s.mechanics->displacements)
       check_boundary_reference(ctx, s, d.line, "mechanics.displacement.boundary", d.boundary);
@@ -361,6 +353,67 @@ void validate_scenario(ReadContext& ctx, const TableView& root, Scenario& s) {
     if (!head_fixed)
       ctx.error(root.line_of_key("flow"), "flow.boundary",
                 "nothing fixes the head: give at least one boundary a 'head' or a 'pressure'");
+  }
+}
+
+namespace {
+
+std::string joint_type_names(const Scenario& s) {
+  if (s.joint_types.empty()) return "there are none: define one as [joint.NAME]";
+  std::string names;
+  for (const JointDefinition& j : s.joint_types) names += (names.empty() ? "" : ", ") + j.name;
+  return "the types are " + names;
+}
+
+// A trace's `joint = "NAME"` names a [joint.NAME].
+void check_joint_reference(ReadContext& ctx, const Scenario& s, const std::string& file, int line,
+                           const std::string& key, const std::string& name) {
+  if (s.joint_type_index(name) >= 0) return;
+  ctx.errors.push_back({file, line, key, fmt::format("joint type \"{}\" is not defined ({})", name, joint_type_names(s))});
+}
+
+}  // namespace
+
+void check_joint_types(ReadContext& ctx, const Scenario& s) {
+  if (s.geometry) {
+    const GeometryDefinition& g = *s.geometry;
+    for (const TraceJoint& j : g.fracture_joints)
+      check_joint_reference(ctx, s, ctx.file, j.line, "geometry.fracture.joint", j.name);
+    for (const JointSetDefinition& set : g.joint_sets)
+      check_joint_reference(ctx, s, ctx.file, set.joint.line, "geometry.joint_set.joint", set.joint.name);
+    if (g.fractures_file)
+      for (const FileFracture& f : g.file_fractures)
+        check_joint_reference(ctx, s, g.fractures_file->string(), f.line, "geometry.fractures_file", f.joint);
+  }
+  const bool cut_domain = s.geometry && !s.geometry->domain.empty();
+  for (int t = 0; t < s.joint_type_count(); ++t) {
+    const JointDefinition& j = s.joint_type(t);
+    const std::string table = j.name.empty() ? "joint" : "joint." + j.name;
+    // A named type's keys inherited from [joint] are reported once, there.
+    const bool own_hydraulic = t == 0 || j.hydraulic_line != s.joint.hydraulic_line;
+    const bool own_barrier = t == 0 || j.barrier_line != s.joint.barrier_line;
+    // Joint hydraulic apertures and barriers belong to the traces a domain is cut along; the
+    // apertures are measured on the blocks' contacts.
+    // The flow and the fracture results read one aperture law, [joint]'s, for every joint: a
+    // type's own would be ignored, so it is refused rather than left unread.
+    if (t > 0 && j.hydraulic() && own_hydraulic)
+      ctx.error(j.hydraulic_line, table + ".residual_aperture",
+                "a joint type's own hydraulic aperture is not supported yet: every joint conducts by [joint]'s "
+                "residual_aperture, normal_stiffness and max_closure; give them in [joint] only");
+    if (j.hydraulic() && own_hydraulic && !cut_domain)
+      ctx.error(j.hydraulic_line, table + ".residual_aperture",
+                "joint hydraulic apertures need a geometry.domain cut by fractures (joints are its traces)");
+    if (j.hydraulic() && own_hydraulic && s.flow && !s.mechanics)
+      ctx.error(j.hydraulic_line, table + ".residual_aperture",
+                "joint hydraulic apertures are measured on the blocks' contacts: they need a [mechanics] section "
+                "(a flow-only run keeps the porosity law)");
+    if (j.barrier() && own_barrier && s.mesh && s.mesh->file)
+      ctx.error(j.barrier_line, table + ".barrier_permeability",
+                "a joint's barrier is meshed as a strip the elements follow: it needs the mesh made from the scenario, "
+                "not mesh.file");
+    if (j.barrier() && own_barrier && !cut_domain)
+      ctx.error(j.barrier_line, table + ".barrier_permeability",
+                "a joint's barrier lies along the traces a geometry.domain is cut by: give the domain and its fractures");
   }
 }
 

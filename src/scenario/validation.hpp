@@ -38,4 +38,7 @@ bool polygons_overlap(const Polygon& a, const Polygon& b);
 // Cross-section checks, after every section has been read.
 void validate_scenario(ReadContext& context, const TableView& root, Scenario& scenario);
 
+// Every trace's joint type names a [joint.NAME]; joint apertures and barriers have traces to lie on.
+void check_joint_types(ReadContext& context, const Scenario& scenario);
+
 }  // namespace hydrodda::scenario

@@ -144,7 +144,7 @@ TEST(FracturesFile, BadRowsNameTheFileAndLine) {
 // A bad first row was taken for a header and skipped, where the same row on line 2 was an
 // error: a header is a row with no number in it.
 TEST(FracturesFile, AFirstRowWithANumberInItIsReadAsARow) {
-  for (const std::string bad : {"x,0,1,5", "nan,0,1,5", "1,inf,1,5", "1,0,1e400,5", "1 0 1 5", "1,0,1,5,x"}) {
+  for (const std::string bad : {"x,0,1,5", "nan,0,1,5", "1,inf,1,5", "1,0,1e400,5", "1 0 1 5", "1,0,1,5,x,y"}) {
     SCOPED_TRACE(bad);
     std::vector<Diagnostic> first, second;
     EXPECT_EQ(parse_fracture_rows(bad + "\n2,0,2,5\n", "dfn.csv", "geometry.fractures_file", first).size(), 1u);

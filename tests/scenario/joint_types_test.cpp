@@ -1,0 +1,166 @@
+// Joint types: [joint.NAME] tables over [joint], and the traces that name them.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "scenario/diagnostics.hpp"
+#include "scenario/reader.hpp"
+
+namespace hydrodda::scenario {
+namespace {
+
+// A unit square cut by one listed fracture and two typed ones, joints of two types.
+const std::string kTyped = R"(title = "joint types"
+[geometry]
+domain = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
+fractures = [[[0.0, 0.5], [1.0, 0.5]]]
+[[geometry.fracture]]
+trace = [[0.5, 0.0], [0.5, 1.0]]
+joint = "fault"
+[[geometry.fracture]]
+trace = [[0.25, 0.0], [0.25, 1.0]]
+[joint]
+friction_angle = 35.0
+cohesion = 1.0e5
+tensile_strength = 1.0e4
+[joint.fault]
+friction_angle = 20.0
+cohesion = 0.0
+[joint.clay]
+barrier_permeability = 1.0e-20
+barrier_width = 0.01
+[flow]
+[[flow.boundary]]
+name = "left"
+head = 1.0
+[[flow.region]]
+name = "rock"
+polygon = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
+permeability = 1.0e-15
+[mesh]
+size = 0.1
+)";
+
+std::vector<Diagnostic> errors_of(const std::string& text) {
+  try {
+    parse_scenario(text, "case.toml");
+  } catch (const ScenarioError& e) {
+    return e.diagnostics();
+  }
+  return {};
+}
+
+bool has_error(const std::vector<Diagnostic>& errors, const std::string& text) {
+  for (const Diagnostic& d : errors)
+    if (d.format().find(text) != std::string::npos) return true;
+  return false;
+}
+
+std::string dump(const std::vector<Diagnostic>& errors) {
+  std::string out;
+  for (const Diagnostic& d : errors) out += d.format() + "\n";
+  return out;
+}
+
+TEST(JointTypes, ANamedTypeTakesItsOwnKeysAndTheDefaultsOthers) {
+  const Scenario s = parse_scenario(kTyped, "case.toml");
+  ASSERT_EQ(s.joint_types.size(), 2u);
+  EXPECT_EQ(s.joint_type_index(""), 0);
+  // Types are numbered in the order the file's tables are read (by name).
+  EXPECT_EQ(s.joint_type_index("clay"), 1);
+  EXPECT_EQ(s.joint_type_index("fault"), 2);
+  EXPECT_EQ(s.joint_type_index("none"), -1);
+  const JointDefinition& fault = s.joint_type(2);
+  EXPECT_EQ(fault.name, "fault");
+  EXPECT_EQ(fault.friction_angle, 20.0);
+  EXPECT_EQ(fault.cohesion, 0.0);
+  EXPECT_EQ(fault.tensile_strength, 1.0e4);  // [joint]'s
+  EXPECT_FALSE(fault.barrier());
+  const JointDefinition& clay = s.joint_type(1);
+  EXPECT_EQ(clay.friction_angle, 35.0);
+  EXPECT_EQ(clay.cohesion, 1.0e5);
+  ASSERT_TRUE(clay.barrier());
+  EXPECT_DOUBLE_EQ(clay.barrier_resistance(), 0.01 / 1.0e-20);
+  EXPECT_TRUE(s.any_joint_barrier());
+  EXPECT_FALSE(s.joint.barrier());
+}
+
+TEST(JointTypes, TracesNameTheirTypeInFileOrder) {
+  const Scenario s = parse_scenario(kTyped, "case.toml");
+  const GeometryDefinition& g = *s.geometry;
+  ASSERT_EQ(g.fractures.size(), 3u);
+  ASSERT_EQ(g.fracture_joints.size(), 3u);
+  EXPECT_EQ(g.fracture_joints[0].name, "");       // the `fractures` list: the default type
+  EXPECT_EQ(g.fracture_joints[1].name, "fault");
+  EXPECT_EQ(g.fracture_joints[1].line, 7);
+  EXPECT_EQ(g.fracture_joints[2].name, "");
+  EXPECT_EQ(g.fractures[1].from, (Point{0.5, 0.0}));
+}
+
+TEST(JointTypes, ANameThatNamesNoTypeIsAnErrorAtItsLineAndKey) {
+  std::string text = kTyped;
+  text.replace(text.find("joint = \"fault\""), 15, "joint = \"faul\"");
+  const auto errors = errors_of(text);
+  EXPECT_TRUE(has_error(errors, "case.toml:7: geometry.fracture.joint: joint type \"faul\" is not defined (the types are "
+                                "clay, fault)"))
+      << dump(errors);
+  text.replace(text.find("[joint]"), 0, "[[geometry.joint_set]]\nangle = 0.0\nspacing = 0.3\njoint = \"shear\"\n");
+  EXPECT_TRUE(has_error(errors_of(text), "case.toml:13: geometry.joint_set.joint: joint type \"shear\" is not defined"))
+      << dump(errors_of(text));
+}
+
+TEST(JointTypes, ABarrierNeedsBothItsKeys) {
+  std::string text = kTyped;
+  text.replace(text.find("barrier_width = 0.01"), 20, "");
+  EXPECT_TRUE(has_error(errors_of(text), "case.toml:18: joint.clay.barrier_width: required with barrier_permeability"))
+      << dump(errors_of(text));
+  text = kTyped;
+  text.replace(text.find("barrier_width = 0.01"), 20, "barrier_width = -1.0");
+  EXPECT_TRUE(has_error(errors_of(text), "joint.clay.barrier_width: must lie in (0, 1) m")) << dump(errors_of(text));
+}
+
+TEST(JointTypes, AFractureTableNeedsATraceOfTwoPoints) {
+  std::string text = kTyped;
+  const std::string trace = "trace = [[0.25, 0.0], [0.25, 1.0]]";
+  text.replace(text.find(trace), trace.size(), "trace = [[0.25, 0.0]]");
+  EXPECT_TRUE(has_error(errors_of(text), "geometry.fracture.trace: a fracture is a straight cut")) << dump(errors_of(text));
+}
+
+TEST(JointTypes, AFracturesFileRowNamesItsTypeInAFifthColumn) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("hydrodda-joint-types-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "dfn.csv") << "x1,y1,x2,y2,joint\n0.0,0.75,1.0,0.75,fault\n0.75,0.0,0.75,1.0\n0.1,0.0,0.1,1.0,slip\n";
+  std::string text = kTyped;
+  text.replace(text.find("[[geometry.fracture]]"), 0, "fractures_file = \"dfn.csv\"\n");
+  std::ofstream(dir / "case.toml") << text;
+  std::vector<Diagnostic> errors;
+  try {
+    read_scenario(dir / "case.toml");
+  } catch (const ScenarioError& e) {
+    errors = e.diagnostics();
+  }
+  fs::remove_all(dir);
+  ASSERT_EQ(errors.size(), 1u) << dump(errors);
+  EXPECT_TRUE(has_error(errors, "dfn.csv:4: geometry.fractures_file: joint type \"slip\" is not defined")) << dump(errors);
+}
+
+}  // namespace
+}  // namespace hydrodda::scenario
+
+namespace hydrodda::scenario {
+namespace {
+
+// The flow reads one aperture law, [joint]'s: a type's own is refused, not ignored.
+TEST(JointTypes, ATypesOwnHydraulicApertureIsRefusedNotIgnored) {
+  std::string text = kTyped;
+  text.replace(text.find("cohesion = 0.0\n"), 0, "residual_aperture = 5.0e-5\n");
+  EXPECT_TRUE(has_error(errors_of(text), "case.toml:16: joint.fault.residual_aperture: a joint type's own hydraulic "
+                                         "aperture is not supported yet"))
+      << dump(errors_of(text));
+}
+
+}  // namespace
+}  // namespace hydrodda::scenario
