@@ -21,10 +21,11 @@ namespace {
 
 std::vector<std::string> columns(bool with_flow) {
   std::vector<std::string> c{"step",          "time",          "fracture",     "origin",    "set",
-                             "number",        "type",          "length",        "open_length",  "open",      "mean_aperture",
+                             "number",        "length",        "open_length",  "open",      "mean_aperture",
                              "max_aperture",  "hydraulic_aperture", "normal_stress", "max_shear",
                              "tip_opening_angle"};
   if (with_flow) c.push_back("flow");
+  c.push_back("type");  // last, so that the columns before it keep their places
   return c;
 }
 
@@ -72,7 +73,6 @@ void FractureOutput::add_rows(long long step, double time, const fractures::Frac
                                  fractures::origin_name(r.origin.source),
                                  from_set ? CsvTable::cell(static_cast<long long>(r.origin.set)) : "",
                                  CsvTable::cell(static_cast<long long>(r.origin.number)),
-                                 type_of(types_, r.id),
                                  CsvTable::cell(r.length),
                                  CsvTable::cell(r.open_length),
                                  CsvTable::cell(static_cast<long long>(r.open_length > 0.0 ? 1 : 0)),
@@ -83,6 +83,7 @@ void FractureOutput::add_rows(long long step, double time, const fractures::Frac
                                  CsvTable::cell(r.max_shear),
                                  CsvTable::cell(r.tip_opening_angle)};
     if (with_flow_) row.push_back(r.flow ? CsvTable::cell(*r.flow) : "");
+    row.push_back(type_of(types_, r.id));
     table_.add_row(row);
   }
   folder_.write("fractures.csv", table_.text());

@@ -266,9 +266,9 @@ void read_joint_keys(ReadContext& ctx, const TableView& j, JointDefinition& join
     j.require("max_closure", *joint.max_closure > 0.0 && *joint.max_closure < 1.0, "must lie in (0, 1) m");
   // The Barton–Bandis closure needs both its stiffness and its largest closure.
   if (joint.normal_stiffness && !joint.max_closure)
-    ctx.error(j.line_of_key("normal_stiffness"), j.key_path("max_closure"), "required with normal_stiffness");
+    ctx.error(j.line_of_key("normal_stiffness"), j.key_path("max_closure"), "required with " + j.key_path("normal_stiffness"));
   if (joint.max_closure && !joint.normal_stiffness)
-    ctx.error(j.line_of_key("max_closure"), j.key_path("normal_stiffness"), "required with max_closure");
+    ctx.error(j.line_of_key("max_closure"), j.key_path("normal_stiffness"), "required with " + j.key_path("max_closure"));
   // A barrier is a layer: its permeability and its width, both or neither.
   if (j.has("barrier_permeability")) joint.barrier_permeability = j.number("barrier_permeability");
   if (j.has("barrier_width")) joint.barrier_width = j.number("barrier_width");

@@ -41,10 +41,10 @@ TEST(FractureOutput, FlowAlongTheFractureIsTheBoundaryFlow) {
   ASSERT_GE(history.size(), 2u);
   ASSERT_EQ(fractures.size(), history.size());  // one fracture: one row per pass
   const auto& header = fractures[0];
-  EXPECT_EQ(header, (std::vector<std::string>{"step", "time", "fracture", "origin", "set", "number", "type", "length",
+  EXPECT_EQ(header, (std::vector<std::string>{"step", "time", "fracture", "origin", "set", "number", "length",
                                               "open_length", "open", "mean_aperture", "max_aperture",
                                               "hydraulic_aperture", "normal_stress", "max_shear", "tip_opening_angle",
-                                              "flow"}));
+                                              "flow", "type"}));
   const int top = column(history[0], "flow_top");
   for (std::size_t k = 1; k < fractures.size(); ++k) {
     const auto& row = fractures[k];
