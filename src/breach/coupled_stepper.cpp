@@ -169,7 +169,7 @@ output::RunSummary CoupledStepper::summary() const {
   output::RunSummary summary = model_->summary();
   summary.converged = true;
   if (const std::optional<fractures::FractureState> state = measure_fractures())
-    summary.fractures = run::summarise_fractures(*state);
+    summary.fractures = run::summarise_fractures(*state, run::fracture_type_names(scenario()));
   return summary;
 }
 
