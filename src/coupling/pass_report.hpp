@@ -52,6 +52,17 @@ struct PassReport {
   // Not converged and some blocks escape (farthest first): no equilibrium to converge to.
   std::vector<EscapingBlock> escaping;
   int growing_passes = 0;         // passes in a row whose change grew
+  // What moved in the pass, to tell a loop whose contacts chatter from one still on its way
+  // (docs/coupling.md, "Contacts that chatter"): the contacts whose state (open, locked,
+  // sliding) at the pass's end differs from its start (a contact that appeared or went
+  // counts); the joint crossings whose gauge read open at one end of the pass and closed at
+  // the other; the largest change of a fluid force on a vertex against the largest fluid force;
+  // the most open–close iterations a DDA step of the pass took, and how often its steps were cut.
+  int contact_state_changes = 0;
+  int joint_crossings_switched = 0;
+  double fluid_load_change = 1.0;
+  int most_open_close_iterations = 0;
+  int step_cuts = 0;
   // Seconds per phase in this pass.
   double porosity_seconds = 0.0, flow_seconds = 0.0, forces_seconds = 0.0, mechanics_seconds = 0.0;
 };

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "coupling/local_aperture.hpp"
+#include "coupling/pass_changes.hpp"
 #include "hydro/element_pressure.hpp"
 #include "numerics/aitken.hpp"
 
@@ -152,6 +153,8 @@ std::vector<Point> StaggeredLoop::block_displacements() const {
 PassReport StaggeredLoop::run_pass() {
   PassReport report;
   report.iteration = ++iteration_;
+  // The contacts as the last pass left them, to count which this one changes.
+  const std::vector<dda::ContactInfo> contacts_before = mechanics_.contacts();
   pass_start_.emplace();
   pass_start_->kept_factor = darcy_.kept_factor();
   pass_start_->kept_factor_single_precision = darcy_.kept_factor_in_single_precision();
@@ -211,6 +214,7 @@ PassReport StaggeredLoop::run_pass() {
   if (report.load_factor < 1.0)
     for (std::vector<Point>& block : forces)
       for (Point& f : block) f = report.load_factor * f;
+  report.fluid_load_change = relative_load_change(forces, last_mechanics_.vertex_forces);
   mechanics_.set_vertex_forces(std::move(forces));
   // A run that starts in its in-situ stress: the faces take their share (1 − α) p of the first
   // pass's pressure, which the contacts and rollers then need not carry, so that they start in
@@ -225,6 +229,12 @@ PassReport StaggeredLoop::run_pass() {
   report.forces_seconds = seconds_since(start);
 
   step_mechanics(report);
+  report.contact_state_changes = count_contact_state_changes(contacts_before, mechanics_.contacts());
+  if (joints_)
+    report.joint_crossings_switched =
+        count_switched(joint_apertures_,
+                       joints_->apertures(current_blocks(), mechanics_.contacts(), mechanics_.penetration_tolerance()),
+                       joints_->law().at_zero_stress());
   measure_convergence(report, unrelaxed_head_change);
   finish_pass(report);
   return report;
@@ -253,6 +263,8 @@ void StaggeredLoop::step_mechanics(PassReport& report) {
     }
     try {
       const dda::StepReport step = mechanics_.step();
+      report.most_open_close_iterations = std::max(report.most_open_close_iterations, step.open_close_iterations);
+      report.step_cuts += step.retries;
       at_rest = mechanics_.is_at_rest(step);
       report.full_time_step = mechanics_.ran_at_full_time_step(step);
       report.shortest_time_step = std::min(report.shortest_time_step, step.time_step);

@@ -27,7 +27,9 @@ std::vector<std::string> make_history_columns(const scenario::Scenario& s) {
     columns.push_back("region_flow_" + r.name);
     columns.push_back("region_conductivity_" + r.name);
   }
-  columns.insert(columns.end(), {"head_change_two_passes", "relaxation", "load_factor"});
+  columns.insert(columns.end(), {"head_change_two_passes", "relaxation", "load_factor", "contact_state_changes",
+                                 "joint_crossings_switched", "fluid_load_change", "most_open_close_iterations",
+                                 "step_cuts"});
   return columns;
 }
 
@@ -137,7 +139,11 @@ void CoupledRecorder::add_history_row(const coupling::PassReport& r) {
     row.push_back(region && region->effective_conductivity ? CsvTable::cell(*region->effective_conductivity) : "");
   }
   row.insert(row.end(), {CsvTable::cell(r.head_change_two_passes), CsvTable::cell(r.relaxation),
-                         CsvTable::cell(r.load_factor)});
+                         CsvTable::cell(r.load_factor), CsvTable::cell(static_cast<long long>(r.contact_state_changes)),
+                         CsvTable::cell(static_cast<long long>(r.joint_crossings_switched)),
+                         CsvTable::cell(r.fluid_load_change),
+                         CsvTable::cell(static_cast<long long>(r.most_open_close_iterations)),
+                         CsvTable::cell(static_cast<long long>(r.step_cuts))});
   history_.add_row(row);
   checkpoint_.history.push_back(row);
   context_.folder.write("history.csv", history_.text());

@@ -244,8 +244,9 @@ std::string describe_non_convergence(const Round& round) {
   const scenario::Scenario& s = round.context.scenario;
   const CoupledRecorder& recorder = round.recorder;
   const ConvergenceHistory convergence = read_convergence(recorder.history_rows(), s.coupling.tolerance);
-  std::vector<double> two_passes;  // history.csv's third column from the end
-  for (const std::vector<std::string>& row : recorder.history_rows()) two_passes.push_back(std::stod(row[row.size() - 3]));
+  std::vector<double> two_passes;  // history.csv's head_change_two_passes
+  for (const std::vector<std::string>& row : recorder.history_rows())
+    two_passes.push_back(std::stod(row[row.size() - CoupledRecorder::kTwoPassesFromEnd]));
   const coupling::ConvergenceDiagnosis why =
       coupling::diagnose_non_convergence(convergence.head_change, convergence.displacement_change, two_passes,
                                          s.coupling.tolerance,
