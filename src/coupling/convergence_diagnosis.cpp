@@ -120,6 +120,18 @@ std::string unsettled_advice(const LoopAsRun& loop) {
          "state under this load";
 }
 
+// Blocks that no pass brought to rest: no pass's fluid load has an equilibrium where they are.
+std::string describe_never_at_rest(int passes, const std::string& name, const std::string& level) {
+  return "the blocks came to rest in none of the last " + std::to_string(passes) +
+         " passes (each ran its mechanics.steps and its settling steps with them still moving; the " + name +
+         " change near " + level +
+         "): under each pass's fluid load they have no equilibrium, and the loop has not reached the state where the "
+         "load that moves them falls away (blocks lifted by a seepage past the critical gradient float only where the "
+         "load falls as they rise; a jacked joint holds only where its pressure falls as it opens). The state written "
+         "is the last pass's, with the blocks still moving; an acceleration of the heads does not see where the blocks "
+         "are: follow them in measure.csv and history.csv's largest_opening";
+}
+
 }  // namespace
 
 // The median over the passes from `first` of two_back / change: small when the heads keep
@@ -155,6 +167,8 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
   const bool swinging = two_states || alternation(last) >= 0.6;
   if (!d.head_failed && !d.displacement_failed) d.behaviour = NonConvergence::not_counted;
   else if (head_change.size() < 4) d.behaviour = NonConvergence::too_few_passes;
+  else if (loop.settling && loop.passes_not_at_rest >= std::min<int>(kPassesNotAtRest, head_change.size() - 1))
+    d.behaviour = NonConvergence::never_at_rest;
   else if (d.period > 0) d.behaviour = NonConvergence::oscillating;
   else if (last.size() >= 4 && swinging && d.rate > 0.95) d.behaviour = NonConvergence::oscillating;
   else if (d.rate > 1.05) d.behaviour = NonConvergence::diverging;
@@ -181,12 +195,16 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
                " passes, too few to tell how the loop goes (the " + name + " change at " + level +
                "): raise coupling.max_iterations";
       break;
+    case NonConvergence::never_at_rest:
+      d.text = describe_never_at_rest(loop.passes_not_at_rest, name, level);
+      break;
     case NonConvergence::oscillating:
       // Two states only where the heads come back to those of two passes before; a norm that
       // rises and falls by turns may come back every third pass or not at all.
       d.text = norms + " stayed above the tolerance: the loop oscillates (the " + name + " change near " + level +
                (d.period > 2   ? ", coming back to the same values every " + std::to_string(d.period) + " passes"
-                : two_states   ? std::string(", the blocks swinging between two states pass after pass")
+                : two_states   ? std::string(", the blocks swinging between two states pass after pass; the state "
+                                             "written is the last pass's, one of the two")
                 : d.period == 2 ? std::string(", coming back to the same values every 2 passes")
                                 : std::string(", rising and falling by turns")) +
                "); " + unsettled_advice(loop);

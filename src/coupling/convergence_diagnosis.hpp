@@ -15,6 +15,7 @@ enum class NonConvergence {
   diverging,         // rising
   erratic,           // jumping from pass to pass more than any steady trend explains
   too_few_passes,    // fewer than four passes: too few to tell
+  never_at_rest,     // the blocks came to rest in none of the last passes (settling passes)
   not_counted,       // both norms under the tolerance at the last pass, which could not count
 };
 
@@ -46,13 +47,20 @@ struct ConvergenceDiagnosis {
 //   fitted trend (its rate then predicts nothing); drifting when r < 0.95 but log c lies nearer a line in log k than in
 //   k with a slope above −2 (it falls only as a power of the pass k); still converging when
 //   r < 0.95 otherwise; drifting otherwise.
+// never at rest as above (kPassesNotAtRest);
 // `loop` is the loop as run: the advice names an acceleration only to a loop that had none,
 // settling passes only to a loop whose passes did not settle, and a relaxation below the one it had.
 struct LoopAsRun {
   std::string_view acceleration = "none";  // coupling.acceleration: "none", "aitken", "anderson"
   double relaxation = 1.0;                 // coupling.relaxation
   bool settling = false;                   // coupling.settle
+  int passes_not_at_rest = 0;              // the last passes in a row that ended with the blocks moving
 };
+// With settling passes, the blocks came to rest in none of the last kPassesNotAtRest passes
+// (or in none of the passes after the first, when fewer were run): no pass reached the
+// equilibrium of its fluid load, so the norms measure how far the blocks creep in a pass, not
+// how far the loop is from a fixed point. Taken after "too few passes", before every other rule.
+inline constexpr int kPassesNotAtRest = 5;
 ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_change,
                                               const std::vector<double>& displacement_change,
                                               const std::vector<double>& head_change_two_passes, double tolerance,

@@ -29,7 +29,7 @@ std::vector<std::string> make_history_columns(const scenario::Scenario& s) {
   }
   columns.insert(columns.end(), {"head_change_two_passes", "relaxation", "load_factor", "contact_state_changes",
                                  "joint_crossings_switched", "fluid_load_change", "most_open_close_iterations",
-                                 "step_cuts"});
+                                 "step_cuts", "at_rest"});
   return columns;
 }
 
@@ -143,7 +143,8 @@ void CoupledRecorder::add_history_row(const coupling::PassReport& r) {
                          CsvTable::cell(static_cast<long long>(r.joint_crossings_switched)),
                          CsvTable::cell(r.fluid_load_change),
                          CsvTable::cell(static_cast<long long>(r.most_open_close_iterations)),
-                         CsvTable::cell(static_cast<long long>(r.step_cuts))});
+                         CsvTable::cell(static_cast<long long>(r.step_cuts)),
+                         CsvTable::cell(static_cast<long long>(r.at_rest ? 1 : 0))});
   history_.add_row(row);
   checkpoint_.history.push_back(row);
   context_.folder.write("history.csv", history_.text());

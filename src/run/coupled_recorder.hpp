@@ -62,8 +62,8 @@ class CoupledRecorder final : public coupling::PassObserver {
   bool last_pass_cut_short() const { return last_pass_cut_short_; }
   bool last_pass_moving() const { return last_pass_moving_; }
   // Where history.csv's head_change_two_passes stands, counted from the row's end (1: the last):
-  // before relaxation, load_factor and the pass's five changes.
-  static constexpr std::size_t kTwoPassesFromEnd = 8;
+  // before relaxation, load_factor, the pass's five changes and at_rest (the last, 1 or 0).
+  static constexpr std::size_t kTwoPassesFromEnd = 9;
   double shortest_time_step() const { return shortest_time_step_; }
 
   // The fractures as the model's blocks are now (measured when not yet), or null for a

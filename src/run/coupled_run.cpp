@@ -245,21 +245,27 @@ std::string describe_non_convergence(const Round& round) {
   const CoupledRecorder& recorder = round.recorder;
   const ConvergenceHistory convergence = read_convergence(recorder.history_rows(), s.coupling.tolerance);
   std::vector<double> two_passes;  // history.csv's head_change_two_passes
-  for (const std::vector<std::string>& row : recorder.history_rows())
+  int passes_not_at_rest = 0;      // the last passes in a row whose at_rest (the last column) is 0
+  for (const std::vector<std::string>& row : recorder.history_rows()) {
     two_passes.push_back(std::stod(row[row.size() - CoupledRecorder::kTwoPassesFromEnd]));
+    passes_not_at_rest = row.back() == "0" ? passes_not_at_rest + 1 : 0;
+  }
   const coupling::ConvergenceDiagnosis why =
       coupling::diagnose_non_convergence(convergence.head_change, convergence.displacement_change, two_passes,
                                          s.coupling.tolerance,
                                          {.acceleration = scenario::spell(s.coupling.acceleration),
                                           .relaxation = s.coupling.relaxation,
-                                          .settling = s.coupling.settle});
+                                          .settling = s.coupling.settle,
+                                          .passes_not_at_rest = passes_not_at_rest});
   std::string message = fmt::format("the coupling loop did not converge in {} iterations (tolerance {:g}): {}",
                                     s.coupling.max_iterations, s.coupling.tolerance, why.text);
-  if (why.behaviour == coupling::NonConvergence::drifting || why.behaviour == coupling::NonConvergence::diverging)
+  const bool never_at_rest = why.behaviour == coupling::NonConvergence::never_at_rest;
+  if (why.behaviour == coupling::NonConvergence::drifting || why.behaviour == coupling::NonConvergence::diverging ||
+      never_at_rest)
     message += "; farthest from where they started: " + describe_farthest(round.model.loop().block_displacements());
   if (recorder.last_pass_cut_short())
     message += "; in the last pass " + describe_cut_steps(recorder.shortest_time_step(), s.mechanics->time_step);
-  if (recorder.last_pass_moving())
+  if (recorder.last_pass_moving() && !never_at_rest)  // else the diagnosis said so
     message += "; in the last pass the blocks still moved after its DDA steps and the settle steps "
                "(coupling.settle)";
   return message;
@@ -319,7 +325,11 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
   }
   const output::RunSummary summary = summarise_round(round);
   context.write_summary(summary);  // the run's result is on disk before the figures are drawn
-  draw_round_figures(round, summary.converged ? "" : fmt::format("not converged after {} passes", model.iterations()));
+  // An unconverged run's figures show its last pass; one whose blocks were still moving says so.
+  draw_round_figures(round, summary.converged             ? ""
+                            : recorder.last_pass_moving() ? fmt::format("not converged after {} passes, the blocks "
+                                                                        "still moving", model.iterations())
+                                                          : fmt::format("not converged after {} passes", model.iterations()));
   return {summary, {}, {}};
 }
 

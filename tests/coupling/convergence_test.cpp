@@ -265,5 +265,38 @@ TEST(NonConvergence, NormsUnderTheToleranceAtAPassThatCouldNotCountAreNotATrend)
   EXPECT_EQ(d.text.find("drift"), std::string::npos) << d.text;
 }
 
+// The column of coupled_upward_seepage_column.toml at 1.02 of its critical gradient (measured):
+// with settling passes, it came to rest in none of its passes and its displacement change rose
+// and fell by turns near 0.1. Not an oscillation between equilibria, where an acceleration of
+// the heads might help (it made the column diverge), but a load with no equilibrium where the
+// blocks are. Only the last passes in a row count: one pass at rest among them is not this.
+TEST(NonConvergence, BlocksThatNoPassBringsToRestAreNamedSoBeforeAnyTrend) {
+  std::vector<double> head{1.0}, displacement{1.0}, two_back{1.0, 1.0};
+  for (int k = 2; k <= 30; ++k) {
+    head.push_back(k % 2 == 0 ? 0.003 : 0.005);
+    displacement.push_back(k % 2 == 0 ? 0.07 : 0.11);
+    if (k > 2) two_back.push_back(0.002);
+  }
+  const ConvergenceDiagnosis d =
+      diagnose_non_convergence(head, displacement, two_back, 1e-4, {.settling = true, .passes_not_at_rest = 29});
+  EXPECT_EQ(d.behaviour, NonConvergence::never_at_rest);
+  EXPECT_NE(d.text.find("the blocks came to rest in none of the last 29 passes"), std::string::npos) << d.text;
+  EXPECT_NE(d.text.find("the displacement change near 0.07"), std::string::npos) << d.text;
+  EXPECT_EQ(d.text.find("try coupling.acceleration"), std::string::npos) << d.text;
+  // Four passes in a row are not enough; nor are passes of fixed steps, which never settle.
+  EXPECT_EQ(diagnose_non_convergence(head, displacement, two_back, 1e-4, {.settling = true, .passes_not_at_rest = 4})
+                .behaviour,
+            NonConvergence::oscillating);
+  EXPECT_EQ(diagnose_non_convergence(head, displacement, two_back, 1e-4, {.settling = false, .passes_not_at_rest = 29})
+                .behaviour,
+            NonConvergence::oscillating);
+  // A run of four passes whose last three ended moving: all it could show.
+  const std::vector<double> short_head{1.0, 0.01, 0.02, 0.01}, short_two_back{1.0, 1.0, 0.001, 0.002};
+  EXPECT_EQ(diagnose_non_convergence(short_head, short_head, short_two_back, 1e-4,
+                                     {.settling = true, .passes_not_at_rest = 3})
+                .behaviour,
+            NonConvergence::never_at_rest);
+}
+
 }  // namespace
 }  // namespace hydrodda::coupling
