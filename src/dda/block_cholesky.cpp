@@ -95,11 +95,325 @@ bool BlockCholesky::use_vectorised_kernels(bool on) {
   return vectorised;
 }
 
+namespace {
+
+// The permuted strictly lower triangle of A + Σ w wᵀ by rows, and the springs on each block's
+// diagonal.
+struct LowerRows {
+  std::vector<int> start;  // row k: entries[start[k] … start[k + 1])
+  std::vector<RowEntry> entries;
+  std::vector<int> touching_start;  // the springs touching block b: touching[touching_start[b] …]
+  std::vector<int> touching;
+};
+
+// Both by counting sort: the matrix's blocks off the diagonal, and one entry for each spring
+// joining two blocks (a pair of blocks that several springs join has an entry for each: the
+// row sums them, and the pattern is the same); the springs that touch each block.
+LowerRows gather_lower_rows(const BlockMatrix& a, const RankOneTerms& springs, const std::vector<int>& position) {
+  const int n = a.block_count;
+  LowerRows l;
+  l.start.assign(n + 1, 0);
+  for (auto [col, row] : a.pairs) ++l.start[std::max(position[col], position[row]) + 1];
+  for (const RankOneTerm& t : springs)
+    if (t.joins_two_blocks()) ++l.start[std::max(position[t.block_a], position[t.block_b]) + 1];
+  for (int k = 0; k < n; ++k) l.start[k + 1] += l.start[k];
+  l.entries.resize(l.start[n]);
+  l.touching_start.assign(n + 1, 0);
+  for (const RankOneTerm& t : springs) {
+    if (t.block_a >= 0) ++l.touching_start[t.block_a + 1];
+    if (t.block_b >= 0 && t.block_b != t.block_a) ++l.touching_start[t.block_b + 1];
+  }
+  for (int b = 0; b < n; ++b) l.touching_start[b + 1] += l.touching_start[b];
+  l.touching.resize(l.touching_start[n]);
+
+  std::vector<int> next(l.start.begin(), l.start.end() - 1);
+  for (std::size_t p = 0; p < a.pairs.size(); ++p) {
+    const int pc = position[a.pairs[p].first], pr = position[a.pairs[p].second];
+    // off[p] is A(row, column): it is A'(pr, pc) as stored, or its transpose if pc > pr.
+    if (pr > pc)
+      l.entries[next[pr]++] = {pc, static_cast<int>(p), false, false};
+    else
+      l.entries[next[pc]++] = {pr, static_cast<int>(p), true, false};
+  }
+  std::vector<int> next_touching(l.touching_start.begin(), l.touching_start.end() - 1);
+  for (std::size_t q = 0; q < springs.size(); ++q) {
+    const RankOneTerm& t = springs[q];
+    const int spring = static_cast<int>(q);
+    if (t.block_a >= 0) l.touching[next_touching[t.block_a]++] = spring;
+    if (t.block_b >= 0 && t.block_b != t.block_a) l.touching[next_touching[t.block_b]++] = spring;
+    if (!t.joins_two_blocks()) continue;
+    const int pa = position[t.block_a], pb = position[t.block_b];
+    if (pa > pb)
+      l.entries[next[pa]++] = {pb, spring, false, true};
+    else
+      l.entries[next[pb]++] = {pa, spring, true, true};
+  }
+  return l;
+}
+
+// The elimination tree, in elimination positions: Liu's algorithm with path compression
+// through `ancestor` (Davis 2006, §4.1, cs_etree). −1 at a root.
+std::vector<int> find_elimination_tree(const LowerRows& l) {
+  const int n = static_cast<int>(l.start.size()) - 1;
+  std::vector<int> parent(n, -1);
+  std::vector<int> ancestor(n, -1);
+  for (int k = 0; k < n; ++k)
+    for (int e = l.start[k]; e < l.start[k + 1]; ++e)
+      for (int i = l.entries[e].column; i != -1 && i < k;) {
+        const int next = ancestor[i];
+        ancestor[i] = k;
+        if (next == -1) parent[i] = k;
+        i = next;
+      }
+  return parent;
+}
+
+// ereach(k) (Davis 2006, §4.2, cs_ereach): the row pattern of L(k, :), on stack[top … n−1],
+// children first: the walk from each entry's column up the tree to the first node already on
+// the stack. `start` maps the column to where the walk begins (−1: not at all) and `keep` says
+// which nodes it may pass. Each part of the tree, and the top, walks with its own Reach.
+struct Reach {
+  std::vector<int> mark, stack, path;
+  explicit Reach(int n) : mark(n, -1), stack(n), path(n) {}
+  template <class Start, class Keep>
+  int walk(int k, const LowerRows& l, const std::vector<int>& parent, Start start, Keep keep) {
+    const int n = static_cast<int>(mark.size());
+    int top = n;
+    mark[k] = k;
+    for (int e = l.start[k]; e < l.start[k + 1]; ++e) {
+      int length = 0;
+      for (int i = start(l.entries[e].column); i >= 0 && keep(i) && mark[i] != k; i = parent[i]) {
+        path[length++] = i;
+        mark[i] = k;
+      }
+      while (length > 0) stack[--top] = path[--length];
+    }
+    return top;
+  }
+};
+
+constexpr auto from_column = [](int c) { return c; };
+constexpr auto anywhere = [](int) { return true; };
+
+// L's block column starts: column i holds a block for each row k whose ereach(k) passes i.
+std::vector<int> count_columns(const LowerRows& l, const std::vector<int>& parent) {
+  const int n = static_cast<int>(parent.size());
+  Reach reach(n);
+  std::vector<int> column_start(n + 1, 0);
+  for (int k = 0; k < n; ++k)
+    for (int top = reach.walk(k, l, parent, from_column, anywhere); top < n; ++top)
+      ++column_start[reach.stack[top] + 1];
+  for (int k = 0; k < n; ++k) column_start[k + 1] += column_start[k];
+  return column_start;
+}
+
+// Where row t of a lower triangle of blocks stored row by row begins: the t (t + 1) / 2 blocks
+// of the rows before it.
+std::size_t triangle_start(std::size_t t) { return t * (t + 1) / 2; }
+
+}  // namespace
+
+// The numeric factorisation of one matrix into the factor's allocated columns: its rows,
+// pivots and working arrays while it runs.
+//
+// The top's rows take most of the arithmetic (a separator's row reaches deep into both
+// parts), so they are done in two phases. In the first (eliminate_parts), side by side, each
+// part eliminates its own columns from its own rows and then from every top row, in the top's
+// order: row k of the top restricted to part p is a triangular solve with part p's columns
+// alone (they hold rows of part p and of the top only), and the part's columns receive their
+// rows in the top as the sequential order would give them. What this leaves on the top's
+// columns of row k, and on its pivot, waits in top_sums_[p] (block (k, j) of the top at
+// triangle_start(k) + j, the pivot at triangle_start(k) + k). In the second (eliminate_top),
+// row by row, the top's own columns are eliminated from the row the two sums and A's own
+// entries make. The arithmetic is the same on one thread or two.
+class BlockCholesky::Elimination {
+ public:
+  Elimination(BlockCholesky& factor, const BlockMatrix& a, const RankOneTerms& springs, const std::vector<int>& order,
+              const LowerRows& rows);
+  // Phase one; false if a part's pivot is not positive definite.
+  bool eliminate_parts();
+  // Phase two; false if a pivot of the top is not positive definite.
+  bool eliminate_top();
+
+ private:
+  BlockCholesky& l_;
+  const BlockMatrix& a_;
+  const RankOneTerms& springs_;
+  const std::vector<int>& order_;
+  const LowerRows& rows_;
+  const int n_;
+  std::vector<signed char> part_of_;       // by position: 0 or 1 (a part) or 2 (the top)
+  std::vector<int> top_above_;             // where a part's node first meets the top (−1: never)
+  std::vector<int> filled_;                // per column of L: its next free block
+  std::array<Reach, 3> reaches_;           // part 0, part 1, the top
+  std::array<Matrix6Array, 2> row_work_;   // the row being eliminated, per part, by position
+  std::array<Matrix6Array, 2> top_sums_;   // each part's share of the top's rows
+
+  bool eliminate_part_columns(int p);
+  void eliminate_part_from_top_rows(int p);
+  template <class Take>
+  void scatter_row(int k, Matrix6Array& x, Take take) const;
+  Matrix6 diagonal(int k) const;
+  void eliminate_columns(int k, const Reach& r, int top, Matrix6Array& x, Matrix6& d);
+  bool factor_pivot(int k, const Matrix6& d);
+};
+
+BlockCholesky::Elimination::Elimination(BlockCholesky& factor, const BlockMatrix& a, const RankOneTerms& springs,
+                                        const std::vector<int>& order, const LowerRows& rows)
+    : l_(factor),
+      a_(a),
+      springs_(springs),
+      order_(order),
+      rows_(rows),
+      n_(factor.block_count_),
+      part_of_(n_),
+      top_above_(n_, -1),
+      filled_(factor.column_start_.begin(), factor.column_start_.end() - 1),
+      reaches_{Reach(n_), Reach(n_), Reach(n_)} {
+  for (int p = 0; p < 3; ++p)
+    for (int k : l_.part_columns_[p]) part_of_[k] = static_cast<signed char>(p);
+  for (int k = n_ - 1; k >= 0; --k)
+    if (part_of_[k] != 2 && l_.parent_[k] >= 0)
+      top_above_[k] = part_of_[l_.parent_[k]] == 2 ? l_.parent_[k] : top_above_[l_.parent_[k]];
+  resize_for_overwrite(l_.row_, l_.column_start_[n_]);
+  resize_for_overwrite(l_.value_, l_.column_start_[n_]);
+  l_.inverse_diagonal_.resize(n_);
+  // Each part works its row in its own array; the top's rows use part 0's.
+  for (Matrix6Array& x : row_work_) x.assign(n_, Matrix6::Zero());
+  for (Matrix6Array& sums : top_sums_) resize_for_overwrite(sums, triangle_start(l_.part_columns_[2].size()));
+}
+
+// Row k's entries A(k, c) for the columns c that `take` accepts, added into x (zero there).
+template <class Take>
+void BlockCholesky::Elimination::scatter_row(int k, Matrix6Array& x, Take take) const {
+  for (int e = rows_.start[k]; e < rows_.start[k + 1]; ++e) {
+    const RowEntry& entry = rows_.entries[e];
+    if (!take(entry.column)) continue;
+    Matrix6& target = x[entry.column];
+    if (entry.spring) {
+      const RankOneTerm& t = springs_[entry.source];
+      if (entry.transposed)
+        target.noalias() += t.w_b * t.w_a.transpose();
+      else
+        target.noalias() += t.w_a * t.w_b.transpose();
+    } else if (entry.transposed) {
+      target += a_.off[entry.source].transpose();
+    } else {
+      target += a_.off[entry.source];
+    }
+  }
+}
+
+// A(k, k): the matrix's diagonal block and the springs on it.
+Matrix6 BlockCholesky::Elimination::diagonal(int k) const {
+  const int b = order_[k];
+  Matrix6 d = a_.diagonal[b];
+  for (int q = rows_.touching_start[b]; q < rows_.touching_start[b + 1]; ++q) {
+    const Vector6 w = springs_[rows_.touching[q]].part_on(b);
+    d.noalias() += w * w.transpose();
+  }
+  return d;
+}
+
+// The columns i = stack[top … n−1] in turn: L(k, i) from x_i, then row k updated by column i
+// (x_r −= L(k, i) L(r, i)ᵀ), and d −= L(k, i) L(k, i)ᵀ.
+void BlockCholesky::Elimination::eliminate_columns(int k, const Reach& r, int top, Matrix6Array& x, Matrix6& d) {
+  for (int s = top; s < n_; ++s) {
+    const int i = r.stack[s];
+    const Matrix6 lki = x[i] * l_.inverse_diagonal_[i].transpose();
+    x[i].setZero();
+    const int first = l_.column_start_[i];
+    subtract_products(lki, l_.value_.data() + first, l_.row_.data() + first, filled_[i] - first, x.data());
+    d.noalias() -= lki * lki.transpose();
+    l_.row_[filled_[i]] = k;
+    l_.value_[filled_[i]++] = lki;
+  }
+}
+
+// L(k, k) ← chol(d), kept as its inverse; false if d is not positive definite.
+bool BlockCholesky::Elimination::factor_pivot(int k, const Matrix6& d) {
+  const Eigen::LLT<Matrix6> llt(d);
+  if (llt.info() != Eigen::Success || !std::isfinite(d.trace())) return false;
+  l_.inverse_diagonal_[k] = llt.matrixL().solve(Matrix6::Identity());
+  return true;
+}
+
+// Part p's own rows, whole: they reach only part p's columns.
+bool BlockCholesky::Elimination::eliminate_part_columns(int p) {
+  Matrix6Array& x = row_work_[p];
+  Reach& r = reaches_[p];
+  for (int k : l_.part_columns_[p]) {
+    scatter_row(k, x, anywhere);
+    Matrix6 d = diagonal(k);
+    eliminate_columns(k, r, r.walk(k, rows_, l_.parent_, from_column, anywhere), x, d);
+    if (!factor_pivot(k, d)) return false;
+  }
+  return true;
+}
+
+// Part p's columns eliminated from every top row; what is left on the top's columns and
+// pivot goes to top_sums_[p].
+void BlockCholesky::Elimination::eliminate_part_from_top_rows(int p) {
+  Matrix6Array& x = row_work_[p];
+  Reach& r = reaches_[p];
+  const std::vector<int>& top_nodes = l_.part_columns_[2];
+  const auto in_part = [&](int c) { return part_of_[c] == p; };
+  const auto only_in_part = [&](int c) { return in_part(c) ? c : -1; };
+  for (std::size_t t = 0; t < top_nodes.size(); ++t) {
+    const int k = top_nodes[t];
+    scatter_row(k, x, in_part);
+    Matrix6 d = Matrix6::Zero();
+    eliminate_columns(k, r, r.walk(k, rows_, l_.parent_, only_in_part, in_part), x, d);
+    Matrix6* sums = top_sums_[p].data() + triangle_start(t);
+    for (std::size_t u = 0; u < t; ++u) {
+      Matrix6& xj = x[top_nodes[u]];
+      sums[u] = xj;
+      xj.setZero();
+    }
+    sums[t] = d;
+  }
+}
+
+bool BlockCholesky::Elimination::eliminate_parts() {
+  std::array<bool, 2> part_ok{true, true};
+  geometry::run_two_parts(l_.run_parts_in_parallel(), [&](int p) {
+    part_ok[p] = eliminate_part_columns(p);
+    if (part_ok[p]) eliminate_part_from_top_rows(p);
+  });
+  return part_ok[0] && part_ok[1];
+}
+
+bool BlockCholesky::Elimination::eliminate_top() {
+  const std::vector<int>& top_nodes = l_.part_columns_[2];
+  Matrix6Array& x = row_work_[0];
+  Reach& r = reaches_[2];
+  const auto in_top = [&](int c) { return part_of_[c] == 2; };
+  const auto top_of = [&](int c) { return part_of_[c] == 2 ? c : top_above_[c]; };
+  for (std::size_t t = 0; t < top_nodes.size(); ++t) {
+    const int k = top_nodes[t];
+    scatter_row(k, x, in_top);
+    const Matrix6* sums_0 = top_sums_[0].data() + triangle_start(t);
+    const Matrix6* sums_1 = top_sums_[1].data() + triangle_start(t);
+    for (std::size_t u = 0; u < t; ++u) {
+      Matrix6& xj = x[top_nodes[u]];
+      xj += sums_0[u];
+      xj += sums_1[u];
+    }
+    Matrix6 d = diagonal(k);
+    d += sums_0[t];
+    d += sums_1[t];
+    eliminate_columns(k, r, r.walk(k, rows_, l_.parent_, top_of, anywhere), x, d);
+    if (!factor_pivot(k, d)) return false;
+  }
+  return true;
+}
+
 // Up-looking (row by row) Cholesky over blocks; Davis, "Direct Methods for Sparse Linear
 // Systems" (SIAM 2006), §4.1 (elimination tree), §4.2 (row patterns by ereach), §4.8 (cs_chol),
 // with every scalar become a 6×6 block:
 //   parent ← etree(A);  column counts ← for each row k, the nodes ereach(k) reaches
-//   for k = 0 … n−1:
+//   split the tree into two parts and their top (split_elimination_tree)
+//   for k = 0 … n−1 (each part's rows side by side, then the top's; Elimination):
 //     X_j ← A(k, j) for j < k;  D ← A(k, k)
 //     for i in ereach(k), children before parents:
 //       L(k, i) ← X_i L(i, i)⁻ᵀ;  X_r −= L(k, i) L(r, i)ᵀ for the rows r < k of column i
@@ -112,238 +426,26 @@ bool BlockCholesky::factorise(const BlockMatrix& a, const std::vector<int>& orde
 bool BlockCholesky::factorise(const BlockMatrix& a, const RankOneTerms& springs, const std::vector<int>& order) {
   clear();
   const int n = a.block_count;
-  std::vector<int>& position = position_;
-  position.resize(n);
-  for (int k = 0; k < n; ++k) position[order[k]] = k;
-
-  // Rows of the permuted strictly lower triangle, by counting sort: the matrix's blocks off
-  // the diagonal, and one entry for each spring joining two blocks (a pair of blocks that
-  // several springs join has an entry for each: the row sums them, and the pattern is the
-  // same).
-  std::vector<int> row_start(n + 1, 0);
-  for (auto [col, row] : a.pairs) ++row_start[std::max(position[col], position[row]) + 1];
-  for (const RankOneTerm& t : springs)
-    if (t.joins_two_blocks()) ++row_start[std::max(position[t.block_a], position[t.block_b]) + 1];
-  for (int k = 0; k < n; ++k) row_start[k + 1] += row_start[k];
-  std::vector<RowEntry> rows(row_start[n]);
-  // The springs on each block's diagonal: those that touch it, by counting sort.
-  std::vector<int> touching_start(n + 1, 0);
-  for (const RankOneTerm& t : springs) {
-    if (t.block_a >= 0) ++touching_start[t.block_a + 1];
-    if (t.block_b >= 0 && t.block_b != t.block_a) ++touching_start[t.block_b + 1];
-  }
-  for (int b = 0; b < n; ++b) touching_start[b + 1] += touching_start[b];
-  std::vector<int> touching(touching_start[n]);
-  {
-    std::vector<int> next(row_start.begin(), row_start.end() - 1);
-    for (std::size_t p = 0; p < a.pairs.size(); ++p) {
-      const int pc = position[a.pairs[p].first], pr = position[a.pairs[p].second];
-      // off[p] is A(row, column): it is A'(pr, pc) as stored, or its transpose if pc > pr.
-      if (pr > pc)
-        rows[next[pr]++] = {pc, static_cast<int>(p), false, false};
-      else
-        rows[next[pc]++] = {pr, static_cast<int>(p), true, false};
-    }
-    std::vector<int> next_touching(touching_start.begin(), touching_start.end() - 1);
-    for (std::size_t q = 0; q < springs.size(); ++q) {
-      const RankOneTerm& t = springs[q];
-      const int spring = static_cast<int>(q);
-      if (t.block_a >= 0) touching[next_touching[t.block_a]++] = spring;
-      if (t.block_b >= 0 && t.block_b != t.block_a) touching[next_touching[t.block_b]++] = spring;
-      if (!t.joins_two_blocks()) continue;
-      const int pa = position[t.block_a], pb = position[t.block_b];
-      if (pa > pb)
-        rows[next[pa]++] = {pb, spring, false, true};
-      else
-        rows[next[pb]++] = {pa, spring, true, true};
-    }
-  }
-
-  // Elimination tree, in elimination positions (Liu's algorithm with path compression
-  // through `ancestor`).
-  std::vector<int> parent(n, -1);
-  {
-    std::vector<int> ancestor(n, -1);
-    for (int k = 0; k < n; ++k)
-      for (int e = row_start[k]; e < row_start[k + 1]; ++e)
-        for (int i = rows[e].column; i != -1 && i < k;) {
-          const int next = ancestor[i];
-          ancestor[i] = k;
-          if (next == -1) parent[i] = k;
-          i = next;
-        }
-  }
-
-  parent_ = std::move(parent);
-
-  // ereach(k): the row pattern of L(k, :), on stack[top … n−1], children first: the walk
-  // from each entry's column up the tree to the first node already on the stack. `start`
-  // maps the column to where the walk begins (−1: not at all) and `keep` says which nodes
-  // it may pass. Each part of the tree, and the top, has its own marks and stacks.
-  struct Reach {
-    std::vector<int> mark, stack, path;
-  };
-  std::array<Reach, 3> reaches;
-  for (Reach& r : reaches) {
-    r.mark.assign(n, -1);
-    r.stack.resize(n);
-    r.path.resize(n);
-  }
-  const auto reach = [&](int k, Reach& r, auto start, auto keep) {
-    int top = n;
-    r.mark[k] = k;
-    for (int e = row_start[k]; e < row_start[k + 1]; ++e) {
-      int length = 0;
-      for (int i = start(rows[e].column); i >= 0 && keep(i) && r.mark[i] != k; i = parent_[i]) {
-        r.path[length++] = i;
-        r.mark[i] = k;
-      }
-      while (length > 0) r.stack[--top] = r.path[--length];
-    }
-    return top;
-  };
-  const auto from_column = [](int c) { return c; };
-  const auto anywhere = [](int) { return true; };
-
-  // Column counts, then the split of the tree, then the numeric factorisation into the
-  // allocated columns.
-  column_start_.assign(n + 1, 0);
-  for (int k = 0; k < n; ++k)
-    for (int top = reach(k, reaches[0], from_column, anywhere); top < n; ++top)
-      ++column_start_[reaches[0].stack[top] + 1];
-  for (int k = 0; k < n; ++k) column_start_[k + 1] += column_start_[k];
+  position_.resize(n);
+  for (int k = 0; k < n; ++k) position_[order[k]] = k;
+  const LowerRows rows = gather_lower_rows(a, springs, position_);
+  parent_ = find_elimination_tree(rows);
+  column_start_ = count_columns(rows, parent_);
   block_count_ = n;
   split_elimination_tree();
-  std::vector<signed char> part_of(n);
-  for (int p = 0; p < 3; ++p)
-    for (int k : part_columns_[p]) part_of[k] = static_cast<signed char>(p);
-  // Where a part's node first meets the top on its way to the root (−1: never).
-  std::vector<int> top_above(n, -1);
-  for (int k = n - 1; k >= 0; --k)
-    if (part_of[k] != 2 && parent_[k] >= 0) top_above[k] = part_of[parent_[k]] == 2 ? parent_[k] : top_above[parent_[k]];
-  resize_for_overwrite(row_, column_start_[n]);
-  resize_for_overwrite(value_, column_start_[n]);
-  inverse_diagonal_.resize(n);
-  std::vector<int> filled(column_start_.begin(), column_start_.end() - 1);
-  for (Reach& r : reaches) std::fill(r.mark.begin(), r.mark.end(), -1);
-  // Each part works its row in its own array (x_p, by position); the top's rows use part 0's.
-  for (Matrix6Array& x : row_work_) x.assign(n, Matrix6::Zero());
-  // Row k's entries A(k, c) for the columns c that `take` accepts, added into x (zero there).
-  const auto scatter_row = [&](int k, Matrix6Array& x, auto take) {
-    for (int e = row_start[k]; e < row_start[k + 1]; ++e) {
-      const RowEntry& entry = rows[e];
-      if (!take(entry.column)) continue;
-      Matrix6& target = x[entry.column];
-      if (entry.spring) {
-        const RankOneTerm& t = springs[entry.source];
-        if (entry.transposed)
-          target.noalias() += t.w_b * t.w_a.transpose();
-        else
-          target.noalias() += t.w_a * t.w_b.transpose();
-      } else if (entry.transposed) {
-        target += a.off[entry.source].transpose();
-      } else {
-        target += a.off[entry.source];
-      }
-    }
-  };
-  // A(k, k): the matrix's diagonal block and the springs on it.
-  const auto diagonal = [&](int k) {
-    const int b = order[k];
-    Matrix6 d = a.diagonal[b];
-    for (int q = touching_start[b]; q < touching_start[b + 1]; ++q) {
-      const Vector6 w = springs[touching[q]].part_on(b);
-      d.noalias() += w * w.transpose();
-    }
-    return d;
-  };
-  // The columns stack[top … n−1] that `take` accepts, in turn: L(k, i) from x_i, then row k
-  // updated by column i, and d −= L(k, i) L(k, i)ᵀ.
-  const auto eliminate_columns = [&](int k, const Reach& r, int top, Matrix6Array& x, Matrix6& d, auto take) {
-    for (int s = top; s < n; ++s) {
-      const int i = r.stack[s];
-      if (!take(i)) continue;
-      const Matrix6 lki = x[i] * inverse_diagonal_[i].transpose();
-      x[i].setZero();
-      subtract_products(lki, value_.data() + column_start_[i], row_.data() + column_start_[i],
-                        filled[i] - column_start_[i], x.data());
-      d.noalias() -= lki * lki.transpose();
-      row_[filled[i]] = k;
-      value_[filled[i]++] = lki;
-    }
-  };
-  const auto factor_pivot = [&](int k, const Matrix6& d) {
-    const Eigen::LLT<Matrix6> llt(d);
-    if (llt.info() != Eigen::Success || !std::isfinite(d.trace())) return false;
-    inverse_diagonal_[k] = llt.matrixL().solve(Matrix6::Identity());
-    return true;
-  };
-
-  // The top's rows take most of the arithmetic (a separator's row reaches deep into both
-  // parts), so they are done in two phases. In the first, side by side, each part eliminates
-  // its own columns from every top row, in the top's order: row k of the top restricted to
-  // part p is a triangular solve with part p's columns alone (they hold rows of part p and of
-  // the top only), and the part's columns receive their rows in the top as the sequential
-  // order would give them. What this leaves on the top's columns of row k, and on its pivot,
-  // waits in top_sums_[p] (block (k, j) of the top at tri(k) + j, the pivot at tri(k) + k).
-  // In the second, row by row, the top's own columns are eliminated from the row the two
-  // sums and A's own entries make.
-  const std::vector<int>& top_nodes = part_columns_[2];
-  const auto tri = [](std::size_t t) { return t * (t + 1) / 2; };
-  for (Matrix6Array& sums : top_sums_) resize_for_overwrite(sums, tri(top_nodes.size()));
-  std::array<bool, 2> part_ok{true, true};
-  geometry::run_two_parts(run_parts_in_parallel(), [&](int p) {
-    Matrix6Array& x = row_work_[p];
-    Reach& r = reaches[p];
-    for (int k : part_columns_[p]) {
-      scatter_row(k, x, anywhere);
-      Matrix6 d = diagonal(k);
-      eliminate_columns(k, r, reach(k, r, from_column, anywhere), x, d, anywhere);
-      if (!(part_ok[p] = factor_pivot(k, d))) return;
-    }
-    const auto in_part = [&](int c) { return part_of[c] == p; };
-    const auto only_in_part = [&](int c) { return in_part(c) ? c : -1; };
-    for (std::size_t t = 0; t < top_nodes.size(); ++t) {
-      const int k = top_nodes[t];
-      scatter_row(k, x, in_part);
-      Matrix6 d = Matrix6::Zero();
-      eliminate_columns(k, r, reach(k, r, only_in_part, in_part), x, d, anywhere);
-      Matrix6* sums = top_sums_[p].data() + tri(t);
-      for (std::size_t u = 0; u < t; ++u) {
-        Matrix6& xj = x[top_nodes[u]];
-        sums[u] = xj;
-        xj.setZero();
-      }
-      sums[t] = d;
-    }
-  });
-  bool ok = part_ok[0] && part_ok[1];
-  Matrix6Array& x = row_work_[0];
-  const auto in_top = [&](int c) { return part_of[c] == 2; };
-  const auto top_of = [&](int c) { return part_of[c] == 2 ? c : top_above[c]; };
-  for (std::size_t t = 0; ok && t < top_nodes.size(); ++t) {
-    const int k = top_nodes[t];
-    scatter_row(k, x, in_top);
-    const Matrix6* sums_0 = top_sums_[0].data() + tri(t);
-    const Matrix6* sums_1 = top_sums_[1].data() + tri(t);
-    for (std::size_t u = 0; u < t; ++u) {
-      Matrix6& xj = x[top_nodes[u]];
-      xj += sums_0[u];
-      xj += sums_1[u];
-    }
-    Matrix6 d = diagonal(k);
-    d += sums_0[t];
-    d += sums_1[t];
-    eliminate_columns(k, reaches[2], reach(k, reaches[2], top_of, anywhere), x, d, anywhere);
-    ok = factor_pivot(k, d);
-  }
-  if (!ok) {
+  Elimination elimination(*this, a, springs, order, rows);
+  if (!elimination.eliminate_parts() || !elimination.eliminate_top()) {
     clear();
     return false;
   }
-  // Where each part's columns reach the top: the forward sweep's updates beyond it wait in
-  // the part's own buffer. A column's rows are its ancestors ascending, its own subtree's
-  // first.
+  prepare_sweeps(order);
+  return true;
+}
+
+// Where each part's columns reach the top: the forward sweep's updates beyond it wait in the
+// part's own buffer. A column's rows are its ancestors ascending, its own subtree's first.
+void BlockCholesky::prepare_sweeps(const std::vector<int>& order) {
+  const int n = block_count_;
   top_rows_start_.resize(n);
   for (int k = 0; k < n; ++k) {
     int q = column_start_[k];
@@ -358,7 +460,6 @@ bool BlockCholesky::factorise(const BlockMatrix& a, const RankOneTerms& springs,
   order_ = order;
   path_work_.setZero(6 * n);
   on_path_.assign(n, 0);
-  return true;
 }
 
 // Pseudocode (subtree-to-processor mapping; Geist & Ng, "Task scheduling for parallel sparse

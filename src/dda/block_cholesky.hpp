@@ -76,12 +76,14 @@ class BlockCholesky {
   std::vector<int> top_rows_start_;               // position → first of its column's top rows
   mutable std::array<Eigen::VectorXd, 2> top_updates_;  // each part's forward updates to the top
   mutable Eigen::VectorXd work_;
-  std::array<Matrix6Array, 2> row_work_;    // the factorisation's row being eliminated, per part
-  std::array<Matrix6Array, 2> top_sums_;    // each part's share of the top's rows (factorise)
   mutable Eigen::VectorXd path_work_;       // zero but during forward_sparse
   mutable std::vector<char> on_path_;       // likewise
+  // The numeric factorisation's rows and working arrays while it runs (block_cholesky.cpp).
+  class Elimination;
   Sweep sweep() const;
   void split_elimination_tree();
+  // The forward sweep's split of each part's columns, and the solves' work arrays.
+  void prepare_sweeps(const std::vector<int>& order);
   // Whether a factor this size pays for a second thread.
   bool run_parts_in_parallel() const;
 };
