@@ -6,7 +6,7 @@
 #include <limits>
 #include <optional>
 
-#include "geometry/parallel.hpp"
+#include "numerics/parallel.hpp"
 #include "geometry/spatial_grid.hpp"
 
 namespace hydrodda::coupling {
@@ -143,7 +143,7 @@ std::vector<double> apertures_at(std::size_t count, Centroid&& centroid, std::sp
   const geometry::SpatialGrid grid(boxes, 1.0);
   std::vector<double> aperture(count, 0.0);
   // Each element on its own: chunks over the threads give the same apertures as one thread.
-  geometry::for_each_chunk(count >= 20000, count, 1024, [&](std::size_t, std::size_t begin, std::size_t end) {
+  numerics::for_each_chunk(count >= 20000, count, 1024, [&](std::size_t, std::size_t begin, std::size_t end) {
     std::vector<Wall> walls;
     for (std::size_t e = begin; e < end; ++e)
       if (fracture_area[e] > 0.0) aperture[e] = compute_local_aperture(centroid(e), blocks, grid, domain, reach, walls);

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "geometry/parallel.hpp"
+#include "numerics/parallel.hpp"
 
 namespace hydrodda::coupling {
 
@@ -79,11 +79,11 @@ PorosityField PorosityMapper::compute(std::span<const geometry::Polygon> blocks,
   field.porosity.resize(n);
   const std::size_t chunk = BlockPieces::kElementsPerList;
   if (pieces) {
-    pieces->lists_.resize(geometry::chunk_count(n, chunk));
+    pieces->lists_.resize(numerics::chunk_count(n, chunk));
     pieces->released_sizes_.resize(pieces->lists_.size());
   }
   // Each element on its own: chunks over the threads give the same field as one thread.
-  geometry::for_each_chunk(n >= 20000, n, chunk, [&](std::size_t k, std::size_t begin, std::size_t end) {
+  numerics::for_each_chunk(n >= 20000, n, chunk, [&](std::size_t k, std::size_t begin, std::size_t end) {
     std::vector<BlockPiece>* own = pieces ? &pieces->lists_[k] : nullptr;
     if (own) {
       own->clear();

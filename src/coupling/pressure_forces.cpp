@@ -8,7 +8,7 @@
 #include <utility>
 
 #include "coupling/force_moments.hpp"
-#include "geometry/parallel.hpp"
+#include "numerics/parallel.hpp"
 #include "hydro/element_pressure.hpp"
 #include "mesh/point_locator.hpp"
 
@@ -320,7 +320,7 @@ std::vector<std::vector<Point>> FacePressureLoads::compute(std::span<const geome
   };
   const auto count = static_cast<std::ptrdiff_t>(blocks.size());
 #pragma omp parallel for schedule(dynamic, 16) if (blocks.size() >= kBlocksWorthTwoThreads) \
-    num_threads(geometry::thread_count())
+    num_threads(numerics::thread_count())
   for (std::ptrdiff_t b = 0; b < count; ++b) load_block(static_cast<std::size_t>(b));
   return forces;
 }

@@ -10,7 +10,7 @@
 #include <Eigen/Cholesky>
 
 #include "dda/array_growth.hpp"
-#include "geometry/parallel.hpp"
+#include "numerics/parallel.hpp"
 
 namespace hydrodda::dda {
 
@@ -376,7 +376,7 @@ void BlockCholesky::Elimination::eliminate_part_from_top_rows(int p) {
 
 bool BlockCholesky::Elimination::eliminate_parts() {
   std::array<bool, 2> part_ok{true, true};
-  geometry::run_two_parts(l_.run_parts_in_parallel(), [&](int p) {
+  numerics::run_two_parts(l_.run_parts_in_parallel(), [&](int p) {
     part_ok[p] = eliminate_part_columns(p);
     if (part_ok[p]) eliminate_part_from_top_rows(p);
   });
@@ -685,7 +685,7 @@ void BlockCholesky::forward(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::V
   u.resize(6 * n);
   for (int k = 0; k < n; ++k) u.segment<6>(6 * k) = x.segment<6>(6 * order_[k]);
   const Sweep l = sweep();
-  geometry::run_two_parts(run_parts_in_parallel(),
+  numerics::run_two_parts(run_parts_in_parallel(),
                 [&](int p) { forward_sweep(l, part_columns_[p], u.data(), top_updates_[p].data()); });
   const std::vector<int>& top = part_columns_[2];
   for (std::size_t t = 0; t < top.size(); ++t) {
@@ -701,7 +701,7 @@ void BlockCholesky::forward(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::V
 void BlockCholesky::backward(Eigen::VectorXd& u, Eigen::Ref<Eigen::VectorXd> x) const {
   const Sweep l = sweep();
   backward_sweep(l, part_columns_[2], u.data());
-  geometry::run_two_parts(run_parts_in_parallel(), [&](int p) { backward_sweep(l, part_columns_[p], u.data()); });
+  numerics::run_two_parts(run_parts_in_parallel(), [&](int p) { backward_sweep(l, part_columns_[p], u.data()); });
   for (int k = 0; k < block_count_; ++k) x.segment<6>(6 * order_[k]) = u.segment<6>(6 * k);
 }
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "dda/array_growth.hpp"
-#include "geometry/parallel.hpp"
+#include "numerics/parallel.hpp"
 
 namespace hydrodda::dda {
 
@@ -28,11 +28,11 @@ void ContactSearch::make_lists(std::span<const std::span<const geometry::Point>>
   boxes_.clear();
   for (std::span<const geometry::Point> p : polygons) boxes_.push_back(geometry::bounding_box(p));
   find_block_pairs(boxes_, reach, fixed, pairs_);
-  geometry::run_two_parts(worth_two_threads(pairs_.size()), [&](int part) {
+  numerics::run_two_parts(worth_two_threads(pairs_.size()), [&](int part) {
     Half& half = halves_[part];
     half.pairs.clear();
     half.combinations.clear();
-    const auto [begin, end] = geometry::half_range(part, pairs_.size());
+    const auto [begin, end] = numerics::half_range(part, pairs_.size());
     for (std::size_t p = begin; p < end; ++p) {
       const auto [a, b] = pairs_[p];
       ListedPair listed{a, b, half.combinations.size(), 0, 0};
@@ -50,7 +50,7 @@ void ContactSearch::find(std::span<const std::span<const geometry::Point>> polyg
                          std::span<const char> fixed, ContactCandidates& out) {
   if (!listed_ || 2.0 * motion_ > skin_) make_lists(polygons, fixed);
   const auto by_key = [](const ContactCandidate& x, const ContactCandidate& y) { return x.key < y.key; };
-  geometry::run_two_parts(worth_two_threads(halves_[0].pairs.size() + halves_[1].pairs.size()), [&](int part) {
+  numerics::run_two_parts(worth_two_threads(halves_[0].pairs.size() + halves_[1].pairs.size()), [&](int part) {
     Half& half = halves_[part];
     half.found.clear();
     for (const ListedPair& p : half.pairs) {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <array>
 
-#include "geometry/parallel.hpp"
+#include "numerics/parallel.hpp"
 
 namespace hydrodda::dda {
 
@@ -57,7 +57,7 @@ bool find_changed_terms(const RankOneTerms& now, const RankOneTerms& before, std
                                  before.begin());
   std::array<RankOneTerms, 2> second;  // the second half's changes: added, removed
   std::array<bool, 2> found{};
-  geometry::run_two_parts(worth_two_threads(now.size() + before.size()), [&](int part) {
+  numerics::run_two_parts(worth_two_threads(now.size() + before.size()), [&](int part) {
     found[part] = part == 0 ? walk_changed_terms(now, 0, middle, before, 0, before_middle, limit, added, removed)
                             : walk_changed_terms(now, middle, now.size(), before, before_middle, before.size(),
                                                  limit, second[0], second[1]);
@@ -159,12 +159,12 @@ void multiply_with_springs(const BlockMatrix& base, const RankOneTerms& springs,
 void SpringMatrixProduct::reset(const BlockMatrix& base, const RankOneTerms& springs) {
   base_ = &base;
   springs_ = &springs;
-  split_ = worth_two_threads(springs.size()) && geometry::two_threads_available();
+  split_ = worth_two_threads(springs.size()) && numerics::two_threads_available();
   if (!split_) return;
-  touching_.resize(static_cast<std::size_t>(geometry::thread_count()));
+  touching_.resize(static_cast<std::size_t>(numerics::thread_count()));
   const int shares = static_cast<int>(touching_.size());
-  geometry::for_each_share(shares, touching_.size(), [&](int share, std::size_t, std::size_t) {
-    const auto [begin, end] = geometry::share_range(share, shares, static_cast<std::size_t>(base.block_count));
+  numerics::for_each_share(shares, touching_.size(), [&](int share, std::size_t, std::size_t) {
+    const auto [begin, end] = numerics::share_range(share, shares, static_cast<std::size_t>(base.block_count));
     const auto inside = [&](int block) { return block >= static_cast<int>(begin) && block < static_cast<int>(end); };
     std::vector<int>& touching = touching_[share];
     touching.clear();
@@ -183,7 +183,7 @@ void SpringMatrixProduct::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y)
   }
   y.resize(base_->size());
   const int shares = static_cast<int>(touching_.size());
-  geometry::for_each_share(shares, static_cast<std::size_t>(base_->block_count),
+  numerics::for_each_share(shares, static_cast<std::size_t>(base_->block_count),
                            [&](int share, std::size_t begin, std::size_t end) {
     base_->multiply_rows(x, y, static_cast<int>(begin), static_cast<int>(end));
     for (const int entry : touching_[share]) {

@@ -60,7 +60,7 @@ void multiply_with_springs(const BlockMatrix& base, const RankOneTerms& springs,
                            const Eigen::VectorXd& x, Eigen::VectorXd& y);
 
 // multiply_with_springs bit for bit, the block rows of y in one share per thread
-// (geometry::for_each_share). Each share takes its rows' terms of the base and then every
+// (numerics::for_each_share). Each share takes its rows' terms of the base and then every
 // spring with an end in it, in the springs' order, so that each row sums the same terms in the
 // same order as one multiply does, whatever the shares; a spring across two shares is dotted by
 // both. Which springs touch which share is found once a matrix: conjugate gradients multiplies

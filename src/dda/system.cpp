@@ -10,7 +10,7 @@
 
 #include "dda/array_growth.hpp"
 #include "dda/initial_stress.hpp"
-#include "geometry/parallel.hpp"
+#include "numerics/parallel.hpp"
 #include "numerics/anderson.hpp"
 
 namespace hydrodda::dda {
@@ -141,7 +141,7 @@ System::System(ModelDefinition def, std::unique_ptr<LinearSolver> solver)
   contact_search_ = ContactSearch(contact_distance_,
                                   settings_.contact_skin >= 0 ? settings_.contact_skin : 0.2 * contact_distance_);
   for (const Block& b : blocks_) detection_.fixed.push_back(b.dof < 0);
-  if (many_blocks()) geometry::start_threads();
+  if (many_blocks()) numerics::start_threads();
 }
 
 void System::check_tractions(std::span<const EdgeTraction> tractions) const {
@@ -215,7 +215,7 @@ void System::detect_contacts() {
   contact_search_.find(buffers.polygons, buffers.fixed, candidates);
   resize_for_overwrite(active_, candidates.size());
   // The linearisation in chunks of contacts, over the threads: each contact writes only its own.
-  geometry::for_each_chunk(many_contacts_to_linearise(), candidates.size(), kContactChunk,
+  numerics::for_each_chunk(many_contacts_to_linearise(), candidates.size(), kContactChunk,
                            [&](std::size_t, std::size_t begin, std::size_t end) {
     if (begin == end) return;
     // Both lists are in key order: one walk finds each candidate's record from the last step.
@@ -335,7 +335,7 @@ void System::assemble_blocks(double dt, Matrix6Array& k, Eigen::VectorXd& f_base
         fixed_stiffness_ * t.transpose() * Eigen::Vector2d(target_displacement.x, target_displacement.y);
   };
   // Each block writes only its own rows.
-  geometry::for_each_index(many_blocks(), blocks_.size(), [&](std::size_t bi) {
+  numerics::for_each_index(many_blocks(), blocks_.size(), [&](std::size_t bi) {
     const Block& b = blocks_[bi];
     if (b.dof < 0) return;
     const Material& mat = materials_[b.material];
@@ -415,7 +415,7 @@ void System::factor_with_contacts() {
   struct Counts {
     std::size_t springs = 0, closed = 0;
   };
-  const auto counts = geometry::results_in_chunks(many_contacts(), active_.size(), kContactChunk,
+  const auto counts = numerics::results_in_chunks(many_contacts(), active_.size(), kContactChunk,
                                                   [&](std::size_t begin, std::size_t end) {
     Counts count;
     for (std::size_t i = begin; i < end; ++i) {
@@ -435,7 +435,7 @@ void System::factor_with_contacts() {
   resize_for_overwrite(terms, total.springs);
   resize_for_overwrite(closed_, total.closed);
   const double root_penalty = std::sqrt(penalty_);
-  geometry::for_each_chunk(many_contacts(), active_.size(), kContactChunk,
+  numerics::for_each_chunk(many_contacts(), active_.size(), kContactChunk,
                            [&](std::size_t chunk, std::size_t begin, std::size_t end) {
     RankOneTerm* next = terms.data() + starts[chunk].springs;
     int* next_closed = closed_.data() + starts[chunk].closed;
@@ -471,8 +471,8 @@ Eigen::VectorXd System::assemble_contact_rhs(const Eigen::VectorXd& f_base) cons
   // The halves of the contacts load the same blocks: each adds into its own vector, the
   // second's added to the first's after.
   Eigen::VectorXd second = Eigen::VectorXd::Zero(f_base.size());
-  geometry::run_two_parts(true, [&](int part) {
-    const auto [begin, end] = geometry::half_range(part, closed_.size());
+  numerics::run_two_parts(true, [&](int part) {
+    const auto [begin, end] = numerics::half_range(part, closed_.size());
     add_contact_loads(begin, end, part == 0 ? f : second);
   });
   f += second;
@@ -541,7 +541,7 @@ double System::compute_shear_strength(const ActiveContact& c, double normal_forc
 
 System::ContactForceExtent System::update_contact_forces(const Eigen::VectorXd& d) {
   // Largest values: the same whatever the chunks.
-  const auto chunks = geometry::results_in_chunks(many_closed_contacts(), closed_.size(), kContactChunk,
+  const auto chunks = numerics::results_in_chunks(many_closed_contacts(), closed_.size(), kContactChunk,
                                                   [&](std::size_t begin, std::size_t end) {
     ContactForceExtent extent;
     for (std::size_t k = begin; k < end; ++k) {
@@ -564,7 +564,7 @@ System::ContactForceExtent System::update_contact_forces(const Eigen::VectorXd& 
 }
 
 double System::largest_vertex_motion(const Eigen::VectorXd& change) const {
-  const auto largest = geometry::results_in_chunks(many_blocks(), blocks_.size(), kBlockChunk,
+  const auto largest = numerics::results_in_chunks(many_blocks(), blocks_.size(), kBlockChunk,
                                                    [&](std::size_t begin, std::size_t end) {
     double chunk_largest = 0.0;  // squared: one square root at the end
     for (std::size_t bi = begin; bi < end; ++bi) {
@@ -744,7 +744,7 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
     // The tension a closed contact may carry past T l: round-off with the tension cutoff, else
     // the force of the band's length on the penalty spring.
     const double tension_allowance = settings_.tension_cutoff ? 1e-9 * force_scale : penalty_ * band;
-    const auto changed = geometry::results_in_chunks(many_contacts(), active_.size(), kContactChunk,
+    const auto changed = numerics::results_in_chunks(many_contacts(), active_.size(), kContactChunk,
                                                      [&](std::size_t begin, std::size_t end) {
       char any = 0;  // char, not bool: vector<bool>'s elements share bytes between threads
       for (std::size_t i = begin; i < end; ++i) any = update_state(active_[i], d, band, tension_allowance) || any;
@@ -864,7 +864,7 @@ void System::commit_step(const Eigen::VectorXd& d, double dt) {
   };
   for (auto* list : {&fixed_points_, &load_points_, &displacement_points_, &measured_})
     for (TrackedPoint& tp : *list) move(tp);
-  geometry::for_each_index(many_blocks(), blocks_.size(), [&](std::size_t bi) {
+  numerics::for_each_index(many_blocks(), blocks_.size(), [&](std::size_t bi) {
     Block& b = blocks_[bi];
     if (b.dof < 0) return;
     const Vector6 db = d.segment<6>(6 * b.dof);
@@ -880,7 +880,7 @@ void System::commit_step(const Eigen::VectorXd& d, double dt) {
     b.moments = compute_moments(b.polygon);
   });
   resize_for_overwrite(records_, active_.size());  // active_ is in key order, and so stays records_
-  geometry::for_each_index(many_contacts(), active_.size(), [&](std::size_t i) {
+  numerics::for_each_index(many_contacts(), active_.size(), [&](std::size_t i) {
     const ActiveContact& c = active_[i];
     ContactRecord r = c.record;  // its penetration the last pass's, from this d (update_state)
     if (r.state == ContactState::open) {

@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 
 #include "coupling/embedded_joints.hpp"
-#include "geometry/parallel.hpp"
+#include "numerics/parallel.hpp"
 #include "geometry/spatial_grid.hpp"
 
 namespace hydrodda::fractures {
@@ -174,7 +174,7 @@ FractureMeter::FlowZones FractureMeter::flow_zones(const mesh::TriangleMesh& mes
   const geometry::SpatialGrid grid(boxes);
   const double first_reach = faces_.empty() ? 0.0 : total_length / faces_.size();
   // Each element on its own (the grid's queries keep no state), over the threads.
-  geometry::for_each_index(mesh.triangle_count() >= 20000, mesh.triangles.size(), [&](std::size_t element) {
+  numerics::for_each_index(mesh.triangle_count() >= 20000, mesh.triangles.size(), [&](std::size_t element) {
     const int t = static_cast<int>(element);
     const Point c = mesh::triangle_centroid(mesh, t);
     // The distance to the face's line where c projects onto the face, else none.

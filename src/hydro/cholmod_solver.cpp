@@ -11,7 +11,7 @@
 #include "hydro/nested_dissection.hpp"
 #include "hydro/supernodal_correction.hpp"
 #include "hydro/supernodal_factorization.hpp"
-#include "mesh/metis_lock.hpp"
+#include "base/metis_lock.hpp"
 
 namespace hydrodda::hydro {
 namespace {
@@ -83,7 +83,7 @@ class CholmodSolver final : public numerics::SparseCholesky {
       // factorisation and the solves are numeric_'s, which keeps its own.
       cholmod_free_work(factor_.common());
     } else {
-      const std::lock_guard<std::mutex> one_at_a_time(mesh::metis_lock());  // CHOLMOD may order with METIS
+      const std::lock_guard<std::mutex> one_at_a_time(base::metis_lock());  // CHOLMOD may order with METIS
       factor_.analyzePattern(upper);
     }
     analysed_ = true;

@@ -22,7 +22,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
-#include "geometry/parallel.hpp"
+#include "numerics/parallel.hpp"
 #include "hydro/boundary_condition.hpp"
 #include "hydro/fluid.hpp"
 #include "hydro/linear_solver.hpp"
@@ -100,11 +100,11 @@ class DarcyAssembler {
 
   // body(first, last) over one share of 0 … count − 1 per thread, side by side where the mesh is
   // large enough (from some 50,000 triangles) to pay for waking the threads. For bodies whose
-  // every index comes out the same whatever share holds it (geometry::for_each_share).
+  // every index comes out the same whatever share holds it (numerics::for_each_share).
   template <class Body>
   void over_thread_shares(int count, Body&& body) const {
-    const int shares = mesh_.triangle_count() >= 50000 ? geometry::thread_count() : 1;
-    geometry::for_each_share(shares, static_cast<std::size_t>(count), [&](int, std::size_t first, std::size_t last) {
+    const int shares = mesh_.triangle_count() >= 50000 ? numerics::thread_count() : 1;
+    numerics::for_each_share(shares, static_cast<std::size_t>(count), [&](int, std::size_t first, std::size_t last) {
       body(static_cast<int>(first), static_cast<int>(last));
     });
   }

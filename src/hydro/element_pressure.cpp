@@ -1,6 +1,6 @@
 #include "hydro/element_pressure.hpp"
 
-#include "geometry/parallel.hpp"
+#include "numerics/parallel.hpp"
 #include "hydro/p1_element.hpp"
 
 namespace hydrodda::hydro {
@@ -20,7 +20,7 @@ std::vector<double> compute_centroid_pressure(const mesh::TriangleMesh& mesh,
 std::vector<Point> compute_pressure_gradients(const mesh::TriangleMesh& mesh, std::span<const double> nodal_pressure) {
   std::vector<Point> gradients(mesh.triangles.size());
   // Each element's own: the same values on any number of threads.
-  geometry::for_each_index(mesh.triangles.size() >= 20000, mesh.triangles.size(), [&](std::size_t t) {
+  numerics::for_each_index(mesh.triangles.size() >= 20000, mesh.triangles.size(), [&](std::size_t t) {
     const auto& nodes = mesh.triangles[t];
     const auto g = compute_shape_gradients(mesh.nodes[nodes[0]], mesh.nodes[nodes[1]], mesh.nodes[nodes[2]]);
     for (int i = 0; i < 3; ++i) gradients[t] += nodal_pressure[nodes[i]] * g[i];

@@ -15,9 +15,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "geometry/parallel.hpp"
-#include "mesh/metis_lock.hpp"
-#include "mesh/program_files.hpp"
+#include "numerics/parallel.hpp"
+#include "base/metis_lock.hpp"
+#include "base/program_files.hpp"
 
 extern char** environ;
 
@@ -69,7 +69,7 @@ std::vector<idx_t> order_whole(Graph& g) {
   if (n == 0) return order;
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
-  const std::lock_guard<std::mutex> one_at_a_time(mesh::metis_lock());
+  const std::lock_guard<std::mutex> one_at_a_time(base::metis_lock());
   check(METIS_NodeND(&n, g.xadj.data(), g.adjncy.data(), nullptr, options, order.data(), inverse.data()),
         "order the flow matrix");
   return order;
@@ -91,7 +91,7 @@ Graph subgraph(const Graph& g, const std::vector<idx_t>& vertices) {
 }
 
 // The helper beside the program, else where the build made it.
-fs::path helper_path() { return mesh::find_beside_program("hydrodda_order", HYDRODDA_ORDER_PROGRAM); }
+fs::path helper_path() { return base::find_beside_program("hydrodda_order", HYDRODDA_ORDER_PROGRAM); }
 
 // The helper process ordering one graph (hydro/ordering/order_graph.cpp), through a socket
 // (MSG_NOSIGNAL: a helper that died is a failed order, not a SIGPIPE here). Killed and waited
@@ -196,7 +196,7 @@ FillOrder order_by_nested_dissection(const SparseMatrix& upper, bool with_helper
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
   {
-    const std::lock_guard<std::mutex> one_at_a_time(mesh::metis_lock());
+    const std::lock_guard<std::mutex> one_at_a_time(base::metis_lock());
     check(METIS_ComputeVertexSeparator(&count, g.xadj.data(), g.adjncy.data(), nullptr, options, &separator_size,
                                        part.data()),
           "split the flow matrix's graph");
@@ -207,7 +207,7 @@ FillOrder order_by_nested_dissection(const SparseMatrix& upper, bool with_helper
 
   Graph second = subgraph(g, half[1]);
   OrderingProcess helper;
-  const bool aside = with_helper && geometry::two_threads_available() && helper.start(second);
+  const bool aside = with_helper && numerics::two_threads_available() && helper.start(second);
   std::vector<idx_t> order[2];
   Graph first = subgraph(g, half[0]);
   order[0] = order_whole(first);

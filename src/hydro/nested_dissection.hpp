@@ -28,7 +28,7 @@ struct FillOrder {
 // or where the separator leaves a half empty, METIS orders the whole graph in one go; where the
 // helper cannot be started or fails, this process orders both halves in turn, to the same order.
 // Deterministic: the same pattern gives the same order on any machine. `with_helper` false, or
-// a process of one thread (geometry::thread_count): both halves here, in turn. Throws
+// a process of one thread (numerics::thread_count): both halves here, in turn. Throws
 // std::runtime_error when METIS fails.
 FillOrder order_by_nested_dissection(const SparseMatrix& upper, bool with_helper = true);
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <utility>
 
-#include "geometry/parallel.hpp"
+#include "numerics/parallel.hpp"
 #include "hydro/blas_threads.hpp"
 
 namespace hydrodda::hydro {
@@ -152,7 +152,7 @@ void SupernodalFactorization::factorize(const SparseMatrix& upper, bool two_thre
     w.failed_column = -1;
   }
   // Each half on its thread, or both on one where the runtime grants one (the same values).
-  geometry::run_two_parts(halves_in_parallel(two_threads), [&](int half) { factor_group(half, work[half]); });
+  numerics::run_two_parts(halves_in_parallel(two_threads), [&](int half) { factor_group(half, work[half]); });
   int failed = -1;
   for (const Workspace& w : work)
     if (w.failed_column >= 0 && (failed < 0 || w.failed_column < failed)) failed = w.failed_column;
@@ -305,7 +305,7 @@ void SupernodalFactorization::solve_forward_with(const Value* l, Eigen::VectorXd
   Eigen::VectorXd y(n_);
   for (int k = 0; k < n_; ++k) y[k] = v[perm[k]];
   for (std::vector<double>& sums : separator_sums_) sums.assign(separator_columns_.size(), 0.0);
-  geometry::run_two_parts(halves_in_parallel(two_threads),
+  numerics::run_two_parts(halves_in_parallel(two_threads),
                           [&](int half) { forward_over(half, l, y.data(), separator_sums_[half].data()); });
   for (std::size_t t = 0; t < separator_columns_.size(); ++t)
     y[separator_columns_[t]] -= separator_sums_[0][t] + separator_sums_[1][t];
@@ -318,7 +318,7 @@ void SupernodalFactorization::solve_backward_with(const Value* l, Eigen::VectorX
   if (v.size() != n_) throw std::logic_error("supernodal solve: the right-hand side has the wrong size");
   if (!l) throw std::logic_error("supernodal solve: nothing factored");
   backward_over(kSeparator, l, v.data());
-  geometry::run_two_parts(halves_in_parallel(two_threads), [&](int half) { backward_over(half, l, v.data()); });
+  numerics::run_two_parts(halves_in_parallel(two_threads), [&](int half) { backward_over(half, l, v.data()); });
   const int* perm = static_cast<const int*>(factor_->Perm);
   Eigen::VectorXd x(n_);
   for (int k = 0; k < n_; ++k) x[perm[k]] = v[k];

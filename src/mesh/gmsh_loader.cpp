@@ -10,8 +10,8 @@
 
 #include "mesh/gmsh/gmsh_plugin.hpp"
 #include "mesh/mesh_request.hpp"
-#include "mesh/metis_lock.hpp"
-#include "mesh/program_files.hpp"
+#include "base/metis_lock.hpp"
+#include "base/program_files.hpp"
 
 namespace hydrodda::mesh {
 namespace {
@@ -25,7 +25,7 @@ struct Plugin {
 
 // Beside the executable, else where the build made it. Loaded once, never unloaded.
 Plugin load_plugin() {
-  const fs::path path = find_beside_program("hydrodda_gmsh_mesher.so", HYDRODDA_GMSH_MESHER);
+  const fs::path path = base::find_beside_program("hydrodda_gmsh_mesher.so", HYDRODDA_GMSH_MESHER);
   void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!handle) {
     const char* why = ::dlerror();
@@ -48,14 +48,14 @@ const Plugin& plugin() {
 
 TriangleMesh generate_mesh(const MeshRequest& request) {
   TriangleMesh mesh;
-  const std::lock_guard<std::mutex> one_at_a_time(metis_lock());  // Gmsh orders with METIS
+  const std::lock_guard<std::mutex> one_at_a_time(base::metis_lock());  // Gmsh orders with METIS
   plugin().generate(request, mesh);
   return mesh;
 }
 
 TriangleMesh read_msh(const std::string& path, bool verbose) {
   TriangleMesh mesh;
-  const std::lock_guard<std::mutex> one_at_a_time(metis_lock());
+  const std::lock_guard<std::mutex> one_at_a_time(base::metis_lock());
   plugin().read(path, verbose, mesh);
   return mesh;
 }

@@ -11,7 +11,7 @@
 #include <optional>
 #include <stdexcept>
 
-#include "geometry/parallel.hpp"
+#include "numerics/parallel.hpp"
 
 namespace hydrodda::output {
 namespace {
@@ -96,7 +96,7 @@ std::vector<ZlibEncoding> compress_zlib_blocks(std::span<const std::span<const s
   std::vector<std::string> compressed(blocks.size());
   std::exception_ptr failure;
   const auto count = static_cast<std::ptrdiff_t>(blocks.size());
-#pragma omp parallel if (count > 2) num_threads(geometry::thread_count())
+#pragma omp parallel if (count > 2) num_threads(numerics::thread_count())
   {
     std::optional<Deflater> deflater;  // one per thread, made on its first block
 #pragma omp for schedule(dynamic)

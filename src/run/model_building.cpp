@@ -12,7 +12,7 @@
 
 #include "dda/selection.hpp"
 #include "dda/support.hpp"
-#include "geometry/parallel.hpp"
+#include "numerics/parallel.hpp"
 #include "mesh/mesh_cache.hpp"
 #include "mesh/mesh_request.hpp"
 #include "mesh/spatial_order.hpp"
@@ -229,7 +229,7 @@ mesh::MeshRequest make_mesh_request(const Scenario& s) {
   request.refine_distance = m.refine_distance;
   for (const scenario::MeshRefinePoint& r : m.refine_points)
     request.refinement_points.push_back({r.point, r.size, r.radius});
-  request.processes = geometry::thread_count();  // the tiles of a large mesh: the same mesh on any number
+  request.processes = numerics::thread_count();  // the tiles of a large mesh: the same mesh on any number
   return request;
 }
 

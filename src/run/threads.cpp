@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "geometry/parallel.hpp"
+#include "numerics/parallel.hpp"
 #include "run/run.hpp"
 
 namespace hydrodda::run {
@@ -46,15 +46,15 @@ std::optional<int> chosen_thread_count(std::optional<int> requested) {
 // load of 13, 0.35 s and 3–5 s on one.
 int use_threads(std::optional<int> requested, bool spare_busy_machine) {
   if (const std::optional<int> n = chosen_thread_count(requested)) {
-    geometry::set_thread_count(*n);
+    numerics::set_thread_count(*n);
     spdlog::debug("{} thread(s), as chosen", *n);
     return *n;
   }
-  const int cores = geometry::thread_count();
+  const int cores = numerics::thread_count();
   double load[1] = {0.0};
   if (spare_busy_machine && !std::getenv("OMP_NUM_THREADS") && cores > 1 && ::getloadavg(load, 1) == 1 &&
       load[0] >= static_cast<double>(cores)) {
-    geometry::set_thread_count(1);
+    numerics::set_thread_count(1);
     spdlog::debug("one thread: the machine's load ({:.1f}) fills its {} cores", load[0], cores);
     return 1;
   }
@@ -63,8 +63,8 @@ int use_threads(std::optional<int> requested, bool spare_busy_machine) {
 }
 
 ThreadsOfThisCall::ThreadsOfThisCall(std::optional<int> requested)
-    : previous_(geometry::set_thread_count_of_this_thread(chosen_thread_count(requested).value_or(0))) {}
+    : previous_(numerics::set_thread_count_of_this_thread(chosen_thread_count(requested).value_or(0))) {}
 
-ThreadsOfThisCall::~ThreadsOfThisCall() { geometry::set_thread_count_of_this_thread(previous_); }
+ThreadsOfThisCall::~ThreadsOfThisCall() { numerics::set_thread_count_of_this_thread(previous_); }
 
 }  // namespace hydrodda::run

@@ -1,7 +1,7 @@
 #pragma once
 // How many threads a run uses: the front end's choice (the command line's --threads, Python's
 // threads=), else the HYDRODDA_THREADS variable, else every core the process may use
-// (geometry::usable_core_count). The results are the same bit for bit on any number.
+// (numerics::usable_core_count). The results are the same bit for bit on any number.
 
 #include <optional>
 #include <string_view>
@@ -15,7 +15,7 @@ inline constexpr const char* kThreadsVariable = "HYDRODDA_THREADS";
 std::optional<int> parse_thread_count(std::string_view text);
 
 // `requested` if given, else HYDRODDA_THREADS's value where it is set, else nothing (the
-// machine's count, geometry::thread_count()). Throws InputError naming HYDRODDA_THREADS and its
+// machine's count, numerics::thread_count()). Throws InputError naming HYDRODDA_THREADS and its
 // value when that is not a whole number ≥ 1.
 std::optional<int> chosen_thread_count(std::optional<int> requested);
 

@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-#include "geometry/parallel.hpp"
+#include "numerics/parallel.hpp"
 #include "run/run.hpp"
 
 namespace hydrodda::run {
@@ -71,15 +71,15 @@ TEST(Threads, ABadVariableIsNamedWithItsValue) {
 
 TEST(Threads, ACallsOwnCountHoldsOnItsThreadWhileItLasts) {
   const ThreadsVariable unset(nullptr);
-  const int before = geometry::thread_count();
+  const int before = numerics::thread_count();
   {
     const ThreadsOfThisCall call(7);
-    EXPECT_EQ(geometry::thread_count(), 7);
+    EXPECT_EQ(numerics::thread_count(), 7);
   }
-  EXPECT_EQ(geometry::thread_count(), before);
+  EXPECT_EQ(numerics::thread_count(), before);
   {
     const ThreadsOfThisCall call(std::nullopt);  // nothing chosen: the process's
-    EXPECT_EQ(geometry::thread_count(), before);
+    EXPECT_EQ(numerics::thread_count(), before);
   }
 }
 

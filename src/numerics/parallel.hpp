@@ -20,7 +20,7 @@
 
 #include <omp.h>
 
-namespace hydrodda::geometry {
+namespace hydrodda::numerics {
 
 // The threads this process's parallel loops use: set_thread_count_of_this_thread's or
 // set_thread_count's value; else OpenMP's count (OMP_NUM_THREADS or omp_set_num_threads, the
@@ -140,4 +140,4 @@ void for_each_share(int shares, std::size_t count, Body&& body) {
   }
 }
 
-}  // namespace hydrodda::geometry
+}  // namespace hydrodda::numerics

@@ -1,8 +1,8 @@
-#include "mesh/program_files.hpp"
+#include "base/program_files.hpp"
 
 #include <system_error>
 
-namespace hydrodda::mesh {
+namespace hydrodda::base {
 
 std::filesystem::path find_beside_program(std::string_view name, const std::filesystem::path& built) {
   std::error_code error;
@@ -14,4 +14,4 @@ std::filesystem::path find_beside_program(std::string_view name, const std::file
   return built;
 }
 
-}  // namespace hydrodda::mesh
+}  // namespace hydrodda::base

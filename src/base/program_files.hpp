@@ -5,10 +5,10 @@
 #include <filesystem>
 #include <string_view>
 
-namespace hydrodda::mesh {
+namespace hydrodda::base {
 
 // `name` in the running program's folder when it is there, else `built`, where the build
 // made it (tests, benchmarks and the Python module run from other folders).
 std::filesystem::path find_beside_program(std::string_view name, const std::filesystem::path& built);
 
-}  // namespace hydrodda::mesh
+}  // namespace hydrodda::base

@@ -1,7 +1,7 @@
-// The process's threads (geometry/parallel.hpp): how many, and loops whose answer does not
+// The process's threads (numerics/parallel.hpp): how many, and loops whose answer does not
 // depend on that.
 
-#include "geometry/parallel.hpp"
+#include "numerics/parallel.hpp"
 
 #include <gtest/gtest.h>
 #include <sched.h>
@@ -13,7 +13,7 @@
 #include <thread>
 #include <vector>
 
-namespace hydrodda::geometry {
+namespace hydrodda::numerics {
 namespace {
 
 // Sets the count of this thread for one test, and takes it back.
@@ -111,4 +111,4 @@ TEST(Parallel, TwoPartsAreHalvesOnAnyNumberOfThreads) {
 }
 
 }  // namespace
-}  // namespace hydrodda::geometry
+}  // namespace hydrodda::numerics

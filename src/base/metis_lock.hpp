@@ -8,8 +8,8 @@
 
 #include <mutex>
 
-namespace hydrodda::mesh {
+namespace hydrodda::base {
 
 std::mutex& metis_lock();
 
-}  // namespace hydrodda::mesh
+}  // namespace hydrodda::base

@@ -1,4 +1,4 @@
-#include "geometry/parallel.hpp"
+#include "numerics/parallel.hpp"
 
 #include <sched.h>
 
@@ -9,7 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace hydrodda::geometry {
+namespace hydrodda::numerics {
 
 namespace {
 
@@ -116,4 +116,4 @@ void start_threads() {
   }
 }
 
-}  // namespace hydrodda::geometry
+}  // namespace hydrodda::numerics
