@@ -3,7 +3,7 @@
 // orderings made at once on two threads (two runs in one Python process) draw from each other's
 // sequence and come out different from run to run, and so do the heads solved on them, at
 // round-off. Gmsh orders with the same METIS while it meshes. Every call into METIS holds this
-// lock: the flow matrix's ordering (hydro/nested_dissection.cpp, hydro/cholmod_solver.cpp) and
+// lock: the flow matrix's ordering (numerics/nested_dissection.cpp, numerics/cholmod_solver.cpp) and
 // every call into Gmsh (gmsh_loader.cpp).
 
 #include <mutex>

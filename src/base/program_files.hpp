@@ -1,6 +1,6 @@
 #pragma once
 // The files installed beside the program: the Gmsh plugin (gmsh_loader.cpp) and the flow
-// ordering's helper (hydro/nested_dissection.cpp).
+// ordering's helper (numerics/nested_dissection.cpp).
 
 #include <filesystem>
 #include <string_view>

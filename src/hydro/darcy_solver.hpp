@@ -64,7 +64,7 @@ class DarcySolver {
   static constexpr int kHopelessIterations = 3 * kMaxIterations;
   // At most this many elements whose permeability jumped since the kept factor (a fracture
   // opening or closing) are taken into the preconditioner exactly, by a low-rank correction of
-  // the kept factor (hydro/supernodal_correction.hpp), rather than factoring afresh.
+  // the kept factor (numerics/supernodal_correction.hpp), rather than factoring afresh.
   static constexpr int kMaxCorrectedElements = 400;
 
   // A bound on the CG iterations solve_reusing_factor() would need with the kept factor, in

@@ -1,6 +1,6 @@
 #pragma once
 // A sparse Cholesky factorisation of a symmetric positive definite matrix, behind one
-// interface for its backends (CHOLMOD's, hydro/cholmod_solver.cpp): the pattern is analysed
+// interface for its backends (CHOLMOD's, cholmod_solver.hpp): the pattern is analysed
 // once (ordering, symbolic factorisation), then each new set of values is only factorised
 // numerically; the factor may be kept to precondition later matrices, corrected by a low-rank
 // term (kept_factor.hpp). Another backend (e.g. PETSc) implements the same calls.

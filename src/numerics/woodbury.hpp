@@ -6,7 +6,7 @@
 //   (M + U S Uᵀ)⁻¹ = Pᵀ L⁻ᵀ (I − W C⁻¹ Wᵀ) L⁻¹ P,   C = σ + Wᵀ W   (σ⁻¹ = σ).
 // Each factor keeps W in its own sparse layout, a column's entries only on the path of its
 // rows to the root of the elimination tree (the DDA's block factor, dda/factor_solver.cpp; the
-// flow's supernodal factor, hydro/supernodal_correction.cpp), and sums σ + Wᵀ W from it; this
+// flow's supernodal factor, supernodal_correction.cpp), and sums σ + Wᵀ W from it; this
 // is the small dense capacitance C both then factor and solve with.
 
 #include <Eigen/Dense>

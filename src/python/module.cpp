@@ -1,6 +1,6 @@
 // The extension module _hydrodda, wrapped by the package python/hydrodda/.
 
-#include "hydro/blas_threads.hpp"
+#include "numerics/blas_threads.hpp"
 #include "python/bindings.hpp"
 
 PYBIND11_MODULE(_hydrodda, module) {
@@ -12,6 +12,6 @@ PYBIND11_MODULE(_hydrodda, module) {
   python::bind_run(module);
   python::bind_simulation(module);
   python::route_logging_to_python();
-  // For the tests: whether OpenBLAS's calls reach the module's lock (hydro/blas_threads.hpp).
-  module.def("_blas_is_thread_safe", &hydrodda::hydro::blas_is_thread_safe);
+  // For the tests: whether OpenBLAS's calls reach the module's lock (numerics/blas_threads.hpp).
+  module.def("_blas_is_thread_safe", &hydrodda::numerics::blas_is_thread_safe);
 }

@@ -1,4 +1,4 @@
-// hydrodda_order: METIS_NodeND of one graph, a helper process of hydro/nested_dissection.cpp.
+// hydrodda_order: METIS_NodeND of one graph, a helper process of numerics/nested_dissection.cpp.
 // METIS cannot order two graphs at once in one process (its random number generator is
 // shared), and a forked copy of a large process pays for the memory it then shares; this small
 // program orders one half of the flow matrix's graph beside the program, which orders the other.

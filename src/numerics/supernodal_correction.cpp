@@ -1,4 +1,4 @@
-#include "hydro/supernodal_correction.hpp"
+#include "numerics/supernodal_correction.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,10 +9,10 @@
 
 #include <Eigen/Dense>
 
-#include "hydro/blas_threads.hpp"
+#include "numerics/blas_threads.hpp"
 #include "numerics/woodbury.hpp"
 
-namespace hydrodda::hydro {
+namespace hydrodda::numerics {
 namespace {
 
 // Pseudocode (Hager, "Updating the inverse of a matrix", SIAM Review 31, 1989; the identity
@@ -283,4 +283,4 @@ std::unique_ptr<CorrectedFactor> correct_supernodal_factor(cholmod_factor* facto
   return std::make_unique<SupernodalCorrection>(factor, common, tree, term, std::move(halves), single);
 }
 
-}  // namespace hydrodda::hydro
+}  // namespace hydrodda::numerics

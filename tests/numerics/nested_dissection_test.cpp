@@ -15,10 +15,10 @@
 #include <string>
 #include <vector>
 
-#include "hydro/linear_solver.hpp"
-#include "hydro/nested_dissection.hpp"
+#include "numerics/cholmod_solver.hpp"
+#include "numerics/nested_dissection.hpp"
 
-namespace hydrodda::hydro {
+namespace hydrodda::numerics {
 namespace {
 
 // The P1 Laplacian's pattern on an nx × ny grid of squares cut into triangles, plus a shift
@@ -155,4 +155,4 @@ TEST(NestedDissection, TheHelperOrdersAGraphAsThisProcessDoes) {
 }
 
 }  // namespace
-}  // namespace hydrodda::hydro
+}  // namespace hydrodda::numerics

@@ -6,7 +6,7 @@
 // dynamic linker, come here; the real ones are the next definitions in the search order. Other
 // BLAS libraries never call them.
 
-#include "hydro/blas_threads.hpp"
+#include "numerics/blas_threads.hpp"
 
 #include <dlfcn.h>
 
@@ -56,7 +56,7 @@ __attribute__((visibility("default"))) void blas_memory_free(void* buffer) {
 
 }  // extern "C"
 
-namespace hydrodda::hydro {
+namespace hydrodda::numerics {
 
 // OpenBLAS binds its calls of the pool's functions once, in the scope it was loaded in: a
 // library loaded before this code (NumPy's OpenBLAS, then the Python module) keeps its own,
@@ -79,4 +79,4 @@ std::unique_lock<std::mutex> hold_blas() {
   return std::unique_lock<std::mutex>(one_caller);
 }
 
-}  // namespace hydrodda::hydro
+}  // namespace hydrodda::numerics

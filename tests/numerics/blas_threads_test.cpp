@@ -1,8 +1,8 @@
-// BLAS from two threads at once (hydro/blas_threads.cpp): each call's result is the one the
+// BLAS from two threads at once (numerics/blas_threads.cpp): each call's result is the one the
 // same call gives alone, bit for bit. Without the lock around OpenBLAS's buffers, Debian's
 // serial OpenBLAS gave 20–30 wrong results in these 40,000 calls.
 
-#include "hydro/blas_threads.hpp"
+#include "numerics/blas_threads.hpp"
 
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -15,7 +15,7 @@
 extern "C" void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha,
                        const double* a, const int* lda, const double* beta, double* c, const int* ldc);
 
-namespace hydrodda::hydro {
+namespace hydrodda::numerics {
 namespace {
 
 struct Product {  // C = A Aᵀ, lower triangle, A n × k with leading dimension lda
@@ -59,4 +59,4 @@ TEST(BlasThreads, TwoThreadsGetWhatOneGets) {
 }
 
 }  // namespace
-}  // namespace hydrodda::hydro
+}  // namespace hydrodda::numerics

@@ -4,7 +4,7 @@
 // different orders: their entries agree to round-off, 1e-13 of the largest (the matrices here
 // have conductances spread over two decades, condition numbers near 1e5).
 
-#include "hydro/supernodal_factorization.hpp"
+#include "numerics/supernodal_factorization.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,9 +16,9 @@
 
 #include <Eigen/CholmodSupport>
 
-#include "hydro/nested_dissection.hpp"
+#include "numerics/nested_dissection.hpp"
 
-namespace hydrodda::hydro {
+namespace hydrodda::numerics {
 namespace {
 
 constexpr double kEntryAgreement = 1e-13;  // max |L_ours − L_cholmod| / max |L_cholmod|
@@ -217,4 +217,4 @@ TEST(SupernodalFactorization, RefusesAMatrixThatIsNotPositiveDefinite) {
 }
 
 }  // namespace
-}  // namespace hydrodda::hydro
+}  // namespace hydrodda::numerics

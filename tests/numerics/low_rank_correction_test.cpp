@@ -1,5 +1,5 @@
 // SparseCholesky::correct on CHOLMOD's supernodal factor: (A + U S Uᵀ)⁻¹ b applied from the
-// factor of A (Sherman–Morrison–Woodbury, hydro/supernodal_correction.cpp) against a fresh
+// factor of A (Sherman–Morrison–Woodbury, numerics/supernodal_correction.cpp) against a fresh
 // factorisation of A + U S Uᵀ. Both are exact up to round-off: the matrices here have
 // condition numbers near 1e3–1e4, so the two answers agree to 1e-11 relative.
 
@@ -11,9 +11,9 @@
 
 #include <Eigen/Dense>
 
-#include "hydro/linear_solver.hpp"
+#include "numerics/cholmod_solver.hpp"
 
-namespace hydrodda::hydro {
+namespace hydrodda::numerics {
 namespace {
 
 constexpr double kAgreement = 1e-11;  // relative, ‖x_corrected − x_fresh‖∞ / ‖x_fresh‖∞
@@ -157,4 +157,4 @@ TEST(LowRankCorrection, NeedsAFactor) {
 }
 
 }  // namespace
-}  // namespace hydrodda::hydro
+}  // namespace hydrodda::numerics

@@ -6,14 +6,14 @@
 
 #include <Eigen/CholmodSupport>
 
-#include "hydro/blas_threads.hpp"
-#include "hydro/linear_solver.hpp"
-#include "hydro/nested_dissection.hpp"
-#include "hydro/supernodal_correction.hpp"
-#include "hydro/supernodal_factorization.hpp"
+#include "numerics/blas_threads.hpp"
+#include "numerics/cholmod_solver.hpp"
+#include "numerics/nested_dissection.hpp"
+#include "numerics/supernodal_correction.hpp"
+#include "numerics/supernodal_factorization.hpp"
 #include "base/metis_lock.hpp"
 
-namespace hydrodda::hydro {
+namespace hydrodda::numerics {
 namespace {
 
 // While one lives, every OpenMP parallel region the calling thread starts runs on that thread
@@ -61,7 +61,7 @@ class SupernodalLLT : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Up
   cholmod_common* common() const { return &const_cast<SupernodalLLT*>(this)->cholmod(); }
 };
 
-class CholmodSolver final : public numerics::SparseCholesky {
+class CholmodSolver final : public SparseCholesky {
  public:
   explicit CholmodSolver(FillOrdering ordering) : ordering_(ordering) {
     // The ordering is paid once per mesh, the numeric factorisation every coupling
@@ -161,8 +161,8 @@ class CholmodSolver final : public numerics::SparseCholesky {
 
 }  // namespace
 
-std::unique_ptr<numerics::SparseCholesky> make_cholmod_solver(FillOrdering ordering) {
+std::unique_ptr<SparseCholesky> make_cholmod_solver(FillOrdering ordering) {
   return std::make_unique<CholmodSolver>(ordering);
 }
 
-}  // namespace hydrodda::hydro
+}  // namespace hydrodda::numerics

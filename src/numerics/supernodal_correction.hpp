@@ -10,9 +10,9 @@
 #include <memory>
 #include <vector>
 
-#include "hydro/linear_solver.hpp"
+#include "numerics/cholmod_solver.hpp"
 
-namespace hydrodda::hydro {
+namespace hydrodda::numerics {
 
 // The elimination tree of a supernodal analysis, which every correction walks: it depends on
 // the pattern alone, so it is made once per analysis, not once per correction.
@@ -41,4 +41,4 @@ std::unique_ptr<CorrectedFactor> correct_supernodal_factor(cholmod_factor* facto
                                                            const SupernodalTree& tree, const LowRankTerm& term,
                                                            HalfSolves halves = {}, const float* single = nullptr);
 
-}  // namespace hydrodda::hydro
+}  // namespace hydrodda::numerics

@@ -3,7 +3,7 @@
 
 #include <mutex>
 
-namespace hydrodda::hydro {
+namespace hydrodda::numerics {
 
 // True where OpenBLAS's own calls reach the lock around its pool of work buffers
 // (blas_threads.cpp), or where the BLAS is not OpenBLAS: in the program and its tests, whose
@@ -17,4 +17,4 @@ bool blas_is_thread_safe();
 // runs in one process (two Python threads) are not handed the same buffer; else nothing held.
 std::unique_lock<std::mutex> hold_blas();
 
-}  // namespace hydrodda::hydro
+}  // namespace hydrodda::numerics

@@ -9,9 +9,9 @@
 
 #include <vector>
 
-#include "hydro/linear_solver.hpp"
+#include "numerics/cholmod_solver.hpp"
 
-namespace hydrodda::hydro {
+namespace hydrodda::numerics {
 
 // A pivot order: order[k] is the unknown eliminated k-th (CHOLMOD's Perm). Where a separator
 // split the graph, order's first halves[0] unknowns are one half, the next halves[1] the other,
@@ -34,4 +34,4 @@ FillOrder order_by_nested_dissection(const SparseMatrix& upper, bool with_helper
 
 inline constexpr int kSplitFrom = 20000;
 
-}  // namespace hydrodda::hydro
+}  // namespace hydrodda::numerics

@@ -1,4 +1,4 @@
-#include "hydro/supernodal_factorization.hpp"
+#include "numerics/supernodal_factorization.hpp"
 
 #include <algorithm>
 #include <array>
@@ -10,9 +10,9 @@
 #include <utility>
 
 #include "numerics/parallel.hpp"
-#include "hydro/blas_threads.hpp"
+#include "numerics/blas_threads.hpp"
 
-namespace hydrodda::hydro {
+namespace hydrodda::numerics {
 
 // Fortran BLAS and LAPACK, as CHOLMOD calls them (OpenBLAS on Debian; two threads call it at
 // once only where blas_threads.cpp guards its buffers, else under hold_blas()).
@@ -251,9 +251,9 @@ void SupernodalFactorization::factor_supernode(int s, std::span<std::vector<int>
   }
 }
 
-}  // namespace hydrodda::hydro
+}  // namespace hydrodda::numerics
 
-namespace hydrodda::hydro {
+namespace hydrodda::numerics {
 namespace {
 
 // Σ a_i b_i in four running sums, which the compiler can keep in vector registers side by
@@ -421,4 +421,4 @@ void CholmodValues::operator()(float* values) const {
   cholmod_free(doubles, sizeof(double), values, common);
 }
 
-}  // namespace hydrodda::hydro
+}  // namespace hydrodda::numerics

@@ -1,4 +1,4 @@
-#include "hydro/nested_dissection.hpp"
+#include "numerics/nested_dissection.hpp"
 
 #include <metis.h>
 #include <spawn.h>
@@ -21,7 +21,7 @@
 
 extern char** environ;
 
-namespace hydrodda::hydro {
+namespace hydrodda::numerics {
 namespace {
 
 namespace fs = std::filesystem;
@@ -93,7 +93,7 @@ Graph subgraph(const Graph& g, const std::vector<idx_t>& vertices) {
 // The helper beside the program, else where the build made it.
 fs::path helper_path() { return base::find_beside_program("hydrodda_order", HYDRODDA_ORDER_PROGRAM); }
 
-// The helper process ordering one graph (hydro/ordering/order_graph.cpp), through a socket
+// The helper process ordering one graph (ordering/order_graph.cpp), through a socket
 // (MSG_NOSIGNAL: a helper that died is a failed order, not a SIGPIPE here). Killed and waited
 // for if its order is not taken.
 class OrderingProcess {
@@ -233,4 +233,4 @@ std::vector<int> FillOrder::parts() const {
   return part;
 }
 
-}  // namespace hydrodda::hydro
+}  // namespace hydrodda::numerics

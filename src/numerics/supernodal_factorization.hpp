@@ -1,6 +1,6 @@
 #pragma once
 // The numeric supernodal Cholesky factorisation of a CHOLMOD analysis, on two threads: the
-// supernodes of the two halves a vertex separator leaves (hydro/nested_dissection.hpp) are
+// supernodes of the two halves a vertex separator leaves (nested_dissection.hpp) are
 // factored side by side, the separator's after both. Written by hand because CHOLMOD's own
 // (cholmod_factorize) works its supernodes one after the other: at a million triangles it
 // keeps one core of two busy for 0.56 s a pass. The factor it fills is CHOLMOD's, so that
@@ -16,10 +16,10 @@
 
 #include <Eigen/Core>
 
-#include "hydro/linear_solver.hpp"
-#include "hydro/supernodal_correction.hpp"
+#include "numerics/cholmod_solver.hpp"
+#include "numerics/supernodal_correction.hpp"
 
-namespace hydrodda::hydro {
+namespace hydrodda::numerics {
 
 // Gives CHOLMOD back a block of `doubles` doubles' worth that it allocated.
 struct CholmodValues {
@@ -122,4 +122,4 @@ class SupernodalFactorization {
   std::unique_ptr<float[], CholmodValues> single_;
 };
 
-}  // namespace hydrodda::hydro
+}  // namespace hydrodda::numerics
