@@ -27,6 +27,7 @@
 #include "run/run.hpp"
 #include "run/run_summary.hpp"
 #include "run/scenario_fractures.hpp"
+#include "run/threads.hpp"
 
 namespace hydrodda::python {
 
@@ -34,6 +35,18 @@ namespace {
 
 py::object summary_dict(const output::RunSummary& summary) {
   return py::module_::import("json").attr("loads")(output::format_summary(summary));
+}
+
+// threads= as hydrodda.run() takes it (its _check_count): None, or a whole number from 1 to
+// 4096 (not a bool); anything else is a ValueError that names it.
+std::optional<int> checked_thread_count(const py::object& threads) {
+  if (threads.is_none()) return std::nullopt;
+  const bool whole = py::isinstance<py::int_>(threads) && !py::isinstance<py::bool_>(threads);
+  const long long count = whole ? threads.cast<long long>() : 0;
+  if (!whole || count < 1 || count > 4096)
+    throw py::value_error("threads: must be a whole number from 1 to 4096, got " +
+                          py::repr(threads).cast<std::string>());
+  return static_cast<int>(count);
 }
 
 // One caller of a model at a time. A step, pass or solve runs with the GIL released, so
@@ -77,7 +90,9 @@ class ModelLock {
 // A scenario's model, stepped by hand.
 class Simulation {
  public:
-  explicit Simulation(const PythonScenario& scenario) : scenario_(scenario) {
+  Simulation(const PythonScenario& scenario, const py::object& threads)
+      : scenario_(scenario), threads_(checked_thread_count(threads)) {
+    run::chosen_thread_count(threads_);  // a bad HYDRODDA_THREADS is refused now, not at the first step
     // Meshing again around the wedge tips is the run's (run_coupled): a model stepped by hand
     // keeps the mesh it was built on.
     if (scenario.definition.mesh && scenario.definition.mesh->refine_tips)
@@ -87,6 +102,7 @@ class Simulation {
     PythonCallbacks callbacks{py::none()};  // Ctrl-C in a logging handler while building: raised once built
     {
       py::gil_scoped_release released;
+      const run::ThreadsOfThisCall own_threads(threads_);
       switch (run::kind_of(scenario.definition)) {
         case run::RunKind::flow: model_ = std::make_unique<run::FlowModel>(scenario.definition); break;
         case run::RunKind::mechanics: model_ = std::make_unique<run::MechanicsModel>(scenario.definition); break;
@@ -107,6 +123,7 @@ class Simulation {
     PythonCallbacks callbacks{py::none()};  // the one solve is not stopped: Ctrl-C is raised after it
     {
       py::gil_scoped_release released;
+      const run::ThreadsOfThisCall own_threads(threads_);
       model.solve();
     }
     callbacks.raise_pending();
@@ -122,6 +139,7 @@ class Simulation {
     long long taken = 0;
     {
       py::gil_scoped_release released;
+      const run::ThreadsOfThisCall own_threads(threads_);
       while (taken < count && !model.finished() && !stop.stop_requested()) {
         model.step();
         ++taken;
@@ -141,6 +159,7 @@ class Simulation {
     std::optional<coupling::PassReport> report;
     try {
       py::gil_scoped_release released;
+      const run::ThreadsOfThisCall own_threads(threads_);
       report = model.run_pass();
     } catch (const coupling::PassInterrupted&) {
       model.set_stop_request({});
@@ -182,6 +201,7 @@ class Simulation {
   py::object fractures() {
     const ModelLock::Held held = lock_.hold("fractures");
     const dda::System& blocks = system("fractures");
+    const run::ThreadsOfThisCall own_threads(threads_);  // the meter's loops
     if (!meter_) {
       meter_ = run::make_fracture_meter(scenario_.definition);
       if (!meter_) return py::none();
@@ -282,6 +302,7 @@ class Simulation {
 
   mutable ModelLock lock_;   // every call but kind holds it
   PythonScenario scenario_;  // as built, with the changes set() made since
+  std::optional<int> threads_;  // threads=: the threads of every call that computes (the results are the same on any)
   std::variant<Flow, Mechanics, Coupled> model_;
   bool converged_ = false;  // coupled: the last pass met the tolerance
   std::optional<fractures::FractureMeter> meter_;                  // made on the first call of fractures
@@ -293,7 +314,10 @@ class Simulation {
 
 void bind_simulation(py::module_& module) {
   py::class_<Simulation>(module, "Simulation", "A scenario's model advanced by hand; its fields as NumPy arrays.")
-      .def(py::init<const PythonScenario&>(), py::arg("scenario"))
+      .def(py::init<const PythonScenario&, const py::object&>(), py::arg("scenario"), py::kw_only(),
+           py::arg("threads") = py::none(),
+           "Builds the scenario's model. `threads`: how many its solves, steps and passes use (default: "
+           "HYDRODDA_THREADS, else every core the process may use); the results are the same on any number.")
       .def_property_readonly("kind", &Simulation::kind)
       .def("solve", &Simulation::solve, "Flow only: the steady solve.")
       .def("step", &Simulation::step, py::arg("count") = 1,

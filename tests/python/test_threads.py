@@ -8,9 +8,10 @@ import sys
 import threading
 
 import numpy as np
+import pytest
 
 import hydrodda
-from conftest import VERIFICATION
+from conftest import SOURCE_DIR, VERIFICATION
 
 # The second thread calls once the first is inside its steps, without a clock: the first keeps
 # the GIL (no forced switch with an interval of 1000 s) until step() releases it, holding the
@@ -145,3 +146,59 @@ def test_blas_from_two_threads_only_where_its_buffers_are_guarded():
         assert child.returncode == 0, child.stderr
         said[first] = child.stdout.strip()
     assert said == {"numpy": "False", "hydrodda": "True"}
+
+
+def fields_of(sim):
+    """Every field a Simulation gives, as {group: {name: array}}."""
+    groups = {"blocks": sim.blocks, "contacts": sim.contacts}
+    if sim.kind == "coupled":
+        groups["fluid"] = sim.fluid
+    return groups
+
+
+def assert_same(one, two, name):
+    """The same value bit for bit: an array, or a list of them (the blocks' vertices)."""
+    if isinstance(one, (list, tuple)):
+        assert len(one) == len(two), name
+        for k, (a, b) in enumerate(zip(one, two)):
+            assert_same(a, b, f"{name}[{k}]")
+    else:
+        np.testing.assert_array_equal(one, two, err_msg=name)
+
+
+def test_a_simulation_gives_the_same_fields_on_one_thread_and_on_two():
+    """Simulation(threads=) as run(threads=): a coupled model on the fine mesh of the threads
+    test (every loop of the flow side shared between threads), one pass, and the brick wall,
+    sixty steps, each built and stepped on one thread and on two, end with the same fields, bit
+    for bit, and the pass measures the same."""
+    flexure = hydrodda.Scenario.load(SOURCE_DIR / "tests/cli/scenarios/threads_flexure.toml")
+    wall = hydrodda.Scenario.load(VERIFICATION / "brick_wall_determinism.toml")
+    wall.set("mechanics.steps", 60)
+    ends = {}
+    for threads in (1, 2):
+        coupled = hydrodda.Simulation(flexure, threads=threads)
+        report = coupled.run_pass()
+        mechanics = hydrodda.Simulation(wall, threads=threads)
+        assert mechanics.step(60) == 60
+        ends[threads] = (report, fields_of(coupled), fields_of(mechanics))
+    (report_1, coupled_1, mechanics_1), (report_2, coupled_2, mechanics_2) = ends[1], ends[2]
+    assert report_1 == report_2
+    for one, two in ((coupled_1, coupled_2), (mechanics_1, mechanics_2)):
+        assert one.keys() == two.keys()
+        for group in one:
+            assert one[group].keys() == two[group].keys()
+            for name in one[group]:
+                assert_same(one[group][name], two[group][name], f"{group}.{name}")
+
+
+def test_a_simulation_refuses_a_bad_thread_count(monkeypatch):
+    """What run(threads=) refuses, Simulation(threads=) refuses before building anything: 0,
+    4097, 1.5, True; and a bad HYDRODDA_THREADS when threads= is not given."""
+    scenario = hydrodda.Scenario.load(VERIFICATION / "free_fall.toml")
+    for threads in (0, 4097, 1.5, True):
+        with pytest.raises(ValueError, match="threads: must be a whole number from 1 to 4096"):
+            hydrodda.Simulation(scenario, threads=threads)
+    monkeypatch.setenv("HYDRODDA_THREADS", "many")
+    with pytest.raises(hydrodda.InputError, match="HYDRODDA_THREADS"):
+        hydrodda.Simulation(scenario)
+    assert hydrodda.Simulation(scenario, threads=1).step(1) == 1  # threads= is chosen over the variable
