@@ -8,6 +8,7 @@
 
 #include "geometry/point.hpp"
 #include "geometry/polygon.hpp"
+#include "numerics/time_table.hpp"
 
 namespace hydrodda::dda {
 
@@ -72,12 +73,18 @@ struct FixedPoint {
   Point point;
 };
 
-// A force (N per metre of thickness) at a material point, fixed in direction.
+// A force (N per metre of thickness) at a material point, fixed in direction: a table of two
+// columns (fx, fy), constant or read at the load time (System::hold_load_time).
 struct PointLoad {
   int block = 0;
   Point point;
-  Point force;
+  numerics::TimeTable force;
 };
+
+inline numerics::TimeTable constant_force(Point force) {
+  const double values[2]{force.x, force.y};
+  return numerics::TimeTable::constant(values);
+}
 
 // A material point driven to initial position + value, ramped linearly to reach it at
 // ramp_time (the run's end time) and held after.
@@ -90,13 +97,14 @@ struct PrescribedDisplacement {
 
 // Traction on edge `edge` (from vertex edge to edge+1) varying linearly from its first to its
 // second vertex. Normal positive = tension (along the outward normal); shear along the edge.
+// Each value (Pa) is constant or a table read at the load time (System::hold_load_time).
 struct EdgeTraction {
   int block = 0;
   int edge = 0;
-  double normal_start = 0.0;  // Pa
-  double normal_end = 0.0;
-  double shear_start = 0.0;
-  double shear_end = 0.0;
+  numerics::TimeTable normal_start;
+  numerics::TimeTable normal_end;
+  numerics::TimeTable shear_start;
+  numerics::TimeTable shear_end;
 };
 
 struct MeasuredPoint {

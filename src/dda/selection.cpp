@@ -32,14 +32,14 @@ std::vector<EdgeRef> select_edges_on_segment(std::span<const BlockDefinition> bl
 
 std::vector<EdgeTraction> make_tractions_on_segment(std::span<const BlockDefinition> blocks,
                                                     Point a, Point b, double tolerance,
-                                                    double normal_a, double normal_b,
-                                                    double shear_a, double shear_b) {
+                                                    const numerics::TimeTable& normal_a, const numerics::TimeTable& normal_b,
+                                                    const numerics::TimeTable& shear_a, const numerics::TimeTable& shear_b) {
   const Point ab = b - a;
   const double length2 = dot(ab, ab);
   // Linear interpolation by the projection of an edge end on ab.
-  const auto at = [&](Point p, double va, double vb) {
+  const auto at = [&](Point p, const numerics::TimeTable& va, const numerics::TimeTable& vb) {
     const double t = length2 > 0 ? dot(p - a, ab) / length2 : 0.0;
-    return va + t * (vb - va);
+    return numerics::TimeTable::between(va, vb, t);
   };
   std::vector<EdgeTraction> out;
   for (EdgeRef e : select_edges_on_segment(blocks, a, b, tolerance)) {

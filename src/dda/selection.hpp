@@ -30,11 +30,12 @@ std::vector<EdgeRef> select_edges_on_segment(std::span<const BlockDefinition> bl
                                              Point b, double tolerance);
 
 // Uniform or linearly varying traction on every edge on segment ab: normal and shear go
-// linearly from their value at a to their value at b (end moments come from a linear normal).
+// linearly from their value at a to their value at b (end moments come from a linear normal);
+// each may be a time table, the edge's ends then tables of the same path.
 std::vector<EdgeTraction> make_tractions_on_segment(std::span<const BlockDefinition> blocks,
                                                     Point a, Point b, double tolerance,
-                                                    double normal_a, double normal_b,
-                                                    double shear_a, double shear_b);
+                                                    const numerics::TimeTable& normal_a, const numerics::TimeTable& normal_b,
+                                                    const numerics::TimeTable& shear_a, const numerics::TimeTable& shear_b);
 
 // A roller at every block vertex on segment ab, its normal the segment's, pointing away from
 // the block. With an initial stress, each starts pushing its vertex in by the field's normal

@@ -100,6 +100,7 @@ System::System(ModelDefinition def, std::unique_ptr<LinearSolver> solver)
   }
   for (const PointLoad& l : point_loads_) {
     check_block(l.block);
+    if (l.force.columns() != 2) throw std::invalid_argument("DDA: a point load's force needs two columns (fx, fy)");
     load_points_.push_back({l.block, l.point, l.point});
   }
   for (const PrescribedDisplacement& p : displacements_) {
@@ -373,20 +374,23 @@ void System::assemble_blocks(double dt, Matrix6Array& k, Eigen::VectorXd& f_base
     k[b.dof] += fixed_stiffness_ * w * w.transpose();
     f_base.segment<6>(6 * b.dof) -= w * (fixed_stiffness_ * dot(n, at - r.initial) + r.roller.preload - r.relief);
   }
+  // Loads given as time tables at the end of the step (the implicit step's equilibrium), or
+  // at the held load time.
+  const double load_time = held_load_time_.value_or(time_ + dt);
   for (std::size_t i = 0; i < point_loads_.size(); ++i) {
     const Block& b = blocks_[load_points_[i].block];
     if (b.dof < 0) continue;
     const Matrix26 t = compute_displacement_matrix(load_points_[i].position, b.moments.centroid);
-    f_base.segment<6>(6 * b.dof) +=
-        t.transpose() * Eigen::Vector2d(point_loads_[i].force.x, point_loads_[i].force.y);
+    const numerics::TimeTable& force = point_loads_[i].force;
+    f_base.segment<6>(6 * b.dof) += t.transpose() * Eigen::Vector2d(force.value(load_time, 0), force.value(load_time, 1));
   }
   for (const EdgeTraction& tr : tractions_) {
     const Block& b = blocks_[tr.block];
     if (b.dof < 0) continue;
     const int n = static_cast<int>(b.polygon.size());
     f_base.segment<6>(6 * b.dof) += compute_edge_traction_load(
-        b.polygon[tr.edge], b.polygon[(tr.edge + 1) % n], b.moments.centroid, tr.normal_start,
-        tr.normal_end, tr.shear_start, tr.shear_end);
+        b.polygon[tr.edge], b.polygon[(tr.edge + 1) % n], b.moments.centroid, tr.normal_start.value(load_time),
+        tr.normal_end.value(load_time), tr.shear_start.value(load_time), tr.shear_end.value(load_time));
   }
   for (std::size_t bi = 0; bi < blocks_.size(); ++bi) {
     const Block& b = blocks_[bi];

@@ -114,6 +114,12 @@ class System {
   // Replaces the edge tractions from the next step on (a loading path changed between steps);
   // throws std::invalid_argument for a block or edge that does not exist.
   void set_tractions(std::vector<EdgeTraction> tractions);
+  // The time the loads given as time tables (tractions, point loads) are read at: unset, the
+  // end of each step (time() + Δt); set, that time for every step until changed (a coupled
+  // run's load step, docs/scenario.md "Loads over time"). Not part of the state: whoever sets
+  // it sets it again after an import.
+  void hold_load_time(std::optional<double> load_time) { held_load_time_ = load_time; }
+  std::optional<double> held_load_time() const { return held_load_time_; }
 
   // The evolving state, and its restoration into a System built from the same definition
   // (import throws std::invalid_argument when the counts do not fit). Importing also restarts
@@ -300,6 +306,7 @@ class System {
   int unknown_count_ = 0;
   double time_ = 0.0;
   double dt_ = 0.0;
+  std::optional<double> held_load_time_;
   double penalty_ = 0.0;
   double fixed_stiffness_ = 0.0;
   double model_size_ = 0.0;

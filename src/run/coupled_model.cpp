@@ -1,5 +1,7 @@
 #include "run/coupled_model.hpp"
 
+#include "scenario/load_times.hpp"
+
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
@@ -57,17 +59,29 @@ CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::option
   if (s.joint.hydraulic())
     settings.joints = coupling::LoopSettings::Joints{build_model_geometry(s).network, make_joint_aperture_law(s)};
   settings.stop_requested = [this] { return stop_requested_ && stop_requested_(); };
-  loop_.emplace(mesh_, build_flow_problem(*s.flow), *system_, std::move(settings));
-  // The unfractured case does not change between passes: solved once.
-  region_references_ = reference_regions(s, mesh_);
+  load_times_ = scenario::find_load_times(s);
+  loop_.emplace(mesh_, build_flow_problem(*s.flow, load_time()), *system_, std::move(settings));
+  if (has_load_tables()) system_->hold_load_time(load_time());
+  // The unfractured case does not change between passes: solved once (and again for a load
+  // step's new boundary values).
+  region_references_ = reference_regions(s, mesh_, load_time());
 }
 
 void CoupledModel::set_flow_boundaries(std::vector<scenario::FlowBoundaryCondition> boundaries) {
   scenario::Scenario changed = scenario_;
   changed.flow->boundaries = std::move(boundaries);
-  loop_->set_flow_boundary_values(build_flow_problem(*changed.flow).boundaries);
+  loop_->set_flow_boundary_values(build_flow_problem(*changed.flow, load_time()).boundaries);
   scenario_ = std::move(changed);
-  region_references_ = reference_regions(scenario_, mesh_);
+  region_references_ = reference_regions(scenario_, mesh_, load_time());
+}
+
+void CoupledModel::start_load_step(int step) {
+  if (step < 1 || step > load_steps()) throw std::invalid_argument("CoupledModel: no load step " + std::to_string(step));
+  load_step_ = step;
+  if (!has_load_tables()) return;
+  loop_->set_flow_boundary_values(build_flow_problem(*scenario_.flow, load_time()).boundaries);
+  system_->hold_load_time(load_time());
+  region_references_ = reference_regions(scenario_, mesh_, load_time());
 }
 
 void CoupledModel::set_tractions(std::vector<scenario::Traction> tractions) {

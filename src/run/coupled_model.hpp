@@ -67,6 +67,16 @@ class CoupledModel {
   void set_flow_boundaries(std::vector<scenario::FlowBoundaryCondition> boundaries);
   void set_tractions(std::vector<scenario::Traction> tractions);
 
+  // Load steps (docs/scenario.md, "Loads over time"): the loads given as (time, value) tables
+  // are read at the load time of step k (1 … load_steps()), the k-th of the tables' row times,
+  // from the next pass on; each step's passes run to convergence before the next starts. One
+  // step, at time 0, when every load is a constant.
+  int load_steps() const { return load_times_.empty() ? 1 : static_cast<int>(load_times_.size()); }
+  int load_step() const { return load_step_; }
+  double load_time() const { return load_times_.empty() ? 0.0 : load_times_[load_step_ - 1]; }
+  bool has_load_tables() const { return !load_times_.empty(); }
+  void start_load_step(int step);
+
   // The state after the last finished pass (as built before the first), and its restoration
   // into a model built from the same scenario (continuing a run); throws std::invalid_argument
   // when it does not fit.
@@ -100,6 +110,8 @@ class CoupledModel {
   // new boundary values.
   std::vector<RegionReference> region_references_;
   std::function<bool()> stop_requested_;
+  std::vector<double> load_times_;  // scenario::find_load_times
+  int load_step_ = 1;
 };
 
 }  // namespace hydrodda::run

@@ -11,6 +11,8 @@
 #include "run/model_building.hpp"
 #include "run/scenario_fractures.hpp"
 
+#include "scenario/load_times.hpp"
+
 namespace hydrodda::run {
 
 namespace {
@@ -30,6 +32,9 @@ std::vector<std::string> make_history_columns(const scenario::Scenario& s) {
   columns.insert(columns.end(), {"head_change_two_passes", "relaxation", "load_factor", "contact_state_changes",
                                  "joint_crossings_switched", "fluid_load_change", "most_open_close_iterations",
                                  "step_cuts", "at_rest"});
+  // Loads over time: the load step each pass ran at and its time (none when every load is a
+  // constant, so that such a run's history is as it was).
+  if (!scenario::find_load_times(s).empty()) columns.insert(columns.end(), {"load_step", "load_time"});
   return columns;
 }
 
@@ -100,6 +105,20 @@ void CoupledRecorder::resume_from(const output::RunCheckpoint& saved, CoupledMod
   // A run resumed after its last pass (its summary was not written) only writes it.
   converged_ = saved.converged;
   recent_ = fractures::read_recent_tips(saved.recent_tips);
+  // The load step of the last pass, from its history row (load_step's column).
+  if (model.has_load_tables() && !saved.history.empty()) {
+    const std::size_t column = columns_.size() - 2;
+    model.start_load_step(std::stoi(saved.history.back().at(column)));
+  }
+}
+
+int CoupledRecorder::passes_before_load_step() const {
+  if (!model_.has_load_tables()) return 0;
+  const std::size_t column = columns_.size() - 2;
+  int passes = 0;
+  for (const std::vector<std::string>& row : checkpoint_.history)
+    if (std::stoi(row.at(column)) < model_.load_step()) ++passes;
+  return passes;
 }
 
 void CoupledRecorder::after_pass(const coupling::PassReport& r) {
@@ -145,6 +164,8 @@ void CoupledRecorder::add_history_row(const coupling::PassReport& r) {
                          CsvTable::cell(static_cast<long long>(r.most_open_close_iterations)),
                          CsvTable::cell(static_cast<long long>(r.step_cuts)),
                          CsvTable::cell(static_cast<long long>(r.at_rest ? 1 : 0))});
+  if (model_.has_load_tables())
+    row.insert(row.end(), {CsvTable::cell(static_cast<long long>(model_.load_step())), CsvTable::cell(model_.load_time())});
   history_.add_row(row);
   checkpoint_.history.push_back(row);
   context_.folder.write("history.csv", history_.text());

@@ -52,6 +52,9 @@ class CoupledRecorder final : public coupling::PassObserver {
 
   // Whether the last pass converged (a run resumed after its last pass: whether it had).
   bool converged() const { return converged_; }
+  // The passes finished before the current load step's first (CoupledModel::load_step), from
+  // the history's load_step column; 0 without load tables.
+  int passes_before_load_step() const;
   // history.csv's header and rows, a resumed run's earlier passes included.
   const std::vector<std::string>& history_columns() const { return columns_; }
   const std::vector<std::vector<std::string>>& history_rows() const { return checkpoint_.history; }
@@ -61,9 +64,6 @@ class CoupledRecorder final : public coupling::PassObserver {
   // steps, and its shortest DDA step.
   bool last_pass_cut_short() const { return last_pass_cut_short_; }
   bool last_pass_moving() const { return last_pass_moving_; }
-  // Where history.csv's head_change_two_passes stands, counted from the row's end (1: the last):
-  // before relaxation, load_factor, the pass's five changes and at_rest (the last, 1 or 0).
-  static constexpr std::size_t kTwoPassesFromEnd = 9;
   double shortest_time_step() const { return shortest_time_step_; }
 
   // The fractures as the model's blocks are now (measured when not yet), or null for a

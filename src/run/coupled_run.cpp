@@ -154,15 +154,35 @@ void end_on_loop_failure(const Round& round, const coupling::LoopResult& result)
   }
 }
 
+// The load steps from the one the model is at (docs/scenario.md, "Loads over time"): each
+// step's passes until they converge, then the next step's, until the last step converges or
+// the loop ends otherwise; coupling.max_iterations bounds each step's passes. One step when
+// every load is a constant. A round resumed after its last pass runs none.
+coupling::LoopResult run_load_steps(const Round& round) {
+  const scenario::Scenario& s = round.context.scenario;
+  CoupledModel& model = round.model;
+  coupling::LoopResult result;
+  result.end = coupling::LoopEnd::converged;
+  bool step_converged = round.recorder.converged();
+  while (!step_converged || model.load_step() < model.load_steps()) {
+    if (step_converged) {
+      model.start_load_step(model.load_step() + 1);
+      spdlog::info("load step {} of {}: the loads at t = {:g}", model.load_step(), model.load_steps(), model.load_time());
+    }
+    const int passes_before = round.recorder.passes_before_load_step();
+    result = model.run({passes_before + s.coupling.max_iterations, round.context.stop_after}, round.recorder);
+    if (result.end != coupling::LoopEnd::converged) return result;
+    step_converged = true;
+  }
+  return result;
+}
+
 // The round's passes, each recorded, until the loop ends (a round resumed after its last pass
 // runs none). Returns whether it stopped after --stop-after's pass; throws RunFailure when
 // interrupted or failed, the model back at its last finished pass.
 bool run_passes(const Round& round) {
-  const scenario::Scenario& s = round.context.scenario;
   try {
-    coupling::LoopResult result;
-    if (!round.recorder.converged())
-      result = round.model.run({s.coupling.max_iterations, round.context.stop_after}, round.recorder);
+    const coupling::LoopResult result = run_load_steps(round);
     end_on_loop_failure(round, result);
     const bool stopped = result.end == coupling::LoopEnd::stopped_after;
     // The last state's fields, unless the run is to be continued (it writes them at its end).
@@ -244,11 +264,16 @@ std::string describe_non_convergence(const Round& round) {
   const scenario::Scenario& s = round.context.scenario;
   const CoupledRecorder& recorder = round.recorder;
   const ConvergenceHistory convergence = read_convergence(recorder.history_rows(), s.coupling.tolerance);
+  const std::vector<std::string>& columns = recorder.history_columns();
+  const auto column = [&](std::string_view name) {
+    return static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
+  };
+  const std::size_t two_passes_column = column("head_change_two_passes"), at_rest_column = column("at_rest");
   std::vector<double> two_passes;  // history.csv's head_change_two_passes
-  int passes_not_at_rest = 0;      // the last passes in a row whose at_rest (the last column) is 0
+  int passes_not_at_rest = 0;      // the last passes in a row whose at_rest is 0
   for (const std::vector<std::string>& row : recorder.history_rows()) {
-    two_passes.push_back(std::stod(row[row.size() - CoupledRecorder::kTwoPassesFromEnd]));
-    passes_not_at_rest = row.back() == "0" ? passes_not_at_rest + 1 : 0;
+    two_passes.push_back(std::stod(row.at(two_passes_column)));
+    passes_not_at_rest = row.at(at_rest_column) == "0" ? passes_not_at_rest + 1 : 0;
   }
   const coupling::ConvergenceDiagnosis why =
       coupling::diagnose_non_convergence(convergence.head_change, convergence.displacement_change, two_passes,

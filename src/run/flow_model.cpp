@@ -1,5 +1,7 @@
 #include "run/flow_model.hpp"
 
+#include "scenario/load_times.hpp"
+
 #include <spdlog/spdlog.h>
 
 #include <chrono>
@@ -78,7 +80,7 @@ void FlowModel::set_flow_boundaries(std::vector<scenario::FlowBoundaryCondition>
 
 const hydro::FlowSolution& FlowModel::solve() {
   const auto start = Clock::now();
-  hydro::DarcySolver solver(mesh_, build_flow_problem(*scenario_.flow));
+  hydro::DarcySolver solver(mesh_, build_flow_problem(*scenario_.flow, scenario::find_final_load_time(scenario_)));
   solution_ = solver.solve(permeability_);
   const double seconds = seconds_since(start);
   if (timings_.back().name == "flow") timings_.back().value += seconds;
@@ -91,7 +93,7 @@ output::RunSummary FlowModel::summary() const {
   output::RunSummary summary;
   summary.title = scenario_.title;
   summary.scenario = scenario_.file.string();
-  summary.flow = summarise_flow(scenario_, mesh_, solution_, reference_regions(scenario_, mesh_),
+  summary.flow = summarise_flow(scenario_, mesh_, solution_, reference_regions(scenario_, mesh_, scenario::find_final_load_time(scenario_)),
                                 hydro::PermeabilityView(permeability_));
   return summary;
 }

@@ -294,12 +294,12 @@ std::vector<double> compute_matrix_permeability(const Scenario& s, const mesh::T
   return k;
 }
 
-hydro::DarcyProblem build_flow_problem(const scenario::FlowDefinition& f) {
+hydro::DarcyProblem build_flow_problem(const scenario::FlowDefinition& f, double load_time) {
   hydro::DarcyProblem problem;
   problem.fluid.density = f.fluid_density;
   problem.fluid.viscosity = f.fluid_viscosity;
   problem.pressure = f.pressure;
-  for (const scenario::FlowBoundaryCondition& bc : f.boundaries) problem.boundaries.push_back({bc.name, bc.kind, bc.value});
+  for (const scenario::FlowBoundaryCondition& bc : f.boundaries) problem.boundaries.push_back({bc.name, bc.kind, bc.value.value(load_time)});
   return problem;
 }
 

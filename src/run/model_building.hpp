@@ -91,7 +91,9 @@ std::vector<std::optional<double>> find_fixed_permeability(const scenario::Scena
 // a flow region fixes the permeability.
 std::vector<double> compute_matrix_permeability(const scenario::Scenario& scenario, const mesh::TriangleMesh& mesh);
 
-hydro::DarcyProblem build_flow_problem(const scenario::FlowDefinition& flow);
+// The flow problem with its boundary values at `load_time` (tables read there; constants are
+// the same at any time).
+hydro::DarcyProblem build_flow_problem(const scenario::FlowDefinition& flow, double load_time);
 
 // Total simulated time of a mechanics run: end_time, or steps × time_step.
 double mechanics_duration(const scenario::MechanicsDefinition& mechanics);

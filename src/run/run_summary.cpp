@@ -55,10 +55,10 @@ output::RunSummary summarise_mechanics(const scenario::Scenario& s, const dda::S
   return summary;
 }
 
-std::vector<RegionReference> reference_regions(const scenario::Scenario& s, const mesh::TriangleMesh& mesh) {
+std::vector<RegionReference> reference_regions(const scenario::Scenario& s, const mesh::TriangleMesh& mesh, double load_time) {
   std::vector<RegionReference> references;
   if (s.flow->regions.empty()) return references;
-  hydro::DarcySolver solver(mesh, build_flow_problem(*s.flow));
+  hydro::DarcySolver solver(mesh, build_flow_problem(*s.flow, load_time));
   const hydro::FlowSolution matrix = solver.solve(compute_matrix_permeability(s, mesh));
   double head_scale = 0.0;  // the largest |h| of the unfractured case
   for (double h : matrix.head) head_scale = std::max(head_scale, std::abs(h));
@@ -94,7 +94,7 @@ std::vector<std::optional<output::RegionSummary>> summarise_regions(const scenar
       permeability.size() > 0 &&
       std::any_of(references.begin(), references.end(), [](const RegionReference& r) { return !r.triangles.empty(); });
   if (tensors_wanted) {
-    const double per_permeability = build_flow_problem(*s.flow).fluid.conductivity_per_permeability();
+    const double per_permeability = build_flow_problem(*s.flow, 0.0).fluid.conductivity_per_permeability();
     conductivity.resize(permeability.size());
     for (std::size_t e = 0; e < conductivity.size(); ++e) {
       const hydro::PermeabilityTensor k = permeability[e];

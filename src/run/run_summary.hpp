@@ -38,7 +38,9 @@ struct RegionReference {
 
 // The references of the scenario's regions, in its order, from one solve of the unfractured
 // case (compute_matrix_permeability) under the same boundary conditions; none without regions.
-std::vector<RegionReference> reference_regions(const scenario::Scenario& scenario, const mesh::TriangleMesh& mesh);
+// The boundary values are those at `load_time` (scenario::find_load_times).
+std::vector<RegionReference> reference_regions(const scenario::Scenario& scenario, const mesh::TriangleMesh& mesh,
+                                               double load_time);
 
 // Each [[flow.region]]'s flow and effective conductivity along its imposed gradient, with its
 // conductivity in the unfractured case and their ratio, and its full effective tensor from the

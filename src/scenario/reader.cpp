@@ -381,7 +381,7 @@ void read_mechanics(ReadContext& ctx, const TableView& root, Scenario& s) {
   for (const toml::table* lt : m.tables("load")) {
     const TableView l(ctx, *lt, "mechanics.load", {"point", "force"});
     const auto p = l.point("point");
-    const auto f = l.point("force");
+    const auto f = l.time_table("force", 2);
     if (!l.has("point")) ctx.error(l.line(), "mechanics.load.point", "required key is missing");
     if (!l.has("force")) ctx.error(l.line(), "mechanics.load.force", "required key is missing");
     if (p && f) mech.loads.push_back({*p, *f, l.line()});
@@ -409,10 +409,10 @@ void read_mechanics(ReadContext& ctx, const TableView& root, Scenario& s) {
     traction.line = r.line();
     traction.boundary = r.string("boundary").value_or("");
     if (!r.has("boundary")) ctx.error(r.line(), "mechanics.traction.boundary", "required key is missing");
-    traction.normal = r.number("normal").value_or(0.0);
-    traction.shear = r.number("shear").value_or(0.0);
-    traction.normal_end = r.number("normal_end").value_or(traction.normal);
-    traction.shear_end = r.number("shear_end").value_or(traction.shear);
+    traction.normal = r.time_table("normal").value_or(0.0);
+    traction.shear = r.time_table("shear").value_or(0.0);
+    traction.normal_end = r.time_table("normal_end").value_or(traction.normal);
+    traction.shear_end = r.time_table("shear_end").value_or(traction.shear);
     if (!r.has("normal") && !r.has("shear"))
       ctx.error(r.line(), "mechanics.traction", "give 'normal' and/or 'shear'");
     mech.tractions.push_back(std::move(traction));
@@ -478,14 +478,14 @@ void read_flow(ReadContext& ctx, const TableView& root, Scenario& s) {
       ctx.error(b.line(), "flow.boundary", "give exactly one of 'head', 'pressure' or 'flux'");
     } else {
       bc.kind = kind;
-      bc.value = b.number(spell(bc.kind)).value_or(0.0);
+      bc.value = b.time_table(spell(bc.kind)).value_or(0.0);
       if (bc.kind == hydro::BoundaryKind::head)
-        b.require("head", bc.value >= lowest_head && bc.value <= highest_head,
+        b.require("head", bc.value.lowest() >= lowest_head && bc.value.highest() <= highest_head,
                   fmt::format("must lie within {:g} m of the model's heights ({:g} to {:g} m): a head farther off is "
                               "a pressure past 10 GPa, beyond the strength of any rock", kMaxPressureHead,
                               lowest_head + kMaxPressureHead, highest_head - kMaxPressureHead));
       else if (bc.kind == hydro::BoundaryKind::pressure)
-        b.require("pressure", std::abs(bc.value) <= kMaxStress,
+        b.require("pressure", std::max(-bc.value.lowest(), bc.value.highest()) <= kMaxStress,
                   fmt::format("must lie within ±{:g} Pa: 10 GPa is beyond the strength of any rock", kMaxStress));
     }
     for (const FlowBoundaryCondition& other : flow.boundaries)

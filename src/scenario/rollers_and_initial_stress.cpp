@@ -42,20 +42,23 @@ std::optional<double> find_boundary_head_range(const Scenario& s) {
   fluid.density = flow.fluid_density;
   double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
   for (const FlowBoundaryCondition& bc : flow.boundaries)
-    if (bc.kind == hydro::BoundaryKind::head) lowest = std::min(lowest, bc.value), highest = std::max(highest, bc.value);
+    if (bc.kind == hydro::BoundaryKind::head)
+      lowest = std::min(lowest, bc.value.lowest()), highest = std::max(highest, bc.value.highest());
+  // Over all time: a table's values span its rows' (a range no smaller than at any one time).
   const double reference = std::isfinite(lowest) ? lowest : 0.0;  // the overpressure's h_ref
   for (const FlowBoundaryCondition& bc : flow.boundaries) {
-    if (bc.kind == hydro::BoundaryKind::flux && bc.value != 0.0) return std::nullopt;
+    if (bc.kind == hydro::BoundaryKind::flux && (bc.value.lowest() != 0.0 || bc.value.highest() != 0.0)) return std::nullopt;
     if (bc.kind != hydro::BoundaryKind::pressure) continue;
-    const double pressure_head = bc.value / fluid.unit_weight();
-    if (flow.pressure == hydro::PressureConvention::overpressure) {
-      lowest = std::min(lowest, pressure_head + reference), highest = std::max(highest, pressure_head + reference);
-      continue;
+    for (const double pressure_head : {bc.value.lowest() / fluid.unit_weight(), bc.value.highest() / fluid.unit_weight()}) {
+      if (flow.pressure == hydro::PressureConvention::overpressure) {
+        lowest = std::min(lowest, pressure_head + reference), highest = std::max(highest, pressure_head + reference);
+        continue;
+      }
+      const BoundarySegment* segment = s.find_boundary(bc.name);
+      if (!segment) return std::nullopt;
+      for (double y : {segment->segment.from.y, segment->segment.to.y})
+        lowest = std::min(lowest, pressure_head + y), highest = std::max(highest, pressure_head + y);
     }
-    const BoundarySegment* segment = s.find_boundary(bc.name);
-    if (!segment) return std::nullopt;
-    for (double y : {segment->segment.from.y, segment->segment.to.y})
-      lowest = std::min(lowest, pressure_head + y), highest = std::max(highest, pressure_head + y);
   }
   return std::isfinite(lowest) ? highest - lowest : 0.0;
 }

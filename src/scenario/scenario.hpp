@@ -16,6 +16,7 @@
 #include "geometry/point.hpp"
 #include "geometry/polygon.hpp"
 #include "hydro/boundary_condition.hpp"
+#include "numerics/time_table.hpp"
 
 namespace hydrodda::scenario {
 
@@ -130,7 +131,7 @@ struct FixedPoint {
 
 struct PointLoad {
   Point point;
-  Point force;  // N per metre of thickness
+  numerics::TimeTable force;  // N per metre of thickness: columns fx, fy (a constant or a table)
   int line = 0;
 };
 
@@ -144,13 +145,14 @@ struct PrescribedDisplacement {
   int line = 0;
 };
 
-// A distributed edge load on the block edges lying on a boundary, linear along it.
+// A distributed edge load on the block edges lying on a boundary, linear along it. Each value
+// is a constant or a (time, value) table (docs/scenario.md, "Loads over time").
 struct Traction {
   std::string boundary;
-  double normal = 0.0;      // Pa at the boundary's `from` end; compression negative
-  double normal_end = 0.0;  // Pa at its `to` end
-  double shear = 0.0;
-  double shear_end = 0.0;
+  numerics::TimeTable normal;      // Pa at the boundary's `from` end; compression negative
+  numerics::TimeTable normal_end;  // Pa at its `to` end
+  numerics::TimeTable shear;
+  numerics::TimeTable shear_end;
   int line = 0;
 };
 
@@ -206,7 +208,7 @@ struct MechanicsDefinition {
 struct FlowBoundaryCondition {
   std::string name;
   hydro::BoundaryKind kind = hydro::BoundaryKind::head;
-  double value = 0.0;  // m, Pa or m/s (outward normal)
+  numerics::TimeTable value;  // m, Pa or m/s (outward normal): a constant or a (time, value) table
   int line = 0;
 };
 

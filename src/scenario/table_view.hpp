@@ -10,6 +10,7 @@
 
 #include <toml++/toml.h>
 
+#include "numerics/time_table.hpp"
 #include "scenario/diagnostics.hpp"
 #include "scenario/scenario.hpp"
 #include "scenario/spellings.hpp"
@@ -53,6 +54,10 @@ class TableView {
   std::optional<bool> boolean(std::string_view key) const;
   std::optional<std::string> string(std::string_view key) const;
   std::optional<Point> point(std::string_view key) const;
+  // A value that may change in time (time_table_reading.cpp): a constant (a number, or a point
+  // [fx, fy] when `columns` is 2) or a table of rows [t, v₁ … v_columns], at least two, the
+  // times increasing.
+  std::optional<numerics::TimeTable> time_table(std::string_view key, std::size_t columns = 1) const;
   std::optional<Polygon> points(std::string_view key) const;
   const toml::table* table(std::string_view key) const;
   // An array of tables ([[key]] or an array of inline tables).

@@ -108,7 +108,7 @@ TEST(Rollers, BlockSlidesFreelyAlongARollerBase) {
   m.rollers = make_rollers_on_segment(m.blocks, {-5, 0}, {5, 0}, 1e-9, std::nullopt);
   ASSERT_EQ(m.rollers.size(), 2u);
   EXPECT_EQ(m.rollers[0].normal, (Point{0, -1}));
-  m.point_loads.push_back({0, {0.5, 0.5}, {5000.0, 0.0}});
+  m.point_loads.push_back({0, {0.5, 0.5}, constant_force({5000.0, 0.0})});
   m.settings.analysis = Analysis::dynamic;
   m.settings.time_step = 1e-3;
   System system(std::move(m));

@@ -18,7 +18,7 @@ namespace {
 ModelDefinition make_loaded_incline() {
   ModelDefinition m = testing::make_incline(30.0, 10.0, 0.0);
   const Polygon& block = m.blocks[1].polygon;
-  m.point_loads.push_back({1, block[2], {1.0e3, 0.0}});
+  m.point_loads.push_back({1, block[2], constant_force({1.0e3, 0.0})});
   m.measured_points.push_back({1, block[3]});
   return m;
 }

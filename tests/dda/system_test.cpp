@@ -53,7 +53,7 @@ TEST(System, VertexForcesReplaceAndAccelerate) {
 // A point load F at the centroid of a free block: same exact ½ (F/m) t².
 TEST(System, PointLoadAccelerates) {
   ModelDefinition m = make_free_block(Analysis::dynamic);
-  m.point_loads.push_back({0, {1.0, 0.5}, {5000.0, 0.0}});
+  m.point_loads.push_back({0, {1.0, 0.5}, constant_force({5000.0, 0.0})});
   m.measured_points.push_back({0, {2.0, 1.0}});
   System system(std::move(m));
   system.run_until(1.0);
@@ -115,8 +115,8 @@ TEST(Selection, FindsVerticesAndEdgesOnASegment) {
   EXPECT_EQ(e, (std::vector<EdgeRef>{{0, 2}, {1, 2}}));
   const auto t = make_tractions_on_segment(blocks, {0, 1}, {2, 1}, 1e-9, -1.0, -3.0, 0, 0);
   ASSERT_EQ(t.size(), 2u);
-  EXPECT_DOUBLE_EQ(t[0].normal_start, -2.0);  // vertex (1, 1)
-  EXPECT_DOUBLE_EQ(t[0].normal_end, -1.0);    // vertex (0, 1)
+  EXPECT_DOUBLE_EQ(t[0].normal_start.value(0.0), -2.0);  // vertex (1, 1)
+  EXPECT_DOUBLE_EQ(t[0].normal_end.value(0.0), -1.0);    // vertex (0, 1)
 }
 
 // Forces that do not settle in the passes allowed are tried once more, at the same step, with

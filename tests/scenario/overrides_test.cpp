@@ -43,8 +43,8 @@ TEST(ScenarioOverrides, SetsValuesInTablesAndArraysOfTables) {
   EXPECT_EQ(s.coupling.relaxation, 0.5);
   ASSERT_EQ(s.flow->boundaries.size(), 2u);
   EXPECT_EQ(s.flow->boundaries[0].name, "right");
-  EXPECT_EQ(s.flow->boundaries[0].value, 5.0);
-  EXPECT_EQ(s.flow->boundaries[1].value, 0.0);  // the other boundary untouched
+  EXPECT_EQ(s.flow->boundaries[0].value.value(0.0), 5.0);
+  EXPECT_EQ(s.flow->boundaries[1].value.value(0.0), 0.0);  // the other boundary untouched
   EXPECT_EQ(s.mechanics->contact, dda::ContactMethod::penalty);
   EXPECT_EQ(s.mechanics->gravity, (Point{0.0, -10.0}));
   EXPECT_EQ(s.title, "case 1");

@@ -70,8 +70,8 @@ TEST(ScenarioReader, ReadsEveryKeyOfTheContract) {
   EXPECT_EQ(s.mechanics->displacements[0].boundary, "right");
   EXPECT_EQ(s.mechanics->displacements[0].value, (Point{-0.005, 0.0}));
   ASSERT_EQ(s.mechanics->tractions.size(), 1u);
-  EXPECT_DOUBLE_EQ(s.mechanics->tractions[0].normal, -5.0e6);
-  EXPECT_DOUBLE_EQ(s.mechanics->tractions[0].normal_end, -5.0e6);  // defaults to `normal`
+  EXPECT_DOUBLE_EQ(s.mechanics->tractions[0].normal.value(0.0), -5.0e6);
+  EXPECT_DOUBLE_EQ(s.mechanics->tractions[0].normal_end.value(0.0), -5.0e6);  // defaults to `normal`
   ASSERT_EQ(s.mechanics->measures.size(), 1u);
   EXPECT_EQ(s.mechanics->measures[0].name, "A");
   ASSERT_EQ(s.mechanics->rollers.size(), 1u);
@@ -86,7 +86,7 @@ TEST(ScenarioReader, ReadsEveryKeyOfTheContract) {
   EXPECT_EQ(s.flow->permeability_law, coupling::PermeabilityLaw::kozeny_carman);
   ASSERT_EQ(s.flow->boundaries.size(), 2u);
   EXPECT_EQ(s.flow->boundaries[0].kind, hydro::BoundaryKind::head);
-  EXPECT_DOUBLE_EQ(s.flow->boundaries[0].value, 20.0);
+  EXPECT_DOUBLE_EQ(s.flow->boundaries[0].value.value(0.0), 20.0);
   ASSERT_EQ(s.flow->regions.size(), 1u);
   EXPECT_FALSE(s.flow->regions[0].permeability.has_value());
 
