@@ -166,6 +166,12 @@ coupling::LoopResult run_load_steps(const Round& round) {
   bool step_converged = round.recorder.converged();
   while (!step_converged || model.load_step() < model.load_steps()) {
     if (step_converged) {
+      // A run to stop after this pass stops in the step it finished, so that its summary and
+      // checkpoint are of that step; resumed, it starts the next.
+      if (round.context.stop_after && model.iterations() >= *round.context.stop_after) {
+        result.end = coupling::LoopEnd::stopped_after;
+        return result;
+      }
       model.start_load_step(model.load_step() + 1);
       spdlog::info("load step {} of {}: the loads at t = {:g}", model.load_step(), model.load_steps(), model.load_time());
     }
@@ -303,6 +309,10 @@ output::RunSummary summarise_round(const Round& round) {
   warn_at_end(round, summary);
   if (!summary.converged) {
     summary.message = describe_non_convergence(round);
+    // With loads over time, the step that did not converge ended the run: say which.
+    if (round.model.has_load_tables())
+      summary.message = fmt::format("load step {} of {} (the loads at t = {:g}): {}", round.model.load_step(),
+                                    round.model.load_steps(), round.model.load_time(), summary.message);
     add_last_passes(round, summary, summary.message);
     spdlog::warn("{}", summary.message);
   }

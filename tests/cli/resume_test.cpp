@@ -116,6 +116,25 @@ TEST(Resume, AFlowFactorKeptInSinglePrecisionResumesBitForBit) {
   fs::remove(seal);
 }
 
+// The seal with its reservoir's head a table, 125 m raised to 175 m: two load steps, each run to
+// convergence (docs/scenario.md, "Loads over time"). Stopped after pass 4, the first step's
+// last, the resumed run starts the second step; stopped after pass 6, inside the second, it
+// goes on in it. Either way the run folder is the uninterrupted run's, bit for bit.
+TEST(Resume, ARunWhoseHeadIsATableResumesBitForBitAtAndBetweenLoadSteps) {
+  const fs::path seal = edited_scenario(kSeal, "hydrodda-resume-table", {{"head = 125.0 ", "head = [[0.0, 125.0], [1.0, 175.0]] "}});
+  for (int stop_after : {4, 6}) {
+    Folders f("table-" + std::to_string(stop_after));
+    const auto whole = run_program("run " + seal.string() + " -o " + f.whole.string());
+    ASSERT_EQ(whole.exit_code, 0) << whole.output;
+    const std::string history = read_file(f.whole / "history.csv");
+    ASSERT_NE(history.find("\n4,"), std::string::npos);
+    ASSERT_NE(history.find(",1,0\n5,"), std::string::npos) << "pass 4 ends load step 1:\n" << history;
+    ASSERT_GE(read_summary_without_timings(f.whole)["iterations"].get<int>(), 7);
+    expect_stopped_and_resumed_alike(seal, f, stop_after);
+  }
+  fs::remove(seal);
+}
+
 // A seal that starts in its in-situ stress on rollers, with Biot's α = 0.6: its first pass takes
 // the faces' share 0.4 p off what the rollers carry (dda::System::relieve_start_loads), and the
 // checkpoint keeps it. Resumed after that pass, the run goes on with the rollers so relieved:

@@ -183,6 +183,19 @@ def test_a_loading_path_changes_the_traction():
     assert sim.blocks["stress"][1, 1] == pytest.approx(-3.0e6, rel=1e-6)
 
 
+def test_a_loading_path_may_be_a_time_table():
+    """The same block with its traction set to a table (docs/scenario.md, "Loads over time"):
+    -1 MPa at t = 0 raised to -3 MPa at t = 0.5 s of DDA time and held after it. A mechanics
+    Simulation reads it at each step's end as a run does, so at t = 2 s (200 steps of 0.01 s,
+    150 of them at the held value) sigma_yy = -3 MPa (1e-6 relative, as above)."""
+    sim = hydrodda.Simulation(hydrodda.Scenario.load(VERIFICATION / "elastic_block_plane_strain.toml"))
+    sim.set("mechanics.traction[0].normal", [[0.0, -1.0e6], [0.5, -3.0e6]])
+    sim.step(200)
+    assert sim.blocks["stress"][1, 1] == pytest.approx(-3.0e6, rel=1e-6)
+    with pytest.raises(hydrodda.ScenarioError, match="must increase"):
+        sim.set("mechanics.traction[0].normal", [[1.0, -1.0e6], [0.5, -3.0e6]])
+
+
 def test_set_refuses_what_is_not_a_load():
     """Only boundary values and tractions change between passes: the mesh, the blocks and the
     kind of a condition are fixed when the Simulation is built."""
