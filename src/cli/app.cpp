@@ -126,6 +126,10 @@ int run_app(int argc, char** argv) {
   std::filesystem::path check_file;
   CLI::App* check_cmd = app.add_subcommand("check", "Validate a scenario without running it");
   check_cmd->add_option("scenario", check_file, "Scenario file (TOML)")->required();
+  std::optional<std::filesystem::path> check_figure;
+  check_cmd->add_option("--figure", check_figure,
+                        "Draw the model as a run would build it (blocks, traces, boundaries and their conditions, "
+                        "regions, points, the mesh to expect) into this file: .png, .svg or .pdf");
 
   SweepOptions sweep;
   std::string sweep_output;
@@ -206,7 +210,7 @@ int run_app(int argc, char** argv) {
   start_interrupt_thread();  // before any thread (OpenMP's, a sweep's) starts
   if (*check_cmd) {
     set_exit_on_interrupt(true);  // check writes nothing: an interrupt ends it at once
-    return check_command(check_file);
+    return check_command(check_file, check_figure);
   }
   if (*breach_cmd) {
     if (!breach_output.empty()) breach.output = breach_output;

@@ -2,16 +2,42 @@
 #include <spdlog/spdlog.h>
 
 #include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <string>
 
 #include "cli/app.hpp"
 #include "cli/commands.hpp"
 #include "cli/scenario_loading.hpp"
+#include "run/preview.hpp"
 #include "run/run.hpp"
 #include "scenario/diagnostics.hpp"
 
 namespace hydrodda::cli {
 
-int check_command(const std::filesystem::path& file) {
+namespace {
+
+// Why a figure cannot be written at `path`, or "" when it can be tried: a folder, a folder that
+// does not exist, an extension that names no figure format.
+std::string find_figure_path_problem(const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  const std::string extension = path.extension().string();
+  if (fs::is_directory(path)) return "is a folder: give a file name ending in .png, .svg or .pdf";
+  if (extension != ".png" && extension != ".svg" && extension != ".pdf")
+    return "must end in .png, .svg or .pdf (the figure's format)";
+  const fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+  if (!fs::is_directory(folder)) return "is in a folder that does not exist: " + folder.string();
+  return "";
+}
+
+}  // namespace
+
+int check_command(const std::filesystem::path& file, const std::optional<std::filesystem::path>& figure) {
+  if (figure)
+    if (const std::string problem = find_figure_path_problem(*figure); !problem.empty()) {
+      std::fputs(fmt::format("error: --figure {}: {}\n", figure->string(), problem).c_str(), stderr);
+      return kBadInput;
+    }
   const auto scenario = load_scenario(file);
   if (!scenario) return kBadInput;
   std::string geometry;
@@ -24,6 +50,15 @@ int check_command(const std::filesystem::path& file) {
   std::string description = describe(*scenario);
   if (!geometry.empty()) description += ", " + geometry;
   std::fputs(fmt::format("{}: OK ({})\n", file.string(), description).c_str(), stdout);
+  if (figure) {
+    try {
+      run::draw_preview(*scenario, *figure);
+    } catch (const std::exception& e) {
+      std::fputs(fmt::format("error: --figure {}: {}\n", figure->string(), e.what()).c_str(), stderr);
+      return kBadInput;
+    }
+    std::fputs(fmt::format("preview drawn: {}\n", figure->string()).c_str(), stdout);
+  }
   return kSuccess;
 }
 

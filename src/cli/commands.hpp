@@ -49,7 +49,8 @@ struct BreachOptions {
   bool overwrite = false;
 };
 
-int check_command(const std::filesystem::path& scenario);
+// Validates `scenario`; with `figure`, also draws its preview there (run/preview.hpp).
+int check_command(const std::filesystem::path& scenario, const std::optional<std::filesystem::path>& figure = std::nullopt);
 int run_command(const RunOptions& options);
 // Under mpirun, rank 0's sweep (the other ranks serve it, sweep/ranks.hpp).
 int sweep_command(const SweepOptions& options, sweep::SweepRanks& ranks);
