@@ -104,15 +104,16 @@ output::PreviewFigure build_preview(const scenario::Scenario& s) {
   output::PreviewFigure figure;
   figure.title = s.title.empty() ? s.file.filename().string() : s.title;
   for (const scenario::MaterialDefinition& m : s.materials) figure.materials.push_back(m.name);
-  // Until joint types are given per trace, every trace is the default type, [joint].
+  // The joint types as the scenario numbers them: 0 is [joint], i + 1 is [joint.NAME] i.
   figure.joint_types = {"joint"};
+  for (const scenario::JointDefinition& type : s.joint_types) figure.joint_types.push_back("joint." + type.name);
   std::vector<dda::BlockDefinition> blocks;
   if (s.geometry && !s.geometry->domain.empty()) {
     const ModelGeometry model = build_model_geometry(s);  // check_model has logged what the cut says
     figure.domain = s.geometry->domain;
     blocks = blocks_of(model);
     for (const geometry::FractureFace& face : model.network.faces)
-      figure.traces.push_back({face.segment.from, face.segment.to, face.fracture, 0});
+      figure.traces.push_back({face.segment.from, face.segment.to, face.fracture, model.traces.at(face.fracture).joint_type});
     figure.subtitle = "preview: " + model.summary;
   } else {
     blocks = build_blocks(s, GeometryWarnings::already_logged);
