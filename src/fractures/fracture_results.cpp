@@ -142,13 +142,17 @@ FractureState FractureMeter::measure(std::span<const geometry::Polygon> blocks, 
     FractureResult& r = state.fractures[index[piece.fracture]];
     r.hydraulic_aperture += piece.hydraulic_aperture * piece_length[p];
   }
+  // The fracture's normal stress is its mean over its whole length: the force on its closed
+  // part over that part alone is the stress where it touches (what the closure above needs),
+  // which a short closed remainder beside an open wedge blows up (to GPa under a 10 MPa load).
   for (FractureResult& r : state.fractures) {
-    const double closed = r.length - r.open_length;
-    if (closed > 0.0) r.normal_stress = fracture_force[r.id] / closed;
     if (r.length > 0.0) {
+      r.normal_stress = fracture_force[r.id] / r.length;
       r.mean_aperture /= r.length;
       r.hydraulic_aperture /= r.length;
+      r.open_share = std::clamp(r.open_length / r.length, 0.0, 1.0);
     }
+    r.open = r.open_share >= kOpenShare;
   }
   std::sort(state.fractures.begin(), state.fractures.end(),
             [](const FractureResult& a, const FractureResult& b) { return a.id < b.id; });

@@ -34,6 +34,14 @@ struct FractureLayout {
   geometry::BlockNetwork network;
 };
 
+// A fracture is open when the opening exceeds the open threshold over at least this share of
+// its length: open from end to end but for a stretch at a junction or a tip. A wedge open over
+// part of it while the rest carries the load is a closed fracture with an open tip (its
+// open_share, open_length and pieces say how much and where), not an open one: the joints of a
+// flexed layer open over about half their depth, from its side in tension (the paper's
+// flexures: 0.49 to 0.50, where a threshold of a half would flip on round-off).
+inline constexpr double kOpenShare = 0.9;
+
 // "listed", "set", "file": a trace's origin as fractures.csv writes it.
 std::string origin_name(geometry::TraceSource source);
 
@@ -42,11 +50,15 @@ struct FractureResult {
   geometry::TraceOrigin origin;
   double length = 0.0;          // m, of its faces between blocks
   double open_length = 0.0;     // m, where the opening exceeds the threshold
+  double open_share = 0.0;      // open_length / length, 0..1
+  bool open = false;            // open over at least kOpenShare of its length
   double mean_aperture = 0.0;   // m, mechanical: the opening where open, 0 where closed; mean over the length
   double max_aperture = 0.0;    // m, the largest opening where open
   double max_shear = 0.0;       // m, largest |relative displacement along the face|
   double hydraulic_aperture = 0.0;  // m, mean over the length (hydro::JointApertureLaw)
-  double normal_stress = 0.0;   // Pa, compressive contact forces on it over its closed length (0 when open)
+  // Pa, its mean effective normal traction: the compressive contact forces on all its faces
+  // over its whole length (force / length; 0 where nothing presses on it).
+  double normal_stress = 0.0;
   // Its sharpest wedge tip: the largest rate dw/ds at which its opening grows from a point
   // where it crosses the open threshold (0 when it has none), and that point.
   double tip_opening_angle = 0.0;

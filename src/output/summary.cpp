@@ -10,7 +10,8 @@ namespace {
 
 using nlohmann::json;
 
-// count, open (how many have an open part), open_ids, open_length (m, summed), the widest
+// count, open (how many are open over at least fractures::kOpenShare of their length), open_ids,
+// open_length (m, theirs summed), the widest
 // opening and its fracture, and `by_id`: each fracture's row as fractures.csv has it.
 json format_fractures(const FractureSummary& f) {
   json by_id = json::object(), open_ids = json::array();
@@ -21,7 +22,8 @@ json format_fractures(const FractureSummary& f) {
                 {"number", r.number},
                 {"length", r.length},
                 {"open_length", r.open_length},
-                {"open", r.open_length > 0.0 ? 1 : 0},
+                {"open", r.open ? 1 : 0},
+                {"open_share", r.open_share},
                 {"mean_aperture", r.mean_aperture},
                 {"max_aperture", r.max_aperture},
                 {"hydraulic_aperture", r.hydraulic_aperture},
@@ -32,7 +34,7 @@ json format_fractures(const FractureSummary& f) {
     if (!r.type.empty()) row["type"] = r.type;
     if (r.flow) row["flow"] = *r.flow;
     by_id[std::to_string(r.id)] = row;
-    if (r.open_length > 0.0) {
+    if (r.open) {
       open_ids.push_back(r.id);
       open_length += r.open_length;
     }

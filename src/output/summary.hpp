@@ -78,6 +78,8 @@ struct FractureRow {
   std::string type;             // its joint type: [joint.NAME]'s NAME, "joint" for [joint]
   double length = 0.0, open_length = 0.0, mean_aperture = 0.0, max_aperture = 0.0, hydraulic_aperture = 0.0,
          normal_stress = 0.0, max_shear = 0.0, tip_opening_angle = 0.0;
+  double open_share = 0.0;      // open_length / length
+  bool open = false;            // open over at least fractures::kOpenShare of its length
   std::optional<double> flow;   // coupled runs
 };
 
@@ -100,7 +102,7 @@ struct RunSummary {
   std::string scenario;          // the scenario file as given
   bool converged = false;
   int iterations = 0;
-  std::string status = "ok";     // "ok", "stopped" (--stop-after), "interrupted" or "failed"
+  std::string status = "ok";     // "ok", "stopped" (--stop-after), "interrupted", "no equilibrium" or "failed"
   std::string message;
   std::vector<BlockSummary> blocks;
   std::vector<MeasureSummary> measures;

@@ -109,7 +109,7 @@ py::dict fracture_fields(const fractures::FractureState& state) {
   const auto n = static_cast<py::ssize_t>(state.fractures.size());
   py::array_t<int> id(n), set(n), number(n);
   py::array_t<bool> open(n);
-  Array length(n), open_length(n), mean_aperture(n), max_aperture(n), max_shear(n), hydraulic_aperture(n),
+  Array length(n), open_length(n), open_share(n), mean_aperture(n), max_aperture(n), max_shear(n), hydraulic_aperture(n),
       normal_stress(n), tip_opening_angle(n), flow(n);
   py::list origin;
   for (py::ssize_t i = 0; i < n; ++i) {
@@ -120,7 +120,8 @@ py::dict fracture_fields(const fractures::FractureState& state) {
     number.mutable_at(i) = r.origin.number;
     length.mutable_at(i) = r.length;
     open_length.mutable_at(i) = r.open_length;
-    open.mutable_at(i) = r.open_length > 0.0;
+    open.mutable_at(i) = r.open;
+    open_share.mutable_at(i) = r.open_share;
     mean_aperture.mutable_at(i) = r.mean_aperture;
     max_aperture.mutable_at(i) = r.max_aperture;
     max_shear.mutable_at(i) = r.max_shear;
@@ -137,6 +138,7 @@ py::dict fracture_fields(const fractures::FractureState& state) {
   fields["length"] = length;
   fields["open_length"] = open_length;
   fields["open"] = open;
+  fields["open_share"] = open_share;
   fields["mean_aperture"] = mean_aperture;
   fields["max_aperture"] = max_aperture;
   fields["max_shear"] = max_shear;

@@ -28,7 +28,7 @@ py::dict block_fields(const dda::System& system);
 // compression positive).
 py::dict contact_fields(const dda::System& system);
 // One entry per fracture, as fractures.csv's columns: id, origin ("listed", "set", "file"),
-// set (-1 unless from a set), number, length, open_length (m), open (bool), mean_aperture,
+// set (-1 unless from a set), number, length, open_length (m), open (bool), open_share, mean_aperture,
 // max_aperture, max_shear (m), hydraulic_aperture (m), normal_stress (Pa), flow (m²/s, NaN
 // where not computed).
 py::dict fracture_fields(const fractures::FractureState& state);

@@ -25,7 +25,9 @@ std::vector<std::string> columns(bool with_flow) {
                              "max_aperture",  "hydraulic_aperture", "normal_stress", "max_shear",
                              "tip_opening_angle"};
   if (with_flow) c.push_back("flow");
-  c.push_back("type");  // last, so that the columns before it keep their places
+  // Added last, so that the columns before them keep their places.
+  c.push_back("type");
+  c.push_back("open_share");
   return c;
 }
 
@@ -75,7 +77,7 @@ void FractureOutput::add_rows(long long step, double time, const fractures::Frac
                                  CsvTable::cell(static_cast<long long>(r.origin.number)),
                                  CsvTable::cell(r.length),
                                  CsvTable::cell(r.open_length),
-                                 CsvTable::cell(static_cast<long long>(r.open_length > 0.0 ? 1 : 0)),
+                                 CsvTable::cell(static_cast<long long>(r.open ? 1 : 0)),
                                  CsvTable::cell(r.mean_aperture),
                                  CsvTable::cell(r.max_aperture),
                                  CsvTable::cell(r.hydraulic_aperture),
@@ -84,6 +86,7 @@ void FractureOutput::add_rows(long long step, double time, const fractures::Frac
                                  CsvTable::cell(r.tip_opening_angle)};
     if (with_flow_) row.push_back(r.flow ? CsvTable::cell(*r.flow) : "");
     row.push_back(type_of(types_, r.id));
+    row.push_back(CsvTable::cell(r.open_share));
     table_.add_row(row);
   }
   folder_.write("fractures.csv", table_.text());
@@ -124,6 +127,8 @@ output::FractureSummary summarise_fractures(const fractures::FractureState& stat
     row.type = type_of(types, r.id);
     row.length = r.length;
     row.open_length = r.open_length;
+    row.open_share = r.open_share;
+    row.open = r.open;
     row.mean_aperture = r.mean_aperture;
     row.max_aperture = r.max_aperture;
     row.hydraulic_aperture = r.hydraulic_aperture;

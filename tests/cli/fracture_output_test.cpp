@@ -44,7 +44,7 @@ TEST(FractureOutput, FlowAlongTheFractureIsTheBoundaryFlow) {
   EXPECT_EQ(header, (std::vector<std::string>{"step", "time", "fracture", "origin", "set", "number", "length",
                                               "open_length", "open", "mean_aperture", "max_aperture",
                                               "hydraulic_aperture", "normal_stress", "max_shear", "tip_opening_angle",
-                                              "flow", "type"}));
+                                              "flow", "type", "open_share"}));
   const int top = column(history[0], "flow_top");
   for (std::size_t k = 1; k < fractures.size(); ++k) {
     const auto& row = fractures[k];
@@ -61,6 +61,7 @@ TEST(FractureOutput, FlowAlongTheFractureIsTheBoundaryFlow) {
     EXPECT_NEAR(std::stod(row[column(header, "mean_aperture")]), 1e-4, 1e-5);
     EXPECT_EQ(row[column(header, "open")], "1");
     EXPECT_NEAR(std::stod(row[column(header, "open_length")]), 2.0, 1e-12);
+    EXPECT_EQ(std::stod(row[column(header, "open_share")]), 1.0);
   }
   EXPECT_TRUE(fs::exists(out.path / "figures" / "apertures.png"));
 

@@ -106,6 +106,70 @@ TEST(FractureResults, TiltedBlockClosesHalfTheFaceExactly) {
   EXPECT_NEAR(closed, 0.5, 1e-6);
 }
 
+// open_share = open_length / length, and `open` over at least kOpenShare = 0.9 of it: u_x = β y
+// on the right block closes the face above y* = −a0/β, so open_share = y* / 1 m. β = −4 a0:
+// share 0.25, a closed fracture with an open wedge at its foot; β = −2 a0 (the tilted block of
+// the test above): half open, as a flexed layer's joints are, closed; β = −a0/0.95: share 0.95,
+// open. Tolerance: round-off of the cut at y* (1e-12).
+TEST(FractureResults, AFractureIsOpenOverNineTenthsOfItsLength) {
+  const fractures::FractureMeter meter = two_block_meter();
+  for (const double share : {0.25, 0.5, 0.75, 0.95}) {
+    const double beta = -kAperture / share;
+    const auto blocks = moved(meter, [&](Point p) { return p + Point{beta * p.y, 0.0}; });
+    const fractures::FractureState state = meter.measure(blocks, 0.0);
+    ASSERT_EQ(state.fractures.size(), 1u);
+    const fractures::FractureResult& r = state.fractures[0];
+    EXPECT_NEAR(r.open_length, share, 1e-12) << share;
+    EXPECT_NEAR(r.open_share, share, 1e-12) << share;
+    EXPECT_EQ(r.open, share >= fractures::kOpenShare) << share;
+  }
+  // Wholly closed and wholly open.
+  const fractures::FractureState closed = meter.measure(moved(meter, [](Point p) { return p + Point{-kAperture, 0.0}; }), 0.0);
+  EXPECT_EQ(closed.fractures[0].open_share, 0.0);
+  EXPECT_FALSE(closed.fractures[0].open);
+  const fractures::FractureState open = meter.measure(moved(meter, [](Point p) { return p + Point{kAperture, 0.0}; }), 0.0);
+  EXPECT_EQ(open.fractures[0].open_share, 1.0);
+  EXPECT_TRUE(open.fractures[0].open);
+}
+
+// The contacts on the face, keyed as the DDA keys them: vertex 0 of the block across against
+// each edge of `block` that lies on fracture 0, with the given normal forces.
+std::vector<hydrodda::dda::ContactInfo> contacts_on_face(const fractures::FractureMeter& meter,
+                                                         const std::vector<double>& forces) {
+  const geometry::BlockNetwork& network = meter.layout().network;
+  std::vector<hydrodda::dda::ContactInfo> contacts;
+  for (int block = 0; block < 2; ++block)
+    for (std::size_t edge = 0; edge < network.edge_fractures[block].size(); ++edge)
+      if (network.edge_fractures[block][edge] == 0 && contacts.empty())
+        for (double force : forces) {
+          hydrodda::dda::ContactInfo c;
+          c.key = {1 - block, static_cast<int>(contacts.size()), block, static_cast<int>(edge)};
+          c.state = force > 0.0 ? hydrodda::dda::ContactState::locked : hydrodda::dda::ContactState::open;
+          c.normal_force = force;
+          contacts.push_back(c);
+        }
+  return contacts;
+}
+
+// normal_stress = Σ F_n / L over the whole 1 m face (an exact identity of the definition): two
+// contacts pressing with 3 MN/m and 1 MN/m, and an open one, give 4 MPa whether the face is
+// closed all along or only over its upper 0.75 m (β = −4 a0 above: the force over the closed
+// part alone would be 5.33 MPa); the open contact's force is none. Tolerance: round-off.
+TEST(FractureResults, NormalStressIsTheContactForcesOverTheWholeLength) {
+  const fractures::FractureMeter meter = two_block_meter();
+  const auto contacts = contacts_on_face(meter, {3e6, 1e6, 0.0});
+  ASSERT_EQ(contacts.size(), 3u);
+  const auto closed = moved(meter, [](Point p) { return p + Point{-kAperture, 0.0}; });
+  const auto wedge = moved(meter, [](Point p) { return p + Point{-4.0 * kAperture * p.y, 0.0}; });
+  for (const auto& blocks : {closed, wedge}) {
+    const fractures::FractureState state = meter.measure(blocks, 0.0, contacts);
+    ASSERT_EQ(state.fractures.size(), 1u);
+    EXPECT_NEAR(state.fractures[0].normal_stress, 4e6, 1e-9);
+  }
+  // Nothing presses on it: none.
+  EXPECT_EQ(meter.measure(closed, 0.0).fractures[0].normal_stress, 0.0);
+}
+
 // A 2 m × 2 m domain cut by a vertical fracture (x = 1 m) and a horizontal one (y = 1 m), both
 // of aperture a0: the vertical fracture has a lower and an upper face, meeting at the junction.
 // The lower right block moves right by d: the lower face opens to a0 + d. The upper right block
