@@ -51,8 +51,9 @@ class KozenyCarmanLaw final : public Law {
   }
 };
 
-// k_m + (A_f/A_e) w_e²/12, k_m the Kozeny–Carman value of the matrix porosity, uncapped: the
-// cap is the paper's device for Kozeny–Carman, and the cubic law's k_m is the rock's as given.
+// k_m + (A_f/A_e) min(w_e²/12, fracture_cap), k_m the Kozeny–Carman value of the matrix
+// porosity, uncapped: `cap` is the paper's device for Kozeny–Carman, and the cubic law's k_m is
+// the rock's as given.
 class CubicLaw final : public Law {
  public:
   std::vector<double> compute(const PermeabilityModel& model, const PorosityField& porosity,
@@ -63,7 +64,7 @@ class CubicLaw final : public Law {
     const double k_matrix = matrix_permeability(model);
     for (std::size_t e = 0; e < k.size(); ++e)
       k[e] = hydro::cubic_law_permeability(compute_open_fraction(porosity.fracture_area[e], element_areas[e]),
-                                           apertures[e], k_matrix);
+                                           apertures[e], k_matrix, model.fracture_cap);
     return k;
   }
   double matrix_permeability(const PermeabilityModel& model) const override {
@@ -88,6 +89,18 @@ const Law& find_law(PermeabilityLaw law) {
 std::vector<double> PermeabilityModel::compute(const PorosityField& porosity, std::span<const double> element_areas,
                                                std::span<const double> apertures) const {
   return find_law(law).compute(*this, porosity, element_areas, apertures);
+}
+
+std::vector<int> PermeabilityModel::find_capped_elements(const PorosityField& porosity,
+                                                         std::span<const double> element_areas,
+                                                         std::span<const double> apertures) const {
+  std::vector<int> capped;
+  if (law != PermeabilityLaw::cubic) return capped;
+  for (std::size_t e = 0; e < apertures.size() && e < element_areas.size(); ++e)
+    if (compute_open_fraction(porosity.fracture_area[e], element_areas[e]) > 0.0 &&
+        hydro::reaches_fracture_cap(apertures[e], fracture_cap))
+      capped.push_back(static_cast<int>(e));
+  return capped;
 }
 
 double PermeabilityModel::matrix_permeability() const { return find_law(law).matrix_permeability(*this); }

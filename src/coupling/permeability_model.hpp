@@ -7,6 +7,7 @@
 
 #include "coupling/permeability_laws.hpp"
 #include "coupling/porosity.hpp"
+#include "hydro/permeability_law.hpp"
 
 namespace hydrodda::coupling {
 
@@ -14,6 +15,8 @@ struct PermeabilityModel {
   PermeabilityLaw law = PermeabilityLaw::kozeny_carman;
   double grain_diameter = 0.0;   // m (Kozeny–Carman)
   double cap = 9.869e-11;        // m² (Kozeny–Carman)
+  // m²: the cubic law's cap on a fracture's own permeability w²/12 (hydro::cubic_law_permeability).
+  double fracture_cap = hydro::kDefaultFracturePermeabilityCap;
   double matrix_porosity = 0.0;
   // Cubic law: the fluid domain (its boundary is a wall where fewer than two blocks are near)
   // and how far from an element walls are looked for.
@@ -22,8 +25,9 @@ struct PermeabilityModel {
 
   // k per element. Kozeny–Carman: the paper's eq. 9 on φ_e. Cubic: k_m + (A_f/A_e) w_e²/12
   // with k_m the Kozeny–Carman value of the matrix porosity and w_e the local aperture
-  // (local_aperture.hpp; required for the cubic law, ignored otherwise). The cap is the
-  // paper's device for Kozeny–Carman and does not apply to the cubic law.
+  // (local_aperture.hpp; required for the cubic law, ignored otherwise), w_e²/12 capped at
+  // fracture_cap. `cap` is the paper's device for Kozeny–Carman and does not apply to the cubic
+  // law.
   std::vector<double> compute(const PorosityField& porosity, std::span<const double> element_areas,
                               std::span<const double> apertures = {}) const;
   // k_m: what both laws give an element with no open area (Kozeny–Carman of the matrix porosity;
@@ -31,6 +35,10 @@ struct PermeabilityModel {
   double matrix_permeability() const;
   // Kozeny–Carman's cap lowers k_m itself: the matrix's own value is above it.
   bool matrix_capped() const;
+  // The elements whose fracture permeability compute() capped at fracture_cap (cubic law: an
+  // open area and w²/12 above the cap), in order; none under Kozeny–Carman.
+  std::vector<int> find_capped_elements(const PorosityField& porosity, std::span<const double> element_areas,
+                                        std::span<const double> apertures) const;
   // Whether compute() needs the elements' local apertures.
   bool reads_apertures() const { return describe(law).reads_apertures; }
 };

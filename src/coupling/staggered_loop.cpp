@@ -176,6 +176,7 @@ PassReport StaggeredLoop::run_pass() {
     apertures = compute_local_apertures(mesh_, porosity_.fracture_area, blocks, settings_.permeability.domain,
                                         settings_.permeability.aperture_reach);
   permeability_ = settings_.permeability.compute(porosity_, porosity_mapper_.element_areas(), apertures);
+  capped_elements_ = settings_.permeability.find_capped_elements(porosity_, porosity_mapper_.element_areas(), apertures);
   report.porosity_seconds = seconds_since(start);
 
   // Flow, with the heads under-relaxed against the last pass. The permeability changes little

@@ -158,6 +158,9 @@ class StaggeredLoop final : public PassRunner {
   const PorosityField& porosity() const { return porosity_; }
   // Per element: k (m²), or with joints the tensor's largest principal value (k where isotropic).
   const std::vector<double>& permeability() const { return permeability_; }
+  // The elements whose fracture permeability the last pass capped (PermeabilityModel::
+  // find_capped_elements), in order: what a run warns of.
+  const std::vector<int>& capped_elements() const { return capped_elements_; }
   // With joints, the tensors the flow was solved with (one per element); empty without.
   const std::vector<hydro::PermeabilityTensor>& permeability_tensors() const { return permeability_tensors_; }
   // How far the blocks have left the fluid mesh now.
@@ -230,6 +233,7 @@ class StaggeredLoop final : public PassRunner {
   int completed_ = 0;   // passes finished
   PorosityField porosity_;
   std::vector<double> permeability_;
+  std::vector<int> capped_elements_;
   hydro::FlowSolution solution_;
   std::vector<double> previous_heads_;
   std::vector<double> heads_two_back_;

@@ -28,9 +28,13 @@ std::string where(const mesh::TriangleMesh& mesh, int t) {
   return "element " + std::to_string(t) + " at (" + format_g(c.x) + ", " + format_g(c.y) + ")";
 }
 
+std::string where_node(const mesh::TriangleMesh& mesh, int v) {
+  return "node " + std::to_string(v) + " (" + format_g(mesh.nodes[v].x) + ", " + format_g(mesh.nodes[v].y) + ")";
+}
+
 // The first node of a part of the mesh that reaches no fixed-head node through elements whose
-// smaller principal permeability is at least `floor`; −1 when every part does. A union–find
-// over the nodes of those elements, as DarcySolver's own check over all elements.
+// smaller principal permeability is at least `floor` (0: through any element); −1 when every
+// part does. A union–find over the nodes of those elements, as DarcySolver's own check.
 int find_part_cut_off(const mesh::TriangleMesh& mesh, PermeabilityView permeability,
                       std::span<const double> fixed_head, double floor) {
   std::vector<int> parent(mesh.nodes.size());
@@ -72,14 +76,21 @@ std::string describe_flow_failure(const mesh::TriangleMesh& mesh, PermeabilityVi
   text += ": the permeability spans " + format_g(k_min) + " m² (" + where(mesh, smallest) + ") to " +
           format_g(k_max) + " m² (" + where(mesh, largest) + ")";
   if (k_min > 0.0) text += ", a contrast of " + format_g(k_max / k_min);
-  if (k_min < kLostToRoundOff * k_max)
-    text += ", past the 1e16 that double precision resolves";
+  // Disconnected (a part of the mesh with no fixed head at all, whatever the permeability)
+  // and ill-conditioned (a part that reaches a fixed head only through elements round-off
+  // loses) are different faults with different cures: each is named only where it is true.
+  const int floating = find_part_cut_off(mesh, permeability, fixed_head, 0.0);
+  if (floating >= 0)
+    return text + "; the part of the mesh around " + where_node(mesh, floating) +
+           " touches no fixed-head boundary: its head is undetermined";
+  if (k_min < kLostToRoundOff * k_max) text += ", past the 1e16 that double precision resolves";
   const int cut_off = find_part_cut_off(mesh, permeability, fixed_head, kLostToRoundOff * k_max);
   if (cut_off >= 0)
-    text += "; the part of the mesh around node " + std::to_string(cut_off) + " (" +
-            format_g(mesh.nodes[cut_off].x) + ", " + format_g(mesh.nodes[cut_off].y) +
-            ") reaches a fixed-head boundary only through elements whose permeability is under 1e-16 of the "
-            "largest, which round-off loses: is every part of the mesh connected to a fixed-head boundary?";
+    text += "; the system is ill-conditioned, not disconnected: the part of the mesh around " +
+            where_node(mesh, cut_off) +
+            " reaches a fixed-head boundary only through elements whose permeability is under 1e-16 of the largest, "
+            "whose flow round-off loses beside it (a lower cap on the largest permeability keeps the contrast "
+            "inside what the solve resolves)";
   return text;
 }
 

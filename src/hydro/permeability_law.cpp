@@ -1,6 +1,5 @@
 #include "hydro/permeability_law.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -15,10 +14,12 @@ double kozeny_carman_permeability(double porosity, double grain_diameter, double
   return std::min(k, cap);
 }
 
-double cubic_law_permeability(double fracture_fraction, double aperture, double matrix_permeability) {
+double cubic_law_permeability(double fracture_fraction, double aperture, double matrix_permeability,
+                              double fracture_cap) {
   if (!(fracture_fraction >= 0.0 && fracture_fraction <= 1.0))
     throw std::invalid_argument("cubic law: the fracture fraction must lie in [0, 1]");
-  return matrix_permeability + fracture_fraction * aperture * aperture / 12.0;
+  if (reaches_fracture_cap(aperture, fracture_cap)) return matrix_permeability + fracture_fraction * fracture_cap;
+  return matrix_permeability + fracture_fraction * aperture * aperture / 12.0;  // as ever, to the last bit
 }
 
 double cubic_law_tip_length(double opening_angle, double matrix_permeability) {

@@ -11,10 +11,29 @@ namespace hydrodda::hydro {
 // φ in [0, 1]; d_g the grain diameter (m). φ = 1 gives the cap.
 double kozeny_carman_permeability(double porosity, double grain_diameter, double cap);
 
+// The cubic law's default cap on a fracture's permeability w²/12: a gap 1 cm wide,
+// (1e-2 m)²/12 = 8.333e-6 m². Wider, a gap is an open channel whose flow at any gradient a seal
+// holds is far past the laminar flow the cubic law describes (its Reynolds number
+// ρ²gJw³/(12μ²) is 800 at a gradient J of 1e-3; Zimmerman et al. 2004, Int. J. Rock Mech.
+// 41, 163, find it failing past about 20), and its contrast with a tight matrix (1e-19 m²: 8e13) stays inside the 1e16 that
+// the flow solve's double precision resolves (the 0.7 m² of a layer lifted off by 2.9 m is not).
+inline constexpr double kDefaultFracturePermeabilityCap = 1e-4 / 12.0;
+inline constexpr double kNoFracturePermeabilityCap = 1e300;
+
 // The cubic law: a fracture of aperture w carries the transmissivity w³/12 (m³). An element of
 // width b across the fracture holding it has the equivalent permeability w³/(12 b) on top of
 // its matrix permeability, k = k_m + (A_f/A_e) w²/12 with A_f/A_e = w/b, whatever b is.
-double cubic_law_permeability(double fracture_fraction, double aperture, double matrix_permeability);
+// The fracture's own permeability w²/12 is capped at `fracture_cap` (m²):
+//   k = k_m + (A_f/A_e) min(w²/12, k_cap),
+// so that past the cap the transmissivity grows as w k_cap (docs/coupling.md, "The fracture
+// permeability cap").
+double cubic_law_permeability(double fracture_fraction, double aperture, double matrix_permeability,
+                              double fracture_cap = kNoFracturePermeabilityCap);
+
+// Whether the cubic law caps a fracture of aperture w: w²/12 > k_cap.
+inline bool reaches_fracture_cap(double aperture, double fracture_cap) {
+  return aperture * aperture / 12.0 > fracture_cap;
+}
 
 // The length over which a wedge tip exchanges flow with the matrix under the cubic law. A joint
 // whose opening grows as w = α s from a tip carries α³ s² / 12 over a length s there, which is

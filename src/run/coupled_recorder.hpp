@@ -79,6 +79,9 @@ class CoupledRecorder final : public coupling::PassObserver {
   bool follows_tips() const { return follow_tips_; }
   const std::deque<fractures::PassTips>& recent_tips() const { return recent_; }
   bool cubic_law() const { return cubic_law_; }
+  // Per fluid element: the fracture whose flow zone holds it, or -1 (FractureMeter::flow_zones);
+  // empty without fracture traces.
+  const std::vector<int>& element_fractures() const { return flow_zones_.fracture; }
   const std::vector<fractures::RefinedTip>& refined_tips() const { return refined_tips_; }
 
   // summary.json of the model now: its blocks, flow, timings and fractures.

@@ -14,6 +14,7 @@
 
 #include "coupling/convergence_diagnosis.hpp"
 #include "run/coupled_messages.hpp"
+#include "run/permeability_cap.hpp"
 #include "run/coupled_model.hpp"
 #include "run/coupled_recorder.hpp"
 #include "run/figures.hpp"
@@ -251,6 +252,10 @@ void warn_at_end(const Round& round, const output::RunSummary& summary) {
     spdlog::warn("{} block(s) reach outside the fluid mesh, block {} farthest, by {:.3g} m: their parts outside "
                  "take the pressure of the mesh boundary there",
                  summary.outside_mesh->blocks, summary.outside_mesh->block, summary.outside_mesh->largest_distance);
+  if (const auto capped = describe_capped_fractures(round.model.loop().capped_elements(), round.model.mesh(),
+                                                    round.recorder.element_fractures(),
+                                                    s.flow->fracture_permeability_cap))
+    spdlog::warn("at coupling iteration {}, {}", round.model.iterations(), *capped);
   // The cubic law's answer depends on the mesh where the elements at a wedge tip are wider than
   // its exchange length (docs/coupling.md, "Wedge tips").
   if (!round.recorder.cubic_law() || !s.mesh) return;

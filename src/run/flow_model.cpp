@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "run/model_building.hpp"
+#include "run/permeability_cap.hpp"
 #include "run/run_summary.hpp"
 #include "coupling/local_aperture.hpp"
 #include "coupling/permeability_model.hpp"
@@ -54,6 +55,10 @@ std::vector<double> assign_permeability(const scenario::Scenario& s, const mesh:
     apertures = coupling::compute_local_apertures(mesh, porosity.fracture_area, polygons, model.domain,
                                                   model.aperture_reach);
   const std::vector<double> from_porosity = model.compute(porosity, mapper.element_areas(), apertures);
+  std::vector<int> capped;
+  for (int e : model.find_capped_elements(porosity, mapper.element_areas(), apertures))
+    if (!fixed[e]) capped.push_back(e);
+  if (const auto text = describe_capped_fractures(capped, mesh, {}, model.fracture_cap)) spdlog::warn("{}", *text);
   for (int t = 0; t < mesh.triangle_count(); ++t) k[t] = fixed[t] ? *fixed[t] : from_porosity[t];
   return k;
 }

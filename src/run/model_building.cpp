@@ -157,6 +157,7 @@ coupling::PermeabilityModel make_permeability_model(const Scenario& s) {
   model.law = s.flow->permeability_law;
   model.grain_diameter = material.grain_diameter.value_or(0.0);
   model.cap = s.flow->permeability_cap;
+  model.fracture_cap = s.flow->fracture_permeability_cap;
   model.matrix_porosity = material.matrix_porosity;
   if (s.geometry) model.domain = s.geometry->domain;
   // Apertures are looked for within the far-field element size: far wider than any fracture.

@@ -440,8 +440,8 @@ void read_flow(ReadContext& ctx, const TableView& root, Scenario& s) {
   const toml::table* t = root.table("flow");
   if (!t) return;
   const TableView f(ctx, *t, "flow",
-                    {"fluid", "pressure", "permeability_law", "permeability_cap", "boundary",
-                     "region"});
+                    {"fluid", "pressure", "permeability_law", "permeability_cap", "fracture_permeability_cap",
+                     "boundary", "region"});
   FlowDefinition flow;
   if (const toml::table* ft = f.table("fluid")) {
     const TableView fluid(ctx, *ft, "flow.fluid", {"density", "viscosity"});
@@ -457,6 +457,14 @@ void read_flow(ReadContext& ctx, const TableView& root, Scenario& s) {
   flow.permeability_cap = f.number_or("permeability_cap", flow.permeability_cap);
   f.require("permeability_cap", flow.permeability_cap > 0.0 && flow.permeability_cap <= kMaxPermeability,
             fmt::format("must lie in (0, {:g}] m²: beyond, pores are some 10 cm across and the flow is not Darcy's",
+                        kMaxPermeability));
+  // A default only the cubic law uses is listed only for it.
+  flow.fracture_permeability_cap = flow.permeability_law == coupling::PermeabilityLaw::cubic
+                                       ? f.number_or("fracture_permeability_cap", flow.fracture_permeability_cap)
+                                       : f.number("fracture_permeability_cap").value_or(flow.fracture_permeability_cap);
+  f.require("fracture_permeability_cap",
+            flow.fracture_permeability_cap > 0.0 && flow.fracture_permeability_cap <= kMaxPermeability,
+            fmt::format("must lie in (0, {:g}] m²: beyond, a gap is 11 cm wide and its flow is not the cubic law's",
                         kMaxPermeability));
   // A head lies within kMaxPressureHead of the model: its pressure head h − y is at most 10 GPa of water.
   const geometry::Box box = find_model_box(s);

@@ -16,6 +16,7 @@
 #include "geometry/point.hpp"
 #include "geometry/polygon.hpp"
 #include "hydro/boundary_condition.hpp"
+#include "hydro/permeability_law.hpp"
 #include "numerics/time_table.hpp"
 
 namespace hydrodda::scenario {
@@ -225,6 +226,8 @@ struct FlowDefinition {
   hydro::PressureConvention pressure = hydro::PressureConvention::overpressure;
   coupling::PermeabilityLaw permeability_law = coupling::PermeabilityLaw::kozeny_carman;
   double permeability_cap = 9.869e-11;  // m2 (1e5 mD)
+  // m2: the cubic law's cap on a fracture's permeability w²/12 (a 1 cm gap's)
+  double fracture_permeability_cap = hydro::kDefaultFracturePermeabilityCap;
   std::vector<FlowBoundaryCondition> boundaries;
   std::vector<FlowRegion> regions;
 };

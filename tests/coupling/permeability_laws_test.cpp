@@ -72,5 +72,20 @@ TEST(PermeabilityLaws, TheLawsComputeTheirFormulas) {
             hydro::cubic_law_permeability(0.5, 1e-3, cubic.matrix_permeability()));
 }
 
+// The cubic law caps a fracture's permeability w²/12 at fracture_cap, and names the elements it
+// capped: of two half-open elements with gaps of 1 mm and 2 cm, the second (w²/12 = 3.3e-5 m²
+// against the default cap's 8.3e-6 m²). Kozeny–Carman has its own cap and names none.
+TEST(PermeabilityLaws, TheCubicLawCapsTheFracturePermeabilityAndNamesWhere) {
+  const std::vector<double> areas{1.0, 1.0}, apertures{1e-3, 2e-2};
+  PorosityField half_open = two_elements();
+  half_open.fracture_area = {0.5, 0.5};
+  const PermeabilityModel cubic = model_of(PermeabilityLaw::cubic);
+  const std::vector<double> k = cubic.compute(half_open, areas, apertures);
+  EXPECT_EQ(k[0], hydro::cubic_law_permeability(0.5, 1e-3, cubic.matrix_permeability()));
+  EXPECT_EQ(k[1], cubic.matrix_permeability() + 0.5 * hydro::kDefaultFracturePermeabilityCap);
+  EXPECT_EQ(cubic.find_capped_elements(half_open, areas, apertures), std::vector<int>{1});
+  EXPECT_TRUE(model_of(PermeabilityLaw::kozeny_carman).find_capped_elements(half_open, areas, apertures).empty());
+}
+
 }  // namespace
 }  // namespace hydrodda::coupling

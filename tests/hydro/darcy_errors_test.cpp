@@ -10,6 +10,7 @@
 
 #include "flow_test_meshes.hpp"
 #include "hydro/darcy_solver.hpp"
+#include "hydro/flow_failure.hpp"
 #include "hydro/p1_element.hpp"
 #include "hydro/region_permeability.hpp"
 
@@ -75,6 +76,9 @@ TEST(DarcyErrors, FloatingPartIsASingularSystem) {
   m.boundary_names = {"left"};
   m.boundary_edges = {{{2, 0}, 0}};
   EXPECT_THROW(DarcySolver(m, make_problem({{"left", BoundaryKind::head, 1.0}})), SingularSystem);
+  const std::string message = message_of([&] { DarcySolver(m, make_problem({{"left", BoundaryKind::head, 1.0}})); });
+  EXPECT_NE(message.find("the part of the mesh around node 3 (2.000000, 0.000000) touches no fixed-head boundary"),
+            std::string::npos) << message;
 }
 
 // A solver whose factorisation always fails, in linear algebra's words, as CHOLMOD's does
@@ -134,6 +138,30 @@ TEST(DarcyErrors, TheConnectivityHintIsGivenOnlyWhereItIsTrue) {
   EXPECT_NE(message.find("reaches a fixed-head boundary only through elements whose permeability is under 1e-16 of "
                          "the largest"),
             std::string::npos) << message;
+  // Every part of the mesh reaches the fixed head: ill-conditioned, which is said, and not
+  // disconnected, which no hint suggests.
+  EXPECT_NE(message.find("; the system is ill-conditioned, not disconnected: the part of the mesh around node "),
+            std::string::npos) << message;
+  EXPECT_EQ(message.find("touches no fixed-head boundary"), std::string::npos) << message;
+  EXPECT_EQ(message.find("is every part of the mesh connected"), std::string::npos) << message;
+}
+
+// A part of the mesh with no fixed head at all is disconnected, whatever the permeability: the
+// message names its node and says so, and no contrast is blamed (1e-12 to 1e-12: none past
+// 1e16). The assembler refuses such a mesh when it is set up, naming the node the same way.
+TEST(DarcyErrors, ADisconnectedPartIsToldApartFromAnIllConditionedOne) {
+  mesh::TriangleMesh m;
+  m.nodes = {{0, 0}, {1, 0}, {0, 1}, {2, 0}, {3, 0}, {2, 1}};
+  m.triangles = {{0, 1, 2}, {3, 4, 5}};
+  const std::vector<double> k(2, 1e-12);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<double> fixed_head{1.0, nan, 1.0, nan, nan, nan};
+  const std::string message = describe_flow_failure(m, k, fixed_head, "its matrix could not be factored");
+  EXPECT_EQ(message,
+            "the flow solve failed (its matrix could not be factored): the permeability spans 1e-12 m² (element 0 at "
+            "(0.333, 0.333)) to 1e-12 m² (element 0 at (0.333, 0.333)), a contrast of 1; the part of the mesh around "
+            "node 3 (2, 0) touches no fixed-head boundary: its head is undetermined");
+  EXPECT_EQ(message.find("ill-conditioned"), std::string::npos) << message;
 }
 
 // Hand-computed element matrix of the right triangle (0,0), (1,0), (0,1) with K = I:

@@ -29,6 +29,25 @@ TEST(CubicLaw, TransmissivityIndependentOfElementWidth) {
   EXPECT_EQ(cubic_law_permeability(0.0, w, 3e-18), 3e-18);
 }
 
+// The fracture permeability cap: k = k_m + f min(w²/12, k_cap). Below the cap the cubic law
+// itself; above it the cap, so the transmissivity k b = w k_cap grows linearly in w (exact
+// identities, round-off). The default cap is a 1 cm gap's, (1e-2 m)²/12.
+TEST(CubicLaw, TheFracturePermeabilityIsCapped) {
+  EXPECT_DOUBLE_EQ(kDefaultFracturePermeabilityCap, 1e-4 / 12.0);
+  const double cap = 1e-8, k_m = 1e-19;  // the cap: a gap of √(12e-8) = 0.35 mm
+  const double under = 1e-4, over = 1e-3;
+  EXPECT_EQ(cubic_law_permeability(0.5, under, k_m, cap), cubic_law_permeability(0.5, under, k_m));
+  EXPECT_FALSE(reaches_fracture_cap(under, cap));
+  EXPECT_TRUE(reaches_fracture_cap(over, cap));
+  for (double b : {2e-3, 1e-2, 0.1}) {
+    const double k = cubic_law_permeability(over / b, over, 0.0, cap);
+    EXPECT_NEAR(k * b, over * cap, 1e-14 * over * cap) << b;
+  }
+  // A layer lifted 2.9 m off its base: 0.7 m² uncapped, the cap's 8.3e-6 m² capped.
+  EXPECT_NEAR(cubic_law_permeability(1.0, 2.9, k_m), 0.70, 0.01);
+  EXPECT_EQ(cubic_law_permeability(1.0, 2.9, k_m, kDefaultFracturePermeabilityCap), k_m + kDefaultFracturePermeabilityCap);
+}
+
 // A wedge w = α s carries α³ s² / 12 over a length s from its tip: at s* exactly the matrix's
 // k_m (round-off, 1e-12 relative); the symmetric flexure's central joint (α = 1.42e-3, k_m =
 // 9.877e-16 m²) gives 2.0 mm (2.035); an angle of zero or less has no tip.

@@ -1,0 +1,39 @@
+#include "run/permeability_cap.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <set>
+
+namespace hydrodda::run {
+
+std::optional<std::string> describe_capped_fractures(std::span<const int> capped, const mesh::TriangleMesh& mesh,
+                                                     std::span<const int> element_fractures, double cap) {
+  if (capped.empty()) return std::nullopt;
+  std::set<int> fractures;
+  for (int e : capped)
+    if (static_cast<std::size_t>(e) < element_fractures.size() && element_fractures[e] >= 0)
+      fractures.insert(element_fractures[e]);
+  std::string along;
+  if (!fractures.empty()) {
+    std::string ids;
+    int named = 0;
+    for (int f : fractures) {
+      if (named == 5) {
+        ids += fmt::format(" and {} more", fractures.size() - 5);
+        break;
+      }
+      ids += fmt::format("{}{}", named == 0 ? "" : ", ", f);
+      ++named;
+    }
+    along = fmt::format(", along fracture{} {}", fractures.size() == 1 ? "" : "s", ids);
+  }
+  const geometry::Point first = mesh::triangle_centroid(mesh, capped.front());
+  return fmt::format(
+      "the cubic law's fracture permeability w²/12 reached flow.fracture_permeability_cap = {:.4g} m² (a gap {:.3g} mm "
+      "wide) in {} fluid element{}{}, the first at ({:.4g}, {:.4g}): their flow is the cap's, less than the cubic "
+      "law's for gaps that wide (docs/coupling.md, \"The fracture permeability cap\")",
+      cap, 1e3 * std::sqrt(12.0 * cap), capped.size(), capped.size() == 1 ? "" : "s", along, first.x, first.y);
+}
+
+}  // namespace hydrodda::run

@@ -1,0 +1,22 @@
+#pragma once
+// What a run says when the cubic law's fracture permeability reaches its cap
+// (flow.fracture_permeability_cap, hydro::cubic_law_permeability): how many fluid elements,
+// along which fractures, and where the first lies.
+
+#include <optional>
+#include <span>
+#include <string>
+
+#include "mesh/triangle_mesh.hpp"
+
+namespace hydrodda::run {
+
+// "the cubic law's fracture permeability w²/12 reached flow.fracture_permeability_cap =
+// 8.33e-06 m² (a gap 1 cm wide) in 12 fluid elements, along fractures 3 and 7, the first at
+// (1.5, 2.25): ...". `capped`: the elements, in order; `element_fractures`: per element the
+// fracture whose flow zone holds it, or -1 (empty: no fracture traces). None when nothing was
+// capped.
+std::optional<std::string> describe_capped_fractures(std::span<const int> capped, const mesh::TriangleMesh& mesh,
+                                                     std::span<const int> element_fractures, double cap);
+
+}  // namespace hydrodda::run
