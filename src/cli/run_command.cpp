@@ -46,6 +46,7 @@ int report(const run::RunResult& result) {
       return kSuccess;
     case run::RunStatus::interrupted:
     case run::RunStatus::failed:
+    case run::RunStatus::no_equilibrium:
       break;
   }
   if (result.good_state_kept)

@@ -796,6 +796,7 @@ StepReport System::step() {
   StepReport report;
   dt_ = std::min(settings_.time_step, dt_);
   lagrangian_limit_ = settings_.max_lagrangian_iterations;
+  const double first_time_step = dt_;
   std::string first_failure;
   for (;;) {
     detect_contacts();
@@ -835,8 +836,11 @@ StepReport System::step() {
     if (report.retries == 0) first_failure = "at its first try (" + format_number(dt_) + " s), " + why;
     ++report.retries;
     if (report.retries > 40)
-      throw std::runtime_error("DDA: the time step fell below any use (cut 40 times, to " + format_number(dt_) +
-                               " s, at t = " + format_number(time_) + " s): " + why +
+      // The step it was cut to (0.3^40 of it: 1e-21) says nothing a user can act on; the step
+      // it was cut from does.
+      throw std::runtime_error("DDA: the time step fell below any use (cut 40 times from " +
+                               format_number(first_time_step) + " s without settling, at t = " + format_number(time_) +
+                               " s): " + why +
                                (first_failure.find(why) == std::string::npos ? "; " + first_failure : ""));
     // Contact forces that did not settle are given twice the passes once, at the same step,
     // before the step is cut. The augmented Lagrangian converges geometrically, and a shorter

@@ -24,6 +24,7 @@ const char* status_name(run::RunStatus status) {
     case run::RunStatus::stopped: return "stopped";
     case run::RunStatus::interrupted: return "interrupted";
     case run::RunStatus::failed: return "failed";
+    case run::RunStatus::no_equilibrium: return "no equilibrium";
   }
   return "";
 }

@@ -6,23 +6,9 @@
 #include <cmath>
 #include <limits>
 
-#include "output/item_list.hpp"
 #include "run/figures.hpp"
 
 namespace hydrodda::run {
-
-std::string describe_escape(const std::vector<coupling::EscapingBlock>& escaping, int iteration,
-                            const output::RunFolder& folder) {
-  std::vector<std::string> named;
-  for (const coupling::EscapingBlock& b : escaping)
-    named.push_back(fmt::format("block {} (moved {:.3g} m, size {:.3g} m)", b.block, b.distance, b.size));
-  const std::string blocks = output::list_items(named, &folder, "escaping_blocks.txt");
-  return fmt::format(
-      "no mechanical equilibrium under this load: at coupling iteration {}, {} block(s) have moved farther than "
-      "their own size (the square root of their area) and the loop still moves them: {}; the fluid load exceeds "
-      "what the blocks' weight, their contacts and the supports can hold",
-      iteration, escaping.size(), blocks);
-}
 
 std::string describe_farthest(const std::vector<geometry::Point>& displacements) {
   std::vector<int> order(displacements.size());

@@ -1,5 +1,5 @@
 #pragma once
-// What a coupled run's messages say of how it ended: blocks that escape, a loop that drifts,
+// What a coupled run's messages say of how it ended: a loop that drifts,
 // a failed pass, how far the regions' answers still moved, steps cut short.
 
 #include <cstddef>
@@ -16,11 +16,6 @@ namespace hydrodda::run {
 
 // Passes of an unconverged run over which its regions' answers are ranged.
 constexpr std::size_t kRangePasses = 10;
-
-// "no mechanical equilibrium ...: blocks 12 (moved 2.91 m, size 1 m), ...", the farthest few
-// (every one in `folder`'s escaping_blocks.txt when there are more).
-std::string describe_escape(const std::vector<coupling::EscapingBlock>& escaping, int iteration,
-                            const output::RunFolder& folder);
 
 // "block 12 moved 0.159 m (ux 0.001 m, uy 0.159 m), ...": the farthest five since the start,
 // which show where and which way the load moves the blocks of a loop that drifts or diverges.

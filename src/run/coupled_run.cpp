@@ -14,6 +14,7 @@
 
 #include "coupling/convergence_diagnosis.hpp"
 #include "run/coupled_messages.hpp"
+#include "run/no_equilibrium.hpp"
 #include "run/permeability_cap.hpp"
 #include "run/coupled_model.hpp"
 #include "run/coupled_recorder.hpp"
@@ -123,6 +124,29 @@ RunFailure fail_round(const Round& round, std::string message, bool with_range, 
   return RunFailure(RunStatus::failed, std::move(message), std::move(summary));
 }
 
+// A load under which no equilibrium exists: the blocks that escape, where they are at the last
+// finished pass (which the summary, history and figures describe), and the fractures open
+// then, under the load the scenario drives the blocks with.
+RunFailure no_equilibrium_round(const Round& round, const std::vector<coupling::EscapingBlock>& escaping) {
+  const int held = round.model.iterations();
+  const std::string state = held > 0 ? fmt::format("coupling iteration {}", held) : "the blocks as built";
+  std::vector<int> open;
+  const std::optional<fractures::FractureState>& fractures = round.recorder.fracture_state();
+  if (fractures)
+    for (const fractures::FractureResult& r : fractures->fractures)
+      if (r.open) open.push_back(r.id);
+  std::string message =
+      describe_no_equilibrium(round.context.scenario, locate_escaping_blocks(escaping, round.model.block_polygons()),
+                              state, open, fractures.has_value(), round.context.folder);
+  output::RunSummary summary = round.recorder.summary();
+  try {
+    draw_round_figures(round, describe_status_for_figures(fmt::format("no equilibrium after pass {}", held), message));
+  } catch (const std::exception& e) {
+    spdlog::warn("the figures of the run without equilibrium could not be drawn: {}", e.what());
+  }
+  return RunFailure(RunStatus::no_equilibrium, std::move(message), std::move(summary));
+}
+
 // A run interrupted after its last finished pass: its summary, and its figures saying so.
 RunFailure interrupt_round(const Round& round, std::string message) {
   output::RunSummary summary = round.recorder.summary();
@@ -149,10 +173,7 @@ void end_on_loop_failure(const Round& round, const coupling::LoopResult& result)
                                  r.growing_passes, r.head_change, r.displacement_change, r.iteration),
                      true, r.iteration);
   }
-  if (result.end == coupling::LoopEnd::escaping) {
-    const coupling::PassReport& r = *result.last_pass;
-    throw fail_round(round, describe_escape(r.escaping, r.iteration, round.context.folder), false, r.iteration);
-  }
+  if (result.end == coupling::LoopEnd::escaping) throw no_equilibrium_round(round, result.last_pass->escaping);
 }
 
 // The load steps from the one the model is at (docs/scenario.md, "Loads over time"): each
@@ -203,15 +224,19 @@ bool run_passes(const Round& round) {
     throw interrupt_round(round, fmt::format("interrupted: {}; the results are those of coupling iteration {}",
                                              e.what(), round.model.iterations()));
   } catch (const std::exception& e) {
-    // A DDA step that fails while blocks fly off is the escape, not the step, to report.
+    // A DDA step or a flow solve that fails while blocks fly off is the breach, not the step
+    // (cut to nothing) or the solve (of a layer lifted metres off its base), to report.
     const std::vector<coupling::EscapingBlock> escaping = round.model.loop().blocks_beyond_their_size();
     const int failed = round.model.iterations() + 1;
     // Back to the last finished pass, which the summary, the figures and the checkpoint then
     // describe alike (its heads, fields and blocks), not the pass that failed half-way.
     round.model.abandon_pass();
+    if (!escaping.empty()) {
+      spdlog::debug("coupling iteration {} failed as blocks escaped: {}", failed, e.what());
+      throw no_equilibrium_round(round, escaping);
+    }
     throw fail_round(round,
-                     fmt::format("coupling iteration {} failed: {}{}; {}", failed, e.what(),
-                                 escaping.empty() ? "" : "; " + describe_escape(escaping, failed, round.context.folder),
+                     fmt::format("coupling iteration {} failed: {}; {}", failed, e.what(),
                                  describe_results_kept(round.model.iterations())),
                      true, failed);
   }

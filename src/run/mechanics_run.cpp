@@ -8,6 +8,7 @@
 #include "run/figures.hpp"
 #include "run/fracture_output.hpp"
 #include "run/model_building.hpp"
+#include "run/no_equilibrium.hpp"
 #include "run/mechanics_model.hpp"
 #include "run/paraview_output.hpp"
 #include "run/run_summary.hpp"
@@ -83,6 +84,23 @@ output::RunSummary run_mechanics(const RunContext& context) {
     }
     return RunFailure(status, std::move(message), model.summary());
   };
+  // A static analysis whose blocks went farther than their own size and still move has found no
+  // equilibrium under its load: named as such, with the state of the last finished step.
+  const auto no_equilibrium = [&](const std::vector<coupling::EscapingBlock>& escaping) {
+    std::vector<int> open;
+    if (fracture_state)
+      for (const fractures::FractureResult& r : fracture_state->fractures)
+        if (r.open) open.push_back(r.id);
+    std::vector<geometry::Polygon> polygons;
+    for (int b = 0; b < system.block_count(); ++b) polygons.push_back(system.polygon(b));
+    const std::string message =
+        describe_no_equilibrium(s, locate_escaping_blocks(escaping, polygons), fmt::format("DDA step {}", model.steps()),
+                                open, fracture_state.has_value(), context.folder);
+    return stop(RunStatus::no_equilibrium, message,
+                describe_status_for_figures(fmt::format("no equilibrium at step {}", model.steps()), message));
+  };
+  const bool static_analysis = m.analysis == dda::Analysis::static_;
+  double last_step_displacement = 0.0;
   write_step(0, 0.0);
   long long last_written = 0;
   try {
@@ -92,6 +110,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
                    fmt::format("interrupted at step {} (t = {:g} s)", model.steps(), system.time()),
                    fmt::format("interrupted at step {}", model.steps()));
       const dda::StepReport r = model.step();
+      last_step_displacement = r.max_displacement;
       fracture_state.reset();  // no longer the blocks' state: measured again at an output step
       const long long step = model.steps();
       history.add_row({CsvTable::cell(step), CsvTable::cell(r.time), CsvTable::cell(r.time_step),
@@ -127,12 +146,21 @@ output::RunSummary run_mechanics(const RunContext& context) {
     // in: a front end is told of none, as summary.json gives none.
     fracture_state.reset();
     const long long failed = model.steps() + 1;
+    // A step that fails while blocks fly off is the breach, not the step (cut to nothing).
+    if (const auto escaping = find_escaping_blocks(system); static_analysis && !escaping.empty()) {
+      spdlog::debug("mechanics failed at step {} as blocks escaped: {}", failed, e.what());
+      throw no_equilibrium(escaping);
+    }
     throw stop(RunStatus::failed,
                fmt::format("mechanics failed at step {} (t = {:g} s): {}", failed, system.time(), e.what()),
                describe_status_for_figures(fmt::format("failed at step {}", failed), e.what()));
   }
   write_tables();
   if (last_written != model.steps()) write_step(model.steps(), system.time());
+  // Still moving at the end (its last step moved a vertex past the contacts' own precision).
+  if (const auto escaping = find_escaping_blocks(system);
+      static_analysis && !escaping.empty() && last_step_displacement > system.penetration_tolerance())
+    throw no_equilibrium(escaping);
   if (const std::string unreached = describe_unreached_displacement(s, system); !unreached.empty())
     throw stop(RunStatus::failed, unreached, describe_status_for_figures("failed", unreached));
 

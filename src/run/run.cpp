@@ -22,12 +22,14 @@ namespace fs = std::filesystem;
 namespace {
 
 // A run that stopped before its end: summary.json says so (converged = false, status
-// "interrupted" or "failed", what happened). `has_state`: the summary describes a state of the
+// "interrupted", "no equilibrium" or "failed", what happened). `has_state`: the summary describes a state of the
 // model, which is good only when every value in it is finite.
 RunResult record_failure(const output::RunFolder& folder, RunStatus status, const std::string& what,
                          output::RunSummary summary, bool has_state = true) {
   summary.converged = false;
-  summary.status = status == RunStatus::interrupted ? "interrupted" : "failed";
+  summary.status = status == RunStatus::interrupted      ? "interrupted"
+                   : status == RunStatus::no_equilibrium ? "no equilibrium"
+                                                         : "failed";
   summary.message = what;
   const output::CheckedSummary checked = output::format_checked_summary(summary);
   try {

@@ -79,6 +79,9 @@ enum class RunStatus {
   stopped,      // a coupled run stopped after RunOptions::stop_after passes, to be resumed
   interrupted,  // Callbacks::stop_requested stopped it
   failed,       // a step, solve or pass failed; `message` says what and where
+  // No mechanical equilibrium exists under the load: blocks escape (run/no_equilibrium.hpp);
+  // `message` names the load, the blocks and the fractures open at the last state kept.
+  no_equilibrium,
 };
 
 struct RunResult {

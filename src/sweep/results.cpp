@@ -126,6 +126,7 @@ std::string_view status_name(CaseStatus status) {
     case CaseStatus::failed: return "failed";
     case CaseStatus::interrupted: return "interrupted";
     case CaseStatus::not_run: return "not run";
+    case CaseStatus::no_equilibrium: return "no equilibrium";
   }
   return "pending";
 }
@@ -167,6 +168,8 @@ CaseResult read_case_result(const std::string& name, const std::filesystem::path
       r.columns.assign(values.begin() + 4, values.end());
       if (values[0] == "interrupted") {
         r.status = CaseStatus::interrupted;
+      } else if (values[0] == "no equilibrium") {
+        r.status = CaseStatus::no_equilibrium;
       } else if (exit_code == 0 && values[0] == "ok") {
         r.status = r.converged == "true" ? CaseStatus::ok : CaseStatus::not_converged;
         if (r.status == CaseStatus::not_converged && r.message.empty())
@@ -179,7 +182,8 @@ CaseResult read_case_result(const std::string& name, const std::filesystem::path
   // A case that failed or was interrupted has no result: its summary.json holds the last good
   // state it reached (the blocks as built, a pass before the one that failed), whose numbers
   // would read as the case's answer.
-  if (r.columns.empty() || r.status == CaseStatus::failed || r.status == CaseStatus::interrupted)
+  if (r.columns.empty() || r.status == CaseStatus::failed || r.status == CaseStatus::interrupted ||
+      r.status == CaseStatus::no_equilibrium)
     r.columns.assign(columns.size(), std::nullopt);
   if (r.status != CaseStatus::ok && r.message.empty()) {
     const std::string error = find_last_error(case_dir / "run.log");
@@ -310,7 +314,8 @@ std::size_t SweepResults::count_not_ok() const {
 std::string SweepResults::describe_not_ok() const {
   const auto counts = count_by_status();
   std::string text;
-  for (CaseStatus s : {CaseStatus::not_converged, CaseStatus::failed, CaseStatus::interrupted, CaseStatus::not_run})
+  for (CaseStatus s : {CaseStatus::not_converged, CaseStatus::no_equilibrium, CaseStatus::failed,
+                       CaseStatus::interrupted, CaseStatus::not_run})
     if (const std::size_t n = counts[static_cast<std::size_t>(s)])
       text += fmt::format("{}{} {}", text.empty() ? "" : ", ", n, status_name(s));
   return text;

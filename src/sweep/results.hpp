@@ -16,10 +16,10 @@ namespace hydrodda::sweep {
 // What became of a case. Only `ok` is a result: `not_converged` ran to its end without meeting
 // the coupling tolerance, `failed` stopped on an error (or left no summary), `interrupted`
 // stopped at a signal, `not_run` never started because the sweep was interrupted.
-enum class CaseStatus { pending, ok, not_converged, failed, interrupted, not_run };
-inline constexpr std::size_t kCaseStatuses = 6;
+enum class CaseStatus { pending, ok, not_converged, failed, interrupted, not_run, no_equilibrium };
+inline constexpr std::size_t kCaseStatuses = 7;
 
-// As sweep.csv writes it: "ok", "not converged", "failed", "interrupted", "not run".
+// As sweep.csv writes it: "ok", "not converged", "failed", "interrupted", "not run", "no equilibrium".
 std::string_view status_name(CaseStatus status);
 // The status of that name; std::invalid_argument for any other text.
 CaseStatus status_from_name(std::string_view name);

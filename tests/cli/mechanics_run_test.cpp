@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -43,6 +45,58 @@ TEST(MechanicsRun, LoadedBlockWritesTheRunFolder) {
   while (std::getline(csv, line)) ++rows;
   EXPECT_EQ(rows, 200);
   fs::remove_all(out);
+}
+
+// A block pushed sideways against its joint's friction (tests/cli/scenarios/pushed_block.toml):
+// friction holds it up to F* = tan φ ρ g A = 4324 N/m (the force balance, exact for a block on a
+// frictional plane). At F*/2 it stays (exit 0, status "ok"). At 2 F* no equilibrium exists:
+// the static analysis slides it on, farther than its own 1 m, and the run ends with status
+// "no equilibrium", exit 1, naming the load and the block at its centroid as summary.json has it.
+TEST(MechanicsRun, ABlockPushedPastItsFrictionHasNoEquilibrium) {
+  const fs::path scenario = fs::path(HYDRODDA_SOURCE_DIR) / "tests/cli/scenarios/pushed_block.toml";
+  std::ifstream in(scenario);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const double f_star = std::tan(10.0 * M_PI / 180.0) * 2500.0 * 9.81;
+  for (const double ratio : {0.5, 2.0}) {
+    std::string edited = text;
+    const std::string held = "force = [2162.0, 0.0]";
+    ASSERT_NE(edited.find(held), std::string::npos);
+    char force[64];
+    std::snprintf(force, sizeof force, "force = [%.1f, 0.0]", ratio * f_star);
+    edited.replace(edited.find(held), held.size(), force);
+    const fs::path file = fs::temp_directory_path() / "hydrodda-pushed-block.toml";
+    std::ofstream(file) << edited;
+    const fs::path out = fs::temp_directory_path() / "hydrodda-pushed-block";
+    fs::remove_all(out);
+    const auto result = run_program("-q run " + file.string() + " -o " + out.string() + " --threads 1");
+    const auto summary = nlohmann::json::parse(std::ifstream(out / "summary.json"));
+    const auto& block = summary["blocks"][1];
+    const double moved = std::hypot(block["displacement"][0].get<double>(), block["displacement"][1].get<double>());
+    if (ratio < 1.0) {
+      EXPECT_EQ(result.exit_code, 0) << result.output;
+      EXPECT_EQ(summary["status"], "ok");
+      EXPECT_LT(moved, 1e-3) << "friction holds the block";
+    } else {
+      EXPECT_EQ(result.exit_code, 1) << result.output;
+      EXPECT_EQ(summary["status"], "no equilibrium");
+      EXPECT_EQ(summary["converged"], false);
+      EXPECT_GT(moved, 1.0);
+      const std::string message = summary["message"];
+      char named[128];
+      std::snprintf(named, sizeof named, "no mechanical equilibrium under mechanics.load at (1.5, 1.5) force = [%.4g, 0] N/m: 1 block(s)",
+                    std::round(ratio * f_star * 10.0) / 10.0);
+      EXPECT_NE(message.find(named), std::string::npos) << message;
+      std::snprintf(named, sizeof named, "block 1 at (%.4g, %.4g) (moved %.3g m, size 1 m)",
+                    block["centroid"][0].get<double>(), block["centroid"][1].get<double>(), moved);
+      EXPECT_NE(message.find(named), std::string::npos) << message;
+      EXPECT_NE(message.find("(summary.json, history.csv and the figures are of DDA step " +
+                             std::to_string(summary["iterations"].get<int>()) + ")"),
+                std::string::npos) << message;
+      EXPECT_EQ(message.find("time step fell below"), std::string::npos) << message;
+    }
+    fs::remove_all(out);
+    fs::remove(file);
+  }
 }
 
 }  // namespace

@@ -257,6 +257,9 @@ TEST(System, AStepThatNeverSettlesSaysWhatFailedAndWhen) {
   EXPECT_NE(what.find("time step fell below any use"), std::string::npos) << what;
   EXPECT_NE(what.find("at t = 0 s"), std::string::npos) << what;
   EXPECT_NE(what.find("open-close iteration did not settle"), std::string::npos) << what;
+  // The step it was cut from, not the 0.3^40 of it that it was cut to.
+  EXPECT_NE(what.find("(cut 40 times from "), std::string::npos) << what;
+  EXPECT_EQ(what.find(", to "), std::string::npos) << what;
 }
 
 // A step whose contact forces never settle names the contact that kept them from it. A block

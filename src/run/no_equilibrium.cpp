@@ -1,0 +1,117 @@
+#include "run/no_equilibrium.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "output/item_list.hpp"
+#include "scenario/spellings.hpp"
+
+namespace hydrodda::run {
+
+std::vector<coupling::EscapingBlock> find_escaping_blocks(const dda::System& system) {
+  std::vector<coupling::EscapingBlock> beyond;
+  for (int b = 0; b < system.block_count(); ++b) {
+    const geometry::Point u = system.displacement(b);
+    const double distance = std::hypot(u.x, u.y);
+    const double size = std::sqrt(std::abs(geometry::signed_area(system.polygon(b))));
+    if (distance > size) beyond.push_back({b, distance, size});
+  }
+  std::stable_sort(beyond.begin(), beyond.end(),
+                   [](const coupling::EscapingBlock& a, const coupling::EscapingBlock& b) { return a.distance > b.distance; });
+  return beyond;
+}
+
+std::vector<EscapedBlock> locate_escaping_blocks(std::span<const coupling::EscapingBlock> escaping,
+                                                 std::span<const geometry::Polygon> blocks) {
+  std::vector<EscapedBlock> located;
+  for (const coupling::EscapingBlock& b : escaping) {
+    const bool known = b.block >= 0 && static_cast<std::size_t>(b.block) < blocks.size();
+    located.push_back({b, known ? geometry::centroid(blocks[b.block]) : geometry::Point{}});
+  }
+  return located;
+}
+
+namespace {
+
+// A flow boundary's fixed value as the scenario writes it.
+std::string describe_boundary(const scenario::FlowBoundaryCondition& b) {
+  return b.kind == hydro::BoundaryKind::head ? fmt::format("\"{}\" head = {:.4g} m", b.name, b.value)
+                                             : fmt::format("\"{}\" pressure = {:.4g} Pa", b.name, b.value);
+}
+
+// The fluid pressure's drive: the head and pressure boundaries, the highest pressure head
+// (p/ρg, or h) first, the one that lifts, as one item.
+std::vector<std::string> describe_flow_loads(const scenario::Scenario& s) {
+  std::vector<const scenario::FlowBoundaryCondition*> fixed;
+  if (!s.flow) return {};
+  for (const scenario::FlowBoundaryCondition& b : s.flow->boundaries)
+    if (b.kind != hydro::BoundaryKind::flux) fixed.push_back(&b);
+  const double rho_g = s.flow->fluid_density * 9.81;
+  const auto height = [rho_g](const scenario::FlowBoundaryCondition* b) {
+    return b->kind == hydro::BoundaryKind::head ? b->value : b->value / rho_g;
+  };
+  std::stable_sort(fixed.begin(), fixed.end(), [&](auto* a, auto* b) { return height(a) > height(b); });
+  // The highest (all of them where several share it) drive; the rest are what they drive against.
+  std::string driving, against;
+  for (const scenario::FlowBoundaryCondition* b : fixed) {
+    std::string& text = height(b) == height(fixed.front()) ? driving : against;
+    text += (text.empty() ? "" : " and ") + describe_boundary(*b);
+  }
+  if (driving.empty()) return {};
+  return {fmt::format("flow.boundary {}{}", driving, against.empty() ? "" : ", against " + against)};
+}
+
+}  // namespace
+
+std::string describe_driving_load(const scenario::Scenario& s) {
+  std::vector<std::string> loads = describe_flow_loads(s);
+  if (s.mechanics) {
+    for (const scenario::Traction& t : s.mechanics->tractions)
+      loads.push_back(t.normal_end == t.normal && t.shear_end == t.shear
+                          ? fmt::format("mechanics.traction \"{}\" normal = {:.4g} Pa, shear = {:.4g} Pa", t.boundary,
+                                        t.normal, t.shear)
+                          : fmt::format("mechanics.traction \"{}\" normal = {:.4g} to {:.4g} Pa, shear = {:.4g} to "
+                                        "{:.4g} Pa",
+                                        t.boundary, t.normal, t.normal_end, t.shear, t.shear_end));
+    for (const scenario::PointLoad& l : s.mechanics->loads)
+      loads.push_back(fmt::format("mechanics.load at ({:.4g}, {:.4g}) force = [{:.4g}, {:.4g}] N/m", l.point.x,
+                                  l.point.y, l.force.x, l.force.y));
+  }
+  if (loads.empty()) return "gravity alone";
+  std::string text;
+  const std::size_t named = std::min<std::size_t>(loads.size(), 5);
+  for (std::size_t i = 0; i < named; ++i) text += (i == 0 ? "" : ", ") + loads[i];
+  if (loads.size() > named) text += fmt::format(" and {} more", loads.size() - named);
+  return text;
+}
+
+std::string describe_no_equilibrium(const scenario::Scenario& s, std::span<const EscapedBlock> blocks,
+                                    const std::string& held, std::span<const int> open_fractures,
+                                    bool fractures_known, const output::RunFolder& folder) {
+  std::vector<std::string> named;
+  for (const EscapedBlock& b : blocks)
+    named.push_back(fmt::format("block {} at ({:.4g}, {:.4g}) (moved {:.3g} m, size {:.3g} m)", b.escape.block,
+                                b.centroid.x, b.centroid.y, b.escape.distance, b.escape.size));
+  std::string fractures;
+  if (fractures_known) {
+    if (open_fractures.empty()) {
+      fractures = "; in the last state that held (" + held + ") no fracture was open";
+    } else {
+      std::vector<std::string> ids;
+      for (int f : open_fractures) ids.push_back(std::to_string(f));
+      fractures = fmt::format("; in the last state that held ({}) fracture{} {} {} open", held,
+                              ids.size() == 1 ? "" : "s", output::list_items(ids, nullptr, ""),
+                              ids.size() == 1 ? "was" : "were");
+    }
+  }
+  return fmt::format(
+      "no mechanical equilibrium under {}: {} block(s) moved farther than their own size (the square root of their "
+      "area) and the load still moves them: {}{}; the load exceeds what the blocks' weight, their contacts and the "
+      "supports can hold (summary.json, history.csv and the figures are of {})",
+      describe_driving_load(s), blocks.size(), output::list_items(named, &folder, "escaping_blocks.txt"), fractures,
+      held);
+}
+
+}  // namespace hydrodda::run
