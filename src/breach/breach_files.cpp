@@ -75,7 +75,7 @@ HeldState BreachFiles::measure(const SearchStep& step, const CoupledStepper& ste
   if (summary.fractures)
     for (const output::FractureRow& f : summary.fractures->rows) {
       h.largest_opening = std::max(h.largest_opening, f.max_aperture);
-      if (f.open_length > 0.0) h.open_fractures.push_back(f.id);
+      if (f.open) h.open_fractures.push_back(f.id);  // as summary.json counts them (docs/output.md)
     }
   if (limit_) {
     const std::string text = output::format_summary(summary);
