@@ -39,7 +39,7 @@ class KozenyCarmanLaw final : public Law {
                               std::span<const double>) const override {
     std::vector<double> k(porosity.porosity.size());
     for (std::size_t e = 0; e < k.size(); ++e)
-      k[e] = hydro::kozeny_carman_permeability(porosity.porosity[e], model.grain_diameter, model.cap);
+      k[e] = hydro::kozeny_carman_permeability(porosity.porosity[e], model.grain_diameter_of(e), model.cap);
     return k;
   }
   double matrix_permeability(const PermeabilityModel& model) const override {
@@ -62,10 +62,16 @@ class CubicLaw final : public Law {
     if (apertures.size() != k.size() || element_areas.size() != k.size())
       throw std::invalid_argument("cubic law: one aperture and one area per element are needed");
     const double k_matrix = matrix_permeability(model);
+    const bool by_element = !model.element_matrix_porosity.empty() || !model.element_grain_diameter.empty();
     for (std::size_t e = 0; e < k.size(); ++e)
       k[e] = hydro::cubic_law_permeability(compute_open_fraction(porosity.fracture_area[e], element_areas[e]),
-                                           apertures[e], k_matrix, model.fracture_cap);
+                                           apertures[e], by_element ? element_matrix_permeability(model, e) : k_matrix,
+                                           model.fracture_cap);
     return k;
+  }
+  double element_matrix_permeability(const PermeabilityModel& model, std::size_t e) const {
+    return hydro::kozeny_carman_permeability(model.matrix_porosity_of(e), model.grain_diameter_of(e),
+                                             std::numeric_limits<double>::infinity());
   }
   double matrix_permeability(const PermeabilityModel& model) const override {
     return hydro::kozeny_carman_permeability(model.matrix_porosity, model.grain_diameter,

@@ -22,6 +22,16 @@ struct PermeabilityModel {
   // and how far from an element walls are looked for.
   geometry::Polygon domain;
   double aperture_reach = 1.0;
+  // Per element, where materials differ by region: its matrix porosity and grain diameter (empty:
+  // matrix_porosity and grain_diameter everywhere). Read by compute() only.
+  std::vector<double> element_matrix_porosity;
+  std::vector<double> element_grain_diameter;
+  double matrix_porosity_of(std::size_t e) const {
+    return e < element_matrix_porosity.size() ? element_matrix_porosity[e] : matrix_porosity;
+  }
+  double grain_diameter_of(std::size_t e) const {
+    return e < element_grain_diameter.size() ? element_grain_diameter[e] : grain_diameter;
+  }
 
   // k per element. Kozeny–Carman: the paper's eq. 9 on φ_e. Cubic: k_m + (A_f/A_e) w_e²/12
   // with k_m the Kozeny–Carman value of the matrix porosity and w_e the local aperture

@@ -125,16 +125,38 @@ struct Roller {
   std::array<bool, 2> faces_along{};
 };
 
+// A value of a layered stress field: σ at height y.
+struct StressKnot {
+  double y = 0.0;                              // m
+  std::array<double, 3> stress{0.0, 0.0, 0.0};  // Pa
+};
+
 // A stress field linear in y, as UDEC's insitu with ygradient: σ(y) = at_reference +
-// gradient (y − reference_y), components (σxx, σyy, τxy), Pa, compression negative.
+// gradient (y − reference_y), components (σxx, σyy, τxy), Pa, compression negative. With
+// `knots` (two or more, y increasing), it is piecewise linear in y instead: linear between
+// knots, and beyond the end knots along the end pieces (a layered model's, each layer's
+// gradient from its density).
 struct StressField {
   std::array<double, 3> at_reference{0.0, 0.0, 0.0};
   double reference_y = 0.0;                           // m
   std::array<double, 3> gradient{0.0, 0.0, 0.0};      // Pa/m
+  std::vector<StressKnot> knots;
   std::array<double, 3> at(double y) const {
+    if (knots.size() >= 2) return interpolate_knots(y);
     const double dy = y - reference_y;
     return {at_reference[0] + gradient[0] * dy, at_reference[1] + gradient[1] * dy,
             at_reference[2] + gradient[2] * dy};
+  }
+
+ private:
+  std::array<double, 3> interpolate_knots(double y) const {
+    std::size_t k = 1;  // the piece [knots[k − 1], knots[k]] that holds y, or the end one nearest
+    while (k + 1 < knots.size() && y > knots[k].y) ++k;
+    const StressKnot& a = knots[k - 1];
+    const StressKnot& b = knots[k];
+    const double t = (y - a.y) / (b.y - a.y);
+    return {a.stress[0] + t * (b.stress[0] - a.stress[0]), a.stress[1] + t * (b.stress[1] - a.stress[1]),
+            a.stress[2] + t * (b.stress[2] - a.stress[2])};
   }
 };
 

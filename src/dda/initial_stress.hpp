@@ -19,7 +19,8 @@ namespace hydrodda::dda {
 
 // p's share of the force the field puts across the straight face p–q, on the side whose
 // outward unit normal is n: ∫ σ n N_p ds with N_p p's linear weight along the face,
-// L (2 σ(p) + σ(q)) n / 6 (exact for a field linear along the face).
+// L (2 σ(p) + σ(q)) n / 6 (exact for a field linear along the face); a face across the knots
+// of a layered field is integrated piece by piece, exactly too.
 Point compute_face_load(const StressField& field, Point p, Point q, Point n);
 
 // The forces a contact starts with: vertex `vertex` of polygon_i against edge `edge` of

@@ -132,6 +132,8 @@ class System {
   const Polygon& polygon(int block) const { return blocks_[block].polygon; }
   Point centroid(int block) const { return blocks_[block].moments.centroid; }
   double area(int block) const { return blocks_[block].moments.area; }
+  int material(int block) const { return blocks_[block].material; }  // index into the definition's materials
+  int material_count() const { return static_cast<int>(materials_.size()); }
   // Displacement of the centroid since the start (the material centroid, followed).
   Point displacement(int block) const;
   double rotation(int block) const { return blocks_[block].rotation; }

@@ -73,6 +73,7 @@ json to_json(const RunSummary& s) {
     block["rotation"] = b.rotation;
     block["stress"] = b.stress;
     block["area"] = b.area;
+    if (!b.material.empty()) block["material"] = b.material;
   }
   json measure = json::object();
   for (const MeasureSummary& m : s.measures)

@@ -17,6 +17,7 @@ struct BlockSummary {
   double rotation = 0.0;
   std::array<double, 3> stress{};  // sxx, syy, sxy
   double area = 0.0;
+  std::string material;  // its material's name; empty (left out) when not known
 };
 
 struct MeasureSummary {

@@ -50,11 +50,13 @@ CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::option
   settings.settle_steps =
       s.coupling.settle ? static_cast<int>(std::min<long long>(100LL * settings.steps_per_pass, scenario::kMaxSteps)) : 0;
   settings.permeability = make_permeability_model(s);
-  // Left empty where no region fixes a permeability: one optional per element is 16 MB at a
-  // million triangles.
+  // Left empty where no region, material or joint barrier fixes a permeability: one optional per
+  // element is 16 MB at a million triangles.
   if (s.any_joint_barrier() ||
       std::any_of(s.flow->regions.begin(), s.flow->regions.end(),
-                  [](const scenario::FlowRegion& r) { return r.permeability.has_value(); }))
+                  [](const scenario::FlowRegion& r) { return r.permeability.has_value(); }) ||
+      std::any_of(s.materials.begin(), s.materials.end(),
+                  [](const scenario::MaterialDefinition& m) { return m.permeability.has_value(); }))
     settings.fixed_permeability = find_fixed_permeability(s, mesh_);
   if (s.joint.hydraulic())
     settings.joints = coupling::LoopSettings::Joints{build_model_geometry(s).network, make_joint_aperture_law(s)};

@@ -38,18 +38,21 @@ std::vector<double> assign_permeability(const scenario::Scenario& s, const mesh:
     for (int t = 0; t < mesh.triangle_count(); ++t) k[t] = *fixed[t];
     return k;
   }
-  const scenario::MaterialDefinition& material = s.materials.front();
+  const coupling::PermeabilityModel model = make_element_permeability_model(s, mesh);
   const coupling::PorosityMapper mapper(mesh.nodes, mesh.triangles);
   coupling::PorosityField porosity;
   if (polygons.empty()) {
     // No block geometry (a user's mesh alone): intact rock of the matrix porosity everywhere,
     // not the open space an empty block set would mean to the mapper.
     porosity.fracture_area.assign(mesh.triangles.size(), 0.0);
-    porosity.porosity.assign(mesh.triangles.size(), material.matrix_porosity);
+    porosity.porosity.assign(mesh.triangles.size(), model.matrix_porosity);
   } else {
-    porosity = mapper.compute(polygons, material.matrix_porosity);
+    porosity = mapper.compute(polygons, model.matrix_porosity);
   }
-  const coupling::PermeabilityModel model = make_permeability_model(s);
+  // Materials by region: each element's equivalent porosity on its own material's matrix.
+  for (std::size_t e = 0; e < model.element_matrix_porosity.size(); ++e)
+    porosity.porosity[e] = coupling::equivalent_porosity(porosity.fracture_area[e], mapper.element_areas()[e],
+                                                         model.element_matrix_porosity[e]);
   std::vector<double> apertures;
   if (model.reads_apertures())
     apertures = coupling::compute_local_apertures(mesh, porosity.fracture_area, polygons, model.domain,

@@ -16,11 +16,14 @@
 #include "mesh/mesh_cache.hpp"
 #include "mesh/mesh_request.hpp"
 #include "mesh/spatial_order.hpp"
+#include "run/in_situ_check.hpp"
 #include "run/joint_barriers.hpp"
+#include "run/layered_stress.hpp"
 #include "run/mesh_budget.hpp"
 #include "run/model_geometry.hpp"
 #include "hydro/permeability_law.hpp"
 #include "scenario/diagnostics.hpp"
+#include "scenario/scenario_queries.hpp"
 #include "scenario/spellings.hpp"
 
 namespace hydrodda::run {
@@ -120,22 +123,32 @@ ModelGeometry build_and_log_geometry(const Scenario& s, GeometryWarnings warning
   return model;
 }
 
-std::vector<dda::BlockDefinition> blocks_of(const ModelGeometry& model) {
+std::vector<dda::BlockDefinition> blocks_of(const Scenario& s, const ModelGeometry& model) {
   std::vector<dda::BlockDefinition> blocks;
+  std::vector<Diagnostic> errors;
   for (std::size_t b = 0; b < model.network.blocks.size(); ++b) {
-    dda::BlockDefinition block{model.network.blocks[b], 0, false};
+    const geometry::Polygon& p = model.network.blocks[b];
+    const Point c = geometry::centroid(p);
+    const int material = s.materials.empty() ? 0 : scenario::find_material_at(s, c);
+    if (material < 0 && errors.size() < 5)
+      errors.push_back({s.file.string(), s.materials.front().region_line, "material",
+                        fmt::format("block {} (centroid ({:g}, {:g})) lies in no material's region, and every "
+                                    "material has one: give one material no region to take the rest",
+                                    b, c.x, c.y)});
+    dda::BlockDefinition block{p, std::max(material, 0), false};
     // Each edge on a trace takes the trace's joint type; one on the domain boundary the default.
     for (int fracture : model.network.edge_fractures[b])
       block.edge_joints.push_back(fracture < 0 ? 0 : model.traces[static_cast<std::size_t>(fracture)].joint_type);
     blocks.push_back(std::move(block));
   }
+  if (!errors.empty()) throw scenario::ScenarioError(std::move(errors));
   return blocks;
 }
 
 std::vector<dda::BlockDefinition> build_blocks(const Scenario& s, GeometryWarnings warnings) {
   std::vector<dda::BlockDefinition> blocks;
   if (!s.geometry) return blocks;
-  if (!s.geometry->domain.empty()) return blocks_of(build_and_log_geometry(s, warnings));
+  if (!s.geometry->domain.empty()) return blocks_of(s, build_and_log_geometry(s, warnings));
   for (const scenario::BlockDefinition& b : s.geometry->blocks) {
     dda::BlockDefinition block;
     block.polygon = b.vertices;
@@ -151,9 +164,25 @@ hydro::JointApertureLaw make_joint_aperture_law(const Scenario& s) {
           s.joint.max_closure.value_or(0.0)};
 }
 
+namespace {
+// The material whose matrix an element takes where no region says otherwise: the one without a
+// region (the only one in a model without regions).
+const scenario::MaterialDefinition& find_rest_material(const Scenario& s) {
+  for (const scenario::MaterialDefinition& m : s.materials)
+    if (m.region.empty()) return m;
+  return s.materials.front();
+}
+}  // namespace
+
+std::vector<int> find_element_materials(const Scenario& s, const mesh::TriangleMesh& mesh) {
+  std::vector<int> material(mesh.triangle_count(), -1);
+  for (int t = 0; t < mesh.triangle_count(); ++t) material[t] = scenario::find_material_at(s, mesh::triangle_centroid(mesh, t));
+  return material;
+}
+
 coupling::PermeabilityModel make_permeability_model(const Scenario& s) {
   coupling::PermeabilityModel model;
-  const scenario::MaterialDefinition& material = s.materials.front();
+  const scenario::MaterialDefinition& material = find_rest_material(s);
   model.law = s.flow->permeability_law;
   model.grain_diameter = material.grain_diameter.value_or(0.0);
   model.cap = s.flow->permeability_cap;
@@ -175,7 +204,7 @@ std::optional<std::string> describe_capped_matrix(const Scenario& s) {
       "material.{}: the Kozeny-Carman permeability of its matrix (matrix_porosity = {:g}, grain_diameter = {:g} m) is "
       "{:.3g} m², above flow.permeability_cap = {:.4g} m², which replaces it in every element of intact rock: raise "
       "flow.permeability_cap above it, or fix the permeability with a [[flow.region]]",
-      s.materials.front().name, model.matrix_porosity, model.grain_diameter, own, model.cap);
+      find_rest_material(s).name, model.matrix_porosity, model.grain_diameter, own, model.cap);
 }
 
 std::vector<double> find_biot_coefficients(const Scenario& s, const std::vector<dda::BlockDefinition>& blocks) {
@@ -223,7 +252,10 @@ mesh::MeshRequest make_mesh_request(const Scenario& s) {
   for (const geometry::FractureTrace& t : collect_fracture_traces(s))
     request.refinement_lines.push_back({t.segment.from, t.segment.to});
   for (const scenario::FlowRegion& r : s.flow->regions) request.regions.push_back({r.name, r.polygon});
-  // Joint barriers: strips the elements follow, after the flow regions so that they prevail.
+  // The elements honour the materials' regions too, so that each lies in one material.
+  for (const scenario::MaterialDefinition& m : s.materials)
+    if (!m.region.empty()) request.regions.push_back({"material." + m.name, m.region});
+  // Joint barriers: strips the elements follow, after the flow and material regions so that they prevail.
   for (const BarrierStrip& strip : find_barrier_strips(s)) request.regions.push_back({strip.region, strip.polygon});
   request.size = m.size;
   request.fracture_size = m.fracture_size;
@@ -271,6 +303,15 @@ std::vector<std::optional<double>> find_fixed_permeability(const Scenario& s, co
     for (int t : select_triangles_in(mesh, r->polygon))
       if (!fixed[t]) fixed[t] = *r->permeability;
   }
+  // Under the flow regions, a material's own fixed permeability.
+  const bool any_material_fixes = std::any_of(s.materials.begin(), s.materials.end(),
+                                              [](const scenario::MaterialDefinition& m) { return m.permeability; });
+  if (any_material_fixes) {
+    const std::vector<int> material = find_element_materials(s, mesh);
+    for (std::size_t t = 0; t < fixed.size(); ++t)
+      if (!fixed[t] && material[t] >= 0 && s.materials[material[t]].permeability)
+        fixed[t] = *s.materials[material[t]].permeability;
+  }
   // A joint barrier's strip prevails over the regions: its elements are those of its mesh
   // region (joint_barriers.hpp).
   if (!s.any_joint_barrier()) return fixed;
@@ -284,13 +325,34 @@ std::vector<std::optional<double>> find_fixed_permeability(const Scenario& s, co
   return fixed;
 }
 
+coupling::PermeabilityModel make_element_permeability_model(const Scenario& s, const mesh::TriangleMesh& mesh) {
+  coupling::PermeabilityModel model = make_permeability_model(s);
+  if (!scenario::has_material_regions(s)) return model;
+  const std::vector<int> material = find_element_materials(s, mesh);
+  for (int m : material) {
+    const scenario::MaterialDefinition* own = m >= 0 ? &s.materials[m] : nullptr;
+    model.element_matrix_porosity.push_back(own ? own->matrix_porosity : model.matrix_porosity);
+    model.element_grain_diameter.push_back(own && own->grain_diameter ? *own->grain_diameter : model.grain_diameter);
+  }
+  return model;
+}
+
 std::vector<double> compute_matrix_permeability(const Scenario& s, const mesh::TriangleMesh& mesh) {
   const std::vector<std::optional<double>> fixed = find_fixed_permeability(s, mesh);
-  std::optional<double> k_matrix;  // only where some element is not fixed is a material needed
+  // Only where some element is not fixed is a material needed.
+  if (std::all_of(fixed.begin(), fixed.end(), [](const auto& k) { return k.has_value(); })) {
+    std::vector<double> k;
+    for (const auto& f : fixed) k.push_back(*f);
+    return k;
+  }
+  const coupling::PermeabilityModel model = make_element_permeability_model(s, mesh);
   std::vector<double> k(fixed.size());
   for (std::size_t t = 0; t < fixed.size(); ++t) {
-    if (!fixed[t] && !k_matrix) k_matrix = make_permeability_model(s).matrix_permeability();
-    k[t] = fixed[t] ? *fixed[t] : *k_matrix;
+    if (fixed[t]) k[t] = *fixed[t];
+    else if (model.element_matrix_porosity.empty()) k[t] = model.matrix_permeability();
+    else k[t] = hydro::kozeny_carman_permeability(model.matrix_porosity_of(t), model.grain_diameter_of(t),
+                                                  model.law == coupling::PermeabilityLaw::cubic
+                                                      ? std::numeric_limits<double>::infinity() : model.cap);
   }
   return k;
 }
@@ -417,9 +479,10 @@ dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::B
   }
   model.tractions = edge_tractions(s, blocks, errors);
   if (m.initial_stress) {
-    const scenario::InitialStressDefinition& i = *m.initial_stress;
-    model.initial_stress = dda::StressField{i.stress, i.reference_y, i.gradient};
-    note_unbalanced_initial_stress(s);
+    model.initial_stress = build_initial_stress(s);
+    if (!m.initial_stress->layers) note_unbalanced_initial_stress(s);
+    const auto mismatches = compare_in_situ_stress(s, blocks, *model.initial_stress);
+    if (const std::optional<std::string> warning = describe_in_situ_mismatch(s, mismatches)) spdlog::warn("{}", *warning);
   }
   for (const scenario::RollerDefinition& r : m.rollers) {
     const scenario::BoundarySegment* boundary = s.find_boundary(r.boundary);

@@ -30,8 +30,9 @@ enum class GeometryWarnings { logged, already_logged };
 ModelGeometry build_and_log_geometry(const scenario::Scenario& scenario,
                                      GeometryWarnings warnings = GeometryWarnings::logged);
 
-// The blocks of a cut domain: they take the only material and are free.
-std::vector<dda::BlockDefinition> blocks_of(const ModelGeometry& model);
+// The blocks of a cut domain, free, each of the material whose region holds its centroid (the
+// one without a region elsewhere); a block in no material is a ScenarioError naming `material`.
+std::vector<dda::BlockDefinition> blocks_of(const scenario::Scenario& scenario, const ModelGeometry& model);
 
 // The block polygons of the scenario (counter-clockwise), with their material index and
 // fixed flag, in the order the scenario defines them.
@@ -50,7 +51,8 @@ dda::ModelDefinition build_mechanics_model(const scenario::Scenario& scenario,
 // positions); throws a ScenarioError for a boundary on which no block edge lies.
 std::vector<dda::EdgeTraction> build_tractions(const scenario::Scenario& scenario,
                                                const std::vector<dda::BlockDefinition>& blocks);
-// The permeability law of [flow] with the (only) material's porosity and grain size.
+// The permeability law of [flow] with the porosity and grain size of the material without a
+// region (the only one in a model without regions).
 // The joints' hydraulic aperture law from [joint] (all zero when it gives none: an open joint
 // then has its opening, a closed one nothing).
 hydro::JointApertureLaw make_joint_aperture_law(const scenario::Scenario& scenario);
@@ -82,7 +84,17 @@ mesh::TriangleMesh build_mesh(const scenario::Scenario& scenario,
 // exact, and overlapping regions each keep all of their triangles.
 std::vector<int> select_triangles_in(const mesh::TriangleMesh& mesh, const geometry::Polygon& polygon);
 
-// Per element, the permeability a [[flow.region]] fixes (the last listed wins), or none.
+// Per triangle, the material (index) whose region holds its centroid, else the one without a
+// region; -1 where none does.
+std::vector<int> find_element_materials(const scenario::Scenario& scenario, const mesh::TriangleMesh& mesh);
+
+// make_permeability_model with, where materials differ by region, each element's matrix
+// porosity and grain diameter.
+coupling::PermeabilityModel make_element_permeability_model(const scenario::Scenario& scenario,
+                                                            const mesh::TriangleMesh& mesh);
+
+// Per element, the permeability a [[flow.region]] fixes (the last listed wins), else its
+// material's `permeability`; a joint barrier's strip over either; or none.
 std::vector<std::optional<double>> find_fixed_permeability(const scenario::Scenario& scenario,
                                                            const mesh::TriangleMesh& mesh);
 

@@ -62,7 +62,7 @@ void ParaviewOutput::write_blocks(int step, double time, const dda::System& syst
   if (!fields_.blocks) return;
   std::vector<std::vector<geometry::Point>> polygons;
   DataArray id{"block", 1, {}}, displacement{"displacement", 2, {}}, rotation{"rotation", 1, {}},
-      stress{"stress", 3, {}}, area{"area", 1, {}};
+      stress{"stress", 3, {}}, area{"area", 1, {}}, material{"material", 1, {}};
   for (int b = 0; b < system.block_count(); ++b) {
     polygons.push_back(system.polygon(b));
     id.values.push_back(b);
@@ -72,8 +72,11 @@ void ParaviewOutput::write_blocks(int step, double time, const dda::System& syst
     const auto s = system.stress(b);
     stress.values.insert(stress.values.end(), s.begin(), s.end());
     area.values.push_back(system.area(b));
+    material.values.push_back(system.material(b));
   }
-  const std::vector<DataArray> cells{id, displacement, rotation, stress, area};
+  std::vector<DataArray> cells{id, displacement, rotation, stress, area};
+  // The material's index (in the scenario's order) where there are several to tell apart.
+  if (system.material_count() > 1) cells.push_back(material);
   const std::string name = fmt::format("blocks_{:04d}.vtu", step);
   output::write_vtu_polygons(folder_.file(name), polygons, cells);
   if (!blocks_) blocks_.emplace(folder_.file("blocks.pvd"));

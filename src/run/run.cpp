@@ -184,7 +184,7 @@ std::string check_model(const scenario::Scenario& s) {
   if (s.geometry && !s.geometry->domain.empty()) {
     const ModelGeometry model = build_and_log_geometry(s);
     geometry = model.summary;
-    if (s.mechanics) build_mechanics_model(s, blocks_of(model));
+    if (s.mechanics) build_mechanics_model(s, blocks_of(s, model));
   } else if (s.mechanics) {
     build_mechanics_model(s, build_blocks(s));
   }

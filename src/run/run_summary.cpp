@@ -43,7 +43,9 @@ output::RunSummary summarise_mechanics(const scenario::Scenario& s, const dda::S
   for (int b = 0; b < system.block_count(); ++b) {
     const Point c = system.centroid(b);
     const Point u = system.displacement(b);
-    summary.blocks.push_back({b, {c.x, c.y}, {u.x, u.y}, system.rotation(b), system.stress(b), system.area(b)});
+    const int material = system.material(b);
+    summary.blocks.push_back({b, {c.x, c.y}, {u.x, u.y}, system.rotation(b), system.stress(b), system.area(b),
+                              material >= 0 && material < static_cast<int>(s.materials.size()) ? s.materials[material].name : ""});
   }
   const auto positions = system.measured_positions();
   for (std::size_t i = 0; i < positions.size(); ++i) {

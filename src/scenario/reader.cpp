@@ -201,9 +201,21 @@ void read_materials(ReadContext& ctx, const TableView& root, Scenario& s) {
       continue;
     }
     const TableView m(ctx, *mt, path,
-                      {"density", "young", "poisson", "matrix_porosity", "grain_diameter", "biot_coefficient"});
+                      {"density", "young", "poisson", "matrix_porosity", "grain_diameter", "biot_coefficient",
+                       "permeability", "region"});
     MaterialDefinition material;
     material.name = name;
+    material.line = m.line();
+    if (auto region = m.points("region")) {
+      material.region_line = m.line_of_key("region");
+      if (check_polygon(ctx, material.region_line, path + ".region", *region)) material.region = std::move(*region);
+    }
+    if (auto k = m.number("permeability")) {
+      material.permeability = *k;
+      m.require("permeability", *k > 0.0 && *k <= kMaxPermeability,
+                fmt::format("must lie in (0, {:g}] m²: beyond, pores are some 10 cm across and the flow is not Darcy's",
+                            kMaxPermeability));
+    }
     material.density = m.number("density");
     material.young = m.number("young");
     material.poisson = m.number("poisson");

@@ -33,9 +33,8 @@ std::optional<std::array<double, 3>> read_tensor(ReadContext& ctx, const TableVi
   return out;
 }
 
-// The range of the heads the flow's boundaries fix, m; empty when it is not bounded (a flux
-// through a boundary raises or lowers the heads inside beyond any fixed one) or not known (a
-// pressure on a mesh file's curve, whose height is not known before the mesh is read).
+}  // namespace
+
 std::optional<double> find_boundary_head_range(const Scenario& s) {
   const FlowDefinition& flow = *s.flow;
   hydro::Fluid fluid;
@@ -63,6 +62,8 @@ std::optional<double> find_boundary_head_range(const Scenario& s) {
   return std::isfinite(lowest) ? highest - lowest : 0.0;
 }
 
+namespace {
+
 // The least mean dh/dy over the domain that heads within `head_range` can make: its integral
 // is the outline's ∮ h n_y ds, at least −head_range times the length of the outline that faces
 // down, projected on x (a counter-clockwise edge a→b faces down where b.x > a.x).
@@ -73,10 +74,36 @@ double find_least_mean_head_gradient(const Polygon& domain, double head_range) {
   return -head_range * facing_down / geometry::signed_area(domain);
 }
 
+// vertical = "layers" with its horizontal_ratio (required) and column_x; the two others only with it.
+void read_vertical_profile(ReadContext& ctx, const TableView& t, InitialStressDefinition& stress) {
+  stress.vertical_line = t.line_of_key("vertical");
+  if (const std::optional<std::string> vertical = t.string("vertical")) {
+    stress.layers = *vertical == "layers";
+    t.require("vertical", stress.layers,
+              fmt::format("unknown value \"{}\": \"layers\" (dσyy/dy from each layer's density) is the one choice; "
+                          "leave `vertical` out to give `gradient`", *vertical));
+  }
+  if (!stress.layers) {
+    for (const char* key : {"horizontal_ratio", "column_x"})
+      if (t.has(key)) ctx.error(t.line_of_key(key), t.key_path(key), "applies with vertical = \"layers\" only");
+    return;
+  }
+  if (auto k0 = t.number("horizontal_ratio")) {
+    stress.horizontal_ratio = *k0;
+    t.require("horizontal_ratio", *k0 >= 0.0 && *k0 <= 10.0,
+              "must lie in [0, 10]: σxx's increase over σyy's down through the layers (K0)");
+  } else if (!t.has("horizontal_ratio")) {
+    ctx.error(t.line(), t.key_path("horizontal_ratio"),
+              "required with vertical = \"layers\": K0, the ratio of σxx's increase to σyy's with depth");
+  }
+  stress.column_x = t.number("column_x");
+}
+
 }  // namespace
 
 void check_initial_stress_gradient(ReadContext& ctx, const Scenario& s) {
   if (!s.mechanics || !s.mechanics->initial_stress || s.materials.empty()) return;
+  if (s.mechanics->initial_stress->layers) return;  // the layers' densities give it its sign
   const double g = -s.mechanics->gravity.y;  // gravity pointing down: > 0
   if (!(g > 0.0)) return;
   const bool coupled = s.flow.has_value();
@@ -115,14 +142,34 @@ void check_initial_stress_gradient(ReadContext& ctx, const Scenario& s) {
 
 void check_initial_stress_across_model(ReadContext& ctx, const Scenario& s) {
   if (!s.mechanics || !s.mechanics->initial_stress) return;
-  const InitialStressDefinition& stress = *s.mechanics->initial_stress;
+  if (s.mechanics->initial_stress->layers && !(s.geometry && s.geometry->domain.size() >= 3)) {
+    ctx.error(s.mechanics->initial_stress->vertical_line, "mechanics.initial_stress.vertical",
+              "\"layers\" reads the materials' layers down a vertical through geometry.domain: give a domain, or "
+              "give `gradient` for blocks given one by one");
+    return;
+  }
+  if (const auto x = s.mechanics->initial_stress->column_x) {
+    const geometry::Box domain = geometry::bounding_box(s.geometry->domain);
+    if (!(*x >= domain.lo.x && *x < domain.hi.x))
+      ctx.error(s.mechanics->initial_stress->line, "mechanics.initial_stress.column_x",
+                fmt::format("x = {:g} m misses geometry.domain, which spans x = {:g} to {:g} m", *x, domain.lo.x, domain.hi.x));
+  }
+  InitialStressDefinition stress = *s.mechanics->initial_stress;
   const geometry::Box box = find_model_box(s);
   if (box.empty()) return;
+  if (stress.layers) {
+    // The steepest the layers can make it: the densest material's weight all the way.
+    double density = 0.0;
+    for (const MaterialDefinition& m : s.materials) density = std::max(density, m.density.value_or(0.0));
+    const Point g = s.mechanics->gravity;
+    stress.gradient = {stress.horizontal_ratio * density * std::abs(g.y), density * std::abs(g.y), density * std::abs(g.x)};
+  }
   for (std::size_t i = 0; i < 3; ++i) {
     for (double y : {box.lo.y, box.hi.y}) {
       const double value = stress.stress[i] + stress.gradient[i] * (y - stress.reference_y);
       if (std::abs(stress.stress[i]) > kMaxStress || std::abs(value) <= kMaxStress) continue;  // the first: refused already
-      ctx.error(stress.gradient_line, "mechanics.initial_stress.gradient",
+      ctx.error(stress.layers ? stress.vertical_line : stress.gradient_line,
+                stress.layers ? "mechanics.initial_stress.vertical" : "mechanics.initial_stress.gradient",
                 fmt::format("gives a stress of {:g} Pa at y = {:g} m in the model; each component must lie within "
                             "±{:g} Pa there: 10 GPa is beyond the strength of any rock", value, y, kMaxStress));
       return;
@@ -144,7 +191,8 @@ void read_rollers(ReadContext& ctx, const TableView& m, MechanicsDefinition& mec
 void read_initial_stress(ReadContext& ctx, const TableView& m, MechanicsDefinition& mech) {
   const toml::table* table = m.table("initial_stress");
   if (!table) return;
-  const TableView t(ctx, *table, "mechanics.initial_stress", {"stress", "reference_y", "gradient"});
+  const TableView t(ctx, *table, "mechanics.initial_stress",
+                    {"stress", "reference_y", "gradient", "vertical", "horizontal_ratio", "column_x"});
   InitialStressDefinition stress;
   stress.line = t.line();
   if (auto s = read_tensor(ctx, t, "stress")) {
@@ -155,8 +203,17 @@ void read_initial_stress(ReadContext& ctx, const TableView& m, MechanicsDefiniti
   else if (!t.has("stress")) ctx.error(t.line(), t.key_path("stress"), "required key is missing");
   stress.reference_y = t.number_or("reference_y", 0.0);
   stress.gradient_line = t.line_of_key("gradient");
-  if (auto g = read_tensor(ctx, t, "gradient")) stress.gradient = *g;
-  else if (!t.has("gradient")) ctx.defaults.push_back({t.key_path("gradient"), "[0, 0, 0]"});
+  read_vertical_profile(ctx, t, stress);
+  if (stress.layers) {
+    if (t.has("gradient"))
+      ctx.error(stress.gradient_line, t.key_path("gradient"),
+                "vertical = \"layers\" integrates the gradient from each layer's density: leave `gradient` out, or "
+                "leave `vertical` out to give the gradient yourself");
+  } else if (auto g = read_tensor(ctx, t, "gradient")) {
+    stress.gradient = *g;
+  } else if (!t.has("gradient")) {
+    ctx.defaults.push_back({t.key_path("gradient"), "[0, 0, 0]"});
+  }
   mech.initial_stress = stress;
 }
 

@@ -2,6 +2,7 @@
 // [[mechanics.roller]] and [mechanics.initial_stress]: the boundaries that hold a model and the
 // stress it starts in.
 
+#include "scenario/scenario_queries.hpp"
 #include "scenario/table_view.hpp"
 
 namespace hydrodda::scenario {

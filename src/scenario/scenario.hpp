@@ -98,6 +98,13 @@ struct MaterialDefinition {
   std::optional<double> grain_diameter;   // m (Kozeny–Carman)
   // Biot's α (coupling): the blocks' faces take (1 − α) p, their skeleton the seepage force −α ∇p.
   double biot_coefficient = 1.0;
+  // m²: the matrix's own permeability, fixed (flow-only runs), in place of the porosity law's.
+  std::optional<double> permeability;
+  // Materials by region: a block cut from the domain takes the material whose region holds its
+  // centroid, a fluid element the one whose region holds its centroid; empty: the rest.
+  Polygon region;
+  int line = 0;         // the table's, for messages
+  int region_line = 0;  // the region's
 };
 
 // A joint type: [joint] (the default, name empty) or [joint.NAME], whose keys default to
@@ -169,13 +176,20 @@ struct RollerDefinition {
   int line = 0;
 };
 
-// The in-situ stress, linear in y: stress + gradient (y − reference_y), each (σxx, σyy, τxy).
+// The in-situ stress, linear in y: stress + gradient (y − reference_y), each (σxx, σyy, τxy);
+// or, with vertical = "layers", integrated down through the materials' layers (run/layered_stress.hpp):
+// dσyy/dy = −ρ g_y and dτxy/dy = −ρ g_x with each layer's density, σxx = stress[0] +
+// horizontal_ratio (σyy − stress[1]).
 struct InitialStressDefinition {
   std::array<double, 3> stress{0.0, 0.0, 0.0};    // Pa, compression negative
   double reference_y = 0.0;                        // m
   std::array<double, 3> gradient{0.0, 0.0, 0.0};  // Pa/m
+  bool layers = false;                             // vertical = "layers"
+  double horizontal_ratio = 0.0;                   // K0 (layers)
+  std::optional<double> column_x;                  // m, the vertical the layers are read along (layers)
   int line = 0;
   int gradient_line = 0;                           // the table's when it is left out
+  int vertical_line = 0;
 };
 
 // The most DDA steps a run (or a coupling pass) may take: `steps`, or end_time / time_step.

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "scenario/material_regions.hpp"
 #include "scenario/rollers_and_initial_stress.hpp"
 
 namespace hydrodda::scenario {
@@ -266,9 +267,7 @@ void resolve_materials(ReadContext& ctx, const TableView& root, Scenario& s) {
   const bool needs_material = s.mechanics || (s.flow && !permeability_fixed);
   if (needs_material && s.materials.empty())
     ctx.error(root.line(), "material", "no material is defined: add a [material.NAME] table");
-  if (!s.geometry->domain.empty() && s.materials.size() > 1)
-    ctx.error(root.line_of_key("material"), "material",
-              "blocks cut from a domain take the only material: define exactly one");
+  check_material_regions(ctx, root, s);
 }
 
 void check_material_fields(ReadContext& ctx, const TableView& root, const Scenario& s) {
@@ -283,7 +282,8 @@ void check_material_fields(ReadContext& ctx, const TableView& root, const Scenar
       require(m.young, "young");
       require(m.poisson, "poisson");
     }
-    if (s.flow && coupling::describe(s.flow->permeability_law).needs_grain_diameter && !m.grain_diameter)
+    if (s.flow && coupling::describe(s.flow->permeability_law).needs_grain_diameter && !m.grain_diameter &&
+        !m.permeability)
       ctx.error(line, "material." + m.name + ".grain_diameter",
                 fmt::format("required by flow.permeability_law = \"{}\"", spell(s.flow->permeability_law)));
   }

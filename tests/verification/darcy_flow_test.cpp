@@ -44,6 +44,19 @@ TEST(FlowRun, LayersInParallelGiveTheArithmeticMean) {
   EXPECT_LE(s["flow"]["balance"].get<double>(), 1e-10);
 }
 
+TEST(FlowRun, MaterialsByRegionGiveTheirMatricesInSeries) {
+  // Sandstone 4 m (its permeability fixed at 1e-13 m²) under mudstone 6 m (Kozeny–Carman of
+  // φ = 0.1, d = 1e-5 m: k = d² φ³ / (180 (1 − φ)²)), across the flow from bottom to top, 10 m
+  // wide: Q = 10 m × Δh / Σ (L_i / K_i), 1e-8 relative (round-off: the mesh honours the border).
+  const double k_mud = 1e-10 * 1e-3 / (180.0 * 0.9 * 0.9);
+  const double resistance = (4.0 / 1e-13 + 6.0 / k_mud) / kConductivityPerPermeability;
+  const double exact = 10.0 * 1.0 / resistance;
+  const auto s = run_and_read("flow_two_materials_series");
+  EXPECT_NEAR(s["flow"]["boundaries"]["bottom"].get<double>(), -exact, 1e-8 * exact);
+  EXPECT_NEAR(s["flow"]["boundaries"]["top"].get<double>(), exact, 1e-8 * exact);
+  EXPECT_LE(s["flow"]["balance"].get<double>(), 1e-10);
+}
+
 TEST(FlowRun, LinearHeadIsExact) {
   // h = 3 − x on a 2 m × 1 m rectangle: Q = K × 1 m × 1 m/m, K = 1e-12 m² × ρg/μ.
   const double exact = 1e-12 * kConductivityPerPermeability;
