@@ -62,16 +62,12 @@ class CubicLaw final : public Law {
     if (apertures.size() != k.size() || element_areas.size() != k.size())
       throw std::invalid_argument("cubic law: one aperture and one area per element are needed");
     const double k_matrix = matrix_permeability(model);
-    const bool by_element = !model.element_matrix_porosity.empty() || !model.element_grain_diameter.empty();
+    const bool by_element = model.by_element();
     for (std::size_t e = 0; e < k.size(); ++e)
       k[e] = hydro::cubic_law_permeability(compute_open_fraction(porosity.fracture_area[e], element_areas[e]),
-                                           apertures[e], by_element ? element_matrix_permeability(model, e) : k_matrix,
+                                           apertures[e], by_element ? model.matrix_permeability_of(e) : k_matrix,
                                            model.fracture_cap);
     return k;
-  }
-  double element_matrix_permeability(const PermeabilityModel& model, std::size_t e) const {
-    return hydro::kozeny_carman_permeability(model.matrix_porosity_of(e), model.grain_diameter_of(e),
-                                             std::numeric_limits<double>::infinity());
   }
   double matrix_permeability(const PermeabilityModel& model) const override {
     return hydro::kozeny_carman_permeability(model.matrix_porosity, model.grain_diameter,
@@ -110,6 +106,18 @@ std::vector<int> PermeabilityModel::find_capped_elements(const PorosityField& po
 }
 
 double PermeabilityModel::matrix_permeability() const { return find_law(law).matrix_permeability(*this); }
+
+double PermeabilityModel::matrix_permeability_of(std::size_t e) const {
+  if (!by_element()) return matrix_permeability();
+  // Both laws' k_m is Kozeny–Carman's of the matrix, capped under Kozeny–Carman only.
+  const double bound = law == PermeabilityLaw::kozeny_carman ? cap : std::numeric_limits<double>::infinity();
+  return hydro::kozeny_carman_permeability(matrix_porosity_of(e), grain_diameter_of(e), bound);
+}
+
+void PermeabilityModel::apply_element_matrix_porosity(PorosityField& porosity, std::span<const double> element_areas) const {
+  for (std::size_t e = 0; e < element_matrix_porosity.size() && e < porosity.porosity.size(); ++e)
+    porosity.porosity[e] = equivalent_porosity(porosity.fracture_area[e], element_areas[e], element_matrix_porosity[e]);
+}
 
 bool PermeabilityModel::matrix_capped() const { return find_law(law).matrix_capped(*this); }
 

@@ -32,6 +32,12 @@ struct PermeabilityModel {
   double grain_diameter_of(std::size_t e) const {
     return e < element_grain_diameter.size() ? element_grain_diameter[e] : grain_diameter;
   }
+  bool by_element() const { return !element_matrix_porosity.empty() || !element_grain_diameter.empty(); }
+  // k_m of element e: matrix_permeability() on its own matrix.
+  double matrix_permeability_of(std::size_t e) const;
+  // Each element's equivalent porosity on its own matrix, φ_e = (A_f/A_e)(1 − φ_m,e) + φ_m,e
+  // (a field mapped with matrix_porosity; nothing to do without per-element properties).
+  void apply_element_matrix_porosity(PorosityField& porosity, std::span<const double> element_areas) const;
 
   // k per element. Kozeny–Carman: the paper's eq. 9 on φ_e. Cubic: k_m + (A_f/A_e) w_e²/12
   // with k_m the Kozeny–Carman value of the matrix porosity and w_e the local aperture

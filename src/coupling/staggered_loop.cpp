@@ -118,8 +118,9 @@ hydro::FlowSolution StaggeredLoop::solve_flow(const std::vector<geometry::Polygo
     return darcy_.solve_reusing_factor(permeability_, solution_.head);
   }
   const double k_matrix = settings_.permeability.matrix_permeability();
+  const bool by_element = settings_.permeability.by_element();  // materials by region
   for (std::size_t e = 0; e < permeability_.size(); ++e)
-    if (joints_->zone()[e]) permeability_[e] = k_matrix;
+    if (joints_->zone()[e]) permeability_[e] = by_element ? settings_.permeability.matrix_permeability_of(e) : k_matrix;
   joint_apertures_ = joints_->apertures(blocks, mechanics_.contacts(), mechanics_.penetration_tolerance());
   check_finite(joint_apertures_, "a joint's hydraulic aperture", iteration_);
   std::vector<hydro::PermeabilityTensor>& k = permeability_tensors_;
@@ -171,6 +172,7 @@ PassReport StaggeredLoop::run_pass() {
   // A block moved off the domain boundary leaves a strip that is no fracture (boundary_gaps.hpp).
   exclude_boundary_gaps(porosity_, boundary_gaps_.compute_gap_areas(blocks), porosity_mapper_.element_areas(),
                         settings_.permeability.matrix_porosity);
+  settings_.permeability.apply_element_matrix_porosity(porosity_, porosity_mapper_.element_areas());
   std::vector<double> apertures;
   if (settings_.permeability.reads_apertures())
     apertures = compute_local_apertures(mesh_, porosity_.fracture_area, blocks, settings_.permeability.domain,

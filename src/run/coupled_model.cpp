@@ -49,7 +49,7 @@ CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::option
   // six-block model's first pass needed 26 times its 100 (docs/coupling.md, "Passes that settle").
   settings.settle_steps =
       s.coupling.settle ? static_cast<int>(std::min<long long>(100LL * settings.steps_per_pass, scenario::kMaxSteps)) : 0;
-  settings.permeability = make_permeability_model(s);
+  settings.permeability = make_element_permeability_model(s, mesh_);
   // Left empty where no region, material or joint barrier fixes a permeability: one optional per
   // element is 16 MB at a million triangles.
   if (s.any_joint_barrier() ||

@@ -64,25 +64,6 @@ void check_region_placement(ReadContext& ctx, const Scenario& s) {
   }
 }
 
-// A coupled run's loop maps porosity and permeability with one matrix for every element as yet:
-// materials whose matrices differ are refused there, unless their permeability is fixed.
-void refuse_coupled_matrices_that_differ(ReadContext& ctx, const Scenario& s) {
-  if (!s.mechanics || !s.flow) return;
-  const MaterialDefinition* rest = nullptr;
-  for (const MaterialDefinition& m : s.materials)
-    if (m.region.empty() && !rest) rest = &m;
-  if (!rest) rest = &s.materials.front();
-  for (const MaterialDefinition& m : s.materials) {
-    if (&m == rest || m.permeability) continue;
-    if (m.matrix_porosity == rest->matrix_porosity && m.grain_diameter == rest->grain_diameter) continue;
-    ctx.error(m.region_line ? m.region_line : m.line, "material." + m.name + ".matrix_porosity",
-              fmt::format("a coupled run's fluid elements take one matrix (matrix_porosity, grain_diameter) as yet, "
-                          "material.{}'s; this material's differs: give it the same, or fix its permeability with "
-                          "`permeability` (flow-only runs take each material's matrix)",
-                          rest->name));
-  }
-}
-
 }  // namespace
 
 void check_material_regions(ReadContext& ctx, const TableView& root, const Scenario& s) {
@@ -96,7 +77,6 @@ void check_material_regions(ReadContext& ctx, const TableView& root, const Scena
                           "material without a region the rest; {} have none: give all but one a region",
                           fmt::join(without_region, ", ")));
   check_region_placement(ctx, s);
-  if (has_material_regions(s)) refuse_coupled_matrices_that_differ(ctx, s);
 }
 
 }  // namespace hydrodda::scenario

@@ -8,8 +8,7 @@
 namespace hydrodda::scenario {
 
 // The checks on reading: regions only with a cut domain (blocks given one by one name their
-// material), each meeting the domain, no two overlapping, at most one material without one,
-// and in a coupled run one matrix for the fluid elements unless a material fixes its own.
+// material), each meeting the domain, no two overlapping, at most one material without one.
 void check_material_regions(ReadContext& context, const TableView& root, const Scenario& scenario);
 
 }  // namespace hydrodda::scenario

@@ -1,7 +1,9 @@
 // Materials by region in a coupled run, on scenarios/examples/layered_seal.toml: each block
 // takes the material whose region holds its centroid, and the fluid elements of a material that
 // fixes its `permeability` have it after a pass (exactly: nothing but the value is stored), while
-// the seal's take the porosity law's.
+// the seal's take the porosity law's; a material of its own matrix (porosity, grain size) gives
+// its elements away from the joints the cubic law's k_m = d² φ³ / (180 (1 − φ)²) of it
+// (Kozeny–Carman, uncapped under the cubic law), to round-off (1e-12 relative).
 
 #include <gtest/gtest.h>
 
@@ -39,6 +41,31 @@ TEST(MaterialRegions, ACoupledRunsElementsTakeTheirMaterialsFixedPermeability) {
   EXPECT_GT(reservoir, 100);
   EXPECT_GT(overburden, 100);
   EXPECT_GT(seal, 100);
+}
+
+TEST(MaterialRegions, ACoupledRunsElementsTakeTheirMaterialsOwnMatrix) {
+  auto s = hydrodda::scenario::read_scenario(fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/layered_seal.toml");
+  // The overburden as a matrix of φ = 0.2, d = 1e-5 m instead of a fixed permeability.
+  hydrodda::scenario::MaterialDefinition& silt = s.materials[2];
+  ASSERT_EQ(silt.name, "siltstone");
+  silt.permeability.reset();
+  silt.matrix_porosity = 0.2;
+  silt.grain_diameter = 1e-5;
+  const double k_silt = 1e-10 * 0.008 / (180.0 * 0.64);
+  hydrodda::run::CoupledModel model(s);
+  model.run_pass();
+  const auto& mesh = model.mesh();
+  const std::vector<double>& k = model.loop().permeability();
+  const std::vector<double>& porosity = model.loop().porosity().porosity;
+  int checked = 0;
+  for (int t = 0; t < mesh.triangle_count(); ++t) {
+    const auto c = hydrodda::mesh::triangle_centroid(mesh, t);
+    if (c.y < 33.0 || c.x < 120.0) continue;  // away from the bedding joint at 30 m and the fault
+    EXPECT_NEAR(k[t], k_silt, 1e-12 * k_silt) << "element " << t;
+    EXPECT_NEAR(porosity[t], 0.2, 1e-12) << "element " << t;
+    ++checked;
+  }
+  EXPECT_GT(checked, 20);
 }
 
 }  // namespace
