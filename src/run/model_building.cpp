@@ -196,15 +196,24 @@ coupling::PermeabilityModel make_permeability_model(const Scenario& s) {
 
 std::optional<std::string> describe_capped_matrix(const Scenario& s) {
   if (!s.flow || s.materials.empty()) return std::nullopt;  // a flow-only model of fixed permeability
-  const coupling::PermeabilityModel model = make_permeability_model(s);
-  if (!model.matrix_capped()) return std::nullopt;
-  const double own = hydro::kozeny_carman_permeability(model.matrix_porosity, model.grain_diameter,
-                                                       std::numeric_limits<double>::infinity());
-  return fmt::format(
-      "material.{}: the Kozeny-Carman permeability of its matrix (matrix_porosity = {:g}, grain_diameter = {:g} m) is "
-      "{:.3g} m², above flow.permeability_cap = {:.4g} m², which replaces it in every element of intact rock: raise "
-      "flow.permeability_cap above it, or fix the permeability with a [[flow.region]]",
-      find_rest_material(s).name, model.matrix_porosity, model.grain_diameter, own, model.cap);
+  coupling::PermeabilityModel model = make_permeability_model(s);
+  // Each material whose matrix the law maps (the first capped one named), the rest's first.
+  std::vector<const scenario::MaterialDefinition*> mapped{&find_rest_material(s)};
+  for (const scenario::MaterialDefinition& m : s.materials)
+    if (&m != mapped.front() && !m.permeability) mapped.push_back(&m);
+  for (const scenario::MaterialDefinition* m : mapped) {
+    model.matrix_porosity = m->matrix_porosity;
+    model.grain_diameter = m->grain_diameter.value_or(0.0);
+    if (!model.matrix_capped()) continue;
+    const double own = hydro::kozeny_carman_permeability(model.matrix_porosity, model.grain_diameter,
+                                                         std::numeric_limits<double>::infinity());
+    return fmt::format(
+        "material.{}: the Kozeny-Carman permeability of its matrix (matrix_porosity = {:g}, grain_diameter = {:g} m) is "
+        "{:.3g} m², above flow.permeability_cap = {:.4g} m², which replaces it in every element of intact rock: raise "
+        "flow.permeability_cap above it, or fix the permeability with a [[flow.region]]",
+        m->name, model.matrix_porosity, model.grain_diameter, own, model.cap);
+  }
+  return std::nullopt;
 }
 
 std::vector<double> find_biot_coefficients(const Scenario& s, const std::vector<dda::BlockDefinition>& blocks) {

@@ -58,7 +58,8 @@ std::vector<dda::EdgeTraction> build_tractions(const scenario::Scenario& scenari
 hydro::JointApertureLaw make_joint_aperture_law(const scenario::Scenario& scenario);
 coupling::PermeabilityModel make_permeability_model(const scenario::Scenario& scenario);
 // Under Kozeny–Carman, where flow.permeability_cap lowers the matrix's own permeability: a
-// warning naming the material, its value and the key; none otherwise (the cubic law's matrix
+// warning naming the first material (of those the law maps: the one without a region first) whose
+// matrix it caps, its value and the key; none otherwise (the cubic law's matrix
 // is never capped).
 std::optional<std::string> describe_capped_matrix(const scenario::Scenario& scenario);
 

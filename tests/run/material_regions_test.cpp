@@ -11,6 +11,7 @@
 
 #include "mesh/triangle_mesh.hpp"
 #include "run/coupled_model.hpp"
+#include "run/model_building.hpp"
 #include "scenario/reader.hpp"
 
 namespace {
@@ -66,6 +67,21 @@ TEST(MaterialRegions, ACoupledRunsElementsTakeTheirMaterialsOwnMatrix) {
     ++checked;
   }
   EXPECT_GT(checked, 20);
+}
+
+TEST(MaterialRegions, ARegionsCappedMatrixIsNamedInAWarning) {
+  // Under Kozeny–Carman, a material with a region whose matrix (φ 0.3, d 0.018 m: 9.9e-8 m²) lies
+  // above the cap is named, as the material without a region's would be.
+  auto s = hydrodda::scenario::read_scenario(fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/layered_seal.toml");
+  s.flow->permeability_law = hydrodda::coupling::PermeabilityLaw::kozeny_carman;
+  EXPECT_FALSE(hydrodda::run::describe_capped_matrix(s).has_value());
+  hydrodda::scenario::MaterialDefinition& silt = s.materials[2];
+  silt.permeability.reset();
+  silt.matrix_porosity = 0.3;
+  silt.grain_diameter = 0.018;
+  const auto warning = hydrodda::run::describe_capped_matrix(s);
+  ASSERT_TRUE(warning.has_value());
+  EXPECT_EQ(warning->rfind("material.siltstone: ", 0), 0u) << *warning;
 }
 
 }  // namespace
