@@ -63,6 +63,24 @@ scenario::Scenario scenario_at(const std::string& text, const std::filesystem::p
   return scenario::parse_scenario(scenario::apply_overrides(text, file, overrides), file);
 }
 
+Limit parse_limit(const std::string& text) {
+  const std::size_t equals = text.find('=');
+  if (equals == std::string::npos || equals == 0)
+    throw std::invalid_argument(
+        fmt::format("--limit '{}': give PATH=VALUE, e.g. flow.regions.seal.normalised_conductivity=100", text));
+  const std::string number = text.substr(equals + 1);
+  std::size_t used = 0;
+  double most = 0.0;
+  try {
+    most = std::stod(number, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != number.size())
+    throw std::invalid_argument(fmt::format("--limit '{}': '{}' is not a number", text, number));
+  return Limit{text.substr(0, equals), most};
+}
+
 CoupledStepper::CoupledStepper(std::string text, std::filesystem::path file, std::vector<std::string> keys,
                                double first_load,
                                std::optional<Limit> limit, std::function<bool()> stop_requested)

@@ -35,6 +35,9 @@ struct Limit {
   double most = 0.0;
 };
 
+// "PATH=VALUE" (--limit) as a Limit; std::invalid_argument naming the text otherwise.
+Limit parse_limit(const std::string& text);
+
 class CoupledStepper final : public LoadStepper {
  public:
   // Builds the model of `text` (from `file`) with each of `keys` at `first_load` (they move

@@ -218,23 +218,7 @@ int run_app(int argc, char** argv) {
   }
   if (*sweep_cmd) {
     if (!sweep_output.empty()) sweep.output = sweep_output;
-    std::optional<sweep::SweepRanks> ranks;
-    try {
-      ranks.emplace(interrupt_requested);
-    } catch (const std::runtime_error& e) {
-      spdlog::error("sweep: {}", e.what());
-      return kBadInput;
-    }
-    if (ranks->rank() != 0) return ranks->serve();
-    if (ranks->size() > 1 && sweep.jobs) {
-      spdlog::error("sweep: --jobs does not apply under mpirun, where each of the {} ranks runs one case at a time; "
-                    "set the number of ranks with mpirun -n", ranks->size());
-      ranks->finish(kBadInput);
-      return kBadInput;
-    }
-    const int code = sweep_command(sweep, *ranks);
-    ranks->finish(code);
-    return code;
+    return sweep_on_ranks(sweep);
   }
   return run_command(run);
 }

@@ -18,30 +18,6 @@
 
 namespace hydrodda::cli {
 
-namespace {
-
-// "PATH=VALUE" of --limit.
-std::optional<breach::Limit> parse_limit(const std::optional<std::string>& text) {
-  if (!text) return std::nullopt;
-  const std::size_t equals = text->find('=');
-  if (equals == std::string::npos || equals == 0)
-    throw std::invalid_argument(fmt::format("--limit '{}': give PATH=VALUE, e.g. "
-                                            "flow.regions.seal.normalised_conductivity=100", *text));
-  std::size_t used = 0;
-  const std::string number = text->substr(equals + 1);
-  double most = 0.0;
-  try {
-    most = std::stod(number, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != number.size())
-    throw std::invalid_argument(fmt::format("--limit '{}': '{}' is not a number", *text, number));
-  return breach::Limit{text->substr(0, equals), most};
-}
-
-}  // namespace
-
 int breach_command(const BreachOptions& options) {
   if (!load_scenario(options.scenario)) return kBadInput;
   breach::BreachJob job;
@@ -52,7 +28,7 @@ int breach_command(const BreachOptions& options) {
   job.overwrite = options.overwrite;
   breach::BreachOutcome outcome;
   try {
-    job.limit = parse_limit(options.limit);
+    if (options.limit) job.limit = breach::parse_limit(*options.limit);
     breach::check_settings(job.search);
     run::use_threads(options.threads, /*spare_busy_machine=*/true);
     outcome = breach::run_breach(job, interrupt_requested);

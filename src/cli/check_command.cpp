@@ -15,26 +15,9 @@
 
 namespace hydrodda::cli {
 
-namespace {
-
-// Why a figure cannot be written at `path`, or "" when it can be tried: a folder, a folder that
-// does not exist, an extension that names no figure format.
-std::string find_figure_path_problem(const std::filesystem::path& path) {
-  namespace fs = std::filesystem;
-  const std::string extension = path.extension().string();
-  if (fs::is_directory(path)) return "is a folder: give a file name ending in .png, .svg or .pdf";
-  if (extension != ".png" && extension != ".svg" && extension != ".pdf")
-    return "must end in .png, .svg or .pdf (the figure's format)";
-  const fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
-  if (!fs::is_directory(folder)) return "is in a folder that does not exist: " + folder.string();
-  return "";
-}
-
-}  // namespace
-
 int check_command(const std::filesystem::path& file, const std::optional<std::filesystem::path>& figure) {
   if (figure)
-    if (const std::string problem = find_figure_path_problem(*figure); !problem.empty()) {
+    if (const std::string problem = run::find_figure_path_problem(*figure); !problem.empty()) {
       std::fputs(fmt::format("error: --figure {}: {}\n", figure->string(), problem).c_str(), stderr);
       return kBadInput;
     }

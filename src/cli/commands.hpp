@@ -52,6 +52,9 @@ struct BreachOptions {
 // Validates `scenario`; with `figure`, also draws its preview there (run/preview.hpp).
 int check_command(const std::filesystem::path& scenario, const std::optional<std::filesystem::path>& figure = std::nullopt);
 int run_command(const RunOptions& options);
+// `hydrodda sweep`: on this process, or under mpirun over its ranks (rank 0 runs sweep_command,
+// the others serve it, sweep/ranks.hpp); the exit code.
+int sweep_on_ranks(const SweepOptions& options);
 // Under mpirun, rank 0's sweep (the other ranks serve it, sweep/ranks.hpp).
 int sweep_command(const SweepOptions& options, sweep::SweepRanks& ranks);
 int breach_command(const BreachOptions& options);

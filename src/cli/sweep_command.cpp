@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <algorithm>
 
@@ -16,6 +17,7 @@
 #include "run/threads.hpp"
 #include "sweep/cases.hpp"
 #include "sweep/preparation.hpp"
+#include "sweep/ranks.hpp"
 #include "sweep/sweep.hpp"
 
 namespace hydrodda::cli {
@@ -91,6 +93,26 @@ int sweep_command(const SweepOptions& options, sweep::SweepRanks& ranks) {
   }
   spdlog::info("all {} case(s) converged; results in {}", outcome.cases, outcome.table.string());
   return kSuccess;
+}
+
+int sweep_on_ranks(const SweepOptions& options) {
+  std::optional<sweep::SweepRanks> ranks;
+  try {
+    ranks.emplace(interrupt_requested);
+  } catch (const std::runtime_error& e) {
+    spdlog::error("sweep: {}", e.what());
+    return kBadInput;
+  }
+  if (ranks->rank() != 0) return ranks->serve();
+  if (ranks->size() > 1 && options.jobs) {
+    spdlog::error("sweep: --jobs does not apply under mpirun, where each of the {} ranks runs one case at a time; "
+                  "set the number of ranks with mpirun -n", ranks->size());
+    ranks->finish(kBadInput);
+    return kBadInput;
+  }
+  const int code = sweep_command(options, *ranks);
+  ranks->finish(code);
+  return code;
 }
 
 }  // namespace hydrodda::cli

@@ -134,4 +134,15 @@ void draw_preview(const scenario::Scenario& s, const std::filesystem::path& path
   output::render_preview_figure(path, build_preview(s));
 }
 
+std::string find_figure_path_problem(const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  const std::string extension = path.extension().string();
+  if (fs::is_directory(path)) return "is a folder: give a file name ending in .png, .svg or .pdf";
+  if (extension != ".png" && extension != ".svg" && extension != ".pdf")
+    return "must end in .png, .svg or .pdf (the figure's format)";
+  const fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+  if (!fs::is_directory(folder)) return "is in a folder that does not exist: " + folder.string();
+  return "";
+}
+
 }  // namespace hydrodda::run

@@ -21,6 +21,10 @@ std::string describe_load(const numerics::TimeTable& value, const std::string& u
 // building does.
 output::PreviewFigure build_preview(const scenario::Scenario& scenario);
 
+// Why a figure cannot be written at `path`, or "" when it can be tried: a folder, a folder that
+// does not exist, an extension that names no figure format (.png, .svg, .pdf).
+std::string find_figure_path_problem(const std::filesystem::path& path);
+
 // build_preview drawn into `path` (PNG, SVG or PDF by its extension). Throws std::runtime_error
 // naming the path when it cannot be written.
 void draw_preview(const scenario::Scenario& scenario, const std::filesystem::path& path);
