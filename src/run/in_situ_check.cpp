@@ -31,7 +31,9 @@ std::optional<double> find_top_stress(const scenario::Scenario& s, Point p, doub
     if (!b) continue;
     const Point along = b->segment.to - b->segment.from;
     const double f = std::clamp(dot(p - b->segment.from, along) / dot(along, along), 0.0, 1.0);
-    return t.normal + f * (t.normal_end - t.normal);
+    // The traction the model starts under (time 0 of a table).
+    const double from = t.normal.value(0.0), to = t.normal_end.value(0.0);
+    return from + f * (to - from);
   }
   return 0.0;
 }

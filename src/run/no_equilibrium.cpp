@@ -35,10 +35,24 @@ std::vector<EscapedBlock> locate_escaping_blocks(std::span<const coupling::Escap
 
 namespace {
 
-// A flow boundary's fixed value as the scenario writes it.
+// A load's value: a constant as it is, a table by the highest value it reaches.
+std::string describe_table(const numerics::TimeTable& table, std::size_t column = 0) {
+  return table.is_constant() ? fmt::format("{:.4g}", table.value(0.0, column))
+                             : fmt::format("up to {:.4g} (a table)", table.highest(column));
+}
+
+// A traction's value along its boundary: one value, or "a to b" where it varies.
+std::string describe_along(const numerics::TimeTable& from, const numerics::TimeTable& to) {
+  const std::string a = describe_table(from), b = describe_table(to);
+  return a == b ? a : a + " to " + b;
+}
+
+
+// A flow boundary's fixed value as the scenario writes it; a table by the highest value it reaches.
 std::string describe_boundary(const scenario::FlowBoundaryCondition& b) {
-  return b.kind == hydro::BoundaryKind::head ? fmt::format("\"{}\" head = {:.4g} m", b.name, b.value)
-                                             : fmt::format("\"{}\" pressure = {:.4g} Pa", b.name, b.value);
+  const std::string value = describe_table(b.value);
+  return b.kind == hydro::BoundaryKind::head ? fmt::format("\"{}\" head = {} m", b.name, value)
+                                             : fmt::format("\"{}\" pressure = {} Pa", b.name, value);
 }
 
 // The fluid pressure's drive: the head and pressure boundaries, the highest pressure head
@@ -50,7 +64,7 @@ std::vector<std::string> describe_flow_loads(const scenario::Scenario& s) {
     if (b.kind != hydro::BoundaryKind::flux) fixed.push_back(&b);
   const double rho_g = s.flow->fluid_density * 9.81;
   const auto height = [rho_g](const scenario::FlowBoundaryCondition* b) {
-    return b->kind == hydro::BoundaryKind::head ? b->value : b->value / rho_g;
+    return b->kind == hydro::BoundaryKind::head ? b->value.highest() : b->value.highest() / rho_g;
   };
   std::stable_sort(fixed.begin(), fixed.end(), [&](auto* a, auto* b) { return height(a) > height(b); });
   // The highest (all of them where several share it) drive; the rest are what they drive against.
@@ -69,15 +83,11 @@ std::string describe_driving_load(const scenario::Scenario& s) {
   std::vector<std::string> loads = describe_flow_loads(s);
   if (s.mechanics) {
     for (const scenario::Traction& t : s.mechanics->tractions)
-      loads.push_back(t.normal_end == t.normal && t.shear_end == t.shear
-                          ? fmt::format("mechanics.traction \"{}\" normal = {:.4g} Pa, shear = {:.4g} Pa", t.boundary,
-                                        t.normal, t.shear)
-                          : fmt::format("mechanics.traction \"{}\" normal = {:.4g} to {:.4g} Pa, shear = {:.4g} to "
-                                        "{:.4g} Pa",
-                                        t.boundary, t.normal, t.normal_end, t.shear, t.shear_end));
+      loads.push_back(fmt::format("mechanics.traction \"{}\" normal = {} Pa, shear = {} Pa", t.boundary,
+                                  describe_along(t.normal, t.normal_end), describe_along(t.shear, t.shear_end)));
     for (const scenario::PointLoad& l : s.mechanics->loads)
-      loads.push_back(fmt::format("mechanics.load at ({:.4g}, {:.4g}) force = [{:.4g}, {:.4g}] N/m", l.point.x,
-                                  l.point.y, l.force.x, l.force.y));
+      loads.push_back(fmt::format("mechanics.load at ({:.4g}, {:.4g}) force = [{}, {}] N/m", l.point.x, l.point.y,
+                                  describe_table(l.force, 0), describe_table(l.force, 1)));
   }
   if (loads.empty()) return "gravity alone";
   std::string text;

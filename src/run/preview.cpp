@@ -111,7 +111,7 @@ output::PreviewFigure build_preview(const scenario::Scenario& s) {
   if (s.geometry && !s.geometry->domain.empty()) {
     const ModelGeometry model = build_model_geometry(s);  // check_model has logged what the cut says
     figure.domain = s.geometry->domain;
-    blocks = blocks_of(model);
+    blocks = blocks_of(s, model);
     for (const geometry::FractureFace& face : model.network.faces)
       figure.traces.push_back({face.segment.from, face.segment.to, face.fracture, model.traces.at(face.fracture).joint_type});
     figure.subtitle = "preview: " + model.summary;

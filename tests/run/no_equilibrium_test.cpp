@@ -41,7 +41,8 @@ TEST(NoEquilibrium, TheLoadIsNamedAsTheScenarioSpellsIt) {
   // Mechanical loads after the fluid's.
   scenario::MechanicsDefinition m;
   m.tractions = {{"top", -1e7, -1e7, 0.0, 0.0}, {"side", -1e6, -2e6, 0.0, 1e5}};
-  m.loads = {{Point{1.5, 1.5}, Point{8648.7, 0.0}}};
+  const std::vector<double> force{8648.7, 0.0};
+  m.loads = {{Point{1.5, 1.5}, hydrodda::numerics::TimeTable::constant(force)}};
   scenario::Scenario loaded;
   loaded.mechanics = m;
   EXPECT_EQ(run::describe_driving_load(loaded),
