@@ -5,6 +5,7 @@
 #include <fstream>
 #include <string>
 
+#include "parse_errors.hpp"
 #include "scenario/diagnostics.hpp"
 #include "scenario/reader.hpp"
 
@@ -43,14 +44,7 @@ permeability = 1.0e-15
 size = 0.1
 )";
 
-std::vector<Diagnostic> errors_of(const std::string& text) {
-  try {
-    parse_scenario(text, "case.toml");
-  } catch (const ScenarioError& e) {
-    return e.diagnostics();
-  }
-  return {};
-}
+using test_support::errors_of;
 
 bool has_error(const std::vector<Diagnostic>& errors, const std::string& text) {
   for (const Diagnostic& d : errors)

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "parse_errors.hpp"
 #include "scenario/diagnostics.hpp"
 
 namespace hydrodda::scenario {
@@ -25,14 +26,7 @@ poisson = 0.25
 [mechanics]
 )";
 
-std::vector<Diagnostic> errors_of(const std::string& text) {
-  try {
-    parse_scenario(text, "case.toml");
-  } catch (const ScenarioError& e) {
-    return e.diagnostics();
-  }
-  return {};
-}
+using test_support::errors_of;
 
 TEST(ScenarioReader, ReadsEveryKeyOfTheContract) {
   const Scenario s = read_scenario(kSource / "scenarios/examples/contract.toml");

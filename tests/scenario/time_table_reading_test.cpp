@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "parse_errors.hpp"
 #include "scenario/diagnostics.hpp"
 #include "scenario/load_times.hpp"
 #include "scenario/reader.hpp"
@@ -22,14 +23,7 @@ grain_diameter = 1.0e-5
 analysis = "dynamic"
 )";
 
-std::vector<Diagnostic> errors_of(const std::string& text) {
-  try {
-    parse_scenario(text, "case.toml");
-  } catch (const ScenarioError& e) {
-    return e.diagnostics();
-  }
-  return {};
-}
+using test_support::errors_of;
 
 TEST(TimeTableReading, ReadsTablesForTractionsPointLoadsAndFlowBoundaries) {
   const Scenario s = parse_scenario(kHead + R"([[mechanics.traction]]
