@@ -60,7 +60,7 @@ BreachFiles::BreachFiles(const output::RunFolder& folder, const scenario::Scenar
 
 void BreachFiles::write_scenario(const std::string& text) const { folder_.write("scenario.toml", text); }
 
-HeldState BreachFiles::measure(const SearchStep& step, const CoupledStepper& stepper,
+HeldState BreachFiles::measure(const SearchStep& step,
                                const output::RunSummary& summary) const {
   HeldState h;
   h.load = step.load;
@@ -81,7 +81,6 @@ HeldState BreachFiles::measure(const SearchStep& step, const CoupledStepper& ste
     const std::string text = output::format_summary(summary);
     if (const auto v = output::summary_values(text, {limit_->path})[0]) h.limit_value = std::stod(*v);
   }
-  (void)stepper;
   return h;
 }
 
@@ -103,7 +102,7 @@ void BreachFiles::add_step(const SearchStep& step, const CoupledStepper& stepper
     summary.message = step.result.message;
     folder_.subfolder("steps");
     folder_.write(fmt::format("steps/step_{:03d}.json", step.index), output::format_summary(summary));
-    held = measure(step, stepper, summary);
+    held = measure(step, summary);
     held_.push_back(*held);
     const run::CoupledModel& model = stepper.model();
     const auto& loop = model.loop();

@@ -40,7 +40,7 @@ class BreachFiles {
   void finish(const SearchResult& result, const std::string& verdict, const SearchSettings& settings);
 
  private:
-  HeldState measure(const SearchStep& step, const CoupledStepper& stepper, const output::RunSummary& summary) const;
+  HeldState measure(const SearchStep& step, const output::RunSummary& summary) const;
   std::vector<std::string> row_of(const SearchStep& step, const std::optional<HeldState>& held) const;
   void draw_curves(const std::string& format) const;
 

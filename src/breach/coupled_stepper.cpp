@@ -160,13 +160,13 @@ StepResult CoupledStepper::try_load(double load) {
 StepStatus CoupledStepper::judge_converged_state(std::string& message) const {
   if (!limit_) return StepStatus::held;
   const std::optional<std::string> value = output::summary_values(output::format_summary(summary()), {limit_->path})[0];
+  if (!value) throw std::invalid_argument(fmt::format("--limit {}: summary.json has no value there", limit_->path));
   double number = 0.0;
   try {
-    number = value ? std::stod(*value) : 0.0;
+    number = std::stod(*value);
   } catch (const std::exception&) {
     throw std::invalid_argument(fmt::format("--limit {}: summary.json holds '{}' there, not a number", limit_->path, *value));
   }
-  if (!value) throw std::invalid_argument(fmt::format("--limit {}: summary.json has no value there", limit_->path));
   if (number <= limit_->most) return StepStatus::held;
   message = fmt::format("{} = {:.4g} is above the limit {:.4g}", limit_->path, number, limit_->most);
   return StepStatus::beyond_limit;
