@@ -820,7 +820,11 @@ StepReport System::step() {
     if (settled && largest <= allowed_displacement_) {
       report.max_displacement = largest;
       contact_search_.add_motion(largest);
+      std::vector<Point> translation(blocks_.size());
+      for (std::size_t bi = 0; bi < blocks_.size(); ++bi)
+        if (blocks_[bi].dof >= 0) translation[bi] = {d[6 * blocks_[bi].dof], d[6 * blocks_[bi].dof + 1]};
       commit_step(d, dt_);
+      measure_unbalanced_force(translation, dt_, report);
       break;
     }
     const std::string why =
@@ -927,7 +931,8 @@ StepReport System::run_until(double end_time) {
 bool System::ran_at_full_time_step(const StepReport& step) const { return step.time_step >= settings_.time_step; }
 
 bool System::is_at_rest(const StepReport& step) const {
-  return ran_at_full_time_step(step) && step.max_displacement <= settings_.static_tolerance * model_size_;
+  return ran_at_full_time_step(step) && step.max_displacement <= settings_.static_tolerance * model_size_ &&
+         (settings_.unbalanced_force_tolerance <= 0.0 || step.unbalanced_force_ratio <= settings_.unbalanced_force_tolerance);
 }
 
 StepReport System::run_to_equilibrium(int max_steps) {

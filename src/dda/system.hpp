@@ -39,6 +39,11 @@ struct StepReport {
   int contacts = 0;           // closed contacts at the end of the step
   double max_displacement = 0.0;  // largest vertex displacement in the step
   double max_penetration = 0.0;   // deepest closed contact at the end of the step
+  // The step's unbalanced force (System::measure_unbalanced_force): the largest over the
+  // blocks of the step's inertial force 2 m |d| / Δt² (d its centroid's displacement) over
+  // the magnitudes of the forces on the block; the block it was largest on (−1: none).
+  double unbalanced_force_ratio = 0.0;
+  int unbalanced_block = -1;
 };
 
 // Persistent contact state (Shi's contact transfer): carried between steps by key.
@@ -89,8 +94,10 @@ class System {
   // makes it again. Nothing a step or a query reads between steps is lost.
   void release_step_buffers();
   // Whether a step left the blocks at rest: it ran at the full time step (one cut short moves
-  // little for being short) and moved no vertex by more than settings.static_tolerance × model
-  // size.
+  // little for being short), moved no vertex by more than settings.static_tolerance × model
+  // size, and left no block an unbalanced force above settings.unbalanced_force_tolerance of
+  // the forces on it (a body that nothing holds moves by F Δt²/2M a static step, which the
+  // displacement test alone passes when Δt is short).
   bool is_at_rest(const StepReport& step) const;
   // Whether a step ran at settings.time_step, not cut short (by an open–close iteration that
   // did not settle, or a displacement past the allowed one).
@@ -142,6 +149,10 @@ class System {
   // εx, εy, γxy accumulated since the start.
   std::array<double, 3> strain(int block) const;
   std::vector<ContactInfo> contacts() const;
+  // Per block, the magnitudes of the forces on it (N/m): its weight, each applied load's
+  // resultant (vertex forces, tractions, point loads) and its closed contacts' normal forces
+  // at the last step's end: what an unbalanced force is measured against.
+  std::vector<double> force_magnitudes() const;
   std::vector<Point> measured_positions() const;
   // Each prescribed displacement's point: where the ramp wants it now, and where it is, both
   // as displacements from its start.
@@ -243,6 +254,8 @@ class System {
   // The largest distance a vertex moves under the block unknowns `change` (first order).
   double largest_vertex_motion(const Eigen::VectorXd& change) const;
   void commit_step(const Eigen::VectorXd& d, double dt);
+  // After commit_step: the step's unbalanced force into `report` (unbalanced_force.cpp).
+  void measure_unbalanced_force(const std::vector<Point>& step_translation, double dt, StepReport& report) const;
 
   std::vector<Block> blocks_;
   std::vector<Material> materials_;

@@ -66,3 +66,29 @@ TEST(Breach, BracketsTheJackingHeadOfABlockOnAPressurisedJoint) {
   EXPECT_TRUE(fs::exists(out / "last_held.json"));
   fs::remove_all(out);
 }
+
+// A seal that lifts off its base (scenarios/verification/seal_lift_off.toml): four blocks of a
+// 4 m × 2 m seal (ρ_r = 2400 kg/m³) on a reservoir slab between rollers, the reservoir's head H
+// raised at the base, p = ρ_w g (h − y), none at the top. The seal lifts off once the pressure
+// at its base (y = 1 m) passes its total vertical stress there: ρ_w g (H* − 1) = ρ_r g × 2 m,
+// H* = 5.8 m. Above it the seal rises with the load unchanged (its open base gap carries the
+// reservoir's pressure) and no state holds: at the 0.01 s step it moves 7.5 mm a pass at 5.9 m,
+// never at rest, and its loop never converges. The search brackets H* within 3% (its
+// tolerance 1%).
+TEST(Breach, BracketsTheLiftOffHeadOfASealOverItsReservoir) {
+  constexpr double kLiftOffHead = 1.0 + 2400.0 * 2.0 / 1000.0;  // m
+  const fs::path scenario = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/verification/seal_lift_off.toml";
+  const fs::path out = fresh_dir("hydrodda-breach-lift-off");
+  const auto result = run_program("breach " + scenario.string() +
+                                  " --vary 'flow.boundary[0].head' --from 5.0 --to 6.5 --steps 3 --tolerance 0.01"
+                                  " --threads 1 -o " + out.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  std::ifstream in(out / "breach.json");
+  const nlohmann::json breach = nlohmann::json::parse(in);
+  const double held = breach["held"].get<double>(), broken = breach["broken"].get<double>();
+  EXPECT_GE(held, 0.97 * kLiftOffHead);
+  EXPECT_LE(broken, 1.03 * kLiftOffHead);
+  EXPECT_LT(held, broken);
+  EXPECT_NE(breach["broken_status"].get<std::string>(), "held");
+  fs::remove_all(out);
+}
