@@ -106,7 +106,7 @@ CoupledStepper::CoupledStepper(std::string text, std::filesystem::path file, std
   kept_ = model_->export_state();
   meter_ = run::make_fracture_meter(model_->scenario());
   if (meter_) flow_zones_ = meter_->flow_zones(model_->mesh());
-  joint_law_ = run::make_joint_aperture_law(model_->scenario());
+  if (meter_) joint_laws_ = run::make_joint_aperture_laws(model_->scenario(), meter_->layout().traces);
 }
 
 void CoupledStepper::set_load(double load) {
@@ -195,7 +195,7 @@ std::optional<fractures::FractureState> CoupledStepper::measure_fractures() cons
   if (!meter_) return std::nullopt;
   const dda::System& blocks = model_->mechanics();
   fractures::FractureState state =
-      meter_->measure(model_->block_polygons(), blocks.penetration_tolerance(), blocks.contacts(), joint_law_);
+      meter_->measure(model_->block_polygons(), blocks.penetration_tolerance(), blocks.contacts(), joint_laws_);
   if (model_->loop().has_flow()) meter_->add_flow(state, *flow_zones_, model_->mesh(), model_->loop().flow());
   return state;
 }

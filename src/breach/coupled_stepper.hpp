@@ -12,7 +12,7 @@
 
 #include "breach/load_search.hpp"
 #include "fractures/fracture_results.hpp"
-#include "hydro/permeability_law.hpp"
+#include "coupling/joint_aperture_laws.hpp"
 #include "output/summary.hpp"
 #include "run/coupled_model.hpp"
 #include "scenario/scenario.hpp"
@@ -76,7 +76,7 @@ class CoupledStepper final : public LoadStepper {
   // What summary() measures the fractures with (none for listed blocks), found once.
   std::optional<fractures::FractureMeter> meter_;
   std::optional<fractures::FractureMeter::FlowZones> flow_zones_;
-  hydro::JointApertureLaw joint_law_;
+  coupling::JointApertureLaws joint_laws_;  // by fracture id, the meter's
 };
 
 }  // namespace hydrodda::breach

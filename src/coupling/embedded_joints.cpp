@@ -71,8 +71,8 @@ std::map<FaceKey, double> contact_forces_by_face(std::span<const dda::ContactInf
 }
 
 EmbeddedJoints::EmbeddedJoints(const mesh::TriangleMesh& mesh, geometry::BlockNetwork network,
-                               hydro::JointApertureLaw law)
-    : network_(std::move(network)), law_(law) {
+                               JointApertureLaws laws)
+    : network_(std::move(network)), laws_(std::move(laws)) {
   const int elements = mesh.triangle_count();
   std::vector<geometry::Box> boxes;
   for (int t = 0; t < elements; ++t) {
@@ -99,6 +99,8 @@ EmbeddedJoints::EmbeddedJoints(const mesh::TriangleMesh& mesh, geometry::BlockNe
                             *gauge});
     });
   }
+  for (const JointCrossing& c : crossings_)
+    zero_stress_aperture_.push_back(laws_.of_fracture(c.face.fracture).at_zero_stress());
   // The zone: the crossed elements and every element sharing a node with one.
   std::vector<char> near_node(mesh.nodes.size(), 0);
   for (const JointCrossing& c : crossings_)
@@ -128,14 +130,15 @@ std::vector<double> EmbeddedJoints::apertures(std::span<const geometry::Polygon>
   const std::map<FaceKey, double> forces = contact_forces_by_face(contacts, network_.edge_fractures);
   std::vector<double> aperture(crossings_.size());
   for (std::size_t c = 0; c < crossings_.size(); ++c) {
+    const hydro::JointApertureLaw& law = laws_.of_fracture(crossings_[c].face.fracture);
     if (opening[c] > open_threshold) {
-      aperture[c] = law_.open(opening[c]);
+      aperture[c] = law.open(opening[c]);
       continue;
     }
     // σn: the face's compressive contact forces over its closed length.
     const auto force = forces.find(crossings_[c].face);
     const double stress = force == forces.end() ? 0.0 : force->second / closed_length.at(crossings_[c].face);
-    aperture[c] = law_.closed(stress);
+    aperture[c] = law.closed(stress);
   }
   return aperture;
 }

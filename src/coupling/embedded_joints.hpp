@@ -3,7 +3,7 @@
 // takes the joint's transmissivity a³/12 along the face over the length of it inside the
 // element (hydro::embedded_fracture_permeability), so a joint carries a³/12 × ∇h·t whatever
 // the elements' size, closed or open. The hydraulic aperture a at each crossing follows the
-// joint's law (hydro::JointApertureLaw): where the gauge across the face there is open,
+// law of its fracture's joint type (JointApertureLaws, hydro::JointApertureLaw): where the gauge across the face there is open,
 // a(0) + opening; where it is closed, the Barton–Bandis closure under the face's effective
 // normal stress σn, the compressive contact forces on the face over its closed length.
 //
@@ -25,6 +25,7 @@
 #include "geometry/face_gauge.hpp"
 #include "hydro/fluid.hpp"
 #include "hydro/permeability_law.hpp"
+#include "coupling/joint_aperture_laws.hpp"
 #include "mesh/triangle_mesh.hpp"
 
 namespace hydrodda::coupling {
@@ -53,12 +54,16 @@ struct JointCrossing {
 
 class EmbeddedJoints {
  public:
-  // Keeps a copy of the network; finds each face's pieces in the mesh's elements.
-  EmbeddedJoints(const mesh::TriangleMesh& mesh, geometry::BlockNetwork network, hydro::JointApertureLaw law);
+  // Keeps a copy of the network; finds each face's pieces in the mesh's elements. Each face
+  // takes the law of its fracture (`laws`, by the network's fracture ids).
+  EmbeddedJoints(const mesh::TriangleMesh& mesh, geometry::BlockNetwork network, JointApertureLaws laws);
+  // Every joint of one law.
+  EmbeddedJoints(const mesh::TriangleMesh& mesh, geometry::BlockNetwork network, hydro::JointApertureLaw law)
+      : EmbeddedJoints(mesh, std::move(network), JointApertureLaws(law)) {}
 
   // The hydraulic aperture at each crossing with the blocks at `blocks` (the network's block
-  // and vertex order) and the DDA's contacts: a gauge is open where its opening exceeds
-  // `open_threshold` (m). Throws std::invalid_argument when the blocks do not fit.
+  // and vertex order) and the DDA's contacts, by the law of the crossing's fracture: a gauge
+  // is open where its opening exceeds `open_threshold` (m). Throws std::invalid_argument when the blocks do not fit.
   std::vector<double> apertures(std::span<const geometry::Polygon> blocks, std::span<const dda::ContactInfo> contacts,
                                 double open_threshold) const;
 
@@ -70,13 +75,16 @@ class EmbeddedJoints {
   // crosses and those sharing a node with them).
   const std::vector<char>& zone() const { return zone_; }
   const std::vector<JointCrossing>& crossings() const { return crossings_; }
-  const hydro::JointApertureLaw& law() const { return law_; }
+  const JointApertureLaws& laws() const { return laws_; }
+  // Per crossing: its law's aperture at zero stress a_r + V_m, above which it is open.
+  const std::vector<double>& zero_stress_apertures() const { return zero_stress_aperture_; }
 
  private:
   geometry::BlockNetwork network_;
-  hydro::JointApertureLaw law_;
+  JointApertureLaws laws_;
   std::vector<double> element_area_;
   std::vector<JointCrossing> crossings_;
+  std::vector<double> zero_stress_aperture_;  // per crossing
   std::vector<char> zone_;
 };
 

@@ -32,6 +32,14 @@ int count_switched(std::span<const double> before, std::span<const double> after
   return switched;
 }
 
+int count_switched(std::span<const double> before, std::span<const double> after, std::span<const double> open_above) {
+  if (before.size() != after.size() || after.size() != open_above.size()) return 0;
+  int switched = 0;
+  for (std::size_t c = 0; c < before.size(); ++c)
+    switched += (before[c] > open_above[c]) != (after[c] > open_above[c]) ? 1 : 0;
+  return switched;
+}
+
 double relative_load_change(const std::vector<std::vector<geometry::Point>>& current,
                             const std::vector<std::vector<geometry::Point>>& previous) {
   if (current.size() != previous.size()) return 1.0;

@@ -20,6 +20,8 @@ int count_contact_state_changes(std::span<const dda::ContactInfo> before, std::s
 // Positions where one aperture is above `open_above` and the other not (the joint crossings
 // open at one end of a pass and closed at the other); 0 when the sizes differ (no pass before).
 int count_switched(std::span<const double> before, std::span<const double> after, double open_above);
+// The same with each position's own threshold (joint crossings of types with their own laws).
+int count_switched(std::span<const double> before, std::span<const double> after, std::span<const double> open_above);
 
 // max over blocks and vertices |f − f'| / max |f| (0 when f is zero everywhere and unchanged,
 // 1 when f' is empty or of other sizes: no pass before).

@@ -89,7 +89,7 @@ StaggeredLoop::StaggeredLoop(const mesh::TriangleMesh& mesh, hydro::DarcyProblem
   if (settings_.ramp_passes < 1) throw std::invalid_argument("coupling: ramp_passes must be at least 1");
   relaxation_ = settings_.relaxation;
   if (settings_.joints)
-    joints_.emplace(mesh, std::move(settings_.joints->network), settings_.joints->law);
+    joints_.emplace(mesh, std::move(settings_.joints->network), std::move(settings_.joints->laws));
   for (double alpha : biot) {
     if (!(alpha >= 0.0 && alpha <= 1.0)) throw std::invalid_argument("coupling: a Biot coefficient must lie in [0, 1]");
     seepage_ = seepage_ || alpha > 0.0;
@@ -237,7 +237,7 @@ PassReport StaggeredLoop::run_pass() {
     report.joint_crossings_switched =
         count_switched(joint_apertures_,
                        joints_->apertures(current_blocks(), mechanics_.contacts(), mechanics_.penetration_tolerance()),
-                       joints_->law().at_zero_stress());
+                       joints_->zero_stress_apertures());
   measure_convergence(report, unrelaxed_head_change);
   finish_pass(report);
   return report;

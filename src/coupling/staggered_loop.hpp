@@ -62,10 +62,11 @@ struct LoopSettings {
   // Per block: Biot's coefficient α in [0, 1] (seepage_forces.hpp). Empty: 1 for every block.
   std::vector<double> biot_coefficients;
   // Joints as embedded fractures (embedded_joints.hpp), when the scenario gives their hydraulic
-  // aperture: the network the blocks were cut as (the DDA system's block order) and the law.
+  // aperture: the network the blocks were cut as (the DDA system's block order) and each
+  // fracture's law (its joint type's).
   struct Joints {
     geometry::BlockNetwork network;
-    hydro::JointApertureLaw law;
+    JointApertureLaws laws;
   };
   std::optional<Joints> joints;
 };

@@ -50,7 +50,7 @@ FractureMeter::FractureMeter(FractureLayout layout, double node_spacing) : layou
 
 FractureState FractureMeter::measure(std::span<const geometry::Polygon> blocks, double open_threshold,
                                      std::span<const dda::ContactInfo> contacts,
-                                     const hydro::JointApertureLaw& law) const {
+                                     const coupling::JointApertureLaws& laws) const {
   const geometry::BlockNetwork& network = layout_.network;
   if (blocks.size() != network.blocks.size())
     throw std::invalid_argument(fmt::format("fracture results: {} blocks given, the network has {}", blocks.size(),
@@ -124,7 +124,8 @@ FractureState FractureMeter::measure(std::span<const geometry::Polygon> blocks, 
       }
     }
   }
-  // The hydraulic aperture of each piece (hydro::JointApertureLaw): open, a(0) + its opening;
+  // The hydraulic aperture of each piece by its fracture's law (its joint type's
+  // hydro::JointApertureLaw): open, a(0) + its opening;
   // closed, the closure under its face's effective normal stress, the compressive contact
   // forces on the face over the face's closed length.
   const std::map<coupling::FaceKey, double> forces = coupling::contact_forces_by_face(contacts, network.edge_fractures);
@@ -133,6 +134,7 @@ FractureState FractureMeter::measure(std::span<const geometry::Polygon> blocks, 
     if (key.fracture < static_cast<int>(fracture_force.size())) fracture_force[key.fracture] += force;
   for (std::size_t p = 0; p < state.pieces.size(); ++p) {
     FracturePiece& piece = state.pieces[p];
+    const hydro::JointApertureLaw& law = laws.of_fracture(piece.fracture);
     if (piece.open) {
       piece.hydraulic_aperture = law.open(piece.aperture);
     } else {
@@ -217,15 +219,15 @@ void FractureMeter::add_flow(FractureState& state, const FlowZones& zones, const
 
 namespace {
 
-// The sharp wedge tips: those whose joint's hydraulic aperture at zero opening (`law`) is less
-// than the wedge's opening at s*.
+// The sharp wedge tips: those whose joint's hydraulic aperture at zero opening (its fracture's
+// law) is less than the wedge's opening at s*.
 std::vector<WedgeTip> find_sharp_wedge_tips(const FractureState& state, double matrix_permeability,
-                                            const hydro::JointApertureLaw& law) {
+                                            const coupling::JointApertureLaws& laws) {
   std::vector<WedgeTip> tips;
   for (const FractureResult& r : state.fractures) {
     if (!(r.tip_opening_angle > 0.0)) continue;
     const double length = hydro::cubic_law_tip_length(r.tip_opening_angle, matrix_permeability);
-    if (law.at_zero_stress() >= r.tip_opening_angle * length) continue;
+    if (laws.of_fracture(r.id).at_zero_stress() >= r.tip_opening_angle * length) continue;
     tips.push_back(WedgeTip{r.id, r.tip, r.tip_opening_angle, length});
   }
   return tips;
@@ -234,9 +236,9 @@ std::vector<WedgeTip> find_sharp_wedge_tips(const FractureState& state, double m
 }  // namespace
 
 std::optional<WedgeTip> find_sharpest_wedge_tip(const FractureState& state, double matrix_permeability,
-                                                const hydro::JointApertureLaw& law) {
+                                                const coupling::JointApertureLaws& laws) {
   std::optional<WedgeTip> sharpest;
-  for (const WedgeTip& tip : find_sharp_wedge_tips(state, matrix_permeability, law))
+  for (const WedgeTip& tip : find_sharp_wedge_tips(state, matrix_permeability, laws))
     if (!sharpest || tip.length < sharpest->length) sharpest = tip;
   return sharpest;
 }
@@ -257,11 +259,12 @@ std::optional<WedgeTipElement> find_wedge_tip_element(const WedgeTip& tip, const
 }
 
 std::vector<WedgeTipElement> find_wedge_tip_elements(const FractureState& state, double matrix_permeability,
-                                                     const hydro::JointApertureLaw& law, const mesh::TriangleMesh& mesh,
+                                                     const coupling::JointApertureLaws& laws,
+                                                     const mesh::TriangleMesh& mesh,
                                                      const mesh::PointLocator& locator,
                                                      std::span<const geometry::FractureTrace> traces) {
   std::vector<WedgeTipElement> elements;
-  for (const WedgeTip& tip : find_sharp_wedge_tips(state, matrix_permeability, law))
+  for (const WedgeTip& tip : find_sharp_wedge_tips(state, matrix_permeability, laws))
     if (const std::optional<WedgeTipElement> element = find_wedge_tip_element(tip, mesh, locator, traces))
       elements.push_back(*element);
   std::stable_sort(elements.begin(), elements.end(), [](const WedgeTipElement& a, const WedgeTipElement& b) {

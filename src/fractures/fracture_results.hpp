@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "coupling/joint_aperture_laws.hpp"
 #include "geometry/block_network.hpp"
 #include "geometry/face_gauge.hpp"
 #include "dda/system.hpp"
@@ -55,7 +56,7 @@ struct FractureResult {
   double mean_aperture = 0.0;   // m, mechanical: the opening where open, 0 where closed; mean over the length
   double max_aperture = 0.0;    // m, the largest opening where open
   double max_shear = 0.0;       // m, largest |relative displacement along the face|
-  double hydraulic_aperture = 0.0;  // m, mean over the length (hydro::JointApertureLaw)
+  double hydraulic_aperture = 0.0;  // m, mean over the length (its joint type's hydro::JointApertureLaw)
   // Pa, its mean effective normal traction: the compressive contact forces on all its faces
   // over its whole length (force / length; 0 where nothing presses on it).
   double normal_stress = 0.0;
@@ -90,12 +91,12 @@ class FractureMeter {
 
   // The fractures with the blocks at `blocks` (current vertices, in the network's block
   // order, each with its initial vertex count). A point of a face is open where its opening
-  // exceeds `open_threshold` (m). The hydraulic apertures follow `law` with the effective normal
-  // stress of the DDA's `contacts` (none: unloaded). Throws std::invalid_argument when the
-  // blocks do not fit.
+  // exceeds `open_threshold` (m). The hydraulic apertures follow each fracture's law (`laws`,
+  // by fracture id; one law for all converts) with the effective normal stress of the DDA's
+  // `contacts` (none: unloaded). Throws std::invalid_argument when the blocks do not fit.
   FractureState measure(std::span<const geometry::Polygon> blocks, double open_threshold,
                         std::span<const dda::ContactInfo> contacts = {},
-                        const hydro::JointApertureLaw& law = {}) const;
+                        const coupling::JointApertureLaws& laws = {}) const;
 
   // The flow along each fracture, from the fluid field on `mesh`:
   //   Q_f = (1/L_f) Σ_{e ∈ Z_f} (q_e · t_f) A_e,
@@ -135,8 +136,8 @@ class FractureMeter {
 // Under the cubic law, the sharpest wedge tip: of the fractures whose opening grows from a tip
 // (FractureResult::tip_opening_angle), the one with the shortest tip length s*
 // (hydro::cubic_law_tip_length with k_m). A joint whose hydraulic aperture at zero opening
-// (`law`) is already the wedge's opening at s* has no sharp tip and is left out. None without
-// a sharp tip.
+// (its fracture's law in `laws`) is already the wedge's opening at s* has no sharp tip and is
+// left out. None without a sharp tip.
 struct WedgeTip {
   int fracture = 0;
   geometry::Point point;
@@ -144,7 +145,7 @@ struct WedgeTip {
   double length = 0.0;         // s*, m
 };
 std::optional<WedgeTip> find_sharpest_wedge_tip(const FractureState& state, double matrix_permeability,
-                                                const hydro::JointApertureLaw& law);
+                                                const coupling::JointApertureLaws& laws);
 
 // The fluid element a sharp wedge tip lies in: the longest edge of the triangle that holds the
 // tip's point, and how far the point lies from its fracture's trace as given. A generated mesh
@@ -163,7 +164,8 @@ std::optional<WedgeTipElement> find_wedge_tip_element(const WedgeTip& tip, const
 // The elements of the sharp tips (those find_sharpest_wedge_tip weighs) inside the mesh, the
 // least resolved first: by element size over s*, largest first.
 std::vector<WedgeTipElement> find_wedge_tip_elements(const FractureState& state, double matrix_permeability,
-                                                     const hydro::JointApertureLaw& law, const mesh::TriangleMesh& mesh,
+                                                     const coupling::JointApertureLaws& laws,
+                                                     const mesh::TriangleMesh& mesh,
                                                      const mesh::PointLocator& locator,
                                                      std::span<const geometry::FractureTrace> traces);
 

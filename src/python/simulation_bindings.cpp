@@ -208,9 +208,9 @@ class Simulation {
     }
     std::vector<geometry::Polygon> polygons;
     for (int b = 0; b < blocks.block_count(); ++b) polygons.push_back(blocks.polygon(b));
-    if (!joint_law_) joint_law_ = run::make_joint_aperture_law(scenario_.definition);
+    if (!joint_laws_) joint_laws_ = run::make_joint_aperture_laws(scenario_.definition, meter_->layout().traces);
     fractures::FractureState state =
-        meter_->measure(polygons, blocks.penetration_tolerance(), blocks.contacts(), *joint_law_);
+        meter_->measure(polygons, blocks.penetration_tolerance(), blocks.contacts(), *joint_laws_);
     if (const auto* coupled = std::get_if<Coupled>(&model_); coupled && (*coupled)->loop().has_flow()) {
       if (!flow_zones_) flow_zones_ = meter_->flow_zones((*coupled)->mesh());
       meter_->add_flow(state, *flow_zones_, (*coupled)->mesh(), (*coupled)->loop().flow());
@@ -307,7 +307,7 @@ class Simulation {
   bool converged_ = false;  // coupled: the last pass met the tolerance
   std::optional<fractures::FractureMeter> meter_;                  // made on the first call of fractures
   std::optional<fractures::FractureMeter::FlowZones> flow_zones_;  // likewise, for a coupled model
-  std::optional<hydro::JointApertureLaw> joint_law_;         // likewise
+  std::optional<coupling::JointApertureLaws> joint_laws_;    // likewise
 };
 
 }  // namespace

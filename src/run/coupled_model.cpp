@@ -58,8 +58,11 @@ CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::option
       std::any_of(s.materials.begin(), s.materials.end(),
                   [](const scenario::MaterialDefinition& m) { return m.permeability.has_value(); }))
     settings.fixed_permeability = find_fixed_permeability(s, mesh_);
-  if (s.joint.hydraulic())
-    settings.joints = coupling::LoopSettings::Joints{build_model_geometry(s).network, make_joint_aperture_law(s)};
+  if (s.any_joint_hydraulic()) {
+    ModelGeometry geometry = build_model_geometry(s);
+    coupling::JointApertureLaws laws = make_joint_aperture_laws(s, geometry.traces);
+    settings.joints = coupling::LoopSettings::Joints{std::move(geometry.network), std::move(laws)};
+  }
   settings.stop_requested = [this] { return stop_requested_ && stop_requested_(); };
   load_times_ = scenario::find_load_times(s);
   loop_.emplace(mesh_, build_flow_problem(*s.flow, load_time()), *system_, std::move(settings));

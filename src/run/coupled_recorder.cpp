@@ -71,7 +71,8 @@ CoupledRecorder::CoupledRecorder(const RunContext& context, const CoupledModel& 
       measure_({"iteration", "time", "name", "x", "y", "ux", "uy"}),
       paraview_(context.folder, context.scenario.output.fields),
       meter_(make_fracture_meter(context.scenario)),
-      joint_law_(make_joint_aperture_law(context.scenario)),
+      joint_laws_(meter_ ? make_joint_aperture_laws(context.scenario, meter_->layout().traces)
+                         : coupling::JointApertureLaws{}),
       flow_zones_(meter_ ? meter_->flow_zones(model.mesh()) : fractures::FractureMeter::FlowZones{}),
       fractures_(context.folder, /*with_flow=*/true, fracture_type_names(context.scenario)) {
   const scenario::Scenario& s = scenario_;
@@ -245,7 +246,7 @@ void CoupledRecorder::save_checkpoint() {
 void CoupledRecorder::measure_fractures() {
   const dda::System& system = model_.mechanics();
   fracture_state_ =
-      meter_->measure(model_.block_polygons(), system.penetration_tolerance(), system.contacts(), joint_law_);
+      meter_->measure(model_.block_polygons(), system.penetration_tolerance(), system.contacts(), joint_laws_);
   meter_->add_flow(*fracture_state_, flow_zones_, model_.mesh(), model_.loop().flow());
 }
 
@@ -258,7 +259,7 @@ const fractures::FractureState* CoupledRecorder::measured_fractures() {
 std::vector<fractures::WedgeTipElement> CoupledRecorder::find_tip_elements() {
   const fractures::FractureState* state = measured_fractures();
   if (!state) return {};
-  return fractures::find_wedge_tip_elements(*state, matrix_permeability_, joint_law_, model_.mesh(), tip_locator(),
+  return fractures::find_wedge_tip_elements(*state, matrix_permeability_, joint_laws_, model_.mesh(), tip_locator(),
                                  meter_->layout().traces);
 }
 
@@ -275,7 +276,7 @@ output::RunSummary CoupledRecorder::summary() {
     summary.fractures->refined_tips = refined_tips_;
     if (scenario_.mesh->refine_tips) summary.fractures->rounds = fractures::current_round(refined_tips_);
     const std::optional<fractures::WedgeTip> tip =
-        cubic_law_ ? fractures::find_sharpest_wedge_tip(*fracture_state_, matrix_permeability_, joint_law_) : std::nullopt;
+        cubic_law_ ? fractures::find_sharpest_wedge_tip(*fracture_state_, matrix_permeability_, joint_laws_) : std::nullopt;
     if (tip) {
       summary.fractures->tip_length = tip->length;
       summary.fractures->tip_length_id = tip->fracture;

@@ -13,7 +13,7 @@
 #include "coupling/pass_loop.hpp"
 #include "fractures/fracture_results.hpp"
 #include "fractures/tip_refinement.hpp"
-#include "hydro/permeability_law.hpp"
+#include "coupling/joint_aperture_laws.hpp"
 #include "mesh/point_locator.hpp"
 #include "output/checkpoint.hpp"
 #include "output/csv_table.hpp"
@@ -107,7 +107,7 @@ class CoupledRecorder final : public coupling::PassObserver {
   output::RunCheckpoint checkpoint_;
   ParaviewOutput paraview_;
   std::optional<fractures::FractureMeter> meter_;
-  hydro::JointApertureLaw joint_law_;
+  coupling::JointApertureLaws joint_laws_;  // by fracture id, the meter's
   fractures::FractureMeter::FlowZones flow_zones_;
   FractureOutput fractures_;
   std::optional<fractures::FractureState> fracture_state_;  // of the last finished pass

@@ -159,7 +159,7 @@ void draw_aperture_figure(const scenario::Scenario& s, const output::RunFolder& 
   }
   for (const std::string& format : s.output.figures)
     output::render_field_figure(folder.figures() / ("apertures." + format), figure);
-  if (!s.joint.hydraulic()) return;
+  if (!s.any_joint_hydraulic()) return;
   // Joints that conduct while closed (a residual aperture, Barton–Bandis closure) are all grey
   // in the mechanical figure: this one colours every piece by the aperture the flow sees, on a
   // log scale, as closed ones carry micrometres and open ones millimetres.

@@ -59,9 +59,9 @@ output::FractureSummary summarise_fractures(const fractures::FractureState& stat
 
 // figures/apertures.* for each format output.figures asks for: the blocks as they are, each
 // fracture piece coloured by its mechanical aperture (mm), closed pieces thin and grey; titled
-// with the scenario's title. With the joint keys of a hydraulic aperture ([joint]
-// residual_aperture, normal_stiffness, max_closure) also figures/hydraulic_apertures.*: every
-// piece coloured by the aperture the flow sees (µm, log scale).
+// with the scenario's title. With the joint keys of a hydraulic aperture (residual_aperture,
+// normal_stiffness, max_closure in [joint] or a [joint.NAME]) also figures/hydraulic_apertures.*:
+// every piece coloured by the aperture the flow sees (µm, log scale), by its joint type's law.
 void draw_aperture_figure(const scenario::Scenario& scenario, const output::RunFolder& folder,
                           std::span<const geometry::Polygon> blocks, const fractures::FractureState& state,
                           const FigureState& shown);

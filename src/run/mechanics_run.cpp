@@ -45,7 +45,8 @@ output::RunSummary run_mechanics(const RunContext& context) {
 
   ParaviewOutput paraview(context.folder, s.output.fields);
   const std::optional<fractures::FractureMeter> meter = make_fracture_meter(s);
-  const hydro::JointApertureLaw joint_law = make_joint_aperture_law(s);
+  const coupling::JointApertureLaws joint_laws =
+      meter ? make_joint_aperture_laws(s, meter->layout().traces) : coupling::JointApertureLaws{};
   const std::vector<std::string> fracture_types = fracture_type_names(s);
   FractureOutput fractures(context.folder, /*with_flow=*/false, fracture_types);
   std::optional<fractures::FractureState> fracture_state;  // of the blocks as they are, when measured at this step
@@ -64,7 +65,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
     OutputState& out = last_output.emplace();
     out.step = step;
     for (int b = 0; b < system.block_count(); ++b) out.polygons.push_back(system.polygon(b));
-    out.fractures = meter->measure(out.polygons, system.penetration_tolerance(), system.contacts(), joint_law);
+    out.fractures = meter->measure(out.polygons, system.penetration_tolerance(), system.contacts(), joint_laws);
     fracture_state = out.fractures;
     fractures.add_rows(step, time, out.fractures);
     if (s.output.fields.fractures) fractures.write_series(static_cast<int>(step), time, out.fractures);

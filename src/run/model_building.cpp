@@ -159,9 +159,24 @@ std::vector<dda::BlockDefinition> build_blocks(const Scenario& s, GeometryWarnin
   return blocks;
 }
 
-hydro::JointApertureLaw make_joint_aperture_law(const Scenario& s) {
-  return {s.joint.residual_aperture.value_or(0.0), s.joint.normal_stiffness.value_or(0.0),
-          s.joint.max_closure.value_or(0.0)};
+hydro::JointApertureLaw make_joint_aperture_law(const scenario::JointDefinition& j) {
+  return {j.residual_aperture.value_or(0.0), j.normal_stiffness.value_or(0.0), j.max_closure.value_or(0.0)};
+}
+
+coupling::JointApertureLaws make_joint_aperture_laws(const Scenario& s, std::span<const geometry::FractureTrace> traces) {
+  std::vector<hydro::JointApertureLaw> by_type;
+  for (int t = 0; t < s.joint_type_count(); ++t) by_type.push_back(make_joint_aperture_law(s.joint_type(t)));
+  std::vector<int> fracture_types;
+  for (const geometry::FractureTrace& trace : traces) fracture_types.push_back(trace.joint_type);
+  return {std::move(by_type), std::move(fracture_types)};
+}
+
+double smallest_joint_zero_stress_aperture(const Scenario& s) {
+  double smallest = 0.0;
+  for (int t = 0; t < s.joint_type_count(); ++t)
+    if (const double a0 = make_joint_aperture_law(s.joint_type(t)).at_zero_stress(); a0 > 0.0)
+      smallest = smallest > 0.0 ? std::min(smallest, a0) : a0;
+  return smallest;
 }
 
 namespace {
@@ -444,7 +459,7 @@ dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::B
   settings.tension_cutoff = m.tension_cutoff;
   if (m.penetration_tolerance) {
     settings.penetration_tolerance = *m.penetration_tolerance;
-  } else if (const double a0 = make_joint_aperture_law(s).at_zero_stress(); s.joint.hydraulic() && a0 > 0.0) {
+  } else if (const double a0 = smallest_joint_zero_stress_aperture(s); s.any_joint_hydraulic() && a0 > 0.0) {
     // Joints that conduct while closed read their aperture from the gap where it exceeds the
     // penetration tolerance, and from the contact stress below it: a gap within the tolerance
     // counts as closed. The DDA's own resolution, 1e-4 of the allowed step displacement (15 µm
@@ -455,7 +470,7 @@ dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::B
     const double resolved = kJointApertureResolution * a0;
     if (resolved < usual) {
       settings.penetration_tolerance = resolved;
-      spdlog::debug("default used: mechanics.penetration_tolerance = {:.3g} m ({:g} of the joints' a_r + V_m; "
+      spdlog::debug("default used: mechanics.penetration_tolerance = {:.3g} m ({:g} of the joint types' smallest a_r + V_m; "
                     "1e-4 of the allowed step displacement would be {:.3g} m)",
                     resolved, kJointApertureResolution, usual);
     }

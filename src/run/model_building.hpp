@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "coupling/joint_aperture_laws.hpp"
 #include "coupling/permeability_model.hpp"
 #include "dda/definitions.hpp"
 #include "hydro/darcy_solver.hpp"
@@ -40,7 +41,8 @@ std::vector<dda::BlockDefinition> build_blocks(const scenario::Scenario& scenari
                                                GeometryWarnings warnings = GeometryWarnings::logged);
 
 // The default contact penetration tolerance where the joints carry a hydraulic aperture, as a
-// fraction of their aperture at zero stress a_r + V_m (when that is below the DDA's own default).
+// fraction of their aperture at zero stress a_r + V_m, the smallest of the joint types' (when
+// that is below the DDA's own default).
 inline constexpr double kJointApertureResolution = 0.02;
 
 // The DDA model: blocks, materials, joint, settings and every load of [mechanics].
@@ -53,9 +55,15 @@ std::vector<dda::EdgeTraction> build_tractions(const scenario::Scenario& scenari
                                                const std::vector<dda::BlockDefinition>& blocks);
 // The permeability law of [flow] with the porosity and grain size of the material without a
 // region (the only one in a model without regions).
-// The joints' hydraulic aperture law from [joint] (all zero when it gives none: an open joint
-// then has its opening, a closed one nothing).
-hydro::JointApertureLaw make_joint_aperture_law(const scenario::Scenario& scenario);
+// A joint type's hydraulic aperture law (all zero when it gives none, nor [joint] for it to
+// inherit: an open joint then has its opening, a closed one nothing).
+hydro::JointApertureLaw make_joint_aperture_law(const scenario::JointDefinition& joint);
+// Each trace's law, its joint type's (`traces` by fracture id, as the geometry made them).
+coupling::JointApertureLaws make_joint_aperture_laws(const scenario::Scenario& scenario,
+                                                     std::span<const geometry::FractureTrace> traces);
+// The smallest aperture at zero stress a_r + V_m above zero of the joint types ([joint] and
+// every [joint.NAME]); 0 when none has one. The default penetration tolerance resolves it.
+double smallest_joint_zero_stress_aperture(const scenario::Scenario& scenario);
 coupling::PermeabilityModel make_permeability_model(const scenario::Scenario& scenario);
 // Under Kozeny–Carman, where flow.permeability_cap lowers the matrix's own permeability: a
 // warning naming the first material (of those the law maps: the one without a region first) whose

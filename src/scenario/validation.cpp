@@ -393,13 +393,7 @@ void check_joint_types(ReadContext& ctx, const Scenario& s) {
     const bool own_hydraulic = t == 0 || j.hydraulic_line != s.joint.hydraulic_line;
     const bool own_barrier = t == 0 || j.barrier_line != s.joint.barrier_line;
     // Joint hydraulic apertures and barriers belong to the traces a domain is cut along; the
-    // apertures are measured on the blocks' contacts.
-    // The flow and the fracture results read one aperture law, [joint]'s, for every joint: a
-    // type's own would be ignored, so it is refused rather than left unread.
-    if (t > 0 && j.hydraulic() && own_hydraulic)
-      ctx.error(j.hydraulic_line, table + ".residual_aperture",
-                "a joint type's own hydraulic aperture is not supported yet: every joint conducts by [joint]'s "
-                "residual_aperture, normal_stiffness and max_closure; give them in [joint] only");
+    // apertures are measured on the blocks' contacts. Each type conducts by its own law.
     if (j.hydraulic() && own_hydraulic && !cut_domain)
       ctx.error(j.hydraulic_line, table + ".residual_aperture",
                 "joint hydraulic apertures need a geometry.domain cut by fractures (joints are its traces)");

@@ -7,7 +7,9 @@
 //   relative, the matrix's own share being 1e-8 of it;
 // - its aperture follows the gauge (open: a(0) + opening) and the contact forces (closed:
 //   σn = Σ F / closed length);
-// - isotropic tensors solve bit for bit as the scalar permeabilities.
+// - isotropic tensors solve bit for bit as the scalar permeabilities;
+// - crossings of faces of two joint types each take their own type's law (exact: the law's own
+//   values, bit for bit).
 
 #include <gtest/gtest.h>
 
@@ -138,6 +140,68 @@ TEST(EmbeddedJoints, ApertureFollowsTheGaugeAndTheContactForces) {
   // The upper block lifted by 0.2 mm: open, a(0) + 0.2 mm, whatever the contacts say.
   for (Point& p : blocks[upper]) p.y += 2.0e-4;
   for (double a : joints.apertures(blocks, contacts, 1e-9)) EXPECT_NEAR(a, law.open(2.0e-4), 1e-15);
+}
+
+// Two horizontal joints, y = 0.3 of the default type and y = 0.7 of type 1 (a fault), on a
+// structured mesh: every crossing of the lower takes the default law, every one of the upper the
+// fault's, closed (a(0), then the closure under 3 MPa, σn = ΣF / closed length) and open
+// (a(0) + w). The values are the laws' own, a_r + V_m − σ V_m/(k_ni V_m + σ) and a_r + V_m + w,
+// compared bit for bit.
+TEST(EmbeddedJoints, CrossingsOfTwoJointTypesTakeTheirOwnLaws) {
+  Model m;
+  m.mesh = testing::make_rectangle_mesh(0.0, 0.0, 1.0, 1.0, 8, 8);
+  geometry::BlockNetworkRequest request;
+  request.domain = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  request.traces = {{{{0.0, 0.3}, {1.0, 0.3}}, {}, 0}, {{{0.0, 0.7}, {1.0, 0.7}}, {}, 1}};
+  m.network = geometry::build_block_network(request);
+  ASSERT_EQ(m.network.blocks.size(), 3u);
+  const hydro::JointApertureLaw joint{1.0e-5, 2.0e11, 1.0e-4}, fault{2.0e-4, 5.0e10, 3.0e-4};
+  const EmbeddedJoints joints(m.mesh, m.network, JointApertureLaws({joint, fault}, {0, 1}));
+  const auto law_of = [&](const JointCrossing& c) { return c.face.fracture == 0 ? joint : fault; };
+  int on_fault = 0;
+  for (const JointCrossing& c : joints.crossings()) on_fault += c.face.fracture == 1 ? 1 : 0;
+  ASSERT_GT(on_fault, 0);
+  ASSERT_LT(on_fault, static_cast<int>(joints.crossings().size()));
+
+  std::vector<Polygon> blocks = m.network.blocks;
+  const std::vector<double> unloaded = joints.apertures(blocks, {}, 1e-9);
+  for (std::size_t c = 0; c < unloaded.size(); ++c) {
+    EXPECT_EQ(unloaded[c], law_of(joints.crossings()[c]).at_zero_stress()) << c;
+    EXPECT_EQ(joints.zero_stress_apertures()[c], law_of(joints.crossings()[c]).at_zero_stress()) << c;
+  }
+
+  // 3 kN on each 1 m face (the upper block of each face against its edge): σn = 3 MPa on both.
+  std::vector<dda::ContactInfo> contacts;
+  for (std::size_t b = 0; b < blocks.size(); ++b)
+    for (std::size_t e = 0; e < m.network.edge_fractures[b].size(); ++e) {
+      const int fracture = m.network.edge_fractures[b][e];
+      const double y = fracture == 0 ? 0.3 : 0.7;
+      if (fracture < 0 || !(geometry::centroid(blocks[b]).y < y)) continue;  // b below its face
+      for (std::size_t o = 0; o < blocks.size(); ++o)
+        if (o != b)
+          for (std::size_t f = 0; f < m.network.edge_fractures[o].size(); ++f)
+            if (m.network.edge_fractures[o][f] == fracture && geometry::centroid(blocks[o]).y > y)
+              contacts.push_back({{static_cast<int>(b), 0, static_cast<int>(o), static_cast<int>(f)},
+                                  dda::ContactState::locked, 0.0, 3.0e6});
+    }
+  ASSERT_EQ(contacts.size(), 2u);
+  const std::vector<double> loaded = joints.apertures(blocks, contacts, 1e-9);
+  for (std::size_t c = 0; c < loaded.size(); ++c)
+    EXPECT_EQ(loaded[c], law_of(joints.crossings()[c]).closed(3.0e6)) << c;
+  EXPECT_NE(joint.closed(3.0e6), fault.closed(3.0e6));
+
+  // The top block lifted by 0.2 mm: the fault opens, a(0) + w by its law; the lower joint stays
+  // shut under its 3 MPa.
+  for (std::size_t b = 0; b < blocks.size(); ++b)
+    if (geometry::centroid(blocks[b]).y > 0.7)
+      for (Point& p : blocks[b]) p.y += 2.0e-4;
+  const std::vector<double> lifted = joints.apertures(blocks, contacts, 1e-9);
+  for (std::size_t c = 0; c < lifted.size(); ++c) {
+    if (joints.crossings()[c].face.fracture == 1)
+      EXPECT_NEAR(lifted[c], fault.open(2.0e-4), 1e-15) << c;
+    else
+      EXPECT_EQ(lifted[c], joint.closed(3.0e6)) << c;
+  }
 }
 
 TEST(EmbeddedJoints, IsotropicTensorsSolveBitForBitAsScalars) {

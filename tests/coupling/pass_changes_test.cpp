@@ -45,6 +45,12 @@ TEST(PassChanges, CountsCrossingsThatSwitchedBetweenOpenAndClosed) {
   EXPECT_EQ(count_switched(before, after, open_above), 2);
   EXPECT_EQ(count_switched(before, before, open_above), 0);
   EXPECT_EQ(count_switched({}, after, open_above), 0) << "no pass before: nothing to compare";
+  // Each crossing by its own type's a_r + V_m: crossing 4 is of a type with a(0) = 1.5e-5, so its
+  // 2e-5 is open in both passes; crossing 0 (1e-5 → 1.5e-5) of a type with a(0) = 1.2e-5 opened.
+  const std::vector<double> own{1.2e-5, 6e-5, 6e-5, 6e-5, 1.5e-5};
+  EXPECT_EQ(count_switched(before, after, own), 3);
+  EXPECT_EQ(count_switched(before, after, std::vector<double>(5, open_above)), 2);
+  EXPECT_EQ(count_switched({}, after, own), 0);
 }
 
 TEST(PassChanges, TheLoadChangeIsTheLargestVertexChangeOverTheLargestForce) {

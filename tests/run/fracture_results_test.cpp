@@ -132,6 +132,38 @@ TEST(FractureResults, AFractureIsOpenOverNineTenthsOfItsLength) {
   EXPECT_TRUE(open.fractures[0].open);
 }
 
+// Each fracture's pieces take its own joint type's law: a 3 m × 1 m domain cut at x = 1 m (the
+// default type) and x = 2 m (type 1), aperture a0; the middle block moved left by a0 shuts the
+// first (unloaded: a(0) = a_r + V_m of the default law) and opens the second to 2 a0 (a(0) + 2 a0
+// of type 1's). Exact: the laws' own values (round-off of the gauge, 1e-15 m).
+TEST(FractureResults, EachFractureTakesItsJointTypesApertureLaw) {
+  geometry::BlockNetworkRequest request;
+  request.domain = {{0, 0}, {3, 0}, {3, 1}, {0, 1}};
+  request.traces = {{{{1, 0}, {1, 1}}, {geometry::TraceSource::listed, 0, 0}, 0},
+                    {{{2, 0}, {2, 1}}, {geometry::TraceSource::listed, 0, 1}, 1}};
+  request.aperture = kAperture;
+  fractures::FractureLayout layout{request.traces, geometry::build_block_network(request)};
+  ASSERT_EQ(layout.network.blocks.size(), 3u);
+  const fractures::FractureMeter meter(std::move(layout), 0.1);
+  std::vector<geometry::Polygon> blocks = meter.layout().network.blocks;
+  for (geometry::Polygon& b : blocks)
+    if (const double x = geometry::centroid(b).x; x > 1.0 && x < 2.0)
+      for (Point& p : b) p.x -= kAperture;
+  const hydrodda::hydro::JointApertureLaw joint{1.0e-5, 2.0e11, 1.0e-4}, fault{2.0e-4, 5.0e10, 3.0e-4};
+  const hydrodda::coupling::JointApertureLaws laws({joint, fault}, {0, 1});
+  const fractures::FractureState state = meter.measure(blocks, 1e-9, {}, laws);
+  ASSERT_EQ(state.fractures.size(), 2u);
+  EXPECT_FALSE(state.fractures[0].open);
+  EXPECT_TRUE(state.fractures[1].open);
+  EXPECT_NEAR(state.fractures[0].hydraulic_aperture, joint.at_zero_stress(), 1e-15);
+  EXPECT_NEAR(state.fractures[1].hydraulic_aperture, fault.open(2.0 * kAperture), 1e-15);
+  for (const fractures::FracturePiece& piece : state.pieces)
+    EXPECT_NEAR(piece.hydraulic_aperture, piece.fracture == 0 ? joint.at_zero_stress() : fault.open(2.0 * kAperture), 1e-15);
+  // One law for both (the former rule): the fault reads the default law.
+  const fractures::FractureState one = meter.measure(blocks, 1e-9, {}, joint);
+  EXPECT_NEAR(one.fractures[1].hydraulic_aperture, joint.open(2.0 * kAperture), 1e-15);
+}
+
 // The contacts on the face, keyed as the DDA keys them: vertex 0 of the block across against
 // each edge of `block` that lies on fracture 0, with the given normal forces.
 std::vector<hydrodda::dda::ContactInfo> contacts_on_face(const fractures::FractureMeter& meter,

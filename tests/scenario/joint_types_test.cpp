@@ -147,13 +147,54 @@ TEST(JointTypes, AFracturesFileRowNamesItsTypeInAFifthColumn) {
 namespace hydrodda::scenario {
 namespace {
 
-// The flow reads one aperture law, [joint]'s: a type's own is refused, not ignored.
-TEST(JointTypes, ATypesOwnHydraulicApertureIsRefusedNotIgnored) {
-  std::string text = kTyped;
+// kTyped as a coupled model: the joint hydraulic keys need a [mechanics] section.
+std::string with_mechanics(std::string text) {
+  return text + "[material.rock]\ndensity = 2500.0\nyoung = 1.0e10\npoisson = 0.25\ngrain_diameter = 1.0e-4\n"
+                "[mechanics]\n[[mechanics.fixed]]\npoint = [0.1, 0.1]\n";
+}
+
+// Each type's own hydraulic aperture law: [joint.fault]'s keys over [joint]'s, a type that gives
+// none takes [joint]'s (clay here), and none at all is a = 0 (a closed joint carries nothing).
+TEST(JointTypes, ATypeHasItsOwnHydraulicApertureLawOverTheDefaults) {
+  std::string text = with_mechanics(kTyped);
+  text.replace(text.find("tensile_strength = 1.0e4\n"), 0, "residual_aperture = 1.0e-5\nnormal_stiffness = 2.0e11\nmax_closure = 1.0e-4\n");
   text.replace(text.find("cohesion = 0.0\n"), 0, "residual_aperture = 5.0e-5\n");
-  EXPECT_TRUE(has_error(errors_of(text), "case.toml:16: joint.fault.residual_aperture: a joint type's own hydraulic "
-                                         "aperture is not supported yet"))
+  ASSERT_TRUE(errors_of(text).empty()) << dump(errors_of(text));
+  const Scenario s = parse_scenario(text, "case.toml");
+  const JointDefinition& fault = s.joint_type(s.joint_type_index("fault"));
+  const JointDefinition& clay = s.joint_type(s.joint_type_index("clay"));
+  EXPECT_EQ(fault.residual_aperture, 5.0e-5);
+  EXPECT_EQ(fault.normal_stiffness, 2.0e11);  // inherited
+  EXPECT_EQ(fault.max_closure, 1.0e-4);
+  EXPECT_EQ(clay.residual_aperture, 1.0e-5);
+  EXPECT_EQ(clay.max_closure, 1.0e-4);
+  EXPECT_TRUE(s.any_joint_hydraulic());
+
+  // Only the fault conducts by a law of its own; [joint] gives none.
+  std::string fault_only = with_mechanics(kTyped);
+  fault_only.replace(fault_only.find("cohesion = 0.0\n"), 0, "residual_aperture = 5.0e-5\n");
+  const Scenario f = parse_scenario(fault_only, "case.toml");
+  EXPECT_FALSE(f.joint.hydraulic());
+  EXPECT_EQ(f.joint_type(f.joint_type_index("fault")).residual_aperture, 5.0e-5);
+  EXPECT_TRUE(f.any_joint_hydraulic());
+}
+
+// Bad values of a type's own law are named by file, line and key.
+TEST(JointTypes, ATypesBadApertureLawIsNamedByFileLineAndKey) {
+  std::string text = with_mechanics(kTyped);
+  text.replace(text.find("cohesion = 0.0\n"), 0, "residual_aperture = -1.0e-5\n");
+  EXPECT_TRUE(has_error(errors_of(text), "case.toml:16: joint.fault.residual_aperture: must lie in [0, 1) m"))
       << dump(errors_of(text));
+  std::string closure = with_mechanics(kTyped);
+  closure.replace(closure.find("cohesion = 0.0\n"), 0, "max_closure = 1.0e-4\n");
+  EXPECT_TRUE(has_error(errors_of(closure), "case.toml:16: joint.fault.normal_stiffness: required with joint.fault.max_closure"))
+      << dump(errors_of(closure));
+  // Without [mechanics] a type's law has no contacts to be measured on.
+  std::string flow_only = kTyped;
+  flow_only.replace(flow_only.find("cohesion = 0.0\n"), 0, "residual_aperture = 5.0e-5\n");
+  EXPECT_TRUE(has_error(errors_of(flow_only), "case.toml:16: joint.fault.residual_aperture: joint hydraulic apertures "
+                                              "are measured on the blocks' contacts"))
+      << dump(errors_of(flow_only));
 }
 
 }  // namespace

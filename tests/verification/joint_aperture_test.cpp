@@ -7,7 +7,8 @@
 // Witherspoon et al. 1980), and the closure under an effective normal stress σn,
 //   a = a_r + V_m − σn V_m / (k_ni V_m + σn)   (Barton, Bandis
 // & Bakhtar 1985). Tolerances: the closed joint's flow within 2% on every mesh; the loaded
-// joint's flow within 1%, its normal stress within 1% and its aperture within 0.5%.
+// joint's flow within 1%, its normal stress within 1% and its aperture within 0.5%; a fault of
+// its own law beside joints of the default's, each by its own law, the same.
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -173,6 +174,53 @@ TEST(JointApertures, LoadedJointFollowsBartonBandisClosure) {
     EXPECT_NEAR(f["by_id"]["0"]["hydraulic_aperture"].get<double>(), last_fracture_value(r, "hydraulic_aperture"),
                 1e-15);
   }
+}
+
+// The value of a fractures.csv column for one fracture in the last pass's rows.
+double last_value_of(const JointRun& r, int fracture, const std::string& name) {
+  for (std::size_t row = r.fractures.size(); row-- > 1;)
+    if (std::stoi(r.fractures[row][column(r.fractures[0], "fracture")]) == fracture)
+      return std::stod(r.fractures[row][column(r.fractures[0], name)]);
+  ADD_FAILURE() << "fractures.csv has no row of fracture " << fracture;
+  return NAN;
+}
+
+// A fault with its own hydraulic aperture law between two joints of the default law
+// (coupled_fault_aperture.toml): three horizontal traces under σn = 1 MPa, each closed, each of
+// aperture a(σn) = a_r + V_m − σn V_m / (k_ni V_m + σn) by its own type's keys (the fault's
+// a_r and k_ni its own, its V_m [joint]'s), each carrying Q = (ρg/μ)(a³/12) Δh / 1 m, the
+// parallel-plate law: fractures.csv's hydraulic_aperture within 0.5% and flow within 1% of them,
+// the outflow within 1% of their sum (measured: 3e-9 and 1e-9 relative), and the type named.
+TEST(JointApertures, AFaultCarriesItsOwnLawsFlow) {
+  Folder folder("fault");
+  const JointRun r = run_text(read_text(kVerification / "coupled_fault_aperture.toml"), folder, "fault");
+  ASSERT_TRUE(r.summary.contains("flow"));
+  EXPECT_TRUE(r.summary["converged"].get<bool>());
+  const double sigma = 1.0e6;
+  const auto aperture = [&](double residual, double stiffness, double closure) {
+    return residual + closure - sigma * closure / (stiffness * closure + sigma);
+  };
+  const double joint = aperture(5.0e-5, 2.0e11, 1.0e-4), fault = aperture(4.0e-4, 1.0e10, 1.0e-4);
+  const auto flow_of = [](double a) { return kConductivityPerPermeability * a * a * a / 12.0 * kHeadDrop; };
+  // Fracture ids: the two listed joints (0, 1), then the [[geometry.fracture]] fault (2).
+  double total = 0.0;
+  for (const int id : {0, 1, 2}) {
+    const double a = id == 2 ? fault : joint;
+    const double q = flow_of(a);
+    total += q;
+    EXPECT_NEAR(last_value_of(r, id, "hydraulic_aperture"), a, 0.005 * a) << id;
+    EXPECT_NEAR(last_value_of(r, id, "normal_stress"), sigma, 0.01 * sigma) << id;
+    EXPECT_NEAR(last_value_of(r, id, "flow"), q, 0.01 * q) << id;
+    EXPECT_EQ(last_value_of(r, id, "open"), 0.0) << id;
+    std::printf("fracture %d: a %.6e m (expected %.6e), flow %.6e m2/s (expected %.6e, %+.2e)\n", id,
+                last_value_of(r, id, "hydraulic_aperture"), a, last_value_of(r, id, "flow"), q,
+                last_value_of(r, id, "flow") / q - 1.0);
+  }
+  EXPECT_NEAR(right_outflow(r), total, 0.01 * total);
+  EXPECT_EQ(r.fractures.back()[column(r.fractures[0], "type")], "fault");
+  EXPECT_EQ(r.summary["fractures"]["by_id"]["2"]["type"].get<std::string>(), "fault");
+  EXPECT_EQ(r.summary["fractures"]["by_id"]["0"]["type"].get<std::string>(), "joint");
+  std::printf("outflow %.6e m2/s, expected %.6e (%+.2e)\n", right_outflow(r), total, right_outflow(r) / total - 1.0);
 }
 
 // Without joint keys the porosity law alone: the closed joint's clipped gap (contact
