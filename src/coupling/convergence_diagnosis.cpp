@@ -110,6 +110,13 @@ std::string smaller_relaxation(double relaxation) {
 // acceleration if it had none, else a smaller relaxation or more steps, and that a jacking joint
 // may have no steady state.
 std::string unsettled_advice(const LoopAsRun& loop) {
+  if (loop.crossings_switched >= kChatteringCrossings)
+    return "the joints open and shut from pass to pass (a median of " + std::to_string(loop.crossings_switched) +
+           " of their crossings with fluid elements switched between open and closed, and " +
+           std::to_string(loop.contacts_changed) +
+           " contacts changed state, a pass): no relaxation or acceleration of the heads settles such a loop "
+           "(docs/studies/2026-11-29-loop-convergence.md), and its answer holds only to how far it moved over "
+           "these passes";
   if (loop.acceleration == "none")
     return "try coupling.acceleration = \"anderson\" (or \"aitken\"), or " + smaller_relaxation(loop.relaxation);
   return "the " + std::string(loop.acceleration) + " acceleration did not settle it: " +

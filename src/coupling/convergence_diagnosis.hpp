@@ -55,7 +55,17 @@ struct LoopAsRun {
   double relaxation = 1.0;                 // coupling.relaxation
   bool settling = false;                   // coupling.settle
   int passes_not_at_rest = 0;              // the last passes in a row that ended with the blocks moving
+  // history.csv's joint_crossings_switched and contact_state_changes, each the median over the
+  // last passes (those the norms are fitted over; 0 without joint apertures).
+  int crossings_switched = 0;
+  int contacts_changed = 0;
 };
+// A loop that oscillates or jumps while a median of at least this many joint crossings switch
+// between open and closed every pass is told that its joints chatter rather than sent to a
+// relaxation or an acceleration of the heads: on the faulted seal (100–200 crossings a pass)
+// none of them settles the loop (docs/studies/2026-11-29-loop-convergence.md); a loop on its
+// way switches none after its first passes.
+inline constexpr int kChatteringCrossings = 10;
 // With settling passes, the blocks came to rest in none of the last kPassesNotAtRest passes
 // (or in none of the passes after the first, when fewer were run): no pass reached the
 // equilibrium of its fluid load, so the norms measure how far the blocks creep in a pass, not

@@ -304,6 +304,16 @@ std::string describe_non_convergence(const Round& round) {
   const auto column = [&](std::string_view name) {
     return static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
   };
+  // The median of a count column over the passes the diagnosis fits (the last ten, the first pass left out).
+  const auto median_of_last = [&](std::string_view name) {
+    const std::vector<std::vector<std::string>>& rows = recorder.history_rows();
+    std::vector<long long> values;
+    for (std::size_t i = std::max<std::size_t>(1, rows.size() > 10 ? rows.size() - 10 : 1); i < rows.size(); ++i)
+      values.push_back(std::stoll(rows[i].at(column(name))));
+    if (values.empty()) return 0;
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2), values.end());
+    return static_cast<int>(values[values.size() / 2]);
+  };
   const std::size_t two_passes_column = column("head_change_two_passes"), at_rest_column = column("at_rest");
   std::vector<double> two_passes;  // history.csv's head_change_two_passes
   int passes_not_at_rest = 0;      // the last passes in a row whose at_rest is 0
@@ -317,7 +327,9 @@ std::string describe_non_convergence(const Round& round) {
                                          {.acceleration = scenario::spell(s.coupling.acceleration),
                                           .relaxation = s.coupling.relaxation,
                                           .settling = s.coupling.settle,
-                                          .passes_not_at_rest = passes_not_at_rest});
+                                          .passes_not_at_rest = passes_not_at_rest,
+                                          .crossings_switched = median_of_last("joint_crossings_switched"),
+                                          .contacts_changed = median_of_last("contact_state_changes")});
   std::string message = fmt::format("the coupling loop did not converge in {} iterations (tolerance {:g}): {}",
                                     s.coupling.max_iterations, s.coupling.tolerance, why.text);
   const bool never_at_rest = why.behaviour == coupling::NonConvergence::never_at_rest;
