@@ -200,6 +200,8 @@ class System {
     // Opened by the tension cutoff in this step: it closes again only by penetrating past
     // the tolerance (see update_state).
     bool released = false;
+    // Changed state in one of this step's open–close passes.
+    bool changed_in_step = false;
     Vector6 en_i = Vector6::Zero(), en_j = Vector6::Zero();
     // Made when the contact is closed at the step's start or closes in a pass
     // (linearise_closed_contact), and read only while it is closed: an open contact's are
