@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "geometry/joint_sets.hpp"
+#include "output/item_list.hpp"
 #include "scenario/diagnostics.hpp"
 
 namespace hydrodda::run {
@@ -73,18 +74,24 @@ ModelGeometry build_model_geometry(const scenario::Scenario& s) {
   }
   const geometry::BlockNetwork& net = model.network;
 
-  // Pieces that cut nothing: a warning per listed fracture (as always), a count per joint set
-  // and for the file, whose loose ends are expected (a trace ending inside a block).
+  // Pieces that cut nothing: one warning naming the listed fractures (a few of them: a line
+  // is read, a hundred numbers are not), a count per joint set and for the file, whose loose
+  // ends are expected (a trace ending inside a block).
   std::vector<int> dropped_per_set(g.joint_sets.size(), 0);
   int dropped_file = 0;
+  std::vector<std::string> dropped_listed;
   for (int f : net.dropped_from) {
     const geometry::TraceOrigin& o = model.traces[f].origin;
-    if (o.source == TraceSource::listed)
-      model.warnings.push_back(fmt::format("{}: geometry.fractures: fracture {}: a piece of it separates no blocks and is dropped",
-                                           file, o.number + 1));
+    if (o.source == TraceSource::listed) dropped_listed.push_back(std::to_string(o.number + 1));
     else if (o.source == TraceSource::joint_set) ++dropped_per_set[o.set];
     else ++dropped_file;
   }
+  if (dropped_listed.size() == 1)
+    model.warnings.push_back(fmt::format("{}: geometry.fractures: fracture {}: a piece of it separates no blocks and is dropped",
+                                         file, dropped_listed.front()));
+  else if (!dropped_listed.empty())
+    model.warnings.push_back(fmt::format("{}: geometry.fractures: fractures {}: a piece of each separates no blocks and is dropped",
+                                         file, output::list_items(dropped_listed, nullptr, "")));
   std::vector<int> per_set(g.joint_sets.size(), 0);
   for (const FractureTrace& t : model.traces)
     if (t.origin.source == TraceSource::joint_set) ++per_set[t.origin.set];
