@@ -1,6 +1,7 @@
 #pragma once
-// The files installed beside the program: the Gmsh plugin (gmsh_loader.cpp) and the flow
-// ordering's helper (numerics/nested_dissection.cpp).
+// The files installed beside the program: the plugins loaded when first needed (Gmsh:
+// mesh/gmsh_loader.cpp; the figures' drawing: output/figures_loader.cpp; MPI:
+// sweep/mpi/ranks_mpi.cpp) and the flow ordering's helper (numerics/nested_dissection.cpp).
 
 #include <filesystem>
 #include <string_view>

@@ -17,20 +17,6 @@ namespace hydrodda::output {
 
 using geometry::Point;
 
-std::vector<Point> contour_segment(const std::array<Point, 3>& p, const std::array<double, 3>& v, double level) {
-  std::vector<Point> out;
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3;
-    const double a = v[i] - level, b = v[j] - level;
-    if ((a < 0.0 && b >= 0.0) || (a >= 0.0 && b < 0.0)) {
-      const double t = a / (a - b);
-      out.push_back(p[i] + t * (p[j] - p[i]));
-    }
-  }
-  if (out.size() != 2) out.clear();
-  return out;
-}
-
 namespace {
 
 

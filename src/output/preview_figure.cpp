@@ -302,18 +302,6 @@ void draw_preview(cairo_t* cr, double width, double height, const PreviewFigure&
 
 }  // namespace
 
-Rgb material_colour(int index) {
-  static constexpr Rgb kPalette[] = {{0.65, 0.81, 0.89}, {0.99, 0.75, 0.44}, {0.70, 0.87, 0.54}, {0.98, 0.60, 0.60},
-                                     {0.79, 0.70, 0.84}, {0.99, 0.93, 0.55}, {0.80, 0.80, 0.80}, {0.55, 0.83, 0.78}};
-  return kPalette[static_cast<std::size_t>(index) % std::size(kPalette)];
-}
-
-Rgb joint_type_colour(int index) {
-  static constexpr Rgb kPalette[] = {{0.80, 0.10, 0.10}, {0.10, 0.55, 0.10}, {0.45, 0.20, 0.65},
-                                     {0.55, 0.34, 0.10}, {0.90, 0.45, 0.00}, {0.10, 0.10, 0.10}};
-  return kPalette[static_cast<std::size_t>(index) % std::size(kPalette)];
-}
-
 void render_preview_figure(const std::filesystem::path& path, const PreviewFigure& figure) {
   // The page follows the domain's shape as the field figures' does.
   const double largest_width = 820, narrowest_width = 560, largest_height = 660;

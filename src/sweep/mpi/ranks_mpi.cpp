@@ -1,4 +1,5 @@
-// SweepRanks over MPI: the one file of the project that includes mpi.h.
+// SweepRanks over MPI, its calls made through the MPI plugin (mpi_plugin.hpp), loaded when an
+// MPI launcher started the program.
 //
 // Rank 0 is the coordinator and a worker. Messages, all on MPI_COMM_WORLD:
 //   0 → r  kPlan      the cases' commands, folders and columns (empty: the sweep never started)
@@ -8,9 +9,10 @@
 // Every wait is a nonblocking receive polled every 20 ms, so that a rank with nothing to do
 // sleeps instead of spinning the core a case on the same host needs (Open MPI's blocking calls
 // busy-wait).
-// MPI's C interface only: the C++ bindings (removed from the standard) would need their own library.
+// mpi.h for its version macros only: the calls are the plugin's.
 #define OMPI_SKIP_MPICXX 1
 #define MPICH_SKIP_MPICXX 1
+#include <dlfcn.h>
 #include <mpi.h>
 #include <signal.h>
 
@@ -21,6 +23,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "base/program_files.hpp"
+#include "sweep/mpi/mpi_plugin.hpp"
 #include "sweep/ranks.hpp"
 
 namespace hydrodda::sweep {
@@ -31,6 +35,25 @@ namespace fs = std::filesystem;
 
 enum Tag : int { kPlan = 1, kRequest = 2, kAssign = 3, kExitCode = 4 };
 constexpr auto kPollInterval = std::chrono::milliseconds(20);
+constexpr int kAnyRank = -1;
+
+// The plugin beside the executable, else where the build made it; loaded once, never unloaded.
+const HydroddaMpiCalls& load_mpi() {
+  const fs::path path = base::find_beside_program("hydrodda_mpi.so", HYDRODDA_MPI_PLUGIN);
+  void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_GLOBAL);  // global: Open MPI dlopens its own components
+  if (!handle) {
+    const char* why = ::dlerror();
+    throw std::runtime_error("cannot load the MPI plugin '" + path.string() + "': " + (why ? why : "unknown error"));
+  }
+  const auto calls = reinterpret_cast<decltype(&hydrodda_mpi_calls)>(::dlsym(handle, "hydrodda_mpi_calls"));
+  if (!calls) throw std::runtime_error("the MPI plugin '" + path.string() + "' lacks its entry point");
+  return *calls();
+}
+
+const HydroddaMpiCalls& mpi() {
+  static const HydroddaMpiCalls& loaded = load_mpi();
+  return loaded;
+}
 
 // Strings packed as (8-byte length, bytes) each, so that any text crosses intact.
 std::string pack(const std::vector<std::string>& fields) {
@@ -118,24 +141,18 @@ Request unpack_request(const std::string& bytes) {
 }
 
 void send_bytes(const std::string& bytes, int to, Tag tag) {
-  MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_CHAR, to, tag, MPI_COMM_WORLD);
+  mpi().send(bytes.data(), static_cast<int>(bytes.size()), to, tag);
 }
 
-// Waits, sleeping between polls, for one message of `tag` from `from` (any when
-// MPI_ANY_SOURCE) and returns its bytes.
+// Waits, sleeping between polls, for one message of `tag` from `from` (any when kAnyRank)
+// and returns its bytes.
 std::string receive_bytes(int from, Tag tag, int* source = nullptr) {
-  MPI_Status status;
-  int arrived = 0;
-  for (;;) {
-    MPI_Iprobe(from, tag, MPI_COMM_WORLD, &arrived, &status);
-    if (arrived) break;
-    std::this_thread::sleep_for(kPollInterval);
-  }
+  int sender = 0;
   int count = 0;
-  MPI_Get_count(&status, MPI_CHAR, &count);
+  while (!mpi().probe(from, tag, &sender, &count)) std::this_thread::sleep_for(kPollInterval);
   std::string bytes(static_cast<std::size_t>(count), '\0');
-  MPI_Recv(bytes.data(), count, MPI_CHAR, status.MPI_SOURCE, tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-  if (source) *source = status.MPI_SOURCE;
+  mpi().receive(bytes.data(), count, sender, tag);
+  if (source) *source = sender;
   return bytes;
 }
 
@@ -183,14 +200,12 @@ class LocalCase {
 SweepRanks::SweepRanks(std::function<bool()> stop_requested) : stop_requested_(std::move(stop_requested)) {
   const bool launched = launcher_rank_count() > 0 || std::getenv("PMIX_RANK");
   if (!launched) return;
-  MPI_Init(nullptr, nullptr);
+  mpi().join(&rank_, &size_);
   joined_ = true;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
-  MPI_Comm_size(MPI_COMM_WORLD, &size_);
 }
 
 SweepRanks::~SweepRanks() {
-  if (joined_) MPI_Finalize();
+  if (joined_) mpi().leave();
 }
 
 std::vector<std::size_t> SweepRanks::run_cases(const SweepPlan& plan, const CaseFinished& finished) {
@@ -207,12 +222,11 @@ std::vector<std::size_t> SweepRanks::run_cases(const SweepPlan& plan, const Case
     stopping = stopping || stop_requested_();
     if (!local && !stopping && next < n) local.emplace(plan, next++, stop_requested_);
     bool progressed = false;
-    int waiting = 0;
-    MPI_Status status;
-    MPI_Iprobe(MPI_ANY_SOURCE, kRequest, MPI_COMM_WORLD, &waiting, &status);
-    if (waiting) {
+    int waiting_source = 0;
+    int waiting_count = 0;
+    if (mpi().probe(kAnyRank, kRequest, &waiting_source, &waiting_count)) {
       int source = 0;
-      const Request q = unpack_request(receive_bytes(status.MPI_SOURCE, kRequest, &source));
+      const Request q = unpack_request(receive_bytes(waiting_source, kRequest, &source));
       if (q.index >= 0) finished(static_cast<std::size_t>(q.index), q.result, source);
       stopping = stopping || q.interrupted;
       const long long assigned = !stopping && next < n ? static_cast<long long>(next++) : -1;
@@ -238,7 +252,7 @@ void SweepRanks::finish(int exit_code) {
   if (size_ < 2) return;
   // The sweep failed while cases were out (sweep.csv could not be written): the other ranks
   // wait for cases that will never be handed out, so the job ends here.
-  if (plan_sent_ && !cases_done_) MPI_Abort(MPI_COMM_WORLD, exit_code);
+  if (plan_sent_ && !cases_done_) mpi().abort(exit_code);
   if (!plan_sent_)
     for (int r = 1; r < size_; ++r) send_bytes("", r, kPlan);
   plan_sent_ = true;
@@ -264,13 +278,17 @@ int SweepRanks::serve() {
   return static_cast<int>(receive_number(0, kExitCode));
 }
 
+// The library as MPI_Get_library_version names it, up to its first comma, from the header the
+// plugin was built with (calling it would load the plugin for --version).
 std::string SweepRanks::build_description() {
-  char version[MPI_MAX_LIBRARY_VERSION_STRING];
-  int length = 0;
-  MPI_Get_library_version(version, &length);  // allowed before MPI_Init
-  std::string name(version, static_cast<std::size_t>(length));
-  name = name.substr(0, name.find_first_of(",\n"));
-  return "with MPI (" + name + ")";
+#if defined(OMPI_MAJOR_VERSION)
+  return "with MPI (Open MPI v" + std::to_string(OMPI_MAJOR_VERSION) + "." + std::to_string(OMPI_MINOR_VERSION) + "." +
+         std::to_string(OMPI_RELEASE_VERSION) + ")";
+#elif defined(MPICH_VERSION)
+  return "with MPI (MPICH " MPICH_VERSION ")";
+#else
+  return "with MPI (MPI " + std::to_string(MPI_VERSION) + "." + std::to_string(MPI_SUBVERSION) + ")";
+#endif
 }
 
 }  // namespace hydrodda::sweep
