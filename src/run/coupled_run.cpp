@@ -279,7 +279,7 @@ void warn_at_end(const Round& round, const output::RunSummary& summary) {
                  summary.outside_mesh->blocks, summary.outside_mesh->block, summary.outside_mesh->largest_distance);
   if (const auto capped = describe_capped_fractures(round.model.loop().capped_elements(), round.model.mesh(),
                                                     round.recorder.element_fractures(),
-                                                    s.flow->fracture_permeability_cap))
+                                                    s.flow->fracture_permeability_cap, &round.context.folder))
     spdlog::warn("at coupling iteration {}, {}", round.model.iterations(), *capped);
   // The cubic law's answer depends on the mesh where the elements at a wedge tip are wider than
   // its exchange length (docs/coupling.md, "Wedge tips").

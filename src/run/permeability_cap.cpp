@@ -4,11 +4,15 @@
 
 #include <cmath>
 #include <set>
+#include <vector>
+
+#include "output/item_list.hpp"
 
 namespace hydrodda::run {
 
 std::optional<std::string> describe_capped_fractures(std::span<const int> capped, const mesh::TriangleMesh& mesh,
-                                                     std::span<const int> element_fractures, double cap) {
+                                                     std::span<const int> element_fractures, double cap,
+                                                     const output::RunFolder* folder) {
   if (capped.empty()) return std::nullopt;
   std::set<int> fractures;
   for (int e : capped)
@@ -16,17 +20,10 @@ std::optional<std::string> describe_capped_fractures(std::span<const int> capped
       fractures.insert(element_fractures[e]);
   std::string along;
   if (!fractures.empty()) {
-    std::string ids;
-    int named = 0;
-    for (int f : fractures) {
-      if (named == 5) {
-        ids += fmt::format(" and {} more", fractures.size() - 5);
-        break;
-      }
-      ids += fmt::format("{}{}", named == 0 ? "" : ", ", f);
-      ++named;
-    }
-    along = fmt::format(", along fracture{} {}", fractures.size() == 1 ? "" : "s", ids);
+    std::vector<std::string> ids;
+    for (int f : fractures) ids.push_back(std::to_string(f));
+    along = fmt::format(", along fracture{} {}", fractures.size() == 1 ? "" : "s",
+                        output::list_items(ids, folder, "capped_fractures.txt"));
   }
   const geometry::Point first = mesh::triangle_centroid(mesh, capped.front());
   return fmt::format(

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "mesh/triangle_mesh.hpp"
+#include "output/run_folder.hpp"
 
 namespace hydrodda::run {
 
@@ -15,8 +16,10 @@ namespace hydrodda::run {
 // 8.33e-06 m² (a gap 1 cm wide) in 12 fluid elements, along fractures 3 and 7, the first at
 // (1.5, 2.25): ...". `capped`: the elements, in order; `element_fractures`: per element the
 // fracture whose flow zone holds it, or -1 (empty: no fracture traces). None when nothing was
-// capped.
+// capped. Past five fractures the rest are "and N more", all of them in capped_fractures.txt in
+// `folder` when one is given (output::list_items).
 std::optional<std::string> describe_capped_fractures(std::span<const int> capped, const mesh::TriangleMesh& mesh,
-                                                     std::span<const int> element_fractures, double cap);
+                                                     std::span<const int> element_fractures, double cap,
+                                                     const output::RunFolder* folder = nullptr);
 
 }  // namespace hydrodda::run
