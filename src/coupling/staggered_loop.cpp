@@ -104,33 +104,52 @@ std::vector<geometry::Polygon> StaggeredLoop::current_blocks() const {
   return blocks;
 }
 
-// The permeability as the porosity law gives it, the scenario's fixed values over it; with
-// joints, the elements along them at the matrix permeability plus the joints' transmissivity
-// (one transmissivity per joint: embedded_joints.hpp), solved as tensors.
+// The permeability as the porosity law gives it (a material's own `permeability` in its stead),
+// the scenario's imposed values over it; with joints, the elements along them at the matrix
+// permeability in series with their open fraction, plus the joints' transmissivity (one
+// transmissivity per joint: embedded_joints.hpp), solved as tensors.
 hydro::FlowSolution StaggeredLoop::solve_flow(const std::vector<geometry::Polygon>& blocks) {
-  const auto fixed = [&](std::size_t e) {
-    return e < settings_.fixed_permeability.size() && settings_.fixed_permeability[e].has_value();
+  const auto given = [](const std::vector<std::optional<double>>& k, std::size_t e) {
+    return e < k.size() && k[e].has_value();
   };
+  for (std::size_t e = 0; e < permeability_.size(); ++e)
+    if (given(settings_.material_permeability, e)) permeability_[e] = *settings_.material_permeability[e];
   if (!joints_) {
     for (std::size_t e = 0; e < permeability_.size(); ++e)
-      if (fixed(e)) permeability_[e] = *settings_.fixed_permeability[e];
+      if (given(settings_.fixed_permeability, e)) permeability_[e] = *settings_.fixed_permeability[e];
     check_finite(permeability_, "the permeability", iteration_);
     return darcy_.solve_reusing_factor(permeability_, solution_.head);
   }
-  const double k_matrix = settings_.permeability.matrix_permeability();
-  const bool by_element = settings_.permeability.by_element();  // materials by region
-  for (std::size_t e = 0; e < permeability_.size(); ++e)
-    if (joints_->zone()[e]) permeability_[e] = by_element ? settings_.permeability.matrix_permeability_of(e) : k_matrix;
+  set_joint_zone_matrix_permeability();
   joint_apertures_ = joints_->apertures(blocks, mechanics_.contacts(), mechanics_.penetration_tolerance());
   check_finite(joint_apertures_, "a joint's hydraulic aperture", iteration_);
   std::vector<hydro::PermeabilityTensor>& k = permeability_tensors_;
   k = joints_->permeability(permeability_, joint_apertures_);
   for (std::size_t e = 0; e < k.size(); ++e) {
-    if (fixed(e)) k[e] = {*settings_.fixed_permeability[e], 0.0, *settings_.fixed_permeability[e]};
+    if (given(settings_.fixed_permeability, e))
+      k[e] = {*settings_.fixed_permeability[e], 0.0, *settings_.fixed_permeability[e]};
     permeability_[e] = largest_principal_value(k[e]);
   }
   check_finite(permeability_, "the permeability", iteration_);
   return darcy_.solve_reusing_factor(k, solution_.head);
+}
+
+// The elements along the joints take the matrix permeability (their material's), not the
+// porosity law's, which would count an open joint a second time; but in series with the
+// element's open fraction, so that a gap opened as wide as the element does not hold back the
+// flow across it as rock would (a seal lifted off its base).
+void StaggeredLoop::set_joint_zone_matrix_permeability() {
+  const double k_matrix = settings_.permeability.matrix_permeability();
+  const bool by_element = settings_.permeability.by_element();  // materials by region
+  const std::span<const double> areas = porosity_mapper_.element_areas();
+  for (std::size_t e = 0; e < permeability_.size(); ++e) {
+    if (!joints_->zone()[e]) continue;
+    const bool own = e < settings_.material_permeability.size() && settings_.material_permeability[e];
+    const double k_m = own ? *settings_.material_permeability[e]
+                           : (by_element ? settings_.permeability.matrix_permeability_of(e) : k_matrix);
+    const double open_fraction = porosity_.fracture_area[e] / areas[e];
+    permeability_[e] = hydro::permeability_across_open_fraction(k_m, open_fraction, settings_.permeability.fracture_cap);
+  }
 }
 
 std::vector<EscapingBlock> StaggeredLoop::blocks_beyond_their_size() const {

@@ -57,8 +57,12 @@ struct LoopSettings {
   // Asked before every DDA step: true abandons the pass (PassInterrupted), so that a long pass
   // does not hold up an interrupt until its end. Unset: never.
   std::function<bool()> stop_requested;
-  // Per element: a permeability fixed by the scenario (flow regions), or none; empty: none anywhere.
+  // Per element: a permeability the scenario imposes (flow regions, joint barriers' strips), or
+  // none; empty: none anywhere. A joint's transmissivity does not add to it.
   std::vector<std::optional<double>> fixed_permeability;
+  // Per element: its material's own matrix `permeability`, or none (the porosity law's k_m);
+  // empty: none anywhere. Under the imposed one; a joint's transmissivity adds to it.
+  std::vector<std::optional<double>> material_permeability;
   // Per block: Biot's coefficient α in [0, 1] (seepage_forces.hpp). Empty: 1 for every block.
   std::vector<double> biot_coefficients;
   // Joints as embedded fractures (embedded_joints.hpp), when the scenario gives their hydraulic
@@ -187,6 +191,7 @@ class StaggeredLoop final : public PassRunner {
  private:
   std::vector<geometry::Polygon> current_blocks() const;
   hydro::FlowSolution solve_flow(const std::vector<geometry::Polygon>& blocks);
+  void set_joint_zone_matrix_permeability();
   void relax(hydro::FlowSolution& fresh);
   void step_mechanics(PassReport& report);
   void measure_convergence(PassReport& report, double unrelaxed_head_change);

@@ -42,4 +42,11 @@ PermeabilityTensor embedded_fracture_permeability(double aperture, double length
   return {scale * direction.x * direction.x, scale * direction.x * direction.y, scale * direction.y * direction.y};
 }
 
+double permeability_across_open_fraction(double matrix_permeability, double open_fraction, double cap) {
+  const double bound = std::max(cap, matrix_permeability);
+  if (!(open_fraction > 0.0)) return matrix_permeability;
+  if (open_fraction >= 1.0) return bound;
+  return std::min(matrix_permeability / (1.0 - open_fraction), bound);
+}
+
 }  // namespace hydrodda::hydro

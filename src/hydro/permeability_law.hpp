@@ -68,4 +68,12 @@ struct JointApertureLaw {
 PermeabilityTensor embedded_fracture_permeability(double aperture, double length, double area,
                                                   geometry::Point direction);
 
+// An element whose open (unfilled) fraction f = A_f/A_e lies across it: open water, which
+// resists nothing, in series with rock of permeability k_m over the rest of its width, the
+// harmonic mean k_m / (1 − f), at most `cap` (and never under k_m). A joint opened as wide as
+// the element is then no barrier across it, as a thin one (f → 0) leaves k_m unchanged; along
+// an open joint the cubic law carries the flow, beside which the excess k_m f/(1 − f) is
+// negligible (a²/12 ≫ k_m wherever a joint is open).
+double permeability_across_open_fraction(double matrix_permeability, double open_fraction, double cap);
+
 }  // namespace hydrodda::hydro

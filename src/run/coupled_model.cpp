@@ -52,12 +52,12 @@ CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::option
   settings.permeability = make_element_permeability_model(s, mesh_);
   // Left empty where no region, material or joint barrier fixes a permeability: one optional per
   // element is 16 MB at a million triangles.
-  if (s.any_joint_barrier() ||
-      std::any_of(s.flow->regions.begin(), s.flow->regions.end(),
-                  [](const scenario::FlowRegion& r) { return r.permeability.has_value(); }) ||
-      std::any_of(s.materials.begin(), s.materials.end(),
+  if (s.any_joint_barrier() || std::any_of(s.flow->regions.begin(), s.flow->regions.end(),
+                                           [](const scenario::FlowRegion& r) { return r.permeability.has_value(); }))
+    settings.fixed_permeability = find_imposed_permeability(s, mesh_);
+  if (std::any_of(s.materials.begin(), s.materials.end(),
                   [](const scenario::MaterialDefinition& m) { return m.permeability.has_value(); }))
-    settings.fixed_permeability = find_fixed_permeability(s, mesh_);
+    settings.material_permeability = find_material_permeability(s, mesh_);
   if (s.any_joint_hydraulic()) {
     ModelGeometry geometry = build_model_geometry(s);
     coupling::JointApertureLaws laws = make_joint_aperture_laws(s, geometry.traces);

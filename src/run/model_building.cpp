@@ -319,22 +319,13 @@ std::vector<int> select_triangles_in(const mesh::TriangleMesh& mesh, const geome
   return out;
 }
 
-std::vector<std::optional<double>> find_fixed_permeability(const Scenario& s, const mesh::TriangleMesh& mesh) {
+std::vector<std::optional<double>> find_imposed_permeability(const Scenario& s, const mesh::TriangleMesh& mesh) {
   std::vector<std::optional<double>> fixed(mesh.triangle_count());
   const auto& regions = s.flow->regions;
   for (auto r = regions.rbegin(); r != regions.rend(); ++r) {
     if (!r->permeability) continue;
     for (int t : select_triangles_in(mesh, r->polygon))
       if (!fixed[t]) fixed[t] = *r->permeability;
-  }
-  // Under the flow regions, a material's own fixed permeability.
-  const bool any_material_fixes = std::any_of(s.materials.begin(), s.materials.end(),
-                                              [](const scenario::MaterialDefinition& m) { return m.permeability; });
-  if (any_material_fixes) {
-    const std::vector<int> material = find_element_materials(s, mesh);
-    for (std::size_t t = 0; t < fixed.size(); ++t)
-      if (!fixed[t] && material[t] >= 0 && s.materials[material[t]].permeability)
-        fixed[t] = *s.materials[material[t]].permeability;
   }
   // A joint barrier's strip prevails over the regions: its elements are those of its mesh
   // region (joint_barriers.hpp).
@@ -346,6 +337,25 @@ std::vector<std::optional<double>> find_fixed_permeability(const Scenario& s, co
     const auto k = strip_permeability.find(mesh.region_names[static_cast<std::size_t>(region)]);
     if (k != strip_permeability.end()) fixed[t] = k->second;
   }
+  return fixed;
+}
+
+std::vector<std::optional<double>> find_material_permeability(const Scenario& s, const mesh::TriangleMesh& mesh) {
+  std::vector<std::optional<double>> fixed(mesh.triangle_count());
+  const bool any_material_fixes = std::any_of(s.materials.begin(), s.materials.end(),
+                                              [](const scenario::MaterialDefinition& m) { return m.permeability; });
+  if (!any_material_fixes) return fixed;
+  const std::vector<int> material = find_element_materials(s, mesh);
+  for (std::size_t t = 0; t < fixed.size(); ++t)
+    if (material[t] >= 0 && s.materials[material[t]].permeability) fixed[t] = *s.materials[material[t]].permeability;
+  return fixed;
+}
+
+std::vector<std::optional<double>> find_fixed_permeability(const Scenario& s, const mesh::TriangleMesh& mesh) {
+  std::vector<std::optional<double>> fixed = find_imposed_permeability(s, mesh);
+  const std::vector<std::optional<double>> material = find_material_permeability(s, mesh);
+  for (std::size_t t = 0; t < fixed.size(); ++t)
+    if (!fixed[t]) fixed[t] = material[t];
   return fixed;
 }
 

@@ -106,6 +106,12 @@ coupling::PermeabilityModel make_element_permeability_model(const scenario::Scen
 // material's `permeability`; a joint barrier's strip over either; or none.
 std::vector<std::optional<double>> find_fixed_permeability(const scenario::Scenario& scenario,
                                                            const mesh::TriangleMesh& mesh);
+// Its two parts: what regions and barrier strips impose (a joint's transmissivity does not
+// add to these), and the materials' own matrix `permeability` (to which it does).
+std::vector<std::optional<double>> find_imposed_permeability(const scenario::Scenario& scenario,
+                                                             const mesh::TriangleMesh& mesh);
+std::vector<std::optional<double>> find_material_permeability(const scenario::Scenario& scenario,
+                                                              const mesh::TriangleMesh& mesh);
 
 // k per triangle of the unfractured case: intact rock of the matrix porosity everywhere
 // (k_m = Kozeny–Carman of φ_m, which both laws give where no fracture area lies), except where

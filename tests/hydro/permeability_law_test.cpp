@@ -62,5 +62,20 @@ TEST(CubicLaw, TipLengthIsWhereTheJointCarriesWhatTheMatrixDoes) {
   EXPECT_THROW(cubic_law_tip_length(1e-3, -1.0), std::invalid_argument);
 }
 
+// Across an element whose open fraction f lies in a layer across it: rock of k_m over (1 − f)
+// of its width in series with water, 1/k = (1 − f)/k_m + f/∞, so k = k_m/(1 − f) exactly (the
+// harmonic mean of layers in series); nothing open leaves k_m, a negative fraction (blocks
+// overlapping by their penetration) too, and the open water is bounded by the cap.
+TEST(OpenFraction, RockInSeriesWithOpenWaterAcrossTheElement) {
+  const double k_m = 1e-19, cap = kDefaultFracturePermeabilityCap;
+  EXPECT_EQ(permeability_across_open_fraction(k_m, 0.0, cap), k_m);
+  EXPECT_EQ(permeability_across_open_fraction(k_m, -1e-6, cap), k_m);
+  for (const double f : {1e-6, 0.25, 0.5, 0.9, 0.999})
+    EXPECT_NEAR(permeability_across_open_fraction(k_m, f, cap), k_m / (1.0 - f), 1e-15 * k_m / (1.0 - f)) << f;
+  EXPECT_EQ(permeability_across_open_fraction(k_m, 1.0, cap), cap);
+  EXPECT_EQ(permeability_across_open_fraction(k_m, 1.0 - 1e-16, cap), cap);
+  EXPECT_EQ(permeability_across_open_fraction(1e-5, 0.5, cap), 1e-5);  // a k_m over the cap stays
+}
+
 }  // namespace
 }  // namespace hydrodda::hydro
