@@ -1,12 +1,19 @@
 // A reference for Flemisch et al. (2018) Benchmark 2 (regular fracture network), built
 // independently of hydrodda's elements: cell-centred finite volumes with two-point fluxes on
-// an N × N grid of the unit square whose cell faces carry the six fractures. A fracture face
-// adds its resistance across, a / K_f, in series with the two half cells:
-//   F_ij = h (p_i − p_j) / (h / K + a / K_f)       (face length h, K = 1 in the matrix),
-// exact for a thin layer of aperture a between the cells (the along-fracture conductance
-// a K_f and the matrix the fracture displaces are of order 1e-4 and left out). Inflow 1 on the
-// left, p = 1 on the right (F = 2 (p_i − 1) at the boundary face), no flow at the top and bottom.
-// TPFA is exact for this grid's K = I, so the error is O(h²) (the sampling below keeps it so).
+// an N × N grid of the unit square whose cell faces carry the six fractures. Each fracture face
+// is a cell of its own, of aperture a and permeability K_f (the hybrid-dimensional model of the
+// benchmark): across, it links each of its two matrix cells through the half cell and half the
+// aperture in series,
+//   F_cf = h (p_c − p_f) / (h/2 / K + a/2 / K_f)        (face length h, K = 1 in the matrix),
+// so that the two links in series are h / (h/K + a/K_f), exact for a thin layer of aperture a
+// between the cells (the blocking case, K_f = 1e-4); along, it links the grid vertex at each of
+// its ends through half its length, F = K_f a (p_f − p_v) / (h/2), and the vertices are the
+// fracture network's nodes, where fractures meet and cross (the conductive case, K_f = 1e4,
+// K_f a = 1). The matrix the fractures displace (a = 1e-4) is left out. Inflow 1 on the left
+// (the matrix's faces), p = 1 on the right (F = 2 (p_i − 1) at the boundary face; a fracture
+// ending there, F = 2 K_f a (p_f − 1) / h), no flow at the top and bottom and into the
+// fractures' left ends. TPFA is exact for this grid's K = I, so the error is O(h²) (the
+// sampling below keeps it so).
 //
 // Writes the pressure along the segment (x0, y0)–(x1, y1) at `samples` points as
 // "arc_length,pressure" rows: each point takes its cell's value plus its cell's gradient from
@@ -15,12 +22,13 @@
 //   g++ -O2 -std=c++20 -I/usr/include/eigen3 scripts/flemisch_b2_reference.cpp -o b2_reference
 //   ./b2_reference N Kf [x0 y0 x1 y1 samples] > reference.csv
 // (N a multiple of 8, so that x, y = 0.5, 0.625, 0.75 are cell faces; Kf = 1e-4 blocking,
-// 1e4 conducting, which this two-point scheme does not represent along the fractures).
+// 1e4 conductive).
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCore>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -53,31 +61,63 @@ int main(int argc, char** argv) {
   const int samples = argc > 7 ? std::atoi(argv[7]) : 901;
   const int n = n_cells;
   const auto id = [n](int i, int j) { return j * n + i; };
+  // Unknowns: the n² cells, then the grid's (n + 1)² vertices (the fracture network's nodes;
+  // a vertex no fracture face reaches is an isolated unknown fixed at 0 below), then one per
+  // fracture face, numbered as met.
+  const int cells = n * n, vertices = (n + 1) * (n + 1);
+  const auto vertex = [n, cells](int i, int j) { return cells + j * (n + 1) + i; };
   std::vector<Eigen::Triplet<double>> a;
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(n * n);
+  std::vector<double> f(cells + vertices, 0.0);
+  std::vector<bool> reached(vertices, false);
+  int unknowns = cells + vertices;
   const auto link = [&](int p, int q, double t) {
     a.emplace_back(p, p, t);
     a.emplace_back(q, q, t);
     a.emplace_back(p, q, -t);
     a.emplace_back(q, p, -t);
   };
+  const double across = h / (h / 2 + aperture / 2 / kf), along = kf * aperture / (h / 2);
+  // A fracture face between the cells c0 and c1 (−1: none) and the vertices v0 and v1.
+  const auto fracture_face = [&](int c0, int c1, int vi0, int vj0, int vi1, int vj1) {
+    const int face = unknowns++;
+    f.push_back(0.0);
+    if (c0 >= 0) link(c0, face, across);
+    if (c1 >= 0) link(c1, face, across);
+    for (const auto& [vi, vj] : {std::pair{vi0, vj0}, std::pair{vi1, vj1}}) {
+      if (vi == n) {  // on the right side: p = 1
+        a.emplace_back(face, face, along);
+        f[face] += along;
+        continue;
+      }
+      link(face, vertex(vi, vj), along);
+      reached[vj * (n + 1) + vi] = true;
+    }
+  };
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
-      if (i + 1 < n) link(id(i, j), id(i + 1, j), h / (h + (vertical_fracture(i + 1, j) ? aperture / kf : 0.0)));
-      if (j + 1 < n) link(id(i, j), id(i, j + 1), h / (h + (horizontal_fracture(i, j + 1) ? aperture / kf : 0.0)));
+      if (i + 1 < n) {
+        if (vertical_fracture(i + 1, j)) fracture_face(id(i, j), id(i + 1, j), i + 1, j, i + 1, j + 1);
+        else link(id(i, j), id(i + 1, j), 1.0);
+      }
+      if (j + 1 < n) {
+        if (horizontal_fracture(i, j + 1)) fracture_face(id(i, j), id(i, j + 1), i, j + 1, i + 1, j + 1);
+        else link(id(i, j), id(i, j + 1), 1.0);
+      }
     }
+  for (int v = 0; v < vertices; ++v)
+    if (!reached[v]) a.emplace_back(cells + v, cells + v, 1.0);
   for (int j = 0; j < n; ++j) {
-    f[id(0, j)] += h;                     // inflow 1 through the left face
+    f[id(0, j)] += h;                                  // inflow 1 through the left face
     a.emplace_back(id(n - 1, j), id(n - 1, j), 2.0);  // h / (h / 2) to p = 1 on the right
     f[id(n - 1, j)] += 2.0;
   }
-  Eigen::SparseMatrix<double> matrix(n * n, n * n);
+  Eigen::SparseMatrix<double> matrix(unknowns, unknowns);
   matrix.setFromTriplets(a.begin(), a.end());
   Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double>> cg;
   cg.setTolerance(1e-13);
   cg.setMaxIterations(100000);
   cg.compute(matrix);
-  const Eigen::VectorXd p = cg.solve(f);
+  const Eigen::VectorXd p = cg.solve(Eigen::Map<const Eigen::VectorXd>(f.data(), unknowns));
   std::fprintf(stderr, "N %d: %ld CG iterations, relative residual %.2e\n", n, static_cast<long>(cg.iterations()), cg.error());
 
   std::printf("arc_length,pressure\n");
