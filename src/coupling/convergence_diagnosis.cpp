@@ -109,14 +109,17 @@ std::string smaller_relaxation(double relaxation) {
 // What to try when the loop swings or jumps between states rather than settling: an
 // acceleration if it had none, else a smaller relaxation or more steps, and that a jacking joint
 // may have no steady state.
+std::string chattering_joints(const LoopAsRun& loop) {
+  return "the joints open and shut from pass to pass (a median of " + std::to_string(loop.crossings_switched) +
+         " of their crossings with fluid elements switched between open and closed, and " +
+         std::to_string(loop.contacts_changed) +
+         " contacts changed state, a pass): no relaxation or acceleration of the heads settles such a loop "
+         "(docs/studies/2026-11-29-loop-convergence.md), and its answer holds only to how far it moved over "
+         "these passes";
+}
+
 std::string unsettled_advice(const LoopAsRun& loop) {
-  if (loop.crossings_switched >= kChatteringCrossings)
-    return "the joints open and shut from pass to pass (a median of " + std::to_string(loop.crossings_switched) +
-           " of their crossings with fluid elements switched between open and closed, and " +
-           std::to_string(loop.contacts_changed) +
-           " contacts changed state, a pass): no relaxation or acceleration of the heads settles such a loop "
-           "(docs/studies/2026-11-29-loop-convergence.md), and its answer holds only to how far it moved over "
-           "these passes";
+  if (loop.crossings_switched >= kChatteringCrossings) return chattering_joints(loop);
   if (loop.acceleration == "none")
     return "try coupling.acceleration = \"anderson\" (or \"aitken\"), or " + smaller_relaxation(loop.relaxation);
   return "the " + std::string(loop.acceleration) + " acceleration did not settle it: " +
@@ -247,7 +250,8 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
                                        "(history.csv's largest_opening shows a joint that keeps opening)")
                          : std::string("): the blocks keep moving from pass to pass; try coupling.settle = true (each "
                                        "pass steps on until the blocks are at rest) or more mechanics.steps per pass, "
-                                       "or check that the fluid load leaves the blocks an equilibrium"));
+                                       "or check that the fluid load leaves the blocks an equilibrium")) +
+               (loop.crossings_switched >= kChatteringCrossings ? "; " + chattering_joints(loop) : std::string());
       break;
   }
   return d;

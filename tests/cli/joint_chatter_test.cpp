@@ -1,7 +1,8 @@
 // A coupled run whose joints open and shut from pass to pass, through the real program: the
 // faulted seal at 1,500 m of head (0.58 of its hand jacking head), whose loop swings with a
 // hundred and more joint crossings switching every pass (docs/studies/2026-11-29-loop-convergence.md).
-// Its message says that the joints chatter, with the median crossings and contacts of
+// Its message (after the drift it reads as, the seal rising a little each pass) says that the
+// joints chatter, with the median crossings and contacts of
 // history.csv's passes, and advises no relaxation or acceleration of the heads.
 
 #include <gtest/gtest.h>
