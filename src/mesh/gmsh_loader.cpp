@@ -1,7 +1,6 @@
 // generate_mesh and read_msh through the Gmsh plugin (mesh/gmsh/gmsh_mesher.cpp), loaded with
 // dlopen the first time a mesh is needed, so that a run without a fluid mesh does not load
 // Gmsh and OpenCASCADE at its start (see gmsh_mesher.cpp).
-#include <dlfcn.h>
 
 #include <filesystem>
 #include <mutex>
@@ -25,17 +24,10 @@ struct Plugin {
 
 // Beside the executable, else where the build made it. Loaded once, never unloaded.
 Plugin load_plugin() {
-  const fs::path path = base::find_beside_program("hydrodda_gmsh_mesher.so", HYDRODDA_GMSH_MESHER);
-  void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-  if (!handle) {
-    const char* why = ::dlerror();
-    throw std::runtime_error("cannot load the Gmsh mesher '" + path.string() + "': " + (why ? why : "unknown error"));
-  }
+  const base::Plugin library("hydrodda_gmsh_mesher.so", HYDRODDA_GMSH_MESHER, "the Gmsh mesher");
   Plugin plugin;
-  plugin.generate = reinterpret_cast<decltype(plugin.generate)>(::dlsym(handle, "hydrodda_gmsh_generate_mesh"));
-  plugin.read = reinterpret_cast<decltype(plugin.read)>(::dlsym(handle, "hydrodda_gmsh_read_msh"));
-  if (!plugin.generate || !plugin.read)
-    throw std::runtime_error("the Gmsh mesher '" + path.string() + "' lacks its entry points");
+  plugin.generate = library.entry<decltype(plugin.generate)>("hydrodda_gmsh_generate_mesh");
+  plugin.read = library.entry<decltype(plugin.read)>("hydrodda_gmsh_read_msh");
   return plugin;
 }
 

@@ -2,7 +2,6 @@
 // (figures/figures_plugin.cpp), loaded with dlopen the first time a figure is drawn: Cairo
 // brings some twenty libraries (fontconfig, freetype, X11's) whose loading and symbol lookup
 // took half of the CPU time of a run that draws nothing (docs/performance.md, "Start-up").
-#include <dlfcn.h>
 
 #include <mutex>
 #include <stdexcept>
@@ -22,18 +21,11 @@ struct Plugin {
 
 // Beside the executable, else where the build made it. Loaded once, never unloaded.
 Plugin load_plugin() {
-  const std::filesystem::path path = base::find_beside_program("hydrodda_figures.so", HYDRODDA_FIGURES);
-  void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-  if (!handle) {
-    const char* why = ::dlerror();
-    throw std::runtime_error("cannot load the figure drawing '" + path.string() + "': " + (why ? why : "unknown error"));
-  }
+  const base::Plugin library("hydrodda_figures.so", HYDRODDA_FIGURES, "the figure drawing");
   Plugin plugin;
-  plugin.field = reinterpret_cast<decltype(plugin.field)>(::dlsym(handle, "hydrodda_render_field_figure"));
-  plugin.line = reinterpret_cast<decltype(plugin.line)>(::dlsym(handle, "hydrodda_render_line_plot"));
-  plugin.preview = reinterpret_cast<decltype(plugin.preview)>(::dlsym(handle, "hydrodda_render_preview_figure"));
-  if (!plugin.field || !plugin.line || !plugin.preview)
-    throw std::runtime_error("the figure drawing '" + path.string() + "' lacks its entry points");
+  plugin.field = library.entry<decltype(plugin.field)>("hydrodda_render_field_figure");
+  plugin.line = library.entry<decltype(plugin.line)>("hydrodda_render_line_plot");
+  plugin.preview = library.entry<decltype(plugin.preview)>("hydrodda_render_preview_figure");
   return plugin;
 }
 

@@ -12,7 +12,6 @@
 // mpi.h for its version macros only: the calls are the plugin's.
 #define OMPI_SKIP_MPICXX 1
 #define MPICH_SKIP_MPICXX 1
-#include <dlfcn.h>
 #include <mpi.h>
 #include <signal.h>
 
@@ -39,15 +38,9 @@ constexpr int kAnyRank = -1;
 
 // The plugin beside the executable, else where the build made it; loaded once, never unloaded.
 const HydroddaMpiCalls& load_mpi() {
-  const fs::path path = base::find_beside_program("hydrodda_mpi.so", HYDRODDA_MPI_PLUGIN);
-  void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_GLOBAL);  // global: Open MPI dlopens its own components
-  if (!handle) {
-    const char* why = ::dlerror();
-    throw std::runtime_error("cannot load the MPI plugin '" + path.string() + "': " + (why ? why : "unknown error"));
-  }
-  const auto calls = reinterpret_cast<decltype(&hydrodda_mpi_calls)>(::dlsym(handle, "hydrodda_mpi_calls"));
-  if (!calls) throw std::runtime_error("the MPI plugin '" + path.string() + "' lacks its entry point");
-  return *calls();
+  // global: Open MPI dlopens its own components, which look for its symbols.
+  const base::Plugin library("hydrodda_mpi.so", HYDRODDA_MPI_PLUGIN, "the MPI plugin", true);
+  return *library.entry<decltype(&hydrodda_mpi_calls)>("hydrodda_mpi_calls")();
 }
 
 const HydroddaMpiCalls& mpi() {
