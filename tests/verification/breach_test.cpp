@@ -9,7 +9,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <string>
 #include <nlohmann/json.hpp>
 
@@ -110,15 +109,30 @@ TEST(Breach, BracketsTheLiftOffHeadOfASealOverItsReservoir) {
 // hold back the reservoir's pressure as rock would (docs/coupling.md, "One transmissivity per
 // joint"), or the seal floats on a head drop across its own gap and "holds" past H*.
 TEST(Breach, BracketsTheLiftOffHeadOfASealWithJointApertures) {
-  std::ifstream in(fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/verification/seal_lift_off.toml");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string joint = "[joint]\nfriction_angle = 30.0\n";
-  ASSERT_NE(text.find(joint), std::string::npos);
-  text.replace(text.find(joint), joint.size(),
-               joint + "residual_aperture = 1.0e-5\nnormal_stiffness = 2.0e10\nmax_closure = 5.0e-5\n");
-  const fs::path dir = fresh_dir("hydrodda-breach-lift-off-apertures-scenario");
-  fs::create_directories(dir);
-  std::ofstream(dir / "seal.toml") << text;
-  expect_lift_off_bracketed(dir / "seal.toml", "hydrodda-breach-lift-off-apertures");
-  fs::remove_all(dir);
+  const fs::path file = hydrodda::testing::edited_scenario(
+      fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/verification/seal_lift_off.toml", "hydrodda-breach-lift-off-apertures",
+      {{"[joint]\nfriction_angle = 30.0\n",
+        "[joint]\nfriction_angle = 30.0\nresidual_aperture = 1.0e-5\nnormal_stiffness = 2.0e10\nmax_closure = 5.0e-5\n"}});
+  expect_lift_off_bracketed(file, "hydrodda-breach-lift-off-apertures");
+  fs::remove(file);
+}
+
+// The seal over the reservoir (scenarios/examples/seal_over_reservoir.toml; hand lift-off head
+// 5 + (2.5e6 + 2400 × 9.81 × 20)/9810 = 307.8 m) at 316 m, 2.7% above it: its joints' elements
+// once took rock across the gap it opened, so the pressure under it fell as it rose and it
+// "converged" lifted 0.64 m; with the gap in series as open water it has no equilibrium
+// (measured: 19 passes, block 64 moved 2.22 m; docs/studies/2026-11-29-at-rest.md).
+TEST(Breach, ASealPastItsLiftOffDoesNotFloatOnItsOwnGap) {
+  const fs::path file = hydrodda::testing::edited_scenario(
+      fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/seal_over_reservoir.toml", "hydrodda-seal-past-lift-off",
+      {{"head = 125.0 ", "head = 316.0 "}});
+  const fs::path out = fresh_dir("hydrodda-seal-past-lift-off-out");
+  const auto result = run_program("-q run " + file.string() + " --threads 1 -o " + out.string());
+  EXPECT_EQ(result.exit_code, 1) << result.output;
+  std::ifstream in(out / "summary.json");
+  const nlohmann::json summary = nlohmann::json::parse(in);
+  EXPECT_EQ(summary["status"].get<std::string>(), "no equilibrium");
+  EXPECT_FALSE(summary["converged"].get<bool>());
+  fs::remove_all(out);
+  fs::remove(file);
 }
