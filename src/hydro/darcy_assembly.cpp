@@ -273,6 +273,7 @@ void DarcyAssembler::setup_pattern() {
 }
 
 void DarcyAssembler::assemble(PermeabilityView permeability) {
+  storage_.reset();
   std::fill(matrix_.valuePtr(), matrix_.valuePtr() + matrix_.nonZeros(), 0.0);
   // Right-hand side: f_i = −∫ φ_i q_N ds (a prescribed outflow removes water at i) ...
   for (int u = 0; u < unknown_count(); ++u) rhs_[u] = -neumann_outflow_[free_nodes_[u]];
@@ -308,31 +309,71 @@ void DarcyAssembler::assemble(PermeabilityView permeability) {
   }
 }
 
-// A_uv += c M_e(i, j) for the free corners u, v of each triangle, into the pattern's entries;
-// f_u += c Σ_j M_e(i, j) h_old_j, less c M_e(i, j) h_j for each fixed corner j.
-void DarcyAssembler::add_storage(double storage_over_step, MassMatrix kind, std::span<const double> previous_heads) {
+// A_uv += c_e M_e(i, j) for the free corners u, v of each triangle, into the pattern's entries;
+// f_u += c_e Σ_j M_e(i, j) h_old_j, less c_e M_e(i, j) h_j for each fixed corner j.
+void DarcyAssembler::add_storage(std::span<const double> storage_over_step, MassMatrix kind,
+                                 std::span<const double> previous_heads) {
   if (previous_heads.size() != mesh_.nodes.size())
     throw std::invalid_argument("flow: the previous heads must be one per node");
-  if (!std::isfinite(storage_over_step) || storage_over_step < 0.0)
-    throw std::invalid_argument("flow: the storage coefficient over the step must be finite and not negative");
+  if (storage_over_step.size() != mesh_.triangles.size())
+    throw std::invalid_argument("flow: the storage coefficients must be one per triangle");
+  for (double c : storage_over_step)
+    if (!std::isfinite(c) || c < 0.0)
+      throw std::invalid_argument("flow: the storage coefficient over the step must be finite and not negative");
+  if (storage_) throw std::logic_error("flow: storage added twice to one assembly");
   double* values = matrix_.valuePtr();
   const int* outer = matrix_.outerIndexPtr();
   for (int t = 0; t < mesh_.triangle_count(); ++t) {
     const auto& tri = mesh_.triangles[t];
+    const double c = storage_over_step[t];
     const auto m = compute_element_mass_matrix(std::abs(mesh::triangle_area(mesh_, t)), kind);
     for (int i = 0; i < 3; ++i) {
       const int u = unknown_of_node_[tri[i]];
       if (u < 0) continue;
-      values[outer[u + 1] - 1] += storage_over_step * m[i][i];
+      values[outer[u + 1] - 1] += c * m[i][i];
       for (int j = 0; j < 3; ++j) {
-        rhs_[u] += storage_over_step * m[i][j] * previous_heads[tri[j]];
-        if (unknown_of_node_[tri[j]] < 0) rhs_[u] -= storage_over_step * m[i][j] * fixed_head_[tri[j]];
+        rhs_[u] += c * m[i][j] * previous_heads[tri[j]];
+        if (unknown_of_node_[tri[j]] < 0) rhs_[u] -= c * m[i][j] * fixed_head_[tri[j]];
       }
     }
     const int* entry = &entry_[3 * static_cast<std::size_t>(t)];
     for (int p = 3; p < 6; ++p)
-      if (entry[p - 3] >= 0) values[entry[p - 3]] += storage_over_step * m[kLocalPairs[p][0]][kLocalPairs[p][1]];
+      if (entry[p - 3] >= 0) values[entry[p - 3]] += c * m[kLocalPairs[p][0]][kLocalPairs[p][1]];
   }
+  storage_ = Storage{{storage_over_step.begin(), storage_over_step.end()}, kind,
+                     {previous_heads.begin(), previous_heads.end()}};
+}
+
+void DarcyAssembler::add_storage(double storage_over_step, MassMatrix kind, std::span<const double> previous_heads) {
+  add_storage(std::vector<double>(mesh_.triangles.size(), storage_over_step), kind, previous_heads);
+}
+
+// (c M (h − h_old))_i = Σ_e c_e Σ_j M_e(i, j) (h_j − h_old,j) for the nodes of [first, last),
+// each from its triangles in triangle order: the same sums whatever the shares.
+void DarcyAssembler::add_storage_rates(const std::vector<double>& h, int first, int last,
+                                       std::vector<long double>& ah) const {
+  for (int t = 0; t < mesh_.triangle_count(); ++t) {
+    const auto& tri = mesh_.triangles[t];
+    const double c = storage_->coefficient[t];
+    if (c == 0.0) continue;
+    const auto m = compute_element_mass_matrix(std::abs(mesh::triangle_area(mesh_, t)), storage_->kind);
+    for (int i = 0; i < 3; ++i) {
+      if (tri[i] < first || tri[i] >= last) continue;
+      long double rate = 0.0L;
+      for (int j = 0; j < 3; ++j)
+        if (m[i][j] != 0.0) rate += static_cast<long double>(m[i][j]) * (h[tri[j]] - storage_->previous_heads[tri[j]]);
+      ah[tri[i]] += static_cast<long double>(c) * rate;
+    }
+  }
+}
+
+double DarcyAssembler::storage_rate(const std::vector<double>& h) const {
+  if (!storage_) return 0.0;
+  std::vector<long double> rates(h.size(), 0.0L);
+  add_storage_rates(h, 0, static_cast<int>(h.size()), rates);
+  long double total = 0.0L;
+  for (long double r : rates) total += r;
+  return static_cast<double>(total);
 }
 
 // (A h)_i for every node, from the element matrices kept by assemble(), in the
@@ -357,6 +398,7 @@ std::vector<long double> DarcyAssembler::compute_a_times_h(const std::vector<dou
         if (j >= first && j < last) ah[j] -= flow;
       }
     }
+    if (storage_) add_storage_rates(h, first, last, ah);
   };
   over_thread_shares(nodes, add_for_nodes);
   return ah;

@@ -8,13 +8,15 @@
 // linear solver does with it is darcy_solver.hpp's; what is made of its answer,
 // darcy_postprocessing.hpp's.
 //
-// Room for storage: add_storage() adds S/Δt · M, M the P1 mass matrix (lumped or consistent),
-// and S/Δt · M h_old to the right-hand side, for a backward-Euler step of
-//   S ∂h/∂t − ∇·(K ∇h) = 0.
-// No run takes a step yet: steady solves never add it.
+// Storage: add_storage() adds Σ_e c_e M_e, M_e the P1 mass matrix of element e (lumped or
+// consistent) and c_e = S_s,e/Δt (S_s the specific storage in head, 1/m), and Σ_e c_e M_e h_old
+// to the right-hand side, for a backward-Euler step of
+//   S_s ∂h/∂t − ∇·(K ∇h) = 0
+// (docs/flow.md, "Transient flow"). Steady solves never add it; assemble() drops it.
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -66,10 +68,17 @@ class DarcyAssembler {
   void check_size(PermeabilityView permeability) const;
   // A and f from an intrinsic permeability (m²) per triangle; A's pattern stays.
   void assemble(PermeabilityView permeability);
-  // A += c M and f += c M h_old over the unknowns (the fixed heads' columns of c M carried to
-  // f), c = S/Δt (1/s): the storage term of a backward-Euler step from `previous_heads` (one
-  // per node). residual() and the boundary flows stay those of the conductance alone.
+  // A += Σ_e c_e M_e and f += Σ_e c_e M_e h_old over the unknowns (the fixed heads' columns
+  // carried to f), c_e = S_s,e/Δt (1/s, one per triangle, or one for all): the storage term of
+  // a backward-Euler step from `previous_heads` (one per node). From here until the next
+  // assemble(), the residual, A h and so the boundary flows count the water each node stores,
+  // c M (h − h_old): a fixed node's reaction includes what its own storage takes.
+  void add_storage(std::span<const double> storage_over_step, MassMatrix kind, std::span<const double> previous_heads);
   void add_storage(double storage_over_step, MassMatrix kind, std::span<const double> previous_heads);
+  bool has_storage() const { return storage_.has_value(); }
+  // The rate at which water goes into storage, Σ_i (c M (h − h_old))_i (m²/s per metre of
+  // thickness); 0 without storage.
+  double storage_rate(const std::vector<double>& h) const;
   // The upper triangle of A over the unknowns, and f.
   const SparseMatrix& matrix() const { return matrix_; }
   const Eigen::VectorXd& rhs() const { return rhs_; }
@@ -84,7 +93,8 @@ class DarcyAssembler {
 
   // Every node's head: the fixed ones and x over the unknowns.
   std::vector<double> expand_heads(const Eigen::VectorXd& x) const;
-  // (A h)_i for every node, from the last assemble(), in extended precision (see the .cpp).
+  // (A h)_i for every node, from the last assemble(), in extended precision (see the .cpp); with
+  // storage, plus (c M (h − h_old))_i.
   std::vector<long double> compute_a_times_h(const std::vector<double>& h) const;
   struct Residual {
     Eigen::VectorXd r;  // f − A x over the unknowns
@@ -114,6 +124,8 @@ class DarcyAssembler {
   void check_every_part_is_fixed() const;
   void number_unknowns();
   void setup_pattern();
+  // Adds (c M (h − h_old))_i to `ah` for the nodes first … last − 1.
+  void add_storage_rates(const std::vector<double>& h, int first, int last, std::vector<long double>& ah) const;
 
   const mesh::TriangleMesh& mesh_;
   DarcyProblem problem_;
@@ -136,6 +148,12 @@ class DarcyAssembler {
   std::vector<FixedShare> fixed_shares_;  // sorted by node
   std::vector<double> prescribed_flow_;   // per mesh boundary: ∫ q_N ds over its flux edges
   std::vector<double> element_coupling_;  // per triangle, K_e(0,1), K_e(0,2), K_e(1,2)
+  struct Storage {                        // the storage term since the last assemble()
+    std::vector<double> coefficient;      // per triangle, c_e = S_s,e/Δt (1/s)
+    MassMatrix kind = MassMatrix::lumped;
+    std::vector<double> previous_heads;   // per node
+  };
+  std::optional<Storage> storage_;
   SparseMatrix matrix_;                   // upper triangle over the unknowns
   Eigen::VectorXd rhs_;
 };

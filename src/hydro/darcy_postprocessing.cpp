@@ -17,7 +17,11 @@ void compute_boundary_flows(const DarcyAssembler& system, FlowSolution& out) {
     out.boundary_flows.push_back({system.mesh().boundary_names[b], flow[b]});
     sum += flow[b];
   }
-  const double scale = DarcyAssembler::net_boundary_flow(flow);
+  if (system.has_storage()) {  // a transient step: what the boundaries let in, storage takes
+    out.storage_rate = system.storage_rate(out.head);
+    sum += out.storage_rate;
+  }
+  const double scale = std::max(DarcyAssembler::net_boundary_flow(flow), std::abs(out.storage_rate));
   out.balance_error = scale > 0.0 ? std::abs(sum) / scale : 0.0;
 }
 

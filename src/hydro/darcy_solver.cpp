@@ -56,6 +56,7 @@ FlowSolution DarcySolver::solve(PermeabilityView permeability) {
 
 void DarcySolver::factorize_system(SolveTimings& timings, PermeabilityView permeability) {
   const auto clock = Clock::now();
+  step_matrix_values_.clear();
   try {
     solver_->factorize(assembler_.matrix());
   } catch (const SingularSystem&) {
@@ -105,6 +106,42 @@ FlowSolution DarcySolver::solve_with(PermeabilityView permeability) {
   timings.postprocess = seconds_since(clock);
   out.timings = timings;
   out.refinement_steps = refinement_steps;
+  return out;
+}
+
+FlowSolution DarcySolver::solve_step(PermeabilityView permeability, std::span<const double> storage_over_step,
+                                     MassMatrix kind, std::span<const double> previous_heads) {
+  assembler_.check_size(permeability);
+  SolveTimings timings;
+  auto clock = Clock::now();
+  assembler_.assemble(permeability);
+  assembler_.add_storage(storage_over_step, kind, previous_heads);
+  timings.assemble = seconds_since(clock);
+  Eigen::VectorXd x(unknown_count());
+  int refinement_steps = 0;
+  bool factorised = false;
+  if (unknown_count() > 0) {
+    const SparseMatrix& a = assembler_.matrix();
+    const std::span<const double> values(a.valuePtr(), static_cast<std::size_t>(a.nonZeros()));
+    if (!std::equal(values.begin(), values.end(), step_matrix_values_.begin(), step_matrix_values_.end())) {
+      factorize_system(timings, permeability);
+      step_matrix_values_.assign(values.begin(), values.end());
+      factorised = true;
+    }
+    clock = Clock::now();
+    x = solve_directly(refinement_steps);
+    if (!x.allFinite())
+      throw FlowSolveFailed(describe_flow_failure(assembler_.mesh(), permeability, assembler_.fixed_head(), "its heads came out not finite"));
+    timings.solve = seconds_since(clock);
+  }
+  // The factor holds storage: it is no permeability's alone, so none is kept for reuse.
+  factored_ = kept_ = nullptr;
+  clock = Clock::now();
+  FlowSolution out = make_flow_solution(assembler_, x, permeability);
+  timings.postprocess = seconds_since(clock);
+  out.timings = timings;
+  out.refinement_steps = refinement_steps;
+  out.factorised = factorised;
   return out;
 }
 

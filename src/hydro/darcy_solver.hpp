@@ -36,6 +36,14 @@ class DarcySolver {
   // FlowSolveFailed, in the model's terms, when it cannot (here and in every solve below).
   FlowSolution solve(PermeabilityView permeability);
 
+  // One backward-Euler step of S_s ∂h/∂t − ∇·(K ∇h) = 0 from `previous_heads` (one per node):
+  // (A + Σ_e c_e M_e) h = f + Σ_e c_e M_e h_old, c_e = S_s,e/Δt (1/s, one per triangle), solved
+  // directly with the same refinement as solve(), whose residual then counts the storage. The
+  // matrix is factored again only when its values differ from the last step's (a new Δt or
+  // permeability). The flow's storage_rate and balance_error count the water stored.
+  FlowSolution solve_step(PermeabilityView permeability, std::span<const double> storage_over_step, MassMatrix kind,
+                          std::span<const double> previous_heads);
+
   // New values for the same conditions (the same boundaries, kinds and order), e.g. a head
   // raised between coupling passes: the fixed nodes stay, so the pattern and its analysis are
   // kept. Throws std::invalid_argument when the conditions differ in anything but their values.
@@ -125,6 +133,8 @@ class DarcySolver {
   // The permeability whose factor solver_ holds, and the one offered for reuse: the same, or
   // null when the next solve is to factor afresh.
   std::shared_ptr<const PermeabilityField> factored_, kept_;
+  // The values of the matrix solve_step() last factored; empty when the factor is another's.
+  std::vector<double> step_matrix_values_;
 };
 
 }  // namespace hydrodda::hydro

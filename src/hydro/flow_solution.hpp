@@ -27,7 +27,11 @@ struct FlowSolution {
   std::vector<geometry::Point> flux;      // Darcy velocity q = −K ∇h per triangle, m/s
   std::vector<BoundaryFlow> boundary_flows;  // every named boundary of the mesh, in mesh order
   double reference_head = 0.0;            // h_ref of the over-pressure convention
-  // |Σ boundary flows| / max(total inflow, total outflow); 0 when nothing flows.
+  // A transient step's rate of water going into storage, Σ (S_s M (h − h_old))_i / Δt
+  // (m²/s per metre of thickness; < 0: released); 0 for a steady solve.
+  double storage_rate = 0.0;
+  // |Σ boundary flows + storage rate| / max(total inflow, total outflow, |storage rate|); 0
+  // when nothing flows.
   double balance_error = 0.0;
   int refinement_steps = 0;               // iterative-refinement steps the solve took
   bool factorised = true;                 // factored afresh (false: CG on a kept factor)
