@@ -26,5 +26,11 @@ inline constexpr double kMinPenetrationPerSize = 1e-9;
 // 300 km down); a head lies within that pressure's height of water (1e6 m) of the model.
 inline constexpr double kMaxStress = 1e10;
 inline constexpr double kMaxPressureHead = 1e6;
+// Specific storage and fluid compressibility, 1/Pa: a hundred times the softest clay's (1e-7),
+// a bulk modulus of 100 kPa.
+inline constexpr double kMaxStorage = 1e-5;
+// The most steps a transient run may take at its largest step, end_time / max_time_step: a
+// million steps of a 10^5-node mesh are hours.
+inline constexpr double kMaxTransientSteps = 1e6;
 
 }  // namespace hydrodda::scenario

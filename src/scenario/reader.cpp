@@ -11,6 +11,7 @@
 #include "scenario/input_files.hpp"
 #include "scenario/rollers_and_initial_stress.hpp"
 #include "scenario/table_view.hpp"
+#include "scenario/transient_reading.hpp"
 #include "scenario/validation.hpp"
 
 namespace hydrodda::scenario {
@@ -202,7 +203,7 @@ void read_materials(ReadContext& ctx, const TableView& root, Scenario& s) {
     }
     const TableView m(ctx, *mt, path,
                       {"density", "young", "poisson", "matrix_porosity", "grain_diameter", "biot_coefficient",
-                       "permeability", "region"});
+                       "permeability", "region", "storage"});
     MaterialDefinition material;
     material.name = name;
     material.line = m.line();
@@ -243,6 +244,10 @@ void read_materials(ReadContext& ctx, const TableView& root, Scenario& s) {
     material.biot_coefficient = m.number_or("biot_coefficient", material.biot_coefficient);
     m.require("biot_coefficient", material.biot_coefficient >= 0.0 && material.biot_coefficient <= 1.0,
               "must lie in [0, 1]");
+    material.storage = m.number("storage").value_or(0.0);
+    m.require("storage", material.storage >= 0.0 && material.storage <= kMaxStorage,
+              fmt::format("must lie in [0, {:g}] 1/Pa: the specific storage of the softest clay is some 1e-7 1/Pa",
+                          kMaxStorage));
     s.materials.push_back(std::move(material));
   }
 }
@@ -453,10 +458,13 @@ void read_flow(ReadContext& ctx, const TableView& root, Scenario& s) {
   if (!t) return;
   const TableView f(ctx, *t, "flow",
                     {"fluid", "pressure", "permeability_law", "permeability_cap", "fracture_permeability_cap",
-                     "boundary", "region"});
+                     "boundary", "region", "transient", "probe"});
   FlowDefinition flow;
   if (const toml::table* ft = f.table("fluid")) {
-    const TableView fluid(ctx, *ft, "flow.fluid", {"density", "viscosity"});
+    const TableView fluid(ctx, *ft, "flow.fluid", {"density", "viscosity", "compressibility"});
+    flow.fluid_compressibility = fluid.number("compressibility").value_or(flow.fluid_compressibility);
+    fluid.require("compressibility", flow.fluid_compressibility >= 0.0 && flow.fluid_compressibility <= kMaxStorage,
+                  fmt::format("must lie in [0, {:g}] 1/Pa (water's is 4.5e-10)", kMaxStorage));
     flow.fluid_density = fluid.number_or("density", flow.fluid_density);
     flow.fluid_viscosity = fluid.number_or("viscosity", flow.fluid_viscosity);
     fluid.require("density", flow.fluid_density > 0.0, "must be > 0");
@@ -543,6 +551,8 @@ void read_flow(ReadContext& ctx, const TableView& root, Scenario& s) {
     }
     flow.regions.push_back(std::move(region));
   }
+  read_transient(ctx, f, lowest_head, highest_head, flow);
+  read_probes(ctx, f, flow);
   s.flow = std::move(flow);
 }
 

@@ -100,6 +100,9 @@ struct MaterialDefinition {
   double biot_coefficient = 1.0;
   // m²: the matrix's own permeability, fixed (flow-only runs), in place of the porosity law's.
   std::optional<double> permeability;
+  // 1/Pa: the specific storage at constant strain, 1/M = φ c_f + (α − φ)/K_s (transient flow);
+  // in head, S_s = ρ_w g storage (1/m).
+  double storage = 0.0;
   // Materials by region: a block cut from the domain takes the material whose region holds its
   // centroid, a fluid element the one whose region holds its centroid; empty: the rest.
   Polygon region;
@@ -234,9 +237,28 @@ struct FlowRegion {
   int line = 0;
 };
 
+// Transient flow ([flow.transient]): backward Euler from `initial_head` to `end_time`, the steps
+// growing from `time_step` to `max_time_step` (docs/flow.md, "Transient flow").
+struct TransientDefinition {
+  double end_time = 0.0;                // s
+  double time_step = 0.0;               // s, the first step
+  double max_time_step = 0.0;           // s
+  std::vector<double> output_times;     // s, increasing, in [0, end_time]; the fields' times
+  std::optional<double> initial_head;   // m, everywhere; empty: "steady" (the steady heads at t = 0)
+  int line = 0;
+};
+
+// A point whose head and pressure a run writes at every step (probes.csv).
+struct ProbeDefinition {
+  std::string name;
+  Point point;
+  int line = 0;
+};
+
 struct FlowDefinition {
   double fluid_density = 1000.0;   // kg/m3
   double fluid_viscosity = 1.0e-3; // Pa s
+  double fluid_compressibility = 4.5e-10;  // 1/Pa (the joints' storage, when it comes: not used by the matrix's)
   hydro::PressureConvention pressure = hydro::PressureConvention::overpressure;
   coupling::PermeabilityLaw permeability_law = coupling::PermeabilityLaw::kozeny_carman;
   double permeability_cap = 9.869e-11;  // m2 (1e5 mD)
@@ -244,6 +266,8 @@ struct FlowDefinition {
   double fracture_permeability_cap = hydro::kDefaultFracturePermeabilityCap;
   std::vector<FlowBoundaryCondition> boundaries;
   std::vector<FlowRegion> regions;
+  std::optional<TransientDefinition> transient;
+  std::vector<ProbeDefinition> probes;
 };
 
 // A point the mesh is refined around ([[mesh.refine]]): elements of `size` there, growing
