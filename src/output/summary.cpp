@@ -114,12 +114,14 @@ json to_json(const RunSummary& s) {
     }
     out["flow"] = {{"boundaries", boundaries}, {"balance", s.flow->balance}, {"regions", regions}};
     if (s.flow->iteration) out["flow"]["iteration"] = *s.flow->iteration;
+    if (s.flow->storage_rate) out["flow"]["storage_rate"] = *s.flow->storage_rate;
   }
   if (s.outside_mesh)
     out["outside_mesh"] = {{"largest_distance", s.outside_mesh->largest_distance},
                            {"block", s.outside_mesh->block},
                            {"blocks", s.outside_mesh->blocks}};
   if (s.fractures) out["fractures"] = format_fractures(*s.fractures);
+  if (s.time) out["time"] = *s.time;
   return out;
 }
 

@@ -68,6 +68,9 @@ struct FlowSummary {
   // Coupled runs: the coupling iteration whose flow this is, the last that finished (of a run
   // that failed or was stopped, the one before the pass that did not finish).
   std::optional<int> iteration{};
+  // Transient runs: the rate water goes into storage at the last step (m²/s per metre; < 0:
+  // released), which the boundaries' flows balance with.
+  std::optional<double> storage_rate{};
 };
 
 // One fracture's row (fractures.csv's columns at the run's last step).
@@ -111,6 +114,7 @@ struct RunSummary {
   std::optional<OutsideMeshSummary> outside_mesh;  // coupled runs
   std::optional<FractureSummary> fractures;  // runs of a domain cut by fractures
   std::vector<NamedValue> timings;  // seconds per phase
+  std::optional<double> time;       // transient runs: the time reached (s)
 };
 
 // The summary as JSON text, pretty-printed, full double precision.

@@ -96,12 +96,14 @@ const hydro::FlowSolution& FlowModel::solve() {
   return solution_;
 }
 
-output::RunSummary FlowModel::summary() const {
+output::RunSummary FlowModel::summary() const { return summary(scenario::find_final_load_time(scenario_)); }
+
+output::RunSummary FlowModel::summary(double time) const {
   if (solution_.head.empty()) throw std::logic_error("FlowModel::summary: nothing has been solved yet");
   output::RunSummary summary;
   summary.title = scenario_.title;
   summary.scenario = scenario_.file.string();
-  summary.flow = summarise_flow(scenario_, mesh_, solution_, reference_regions(scenario_, mesh_, scenario::find_final_load_time(scenario_)),
+  summary.flow = summarise_flow(scenario_, mesh_, solution_, reference_regions(scenario_, mesh_, time),
                                 hydro::PermeabilityView(permeability_));
   return summary;
 }

@@ -33,8 +33,13 @@ class FlowModel {
   const std::vector<geometry::Polygon>& blocks() const { return blocks_; }
   const std::vector<double>& permeability() const { return permeability_; }  // per element
   const hydro::FlowSolution& flow() const { return solution_; }  // empty before solve()
-  // summary.json's title and flow (boundary flows, balance, regions); no timings.
+  // A transient run's state, solved outside (run_transient_flow), as the flow summary() reads.
+  void adopt_flow(hydro::FlowSolution solution) { solution_ = std::move(solution); }
+  // summary.json's title and flow (boundary flows, balance, regions); no timings. The regions'
+  // references take the boundary values at the last row of the tables, or at `time` (a
+  // transient run's).
   output::RunSummary summary() const;
+  output::RunSummary summary(double time) const;
   // Seconds per phase: mesh, permeability, flow.
   const std::vector<output::NamedValue>& timings() const { return timings_; }
 

@@ -3,7 +3,9 @@
 #include "run/figures.hpp"
 #include "run/flow_model.hpp"
 #include "run/paraview_output.hpp"
+#include "output/csv_table.hpp"
 #include "run/runs.hpp"
+#include "run/transient_flow.hpp"
 
 namespace hydrodda::run {
 
@@ -15,9 +17,20 @@ void stop_if_requested(const RunContext& context, const output::RunSummary& summ
   if (context.stop_requested()) throw RunFailure(RunStatus::interrupted, "interrupted " + where, summary);
 }
 
+// probes.csv of a steady run: each probe's head and pressure, with no time (a steady state has none).
+void write_steady_probes(const RunContext& context, const FlowModel& model, const hydro::FlowSolution& solution) {
+  if (context.scenario.flow->probes.empty()) return;
+  output::CsvTable probes({"time", "name", "head", "pressure"});
+  for (const ProbeSite& site : locate_probes(context.scenario, model.mesh()))
+    probes.add_row({"", site.name, output::CsvTable::cell(value_at(site, model.mesh(), solution.head)),
+                    output::CsvTable::cell(value_at(site, model.mesh(), solution.pressure))});
+  context.folder.write("probes.csv", probes.text());
+}
+
 }  // namespace
 
 output::RunSummary run_flow(const RunContext& context) {
+  if (context.scenario.flow->transient) return run_transient_flow(context);
   std::optional<UnstoppableStage> building(context.callbacks);  // nothing is written before the solve ends
   FlowModel model(context.scenario, context.mesh_cache);
   const std::optional<fractures::FractureState> no_fractures;
@@ -42,6 +55,7 @@ output::RunSummary run_flow(const RunContext& context) {
   stop_if_requested(context, summary, "after the flow solve, before its fields were written");
   const std::vector<double> no_porosity;
   ParaviewOutput(context.folder, context.scenario.output.fields).write_fluid(0, 0.0, model.mesh(), solution, no_porosity, model.permeability());
+  write_steady_probes(context, model, solution);
   context.write_summary(summary);  // the run's result is on disk before the figures are drawn
   FlowPicture picture{model.mesh(), solution, no_porosity, model.permeability(), model.blocks()};
   picture.stop_requested = [&context] { return context.stop_requested(); };

@@ -98,6 +98,8 @@ class RunFailure : public std::runtime_error {
 
 output::RunSummary run_mechanics(const RunContext& context);
 output::RunSummary run_flow(const RunContext& context);
+// The flow-only run of a scenario with [flow.transient] (transient_flow.hpp); run_flow hands it on.
+output::RunSummary run_transient_flow(const RunContext& context);
 output::RunSummary run_coupled(const RunContext& context);
 
 }  // namespace hydrodda::run
