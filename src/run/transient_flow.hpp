@@ -21,9 +21,11 @@ namespace hydrodda::run {
 inline constexpr double kTimeStepGrowth = 1.2;
 
 // The times the run steps to, t_1 < t_2 < … = end_time: t_1 = time_step, each nominal step
-// kTimeStepGrowth times the last up to max_time_step, and a step that would pass an output time
-// or the end shortened to end there exactly (the nominal step grows on from its own length).
-std::vector<double> plan_step_times(const scenario::TransientDefinition& transient);
+// kTimeStepGrowth times the last up to max_time_step, and a step that would pass an output time,
+// one of `row_times` (the boundary tables' rows, where their values turn) or the end shortened
+// to end there exactly (the nominal step grows on from its own length).
+std::vector<double> plan_step_times(const scenario::TransientDefinition& transient,
+                                    const std::vector<double>& row_times = {});
 
 // Per element, its specific storage in head S_s = ρ_w g S (1/m), S its material's storage
 // (scenario::find_material_at at its centroid; 0 where no material holds it).

@@ -19,6 +19,7 @@
 #include "run/paraview_output.hpp"
 #include "run/runs.hpp"
 #include "run/transient_flow.hpp"
+#include "scenario/load_times.hpp"
 
 namespace hydrodda::run {
 
@@ -166,7 +167,7 @@ output::RunSummary run_transient_flow(const RunContext& context) {
   const auto start = std::chrono::steady_clock::now();
   hydro::DarcySolver solver(model.mesh(), build_flow_problem(*s.flow, 0.0));
   const std::vector<double> specific_storage = compute_specific_storage(s, model.mesh());
-  const std::vector<double> times = plan_step_times(transient);
+  const std::vector<double> times = plan_step_times(transient, scenario::find_load_times(s));
   TransientRecorder recorder(context, model);
   hydro::FlowSolution state = solve_initial_state(s, model, solver);
   building.reset();

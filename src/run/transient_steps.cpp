@@ -9,14 +9,18 @@
 
 namespace hydrodda::run {
 
-std::vector<double> plan_step_times(const scenario::TransientDefinition& transient) {
+std::vector<double> plan_step_times(const scenario::TransientDefinition& transient,
+                                    const std::vector<double>& row_times) {
   const double end = transient.end_time;
   if (!(end > 0.0) || !(transient.time_step > 0.0) || !(transient.max_time_step >= transient.time_step))
     throw std::invalid_argument("plan_step_times: the transient's times are not those the reader accepts");
-  // The times a step must end on: the output times after 0, and the end.
+  // The times a step must end on: the output times and table rows after 0, and the end.
   std::vector<double> stops;
-  for (double t : transient.output_times)
-    if (t > 0.0 && t < end) stops.push_back(t);
+  for (const std::vector<double>* times : {&transient.output_times, &row_times})
+    for (double t : *times)
+      if (t > 0.0 && t < end) stops.push_back(t);
+  std::sort(stops.begin(), stops.end());
+  stops.erase(std::unique(stops.begin(), stops.end()), stops.end());
   stops.push_back(end);
   std::vector<double> times;
   double t = 0.0, nominal = transient.time_step;

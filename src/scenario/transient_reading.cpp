@@ -141,8 +141,10 @@ void check_transient(ReadContext& ctx, const TableView&, const Scenario& s) {
       ctx.error(t.line, "flow.transient",
                 "transient flow in a coupled run (with [mechanics]) is not built yet: coupled runs solve steady flow "
                 "each pass; remove [flow.transient], or [mechanics] for a flow-only transient run");
-    const bool any_storage = std::any_of(s.materials.begin(), s.materials.end(),
-                                         [](const MaterialDefinition& m) { return m.storage > 0.0; });
+    // A storage refused where it was given is not also "absent".
+    const bool any_storage = std::any_of(s.materials.begin(), s.materials.end(), [&](const MaterialDefinition& m) {
+      return m.storage > 0.0 || ctx.has_error("material." + m.name + ".storage");
+    });
     if (!any_storage)
       ctx.error(t.line, "flow.transient",
                 "no material has a storage (every [material.NAME] storage is 0 or absent), so nothing stores water and "

@@ -51,6 +51,13 @@ TEST(TransientSteps, EndExactlyOnEachOutputTimeAndGrowOnAfterIt) {
   EXPECT_NEAR(times[3] - times[2], 1.0 * std::pow(kTimeStepGrowth, 3), 1e-12);
 }
 
+TEST(TransientSteps, EndOnTheBoundaryTablesRowsToo) {
+  const std::vector<double> times = plan_step_times(transient(20.0, 1.0, 4.0, {20.0}), {0.0, 3.3, 11.0, 30.0});
+  for (double t : {3.3, 11.0, 20.0}) EXPECT_NE(std::find(times.begin(), times.end(), t), times.end()) << t;
+  EXPECT_EQ(times.back(), 20.0);  // a row past the end is not stepped to
+  EXPECT_EQ(std::adjacent_find(times.begin(), times.end()), times.end());
+}
+
 TEST(TransientSteps, ARunOfOneStep) {
   EXPECT_EQ(plan_step_times(transient(5.0, 5.0, 5.0, {5.0})), std::vector<double>{5.0});
 }
