@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/polygon.hpp"
 #include "hydro/flow_solution.hpp"
 #include "mesh/triangle_mesh.hpp"
 #include "scenario/scenario.hpp"
@@ -27,9 +28,14 @@ inline constexpr double kTimeStepGrowth = 1.2;
 std::vector<double> plan_step_times(const scenario::TransientDefinition& transient,
                                     const std::vector<double>& row_times = {});
 
-// Per element, its specific storage in head S_s = ρ_w g S (1/m), S its material's storage
-// (scenario::find_material_at at its centroid; 0 where no material holds it).
-std::vector<double> compute_specific_storage(const scenario::Scenario& scenario, const mesh::TriangleMesh& mesh);
+// Per element, its specific storage in head (1/m): the rock's and the open gaps' water's,
+//   S_s = ρ_w g [(1 − f) S + f c_w],
+// f = A_fracture/A_element the part of it no block covers (the porosity mapping's), S the
+// storage of its material (scenario::find_material_at at its centroid; 0 where no material
+// holds it), c_w the fluid's compressibility: water in a gap between blocks held still stores
+// by its own compressibility alone, a c_w per unit volume of gap (docs/flow.md, "Transient flow").
+std::vector<double> compute_specific_storage(const scenario::Scenario& scenario, const mesh::TriangleMesh& mesh,
+                                             const std::vector<geometry::Polygon>& blocks);
 
 // A probe's place in the mesh: the triangle that holds its point and the point's barycentric
 // weights there, with which P1 values are read exactly.

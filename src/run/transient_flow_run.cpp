@@ -18,6 +18,7 @@
 #include "run/model_building.hpp"
 #include "run/paraview_output.hpp"
 #include "run/runs.hpp"
+#include "scenario/diagnostics.hpp"
 #include "run/transient_flow.hpp"
 #include "scenario/load_times.hpp"
 
@@ -155,6 +156,15 @@ hydro::FlowSolution solve_initial_state(const scenario::Scenario& s, const FlowM
   return make_uniform_state(model.mesh(), problem, solver.reference_head(), *s.flow->transient->initial_head);
 }
 
+// Nothing stores water (no material's storage where the elements are, no open gap): the heads
+// would be the steady ones at every step. check refuses what it can see; the mesh shows the rest.
+void refuse_without_storage(const scenario::Scenario& s, const std::vector<double>& specific_storage) {
+  if (std::any_of(specific_storage.begin(), specific_storage.end(), [](double c) { return c > 0.0; })) return;
+  throw scenario::ScenarioError({{s.file.string(), s.flow->transient->line, "flow.transient",
+                                  "no element of the mesh stores water (no material's storage covers one, and no "
+                                  "open gap between blocks holds water): give storage (1/Pa) to the materials"}});
+}
+
 }  // namespace
 
 output::RunSummary run_transient_flow(const RunContext& context) {
@@ -166,7 +176,8 @@ output::RunSummary run_transient_flow(const RunContext& context) {
   const TellModelAtEnd tell_model_at_end(context.callbacks, model, no_fractures);
   const auto start = std::chrono::steady_clock::now();
   hydro::DarcySolver solver(model.mesh(), build_flow_problem(*s.flow, 0.0));
-  const std::vector<double> specific_storage = compute_specific_storage(s, model.mesh());
+  const std::vector<double> specific_storage = compute_specific_storage(s, model.mesh(), model.blocks());
+  refuse_without_storage(s, specific_storage);
   const std::vector<double> times = plan_step_times(transient, scenario::find_load_times(s));
   TransientRecorder recorder(context, model);
   hydro::FlowSolution state = solve_initial_state(s, model, solver);

@@ -2,6 +2,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "coupling/porosity.hpp"
+#include "hydro/fluid.hpp"
 #include "mesh/point_locator.hpp"
 #include "run/transient_flow.hpp"
 #include "scenario/diagnostics.hpp"
@@ -40,12 +42,22 @@ std::vector<double> plan_step_times(const scenario::TransientDefinition& transie
   return times;
 }
 
-std::vector<double> compute_specific_storage(const scenario::Scenario& s, const mesh::TriangleMesh& mesh) {
-  const double unit_weight = s.flow->fluid_density * 9.81;  // ρ_w g, as hydro::Fluid's gravity
+std::vector<double> compute_specific_storage(const scenario::Scenario& s, const mesh::TriangleMesh& mesh,
+                                             const std::vector<geometry::Polygon>& blocks) {
+  const double unit_weight = s.flow->fluid_density * hydro::Fluid{}.gravity;  // ρ_w g
+  // The open fraction of each element: none without blocks (a user's mesh alone is rock).
+  std::vector<double> open(mesh.triangles.size(), 0.0);
+  if (!blocks.empty() && s.flow->fluid_compressibility > 0.0) {
+    const coupling::PorosityMapper mapper(mesh.nodes, mesh.triangles);
+    const coupling::PorosityField field = mapper.compute(blocks, 0.0);
+    for (std::size_t e = 0; e < open.size(); ++e)
+      open[e] = std::clamp(field.fracture_area[e] / mapper.element_areas()[e], 0.0, 1.0);
+  }
   std::vector<double> storage(mesh.triangles.size(), 0.0);
   for (int t = 0; t < mesh.triangle_count(); ++t) {
     const int material = scenario::find_material_at(s, mesh::triangle_centroid(mesh, t));
-    if (material >= 0) storage[t] = unit_weight * s.materials[material].storage;
+    const double rock = material >= 0 ? s.materials[material].storage : 0.0;
+    storage[t] = unit_weight * ((1.0 - open[t]) * rock + open[t] * s.flow->fluid_compressibility);
   }
   return storage;
 }

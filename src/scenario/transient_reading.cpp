@@ -145,11 +145,13 @@ void check_transient(ReadContext& ctx, const TableView&, const Scenario& s) {
     const bool any_storage = std::any_of(s.materials.begin(), s.materials.end(), [&](const MaterialDefinition& m) {
       return m.storage > 0.0 || ctx.has_error("material." + m.name + ".storage");
     });
-    if (!any_storage)
+    // Or the water of the open gaps between blocks, by its compressibility.
+    const bool gaps_store = s.flow->fluid_compressibility > 0.0 && s.geometry && s.geometry->initial_aperture > 0.0;
+    if (!any_storage && !gaps_store)
       ctx.error(t.line, "flow.transient",
-                "no material has a storage (every [material.NAME] storage is 0 or absent), so nothing stores water and "
-                "the heads jump to the steady ones at once: give storage (1/Pa) to the materials, or remove "
-                "[flow.transient] for a steady run");
+                "no material has a storage (every [material.NAME] storage is 0 or absent) and no open gap holds water "
+                "(geometry.initial_aperture is 0), so nothing stores water and the heads jump to the steady ones at "
+                "once: give storage (1/Pa) to the materials, or remove [flow.transient] for a steady run");
   }
   for (const ProbeDefinition& probe : s.flow->probes) {
     if (s.mechanics)

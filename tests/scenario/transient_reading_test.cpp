@@ -128,6 +128,27 @@ TEST(TransientReading, RefusesATransientRunWithNoStorageAnywhere) {
   expect_one_error(text + "[flow.transient]\nend_time = 10.0\n", 9, "flow.transient", "no material has a storage");
 }
 
+// The water of open gaps between blocks stores by its compressibility: a fractured model with an
+// initial aperture needs no material storage, unless the fluid is incompressible.
+TEST(TransientReading, OpenGapsStoreWaterByItsCompressibility) {
+  const std::string fractured = R"([geometry]
+domain = [[0.0, 0.0], [10.0, 0.0], [10.0, 2.0], [0.0, 2.0]]
+fractures = [[[0.0, 1.0], [10.0, 1.0]]]
+initial_aperture = 1.0e-4
+[material.rock]
+matrix_porosity = 0.01
+grain_diameter = 1.0e-7
+[flow]
+[[flow.boundary]]
+name = "left"
+head = 1.0
+[flow.transient]
+end_time = 0.05
+)";
+  EXPECT_TRUE(errors_of(fractured).empty());
+  expect_one_error(fractured + "[flow.fluid]\ncompressibility = 0.0\n", 12, "flow.transient", "no open gap holds water");
+}
+
 TEST(TransientReading, RefusesTransientFlowAndProbesInACoupledRunAsNotBuiltYet) {
   const std::string coupled = R"([geometry]
 domain = [[0.0, 0.0], [10.0, 0.0], [10.0, 1.0], [0.0, 1.0]]

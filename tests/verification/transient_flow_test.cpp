@@ -3,6 +3,9 @@
 //   Jaeger's series (1959, §3.3),
 //     h − h0 = H [1 − Σ_{n≥0} 4/((2n+1)π) sin((2n+1)πx/(2L)) exp(−(2n+1)²π² c t/(4L²))],
 //   c = k/(μ S), within 1% of the head change H at t = 20, 100, 300 and 1000 s;
+// - transient_fracture_diffusion.toml: the same series along an open fracture between blocks
+//   held still, whose gap stores by the water's compressibility, c = a²/(12 μ c_w), within 1% of
+//   H at t = 2, 10, 20 and 50 ms;
 // - transient_steady_limit.toml: run to 100 times its slowest decay time, the heads the steady
 //   ones (piecewise linear through two materials in series, exact for P1) to 1e-8 m and the
 //   flows those of the same scenario run steady, to 1e-8 of them.
@@ -92,6 +95,25 @@ TEST(TransientFlowRun, OneDimensionalDiffusionFollowsCarslawAndJaegersSeries) {
   // The fields at t = 0 and the four output times, by their real times.
   for (const std::string t : {"\"0\"", "\"20\"", "\"100\"", "\"300\"", "\"1000\""})
     EXPECT_NE(run.fluid_pvd.find("timestep=" + t), std::string::npos) << t << "\n" << run.fluid_pvd;
+}
+
+TEST(TransientFlowRun, DiffusionAlongAnOpenFractureFollowsTheSeriesWithTheGapsStorage) {
+  const TransientRun run = run_and_read(shipped("transient_fracture_diffusion"), "fracture");
+  // a = 1e-4 m, μ = 1e-3 Pa s, c_w = 4.5e-10 1/Pa: c = a²/(12 μ c_w) = 1851.85 m²/s; L = 10 m; H = 1 m.
+  const double c = 1e-8 / (12.0 * 1e-3 * 4.5e-10);
+  const std::map<std::string, double> x{{"x1", 1.0}, {"x2.5", 2.5}, {"x5", 5.0}, {"x10", 10.0}};
+  int checked = 0;
+  for (std::size_t r = 1; r < run.probes.size(); ++r) {
+    const double t = std::stod(run.probes[r][0]);
+    const bool wanted = std::abs(t - 0.002) < 1e-12 || std::abs(t - 0.01) < 1e-12 || std::abs(t - 0.02) < 1e-12 ||
+                        std::abs(t - 0.05) < 1e-12;
+    if (!wanted) continue;
+    EXPECT_NEAR(std::stod(run.probes[r][2]), series_head_change(x.at(run.probes[r][1]), t, c, 10.0), 0.01)
+        << run.probes[r][1] << " at t = " << t;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 16);
+  EXPECT_LE(run.summary["flow"]["balance"].get<double>(), 1e-10);
 }
 
 TEST(TransientFlowRun, RunLongEnoughItReachesTheSteadyHeadsAndFlows) {
