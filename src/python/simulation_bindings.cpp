@@ -99,6 +99,11 @@ class Simulation {
       throw py::value_error(
           "mesh.refine_tips = true: a Simulation keeps the mesh it is built on; hydrodda.run() meshes again around "
           "the wedge tips (or set it false to step the model by hand)");
+    // Stepping a transient flow by hand is not built yet: refused, never solved steady instead.
+    if (scenario.definition.flow && scenario.definition.flow->transient)
+      throw py::value_error(
+          "[flow.transient]: a Simulation does not step transient flow yet; hydrodda.run() runs it to its end_time "
+          "(probes.csv, history.csv and fluid.pvd at its output_times)");
     PythonCallbacks callbacks{py::none()};  // Ctrl-C in a logging handler while building: raised once built
     {
       py::gil_scoped_release released;

@@ -58,6 +58,18 @@ def test_flow_only_run_is_the_programs(in_tmp):
     assert abs(reports[0].balance_error) < 1e-8
 
 
+def test_transient_flow_run_is_the_programs(in_tmp):
+    """A transient flow-only run from Python writes the program's folder (probes.csv,
+    history.csv, fluid.pvd at its output times), reporting each step."""
+    name = write_scenario(in_tmp, VERIFICATION / "transient_steady_limit.toml", {"mesh.size": 1.0}, "transient.toml")
+    result, reports = run_both(in_tmp, name)
+    expect_same_folders(in_tmp / "prog", in_tmp / "py")
+    assert (result.status, result.converged) == ("finished", True)
+    assert result.summary["time"] == 4000.0
+    assert len(reports) == result.iterations and result.iterations > 1
+    assert (in_tmp / "py" / "probes.csv").read_text().startswith("time,name,head,pressure\n")
+
+
 def test_mechanics_only_run_is_the_programs(in_tmp):
     end_time = 0.05
     name = write_scenario(in_tmp, VERIFICATION / "free_fall.toml", {"mechanics.end_time": end_time}, "fall.toml")

@@ -232,6 +232,12 @@ def test_a_simulation_refuses_to_refine_tips_it_cannot_mesh_again():
         hydrodda.Simulation(scenario)
 
 
+def test_a_simulation_refuses_transient_flow_it_cannot_step_yet():
+    """[flow.transient] is run by hydrodda.run; a Simulation says so rather than solve it steady."""
+    with pytest.raises(ValueError, match="flow.transient"):
+        hydrodda.Simulation(hydrodda.Scenario.load(VERIFICATION / "transient_diffusion_1d.toml"))
+
+
 @pytest.mark.parametrize("name", ["flow_linear_head", "free_fall", "coupled_hydrostatic_column"])
 def test_summary_says_converged_as_the_runs_summary_does(in_tmp, name):
     """A finished model's summary says converged, as summary.json of its run does; one not yet
