@@ -137,6 +137,37 @@ TEST(ContactDetection, CornerOnCornerKeepsItsEdgeWhateverTheRoundOff) {
   EXPECT_EQ(keys.front(), (std::array<int, 4>{0, 2, 1, 0}));  // below's corner (1, 1) on above's bottom edge
 }
 
+// Two straight joints crossing at X = (0, 0), 60° apart (the faulted seal's conjugate sets),
+// cut four blocks whose corners meet there. The block above (its corner pointing down) has
+// slid up along one joint line by s and across it by 1e-5 m, as the blocks beside it allow:
+// the lower block's corner now lies past the upper block's corner, 1e-5 m behind the line of
+// its lower-left edge and outside the line of its lower-right edge, so outside it. Within the
+// corner tie (1e-3 of the contact distance, 5.6e-4 m at the seal's 0.56 m) the lower index
+// took the edge it lies behind: a contact 1e-5 m deep that no force could push out, on which
+// the seal's DDA step at 2,000 m of head failed. The corner touches the edge it is outside of,
+// standing off it; that holds at any tie (two contact distances).
+TEST(ContactDetection, ACornerPastTheDiagonalCornerIsNoPenetration) {
+  const double c60 = 0.5, s60 = std::sqrt(3.0) / 2.0;
+  const Point up_right{c60, s60}, up_left{-c60, s60};  // the two joint lines through X
+  const Point across{s60, c60};                         // normal to the up-left line, into the upper block
+  // Counter-clockwise, each with its corner at X; the upper block's lower-left edge first, so
+  // that the edge the lower corner lies behind has the lower index of the two at the corner.
+  const Polygon lower{Point{0, 0}, -4.0 * up_right, Point{0, -6.93}, -4.0 * up_left};
+  for (double distance : {0.56, 0.01}) {
+    for (double slide : {2e-5, 1e-4}) {
+      const Point shift = slide * up_left - 1e-5 * across;  // up the joint, and 1e-5 m across it
+      const Polygon upper{4.0 * up_left + shift, shift, 4.0 * up_right + shift, Point{0, 6.93} + shift};
+      ContactCandidates found;
+      find_pair_contacts(lower, 0, upper, 1, distance, found);
+      EXPECT_FALSE(found.empty()) << "the corners are within the contact distance " << distance;
+      for (const ContactCandidate& c : found)
+        EXPECT_LE(c.penetration, 0.0) << "distance " << distance << ", slide " << slide << ": vertex " << c.key.vertex
+                                      << " of block " << c.key.block_i << " on edge " << c.key.edge << " reads "
+                                      << c.penetration << " m deep";
+    }
+  }
+}
+
 // Vertex–vertex: a wedge's corner near a square's corner from the diagonal takes one
 // entrance edge, the one whose line it is farther outside; the square's corner, whose
 // material would lie inside the wedge's edge lines, is not taken against the wedge.
