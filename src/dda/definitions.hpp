@@ -37,6 +37,11 @@ struct BlockDefinition {
   std::vector<int> edge_joints;
   std::array<double, 3> initial_stress{0.0, 0.0, 0.0};    // σxx, σyy, τxy (Pa)
   std::array<double, 3> initial_velocity{0.0, 0.0, 0.0};  // vx, vy (m/s), ω (rad/s)
+  // Per edge: the bond (intact rock) it shares with an edge of a neighbouring sub-block, the
+  // same id on both sides, or −1; empty: no bonded edge. A bonded face carries tension up to
+  // its joint type's tensile_strength and shear up to c + σn tan φ; once it fails it is a
+  // joint of that type with neither tension nor cohesion (docs/dda.md, "Bonds").
+  std::vector<int> edge_bonds{};
 };
 
 enum class Analysis { static_, dynamic };

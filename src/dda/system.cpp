@@ -133,6 +133,8 @@ System::System(ModelDefinition def, std::unique_ptr<LinearSolver> solver)
   penalty_ = settings_.penalty > 0 ? settings_.penalty : 50.0 * young_max * 1.0;
   joints_.push_back(strength_of(def.joint));
   for (const Joint& j : def.joint_types) joints_.push_back(strength_of(j));
+  for (const JointStrength& j : joints_) broken_joints_.push_back({j.tan_friction, 0.0, 0.0});
+  setup_bonds(def.blocks);
   fixed_stiffness_ = 10.0 * penalty_;
   dt_ = settings_.time_step;
   vertex_forces_.resize(blocks_.size());
@@ -274,7 +276,9 @@ void System::preload_contact(ActiveContact& c) const {
   // The locked spring pushes block i along the edge by −p s, s = (p1 − p0)·t: a reference
   // point shear/p behind the vertex's projection makes it push by the shear from the start.
   const double length = geometry::distance(pj[c.key.edge], pj[(c.key.edge + 1) % pj.size()]);
-  c.record.reference_ratio += preload.shear / (penalty_ * length);
+  const double stiffness = contact_stiffness(
+      c.key, tributary_length(blocks_[c.key.block_i].polygon, c.key.vertex, pj, c.key.edge, contact_distance_));
+  c.record.reference_ratio += preload.shear / (stiffness * length);
 }
 
 void System::linearise_contact(ActiveContact& c) const {
@@ -308,6 +312,7 @@ void System::linearise_closed_contact(ActiveContact& c) const {
   const Polygon& pi = blocks_[c.key.block_i].polygon;
   const Polygon& pj = blocks_[c.key.block_j].polygon;
   c.length = tributary_length(pi, c.key.vertex, pj, c.key.edge, contact_distance_);
+  c.stiffness = contact_stiffness(c.key, c.length);
   const int nj = static_cast<int>(pj.size());
   const Point p1 = pi[c.key.vertex];
   const Point p2 = pj[c.key.edge];
@@ -439,7 +444,6 @@ void System::factor_with_contacts() {
   }
   resize_for_overwrite(terms, total.springs);
   resize_for_overwrite(closed_, total.closed);
-  const double root_penalty = std::sqrt(penalty_);
   numerics::for_each_chunk(many_contacts(), active_.size(), kContactChunk,
                            [&](std::size_t chunk, std::size_t begin, std::size_t end) {
     RankOneTerm* next = terms.data() + starts[chunk].springs;
@@ -450,8 +454,9 @@ void System::factor_with_contacts() {
       t.id = {k.block_i, k.vertex, k.block_j, k.edge, kind};
       t.block_a = c.dof_i;
       t.block_b = c.dof_j;
-      t.w_a = root_penalty * e_i;
-      t.w_b = root_penalty * e_j;
+      const double root_stiffness = std::sqrt(c.stiffness);
+      t.w_a = root_stiffness * e_i;
+      t.w_b = root_stiffness * e_j;
     };
     // active_ is in key order, and so the terms in id order.
     for (std::size_t i = begin; i < end; ++i) {
@@ -489,12 +494,12 @@ void System::add_contact_loads(std::size_t begin, std::size_t end, Eigen::Vector
     const ActiveContact& c = active_[closed_[k]];
     const ContactRecord& r = c.record;
     // Normal: energy λ d + ½ p d² → load −(λ + p d0) en.
-    const double normal = r.multiplier + penalty_ * c.penetration0;
+    const double normal = r.multiplier + c.stiffness * c.penetration0;
     add_segment(f, c.dof_i, -normal * c.en_i);
     add_segment(f, c.dof_j, -normal * c.en_j);
     if (r.state == ContactState::locked) {
-      add_segment(f, c.dof_i, -penalty_ * c.shear0 * c.es_i);
-      add_segment(f, c.dof_j, -penalty_ * c.shear0 * c.es_j);
+      add_segment(f, c.dof_i, -c.stiffness * c.shear0 * c.es_i);
+      add_segment(f, c.dof_j, -c.stiffness * c.shear0 * c.es_j);
     } else {
       // Sliding: Mohr–Coulomb friction f = N tan φ + c l against the sliding direction.
       const JointStrength& joint = joint_of(c.key);
@@ -536,7 +541,7 @@ double System::compute_shear(const ActiveContact& c, const Eigen::VectorXd& d) c
 }
 
 double System::compute_normal_force(const ActiveContact& c, double penetration) const {
-  return c.record.multiplier + penalty_ * penetration;
+  return c.record.multiplier + c.stiffness * penetration;
 }
 
 double System::compute_shear_strength(const ActiveContact& c, double normal_force) const {
@@ -603,6 +608,9 @@ double System::largest_vertex_motion(const Eigen::VectorXd& change) const {
 // inside the edge would otherwise close again at the next pass, pull again once its
 // multiplier had caught up, and flip on until the step were cut. Without the cutoff the
 // allowance is p × band, the force of the band's length on the penalty spring.
+//
+// A closed contact on an intact bond (is_intact_bond) stays locked: its face breaks as a whole
+// (break_overloaded_bonds), after which it is a joint's contact like any other.
 bool System::update_state(ActiveContact& c, const Eigen::VectorXd& d, double band, double tension_allowance) const {
   ContactRecord& r = c.record;
   const double pen = compute_penetration(c, d);
@@ -618,6 +626,7 @@ bool System::update_state(ActiveContact& c, const Eigen::VectorXd& d, double ban
     }
     return false;
   }
+  if (is_intact_bond(c.key)) return false;
   const double normal = compute_normal_force(c, pen);
   if (normal < -joint_of(c.key).tensile_strength * c.length - tension_allowance) {
     r.state = ContactState::open;
@@ -630,7 +639,7 @@ bool System::update_state(ActiveContact& c, const Eigen::VectorXd& d, double ban
   const double shear_band = 0.1 * band;
   const double shear = compute_shear(c, d);
   if (r.state == ContactState::locked) {
-    if (penalty_ * (std::abs(shear) - shear_band) > compute_shear_strength(c, normal)) {
+    if (c.stiffness * (std::abs(shear) - shear_band) > compute_shear_strength(c, normal)) {
       r.state = ContactState::sliding;
       r.slide_sign = shear > 0 ? 1 : -1;
       return true;
@@ -765,7 +774,10 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
       }
       return seen;
     });
-    if (std::none_of(changed.begin(), changed.end(), [](char c) { return c != 0; })) return Unsettled::no;
+    // A bond whose face the solution overloads breaks before the next pass, which then opens
+    // or slides its contacts as a joint's: a change of state like a contact's.
+    const bool bonds_broke = !bond_sides_.empty() && break_overloaded_bonds(d);
+    if (!bonds_broke && std::none_of(changed.begin(), changed.end(), [](char c) { return c != 0; })) return Unsettled::no;
     // A pass that changed only contacts that had kept their state all step is progress: the
     // cutoff opening, pass by pass, the joints that its earlier openings left pulling (a
     // 1,601-block wall's first step: 2,725 of them, then 697, 93, 45, ..., 2), which ends, as
@@ -816,6 +828,7 @@ StepReport System::step() {
   const double first_time_step = dt_;
   std::string first_failure;
   for (;;) {
+    undo_pending_bond_breaks();  // a retried step breaks its bonds anew
     detect_contacts();
     Eigen::VectorXd d;
     const Unsettled unsettled = solve_step(dt_, d, report);
@@ -841,6 +854,7 @@ StepReport System::step() {
       for (std::size_t bi = 0; bi < blocks_.size(); ++bi)
         if (blocks_[bi].dof >= 0) translation[bi] = {d[6 * blocks_[bi].dof], d[6 * blocks_[bi].dof + 1]};
       commit_step(d, dt_);
+      record_pending_bond_breaks();
       measure_unbalanced_force(translation, dt_, report);
       break;
     }

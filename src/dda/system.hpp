@@ -46,6 +46,18 @@ struct StepReport {
   int unbalanced_block = -1;
 };
 
+// How a bond (a face of intact rock between two sub-blocks) failed.
+enum class BondFailure : char { none, tension, shear };
+
+// A bond that broke: in the step that ended at `time`, by `mode`, the face then from `from` to
+// `to` (the first block's edge, as it was at the step's end).
+struct BondBreak {
+  int bond = 0;
+  double time = 0.0;
+  BondFailure mode = BondFailure::none;
+  Point from, to;
+};
+
 // Persistent contact state (Shi's contact transfer): carried between steps by key.
 struct ContactRecord {
   ContactState state = ContactState::open;
@@ -75,6 +87,7 @@ struct SystemState {
   std::vector<Point> fixed_points, load_points, displacement_points, measured_points;
   std::vector<std::vector<Point>> vertex_forces;
   std::vector<double> roller_reliefs;  // in definition order (System::relieve_start_loads)
+  std::vector<BondBreak> bond_breaks;  // the bonds broken so far, in the order they broke
 };
 
 class System {
@@ -171,6 +184,14 @@ class System {
   double allowed_step_displacement() const { return allowed_displacement_; }
   SolverCounts solver_counts() const { return solver_->counts(); }
 
+  // Bonds (BlockDefinition::edge_bonds; dda/bonds.cpp): how many, which broke and when, and a
+  // bond's face as it is now (the first block's edge that carries it).
+  int bond_count() const { return static_cast<int>(bond_sides_.size()); }
+  bool is_bond_broken(int bond) const { return bond_broken_[static_cast<std::size_t>(bond)] != 0; }
+  const std::vector<BondBreak>& bond_breaks() const { return bond_breaks_; }
+  std::array<Point, 2> bond_face(int bond) const;
+  int bond_joint_type(int bond) const;  // 0: `joint`, i: joint_types[i − 1]
+
  private:
   struct Block {
     Polygon polygon;
@@ -208,6 +229,7 @@ class System {
     // left as they were, not written for nothing.
     double shear0 = 0.0;
     double length = 0.0;  // the face length it carries (tributary_length)
+    double stiffness = 0.0;  // its springs' penalty (contact_stiffness)
     Vector6 es_i = Vector6::Zero(), es_j = Vector6::Zero();
   };
   // Whether a loop is long enough to pay for a second thread, which can take some tens of
@@ -271,11 +293,48 @@ class System {
   static JointStrength strength_of(const Joint& j);
   std::vector<JointStrength> joints_;           // by type (ModelDefinition::joint, joint_types)
   std::vector<std::vector<int>> edge_joints_;   // per block, per edge: the type; empty: 0
-  // The joint type of a contact: that of the edge its vertex touches.
+  // The joint type of a contact: that of the edge its vertex touches; on a broken bond, the
+  // type without tension or cohesion.
   const JointStrength& joint_of(const ContactKey& key) const {
     const std::vector<int>& edges = edge_joints_[static_cast<std::size_t>(key.block_j)];
-    return joints_[edges.empty() ? 0 : static_cast<std::size_t>(edges[static_cast<std::size_t>(key.edge)])];
+    const std::size_t type = edges.empty() ? 0 : static_cast<std::size_t>(edges[static_cast<std::size_t>(key.edge)]);
+    const int bond = bond_of(key);
+    return bond >= 0 && bond_broken_[static_cast<std::size_t>(bond)] ? broken_joints_[type] : joints_[type];
   }
+  // The bond of the edge a contact's vertex touches, or −1.
+  int bond_of(const ContactKey& key) const {
+    const std::vector<int>& bonds = edge_bonds_[static_cast<std::size_t>(key.block_j)];
+    return bonds.empty() ? -1 : bonds[static_cast<std::size_t>(key.edge)];
+  }
+  // The penalty of a contact's springs: p, or on a bonded face p l / l̄ (l its tributary
+  // length, l̄ the bonds' mean: a stiffness per unit length, so that a face of any length
+  // carries the traction the rock would; bonds.cpp).
+  double contact_stiffness(const ContactKey& key, double length) const {
+    return bond_of(key) < 0 ? penalty_ : penalty_ * std::max(length, 0.05 * bond_reference_length_) / bond_reference_length_;
+  }
+  bool is_intact_bond(const ContactKey& key) const {
+    const int bond = bond_of(key);
+    return bond >= 0 && bond_broken_[static_cast<std::size_t>(bond)] == 0;
+  }
+  // dda/bonds.cpp: the bonds' faces paired from the definition (throws std::invalid_argument
+  // for an id not on exactly two edges of two blocks); the bonds whose face the solution d
+  // overloads broken (pending until the step commits; whether any broke); a retried step's pending breaks
+  // undone; the committed step's recorded.
+  void setup_bonds(const std::vector<BlockDefinition>& blocks);
+  bool break_overloaded_bonds(const Eigen::VectorXd& d);
+  void undo_pending_bond_breaks();
+  void record_pending_bond_breaks();
+  struct BondSide {
+    int block = -1;
+    int edge = -1;
+  };
+  std::vector<std::array<BondSide, 2>> bond_sides_;  // by bond id
+  std::vector<std::vector<int>> edge_bonds_;          // per block, per edge: the bond; empty: none
+  std::vector<char> bond_broken_;                     // by bond id
+  std::vector<JointStrength> broken_joints_;          // by type: tan φ only
+  std::vector<std::pair<int, BondFailure>> pending_breaks_;  // broken in the step under way
+  std::vector<BondBreak> bond_breaks_;
+  double bond_reference_length_ = 1.0;  // m, l̄: half the bonds' mean face length
   Settings settings_;
   std::vector<TrackedPoint> fixed_points_;
   std::vector<PointLoad> point_loads_;  // point = current position

@@ -40,6 +40,7 @@ SystemState System::export_state() const {
   for (const TrackedPoint& p : measured_) s.measured_points.push_back(p.position);
   s.vertex_forces = vertex_forces_;
   for (const RollerPoint& r : rollers_) s.roller_reliefs.push_back(r.relief);
+  s.bond_breaks = bond_breaks_;
   return s;
 }
 
@@ -66,6 +67,8 @@ void System::import_state(const SystemState& s) {
     if (!fits) throw std::invalid_argument("DDA state: a contact names a missing block, vertex or edge");
   }
   if (!(s.time_step > 0)) throw std::invalid_argument("DDA state: the time step must be > 0");
+  for (const BondBreak& b : s.bond_breaks)
+    if (b.bond < 0 || b.bond >= bond_count()) throw std::invalid_argument("DDA state: a broken bond the model does not have");
 
   for (std::size_t b = 0; b < blocks_.size(); ++b) {
     Block& blk = blocks_[b];
@@ -100,6 +103,10 @@ void System::import_state(const SystemState& s) {
   restore(measured_, s.measured_points);
   vertex_forces_ = s.vertex_forces;
   for (std::size_t i = 0; i < rollers_.size(); ++i) rollers_[i].relief = s.roller_reliefs[i];
+  bond_breaks_ = s.bond_breaks;
+  pending_breaks_.clear();
+  bond_broken_.assign(bond_sides_.size(), 0);
+  for (const BondBreak& b : bond_breaks_) bond_broken_[static_cast<std::size_t>(b.bond)] = 1;
   start_face_share_ = nullptr;  // relieve_start_loads gives it again before a first step
   // Contacts carry the initial stress from the first step only.
   preload_new_contacts_ = initial_stress_ && s.time == 0.0 && s.contacts.empty();

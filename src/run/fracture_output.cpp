@@ -19,7 +19,7 @@ using output::DataArray;
 
 namespace {
 
-std::vector<std::string> columns(bool with_flow) {
+std::vector<std::string> columns(bool with_flow, bool with_bonds = false) {
   std::vector<std::string> c{"step",          "time",          "fracture",     "origin",    "set",
                              "number",        "length",        "open_length",  "open",      "mean_aperture",
                              "max_aperture",  "hydraulic_aperture", "normal_stress", "max_shear",
@@ -28,6 +28,8 @@ std::vector<std::string> columns(bool with_flow) {
   // Added last, so that the columns before them keep their places.
   c.push_back("type");
   c.push_back("open_share");
+  if (with_bonds)
+    for (const char* name : {"mode", "x1", "y1", "x2", "y2"}) c.push_back(name);
   return c;
 }
 
@@ -60,7 +62,7 @@ void FractureOutput::continue_from(int last_step, const std::vector<int>& writte
     std::stringstream fields(line);
     for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
     // Rows of a pass after the checkpoint (written before the run stopped) are left out.
-    if (cells.size() == columns(with_flow_).size() && std::stoll(cells[0]) <= last_step) table_.add_row(cells);
+    if (cells.size() == columns(with_flow_, with_bonds_).size() && std::stoll(cells[0]) <= last_step) table_.add_row(cells);
   }
   if (!series_) series_.emplace(folder_.file("fractures.pvd"));
   for (int step : written) list_if_present(*series_, folder_, step, fmt::format("fractures_{:04d}.vtu", step));
@@ -87,6 +89,31 @@ void FractureOutput::add_rows(long long step, double time, const fractures::Frac
     if (with_flow_) row.push_back(r.flow ? CsvTable::cell(*r.flow) : "");
     row.push_back(type_of(types_, r.id));
     row.push_back(CsvTable::cell(r.open_share));
+    if (with_bonds_) row.resize(row.size() + 5);
+    table_.add_row(row);
+  }
+  folder_.write("fractures.csv", table_.text());
+}
+
+void FractureOutput::list_broken_bonds() {
+  with_bonds_ = true;
+  table_ = CsvTable(columns(with_flow_, true));
+}
+
+void FractureOutput::add_broken_bonds(long long step, const std::vector<BrokenBondRow>& rows) {
+  for (const BrokenBondRow& b : rows) {
+    std::vector<std::string> row{CsvTable::cell(step), CsvTable::cell(b.time), CsvTable::cell(static_cast<long long>(b.fracture)),
+                                 "bond", "", CsvTable::cell(static_cast<long long>(b.bond)),
+                                 CsvTable::cell(geometry::distance(b.from, b.to))};
+    // open_length … tip_opening_angle (and flow): measured on traces only.
+    row.resize(row.size() + 1, "");
+    row.push_back("1");
+    row.resize(row.size() + 6 + (with_flow_ ? 1 : 0), "");
+    row.push_back(b.type);
+    row.push_back("");  // open_share
+    for (const std::string& cell : {b.mode, CsvTable::cell(b.from.x), CsvTable::cell(b.from.y), CsvTable::cell(b.to.x),
+                                    CsvTable::cell(b.to.y)})
+      row.push_back(cell);
     table_.add_row(row);
   }
   folder_.write("fractures.csv", table_.text());

@@ -18,6 +18,16 @@
 
 namespace hydrodda::run {
 
+// A bond that broke, as fractures.csv lists it (a new fracture).
+struct BrokenBondRow {
+  int fracture = 0;  // its id: after the traces' (their count + the bond's id)
+  int bond = 0;
+  double time = 0.0;  // the end of the step it broke in
+  std::string mode;   // "tension" or "shear"
+  std::string type;   // its joint type's name
+  geometry::Point from, to;
+};
+
 class FractureOutput {
  public:
   // `with_flow`: coupled runs, whose rows have the flow along each fracture. `types`: each
@@ -30,12 +40,19 @@ class FractureOutput {
   void continue_from(int last_step, const std::vector<int>& written);
   // One step's rows, written at once.
   void add_rows(long long step, double time, const fractures::FractureState& state);
+  // A model with bonds: fractures.csv gets the columns mode, x1, y1, x2, y2 (empty on the
+  // traces' rows); call before any row.
+  void list_broken_bonds();
+  // The bonds broken in step `step`, one row each (origin "bond", number the bond's id, open 1),
+  // written at once.
+  void add_broken_bonds(long long step, const std::vector<BrokenBondRow>& rows);
   // fractures_NNNN.vtu, listed in fractures.pvd at `time`.
   void write_series(int step, double time, const fractures::FractureState& state);
 
  private:
   const output::RunFolder& folder_;
   bool with_flow_;
+  bool with_bonds_ = false;
   std::vector<std::string> types_;
   output::CsvTable table_;
   std::optional<output::PvdSeries> series_;

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <optional>
 
+#include "run/bond_output.hpp"
 #include "run/figures.hpp"
 #include "run/fracture_output.hpp"
 #include "run/model_building.hpp"
@@ -35,8 +36,12 @@ output::RunSummary run_mechanics(const RunContext& context) {
   building.reset();
   const dda::System& system = model.system();
 
-  CsvTable history({"step", "time", "time_step", "open_close_iterations", "contacts",
-                    "max_displacement", "max_penetration"});
+  // A model with bonds adds the bonds broken in each step, and in all (added last).
+  const bool bonded = system.bond_count() > 0;
+  std::vector<std::string> history_columns{"step", "time", "time_step", "open_close_iterations", "contacts",
+                                           "max_displacement", "max_penetration"};
+  if (bonded) history_columns.insert(history_columns.end(), {"broken_bonds", "broken_bonds_total"});
+  CsvTable history(history_columns);
   CsvTable measure({"step", "time", "name", "x", "y", "ux", "uy"});
   const auto write_tables = [&] {
     context.folder.write("history.csv", history.text());
@@ -49,6 +54,11 @@ output::RunSummary run_mechanics(const RunContext& context) {
       meter ? make_joint_aperture_laws(s, meter->layout().traces) : coupling::JointApertureLaws{};
   const std::vector<std::string> fracture_types = fracture_type_names(s);
   FractureOutput fractures(context.folder, /*with_flow=*/false, fracture_types);
+  std::optional<BondOutput> bonds;
+  if (bonded) {
+    fractures.list_broken_bonds();
+    bonds.emplace(context.folder, s, system, static_cast<int>(fracture_types.size()));
+  }
   std::optional<fractures::FractureState> fracture_state;  // of the blocks as they are, when measured at this step
   // The blocks and fractures of the last output step: what the figure of a run that stops shows.
   struct OutputState {
@@ -61,6 +71,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
   // Blocks and contacts, and the fractures' rows and lines, at an output step.
   const auto write_step = [&](long long step, double time) {
     paraview.write_blocks(static_cast<int>(step), time, system);
+    if (bonds) bonds->write_series(static_cast<int>(step), time, system);
     if (!meter) return;
     OutputState& out = last_output.emplace();
     out.step = step;
@@ -71,6 +82,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
     if (s.output.fields.fractures) fractures.write_series(static_cast<int>(step), time, out.fractures);
   };
   const auto draw_figure = [&](const std::string& status) {
+    if (bonds) bonds->draw_figure(s, system, fmt::format("DDA step {}{}", model.steps(), status.empty() ? "" : ", " + status));
     if (last_output)
       draw_aperture_figure(s, context.folder, last_output->polygons, last_output->fractures,
                            {fmt::format("DDA step {}", last_output->step), status});
@@ -114,10 +126,16 @@ output::RunSummary run_mechanics(const RunContext& context) {
       last_step_displacement = r.max_displacement;
       fracture_state.reset();  // no longer the blocks' state: measured again at an output step
       const long long step = model.steps();
-      history.add_row({CsvTable::cell(step), CsvTable::cell(r.time), CsvTable::cell(r.time_step),
-                       CsvTable::cell(static_cast<long long>(r.open_close_iterations)),
-                       CsvTable::cell(static_cast<long long>(r.contacts)), CsvTable::cell(r.max_displacement),
-                       CsvTable::cell(r.max_penetration)});
+      std::vector<std::string> row{CsvTable::cell(step), CsvTable::cell(r.time), CsvTable::cell(r.time_step),
+                                   CsvTable::cell(static_cast<long long>(r.open_close_iterations)),
+                                   CsvTable::cell(static_cast<long long>(r.contacts)), CsvTable::cell(r.max_displacement),
+                                   CsvTable::cell(r.max_penetration)};
+      if (bonds) {
+        const int broken = bonds->add_breaks(step, system, fractures);
+        row.push_back(CsvTable::cell(static_cast<long long>(broken)));
+        row.push_back(CsvTable::cell(static_cast<long long>(system.bond_breaks().size())));
+      }
+      history.add_row(row);
       const auto positions = system.measured_positions();
       for (std::size_t i = 0; i < positions.size(); ++i) {
         const Point p0 = m.measures[i].point;

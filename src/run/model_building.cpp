@@ -139,6 +139,12 @@ std::vector<dda::BlockDefinition> blocks_of(const Scenario& s, const ModelGeomet
     // Each edge on a trace takes the trace's joint type; one on the domain boundary the default.
     for (int fracture : model.network.edge_fractures[b])
       block.edge_joints.push_back(fracture < 0 ? 0 : model.traces[static_cast<std::size_t>(fracture)].joint_type);
+    // A bonded face (a tessellation's) takes its bonds' type.
+    if (!model.edge_bonds.empty()) {
+      block.edge_bonds = model.edge_bonds[b];
+      for (std::size_t e = 0; e < block.edge_bonds.size(); ++e)
+        if (block.edge_bonds[e] >= 0) block.edge_joints[e] = model.bond_types[static_cast<std::size_t>(block.edge_bonds[e])];
+    }
     blocks.push_back(std::move(block));
   }
   if (!errors.empty()) throw scenario::ScenarioError(std::move(errors));

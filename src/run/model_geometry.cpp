@@ -7,6 +7,7 @@
 
 #include "geometry/joint_sets.hpp"
 #include "output/item_list.hpp"
+#include "run/sub_blocks.hpp"
 #include "scenario/diagnostics.hpp"
 
 namespace hydrodda::run {
@@ -122,6 +123,7 @@ ModelGeometry build_model_geometry(const scenario::Scenario& s) {
   model.summary += ", " + plural(net.blocks.size(), "block", "blocks");
   const int merged = net.merged_small + net.merged_thin;
   if (merged > 0) model.summary += fmt::format(" ({} merged)", plural(static_cast<std::size_t>(merged), "sliver", "slivers"));
+  tessellate_blocks(s, model);
   return model;
 }
 

@@ -22,6 +22,10 @@ struct ModelGeometry {
   std::vector<std::string> warnings;  // to log once: slivers merged, pieces dropped
   std::vector<std::string> notes;     // the same at info level (loose ends of generated traces)
   std::string summary;                // "23 traces (…), 31 blocks (…)" for check and the log
+  // With [[geometry.tessellate]] (run/sub_blocks.hpp): per block, per edge, its bond (the
+  // same id on the two sub-blocks it joins) or −1; and per bond, its joint type. Empty without.
+  std::vector<std::vector<int>> edge_bonds;
+  std::vector<int> bond_types;
 };
 
 // The scenario's domain cut by its traces; the scenario must have a domain.

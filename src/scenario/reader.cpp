@@ -8,6 +8,7 @@
 
 #include "scenario/bounds.hpp"
 #include "scenario/fracture_sources.hpp"
+#include "scenario/tessellations.hpp"
 #include "scenario/input_files.hpp"
 #include "scenario/rollers_and_initial_stress.hpp"
 #include "scenario/table_view.hpp"
@@ -88,7 +89,7 @@ void read_geometry(ReadContext& ctx, const TableView& root, Scenario& s) {
   if (!t) return;
   const TableView g(ctx, *t, "geometry",
                     {"domain", "fractures", "fracture", "welded", "initial_aperture", "block", "joint_set",
-                     "fractures_file", "min_block_area"});
+                     "fractures_file", "min_block_area", "tessellate"});
   GeometryDefinition geometry;
   if (auto domain = g.points("domain")) {
     geometry.domain = std::move(*domain);
@@ -102,6 +103,7 @@ void read_geometry(ReadContext& ctx, const TableView& root, Scenario& s) {
   read_fracture_tables(ctx, g, geometry);
   read_joint_sets(ctx, g, geometry);
   read_fractures_file(ctx, g, s.file, geometry);
+  read_tessellations(ctx, g, geometry);
   const bool has_traces = !geometry.fractures.empty() || !geometry.joint_sets.empty() || !geometry.file_fractures.empty();
   if (auto area = g.number("min_block_area")) {
     geometry.min_block_area = *area;
@@ -254,7 +256,7 @@ void read_materials(ReadContext& ctx, const TableView& root, Scenario& s) {
 
 const std::vector<std::string> kJointKeys{"friction_angle",    "cohesion",         "tensile_strength",
                                           "residual_aperture", "normal_stiffness", "max_closure",
-                                          "barrier_permeability", "barrier_width"};
+                                          "barrier_permeability", "barrier_width", "fracture_energy"};
 
 // The keys of one joint type over `joint` (the default type's values, or the built-in ones).
 void read_joint_keys(ReadContext& ctx, const TableView& j, JointDefinition& joint) {
@@ -302,6 +304,11 @@ void read_joint_keys(ReadContext& ctx, const TableView& j, JointDefinition& join
     ctx.error(joint.barrier_line, j.key_path("barrier_width"), "required with barrier_permeability");
   if (joint.barrier_width && !joint.barrier_permeability)
     ctx.error(joint.barrier_line, j.key_path("barrier_permeability"), "required with barrier_width");
+  if (j.has("fracture_energy")) {
+    joint.fracture_energy = j.number("fracture_energy");
+    joint.fracture_energy_line = j.line_of_key("fracture_energy");
+    if (joint.fracture_energy) j.require("fracture_energy", *joint.fracture_energy >= 0.0, "must be >= 0 (J/m2)");
+  }
 }
 
 // [joint], the default type, and its sub-tables [joint.NAME], each a type whose keys default

@@ -15,6 +15,7 @@
 #include "dda/definitions.hpp"
 #include "geometry/point.hpp"
 #include "geometry/polygon.hpp"
+#include "geometry/tessellation.hpp"
 #include "hydro/boundary_condition.hpp"
 #include "hydro/permeability_law.hpp"
 #include "numerics/time_table.hpp"
@@ -67,6 +68,18 @@ struct FileFracture {
   std::string joint;
 };
 
+// Intact rock as bonded sub-blocks ([[geometry.tessellate]]): the blocks cut from the domain
+// whose centroid lies in `region` are tessellated, each face between two sub-blocks a bond of
+// the joint type `joint` (docs/dda.md, "Bonds").
+struct TessellationDefinition {
+  geometry::TessellationKind kind = geometry::TessellationKind::voronoi;
+  double size = 0.0;                // m, the mean sub-block size (cells of size² on average)
+  Polygon region;                   // empty: the domain
+  std::uint64_t seed = 0;
+  TraceJoint joint;                 // empty name: [joint]
+  int line = 0;
+};
+
 struct GeometryDefinition {
   Polygon domain;                    // empty when blocks are given one by one
   // `fractures`, then the [[geometry.fracture]] tables, in file order.
@@ -80,6 +93,7 @@ struct GeometryDefinition {
   int initial_aperture_line = 0;     // for messages about blocks too thin for it
   std::optional<double> min_block_area;  // m2; empty: 1% of the mean block area of the cut
   std::vector<BlockDefinition> blocks;
+  std::vector<TessellationDefinition> tessellations;  // in file order; a block takes the first whose region holds it
 };
 
 // A named boundary segment; left/right/bottom/top exist by default.
@@ -129,6 +143,10 @@ struct JointDefinition {
   std::optional<double> barrier_permeability;
   std::optional<double> barrier_width;
   int barrier_line = 0;
+  // J/m², the energy a bond of this type takes to soften from its strength to nothing (a
+  // softening bond, not yet implemented: refused where bonds use it).
+  std::optional<double> fracture_energy;
+  int fracture_energy_line = 0;
   bool hydraulic() const { return residual_aperture || normal_stiffness || max_closure; }
   bool barrier() const { return barrier_permeability && barrier_width; }
   // The barrier's resistance across it per unit area, width / permeability (m⁻¹); 0: none.

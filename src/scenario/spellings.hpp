@@ -11,6 +11,7 @@
 #include "coupling/loop_acceleration.hpp"
 #include "coupling/permeability_laws.hpp"
 #include "dda/definitions.hpp"
+#include "geometry/tessellation.hpp"
 #include "hydro/boundary_condition.hpp"
 
 namespace hydrodda::scenario {
@@ -46,6 +47,14 @@ struct Spellings<dda::ContactMethod> {  // mechanics.contact
   static constexpr std::array<Spelling<dda::ContactMethod>, 2> table{{
       {dda::ContactMethod::augmented_lagrangian, "augmented-lagrangian"},
       {dda::ContactMethod::penalty, "penalty"},
+  }};
+};
+
+template <>
+struct Spellings<geometry::TessellationKind> {  // geometry.tessellate.kind
+  static constexpr std::array<Spelling<geometry::TessellationKind>, 2> table{{
+      {geometry::TessellationKind::voronoi, "voronoi"},
+      {geometry::TessellationKind::triangles, "triangles"},
   }};
 };
 

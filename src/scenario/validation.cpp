@@ -8,6 +8,7 @@
 #include "scenario/material_regions.hpp"
 #include "scenario/rollers_and_initial_stress.hpp"
 #include "scenario/transient_reading.hpp"
+#include "scenario/tessellations.hpp"
 
 namespace hydrodda::scenario {
 
@@ -332,6 +333,7 @@ void validate_scenario(ReadContext& ctx, const TableView& root, Scenario& s) {
   check_initial_stress_across_model(ctx, s);
   check_joint_types(ctx, s);
   check_transient(ctx, root, s);
+  check_tessellations(ctx, s);
   if (s.mechanics) {
     for (const PrescribedDisplacement& d : s.mechanics->displacements)
       check_boundary_reference(ctx, s, d.line, "mechanics.displacement.boundary", d.boundary);

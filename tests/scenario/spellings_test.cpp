@@ -48,6 +48,7 @@ TEST(ScenarioSpellings, EachValueHasOneSpellingOfItsOwn) {
   expect_one_spelling_each<hydro::PressureConvention>(2);
   expect_one_spelling_each<hydro::BoundaryKind>(3);
   expect_one_spelling_each<coupling::Acceleration>(3);
+  expect_one_spelling_each<geometry::TessellationKind>(2);
   expect_one_spelling_each<coupling::PermeabilityLaw>(static_cast<int>(coupling::kPermeabilityLaws.size()));
 }
 

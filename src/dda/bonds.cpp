@@ -1,0 +1,129 @@
+// Bonds: faces of intact rock between sub-blocks (BlockDefinition::edge_bonds). A bonded face
+// is carried by the ordinary vertex–edge contacts at its ends, which start locked and stay
+// locked while the bond is intact; the face breaks for good when the traction of its
+// sub-blocks' stress exceeds its joint type's tensile strength or shear strength
+// (break_overloaded_bonds). A
+// broken bond is a joint of its type with friction only (System::joint_of). Breaks made in an attempt at a step
+// that is then cut are undone with it, so that a bond breaks under the load of the step that
+// is kept (docs/dda.md, "Bonds").
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "dda/system.hpp"
+
+namespace hydrodda::dda {
+
+void System::setup_bonds(const std::vector<BlockDefinition>& blocks) {
+  std::vector<std::array<BondSide, 2>> sides;
+  std::vector<int> seen;  // per bond, the sides found
+  edge_bonds_.assign(blocks.size(), {});
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    const std::vector<int>& bonds = blocks[b].edge_bonds;
+    if (bonds.empty()) continue;
+    const std::string name = "DDA: block " + std::to_string(b) + ": ";
+    if (bonds.size() != blocks[b].polygon.size()) throw std::invalid_argument(name + "edge_bonds needs one entry per edge");
+    for (std::size_t e = 0; e < bonds.size(); ++e) {
+      const int id = bonds[e];
+      if (id < 0) continue;
+      if (static_cast<std::size_t>(id) >= sides.size()) {
+        sides.resize(static_cast<std::size_t>(id) + 1);
+        seen.resize(static_cast<std::size_t>(id) + 1, 0);
+      }
+      int& count = seen[static_cast<std::size_t>(id)];
+      if (count == 2) throw std::invalid_argument(name + "bond " + std::to_string(id) + " on more than two edges");
+      if (count == 1 && sides[static_cast<std::size_t>(id)][0].block == static_cast<int>(b))
+        throw std::invalid_argument(name + "bond " + std::to_string(id) + " on two edges of one block");
+      sides[static_cast<std::size_t>(id)][static_cast<std::size_t>(count++)] = {static_cast<int>(b), static_cast<int>(e)};
+    }
+    edge_bonds_[b] = bonds;
+  }
+  for (std::size_t id = 0; id < seen.size(); ++id)
+    if (seen[id] != 2)
+      throw std::invalid_argument("DDA: bond " + std::to_string(id) + " is on " + std::to_string(seen[id]) +
+                                  " edges, not on the two faces it joins");
+  bond_sides_ = std::move(sides);
+  bond_broken_.assign(bond_sides_.size(), 0);
+  // l̄: half the mean face length, the tributary length of a face's end on average.
+  double total = 0.0;
+  for (const std::array<BondSide, 2>& s : bond_sides_) {
+    const Polygon& p = blocks[static_cast<std::size_t>(s[0].block)].polygon;
+    total += geometry::distance(p[static_cast<std::size_t>(s[0].edge)], p[(static_cast<std::size_t>(s[0].edge) + 1) % p.size()]);
+  }
+  if (!bond_sides_.empty()) bond_reference_length_ = 0.5 * total / static_cast<double>(bond_sides_.size());
+}
+
+// Pseudocode:
+//   for each intact bond, n its face's unit normal, t along it:
+//     σ = the mean stress of its two sub-blocks at the end of the step under d (a fixed
+//         block, which carries none, left out)
+//     σn = n·σ·n (tension positive), τ = t·σ·n
+//     σn > T                     → broken in tension
+//     |τ| > c + max(−σn, 0) tan φ → broken in shear
+// The face's traction is read from the sub-blocks' stresses, not from its contacts' forces:
+// the uniform-strain blocks leave the forces of single contacts, and their sums over a face,
+// scattered about the traction times the length (the six unknowns of a block cannot give each
+// contact its share; a bar of Voronoi sub-blocks in uniform tension had faces whose two
+// contacts carried 20% more than σn L), while the stresses are the field's own, uniform where
+// it is (docs/dda.md, "Bonds").
+bool System::break_overloaded_bonds(const Eigen::VectorXd& d) {
+  const auto stress_at_end = [&](int block) -> std::optional<Vector3> {
+    const Block& b = blocks_[static_cast<std::size_t>(block)];
+    if (b.dof < 0) return std::nullopt;
+    return Vector3(b.stress + elasticity_[static_cast<std::size_t>(b.material)] * d.segment<3>(6 * b.dof + 3));
+  };
+  bool any = false;
+  for (std::size_t bond = 0; bond < bond_sides_.size(); ++bond) {
+    if (bond_broken_[bond] != 0) continue;
+    const std::optional<Vector3> a = stress_at_end(bond_sides_[bond][0].block);
+    const std::optional<Vector3> b = stress_at_end(bond_sides_[bond][1].block);
+    if (!a && !b) continue;
+    const Vector3 sigma = a && b ? Vector3(0.5 * (*a + *b)) : (a ? *a : *b);
+    const std::array<Point, 2> face = bond_face(static_cast<int>(bond));
+    const Point t = (face[1] - face[0]) / geometry::distance(face[0], face[1]);
+    const Point n{t.y, -t.x};  // out of the first sub-block (counter-clockwise)
+    const Point traction{sigma[0] * n.x + sigma[2] * n.y, sigma[2] * n.x + sigma[1] * n.y};
+    const double normal = dot(traction, n);
+    const double shear = dot(traction, t);
+    const JointStrength& strength = joints_[static_cast<std::size_t>(bond_joint_type(static_cast<int>(bond)))];
+    BondFailure mode = BondFailure::none;
+    if (normal > strength.tensile_strength)
+      mode = BondFailure::tension;
+    else if (std::abs(shear) > strength.cohesion + std::max(-normal, 0.0) * strength.tan_friction)
+      mode = BondFailure::shear;
+    if (mode == BondFailure::none) continue;
+    bond_broken_[bond] = 1;
+    pending_breaks_.emplace_back(static_cast<int>(bond), mode);
+    any = true;
+  }
+  return any;
+}
+
+void System::undo_pending_bond_breaks() {
+  for (const auto& [bond, mode] : pending_breaks_) bond_broken_[static_cast<std::size_t>(bond)] = 0;
+  pending_breaks_.clear();
+}
+
+void System::record_pending_bond_breaks() {
+  for (const auto& [bond, mode] : pending_breaks_) {
+    const std::array<Point, 2> face = bond_face(bond);
+    bond_breaks_.push_back({bond, time_, mode, face[0], face[1]});
+  }
+  pending_breaks_.clear();
+}
+
+std::array<Point, 2> System::bond_face(int bond) const {
+  const BondSide& side = bond_sides_.at(static_cast<std::size_t>(bond))[0];
+  const Polygon& p = blocks_[static_cast<std::size_t>(side.block)].polygon;
+  return {p[static_cast<std::size_t>(side.edge)], p[(static_cast<std::size_t>(side.edge) + 1) % p.size()]};
+}
+
+int System::bond_joint_type(int bond) const {
+  const BondSide& side = bond_sides_.at(static_cast<std::size_t>(bond))[0];
+  const std::vector<int>& types = edge_joints_[static_cast<std::size_t>(side.block)];
+  return types.empty() ? 0 : types[static_cast<std::size_t>(side.edge)];
+}
+
+}  // namespace hydrodda::dda

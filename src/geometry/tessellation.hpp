@@ -1,0 +1,48 @@
+#pragma once
+// Intact rock as sub-blocks: a convex polygon (a block cut from the domain) tessellated into
+// Voronoi cells of seeded points, or into triangles (each Voronoi cell fanned from its
+// centroid), every face between two sub-blocks named by both, so that each is a bond.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "geometry/point.hpp"
+#include "geometry/polygon.hpp"
+
+namespace hydrodda::geometry {
+
+enum class TessellationKind { voronoi, triangles };
+
+// Seeds on a jittered grid over `box`: one per square of side `size` (whole squares from
+// box.lo), uniform in it, drawn in row order from PortableRandom(seed); the same seeds on any
+// machine. The cells then have a mean area of size².
+std::vector<Point> generate_seeds(const Box& box, double size, std::uint64_t seed);
+
+// The seeds inside `polygon` and at least `margin` from its boundary (a seed nearer its edge
+// would make a sliver of a sub-block: its neighbours' cells take the place).
+std::vector<Point> select_seeds(std::span<const Point> polygon, std::span<const Point> seeds, double margin);
+
+// A tessellated polygon: sub-block polygons (counter-clockwise) and, per sub-block and edge
+// (vertex k → k + 1), where the edge lies: >= 0, the sub-block on its other side (a bond);
+// < 0, on edge −1 − value of the tessellated polygon.
+struct Tessellation {
+  std::vector<Polygon> cells;
+  std::vector<std::vector<int>> edge_sources;
+};
+
+// The Voronoi cells of `seeds` (inside `polygon`) clipped to the convex `polygon`, or those
+// cells fanned into triangles. Each cell is the polygon clipped by the half-planes nearer its
+// seed than another's (Sutherland–Hodgman, each edge carrying where it came from); the
+// neighbours tried are those within 3 `size` (a jittered grid's cell lies within 2√2 size of
+// its seed), more when a cell reaches farther: a bisector cuts a cell only if its seed lies
+// within twice the cell's radius. Then vertices closer than 1e-2 size are welded (a face
+// that short is dropped from both its sub-blocks). Throws std::invalid_argument for a
+// polygon that is not convex, or seeds that leave a cell degenerate.
+//   for each seed s: cell = polygon
+//     for each other seed t within r, nearest first: cell ∩= {x : |x − s| <= |x − t|}
+//     if 2 max|v − s| > r: r = 2 max|v − s|, again
+Tessellation tessellate_convex(std::span<const Point> polygon, std::span<const Point> seeds, double size,
+                               TessellationKind kind);
+
+}  // namespace hydrodda::geometry

@@ -1,0 +1,89 @@
+#include "scenario/tessellations.hpp"
+
+#include <fmt/format.h>
+
+#include <limits>
+
+#include "scenario/spellings.hpp"
+#include "scenario/validation.hpp"
+
+namespace hydrodda::scenario {
+
+double estimate_sub_blocks(const TessellationDefinition& t, const Polygon& domain) {
+  const Polygon& region = t.region.empty() ? domain : t.region;
+  if (region.size() < 3 || !(t.size > 0.0)) return 0.0;
+  const double cells = geometry::area(region) / (t.size * t.size);
+  return t.kind == geometry::TessellationKind::triangles ? 6.0 * cells : cells;
+}
+
+void read_tessellations(ReadContext& ctx, const TableView& g, GeometryDefinition& geometry) {
+  int index = 0;
+  double total = 0.0;
+  int last_line = 0;
+  for (const toml::table* table : g.tables("tessellate")) {
+    const TableView t(ctx, *table, "geometry.tessellate", {"kind", "size", "region", "seed", "joint"});
+    TessellationDefinition tess;
+    tess.line = last_line = t.line();
+    const std::string indexed = fmt::format("geometry.tessellate[{}]", index++);
+    tess.kind = t.choice("kind", geometry::TessellationKind::voronoi);
+    if (!t.has("size")) ctx.error(t.line(), t.key_path("size"), "required key is missing");
+    tess.size = t.number("size").value_or(0.0);
+    if (t.has("size")) t.require("size", tess.size > 0.0, "must be > 0 (m)");
+    if (auto joint = t.string("joint")) tess.joint = {*joint, t.line_of_key("joint")};
+    if (auto seed = t.integer("seed", 0, std::numeric_limits<int>::max())) {
+      tess.seed = static_cast<std::uint64_t>(*seed);
+    } else if (!t.has("seed")) {
+      ctx.defaults.push_back({indexed + ".seed", "0"});
+    }
+    if (auto region = t.points("region")) {
+      tess.region = std::move(*region);
+      if (check_polygon(ctx, t.line_of_key("region"), t.key_path("region"), tess.region) &&
+          geometry.domain.size() >= 3 && !polygons_overlap(tess.region, geometry.domain))
+        ctx.error(t.line_of_key("region"), t.key_path("region"), "the region lies wholly outside geometry.domain");
+    }
+    // A size larger than the region would make one sub-block of it, or none.
+    const Polygon& region = tess.region.empty() ? geometry.domain : tess.region;
+    if (tess.size > 0.0 && region.size() >= 3 && tess.size > geometry::width_across_edges(region))
+      ctx.error(t.line_of_key("size"), t.key_path("size"),
+                fmt::format("{} m is larger than the region it tessellates ({} m across at its narrowest)",
+                            format_number(tess.size), format_number(geometry::width_across_edges(region))));
+    total += estimate_sub_blocks(tess, geometry.domain);
+    geometry.tessellations.push_back(std::move(tess));
+  }
+  if (total > kMaxSubBlocks)
+    ctx.error(last_line, "geometry.tessellate.size",
+              fmt::format("the tessellations would make some {:.3g} sub-blocks (each region's area over size², six "
+                          "times that for triangles); at most {:g} fit this machine's memory: make size larger or the "
+                          "region smaller",
+                          total, kMaxSubBlocks));
+}
+
+void check_tessellations(ReadContext& ctx, const Scenario& s) {
+  if (!s.geometry || s.geometry->tessellations.empty()) return;
+  for (const TessellationDefinition& t : s.geometry->tessellations) {
+    if (s.geometry->domain.empty()) {
+      ctx.error(t.line, "geometry.tessellate", "tessellates the blocks cut from a geometry.domain: give one");
+      continue;
+    }
+    const int type = s.joint_type_index(t.joint.name);
+    if (type < 0) {
+      std::string names;
+      for (const JointDefinition& j : s.joint_types) names += (names.empty() ? "" : ", ") + j.name;
+      ctx.error(t.joint.line, "geometry.tessellate.joint",
+                fmt::format("joint type \"{}\" is not defined ({})", t.joint.name,
+                            names.empty() ? "there are none: define one as [joint.NAME]" : "the types are " + names));
+      continue;
+    }
+    const JointDefinition& j = s.joint_type(type);
+    if (j.fracture_energy && *j.fracture_energy > 0.0)
+      ctx.error(j.fracture_energy_line, (j.name.empty() ? "joint" : "joint." + j.name) + ".fracture_energy",
+                "softening bonds are not yet implemented: the bonds of geometry.tessellate (line " +
+                    std::to_string(t.line) + ") break at their strength; leave fracture_energy out");
+  }
+  if (s.flow && s.mechanics)
+    ctx.error(s.geometry->tessellations.front().line, "geometry.tessellate",
+              "bonded sub-blocks in a coupled run are not yet supported (broken bonds do not yet conduct or take the "
+              "fluid's pressure): run the mechanics alone, or leave [flow] out");
+}
+
+}  // namespace hydrodda::scenario
