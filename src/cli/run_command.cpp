@@ -26,8 +26,9 @@ std::optional<run::ResumedRun> open_resumed_run(const std::filesystem::path& dir
   // Parsed as the original file, so that relative paths (mesh.file) resolve as they did.
   std::optional<scenario::Scenario> scenario = load_scenario_text(saved.scenario_text, saved.checkpoint.scenario_file);
   if (!scenario) return std::nullopt;
-  run::check_resumable(directory, *scenario, saved.checkpoint);
-  return run::ResumedRun{directory, std::move(*scenario), std::move(saved.scenario_text), std::move(saved.checkpoint)};
+  run::check_resumable(directory, *scenario, saved);
+  return run::ResumedRun{directory, std::move(*scenario), std::move(saved.scenario_text), std::move(saved.checkpoint),
+                         std::move(saved.transient)};
 }
 
 // The exit code of a run that went as far as running, and the line that says how it ended.

@@ -463,3 +463,116 @@ RunCheckpoint decode_checkpoint(std::string_view file) {
 }
 
 }  // namespace hydrodda::output
+
+// The transient run's checkpoint: its own magic line and version, the Writer and Reader above.
+namespace hydrodda::output {
+
+namespace {
+
+constexpr std::string_view kTransientMagic = "hydrodda transient checkpoint\n";
+constexpr std::int64_t kTransientVersion = 1;
+
+void put_input_files(Writer& w, const std::vector<InputFile>& files) {
+  w.put(static_cast<std::int64_t>(files.size()));
+  for (const InputFile& f : files) {
+    w.put(f.key);
+    w.put(f.path);
+    w.put(f.hash);
+  }
+}
+
+void get_input_files(Reader& r, std::vector<InputFile>& files) {
+  std::int64_t count = 0;
+  r.get(count);
+  if (count < 0 || count > kMaxCount) r.fail();
+  for (std::int64_t i = 0; i < count; ++i) {
+    InputFile f;
+    r.get(f.key);
+    r.get(f.path);
+    r.get(f.hash);
+    files.push_back(std::move(f));
+  }
+}
+
+// The fields after the header, in one order for writing and reading.
+template <class Io, class Checkpoint>
+void visit_transient(Io&& io, Checkpoint& c) {
+  io(c.steps);
+  io(c.time);
+  io(c.time_step);
+  io(c.history);
+  io(c.probes);
+  io(c.output_times);
+  io(c.times);
+  io(c.storage_rates);
+  io(c.boundary_flows);
+  io(c.probe_pressures);
+  visit_flow(io, c.state);
+  io(c.state.storage_rate);
+}
+
+}  // namespace
+
+bool is_transient_checkpoint(std::string_view bytes) { return bytes.substr(0, kTransientMagic.size()) == kTransientMagic; }
+
+std::string encode_transient_checkpoint(const TransientCheckpoint& c) {
+  std::string bytes;
+  Writer w([&](std::string_view piece) { bytes += piece; });
+  for (char ch : kTransientMagic) w.put_raw(ch);
+  w.put(kTransientVersion);
+  w.put_raw(kByteOrderMark);
+  w.put(c.scenario_hash);
+  w.put(c.scenario_file);
+  put_input_files(w, c.input_files);
+  visit_transient([&](const auto& v) { w.put(v); }, c);
+  w.put(static_cast<std::int64_t>(c.state.boundary_flows.size()));
+  for (const hydro::BoundaryFlow& b : c.state.boundary_flows) {
+    w.put(b.name);
+    w.put(b.flow);
+  }
+  w.finish();
+  return bytes;
+}
+
+TransientCheckpoint decode_transient_checkpoint(std::string_view file) {
+  if (!is_transient_checkpoint(file)) throw CheckpointError("not a hydrodda transient checkpoint");
+  {
+    Reader header(file);
+    header.expect(kTransientMagic);
+    std::int64_t version = 0;
+    header.get(version);
+    if (version != kTransientVersion)
+      throw CheckpointError("transient checkpoint format " + std::to_string(version) + "; this hydrodda reads format " +
+                            std::to_string(kTransientVersion));
+  }
+  if (file.size() < kTransientMagic.size() + kChecksumSize) throw CheckpointError("the checkpoint is damaged or cut short");
+  const std::string_view bytes = file.substr(0, file.size() - kChecksumSize);
+  std::uint64_t checksum = 0;
+  std::memcpy(&checksum, file.data() + bytes.size(), kChecksumSize);
+  if (checksum != checksum_of(bytes))
+    throw CheckpointError("the checkpoint is damaged or cut short: its checksum does not match its contents");
+  Reader r(bytes);
+  r.expect(kTransientMagic);
+  std::int64_t version = 0;
+  r.get(version);
+  if (r.get_raw<std::uint32_t>() != kByteOrderMark)
+    throw CheckpointError("the checkpoint was written on a machine of another byte order");
+  TransientCheckpoint c;
+  r.get(c.scenario_hash);
+  r.get(c.scenario_file);
+  get_input_files(r, c.input_files);
+  visit_transient([&](auto& v) { r.get(v); }, c);
+  std::int64_t boundaries = 0;
+  r.get(boundaries);
+  if (boundaries < 0 || boundaries > kMaxCount) r.fail();
+  for (std::int64_t i = 0; i < boundaries; ++i) {
+    hydro::BoundaryFlow b;
+    r.get(b.name);
+    r.get(b.flow);
+    c.state.boundary_flows.push_back(std::move(b));
+  }
+  r.expect_end();
+  return c;
+}
+
+}  // namespace hydrodda::output

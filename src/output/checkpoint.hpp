@@ -20,6 +20,7 @@
 
 #include "coupling/staggered_loop.hpp"
 #include "dda/system.hpp"
+#include "hydro/flow_solution.hpp"
 #include "output/atomic_file.hpp"
 
 namespace hydrodda::output {
@@ -61,6 +62,34 @@ void write_checkpoint(AtomicFile& file, const RunCheckpoint& checkpoint, const d
                       const coupling::LoopState& coupling);
 // Throws CheckpointError when the bytes are not a whole checkpoint of this format.
 RunCheckpoint decode_checkpoint(std::string_view bytes);
+
+// The checkpoint of a transient flow-only run ([flow.transient]), in the same file
+// (checkpoint.bin), written at each output time and when the run is interrupted: the state after
+// its last finished step and what its files and figures hold so far, so that a resumed run
+// continues bit for bit. Format as above, under its own magic line "hydrodda transient
+// checkpoint\n" and version.
+struct TransientCheckpoint {
+  std::uint64_t scenario_hash = 0;
+  std::string scenario_file;
+  std::vector<InputFile> input_files;
+  int steps = 0;           // steps of the plan finished (run::plan_step_times)
+  double time = 0.0;       // their end (s)
+  double time_step = 0.0;  // the last one's length (s); 0 at t = 0
+  std::vector<std::vector<std::string>> history;  // history.csv rows so far, header excluded
+  std::vector<std::vector<std::string>> probes;   // probes.csv rows so far, header excluded
+  std::vector<double> output_times;               // fluid_NNNN.vtu written, NNNN the index
+  // The figures' series so far: each recorded time, the rate of storage, each mesh boundary's
+  // outward flow and each probe's pressure then.
+  std::vector<double> times, storage_rates;
+  std::vector<std::vector<double>> boundary_flows, probe_pressures;
+  hydro::FlowSolution state;  // head, pressure, flux, boundary flows, balance, storage rate
+};
+
+std::string encode_transient_checkpoint(const TransientCheckpoint& checkpoint);
+// Throws CheckpointError when the bytes are not a whole transient checkpoint of this format.
+TransientCheckpoint decode_transient_checkpoint(std::string_view bytes);
+// The bytes begin as a transient run's checkpoint does (which of the two to decode).
+bool is_transient_checkpoint(std::string_view bytes);
 
 // 64-bit FNV-1a of a text: tells a scenario edited since the run started.
 std::uint64_t hash_text(std::string_view text);

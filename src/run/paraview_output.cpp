@@ -57,6 +57,13 @@ void ParaviewOutput::list_written(const std::vector<int>& steps) {
   }
 }
 
+void ParaviewOutput::list_written_fluid(const std::vector<double>& times) {
+  if (!fields_.fluid) return;
+  if (!fluid_) fluid_.emplace(folder_.file("fluid.pvd"));
+  for (std::size_t i = 0; i < times.size(); ++i)
+    list_if_present(*fluid_, folder_, times[i], fmt::format("fluid_{:04d}.vtu", i));
+}
+
 void ParaviewOutput::write_blocks(int step, double time, const dda::System& system) {
   if (fields_.contacts) write_contacts(step, time, system);
   if (!fields_.blocks) return;

@@ -34,6 +34,8 @@ class ParaviewOutput {
   // A continued run: lists again the fluid, block and contact files an earlier part of the run wrote
   // at these steps (time = step, as in coupled runs), so the series stay whole.
   void list_written(const std::vector<int>& steps);
+  // A continued transient run: lists again fluid_NNNN.vtu at times[NNNN], as it wrote them.
+  void list_written_fluid(const std::vector<double>& times);
 
  private:
   const output::RunFolder& folder_;

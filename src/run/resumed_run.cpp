@@ -4,6 +4,8 @@
 
 #include "output/summary_reading.hpp"
 #include "run/run.hpp"
+#include "run/transient_flow.hpp"
+#include "scenario/load_times.hpp"
 #include "scenario/reader.hpp"
 
 namespace hydrodda::run {
@@ -60,13 +62,21 @@ SavedRun read_saved_run(const fs::path& directory) {
   const fs::path checkpoint_file = directory / "checkpoint.bin";
   if (!fs::exists(checkpoint_file, ec))
     throw InputError(fmt::format("--resume {}: the folder holds no checkpoint.bin, so there is nothing to resume "
-                                 "(coupled runs write one after each coupling iteration)",
+                                 "(coupled runs write one after each coupling iteration, transient flow-only runs at each output time "
+                                 "and when interrupted)",
                                  dir));
   const std::optional<std::string> bytes = read_text_file(checkpoint_file);
   if (!bytes) throw InputError(fmt::format("--resume {}: cannot read {}", dir, checkpoint_file.string()));
   SavedRun run;
   try {
-    run.checkpoint = output::decode_checkpoint(*bytes);
+    if (output::is_transient_checkpoint(*bytes)) {
+      run.transient = output::decode_transient_checkpoint(*bytes);
+      run.checkpoint.scenario_hash = run.transient->scenario_hash;
+      run.checkpoint.scenario_file = run.transient->scenario_file;
+      run.checkpoint.input_files = run.transient->input_files;
+    } else {
+      run.checkpoint = output::decode_checkpoint(*bytes);
+    }
   } catch (const output::CheckpointError& e) {
     throw InputError(fmt::format("{}: {}", checkpoint_file.string(), e.what()));
   }
@@ -84,11 +94,29 @@ SavedRun read_saved_run(const fs::path& directory) {
   return run;
 }
 
-void check_resumable(const fs::path& directory, const scenario::Scenario& scenario,
-                     const output::RunCheckpoint& checkpoint) {
+namespace {
+
+void check_transient_resumable(const fs::path& directory, const scenario::Scenario& scenario,
+                               const output::TransientCheckpoint& checkpoint) {
+  const std::string dir = directory.string();
+  if (scenario.mechanics || !scenario.flow || !scenario.flow->transient)
+    throw InputError(fmt::format("--resume {}: its checkpoint is a transient flow-only run's, its scenario is not", dir));
+  const int planned = static_cast<int>(plan_step_times(*scenario.flow->transient, scenario::find_load_times(scenario)).size());
+  if (checkpoint.steps == planned && summary_records_end(directory, planned))
+    throw InputError(fmt::format("--resume {}: the run already reached its end_time ({:g} s); nothing to resume", dir,
+                                 checkpoint.time));
+}
+
+}  // namespace
+
+void check_resumable(const fs::path& directory, const scenario::Scenario& scenario, const SavedRun& saved) {
+  if (saved.transient) return check_transient_resumable(directory, scenario, *saved.transient);
+  const output::RunCheckpoint& checkpoint = saved.checkpoint;
   const std::string dir = directory.string();
   if (!scenario.mechanics || !scenario.flow)
-    throw InputError(fmt::format("--resume {}: only coupled runs ([mechanics] and [flow]) can be resumed", dir));
+    throw InputError(fmt::format("--resume {}: only coupled runs ([mechanics] and [flow]) and transient flow-only runs "
+                                 "([flow.transient]) can be resumed",
+                                 dir));
   const int done = checkpoint.coupling.iterations;
   const bool ended = checkpoint.converged || done >= scenario.coupling.max_iterations;
   if (!ended || !summary_records_end(directory, done)) return;
@@ -103,8 +131,9 @@ void check_resumable(const fs::path& directory, const scenario::Scenario& scenar
 ResumedRun open_resumed_run(const fs::path& directory) {
   SavedRun saved = read_saved_run(directory);
   scenario::Scenario scenario = scenario::parse_scenario(saved.scenario_text, saved.checkpoint.scenario_file);
-  check_resumable(directory, scenario, saved.checkpoint);
-  return {directory, std::move(scenario), std::move(saved.scenario_text), std::move(saved.checkpoint)};
+  check_resumable(directory, scenario, saved);
+  return {directory, std::move(scenario), std::move(saved.scenario_text), std::move(saved.checkpoint),
+          std::move(saved.transient)};
 }
 
 }  // namespace hydrodda::run

@@ -1,5 +1,5 @@
 #pragma once
-// Opening a run folder to continue its coupled run (run --resume DIR): the checkpoint and the
+// Opening a run folder to continue its coupled or transient flow-only run (run --resume DIR): the checkpoint and the
 // copy of the scenario the run started with, both checked before anything is run.
 
 #include <filesystem>
@@ -12,10 +12,13 @@
 
 namespace hydrodda::run {
 
-// What a coupled run's folder holds to continue it: its checkpoint and its scenario's text.
+// What a run's folder holds to continue it: its checkpoint and its scenario's text. A transient
+// flow-only run's checkpoint is `transient`; `checkpoint` then holds its scenario's hash, file
+// and input files alone.
 struct SavedRun {
   std::string scenario_text;
   output::RunCheckpoint checkpoint;
+  std::optional<output::TransientCheckpoint> transient;
 };
 
 struct ResumedRun {
@@ -23,6 +26,7 @@ struct ResumedRun {
   scenario::Scenario scenario;  // read from DIR/scenario.toml, paths resolved as at the start
   std::string scenario_text;
   output::RunCheckpoint checkpoint;
+  std::optional<output::TransientCheckpoint> transient;  // a transient flow-only run's
 };
 
 // Every file the scenario names (geometry.fractures_file, mesh.file) with the hash of its
@@ -34,11 +38,12 @@ std::vector<output::InputFile> hash_input_files(const scenario::Scenario& scenar
 // (RunCheckpoint::input_files) was edited, moved or deleted since the start.
 SavedRun read_saved_run(const std::filesystem::path& directory);
 
-// Throws InputError when the run cannot be continued: it is not a coupled run, or it already
-// converged or used all its coupling iterations and its summary.json says so. One whose
-// summary.json does not (the disk filled as it was written) is resumed to write it.
+// Throws InputError when the run cannot be continued: it is neither a coupled run nor a
+// transient flow-only run, or it already converged, used all its coupling iterations or reached
+// its end_time and its summary.json says so. One whose summary.json does not (the disk filled as
+// it was written) is resumed to write it.
 void check_resumable(const std::filesystem::path& directory, const scenario::Scenario& scenario,
-                     const output::RunCheckpoint& checkpoint);
+                     const SavedRun& saved);
 
 // Both of the above, the scenario parsed as the original file (so that relative paths such as
 // mesh.file resolve as they did); a scenario copy that does not parse throws ScenarioError.

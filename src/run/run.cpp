@@ -79,7 +79,8 @@ RunResult report_unwritten_summary(const SummaryNotWritten& e, RunKind kind, con
 RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output::ExistingFolder policy,
                  const std::string& scenario_text, const output::RunCheckpoint* resume,
                  std::optional<int> stop_after, const Callbacks& callbacks,
-                 const std::optional<fs::path>& mesh_cache = std::nullopt) {
+                 const std::optional<fs::path>& mesh_cache = std::nullopt,
+                 const output::TransientCheckpoint* resume_transient = nullptr) {
   if (stop_after && kind_of(s) != RunKind::coupled)
     throw InputError("--stop-after: only coupled runs ([mechanics] and [flow]) stop after an iteration");
   std::error_code ec;
@@ -99,7 +100,8 @@ RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output:
     }
     written = summary;
   };
-  const RunContext context{s, folder, callbacks, scenario_text, resume, stop_after, write_final_summary, mesh_cache};
+  const RunContext context{s,          folder,     callbacks,           scenario_text,   resume,
+                           stop_after, write_final_summary, mesh_cache, resume_transient};
   const RunKind kind = kind_of(s);
   if (const std::optional<std::string> capped = describe_capped_matrix(s)) spdlog::warn("{}", *capped);
   try {
@@ -117,7 +119,7 @@ RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output:
   } catch (const SummaryNotWritten& e) {
     // An earlier run's summary.json (--overwrite) would be taken for this run's: removed. A
     // resumed run's is of the run it continues, and stays; so does anything not a file.
-    if (!resume && fs::is_regular_file(fs::symlink_status(folder.file("summary.json"), ec)))
+    if (!resume && !resume_transient && fs::is_regular_file(fs::symlink_status(folder.file("summary.json"), ec)))
       fs::remove(folder.file("summary.json"), ec);
     return report_unwritten_summary(e, kind, folder.path());
   } catch (const RunFailure& failure) {
@@ -128,7 +130,7 @@ RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output:
               fmt::format("{} (summary.json holds the run's result)", e.what()), *written, folder.path()};
     // A resumed run that could not take up its state (its model no longer fits the checkpoint)
     // has no result of its own: the folder's summary.json, of the run it continues, is kept.
-    if (resume)
+    if (resume || resume_transient)
       throw InputError(fmt::format("--resume {}: the run could not be continued: {}; its summary.json is left as it "
                                    "was",
                                    directory.string(), e.what()));
@@ -174,6 +176,9 @@ RunResult run(const scenario::Scenario& scenario, const RunOptions& options, con
 
 RunResult resume(const ResumedRun& resumed, std::optional<int> stop_after, const Callbacks& callbacks) {
   // The folder's own files, continued.
+  if (resumed.transient)
+    return run_in(resumed.scenario, resumed.folder, output::ExistingFolder::Continue, resumed.scenario_text, nullptr,
+                  stop_after, callbacks, std::nullopt, &*resumed.transient);
   return run_in(resumed.scenario, resumed.folder, output::ExistingFolder::Continue, resumed.scenario_text,
                 &resumed.checkpoint, stop_after, callbacks);
 }

@@ -3,7 +3,7 @@
 //
 // run() builds the model the scenario describes (flow only, mechanics only, or coupled, by the
 // sections it has), runs it and writes the run folder as it goes; resume() continues a coupled
-// run from its checkpoint. Nothing here prints or exits. Input that cannot be run is an
+// or transient flow-only run from its checkpoint. Nothing here prints or exits. Input that cannot be run is an
 // exception thrown before anything is run: scenario::ScenarioError (with its diagnostics),
 // InputError, output::RunFolderError. Everything after that is a RunResult, a failure included,
 // with summary.json written for the last good state.
@@ -130,8 +130,9 @@ RunKind kind_of(const scenario::Scenario& scenario);
 // the folder if this call made it: bad input leaves no run folder behind.
 RunResult run(const scenario::Scenario& scenario, const RunOptions& options, const Callbacks& callbacks = {});
 
-// Continues the coupled run of open_resumed_run() in its folder after its last finished pass;
-// it ends where an uninterrupted run does, file for file.
+// Continues the run of open_resumed_run() in its folder after its last finished pass (coupled)
+// or the step of its checkpoint (transient flow-only); it ends where an uninterrupted run does,
+// file for file.
 RunResult resume(const ResumedRun& resumed, std::optional<int> stop_after, const Callbacks& callbacks = {});
 
 // Removes from a folder of shared meshes (RunOptions::mesh_cache) the files the cache made, and

@@ -33,6 +33,8 @@ struct RunContext {
   std::function<void(const output::RunSummary&)> write_summary;
   // A folder of meshes shared with other runs (a sweep's), or none: mesh anew.
   std::optional<std::filesystem::path> mesh_cache;
+  // A transient flow-only run continued from its checkpoint (resume), or none.
+  const output::TransientCheckpoint* resume_transient = nullptr;
 
   void report(const ProgressReport& report) const {
     if (callbacks.progress) callbacks.progress(report);
