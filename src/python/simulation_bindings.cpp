@@ -5,7 +5,11 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <atomic>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -28,6 +32,7 @@
 #include "run/run_summary.hpp"
 #include "run/scenario_fractures.hpp"
 #include "run/threads.hpp"
+#include "run/transient_model.hpp"
 
 namespace hydrodda::python {
 
@@ -99,17 +104,15 @@ class Simulation {
       throw py::value_error(
           "mesh.refine_tips = true: a Simulation keeps the mesh it is built on; hydrodda.run() meshes again around "
           "the wedge tips (or set it false to step the model by hand)");
-    // Stepping a transient flow by hand is not built yet: refused, never solved steady instead.
-    if (scenario.definition.flow && scenario.definition.flow->transient)
-      throw py::value_error(
-          "[flow.transient]: a Simulation does not step transient flow yet; hydrodda.run() runs it to its end_time "
-          "(probes.csv, history.csv and fluid.pvd at its output_times)");
     PythonCallbacks callbacks{py::none()};  // Ctrl-C in a logging handler while building: raised once built
     {
       py::gil_scoped_release released;
       const run::ThreadsOfThisCall own_threads(threads_);
       switch (run::kind_of(scenario.definition)) {
-        case run::RunKind::flow: model_ = std::make_unique<run::FlowModel>(scenario.definition); break;
+        case run::RunKind::flow:
+          if (scenario.definition.flow->transient) model_ = std::make_unique<run::TransientModel>(scenario.definition);
+          else model_ = std::make_unique<run::FlowModel>(scenario.definition);
+          break;
         case run::RunKind::mechanics: model_ = std::make_unique<run::MechanicsModel>(scenario.definition); break;
         case run::RunKind::coupled: model_ = std::make_unique<run::CoupledModel>(scenario.definition); break;
       }
@@ -118,7 +121,10 @@ class Simulation {
   }
 
   std::string kind() const {
-    return std::holds_alternative<Flow>(model_) ? "flow" : std::holds_alternative<Mechanics>(model_) ? "mechanics" : "coupled";
+    return std::holds_alternative<Flow>(model_)        ? "flow"
+           : std::holds_alternative<Transient>(model_) ? "transient"
+           : std::holds_alternative<Mechanics>(model_) ? "mechanics"
+                                                       : "coupled";
   }
 
   // Flow only: the steady solve.
@@ -134,10 +140,12 @@ class Simulation {
     callbacks.raise_pending();
   }
 
-  // Mechanics only: up to `count` DDA steps, fewer when the run reaches its end; the number
-  // taken. Ctrl-C stops after the step under way (KeyboardInterrupt).
+  // Mechanics: up to `count` DDA steps; transient flow: up to `count` time steps; fewer when
+  // the run reaches its end; the number taken. Ctrl-C stops after the step under way
+  // (KeyboardInterrupt).
   long long step(long long count) {
     const ModelLock::Held held = lock_.hold("step()");
+    if (auto* transient = std::get_if<Transient>(&model_)) return step_transient(**transient, count, std::nullopt);
     run::MechanicsModel& model = *expect<Mechanics>("step()");
     PythonCallbacks callbacks{py::none()};
     const run::Callbacks stop = callbacks.callbacks();
@@ -187,6 +195,44 @@ class Simulation {
     return fields;
   }
 
+  // Transient flow: the steps up to time `t`, which must end one of them (an output time, the
+  // end time, or any time of the plan: step_times); the number taken.
+  long long advance_to(double t) {
+    const ModelLock::Held held = lock_.hold("advance_to()");
+    run::TransientModel& model = *expect<Transient>("advance_to()");
+    const std::vector<double>& times = model.step_times();
+    if (t < model.time())
+      throw py::value_error(fmt::format("advance_to({:g}): the simulation is at t = {:g} s already", t, model.time()));
+    if (t != model.time() && std::find(times.begin(), times.end(), t) == times.end()) {
+      const auto after = std::upper_bound(times.begin(), times.end(), t);
+      throw py::value_error(fmt::format(
+          "advance_to({:g}): no step ends there (the steps end on the output times, the end time and the times of "
+          "step_times); the nearest are {:g} and {} s",
+          t, after == times.begin() ? 0.0 : *(after - 1), after == times.end() ? std::string("none after") : fmt::format("{:g}", *after)));
+    }
+    return step_transient(model, std::numeric_limits<long long>::max(), t);
+  }
+
+  double time() const {
+    const ModelLock::Held held = lock_.hold("time");
+    return expect_const<Transient>("time")->time();
+  }
+
+  py::array_t<double> step_times() const {
+    const ModelLock::Held held = lock_.hold("step_times");
+    const std::vector<double>& times = expect_const<Transient>("step_times")->step_times();
+    return py::array_t<double>(static_cast<py::ssize_t>(times.size()), times.data());
+  }
+
+  // probes.csv's rows at the time now: (time, name, head, pressure), one per probe.
+  py::list probes() const {
+    const ModelLock::Held held = lock_.hold("probes");
+    const run::TransientModel& model = *expect_const<Transient>("probes");
+    py::list rows;
+    for (const run::ProbeReading& r : model.read_probes()) rows.append(py::make_tuple(model.time(), r.name, r.head, r.pressure));
+    return rows;
+  }
+
   bool finished() const {
     const ModelLock::Held held = lock_.hold("finished");
     return is_finished();
@@ -196,6 +242,8 @@ class Simulation {
     const ModelLock::Held held = lock_.hold("fluid");
     if (const auto* f = std::get_if<Flow>(&model_))
       return fluid_fields((*f)->mesh(), &(*f)->flow(), (*f)->permeability());
+    if (const auto* t = std::get_if<Transient>(&model_))
+      return fluid_fields((*t)->model().mesh(), &(*t)->state(), (*t)->model().permeability());
     const run::CoupledModel& model = *expect_const<Coupled>("fluid");
     const coupling::StaggeredLoop& loop = model.loop();
     return fluid_fields(model.mesh(), &loop.flow(), loop.permeability(), &loop.porosity().porosity);
@@ -235,6 +283,9 @@ class Simulation {
                             "(flow.boundary[i].head, ...) or a traction (mechanics.traction[i].normal, "
                             "normal_end, shear, shear_end) between steps or passes, not '" + key +
                             "': change the Scenario and build a new Simulation for anything else");
+    if (std::holds_alternative<Transient>(model_))
+      throw py::value_error("Simulation.set: a transient simulation takes its boundary values from its scenario at each "
+                            "step's time (a table of (time, value) rows); change the Scenario and build a new Simulation");
     PythonScenario changed = with_value(scenario_, key, value);
     if (flow) {
       if (!changed.definition.flow) throw py::value_error(key + ": this simulation has no [flow]");
@@ -272,7 +323,7 @@ class Simulation {
     const ModelLock::Held held = lock_.hold("summary");
     output::RunSummary summary = std::visit([](const auto& model) { return model->summary(); }, model_);
     summary.converged = is_finished();
-    if (!std::holds_alternative<Flow>(model_)) {
+    if (!std::holds_alternative<Flow>(model_) && !std::holds_alternative<Transient>(model_)) {
       summary.message = run::describe_unreached_displacement(scenario_.definition, system("summary"));
       if (!summary.message.empty()) summary.converged = false;
     }
@@ -283,6 +334,24 @@ class Simulation {
   using Flow = std::unique_ptr<run::FlowModel>;
   using Mechanics = std::unique_ptr<run::MechanicsModel>;
   using Coupled = std::unique_ptr<run::CoupledModel>;
+  using Transient = std::unique_ptr<run::TransientModel>;
+
+  // Up to `count` steps, and none past `until` when given; Ctrl-C stops after the step under way.
+  long long step_transient(run::TransientModel& model, long long count, std::optional<double> until) {
+    PythonCallbacks callbacks{py::none()};
+    const run::Callbacks stop = callbacks.callbacks();
+    long long taken = 0;
+    {
+      py::gil_scoped_release released;
+      const run::ThreadsOfThisCall own_threads(threads_);
+      while (taken < count && !model.finished() && !(until && model.time() >= *until) && !stop.stop_requested()) {
+        model.step();
+        ++taken;
+      }
+    }
+    callbacks.raise_pending();
+    return taken;
+  }
 
   template <class Model>
   Model& expect(const char* what) {
@@ -298,6 +367,7 @@ class Simulation {
   bool is_finished() const {
     if (const auto* m = std::get_if<Mechanics>(&model_)) return (*m)->finished();
     if (std::holds_alternative<Coupled>(model_)) return converged_;
+    if (const auto* t = std::get_if<Transient>(&model_)) return (*t)->finished();
     return !std::get<Flow>(model_)->flow().head.empty();
   }
   const dda::System& system(const char* what) const {
@@ -308,7 +378,7 @@ class Simulation {
   mutable ModelLock lock_;   // every call but kind holds it
   PythonScenario scenario_;  // as built, with the changes set() made since
   std::optional<int> threads_;  // threads=: the threads of every call that computes (the results are the same on any)
-  std::variant<Flow, Mechanics, Coupled> model_;
+  std::variant<Flow, Mechanics, Coupled, Transient> model_;
   bool converged_ = false;  // coupled: the last pass met the tolerance
   std::optional<fractures::FractureMeter> meter_;                  // made on the first call of fractures
   std::optional<fractures::FractureMeter::FlowZones> flow_zones_;  // likewise, for a coupled model
@@ -326,7 +396,16 @@ void bind_simulation(py::module_& module) {
       .def_property_readonly("kind", &Simulation::kind)
       .def("solve", &Simulation::solve, "Flow only: the steady solve.")
       .def("step", &Simulation::step, py::arg("count") = 1,
-           "Mechanics only: up to `count` DDA steps (fewer at the run's end); the number taken.")
+           "Mechanics: up to `count` DDA steps; transient flow: up to `count` time steps (fewer at the run's end); "
+           "the number taken.")
+      .def("advance_to", &Simulation::advance_to, py::arg("time"),
+           "Transient flow: the steps up to `time` (s), which must end one (an output time, the end time, or one of "
+           "step_times); the number taken.")
+      .def_property_readonly("time", &Simulation::time, "Transient flow: the time reached (s)")
+      .def_property_readonly("step_times", &Simulation::step_times,
+                             "Transient flow: the times its steps end on, to end_time (s)")
+      .def_property_readonly("probes", &Simulation::probes,
+                             "Transient flow: probes.csv's rows at the time reached, (time, name, head, pressure)")
       .def("run_pass", &Simulation::run_pass, "Coupled: one coupling pass; what it measured, as a dict.")
       .def_property_readonly("finished", &Simulation::finished,
                              "steps or end_time reached; coupling converged; flow solved")

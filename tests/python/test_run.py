@@ -70,6 +70,32 @@ def test_transient_flow_run_is_the_programs(in_tmp):
     assert (in_tmp / "py" / "probes.csv").read_text().startswith("time,name,head,pressure\n")
 
 
+def test_a_transient_run_stopped_and_resumed_is_the_programs(in_tmp):
+    """A transient run stopped by its progress callback after 300 steps keeps checkpoint.bin of
+    its last finished step; hydrodda.resume continues it to the folder the program writes in one
+    go, file for file."""
+    name = write_scenario(in_tmp, VERIFICATION / "transient_diffusion_1d.toml",
+                          {"mesh.size": 0.5, "output.figures": []}, "strip.toml")
+    name = in_tmp / name  # summary.json's "scenario": a resumed run names the file by its absolute path
+    code, _, err = run_program("run", name, "-o", "prog", cwd=in_tmp)
+    assert code == 0, err
+
+    class Enough(Exception):
+        pass
+
+    def progress(report):
+        if report.count == 300:
+            raise Enough()
+
+    with pytest.raises(Enough):
+        hydrodda.run(hydrodda.Scenario.load(name), "py", progress=progress)
+    stopped = json.loads((in_tmp / "py" / "summary.json").read_text())
+    assert (stopped["status"], stopped["iterations"]) == ("interrupted", 300)
+    result = hydrodda.resume("py")
+    assert (result.status, result.converged, result.iterations) == ("finished", True, 1021)
+    expect_same_folders(in_tmp / "prog", in_tmp / "py")
+
+
 def test_mechanics_only_run_is_the_programs(in_tmp):
     end_time = 0.05
     name = write_scenario(in_tmp, VERIFICATION / "free_fall.toml", {"mechanics.end_time": end_time}, "fall.toml")

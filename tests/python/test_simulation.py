@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import hydrodda
-from conftest import VERIFICATION
+from conftest import VERIFICATION, run_program
 
 
 def test_flow_fields_are_the_exact_linear_head():
@@ -232,10 +232,82 @@ def test_a_simulation_refuses_to_refine_tips_it_cannot_mesh_again():
         hydrodda.Simulation(scenario)
 
 
-def test_a_simulation_refuses_transient_flow_it_cannot_step_yet():
-    """[flow.transient] is run by hydrodda.run; a Simulation says so rather than solve it steady."""
-    with pytest.raises(ValueError, match="flow.transient"):
-        hydrodda.Simulation(hydrodda.Scenario.load(VERIFICATION / "transient_diffusion_1d.toml"))
+def transient_strip():
+    """The 1D diffusion strip on a coarse mesh, no figures: 1,021 steps, outputs at 20, 100, 300
+    and 1000 s."""
+    scenario = hydrodda.Scenario.load(VERIFICATION / "transient_diffusion_1d.toml")
+    scenario.set("mesh.size", 0.5)
+    scenario.set("output.figures", [])
+    return scenario
+
+
+def probes_csv_rows(folder):
+    lines = (folder / "probes.csv").read_text().splitlines()
+    assert lines[0] == "time,name,head,pressure"
+    return [line.split(",") for line in lines[1:]]
+
+
+def as_csv(row):
+    """A probes row as the program writes it: numbers with 17 significant digits."""
+    time, name, head, pressure = row
+    return ["%.17g" % time, name, "%.17g" % head, "%.17g" % pressure]
+
+
+def test_a_transient_simulation_stepped_to_the_end_gives_the_programs_probes_to_the_last_digit(in_tmp):
+    """Stepped one time step at a time, then by advance_to over the output times, a transient
+    Simulation reads at every step the probes.csv rows of the program's run of the same
+    scenario, digit for digit (the same steps on the same heads: an exact identity), and its
+    fluid at the end is the run's."""
+    scenario = transient_strip()
+    (in_tmp / "strip.toml").write_text(scenario.to_toml())
+    code, _, err = run_program("run", "strip.toml", "-o", "prog", "--threads", "1", cwd=in_tmp)
+    assert code == 0, err
+    expected = probes_csv_rows(in_tmp / "prog")
+
+    sim = hydrodda.Simulation(scenario, threads=1)
+    assert (sim.kind, sim.time, sim.finished) == ("transient", 0.0, False)
+    rows = [as_csv(r) for r in sim.probes]  # t = 0
+    while not sim.finished:
+        assert sim.step() == 1
+        rows.extend(as_csv(r) for r in sim.probes)
+    assert sim.step() == 0  # nothing past end_time
+    assert sim.time == 1000.0 and len(sim.step_times) == 1021
+    assert rows == expected
+    summary = sim.summary
+    assert (summary["converged"], summary["time"], summary["iterations"]) == (True, 1000.0, 1021)
+    program_summary = json.loads((in_tmp / "prog" / "summary.json").read_text())
+    assert summary["flow"] == program_summary["flow"]
+
+    by_outputs = hydrodda.Simulation(scenario, threads=1)
+    for t in (20.0, 100.0, 300.0, 1000.0):
+        taken = by_outputs.advance_to(t)
+        assert taken > 0 and by_outputs.time == t
+        at_t = [as_csv(r) for r in by_outputs.probes]
+        assert at_t == [r for r in expected if float(r[0]) == t]
+    assert by_outputs.finished
+    assert np.array_equal(by_outputs.fluid["head"], sim.fluid["head"])
+
+
+def test_a_transient_simulation_refuses_times_no_step_ends_on_and_setting_a_boundary():
+    sim = hydrodda.Simulation(transient_strip(), threads=1)
+    with pytest.raises(ValueError, match="no step ends there"):
+        sim.advance_to(20.5)  # steps of 1 s after 20 s (max_time_step)
+    assert sim.advance_to(20.0) > 0
+    with pytest.raises(ValueError, match="at t = 20 s already"):
+        sim.advance_to(10.0)
+    assert sim.advance_to(20.0) == 0
+    with pytest.raises(ValueError, match="transient simulation takes its boundary values"):
+        sim.set("flow.boundary[0].head", 12.0)
+    with pytest.raises(Exception, match="not for a transient simulation"):
+        sim.solve()
+
+
+def test_the_time_and_probes_are_for_a_transient_simulation_alone():
+    sim = hydrodda.Simulation(hydrodda.Scenario.load(VERIFICATION / "flow_linear_head.toml"))
+    with pytest.raises(Exception, match="not for a flow simulation"):
+        sim.time
+    with pytest.raises(Exception, match="not for a flow simulation"):
+        sim.advance_to(1.0)
 
 
 @pytest.mark.parametrize("name", ["flow_linear_head", "free_fall", "coupled_hydrostatic_column"])
