@@ -90,7 +90,6 @@ void TransientRecorder::record_state() {
   record_.steps = step;
   record_.time = model_.time();
   record_.time_step = model_.last_time_step();
-  record_.state = state;
 }
 
 void TransientRecorder::flush() const {
@@ -107,6 +106,7 @@ void TransientRecorder::flush() const {
 
 void TransientRecorder::save_checkpoint() {
   flush();
+  record_.state = model_.state();  // copied here, not at each step: megabytes on a large mesh
   context_.folder.write("checkpoint.bin", output::encode_transient_checkpoint(record_));
 }
 
