@@ -178,6 +178,8 @@ PassReport StaggeredLoop::run_pass() {
   pass_start_.emplace();
   pass_start_->kept_factor = darcy_.kept_factor();
   pass_start_->kept_factor_single_precision = darcy_.kept_factor_in_single_precision();
+  pass_start_->pseudo_time_step = pseudo_time_step_;
+  pass_start_->last_steady_change = last_steady_change_;
 
   // Porosity and permeability from the blocks as they are now: recomputed every pass.
   auto start = Clock::now();
@@ -209,6 +211,10 @@ PassReport StaggeredLoop::run_pass() {
   // Judged on the fresh (unrelaxed) heads: the relaxed change is ω times this, so a small ω
   // would freeze the heads and fake convergence.
   const double unrelaxed_head_change = previous_heads_.empty() ? 1.0 : head_change(fresh.head, previous_heads_);
+  if (settings_.pseudo_time && !previous_heads_.empty()) {
+    fresh = step_in_pseudo_time(unrelaxed_head_change);
+    check_finite(fresh.head, "the head", iteration_);
+  }
   pass_start_->previous_update = previous_update_;
   pass_start_->relaxation = relaxation_;
   if (settings_.acceleration == Acceleration::anderson) pass_start_->anderson_history = anderson_.history();
@@ -351,6 +357,25 @@ void StaggeredLoop::finish_pass(const PassReport& report) {
   mechanics_.import_state(last_mechanics_);
 }
 
+// The pass's flow as a backward-Euler step in pseudo-time from the last pass's heads, in place
+// of the steady solve, whose heads gave the convergence norm (`steady_change`): Δτ is first_step at pass 2 and grows or
+// shrinks by SER after (pass_storage.hpp). The steady heads are the fixed point of this step.
+hydro::FlowSolution StaggeredLoop::step_in_pseudo_time(double steady_change) {
+  const PseudoTimeSettings& pseudo = *settings_.pseudo_time;
+  if (pseudo_time_step_ == 0.0) pseudo_time_step_ = pseudo.first_step;
+  else pseudo_time_step_ = next_pseudo_time_step(pseudo_time_step_, last_steady_change_, steady_change);
+  last_steady_change_ = steady_change;
+  const std::span<const double> areas = porosity_mapper_.element_areas();
+  std::vector<double> open_fraction(areas.size());
+  for (std::size_t e = 0; e < areas.size(); ++e) open_fraction[e] = porosity_.fracture_area[e] / areas[e];
+  std::vector<double> storage = compute_pass_storage(pseudo, areas, open_fraction, joints_ ? &*joints_ : nullptr,
+                                                     joint_apertures_);
+  for (double& c : storage) c /= pseudo_time_step_;
+  const hydro::PermeabilityView k = permeability_tensors_.empty() ? hydro::PermeabilityView(permeability_)
+                                                                  : hydro::PermeabilityView(permeability_tensors_);
+  return darcy_.solve_step(k, storage, hydro::MassMatrix::lumped, solution_.head);
+}
+
 void StaggeredLoop::abandon_pass() {
   mechanics_.import_state(last_mechanics_);
   if (!pass_start_) return;
@@ -360,6 +385,8 @@ void StaggeredLoop::abandon_pass() {
   permeability_ = std::move(start.permeability);
   permeability_tensors_ = std::move(start.permeability_tensors);
   joint_apertures_ = std::move(start.joint_apertures);
+  pseudo_time_step_ = start.pseudo_time_step;
+  last_steady_change_ = start.last_steady_change;
   if (start.flow_solved) {  // else the heads and the relaxation are still the last pass's
     solution_ = std::move(start.solution);
     previous_update_ = std::move(start.previous_update);

@@ -22,6 +22,7 @@
 #include "coupling/loop_acceleration.hpp"
 #include "coupling/pass_loop.hpp"
 #include "coupling/pass_report.hpp"
+#include "coupling/pass_storage.hpp"
 #include "coupling/permeability_model.hpp"
 #include "coupling/porosity.hpp"
 #include "coupling/pressure_forces.hpp"
@@ -73,6 +74,10 @@ struct LoopSettings {
     JointApertureLaws laws;
   };
   std::optional<Joints> joints;
+  // The fluid's stiffness within the pass (pass_storage.hpp): each pass's flow a backward-Euler
+  // step in pseudo-time from the last pass's heads, the convergence judged on the steady
+  // solve's. Unset: every pass's flow is the steady solve.
+  std::optional<PseudoTimeSettings> pseudo_time;
 };
 
 // Thrown by run_pass when LoopSettings::stop_requested says so; the pass is not counted and the
@@ -193,6 +198,7 @@ class StaggeredLoop final : public PassRunner {
   hydro::FlowSolution solve_flow(const std::vector<geometry::Polygon>& blocks);
   void set_joint_zone_matrix_permeability();
   void relax(hydro::FlowSolution& fresh);
+  hydro::FlowSolution step_in_pseudo_time(double steady_change);
   void step_mechanics(PassReport& report);
   void measure_convergence(PassReport& report, double unrelaxed_head_change);
   void finish_pass(const PassReport& report);
@@ -215,6 +221,7 @@ class StaggeredLoop final : public PassRunner {
     std::deque<numerics::AndersonAccelerator::Pass> anderson_history;
     std::shared_ptr<const hydro::PermeabilityField> kept_factor;
     bool kept_factor_single_precision = false;
+    double pseudo_time_step = 0.0, last_steady_change = 0.0;
   };
   std::optional<PassStart> pass_start_;
 
@@ -248,6 +255,8 @@ class StaggeredLoop final : public PassRunner {
   std::vector<double> previous_update_;
   double relaxation_ = 1.0;
   numerics::AndersonAccelerator anderson_;
+  double pseudo_time_step_ = 0.0;     // Δτ of the next pass's step (pass_storage.hpp)
+  double last_steady_change_ = 0.0;   // the last pass's steady head change, for SER
   // The DDA system after the last finished pass (as built before the first): what an
   // abandoned pass puts back, and what every pass's system continues from.
   dda::SystemState last_mechanics_;

@@ -17,6 +17,25 @@ namespace hydrodda::run {
 
 namespace {
 using Clock = std::chrono::steady_clock;
+
+// The fixed-stress split's matrix storage per element (1/Pa): its material's 1/M (`storage`)
+// plus α²/K_dr, K_dr the drained bulk modulus in the plane, E/(2(1 + ν)(1 − 2ν)) in plane
+// strain and E/(2(1 − ν)) in plane stress (Kim, Tchelepi & Juanes 2011).
+coupling::PseudoTimeSettings make_pseudo_time_settings(const scenario::Scenario& s, const mesh::TriangleMesh& mesh) {
+  coupling::PseudoTimeSettings pseudo;
+  pseudo.first_step = s.coupling.pseudo_time_step;
+  pseudo.fluid_compressibility = s.flow->fluid_compressibility;
+  pseudo.unit_weight = s.flow->fluid_density * hydro::Fluid{}.gravity;
+  const bool strain = s.mechanics->plane == dda::Plane::strain;
+  for (int m : find_element_materials(s, mesh)) {
+    const scenario::MaterialDefinition& material = s.materials[m >= 0 ? m : 0];
+    const double young = material.young.value_or(0.0), nu = material.poisson.value_or(0.0);
+    const double bulk = strain ? young / (2.0 * (1.0 + nu) * (1.0 - 2.0 * nu)) : young / (2.0 * (1.0 - nu));
+    const double alpha = material.biot_coefficient;
+    pseudo.matrix_storage.push_back(material.storage + (bulk > 0.0 ? alpha * alpha / bulk : 0.0));
+  }
+  return pseudo;
+}
 }  // namespace
 
 CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::optional<std::filesystem::path>& mesh_cache,
@@ -63,6 +82,7 @@ CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::option
     coupling::JointApertureLaws laws = make_joint_aperture_laws(s, geometry.traces);
     settings.joints = coupling::LoopSettings::Joints{std::move(geometry.network), std::move(laws)};
   }
+  if (s.coupling.pseudo_time_step > 0.0) settings.pseudo_time = make_pseudo_time_settings(s, mesh_);
   settings.stop_requested = [this] { return stop_requested_ && stop_requested_(); };
   load_times_ = scenario::find_load_times(s);
   loop_.emplace(mesh_, build_flow_problem(*s.flow, load_time()), *system_, std::move(settings));

@@ -639,7 +639,8 @@ void read_coupling(ReadContext& ctx, const TableView& root, Scenario& s) {
     return;
   }
   const TableView c(ctx, *t, "coupling",
-                    {"tolerance", "max_iterations", "relaxation", "acceleration", "ramp_passes", "settle"});
+                    {"tolerance", "max_iterations", "relaxation", "acceleration", "ramp_passes", "settle",
+                     "pseudo_time_step"});
   s.coupling.tolerance = c.number_or("tolerance", s.coupling.tolerance);
   c.require("tolerance", s.coupling.tolerance > 0.0, "must be > 0");
   if (auto n = c.integer("max_iterations", 1, 1'000'000)) {
@@ -652,6 +653,10 @@ void read_coupling(ReadContext& ctx, const TableView& root, Scenario& s) {
             "must lie in (0, 1]");
   s.coupling.acceleration = c.choice("acceleration", coupling::Acceleration::none);
   if (auto n = c.integer("ramp_passes", 1, 1'000'000)) s.coupling.ramp_passes = *n;
+  if (c.has("pseudo_time_step")) {
+    s.coupling.pseudo_time_step = c.number_or("pseudo_time_step", 0.0);
+    c.require("pseudo_time_step", s.coupling.pseudo_time_step > 0.0, "must be > 0 (s); leave it out for none");
+  }
   if (auto settle = c.boolean("settle")) {
     s.coupling.settle = *settle;
   } else if (s.flow && s.mechanics) {

@@ -323,6 +323,10 @@ struct CouplingDefinition {
   coupling::Acceleration acceleration = coupling::Acceleration::none;
   int ramp_passes = 1;   // the fluid load raised over the first passes
   bool settle = false;   // each pass steps on until the blocks are at rest (the reader's default: a static analysis)
+  // s: each pass's flow a backward-Euler step in pseudo-time of this first step (growing by
+  // SER) from the last pass's heads, with the fixed-stress split's storage; 0: steady passes
+  // (coupling/pass_storage.hpp).
+  double pseudo_time_step = 0.0;
 };
 
 // The ParaView series a run writes (output.fields).

@@ -340,6 +340,18 @@ TEST(ScenarioReader, SettlingPassesAreForStaticAnalysis) {
   EXPECT_EQ(errors[0].line, 12);
 }
 
+// coupling.pseudo_time_step (s): off (0) when left out, read when given, and a value ≤ 0 is
+// refused naming its line and key.
+TEST(ScenarioReader, PseudoTimeStepIsOffUnlessGivenAndPositive) {
+  const std::string base = kOneFreeBlock + "steps = 10\n[[mechanics.fixed]]\npoint = [0.5, 0.0]\n";
+  EXPECT_EQ(parse_scenario(base, "case.toml").coupling.pseudo_time_step, 0.0);
+  EXPECT_EQ(parse_scenario(base + "[coupling]\npseudo_time_step = 1e5\n", "case.toml").coupling.pseudo_time_step, 1e5);
+  const auto errors = errors_of(base + "[coupling]\npseudo_time_step = 0.0\n");
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].key, "coupling.pseudo_time_step");
+  EXPECT_EQ(errors[0].line, 13);
+}
+
 // [[mesh.refine]]: a point, a size (at most mesh.size) and a radius (by default where a size
 // growing by a fifth of the distance reaches mesh.size); each bad value is an error naming its
 // line and key.
