@@ -191,6 +191,8 @@ class System {
   const std::vector<BondBreak>& bond_breaks() const { return bond_breaks_; }
   std::array<Point, 2> bond_face(int bond) const;
   int bond_joint_type(int bond) const;  // 0: `joint`, i: joint_types[i − 1]
+  // The bond whose face a contact's vertex touches (its edge a bonded face), or −1.
+  int bond_of_contact(const ContactKey& key) const { return bond_of(key); }
 
  private:
   struct Block {

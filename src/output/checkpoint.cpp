@@ -306,6 +306,33 @@ void visit_flow(Io&& io, Flow& f) {
   io(f.refinement_steps);
 }
 
+// A reader after the header of a checkpoint file of the given magic and format, once its
+// format, length, checksum and byte order are checked (CheckpointError naming what failed).
+Reader open_checked(std::string_view file, std::string_view magic, std::int64_t version, const std::string& what) {
+  {
+    Reader header(file);
+    header.expect(magic);
+    std::int64_t found = 0;
+    header.get(found);
+    if (found != version)
+      throw CheckpointError(what + " format " + std::to_string(found) + "; this hydrodda reads format " +
+                            std::to_string(version));
+  }
+  if (file.size() < magic.size() + kChecksumSize) throw CheckpointError("the checkpoint is damaged or cut short");
+  const std::string_view bytes = file.substr(0, file.size() - kChecksumSize);
+  std::uint64_t checksum = 0;
+  std::memcpy(&checksum, file.data() + bytes.size(), kChecksumSize);
+  if (checksum != checksum_of(bytes))
+    throw CheckpointError("the checkpoint is damaged or cut short: its checksum does not match its contents");
+  Reader r(bytes);
+  r.expect(magic);
+  std::int64_t found = 0;
+  r.get(found);
+  if (r.get_raw<std::uint32_t>() != kByteOrderMark)
+    throw CheckpointError("the checkpoint was written on a machine of another byte order");
+  return r;
+}
+
 }  // namespace
 
 std::uint64_t hash_text(std::string_view text) {
@@ -384,27 +411,7 @@ void write_checkpoint(AtomicFile& file, const RunCheckpoint& c, const dda::Syste
 
 RunCheckpoint decode_checkpoint(std::string_view file) {
   if (file.substr(0, kMagic.size()) != kMagic) throw CheckpointError("not a hydrodda checkpoint");
-  {
-    Reader header(file);
-    header.expect(kMagic);
-    std::int64_t version = 0;
-    header.get(version);
-    if (version != kVersion)
-      throw CheckpointError("checkpoint format " + std::to_string(version) + "; this hydrodda reads format " +
-                            std::to_string(kVersion));
-  }
-  if (file.size() < kMagic.size() + kChecksumSize) throw CheckpointError("the checkpoint is damaged or cut short");
-  const std::string_view bytes = file.substr(0, file.size() - kChecksumSize);
-  std::uint64_t checksum = 0;
-  std::memcpy(&checksum, file.data() + bytes.size(), kChecksumSize);
-  if (checksum != checksum_of(bytes))
-    throw CheckpointError("the checkpoint is damaged or cut short: its checksum does not match its contents");
-  Reader r(bytes);
-  r.expect(kMagic);
-  std::int64_t version = 0;
-  r.get(version);
-  if (r.get_raw<std::uint32_t>() != kByteOrderMark)
-    throw CheckpointError("the checkpoint was written on a machine of another byte order");
+  Reader r = open_checked(file, kMagic, kVersion, "checkpoint");
   RunCheckpoint c;
   r.get(c.scenario_hash);
   r.get(c.scenario_file);
@@ -536,27 +543,7 @@ std::string encode_transient_checkpoint(const TransientCheckpoint& c) {
 
 TransientCheckpoint decode_transient_checkpoint(std::string_view file) {
   if (!is_transient_checkpoint(file)) throw CheckpointError("not a hydrodda transient checkpoint");
-  {
-    Reader header(file);
-    header.expect(kTransientMagic);
-    std::int64_t version = 0;
-    header.get(version);
-    if (version != kTransientVersion)
-      throw CheckpointError("transient checkpoint format " + std::to_string(version) + "; this hydrodda reads format " +
-                            std::to_string(kTransientVersion));
-  }
-  if (file.size() < kTransientMagic.size() + kChecksumSize) throw CheckpointError("the checkpoint is damaged or cut short");
-  const std::string_view bytes = file.substr(0, file.size() - kChecksumSize);
-  std::uint64_t checksum = 0;
-  std::memcpy(&checksum, file.data() + bytes.size(), kChecksumSize);
-  if (checksum != checksum_of(bytes))
-    throw CheckpointError("the checkpoint is damaged or cut short: its checksum does not match its contents");
-  Reader r(bytes);
-  r.expect(kTransientMagic);
-  std::int64_t version = 0;
-  r.get(version);
-  if (r.get_raw<std::uint32_t>() != kByteOrderMark)
-    throw CheckpointError("the checkpoint was written on a machine of another byte order");
+  Reader r = open_checked(file, kTransientMagic, kTransientVersion, "transient checkpoint");
   TransientCheckpoint c;
   r.get(c.scenario_hash);
   r.get(c.scenario_file);

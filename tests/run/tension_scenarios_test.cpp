@@ -20,14 +20,18 @@ namespace scenario = hydrodda::scenario;
 
 namespace {
 
-// The largest tension a closed contact reports, as a fraction of the largest normal force
-// any contact reports (0 when none pulls).
+// The largest tension a closed joint contact reports, as a fraction of the largest normal force
+// any contact reports (0 when none pulls). A contact on an intact bond is intact rock, not a
+// joint: it carries tension up to the bond's strength, which its own tests check
+// (BondVerification.*, Bonds.*).
 double find_tension_fraction(const dda::System& system) {
   double largest = 0.0;
   double tension = 0.0;
   for (const dda::ContactInfo& c : system.contacts()) {
     largest = std::max(largest, std::abs(c.normal_force));
-    if (c.state != dda::ContactState::open) tension = std::max(tension, -c.normal_force);
+    const int bond = system.bond_of_contact(c.key);
+    const bool intact_rock = bond >= 0 && !system.is_bond_broken(bond);
+    if (c.state != dda::ContactState::open && !intact_rock) tension = std::max(tension, -c.normal_force);
   }
   return largest > 0.0 ? tension / largest : 0.0;
 }

@@ -58,7 +58,9 @@ run::RunResult stop_and_resume(const Strip& strip, const fs::path& folder, int s
   steps_before_stop = stopped.iterations;
   const run::ResumedRun resumed = run::open_resumed_run(folder);
   EXPECT_TRUE(resumed.transient.has_value());
-  if (resumed.transient) EXPECT_EQ(resumed.transient->steps, stopped.iterations);
+  if (resumed.transient) {
+    EXPECT_EQ(resumed.transient->steps, stopped.iterations);
+  }
   return run::resume(resumed, std::nullopt);
 }
 
