@@ -333,6 +333,19 @@ Reader open_checked(std::string_view file, std::string_view magic, std::int64_t 
   return r;
 }
 
+void get_input_files(Reader& r, std::vector<InputFile>& files) {
+  std::int64_t count = 0;
+  r.get(count);
+  if (count < 0 || count > kMaxCount) r.fail();
+  for (std::int64_t i = 0; i < count; ++i) {
+    InputFile f;
+    r.get(f.key);
+    r.get(f.path);
+    r.get(f.hash);
+    files.push_back(std::move(f));
+  }
+}
+
 }  // namespace
 
 std::uint64_t hash_text(std::string_view text) {
@@ -415,16 +428,7 @@ RunCheckpoint decode_checkpoint(std::string_view file) {
   RunCheckpoint c;
   r.get(c.scenario_hash);
   r.get(c.scenario_file);
-  std::int64_t input_files = 0;
-  r.get(input_files);
-  if (input_files < 0 || input_files > kMaxCount) r.fail();
-  for (std::int64_t i = 0; i < input_files; ++i) {
-    InputFile f;
-    r.get(f.key);
-    r.get(f.path);
-    r.get(f.hash);
-    c.input_files.push_back(std::move(f));
-  }
+  get_input_files(r, c.input_files);
   r.get(c.converged);
   r.get(c.history);
   r.get(c.measure);
@@ -485,19 +489,6 @@ void put_input_files(Writer& w, const std::vector<InputFile>& files) {
     w.put(f.key);
     w.put(f.path);
     w.put(f.hash);
-  }
-}
-
-void get_input_files(Reader& r, std::vector<InputFile>& files) {
-  std::int64_t count = 0;
-  r.get(count);
-  if (count < 0 || count > kMaxCount) r.fail();
-  for (std::int64_t i = 0; i < count; ++i) {
-    InputFile f;
-    r.get(f.key);
-    r.get(f.path);
-    r.get(f.hash);
-    files.push_back(std::move(f));
   }
 }
 
