@@ -78,14 +78,16 @@ class BlockFactorSolver final : public KeptFactorSolver {
     own_terms_ = {};
     factored_terms_ = {};
     corrections_ = {};
+    capacitance_matrix_ = {};
     product_ = {};
     forget_solution();
   }
 
  private:
   // Past this many springs changed since the factorisation, the correction (m sparse columns
-  // and an m × m capacitance) costs more per application than a fresh factorisation saves.
-  static constexpr std::size_t kMaxCorrections = 32;
+  // and an m × m capacitance) costs more per application than a fresh factorisation saves
+  // (the limit measured on the 1,601-block wall: docs/studies/2026-11-29-wall-chatter-across-steps.md).
+  static constexpr std::size_t kMaxCorrections = 64;
 
   // The matrix is now base + terms.
   void take_matrix(const BlockMatrix& base, const RankOneTerms& terms) {
@@ -104,56 +106,68 @@ class BlockFactorSolver final : public KeptFactorSolver {
   // Brings the correction up to the springs of the current matrix. False if there are too
   // many changes to follow.
   bool follow_terms() {
-    // What appeared (+), what disappeared (−).
+    // What appeared (+), what disappeared (−), each in id order.
     RankOneTerms added, removed;
     if (!find_changed_terms(*terms_, factored_terms_, kMaxCorrections, added, removed)) return false;
-    std::vector<Correction> wanted;
-    for (const RankOneTerm& t : added) wanted.push_back({t, 1.0, {}});
-    for (const RankOneTerm& t : removed) wanted.push_back({t, -1.0, {}});
-    // Keep the corrections already made (same spring, same sign); the new ones after them,
-    // one sparse half-solve each.
-    std::vector<char> kept(wanted.size(), 0);
-    std::size_t m = 0;
+    // Keep the corrections already made (same spring, same sign) with their rows of C; the new
+    // ones after them, one sparse half-solve each. A binary search in the sorted lists finds
+    // each kept one, where a search through all of them made following m springs cost m².
+    const auto index_in = [](const RankOneTerms& list, const RankOneTerm& t) -> std::ptrdiff_t {
+      const auto at = std::lower_bound(list.begin(), list.end(), t.id,
+                                       [](const RankOneTerm& a, const std::array<int, 5>& id) { return a.id < id; });
+      return at != list.end() && at->id == t.id ? at - list.begin() : -1;
+    };
+    std::vector<char> added_kept(added.size(), 0), removed_kept(removed.size(), 0);
+    std::vector<Eigen::Index> kept_rows;
     for (std::size_t k = 0; k < corrections_.size(); ++k) {
-      const auto found = std::find_if(wanted.begin(), wanted.end(), [&](const Correction& w) {
-        return w.term.id == corrections_[k].term.id && w.sign == corrections_[k].sign;
-      });
-      if (found == wanted.end()) continue;
-      kept[found - wanted.begin()] = 1;
-      if (m != k) corrections_[m] = std::move(corrections_[k]);
-      ++m;
+      const Correction& c = corrections_[k];
+      const RankOneTerms& list = c.sign > 0 ? added : removed;
+      const std::ptrdiff_t at = index_in(list, c.term);
+      if (at < 0) continue;
+      (c.sign > 0 ? added_kept : removed_kept)[static_cast<std::size_t>(at)] = 1;
+      if (kept_rows.size() != k) corrections_[kept_rows.size()] = std::move(corrections_[k]);
+      kept_rows.push_back(static_cast<Eigen::Index>(k));
     }
-    const bool same = m == corrections_.size() && m == wanted.size();
-    corrections_.resize(m);
-    for (std::size_t w = 0; w < wanted.size(); ++w) {
-      if (kept[w]) continue;
-      Correction c = wanted[w];
+    const std::size_t kept = kept_rows.size();
+    const bool all_kept = kept == corrections_.size();
+    corrections_.resize(kept);
+    const auto add_correction = [&](const RankOneTerm& t, double sign) {
+      Correction c{t, sign, {}};
       BlockCholesky::SparseVector spring;
-      if (c.term.block_a >= 0) {
-        spring.blocks.push_back(c.term.block_a);
-        spring.values.push_back(c.term.w_a);
+      if (t.block_a >= 0) {
+        spring.blocks.push_back(t.block_a);
+        spring.values.push_back(t.w_a);
       }
-      if (c.term.block_b >= 0) {
-        spring.blocks.push_back(c.term.block_b);
-        spring.values.push_back(c.term.w_b);
+      if (t.block_b >= 0) {
+        spring.blocks.push_back(t.block_b);
+        spring.values.push_back(t.w_b);
       }
       c.y = factor_.forward_sparse(spring);
       corrections_.push_back(std::move(c));
       ++counts_.modified_terms;
-    }
-    if (!same) build_capacitance();
+    };
+    for (std::size_t a = 0; a < added.size(); ++a)
+      if (!added_kept[a]) add_correction(added[a], 1.0);
+    for (std::size_t a = 0; a < removed.size(); ++a)
+      if (!removed_kept[a]) add_correction(removed[a], -1.0);
+    if (!all_kept || corrections_.size() != kept) update_capacitance(kept_rows);
     return true;
   }
 
-  // C = S⁻¹ + Yᵀ Y, factored.
-  void build_capacitance() {
+  // C = S⁻¹ + Yᵀ Y, factored: the entries of the kept corrections (rows `kept_rows` of the
+  // last C, in their new order) taken over, those of the new ones, after them, computed.
+  void update_capacitance(const std::vector<Eigen::Index>& kept_rows) {
     const auto m = static_cast<Eigen::Index>(corrections_.size());
+    const auto kept = static_cast<Eigen::Index>(kept_rows.size());
     Eigen::MatrixXd c(m, m);
-    for (Eigen::Index b = 0; b < m; ++b) {
+    for (Eigen::Index b = 0; b < kept; ++b)
+      for (Eigen::Index a = 0; a <= b; ++a) c(a, b) = c(b, a) = capacitance_matrix_(kept_rows[a], kept_rows[b]);
+    for (Eigen::Index b = kept; b < m; ++b) {
       for (Eigen::Index a = 0; a <= b; ++a) c(a, b) = c(b, a) = sparse_dot(corrections_[a].y, corrections_[b].y);
       c(b, b) += 1.0 / corrections_[b].sign;
     }
-    capacitance_.factor(c);
+    capacitance_matrix_ = std::move(c);
+    capacitance_.factor(capacitance_matrix_);
   }
 
   // z = M⁻¹ r: u = L⁻¹ Π r; u −= Y C⁻¹ Yᵀ u; z = Πᵀ L⁻ᵀ u.
@@ -236,6 +250,7 @@ class BlockFactorSolver final : public KeptFactorSolver {
   mutable RankOneTerms factored_terms_;  // as held by the factor
   mutable BlockCholesky factor_;
   mutable std::vector<Correction> corrections_;
+  mutable Eigen::MatrixXd capacitance_matrix_;  // C, unfactored, in the order of corrections_
   mutable numerics::WoodburyCapacitance capacitance_;
   mutable Eigen::VectorXd u_;
 };

@@ -228,7 +228,6 @@ void System::detect_contacts() {
       const ContactCandidate& c = candidates[i];
       ActiveContact& a = active_[i];
       a.key = c.key;
-      a.released = false;
       a.changed_in_step = false;
       while (record != records_.end() && record->first < c.key) ++record;
       if (record != records_.end() && record->first == c.key) {
@@ -602,12 +601,16 @@ double System::largest_vertex_motion(const Eigen::VectorXd& change) const {
 // pass is solved again without the contacts it opened, so that no accepted step leaves a
 // closed contact pulling harder than T l. The hysteresis that keeps a contact from flipping
 // on round-off then lies on the other side, in length: an open contact closes when it
-// penetrates past `band`, and one the cutoff opened in this step only when it penetrates past
-// the penetration tolerance. The augmented Lagrangian leaves a closed contact anywhere within
-// the tolerance of touching, so a contact released from a small pull with its vertex a little
-// inside the edge would otherwise close again at the next pass, pull again once its
-// multiplier had caught up, and flip on until the step were cut. Without the cutoff the
-// allowance is p × band, the force of the band's length on the penalty spring.
+// penetrates past `band`, and one the cutoff opened (ContactRecord::released) only when it
+// penetrates past the penetration tolerance. The augmented Lagrangian leaves a closed contact
+// anywhere within the tolerance of touching, so a contact released from a small pull with its
+// vertex a little inside the edge would otherwise close again at the next pass, pull again
+// once its multiplier had caught up, and flip on until the step were cut. The mark is kept
+// from step to step until the contact parts by more than the tolerance (commit_step): a wall
+// settling under its weight brings such a contact back within the band in a later step, and
+// the joints its cutoff had opened closed again by the dozen a step, each to be opened again
+// a pass or two later (docs/studies/2026-11-29-wall-chatter-across-steps.md). Without the
+// cutoff the allowance is p × band, the force of the band's length on the penalty spring.
 //
 // A closed contact on an intact bond (is_intact_bond) stays locked: its face breaks as a whole
 // (break_overloaded_bonds), after which it is a joint's contact like any other.
@@ -618,9 +621,10 @@ bool System::update_state(ActiveContact& c, const Eigen::VectorXd& d, double ban
   // one committed (a closed contact's is the value update_contact_forces set from that d).
   r.penetration = pen;
   if (r.state == ContactState::open) {
-    if (pen > (c.released ? std::max(band, penetration_tolerance_) : band)) {
+    if (pen > (r.released ? std::max(band, penetration_tolerance_) : band)) {
       r.state = ContactState::locked;
       r.multiplier = 0.0;
+      r.released = false;
       linearise_closed_contact(c);
       return true;
     }
@@ -632,7 +636,7 @@ bool System::update_state(ActiveContact& c, const Eigen::VectorXd& d, double ban
     r.state = ContactState::open;
     r.multiplier = 0.0;
     r.normal_force = 0.0;
-    c.released = settings_.tension_cutoff;
+    r.released = settings_.tension_cutoff;
     return true;
   }
   // Narrower for slip than for a reversal: a locked spring stretches only F/p.
@@ -926,6 +930,8 @@ void System::commit_step(const Eigen::VectorXd& d, double dt) {
   numerics::for_each_index(many_contacts(), active_.size(), [&](std::size_t i) {
     const ActiveContact& c = active_[i];
     ContactRecord r = c.record;  // its penetration the last pass's, from this d (update_state)
+    // Parted by more than the tolerance: the next touch closes it at the band, as a new contact.
+    if (r.penetration < -penetration_tolerance_) r.released = false;
     if (r.state == ContactState::open) {
       r.multiplier = 0.0;
       r.normal_force = 0.0;

@@ -66,6 +66,9 @@ struct ContactRecord {
   int slide_sign = 0;            // direction of sliding along the edge
   double normal_force = 0.0;
   double penetration = 0.0;
+  // Opened by the tension cutoff and not parted since by more than the penetration tolerance:
+  // it closes again only by penetrating past that tolerance (System::update_state).
+  bool released = false;
 };
 
 // The evolving state of a System as plain data: what a checkpoint holds to continue a run
@@ -220,9 +223,6 @@ class System {
     ContactRecord record;
     double penetration0 = 0.0;
     int dof_i = -1, dof_j = -1;
-    // Opened by the tension cutoff in this step: it closes again only by penetrating past
-    // the tolerance (see update_state).
-    bool released = false;
     // Changed state in one of this step's open–close passes.
     bool changed_in_step = false;
     Vector6 en_i = Vector6::Zero(), en_j = Vector6::Zero();

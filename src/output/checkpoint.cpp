@@ -22,9 +22,10 @@ constexpr std::string_view kMagic = "hydrodda checkpoint\n";
 // as the checksum; 11: the wedge tips of mesh.refine_tips (refined, and of the round's last
 // passes); 13: the hashes of the files the scenario names, and the porosity and permeability
 // of the last pass; 14: history rows end in each pass's changes (contacts, joint crossings,
-// fluid load, open–close iterations, step cuts). Only the current format is read: a
-// run stopped by an older hydrodda is run again.
-constexpr std::int64_t kVersion = 14;
+// fluid load, open–close iterations, step cuts); 15: whether the tension cutoff released each
+// open contact. Only the current format is read: a run stopped by an older hydrodda is run
+// again.
+constexpr std::int64_t kVersion = 15;
 // The last 8 bytes: the CRC-32 of every byte before them (zlib's, as a 64-bit word). A CRC
 // detects every error burst of up to 32 bits, so a flipped bit is refused, not resumed from;
 // zlib computes it four times as fast as a byte-at-a-time hash on a checkpoint of tens of MB.
@@ -229,6 +230,9 @@ void visit_record(Io&& io, Record& r) {
   io(r.slide_sign);
   io(r.normal_force);
   io(r.penetration);
+  bool released = r.released;
+  io(released);
+  r.released = released;
 }
 
 void write_mechanics(Writer& w, const dda::SystemState& s) {

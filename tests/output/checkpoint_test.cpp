@@ -44,7 +44,10 @@ RunCheckpoint make_checkpoint() {
   record.slide_sign = -1;
   record.normal_force = 1e5;
   record.penetration = -1e-5;
-  c.mechanics.contacts = {{{0, 1, 1, 2}, record}};
+  dda::ContactRecord released;  // opened by the tension cutoff: closes only past the tolerance
+  released.released = true;
+  released.penetration = -2e-7;
+  c.mechanics.contacts = {{{0, 1, 1, 2}, record}, {{1, 0, 0, 3}, released}};
   c.mechanics.fixed_points = {{0.0, 0.0}};
   c.mechanics.measured_points = {{0.5, 0.5}, {0.25, 0.75}};
   c.mechanics.vertex_forces = {{}, {{1.0, 2.0}, {3.0, 4.0}, {5.0, 6.0}}};
@@ -102,13 +105,16 @@ TEST(Checkpoint, DecodesToTheSameValuesBitForBit) {
   EXPECT_EQ(b.material_centroid.y, e.material_centroid.y);
   EXPECT_EQ(d.mechanics.time, 0.2);
   EXPECT_EQ(d.mechanics.time_step, 7.5e-4);
-  ASSERT_EQ(d.mechanics.contacts.size(), 1u);
+  ASSERT_EQ(d.mechanics.contacts.size(), 2u);
   EXPECT_EQ(d.mechanics.contacts[0].first, (dda::ContactKey{0, 1, 1, 2}));
   const dda::ContactRecord& r = d.mechanics.contacts[0].second;
   EXPECT_EQ(r.state, dda::ContactState::sliding);
   EXPECT_EQ(r.slide_sign, -1);
   EXPECT_EQ(r.multiplier, 12.5);
   EXPECT_EQ(r.penetration, -1e-5);
+  EXPECT_FALSE(r.released);
+  EXPECT_EQ(d.mechanics.contacts[1].second.state, dda::ContactState::open);
+  EXPECT_TRUE(d.mechanics.contacts[1].second.released);
   EXPECT_EQ(d.mechanics.measured_points.size(), 2u);
   EXPECT_EQ(d.mechanics.load_points.size(), 0u);
   ASSERT_EQ(d.mechanics.vertex_forces.size(), 2u);
