@@ -399,26 +399,28 @@ RunRecord run_and_read(const fs::path& file) {
 }
 
 // The asymmetric flexure at 10 MPa with passes of fixed steps (coupling.settle = false): its
-// joints, which carry no tension, chatter, and its passes 2 to 13 run on steps cut to about 1%
-// of the time step, moving the blocks little though they are far from equilibrium (pass 14
-// moves them by half their displacement). With coupling.tolerance = 5e-3 both norms are under
-// it from pass 5 on; counted, the loop stopped there at K_eff/K_m 1.0015 with the layer lifted
-// 0.65 mm. Not counted, it goes on and converges where a tolerance of 1e-4 does (measured 16
-// passes, 1.0262 and 5.26 mm, against 17 passes, 1.0262 and 5.26 mm): K_eff within 1e-3 and
-// the largest displacement within 2% of the tight run's.
+// joints, which carry no tension, chatter, and its passes 2 to 9 run on steps cut to under 0.1%
+// of the time step, moving the blocks little though they are far from equilibrium (pass 10
+// moves them by half their displacement). With coupling.tolerance = 1e-2 both norms are under
+// it in passes 2 and 4 to 8; counted, the loop stopped at pass 2 at K_eff/K_m 1.0009 with the
+// widest opening 0.54 mm. Not counted, it goes on and converges where a tolerance of 1e-4 does
+// (measured 12 passes, 1.02615 and 2.88 mm, against 13 passes, 1.02616 and 2.88 mm): K_eff
+// within 1e-3 and the largest displacement within 2% of the tight run's. (At 5e-3, the
+// tolerance this test once used, only passes 6 and 8 are under it since released joints stay
+// open: docs/studies/2026-11-29-wall-chatter-across-steps.md.)
 TEST(CoupledRun, APassWhoseStepsWereCutShortIsNotConverged) {
   const fs::path flexure = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/paper/asymmetric_flexure_10mpa.toml";
   const std::vector<std::pair<std::string, std::string>> fixed_steps{{"[coupling]", "[coupling]\nsettle = false"},
                                                                 {"figures = [\"png\"]", "figures = []"}};
   auto loose_edits = fixed_steps;
-  loose_edits.push_back({"tolerance = 1.0e-4", "tolerance = 5.0e-3"});
+  loose_edits.push_back({"tolerance = 1.0e-4", "tolerance = 1.0e-2"});
   const RunRecord cut = run_and_read(edited_scenario(flexure, "hydrodda-cut-steps-loose", loose_edits));
   const auto& history = cut.history;
   // Passes before the last with both norms (columns 2 and 3) under the tolerance, which the
   // loop ran past; the log says why.
   int passed_over = 0;
   for (std::size_t row = 1; row + 1 < history.size(); ++row)
-    passed_over += std::stod(history[row][2]) < 5e-3 && std::stod(history[row][3]) < 5e-3;
+    passed_over += std::stod(history[row][2]) < 1e-2 && std::stod(history[row][3]) < 1e-2;
   EXPECT_GE(passed_over, 5);
   EXPECT_NE(cut.output.find("its DDA steps were cut short"), std::string::npos) << cut.output;
   const auto tight = run_to_summary(edited_scenario(flexure, "hydrodda-cut-steps-tight", fixed_steps));
