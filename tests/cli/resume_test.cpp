@@ -151,15 +151,17 @@ TEST(Resume, RollersRelievedOfTheFacesShareOfPressureResumeBitForBit) {
 }
 
 // A run of mesh.refine_tips stopped in its second round resumes on that round's mesh: the
-// symmetric flexure with the cubic law converges on its file's mesh (measured: 7 passes), and
-// the second round, on the mesh refined around its central joint's tip, swings for its 50
-// passes and so refines the tips unresolved over its last 10 (measured: 2; round 3 converges in
-// 21). Stopped after pass 45, the checkpoint holds round 1's tip and the tips of passes 41–45;
-// the resumed run meshes with the first and refines the same, and the run folder, round_1/ and
-// round_2/ match those of a run never stopped, byte for byte.
+// asymmetric flexure at 20 MPa with the cubic law converges on its file's mesh (measured: 5
+// passes) with 3 wedge tips wider than its mesh resolves, and the second round, on the mesh
+// refined around them, converges in 6. --stop-after counts a round's own passes, so stopped
+// after pass 5 the run ends round 1 and stops in round 2, its checkpoint holding round 1's tips;
+// the resumed run meshes with them and the run folder and round_1/ match those of a run never
+// stopped, byte for byte. (The symmetric flexure this test once used now converges in fewer
+// passes in its second round than in its first, 6 against 7, since released joints stay
+// open: docs/studies/2026-11-29-wall-chatter-across-steps.md.)
 TEST(Resume, ARunStoppedInItsSecondMeshRoundResumesOnThatMesh) {
   Folders f("refine-tips");
-  const fs::path file = edited_scenario(fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/paper/symmetric_flexure_20m.toml",
+  const fs::path file = edited_scenario(fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/paper/asymmetric_flexure_20mpa.toml",
                                         "hydrodda-resume-refine-tips",
                                         {{"permeability_law = \"kozeny-carman\"", "permeability_law = \"cubic\""},
                                          {"[mesh]\n", "[mesh]\nrefine_tips = true\n"}});
@@ -167,19 +169,20 @@ TEST(Resume, ARunStoppedInItsSecondMeshRoundResumesOnThatMesh) {
   const auto whole = run_program("run " + file.string() + " -o " + f.whole.string());
   ASSERT_EQ(whole.exit_code, 0) << whole.output;
   ASSERT_TRUE(fs::exists(f.whole / "round_1" / "history.csv"));
-  const auto first = run_program("run " + file.string() + " -o " + f.parts.string() + " --stop-after 45");
+  ASSERT_GT(read_summary_without_timings(f.whole)["iterations"].get<int>(), 5) << "round 2 must outlast the stop";
+  const auto first = run_program("run " + file.string() + " -o " + f.parts.string() + " --stop-after 5");
   ASSERT_EQ(first.exit_code, 0) << first.output;
   const nlohmann::json stopped = read_summary_without_timings(f.parts);
   EXPECT_EQ(stopped["status"], "stopped");
-  EXPECT_EQ(stopped["iterations"], 45);
+  EXPECT_EQ(stopped["iterations"], 5);
   ASSERT_TRUE(stopped["fractures"].contains("refined_tips")) << stopped["fractures"].dump();
   EXPECT_EQ(stopped["fractures"]["refined_tips"][0]["round"], 1);
+  ASSERT_TRUE(fs::exists(f.parts / "round_1" / "history.csv"));
   const auto second = run_program("run --resume " + f.parts.string());
   ASSERT_EQ(second.exit_code, 0) << second.output;
-  EXPECT_NE(second.output.find("resuming after coupling iteration 45"), std::string::npos) << second.output;
+  EXPECT_NE(second.output.find("resuming after coupling iteration 5"), std::string::npos) << second.output;
   expect_same_results(f.whole, f.parts);
   expect_same_results(f.whole / "round_1", f.parts / "round_1");
-  expect_same_results(f.whole / "round_2", f.parts / "round_2");
   fs::remove(file);
 }
 
