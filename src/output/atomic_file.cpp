@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -23,10 +24,18 @@ bool full_disk_for(const std::filesystem::path& path) {
   const char* name = std::getenv("HYDRODDA_TEST_FULL_DISK");
   return name && *name && path.filename() == name;
 }
+std::atomic<long long> flushes{0};
 }  // namespace
 
-AtomicFile::AtomicFile(const std::filesystem::path& path)
-    : path_(path), temporary_(path), full_disk_(full_disk_for(path)) {
+long long disk_flushes() { return flushes.load(); }
+
+bool flush_to_disk(int fd) {
+  ++flushes;
+  return ::fsync(fd) == 0;
+}
+
+AtomicFile::AtomicFile(const std::filesystem::path& path, Durability durability)
+    : path_(path), temporary_(path), durability_(durability), full_disk_(full_disk_for(path)) {
   // The temporary name carries the process id so that two runs never share one.
   temporary_ += fmt::format(".tmp.{}", ::getpid());
   fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
@@ -66,7 +75,7 @@ void AtomicFile::commit() {
   if (fd_ < 0) throw std::logic_error("AtomicFile::commit twice");
   const int fd = fd_;
   fd_ = -1;
-  const bool synced = ::fsync(fd) == 0;
+  const bool synced = durability_ == Durability::atomic || flush_to_disk(fd);
   const bool closed = ::close(fd) == 0;
   if (!synced || !closed) {
     ::unlink(temporary_.c_str());
@@ -78,8 +87,8 @@ void AtomicFile::commit() {
   }
 }
 
-void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
-  AtomicFile file(path);
+void write_file_atomically(const std::filesystem::path& path, std::string_view content, Durability durability) {
+  AtomicFile file(path, durability);
   file.write(content);
   file.commit();
 }

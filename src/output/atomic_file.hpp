@@ -7,14 +7,32 @@
 
 namespace hydrodda::output {
 
+// How far a committed file is kept (docs/output.md, "Durability").
+enum class Durability {
+  // Its bytes flushed to the disk (fsync) before the rename: once the folder's entries are
+  // flushed too (RunFolder::sync, or the file system's next journal commit), it survives a
+  // power cut whole.
+  durable,
+  // Renamed without flushing: whole or as it was if the program dies, but a power cut before
+  // the system writes it back (Linux: within some 30 s) may leave it empty, as it was, or absent.
+  atomic,
+};
+
+// The fsync calls this process made through AtomicFile and RunFolder::sync (a statistic for
+// tests and benchmarks).
+long long disk_flushes();
+// fsync of `fd`, counted; false on failure with errno set.
+bool flush_to_disk(int fd);
+
 // A file written in pieces to a temporary file beside `path`, then flushed and renamed over
 // `path` by commit() (atomic on POSIX within one file system): a large file (a fluid field of
 // a million triangles) is written as its parts are made, never held whole in memory. Not
-// committed, the temporary file is removed and `path` is left as it was. Throws
-// std::runtime_error naming the path on failure.
+// committed, the temporary file is removed and `path` is left as it was. Flushed to the disk
+// before its rename unless `durability` says otherwise. Throws std::runtime_error naming the
+// path on failure.
 class AtomicFile {
  public:
-  explicit AtomicFile(const std::filesystem::path& path);
+  explicit AtomicFile(const std::filesystem::path& path, Durability durability = Durability::durable);
   ~AtomicFile();
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
@@ -30,10 +48,12 @@ class AtomicFile {
   std::filesystem::path temporary_;
   int fd_ = -1;
   std::size_t size_ = 0;  // bytes appended so far
+  Durability durability_;
   bool full_disk_ = false;  // writes fail as on a full disk (HYDRODDA_TEST_FULL_DISK, for tests)
 };
 
 // The whole `content` through an AtomicFile.
-void write_file_atomically(const std::filesystem::path& path, std::string_view content);
+void write_file_atomically(const std::filesystem::path& path, std::string_view content,
+                           Durability durability = Durability::durable);
 
 }  // namespace hydrodda::output

@@ -24,7 +24,7 @@ void PvdSeries::add(double time, const std::string& relative_vtu, int part) {
                                             path_.string()));
   }
   entries_.push_back({time, relative_vtu, part});
-  write_file_atomically(path_, text());
+  write_file_atomically(path_, text(), Durability::atomic);  // a run's index of fields: RunFolder::durability_of
 }
 
 std::string PvdSeries::text() const {

@@ -102,12 +102,26 @@ void RunFolder::write_with(std::string_view name, const std::function<void(Atomi
   if (fs::is_directory(path, ec))
     throw RunFolderError(fmt::format("cannot write {}: a folder of that name is in the way", path.string()));
   try {
-    AtomicFile file(path);
+    AtomicFile file(path, durability_of(name));
     fill(file);
     file.commit();
   } catch (const std::runtime_error& e) {
     throw RunFolderError(e.what());
   }
+}
+
+Durability RunFolder::durability_of(std::string_view name) {
+  return name == "checkpoint.bin" || name == "scenario.toml" || name == "summary.json" ? Durability::durable
+                                                                                       : Durability::atomic;
+}
+
+void RunFolder::sync() const {
+  const int fd = ::open(directory_.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) throw RunFolderError(fmt::format("cannot flush {}: {}", directory_.string(), std::strerror(errno)));
+  const bool flushed = flush_to_disk(fd);
+  const int error = errno;
+  ::close(fd);
+  if (!flushed) throw RunFolderError(fmt::format("cannot flush {}: {}", directory_.string(), std::strerror(error)));
 }
 
 }  // namespace hydrodda::output

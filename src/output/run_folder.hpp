@@ -33,12 +33,22 @@ class RunFolder {
   // The figures/ subfolder, created on first use.
   std::filesystem::path figures() const { return subfolder("figures"); }
 
-  // Writes a file in the folder atomically (temporary name, then rename); RunFolderError
-  // naming the file when it cannot.
+  // Writes a file in the folder atomically (temporary name, then rename), flushed to the disk
+  // first when durability_of(name) says so; RunFolderError naming the file when it cannot.
   void write(std::string_view name, std::string_view content) const;
   // The same for a file made in pieces: `fill` writes them into the file, which is committed
   // after it returns.
   void write_with(std::string_view name, const std::function<void(AtomicFile&)>& fill) const;
+
+  // What a power cut must not take (docs/output.md, "Durability"): the files a resume reads
+  // (checkpoint.bin and the scenario.toml it was made from) and the run's verdict
+  // (summary.json) are durable; the rest (fields, tables, figures), which the run makes from
+  // its state, only atomic.
+  static Durability durability_of(std::string_view name);
+  // Flushes the folder's own entries to the disk (fsync of the folder), so that the durable
+  // files renamed into it survive a power cut under their names: once at the run's end.
+  // RunFolderError naming the folder when it cannot.
+  void sync() const;
 
  private:
   // Throws RunFolderError when the folder could not be used under `policy`; creates nothing.

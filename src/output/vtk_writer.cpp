@@ -149,7 +149,7 @@ std::string render_header(std::size_t point_count, std::size_t cell_count, std::
 void write_file(const std::filesystem::path& path, std::size_t point_count, std::size_t cell_count,
                 std::span<const Section> sections, int level) {
   constexpr std::size_t kBatchBytes = std::size_t{16} << 20;
-  AtomicFile file(path);
+  AtomicFile file(path, Durability::atomic);  // a run's field: see RunFolder::durability_of
   const std::string placeholder = render_header(point_count, cell_count, sections, {});
   file.write(placeholder);
   std::vector<std::size_t> sizes;

@@ -16,8 +16,17 @@ using output::DataArray;
 
 void list_if_present(output::PvdSeries& series, const output::RunFolder& folder, double time, const std::string& name) {
   std::error_code ec;
-  if (std::filesystem::is_regular_file(folder.file(name), ec)) series.add(time, name);
-  else spdlog::warn("{} is missing from {}: left out of {}", name, folder.path().string(), series.path().filename().string());
+  const std::filesystem::path file = folder.file(name);
+  const std::string series_name = series.path().filename().string();
+  if (!std::filesystem::is_regular_file(file, ec))
+    spdlog::warn("{} is missing from {}: left out of {}", name, folder.path().string(), series_name);
+  else if (std::filesystem::file_size(file, ec) == 0 && !ec)
+    // What a power cut can leave of a field renamed into place before its bytes reached the
+    // disk (docs/output.md, "Durability"); a .vtu the program wrote is never empty.
+    spdlog::warn("{} in {} is empty (a power cut before it reached the disk?): left out of {}", name,
+                 folder.path().string(), series_name);
+  else
+    series.add(time, name);
 }
 
 ParaviewOutput::ParaviewOutput(const output::RunFolder& folder, const scenario::OutputFields& fields)

@@ -18,8 +18,9 @@
 namespace hydrodda::run {
 
 // A continued run's series: lists `name`, a .vtu an earlier part of the run wrote, at `time` if
-// it is still in the folder; one deleted since is left out, with a warning, so that the .pvd
-// never lists what is not there (the next output step writes its own anew).
+// it is still in the folder; one deleted since, or left empty by a power cut, is left out, with
+// a warning, so that the .pvd never lists what is not there (the next output step writes its
+// own anew).
 void list_if_present(output::PvdSeries& series, const output::RunFolder& folder, double time, const std::string& name);
 
 class ParaviewOutput {

@@ -34,6 +34,7 @@ RunResult record_failure(const output::RunFolder& folder, RunStatus status, cons
   const output::CheckedSummary checked = output::format_checked_summary(summary);
   try {
     folder.write("summary.json", checked.text);
+    folder.sync();  // the verdict under its name through a power cut (docs/output.md, "Durability")
   } catch (const output::RunFolderError& e) {
     // Nowhere left to record the failure: the caller says both (once when they are the same).
     if (what == e.what()) throw;
@@ -109,6 +110,7 @@ RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output:
                                        : kind == RunKind::mechanics ? run_mechanics(context)
                                                                     : run_flow(context);
     write_final_summary(summary);
+    folder.sync();  // the verdict under its name through a power cut (docs/output.md, "Durability")
     const RunStatus status = summary.status == "stopped" ? RunStatus::stopped : RunStatus::finished;
     return {status, summary.converged, summary.iterations, summary.message, summary, folder.path(), true};
   } catch (const scenario::ScenarioError&) {

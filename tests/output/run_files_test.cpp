@@ -46,6 +46,54 @@ TEST(AtomicFile, ReplacesWholeAndLeavesNoTemporary) {
   fs::remove_all(dir);
 }
 
+// Durability (docs/output.md): a durable file is flushed to the disk (one fsync) before its
+// rename, an atomic one only renamed; both end whole under their name with no temporary left.
+TEST(AtomicFile, OnlyADurableFileIsFlushedBeforeItsRename) {
+  const fs::path dir = fresh_dir("hydrodda-durability");
+  fs::create_directories(dir);
+  long long before = disk_flushes();
+  write_file_atomically(dir / "kept.txt", "durable\n", Durability::durable);
+  EXPECT_EQ(disk_flushes() - before, 1);
+  before = disk_flushes();
+  write_file_atomically(dir / "field.txt", "atomic\n", Durability::atomic);
+  EXPECT_EQ(disk_flushes() - before, 0);
+  EXPECT_EQ(read_all(dir / "kept.txt"), "durable\n");
+  EXPECT_EQ(read_all(dir / "field.txt"), "atomic\n");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}), 2);
+  fs::remove_all(dir);
+}
+
+// A run folder flushes what a resume reads (checkpoint.bin, scenario.toml) and the verdict
+// (summary.json) before renaming them, nothing else; sync() flushes the folder's entries once,
+// and says which folder it could not flush.
+TEST(RunFolder, FlushesOnlyWhatAResumeReadsAndTheVerdict) {
+  const fs::path dir = fresh_dir("hydrodda-run-folder-durability");
+  const RunFolder folder(dir, ExistingFolder::Refuse);
+  for (const char* name : {"checkpoint.bin", "scenario.toml", "summary.json"}) {
+    EXPECT_EQ(RunFolder::durability_of(name), Durability::durable) << name;
+    const long long before = disk_flushes();
+    folder.write(name, "x");
+    EXPECT_EQ(disk_flushes() - before, 1) << name;
+  }
+  for (const char* name : {"history.csv", "fluid_0001.vtu", "fluid.pvd", "fractures.csv", "sweep.csv"}) {
+    EXPECT_EQ(RunFolder::durability_of(name), Durability::atomic) << name;
+    const long long before = disk_flushes();
+    folder.write(name, "x");
+    EXPECT_EQ(disk_flushes() - before, 0) << name;
+    EXPECT_EQ(read_all(dir / name), "x");
+  }
+  const long long before = disk_flushes();
+  folder.sync();
+  EXPECT_EQ(disk_flushes() - before, 1);
+  fs::remove_all(dir);
+  try {
+    folder.sync();
+    ADD_FAILURE() << "a folder removed was flushed";
+  } catch (const RunFolderError& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot flush " + dir.string()), std::string::npos) << e.what();
+  }
+}
+
 TEST(RunFolder, CreatesOnDemandAndRefusesOccupiedFolders) {
   const fs::path dir = fresh_dir("hydrodda-folder") / "nested" / "run";
   {
