@@ -2,10 +2,12 @@
 """The program's start-up: `hydrodda --version` and a whole run of one block on a fixed base
 (5 static steps, its run folder written), each a fresh process, ROUNDS times; prints the
 median wall time and CPU time (user + system, from the children's rusage) of each and the load
-average before and after.
+average before and after. With more build folders after ROUNDS, each round runs every build in
+turn, so that a loaded machine's swings fall on all of them alike.
 
-    benchmarks/startup.py [BUILD_DIR] [ROUNDS]
+    benchmarks/startup.py [BUILD_DIR] [ROUNDS] [OTHER_BUILD_DIR...]
     benchmarks/startup.py build 21
+    benchmarks/startup.py build 21 ../old/build
 """
 
 import os
@@ -50,25 +52,28 @@ def timed(command):
 
 
 def main():
-    build = Path(sys.argv[1] if len(sys.argv) > 1 else "build").resolve()
+    builds = [Path(sys.argv[1] if len(sys.argv) > 1 else "build").resolve()]
     rounds = int(sys.argv[2]) if len(sys.argv) > 2 else 21
-    program = build / "bin" / "hydrodda"
+    builds += [Path(b).resolve() for b in sys.argv[3:]]
     work = Path(tempfile.mkdtemp())
     try:
         scenario = work / "one.toml"
         scenario.write_text(ONE_BLOCK)
         folder = work / "one"
         print("load average before: " + " ".join(f"{x:.2f}" for x in os.getloadavg()))
-        times = {"--version": [], "run, one block": []}
+        times = {(b, name): [] for b in builds for name in ("--version", "run, one block")}
         for _ in range(rounds):
-            times["--version"].append(timed([str(program), "--version"]))
-            shutil.rmtree(folder, ignore_errors=True)
-            times["run, one block"].append(timed([str(program), "run", "-q", str(scenario), "-o", str(folder)]))
+            for build in builds:
+                program = str(build / "bin" / "hydrodda")
+                times[(build, "--version")].append(timed([program, "--version"]))
+                shutil.rmtree(folder, ignore_errors=True)
+                times[(build, "run, one block")].append(timed([program, "run", "-q", str(scenario), "-o", str(folder)]))
         print("load average after: " + " ".join(f"{x:.2f}" for x in os.getloadavg()))
-        for name, rows in times.items():
+        for (build, name), rows in times.items():
             wall = statistics.median(r[0] for r in rows) * 1e3
             cpu = statistics.median(r[1] for r in rows) * 1e3
-            print(f"{name}: median wall {wall:.1f} ms, CPU {cpu:.1f} ms ({rounds} runs)")
+            label = f"{build}: " if len(builds) > 1 else ""
+            print(f"{label}{name}: median wall {wall:.1f} ms, CPU {cpu:.1f} ms ({rounds} runs)")
     finally:
         shutil.rmtree(work, ignore_errors=True)
 
