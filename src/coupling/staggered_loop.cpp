@@ -109,6 +109,12 @@ std::vector<geometry::Polygon> StaggeredLoop::current_blocks() const {
 // permeability in series with their open fraction, plus the joints' transmissivity (one
 // transmissivity per joint: embedded_joints.hpp), solved as tensors.
 hydro::FlowSolution StaggeredLoop::solve_flow(const std::vector<geometry::Polygon>& blocks) {
+  const hydro::PermeabilityView k = update_permeability(blocks);
+  if (time_level_) return step_in_time(k);
+  return darcy_.solve_reusing_factor(k, solution_.head);
+}
+
+hydro::PermeabilityView StaggeredLoop::update_permeability(const std::vector<geometry::Polygon>& blocks) {
   const auto given = [](const std::vector<std::optional<double>>& k, std::size_t e) {
     return e < k.size() && k[e].has_value();
   };
@@ -118,7 +124,7 @@ hydro::FlowSolution StaggeredLoop::solve_flow(const std::vector<geometry::Polygo
     for (std::size_t e = 0; e < permeability_.size(); ++e)
       if (given(settings_.fixed_permeability, e)) permeability_[e] = *settings_.fixed_permeability[e];
     check_finite(permeability_, "the permeability", iteration_);
-    return darcy_.solve_reusing_factor(permeability_, solution_.head);
+    return hydro::PermeabilityView(permeability_);
   }
   set_joint_zone_matrix_permeability();
   joint_apertures_ = joints_->apertures(blocks, mechanics_.contacts(), mechanics_.penetration_tolerance());
@@ -131,7 +137,7 @@ hydro::FlowSolution StaggeredLoop::solve_flow(const std::vector<geometry::Polygo
     permeability_[e] = largest_principal_value(k[e]);
   }
   check_finite(permeability_, "the permeability", iteration_);
-  return darcy_.solve_reusing_factor(k, solution_.head);
+  return hydro::PermeabilityView(k);
 }
 
 // The elements along the joints take the matrix permeability (their material's), not the
@@ -180,6 +186,7 @@ PassReport StaggeredLoop::run_pass() {
   pass_start_->kept_factor_single_precision = darcy_.kept_factor_in_single_precision();
   pass_start_->pseudo_time_step = pseudo_time_step_;
   pass_start_->last_steady_change = last_steady_change_;
+  if (time_level_) pass_start_->step_passes = time_level_->passes++;
 
   // Porosity and permeability from the blocks as they are now: recomputed every pass.
   auto start = Clock::now();
@@ -189,11 +196,8 @@ PassReport StaggeredLoop::run_pass() {
   pass_start_->permeability = std::exchange(permeability_, {});
   pass_start_->permeability_tensors = std::exchange(permeability_tensors_, {});
   pass_start_->joint_apertures = std::exchange(joint_apertures_, {});
-  porosity_ = porosity_mapper_.compute(blocks, settings_.permeability.matrix_porosity, seepage_ ? &pieces_ : nullptr);
-  // A block moved off the domain boundary leaves a strip that is no fracture (boundary_gaps.hpp).
-  exclude_boundary_gaps(porosity_, boundary_gaps_.compute_gap_areas(blocks), porosity_mapper_.element_areas(),
-                        settings_.permeability.matrix_porosity);
-  settings_.permeability.apply_element_matrix_porosity(porosity_, porosity_mapper_.element_areas());
+  // The pieces for the seepage force, and for the skeleton's volumes of a time step.
+  porosity_ = clip_blocks(blocks, seepage_ || settings_.fixed_stress ? &pieces_ : nullptr);
   std::vector<double> apertures;
   if (settings_.permeability.reads_apertures())
     apertures = compute_local_apertures(mesh_, porosity_.fracture_area, blocks, settings_.permeability.domain,
@@ -211,7 +215,7 @@ PassReport StaggeredLoop::run_pass() {
   // Judged on the fresh (unrelaxed) heads: the relaxed change is ω times this, so a small ω
   // would freeze the heads and fake convergence.
   const double unrelaxed_head_change = previous_heads_.empty() ? 1.0 : head_change(fresh.head, previous_heads_);
-  if (settings_.pseudo_time && !previous_heads_.empty()) {
+  if (settings_.pseudo_time && !time_level_ && !previous_heads_.empty()) {
     fresh = step_in_pseudo_time(unrelaxed_head_change);
     check_finite(fresh.head, "the head", iteration_);
   }
@@ -324,7 +328,10 @@ void StaggeredLoop::measure_convergence(PassReport& report, double unrelaxed_hea
                                    : displacement_change(u, previous_displacements_,
                                                          mechanics_.allowed_step_displacement());
   // Both norms compare this pass with the last, so both passes must have had the full load.
-  report.under_tolerance = iteration_ > settings_.ramp_passes && report.head_change < settings_.tolerance &&
+  // In a time step, its first pass compares with the last step's end, not with an iterate.
+  const bool compared_with_iterate = !time_level_ || time_level_->passes >= 2;
+  report.under_tolerance = iteration_ > settings_.ramp_passes && compared_with_iterate &&
+                           report.head_change < settings_.tolerance &&
                            report.displacement_change < settings_.tolerance && report.at_rest;
   report.converged = report.under_tolerance && report.full_time_step;
   if (!report.converged) report.escaping = blocks_beyond_their_size();
@@ -387,6 +394,7 @@ void StaggeredLoop::abandon_pass() {
   joint_apertures_ = std::move(start.joint_apertures);
   pseudo_time_step_ = start.pseudo_time_step;
   last_steady_change_ = start.last_steady_change;
+  if (time_level_) time_level_->passes = start.step_passes;
   if (start.flow_solved) {  // else the heads and the relaxation are still the last pass's
     solution_ = std::move(start.solution);
     previous_update_ = std::move(start.previous_update);

@@ -19,6 +19,7 @@
 
 #include "coupling/boundary_gaps.hpp"
 #include "coupling/embedded_joints.hpp"
+#include "coupling/fixed_stress_step.hpp"
 #include "coupling/loop_acceleration.hpp"
 #include "coupling/pass_loop.hpp"
 #include "coupling/pass_report.hpp"
@@ -78,6 +79,10 @@ struct LoopSettings {
   // step in pseudo-time from the last pass's heads, the convergence judged on the steady
   // solve's. Unset: every pass's flow is the steady solve.
   std::optional<PseudoTimeSettings> pseudo_time;
+  // A coupled transient run (fixed_stress_step.hpp): each pass is an iteration of the time step
+  // begun by begin_time_step(), its flow the fixed-stress step from the step's start. Unset:
+  // steady passes.
+  std::optional<FixedStressSettings> fixed_stress;
 };
 
 // Thrown by run_pass when LoopSettings::stop_requested says so; the pass is not counted and the
@@ -158,6 +163,16 @@ class StaggeredLoop final : public PassRunner {
   const dda::SystemState& mechanics_state() const { return last_mechanics_; }
   void import_state(LoopState state, const dda::SystemState& mechanics);
 
+  // A coupled transient run (LoopSettings::fixed_stress): start_in_time() takes the heads at
+  // t = 0 (given, or unset: the steady ones on the blocks as built) before any pass;
+  // begin_time_step(Δt) makes the state now the start of a step of length Δt, whose iterations
+  // the passes after it are (the fixed-stress flow step, then the mechanics under its
+  // pressures). A pass converges only from the step's second iteration on: its first compares
+  // with the last step's end. Throws std::logic_error without fixed_stress.
+  void start_in_time(std::optional<hydro::FlowSolution> initial);
+  void begin_time_step(double time_step);
+  double flow_reference_head() const { return darcy_.reference_head(); }
+
   // New values of the flow boundary conditions (DarcySolver::set_boundary_values), taken from
   // the next pass on: a loading path scripted between passes.
   void set_flow_boundary_values(std::span<const hydro::BoundaryCondition> boundaries) {
@@ -196,6 +211,10 @@ class StaggeredLoop final : public PassRunner {
  private:
   std::vector<geometry::Polygon> current_blocks() const;
   hydro::FlowSolution solve_flow(const std::vector<geometry::Polygon>& blocks);
+  hydro::PermeabilityView update_permeability(const std::vector<geometry::Polygon>& blocks);
+  PorosityField clip_blocks(const std::vector<geometry::Polygon>& blocks, BlockPieces* pieces) const;
+  hydro::FlowSolution step_in_time(hydro::PermeabilityView permeability);
+  std::vector<double> block_volumetric_strains() const;
   void set_joint_zone_matrix_permeability();
   void relax(hydro::FlowSolution& fresh);
   hydro::FlowSolution step_in_pseudo_time(double steady_change);
@@ -222,6 +241,7 @@ class StaggeredLoop final : public PassRunner {
     std::shared_ptr<const hydro::PermeabilityField> kept_factor;
     bool kept_factor_single_precision = false;
     double pseudo_time_step = 0.0, last_steady_change = 0.0;
+    int step_passes = 0;
   };
   std::optional<PassStart> pass_start_;
 
@@ -257,6 +277,15 @@ class StaggeredLoop final : public PassRunner {
   numerics::AndersonAccelerator anderson_;
   double pseudo_time_step_ = 0.0;     // Δτ of the next pass's step (pass_storage.hpp)
   double last_steady_change_ = 0.0;   // the last pass's steady head change, for SER
+  // The start of the time step under way (coupled transient runs): Δt, the heads h^n and the
+  // skeleton's volumes ζ^n per element there, and the passes (iterations) of the step so far.
+  struct TimeLevel {
+    double time_step = 0.0;
+    std::vector<double> heads;
+    std::vector<double> zeta;
+    int passes = 0;
+  };
+  std::optional<TimeLevel> time_level_;
   // The DDA system after the last finished pass (as built before the first): what an
   // abandoned pass puts back, and what every pass's system continues from.
   dda::SystemState last_mechanics_;

@@ -12,6 +12,7 @@
 #include "run/model_building.hpp"
 #include "run/model_geometry.hpp"
 #include "run/run_summary.hpp"
+#include "run/transient_flow.hpp"
 
 namespace hydrodda::run {
 
@@ -36,6 +37,24 @@ coupling::PseudoTimeSettings make_pseudo_time_settings(const scenario::Scenario&
   }
   return pseudo;
 }
+// The fixed-stress split's materials, per block (coupling/fixed_stress_step.hpp): the storage
+// 1/M, Biot's α and the drained bulk modulus in the plane, E/(2(1 + ν)(1 − 2ν)) in plane strain
+// (λ + μ: the 2D bulk modulus, tr σ = 2 K_dr ε_v) and E/(2(1 − ν)) in plane stress.
+coupling::FixedStressSettings make_fixed_stress_settings(const scenario::Scenario& s,
+                                                         const std::vector<dda::BlockDefinition>& blocks) {
+  coupling::FixedStressSettings fixed;
+  fixed.fluid_compressibility = s.flow->fluid_compressibility;
+  fixed.unit_weight = s.flow->fluid_density * hydro::Fluid{}.gravity;
+  const bool strain = s.mechanics->plane == dda::Plane::strain;
+  for (const dda::BlockDefinition& b : blocks) {
+    const scenario::MaterialDefinition& material = s.materials[b.material];
+    const double young = material.young.value_or(0.0), nu = material.poisson.value_or(0.0);
+    fixed.storage.push_back(material.storage);
+    fixed.biot.push_back(material.biot_coefficient);
+    fixed.drained_bulk.push_back(strain ? young / (2.0 * (1.0 + nu) * (1.0 - 2.0 * nu)) : young / (2.0 * (1.0 - nu)));
+  }
+  return fixed;
+}
 }  // namespace
 
 CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::optional<std::filesystem::path>& mesh_cache,
@@ -54,6 +73,7 @@ CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::option
       build_blocks(s, added_refinement.empty() ? GeometryWarnings::logged : GeometryWarnings::already_logged);
   coupling::LoopSettings settings;
   settings.biot_coefficients = find_biot_coefficients(s, block_definitions);
+  if (s.flow->transient) settings.fixed_stress = make_fixed_stress_settings(s, block_definitions);
   initial_blocks_ = block_definitions;
   system_.emplace(build_mechanics_model(s, std::move(block_definitions)));
   spdlog::info("mechanics: {} blocks", system_->block_count());
@@ -61,7 +81,8 @@ CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::option
   settings.tolerance = s.coupling.tolerance;
   settings.relaxation = s.coupling.relaxation;
   settings.acceleration = s.coupling.acceleration;
-  settings.ramp_passes = s.coupling.ramp_passes;
+  // In time the loads come with the steps: no ramp over a step's iterations.
+  settings.ramp_passes = s.flow->transient ? 1 : s.coupling.ramp_passes;
   settings.steps_per_pass = s.mechanics->steps.value_or(
       static_cast<int>(std::ceil(*s.mechanics->end_time / s.mechanics->time_step)));
   // At most a hundred times the pass's own steps (and no more than a run's): the up-down
@@ -107,6 +128,24 @@ void CoupledModel::start_load_step(int step) {
   loop_->set_flow_boundary_values(build_flow_problem(*scenario_.flow, load_time()).boundaries);
   system_->hold_load_time(load_time());
   region_references_ = reference_regions(scenario_, mesh_, load_time());
+}
+
+void CoupledModel::start_in_time() {
+  if (!transient()) throw std::logic_error("CoupledModel: start_in_time() without [flow.transient]");
+  const std::optional<double> head = scenario_.flow->transient->initial_head;
+  if (!head) {
+    loop_->start_in_time(std::nullopt);
+    return;
+  }
+  const hydro::DarcyProblem problem = build_flow_problem(*scenario_.flow, 0.0);
+  loop_->start_in_time(make_uniform_state(mesh_, problem, loop_->flow_reference_head(), *head));
+}
+
+void CoupledModel::begin_time_step(double time, double time_step) {
+  const double end = time + time_step;
+  loop_->set_flow_boundary_values(build_flow_problem(*scenario_.flow, end).boundaries);
+  system_->hold_load_time(end);
+  loop_->begin_time_step(time_step);
 }
 
 void CoupledModel::set_tractions(std::vector<scenario::Traction> tractions) {

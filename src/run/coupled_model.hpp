@@ -77,6 +77,14 @@ class CoupledModel {
   bool has_load_tables() const { return !load_times_.empty(); }
   void start_load_step(int step);
 
+  // A coupled transient run ([flow.transient]; coupling::StaggeredLoop::begin_time_step): the
+  // heads at t = 0 (flow.transient.initial_head: one head everywhere, or the steady heads on
+  // the blocks as built), then each step from `time` to `time + time_step`, its passes its
+  // fixed-stress iterations under the boundary values and loads of its end time.
+  bool transient() const { return scenario_.flow && scenario_.flow->transient; }
+  void start_in_time();
+  void begin_time_step(double time, double time_step);
+
   // The state after the last finished pass (as built before the first), and its restoration
   // into a model built from the same scenario (continuing a run); throws std::invalid_argument
   // when it does not fit.

@@ -413,6 +413,7 @@ RoundEnd run_round(const RunContext& context, const output::RunCheckpoint* resum
 }  // namespace
 
 output::RunSummary run_coupled(const RunContext& context) {
+  if (context.scenario.flow->transient) return run_coupled_transient(context);
   // A resumed run takes up the round it stopped in, on the mesh of the tips refined before it.
   std::vector<fractures::RefinedTip> refined_tips;
   if (context.resume) refined_tips = fractures::read_refined_tips(context.resume->refined_tips);

@@ -103,5 +103,7 @@ output::RunSummary run_flow(const RunContext& context);
 // The flow-only run of a scenario with [flow.transient] (transient_flow.hpp); run_flow hands it on.
 output::RunSummary run_transient_flow(const RunContext& context);
 output::RunSummary run_coupled(const RunContext& context);
+// The coupled run of a scenario with [flow.transient] (coupled_transient.hpp); run_coupled hands it on.
+output::RunSummary run_coupled_transient(const RunContext& context);
 
 }  // namespace hydrodda::run

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "geometry/polygon.hpp"
+#include "hydro/darcy_assembly.hpp"
 #include "hydro/flow_solution.hpp"
 #include "mesh/triangle_mesh.hpp"
 #include "scenario/scenario.hpp"
@@ -36,6 +37,11 @@ std::vector<double> plan_step_times(const scenario::TransientDefinition& transie
 // by its own compressibility alone, a c_w per unit volume of gap (docs/flow.md, "Transient flow").
 std::vector<double> compute_specific_storage(const scenario::Scenario& scenario, const mesh::TriangleMesh& mesh,
                                              const std::vector<geometry::Polygon>& blocks);
+
+// The state at t = 0 given as one head everywhere (flow.transient.initial_head): no flow yet,
+// the pressures by the problem's convention about `reference_head`.
+hydro::FlowSolution make_uniform_state(const mesh::TriangleMesh& mesh, const hydro::DarcyProblem& problem,
+                                       double reference_head, double head);
 
 // A probe's place in the mesh: the triangle that holds its point and the point's barycentric
 // weights there, with which P1 values are read exactly.

@@ -10,9 +10,6 @@
 
 namespace hydrodda::run {
 
-namespace {
-
-// The heads of the state at t = 0 given as one head everywhere: no flow yet.
 hydro::FlowSolution make_uniform_state(const mesh::TriangleMesh& mesh, const hydro::DarcyProblem& problem,
                                        double reference_head, double head) {
   hydro::FlowSolution state;
@@ -27,6 +24,8 @@ hydro::FlowSolution make_uniform_state(const mesh::TriangleMesh& mesh, const hyd
   for (const std::string& name : mesh.boundary_names) state.boundary_flows.push_back({name, 0.0});
   return state;
 }
+
+namespace {
 
 // Nothing stores water (no material's storage where the elements are, no open gap): the heads
 // would be the steady ones at every step. check refuses what it can see; the mesh shows the rest.

@@ -137,13 +137,21 @@ void check_transient(ReadContext& ctx, const TableView&, const Scenario& s) {
   if (!s.flow) return;
   if (s.flow->transient) {
     const TransientDefinition& t = *s.flow->transient;
-    if (s.mechanics)
-      ctx.error(t.line, "flow.transient",
-                "transient flow in a coupled run (with [mechanics]) is not built yet: coupled runs solve steady flow "
-                "each pass; remove [flow.transient], or [mechanics] for a flow-only transient run");
-    // A storage refused where it was given is not also "absent".
+    // A coupled transient run steps by the fixed-stress split: each step's passes are its
+    // iterations, which neither mix heads across steps nor step in pseudo-time.
+    if (s.mechanics && s.coupling.acceleration != coupling::Acceleration::none)
+      ctx.error(t.line, "coupling.acceleration",
+                "a coupled transient run ([flow.transient]) iterates each time step by the fixed-stress split, "
+                "without acceleration: remove coupling.acceleration");
+    if (s.mechanics && s.coupling.pseudo_time_step > 0.0)
+      ctx.error(t.line, "coupling.pseudo_time_step",
+                "a coupled transient run ([flow.transient]) steps in real time: remove coupling.pseudo_time_step "
+                "(it is for steady coupled runs)");
+    // A storage refused where it was given is not also "absent". In a coupled run a block
+    // with Biot's α > 0 stores water by its strain.
     const bool any_storage = std::any_of(s.materials.begin(), s.materials.end(), [&](const MaterialDefinition& m) {
-      return m.storage > 0.0 || ctx.has_error("material." + m.name + ".storage");
+      return m.storage > 0.0 || ctx.has_error("material." + m.name + ".storage") ||
+             (s.mechanics && m.biot_coefficient > 0.0);
     });
     // Or the water of the open gaps between blocks, by its compressibility.
     const bool gaps_store = s.flow->fluid_compressibility > 0.0 && s.geometry && s.geometry->initial_aperture > 0.0;
@@ -154,8 +162,9 @@ void check_transient(ReadContext& ctx, const TableView&, const Scenario& s) {
                 "once: give storage (1/Pa) to the materials, or remove [flow.transient] for a steady run");
   }
   for (const ProbeDefinition& probe : s.flow->probes) {
-    if (s.mechanics)
-      ctx.error(probe.line, "flow.probe", "probes in a coupled run (with [mechanics]) are not built yet");
+    if (s.mechanics && !s.flow->transient)
+      ctx.error(probe.line, "flow.probe",
+                "probes in a steady coupled run are not built yet (a coupled run with [flow.transient] has them)");
     if (s.geometry && s.geometry->domain.size() >= 3 && !holds_or_borders(s.geometry->domain, probe.point))
       ctx.error(probe.line, "flow.probe.point",
                 fmt::format("({:g}, {:g}) lies outside geometry.domain", probe.point.x, probe.point.y));

@@ -149,8 +149,8 @@ end_time = 0.05
   expect_one_error(fractured + "[flow.fluid]\ncompressibility = 0.0\n", 12, "flow.transient", "no open gap holds water");
 }
 
-TEST(TransientReading, RefusesTransientFlowAndProbesInACoupledRunAsNotBuiltYet) {
-  const std::string coupled = R"([geometry]
+// A coupled scenario with [flow.transient] (fixed-stress steps) and a probe.
+const std::string kCoupledTransient = R"([geometry]
 domain = [[0.0, 0.0], [10.0, 0.0], [10.0, 1.0], [0.0, 1.0]]
 [material.rock]
 density = 2500.0
@@ -170,13 +170,23 @@ end_time = 10.0
 name = "p"
 point = [1.0, 0.5]
 )";
-  const std::vector<Diagnostic> errors = errors_of(coupled);
-  ASSERT_EQ(errors.size(), 2u);
-  EXPECT_EQ(errors[0].line, 15);
-  EXPECT_EQ(errors[0].key, "flow.transient");
-  EXPECT_NE(errors[0].message.find("not built yet"), std::string::npos) << errors[0].message;
-  EXPECT_EQ(errors[1].line, 17);
-  EXPECT_EQ(errors[1].key, "flow.probe");
+
+TEST(TransientReading, AcceptsTransientFlowAndProbesInACoupledRun) {
+  EXPECT_TRUE(errors_of(kCoupledTransient).empty());
+  // Without storage, a block with Biot's α > 0 stores water by its strain.
+  std::string no_storage = kCoupledTransient;
+  no_storage.replace(no_storage.find("storage = 1.0e-9\n"), 17, "");
+  EXPECT_TRUE(errors_of(no_storage).empty());
+}
+
+TEST(TransientReading, RefusesProbesInASteadyCoupledRunAndAccelerationOrPseudoTimeInATransientOne) {
+  std::string steady = kCoupledTransient;
+  steady.replace(steady.find("[flow.transient]\nend_time = 10.0\n"), 33, "");
+  expect_one_error(steady, 15, "flow.probe", "probes in a steady coupled run are not built yet");
+  expect_one_error(kCoupledTransient + "[coupling]\nacceleration = \"aitken\"\n", 15, "coupling.acceleration",
+                   "without acceleration");
+  expect_one_error(kCoupledTransient + "[coupling]\npseudo_time_step = 1.0\n", 15, "coupling.pseudo_time_step",
+                   "steps in real time");
 }
 
 TEST(TransientReading, RefusesProbesOutsideTheDomainUnnamedOrTwice) {

@@ -1,0 +1,108 @@
+#include "coupling/fixed_stress_step.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "coupling/pass_storage.hpp"
+
+namespace hydrodda::coupling {
+
+SkeletonVolumes compute_skeleton_volumes(const FixedStressSettings& settings, std::span<const double> element_areas,
+                                         const BlockPieces& pieces, std::span<const double> volumetric_strain,
+                                         std::span<const double> open_area, const EmbeddedJoints* joints,
+                                         std::span<const double> apertures) {
+  const std::size_t n = element_areas.size();
+  const std::size_t blocks = settings.biot.size();
+  if (open_area.size() != n) throw std::invalid_argument("fixed-stress step: one open area per element is needed");
+  if (volumetric_strain.size() != blocks || settings.storage.size() != blocks || settings.drained_bulk.size() != blocks)
+    throw std::invalid_argument("fixed-stress step: one strain, storage, α and K_dr per block are needed");
+  const double c_w = settings.fluid_compressibility;
+  SkeletonVolumes v;
+  v.zeta.assign(n, 0.0);
+  v.storage.assign(n, 0.0);
+  v.stabilisation.assign(n, 0.0);
+  // The blocks' pieces, in element order (any thread count: the same sums).
+  for (const std::vector<BlockPiece>& list : pieces.lists())
+    for (const BlockPiece& piece : list) {
+      const auto e = static_cast<std::size_t>(piece.element);
+      const auto b = static_cast<std::size_t>(piece.block);
+      const double share = piece.area / element_areas[e];
+      const double alpha = settings.biot[b];
+      v.zeta[e] += share * alpha * volumetric_strain[b];
+      v.storage[e] += share * settings.storage[b];
+      if (settings.drained_bulk[b] > 0.0) v.stabilisation[e] += share * alpha * alpha / settings.drained_bulk[b];
+    }
+  // The open gaps between blocks: their area, its water by its compressibility.
+  for (std::size_t e = 0; e < n; ++e) {
+    const double share = open_area[e] / element_areas[e];
+    v.zeta[e] += share;
+    v.storage[e] += share * c_w;
+  }
+  // The joints' crossings: their aperture, its water, and their compliance as stabilisation.
+  if (joints) {
+    const std::vector<JointCrossing>& crossings = joints->crossings();
+    if (apertures.size() != crossings.size())
+      throw std::invalid_argument("fixed-stress step: one aperture per joint crossing is needed");
+    for (std::size_t c = 0; c < crossings.size(); ++c) {
+      const JointCrossing& x = crossings[c];
+      const auto e = static_cast<std::size_t>(x.element);
+      const double share = x.length / element_areas[e];
+      v.zeta[e] += share * apertures[c];
+      v.storage[e] += share * apertures[c] * c_w;
+      v.stabilisation[e] += share * joint_compliance(joints->laws().of_fracture(x.face.fracture), apertures[c]);
+    }
+  }
+  for (std::size_t e = 0; e < n; ++e) {
+    v.storage[e] *= settings.unit_weight;
+    v.stabilisation[e] *= settings.unit_weight;
+  }
+  return v;
+}
+
+std::vector<double> volumetric_strains(std::span<const std::array<double, 3>> strains) {
+  std::vector<double> trace;
+  trace.reserve(strains.size());
+  for (const std::array<double, 3>& s : strains) trace.push_back(s[0] + s[1]);
+  return trace;
+}
+
+StepHeads fold_step_heads(std::span<const std::array<int, 3>> triangles, std::span<const double> element_areas,
+                          const SkeletonVolumes& now, std::span<const double> zeta_at_start, double time_step,
+                          std::span<const double> heads_at_start, std::span<const double> heads_last_iterate) {
+  const std::size_t n = triangles.size();
+  if (element_areas.size() != n || now.zeta.size() != n || zeta_at_start.size() != n)
+    throw std::invalid_argument("fixed-stress step: one area and volume per element are needed");
+  if (heads_last_iterate.size() != heads_at_start.size())
+    throw std::invalid_argument("fixed-stress step: the heads of the step's start and of the last iterate differ in size");
+  if (!(time_step > 0.0)) throw std::invalid_argument("fixed-stress step: the time step must be > 0");
+  const std::size_t nodes = heads_at_start.size();
+  std::vector<double> mass(nodes, 0.0), held(nodes, 0.0), change(nodes, 0.0);
+  StepHeads step;
+  step.storage_over_step.resize(n);
+  for (std::size_t e = 0; e < n; ++e) {
+    const double third = element_areas[e] / 3.0;  // the lumped ∫ φ_i over the element
+    step.storage_over_step[e] = (now.storage[e] + now.stabilisation[e]) / time_step;
+    for (int corner : triangles[e]) {
+      const auto i = static_cast<std::size_t>(corner);
+      mass[i] += third * (now.storage[e] + now.stabilisation[e]);
+      held[i] += third * (now.storage[e] * heads_at_start[i] + now.stabilisation[e] * heads_last_iterate[i]);
+      change[i] += third * (now.zeta[e] - zeta_at_start[e]);
+    }
+  }
+  step.heads.resize(nodes);
+  for (std::size_t i = 0; i < nodes; ++i) {
+    if (mass[i] > 0.0) {
+      step.heads[i] = (held[i] - change[i]) / mass[i];
+      continue;
+    }
+    if (change[i] != 0.0)
+      throw std::runtime_error("fixed-stress step: the skeleton's volume changes at node " + std::to_string(i) +
+                               ", where no element stores water (no material storage, no Biot coefficient, no "
+                               "fluid compressibility): give the fluid a compressibility");
+    step.heads[i] = heads_at_start[i];
+  }
+  return step;
+}
+
+}  // namespace hydrodda::coupling
