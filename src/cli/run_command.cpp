@@ -40,7 +40,7 @@ int report(const run::RunResult& result) {
       return kSuccess;
     case run::RunStatus::finished:
       // A coupled run (the one kind with outside_mesh) says how many passes its loop took.
-      if (result.converged && result.summary.outside_mesh)
+      if (result.converged && result.summary.outside_mesh && !result.summary.time)
         spdlog::info("converged in {} coupling iteration(s); results in {}", result.iterations, folder);
       else
         spdlog::info("{}; results in {}", result.converged ? "finished" : "not converged", folder);

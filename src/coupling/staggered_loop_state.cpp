@@ -22,7 +22,8 @@ void StaggeredLoop::import_state(LoopState state, const dda::SystemState& mechan
   mechanics_.import_state(mechanics);
   const auto nodes = static_cast<std::size_t>(mesh_.node_count());
   const auto blocks = static_cast<std::size_t>(mechanics_.block_count());
-  const bool started = state.iterations > 0;
+  // A transient loop has its heads at t = 0 before any pass (start_in_time).
+  const bool started = state.iterations > 0 || (settings_.fixed_stress && !state.flow.head.empty());
   if (state.iterations < 0) throw std::invalid_argument("coupling state: a negative iteration count");
   // A finished pass leaves a solution, heads and displacements of this mesh and system.
   const bool fits = started ? state.flow.head.size() == nodes && state.flow.pressure.size() == nodes &&

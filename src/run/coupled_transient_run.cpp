@@ -252,10 +252,10 @@ output::RunSummary run_coupled_transient(const RunContext& context) {
       attempt = try_step(context, model, observer, time, length);
       if (attempt.converged || attempt.interrupted) break;
       model.import_state(saved);  // back to the last step's end
+      if (length / 2.0 < control.floor) break;
       spdlog::info("t = {:g} s: the step of {:g} s failed ({}); cut to {:g} s", time, length, attempt.why, length / 2);
       length /= 2.0;
       ++cuts;
-      if (length < control.floor) break;
     }
     if (attempt.interrupted) {
       model.import_state(saved);
@@ -263,9 +263,10 @@ output::RunSummary run_coupled_transient(const RunContext& context) {
                        summarise(model, time, steps, start));
     }
     if (!attempt.converged) {
-      failure = fmt::format("not converged at t = {:g} s: the step after it failed at {:g} s, cut {} times to under "
-                            "the floor of {:g} s (flow.transient.time_step / 2^{}); the last try: {}",
-                            time, 2.0 * length, cuts, control.floor, kMostCuts, attempt.why);
+      failure = fmt::format("not converged at t = {:g} s: the step from there failed at {:g} s after {} cut(s), and "
+                            "half of it would be under the floor of {:g} s (flow.transient.time_step / 2^{}); the "
+                            "last try: {}",
+                            time, length, cuts, control.floor, kMostCuts, attempt.why);
       break;
     }
     const bool landed = length == stops[next_stop] - time;

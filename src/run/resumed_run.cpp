@@ -63,7 +63,7 @@ SavedRun read_saved_run(const fs::path& directory) {
   if (!fs::exists(checkpoint_file, ec))
     throw InputError(fmt::format("--resume {}: the folder holds no checkpoint.bin, so there is nothing to resume "
                                  "(coupled runs write one after each coupling iteration, transient flow-only runs at each output time "
-                                 "and when interrupted)",
+                                 "and when interrupted; resuming a coupled transient run is not built yet)",
                                  dir));
   const std::optional<std::string> bytes = read_text_file(checkpoint_file);
   if (!bytes) throw InputError(fmt::format("--resume {}: cannot read {}", dir, checkpoint_file.string()));
