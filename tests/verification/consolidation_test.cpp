@@ -132,4 +132,22 @@ TEST(CoupledTransientVerification, FixedStressIterationsStayFlatAsTheCouplingStr
   EXPECT_LT(means[2], 1.15 * means[1]) << means[1] << " → " << means[2];
 }
 
+// A step whose iterations cannot converge (coupling.max_iterations = 3 against the ~13 the
+// column needs) is cut by half and retried down to the floor time_step/2^10, and the run then
+// ends not converged at t = 0, saying so and why: never a false "converged", never an abort.
+TEST(CoupledTransientVerification, AStepThatCannotConvergeIsCutToTheFloorAndTheRunSaysWhenAndWhy) {
+  int edits = 0;
+  const std::string text = replace_all(read_text(kVerification / "terzaghi_consolidation.toml"),
+                                       "max_iterations = 40", "max_iterations = 3", edits);
+  ASSERT_EQ(edits, 1);
+  const Consolidation c = run_column(text, "floor");
+  EXPECT_EQ(c.summary["converged"], false);
+  EXPECT_DOUBLE_EQ(c.summary["time"].get<double>(), 0.0);
+  const std::string message = c.summary["message"];
+  EXPECT_NE(message.find("not converged at t = 0 s"), std::string::npos) << message;
+  EXPECT_NE(message.find("after 10 cut(s)"), std::string::npos) << message;
+  EXPECT_NE(message.find("did not converge in 3 (coupling.max_iterations"), std::string::npos) << message;
+  EXPECT_EQ(c.history.size(), 2u) << "the header and t = 0 only";
+}
+
 }  // namespace
