@@ -115,7 +115,9 @@ TEST(FixedStressStep, AVeryShortStepIsUndrained) {
       solver.solve_step(std::vector<double>(n, k), step.storage_over_step, hydro::MassMatrix::lumped, step.heads);
   const double undrained = 1.0e-6 / s_s;  // −Δζ/S_s = 0.01 m
   for (int i = 0; i < mesh.node_count(); ++i)
-    if (mesh.nodes[i].x >= 5.0) EXPECT_NEAR(flow.head[i], undrained, 1e-6 * undrained) << i;
+    if (mesh.nodes[i].x >= 5.0) {
+      EXPECT_NEAR(flow.head[i], undrained, 1e-6 * undrained) << i;
+    }
 }
 
 TEST(FixedStressStep, VolumetricStrainIsTheTraceInThePlane) {
