@@ -15,6 +15,7 @@
 #include "output/plot_line.hpp"
 #include "run/coupled_model.hpp"
 #include "run/coupled_transient.hpp"
+#include "run/coupled_transient_fractures.hpp"
 #include "run/figures.hpp"
 #include "run/paraview_output.hpp"
 #include "run/runs.hpp"
@@ -77,15 +78,18 @@ struct StepRecord {
   coupling::PassReport last;
 };
 
-// history.csv, probes.csv and measure.csv, a row per step; the fields at output times.
+// history.csv, probes.csv, measure.csv and fractures.csv, rows per step; the fields at output
+// times.
 class CoupledTransientRecorder {
  public:
   CoupledTransientRecorder(const RunContext& context, const CoupledModel& model)
       : context_(context), model_(model), fields_(context.folder, context.scenario.output.fields),
-        sites_(locate_probes(context.scenario, model.mesh())) {
+        sites_(locate_probes(context.scenario, model.mesh())), fractures_(context, model) {
     std::vector<std::string> columns{"step", "time", "time_step", "iterations", "cuts", "head_change",
                                      "displacement_change", "storage_rate", "balance"};
     for (const scenario::FlowBoundaryCondition& bc : context.scenario.flow->boundaries) columns.push_back("flow_" + bc.name);
+    if (fractures_.measured())
+      for (const std::string& c : fracture_count_columns()) columns.push_back(c);
     history_.emplace(columns);
     probe_pressures_.assign(sites_.size(), {});
   }
@@ -94,9 +98,11 @@ class CoupledTransientRecorder {
     fields_.write_fluid(written_, times_.back(), model_.mesh(), model_.loop().flow(), model_.loop().porosity().porosity,
                         model_.loop().permeability());
     fields_.write_blocks(written_, times_.back(), model_.mechanics());
+    fractures_.write_series(written_, times_.back());
     ++written_;
   }
   void draw(const std::string& status) const;
+  const std::optional<fractures::FractureState>& fracture_state() const { return fractures_.state(); }
 
  private:
   const RunContext& context_;
@@ -108,6 +114,9 @@ class CoupledTransientRecorder {
   CsvTable measure_{{"step", "time", "name", "x", "y", "ux", "uy"}};
   std::vector<double> times_;
   std::vector<std::vector<double>> probe_pressures_;
+  std::vector<std::vector<double>> boundary_flows_;  // per boundary, per step
+  std::vector<double> storage_rates_;
+  FracturesInTime fractures_;
   int written_ = 0;
 };
 
@@ -121,8 +130,16 @@ void CoupledTransientRecorder::record(const StepRecord& r) {
                                start ? "" : CsvTable::cell(r.last.head_change),
                                start ? "" : CsvTable::cell(r.last.displacement_change),
                                CsvTable::cell(flow.storage_rate), CsvTable::cell(flow.balance_error)};
-  for (const scenario::FlowBoundaryCondition& bc : context_.scenario.flow->boundaries)
-    row.push_back(CsvTable::cell(flow.boundary_flow(bc.name)));
+  const std::vector<scenario::FlowBoundaryCondition>& boundaries = context_.scenario.flow->boundaries;
+  boundary_flows_.resize(boundaries.size());
+  for (std::size_t b = 0; b < boundaries.size(); ++b) {
+    row.push_back(CsvTable::cell(flow.boundary_flow(boundaries[b].name)));
+    boundary_flows_[b].push_back(flow.boundary_flow(boundaries[b].name));
+  }
+  storage_rates_.push_back(flow.storage_rate);
+  fractures_.record(r.step, r.time);
+  if (fractures_.measured())
+    for (std::string& cell : fracture_count_cells(fractures_.counts().back())) row.push_back(std::move(cell));
   history_->add_row(row);
   context_.folder.write("history.csv", history_->text());
   times_.push_back(r.time);
@@ -143,8 +160,9 @@ void CoupledTransientRecorder::record(const StepRecord& r) {
   if (!measures.empty()) context_.folder.write("measure.csv", measure_.text());
 }
 
-// probes.*: each probe's pressure against time (log time when the run starts with steps much
-// shorter than it), and the fields of the state reached.
+// Against time (log time when the run starts with steps much shorter than it): probes.* (each
+// probe's pressure), flows.* (each boundary's outward flow and the rate of storage) and, with
+// fractures, fractures.* (how many are open); apertures.* and the fields of the state reached.
 void CoupledTransientRecorder::draw(const std::string& status) const {
   const scenario::Scenario& s = context_.scenario;
   if (s.output.figures.empty()) return;
@@ -153,23 +171,42 @@ void CoupledTransientRecorder::draw(const std::string& status) const {
                       model_.block_polygons(), status, loop.iterations()};
   picture.stop_requested = [this] { return context_.stop_requested(); };
   draw_figures(s, context_.folder, picture);
-  if (sites_.empty() || times_.size() < 2) return;
-  output::LinePlotSpec probes;
-  probes.title = s.title;
-  probes.warning = status;
-  probes.x_label = "time (s)";
-  probes.x_log = s.flow->transient->time_step <= 0.01 * s.flow->transient->end_time;
-  probes.y_label = "pressure (Pa)";
+  if (const auto& state = fractures_.state())
+    draw_aperture_figure(s, context_.folder, model_.block_polygons(), *state,
+                         {fmt::format("t = {:g} s", times_.back()), status});
+  if (times_.size() < 2) return;
+  const bool log_time = s.flow->transient->time_step <= 0.01 * s.flow->transient->end_time;
   // The t = 0 row is left off a log axis.
-  const std::size_t first = probes.x_log ? 1 : 0;
-  const std::vector<double> times(times_.begin() + static_cast<std::ptrdiff_t>(first), times_.end());
-  for (std::size_t p = 0; p < sites_.size(); ++p)
-    probes.series.push_back({sites_[p].name, times,
-                             std::vector<double>(probe_pressures_[p].begin() + static_cast<std::ptrdiff_t>(first),
-                                                 probe_pressures_[p].end()),
-                             {}});
-  for (const std::string& format : s.output.figures)
-    output::render_line_plot(context_.folder.figures() / ("probes." + format), probes);
+  const auto from_first = [log_time](const std::vector<double>& v) {
+    return std::vector<double>(v.begin() + (log_time ? 1 : 0), v.end());
+  };
+  const std::vector<double> times = from_first(times_);
+  const auto render = [&](output::LinePlotSpec plot, const std::string& name) {
+    plot.title = s.title;
+    plot.warning = status;
+    plot.x_label = "time (s)";
+    plot.x_log = log_time;
+    for (const std::string& format : s.output.figures)
+      output::render_line_plot(context_.folder.figures() / (name + "." + format), plot);
+  };
+  if (!sites_.empty()) {
+    output::LinePlotSpec probes;
+    probes.y_label = "pressure (Pa)";
+    for (std::size_t p = 0; p < sites_.size(); ++p)
+      probes.series.push_back({sites_[p].name, times, from_first(probe_pressures_[p]), {}});
+    render(probes, "probes");
+  }
+  output::LinePlotSpec flows;
+  flows.y_label = "flow (m²/s per m)";
+  for (std::size_t b = 0; b < boundary_flows_.size(); ++b)
+    flows.series.push_back({"out by " + s.flow->boundaries[b].name, times, from_first(boundary_flows_[b]), {}});
+  flows.series.push_back({"into storage", times, from_first(storage_rates_), {}});
+  render(flows, "flows");
+  if (fractures_.measured()) {
+    const std::vector<FractureCounts>& counts = fractures_.counts();
+    render(plot_open_fractures(times, std::vector<FractureCounts>(counts.begin() + (log_time ? 1 : 0), counts.end())),
+           "fractures");
+  }
 }
 
 // How one attempt at a step ended: converged, or why not.
@@ -290,6 +327,8 @@ output::RunSummary run_coupled_transient(const RunContext& context) {
     context.report(report);
   }
   output::RunSummary summary = summarise(model, time, steps, start);
+  if (const auto& state = recorder.fracture_state())
+    summary.fractures = summarise_fractures(*state, fracture_type_names(s));
   summary.converged = failure.empty();
   if (!failure.empty()) {
     summary.message = failure;
