@@ -16,7 +16,7 @@
 
 namespace hydrodda::dda {
 
-void System::setup_bonds(const std::vector<BlockDefinition>& blocks) {
+void System::setup_bonds(const std::vector<BlockDefinition>& blocks, const std::vector<int>& broken_at_start) {
   std::vector<std::array<BondSide, 2>> sides;
   std::vector<int> seen;  // per bond, the sides found
   edge_bonds_.assign(blocks.size(), {});
@@ -46,6 +46,13 @@ void System::setup_bonds(const std::vector<BlockDefinition>& blocks) {
                                   " edges, not on the two faces it joins");
   bond_sides_ = std::move(sides);
   bond_broken_.assign(bond_sides_.size(), 0);
+  for (int bond : broken_at_start) {
+    if (bond < 0 || static_cast<std::size_t>(bond) >= bond_sides_.size())
+      throw std::invalid_argument("DDA: broken_bonds names bond " + std::to_string(bond) + ", and there are " +
+                                  std::to_string(bond_sides_.size()));
+    bond_broken_[static_cast<std::size_t>(bond)] = 1;
+  }
+  broken_at_start_ = broken_at_start;
   // l̄: half the mean face length, the tributary length of a face's end on average.
   double total = 0.0;
   for (const std::array<BondSide, 2>& s : bond_sides_) {

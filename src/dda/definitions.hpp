@@ -185,6 +185,9 @@ struct ModelDefinition {
   // The in-situ stress: each block starts with it at its centroid (added to its own
   // initial_stress), and the contacts that touch at the start carry it (initial_stress.hpp).
   std::optional<StressField> initial_stress;
+  // Bonds (BlockDefinition::edge_bonds) that start broken: a crack of intact rock's faces, a
+  // joint from the start (docs/dda.md, "Bonds"). Not breaks of the run: never in bond_breaks().
+  std::vector<int> broken_bonds;
 };
 
 }  // namespace hydrodda::dda

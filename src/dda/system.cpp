@@ -134,7 +134,7 @@ System::System(ModelDefinition def, std::unique_ptr<LinearSolver> solver)
   joints_.push_back(strength_of(def.joint));
   for (const Joint& j : def.joint_types) joints_.push_back(strength_of(j));
   for (const JointStrength& j : joints_) broken_joints_.push_back({j.tan_friction, 0.0, 0.0});
-  setup_bonds(def.blocks);
+  setup_bonds(def.blocks, def.broken_bonds);
   fixed_stiffness_ = 10.0 * penalty_;
   dt_ = settings_.time_step;
   vertex_forces_.resize(blocks_.size());

@@ -196,6 +196,11 @@ class System {
   int bond_joint_type(int bond) const;  // 0: `joint`, i: joint_types[i − 1]
   // The bond whose face a contact's vertex touches (its edge a bonded face), or −1.
   int bond_of_contact(const ContactKey& key) const { return bond_of(key); }
+  // The bond on edge `edge` of block `block`, or −1.
+  int bond_of_edge(int block, int edge) const {
+    const std::vector<int>& bonds = edge_bonds_[static_cast<std::size_t>(block)];
+    return bonds.empty() ? -1 : bonds[static_cast<std::size_t>(edge)];
+  }
 
  private:
   struct Block {
@@ -295,13 +300,22 @@ class System {
   static JointStrength strength_of(const Joint& j);
   std::vector<JointStrength> joints_;           // by type (ModelDefinition::joint, joint_types)
   std::vector<std::vector<int>> edge_joints_;   // per block, per edge: the type; empty: 0
-  // The joint type of a contact: that of the edge its vertex touches; on a broken bond, the
-  // type without tension or cohesion.
+  // The joint type of a contact: that of the edge its vertex touches; on a bonded edge that
+  // no intact bond holds the vertex's block to (broken, or a third block's), the type without
+  // tension or cohesion.
   const JointStrength& joint_of(const ContactKey& key) const {
     const std::vector<int>& edges = edge_joints_[static_cast<std::size_t>(key.block_j)];
     const std::size_t type = edges.empty() ? 0 : static_cast<std::size_t>(edges[static_cast<std::size_t>(key.edge)]);
+    return bond_of(key) >= 0 && !is_intact_bond(key) ? broken_joints_[type] : joints_[type];
+  }
+  // The bond a contact lies across: that of the edge its vertex touches, when the vertex's block
+  // is the bond's other sub-block; −1 for the vertex of a third sub-block that meets the face
+  // at its end (four sub-blocks meet at a point along a crack's line): no bond holds it there.
+  int bond_across(const ContactKey& key) const {
     const int bond = bond_of(key);
-    return bond >= 0 && bond_broken_[static_cast<std::size_t>(bond)] ? broken_joints_[type] : joints_[type];
+    if (bond < 0) return -1;
+    const std::array<BondSide, 2>& sides = bond_sides_[static_cast<std::size_t>(bond)];
+    return sides[0].block == key.block_i || sides[1].block == key.block_i ? bond : -1;
   }
   // The bond of the edge a contact's vertex touches, or −1.
   int bond_of(const ContactKey& key) const {
@@ -315,14 +329,14 @@ class System {
     return bond_of(key) < 0 ? penalty_ : penalty_ * std::max(length, 0.05 * bond_reference_length_) / bond_reference_length_;
   }
   bool is_intact_bond(const ContactKey& key) const {
-    const int bond = bond_of(key);
+    const int bond = bond_across(key);
     return bond >= 0 && bond_broken_[static_cast<std::size_t>(bond)] == 0;
   }
   // dda/bonds.cpp: the bonds' faces paired from the definition (throws std::invalid_argument
   // for an id not on exactly two edges of two blocks); the bonds whose face the solution d
   // overloads broken (pending until the step commits; whether any broke); a retried step's pending breaks
   // undone; the committed step's recorded.
-  void setup_bonds(const std::vector<BlockDefinition>& blocks);
+  void setup_bonds(const std::vector<BlockDefinition>& blocks, const std::vector<int>& broken_at_start);
   bool break_overloaded_bonds(const Eigen::VectorXd& d);
   void undo_pending_bond_breaks();
   void record_pending_bond_breaks();
@@ -333,6 +347,7 @@ class System {
   std::vector<std::array<BondSide, 2>> bond_sides_;  // by bond id
   std::vector<std::vector<int>> edge_bonds_;          // per block, per edge: the bond; empty: none
   std::vector<char> bond_broken_;                     // by bond id
+  std::vector<int> broken_at_start_;                  // ModelDefinition::broken_bonds
   std::vector<JointStrength> broken_joints_;          // by type: tan φ only
   std::vector<std::pair<int, BondFailure>> pending_breaks_;  // broken in the step under way
   std::vector<BondBreak> bond_breaks_;

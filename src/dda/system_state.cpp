@@ -106,6 +106,7 @@ void System::import_state(const SystemState& s) {
   bond_breaks_ = s.bond_breaks;
   pending_breaks_.clear();
   bond_broken_.assign(bond_sides_.size(), 0);
+  for (int bond : broken_at_start_) bond_broken_[static_cast<std::size_t>(bond)] = 1;
   for (const BondBreak& b : bond_breaks_) bond_broken_[static_cast<std::size_t>(b.bond)] = 1;
   start_face_share_ = nullptr;  // relieve_start_loads gives it again before a first step
   // Contacts carry the initial stress from the first step only.
