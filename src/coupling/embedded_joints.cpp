@@ -71,8 +71,11 @@ std::map<FaceKey, double> contact_forces_by_face(std::span<const dda::ContactInf
 }
 
 EmbeddedJoints::EmbeddedJoints(const mesh::TriangleMesh& mesh, geometry::BlockNetwork network,
-                               JointApertureLaws laws)
-    : network_(std::move(network)), laws_(std::move(laws)) {
+                               JointApertureLaws laws, int first_bond_fracture)
+    : network_(std::move(network)), laws_(std::move(laws)), first_bond_(first_bond_fracture) {
+  if (first_bond_ >= 0)
+    for (const geometry::FractureFace& face : network_.faces)
+      bond_count_ = std::max(bond_count_, face.fracture - first_bond_ + 1);
   const int elements = mesh.triangle_count();
   std::vector<geometry::Box> boxes;
   for (int t = 0; t < elements; ++t) {
@@ -112,7 +115,14 @@ EmbeddedJoints::EmbeddedJoints(const mesh::TriangleMesh& mesh, geometry::BlockNe
 
 std::vector<double> EmbeddedJoints::apertures(std::span<const geometry::Polygon> blocks,
                                               std::span<const dda::ContactInfo> contacts,
-                                              double open_threshold) const {
+                                              double open_threshold, std::span<const char> broken_bonds) const {
+  if (bond_count_ > 0 && broken_bonds.size() < static_cast<std::size_t>(bond_count_))
+    throw std::invalid_argument("joint apertures: the state of " + std::to_string(bond_count_) + " bonds is needed, " +
+                                std::to_string(broken_bonds.size()) + " given");
+  const auto intact = [&](const JointCrossing& c) {
+    const int bond = bond_of(c);
+    return bond >= 0 && broken_bonds[static_cast<std::size_t>(bond)] == 0;
+  };
   if (blocks.size() != network_.blocks.size())
     throw std::invalid_argument("joint apertures: " + std::to_string(blocks.size()) + " blocks given, the network has " +
                                 std::to_string(network_.blocks.size()));
@@ -124,12 +134,14 @@ std::vector<double> EmbeddedJoints::apertures(std::span<const geometry::Polygon>
   std::vector<double> opening(crossings_.size());
   std::map<FaceKey, double> closed_length;
   for (std::size_t c = 0; c < crossings_.size(); ++c) {
+    if (intact(crossings_[c])) continue;
     opening[c] = geometry::read_gauge(crossings_[c].gauge, blocks, network_.blocks).opening;
     if (!(opening[c] > open_threshold)) closed_length[crossings_[c].face] += crossings_[c].length;
   }
   const std::map<FaceKey, double> forces = contact_forces_by_face(contacts, network_.edge_fractures);
   std::vector<double> aperture(crossings_.size());
   for (std::size_t c = 0; c < crossings_.size(); ++c) {
+    if (intact(crossings_[c])) continue;  // rock: no fracture the flow sees
     const hydro::JointApertureLaw& law = laws_.of_fracture(crossings_[c].face.fracture);
     if (opening[c] > open_threshold) {
       aperture[c] = law.open(opening[c]);

@@ -56,16 +56,26 @@ class EmbeddedJoints {
  public:
   // Keeps a copy of the network; finds each face's pieces in the mesh's elements. Each face
   // takes the law of its fracture (`laws`, by the network's fracture ids).
-  EmbeddedJoints(const mesh::TriangleMesh& mesh, geometry::BlockNetwork network, JointApertureLaws laws);
+  // Fracture ids from `first_bond_fracture` on (≥ 0) are bonds between sub-blocks, bond
+  // id = fracture − first_bond_fracture: rock while intact (no transmissivity), a joint of
+  // their type once broken (apertures' `broken_bonds`). −1: no bonds.
+  EmbeddedJoints(const mesh::TriangleMesh& mesh, geometry::BlockNetwork network, JointApertureLaws laws,
+                 int first_bond_fracture = -1);
   // Every joint of one law.
   EmbeddedJoints(const mesh::TriangleMesh& mesh, geometry::BlockNetwork network, hydro::JointApertureLaw law)
       : EmbeddedJoints(mesh, std::move(network), JointApertureLaws(law)) {}
 
   // The hydraulic aperture at each crossing with the blocks at `blocks` (the network's block
   // and vertex order) and the DDA's contacts, by the law of the crossing's fracture: a gauge
-  // is open where its opening exceeds `open_threshold` (m). Throws std::invalid_argument when the blocks do not fit.
+  // is open where its opening exceeds `open_threshold` (m). A crossing of a bond conducts only
+  // where `broken_bonds[bond]` is nonzero, and is 0 (rock) while the bond holds. Throws
+  // std::invalid_argument when the blocks or the bonds do not fit.
   std::vector<double> apertures(std::span<const geometry::Polygon> blocks, std::span<const dda::ContactInfo> contacts,
-                                double open_threshold) const;
+                                double open_threshold, std::span<const char> broken_bonds = {}) const;
+  // The bond a crossing lies on, or −1 (a trace's joint).
+  int bond_of(const JointCrossing& crossing) const {
+    return first_bond_ >= 0 && crossing.face.fracture >= first_bond_ ? crossing.face.fracture - first_bond_ : -1;
+  }
 
   // Per element: k_iso I plus the embedded transmissivity of every crossing in it.
   std::vector<hydro::PermeabilityTensor> permeability(std::span<const double> isotropic,
@@ -86,6 +96,8 @@ class EmbeddedJoints {
   std::vector<JointCrossing> crossings_;
   std::vector<double> zero_stress_aperture_;  // per crossing
   std::vector<char> zone_;
+  int first_bond_ = -1;
+  int bond_count_ = 0;  // bonds with a face in the network
 };
 
 // The largest principal value of a symmetric tensor ((xx + yy)/2 + √(((xx − yy)/2)² + xy²));

@@ -284,7 +284,8 @@ std::vector<Point> FacePressureLoads::load_mesh_boundary_across(const geometry::
 
 std::vector<std::vector<Point>> FacePressureLoads::compute(std::span<const geometry::Polygon> blocks,
                                                            std::span<const double> nodal_pressure,
-                                                           std::span<const double> biot) const {
+                                                           std::span<const double> biot,
+                                                           std::span<const std::vector<char>> sealed) const {
   if (nodal_pressure.size() != mesh_.nodes.size())
     throw std::invalid_argument("pressure forces: one pressure per fluid node is needed");
   if (biot.size() != blocks.size())
@@ -302,7 +303,9 @@ std::vector<std::vector<Point>> FacePressureLoads::compute(std::span<const geome
     // Inside the mesh the faces take 1 − α of the pressure, outside it all of it.
     const double share = 1.0 - biot[b];
     bool leaves_mesh = false;
+    const std::vector<char>* sealed_edges = b < sealed.size() && !sealed[b].empty() ? &sealed[b] : nullptr;
     for (std::size_t i = 0; i < n; ++i) {
+      if (sealed_edges && (*sealed_edges)[i] != 0) continue;
       const std::size_t j = (i + 1) % n;
       const Point edge = poly[j] - poly[i];
       // The unit inward normal of a counter-clockwise polygon is the edge turned left, over L;

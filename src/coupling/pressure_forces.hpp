@@ -37,10 +37,13 @@ class FacePressureLoads {
   FacePressureLoads(const mesh::TriangleMesh& mesh, std::shared_ptr<const ElementIndex> elements);
 
   // forces[b][v] on vertex v of block b (blocks counter-clockwise) from the nodal pressures;
-  // biot[b] is the α of block b.
+  // biot[b] is the α of block b. `sealed[b][e]` nonzero: edge e of block b is no face the
+  // fluid stands on (an intact bond between two sub-blocks: rock, its pore pressure acting
+  // through the seepage force alone, as in the block it tessellates) and takes no load; empty
+  // (or an empty entry): every edge is loaded.
   std::vector<std::vector<Point>> compute(std::span<const geometry::Polygon> blocks,
-                                          std::span<const double> nodal_pressure,
-                                          std::span<const double> biot) const;
+                                          std::span<const double> nodal_pressure, std::span<const double> biot,
+                                          std::span<const std::vector<char>> sealed = {}) const;
 
   // The P1 pressure at p: the field of the element that holds p, or the rule outside the mesh.
   double pressure_at(Point p, std::span<const double> nodal_pressure) const;

@@ -89,7 +89,8 @@ StaggeredLoop::StaggeredLoop(const mesh::TriangleMesh& mesh, hydro::DarcyProblem
   if (settings_.ramp_passes < 1) throw std::invalid_argument("coupling: ramp_passes must be at least 1");
   relaxation_ = settings_.relaxation;
   if (settings_.joints)
-    joints_.emplace(mesh, std::move(settings_.joints->network), std::move(settings_.joints->laws));
+    joints_.emplace(mesh, std::move(settings_.joints->network), std::move(settings_.joints->laws),
+                    settings_.joints->first_bond_fracture);
   for (double alpha : biot) {
     if (!(alpha >= 0.0 && alpha <= 1.0)) throw std::invalid_argument("coupling: a Biot coefficient must lie in [0, 1]");
     seepage_ = seepage_ || alpha > 0.0;
@@ -102,6 +103,40 @@ std::vector<geometry::Polygon> StaggeredLoop::current_blocks() const {
   blocks.reserve(mechanics_.block_count());
   for (int b = 0; b < mechanics_.block_count(); ++b) blocks.push_back(mechanics_.polygon(b));
   return blocks;
+}
+
+std::vector<char> StaggeredLoop::broken_bonds() const {
+  std::vector<char> broken(static_cast<std::size_t>(mechanics_.bond_count()));
+  for (int bond = 0; bond < mechanics_.bond_count(); ++bond) broken[static_cast<std::size_t>(bond)] = mechanics_.is_bond_broken(bond);
+  return broken;
+}
+
+// An intact bond is rock: the fluid stands on neither of its faces. Loading both with (1 − α) p
+// would cancel in their sum but press each sub-block as though water filled the face, the
+// tessellated rock then taking the whole pore pressure (α = 1) sub-block by sub-block whatever
+// its α; unloaded, the sub-blocks together take the loads of the block they tessellate
+// (−α ∇p inside, (1 − α) p on its faces), and an intact bond's contacts carry the effective
+// traction σ' n = (σ + α p I) n of its sub-blocks' stress, the one that breaks it.
+std::vector<std::vector<char>> StaggeredLoop::sealed_edges() const {
+  std::vector<std::vector<char>> sealed;
+  if (mechanics_.bond_count() == 0) return sealed;
+  sealed.resize(static_cast<std::size_t>(mechanics_.block_count()));
+  for (int b = 0; b < mechanics_.block_count(); ++b) {
+    const std::size_t n = mechanics_.polygon(b).size();
+    std::vector<char>& edges = sealed[static_cast<std::size_t>(b)];
+    for (std::size_t e = 0; e < n; ++e) {
+      const int bond = mechanics_.bond_of_edge(b, static_cast<int>(e));
+      if (bond >= 0 && !mechanics_.is_bond_broken(bond)) {
+        edges.resize(n, 0);
+        edges[e] = 1;
+      }
+    }
+  }
+  return sealed;
+}
+
+std::vector<double> StaggeredLoop::compute_joint_apertures(std::span<const geometry::Polygon> blocks) const {
+  return joints_->apertures(blocks, mechanics_.contacts(), mechanics_.penetration_tolerance(), broken_bonds());
 }
 
 // The permeability as the porosity law gives it (a material's own `permeability` in its stead),
@@ -127,7 +162,7 @@ hydro::PermeabilityView StaggeredLoop::update_permeability(const std::vector<geo
     return hydro::PermeabilityView(permeability_);
   }
   set_joint_zone_matrix_permeability();
-  joint_apertures_ = joints_->apertures(blocks, mechanics_.contacts(), mechanics_.penetration_tolerance());
+  joint_apertures_ = compute_joint_apertures(blocks);
   check_finite(joint_apertures_, "a joint's hydraulic aperture", iteration_);
   std::vector<hydro::PermeabilityTensor>& k = permeability_tensors_;
   k = joints_->permeability(permeability_, joint_apertures_);
@@ -234,7 +269,8 @@ PassReport StaggeredLoop::run_pass() {
   // Ramped over the first passes: the blocks meet the full load from a state near equilibrium
   // under part of it, instead of all at once from the state as built.
   report.load_factor = std::min(1.0, static_cast<double>(iteration_) / settings_.ramp_passes);
-  std::vector<std::vector<Point>> forces = face_loads_.compute(blocks, solution_.pressure, settings_.biot_coefficients);
+  std::vector<std::vector<Point>> forces =
+      face_loads_.compute(blocks, solution_.pressure, settings_.biot_coefficients, sealed_edges());
   if (seepage_) {
     const std::vector<std::vector<Point>> seepage = compute_seepage_forces(
         blocks, pieces_, hydro::compute_pressure_gradients(mesh_, solution_.pressure), settings_.biot_coefficients);
@@ -264,9 +300,7 @@ PassReport StaggeredLoop::run_pass() {
   report.contact_state_changes = count_contact_state_changes(contacts_before, mechanics_.contacts());
   if (joints_)
     report.joint_crossings_switched =
-        count_switched(joint_apertures_,
-                       joints_->apertures(current_blocks(), mechanics_.contacts(), mechanics_.penetration_tolerance()),
-                       joints_->zero_stress_apertures());
+        count_switched(joint_apertures_, compute_joint_apertures(current_blocks()), joints_->zero_stress_apertures());
   measure_convergence(report, unrelaxed_head_change);
   finish_pass(report);
   return report;

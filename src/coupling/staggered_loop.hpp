@@ -70,9 +70,12 @@ struct LoopSettings {
   // Joints as embedded fractures (embedded_joints.hpp), when the scenario gives their hydraulic
   // aperture: the network the blocks were cut as (the DDA system's block order) and each
   // fracture's law (its joint type's).
+  // With bonded sub-blocks, the network's fracture ids from first_bond_fracture on are the
+  // bonds' faces (EmbeddedJoints): each conducts once the DDA has it broken.
   struct Joints {
     geometry::BlockNetwork network;
     JointApertureLaws laws;
+    int first_bond_fracture = -1;
   };
   std::optional<Joints> joints;
   // The fluid's stiffness within the pass (pass_storage.hpp): each pass's flow a backward-Euler
@@ -210,6 +213,11 @@ class StaggeredLoop final : public PassRunner {
 
  private:
   std::vector<geometry::Polygon> current_blocks() const;
+  // Per bond, nonzero where the DDA has it broken (empty without bonds).
+  std::vector<char> broken_bonds() const;
+  // Per block, per edge, nonzero on an intact bond: no face the fluid stands on (empty without bonds).
+  std::vector<std::vector<char>> sealed_edges() const;
+  std::vector<double> compute_joint_apertures(std::span<const geometry::Polygon> blocks) const;
   hydro::FlowSolution solve_flow(const std::vector<geometry::Polygon>& blocks);
   hydro::PermeabilityView update_permeability(const std::vector<geometry::Polygon>& blocks);
   PorosityField clip_blocks(const std::vector<geometry::Polygon>& blocks, BlockPieces* pieces) const;

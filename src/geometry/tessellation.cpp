@@ -213,6 +213,38 @@ std::vector<Point> generate_seeds(const Box& box, double size, std::uint64_t see
   return seeds;
 }
 
+CrackSeeds make_crack_seeds(const Segment2& crack, double spacing) {
+  const double length = distance(crack.from, crack.to);
+  if (!(spacing > 0) || !(length > 0)) throw std::invalid_argument("tessellation: a crack needs a length and a spacing");
+  const double pairs = std::max(2.0, std::round(length / spacing));
+  CrackSeeds out;
+  out.spacing = length / pairs;
+  const Point t = (crack.to - crack.from) / length;
+  const Point n{-t.y, t.x};
+  const auto count = static_cast<int>(pairs);
+  for (int k = -2; k < count + 2; ++k) {
+    const Point on_line = crack.from + ((static_cast<double>(k) + 0.5) * out.spacing) * t;
+    out.seeds.push_back(on_line + (0.5 * out.spacing) * n);
+    out.seeds.push_back(on_line - (0.5 * out.spacing) * n);
+  }
+  return out;
+}
+
+bool lies_near_crack(Point p, const Segment2& crack, double spacing) {
+  const double length = distance(crack.from, crack.to);
+  const Point t = (crack.to - crack.from) / length;
+  return distance_to_segment(p, crack.from - (2.0 * spacing) * t, crack.to + (2.0 * spacing) * t) < spacing;
+}
+
+bool lies_on_crack(Point a, Point b, const Segment2& crack, double tolerance) {
+  const double length = distance(crack.from, crack.to);
+  const Point t = (crack.to - crack.from) / length;
+  const auto off_line = [&](Point p) { return std::abs(cross(t, p - crack.from)); };
+  if (off_line(a) > tolerance || off_line(b) > tolerance) return false;
+  const double along = dot(0.5 * (a + b) - crack.from, t);
+  return along > 0.0 && along < length;
+}
+
 std::vector<Point> select_seeds(std::span<const Point> polygon, std::span<const Point> seeds, double margin) {
   std::vector<Point> out;
   const std::size_t n = polygon.size();

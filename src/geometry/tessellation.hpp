@@ -23,6 +23,26 @@ std::vector<Point> generate_seeds(const Box& box, double size, std::uint64_t see
 // would make a sliver of a sub-block: its neighbours' cells take the place).
 std::vector<Point> select_seeds(std::span<const Point> polygon, std::span<const Point> seeds, double margin);
 
+// A straight crack the sub-blocks conform to: pairs of seeds mirrored across it, one pair every
+// `spacing` (the crack's length over the nearest whole number of spacings, at least 2), half
+// a spacing either side, from two spacings before its start to two after its end. The
+// bisector of each pair is the crack's line, that of neighbouring pairs a perpendicular through
+// it, so that the cells' faces run along the line, and meet it at the crack's two ends.
+struct CrackSeeds {
+  std::vector<Point> seeds;
+  double spacing = 0.0;  // the spacing used
+};
+CrackSeeds make_crack_seeds(const Segment2& crack, double spacing);
+
+// Whether other seeds near `p` would spoil a crack's faces: p within `spacing` of the crack
+// extended by two spacings at each end (each point of the line then lies nearer its pair's
+// seeds, at most spacing/√2 away, than to p).
+bool lies_near_crack(Point p, const Segment2& crack, double spacing);
+
+// Whether segment a–b lies on `crack` (both ends within `tolerance` of its line, its middle
+// between the crack's ends).
+bool lies_on_crack(Point a, Point b, const Segment2& crack, double tolerance);
+
 // A tessellated polygon: sub-block polygons (counter-clockwise) and, per sub-block and edge
 // (vertex k → k + 1), where the edge lies: >= 0, the sub-block on its other side (a bond);
 // < 0, on edge −1 − value of the tessellated polygon.

@@ -12,6 +12,7 @@
 #include "run/model_building.hpp"
 #include "run/model_geometry.hpp"
 #include "run/run_summary.hpp"
+#include "run/sub_blocks.hpp"
 #include "run/transient_flow.hpp"
 
 namespace hydrodda::run {
@@ -54,6 +55,22 @@ coupling::FixedStressSettings make_fixed_stress_settings(const scenario::Scenari
     fixed.drained_bulk.push_back(strain ? young / (2.0 * (1.0 + nu) * (1.0 - 2.0 * nu)) : young / (2.0 * (1.0 - nu)));
   }
   return fixed;
+}
+
+bool has_tessellation(const scenario::Scenario& s) { return s.geometry && !s.geometry->tessellations.empty(); }
+
+// The joints the flow sees as embedded fractures: the traces', each by its type's hydraulic
+// aperture law, and with bonded sub-blocks every bond's face too (by its bonds' type), which
+// conducts once broken (run/sub_blocks.hpp, network_with_bond_faces).
+coupling::LoopSettings::Joints make_embedded_joints(const scenario::Scenario& s) {
+  ModelGeometry geometry = build_model_geometry(s);
+  if (geometry.bond_types.empty())
+    return {std::move(geometry.network), make_joint_aperture_laws(s, geometry.traces)};
+  geometry::BlockNetwork network = network_with_bond_faces(geometry);
+  const int first_bond = static_cast<int>(geometry.traces.size());
+  std::vector<geometry::FractureTrace> fractures = geometry.traces;  // by fracture id: the traces, then the bonds
+  for (int type : geometry.bond_types) fractures.push_back({{}, {}, type});
+  return {std::move(network), make_joint_aperture_laws(s, fractures), first_bond};
 }
 }  // namespace
 
@@ -98,11 +115,7 @@ CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::option
   if (std::any_of(s.materials.begin(), s.materials.end(),
                   [](const scenario::MaterialDefinition& m) { return m.permeability.has_value(); }))
     settings.material_permeability = find_material_permeability(s, mesh_);
-  if (s.any_joint_hydraulic()) {
-    ModelGeometry geometry = build_model_geometry(s);
-    coupling::JointApertureLaws laws = make_joint_aperture_laws(s, geometry.traces);
-    settings.joints = coupling::LoopSettings::Joints{std::move(geometry.network), std::move(laws)};
-  }
+  if (s.any_joint_hydraulic() || has_tessellation(s)) settings.joints = make_embedded_joints(s);
   if (s.coupling.pseudo_time_step > 0.0) settings.pseudo_time = make_pseudo_time_settings(s, mesh_);
   settings.stop_requested = [this] { return stop_requested_ && stop_requested_(); };
   load_times_ = scenario::find_load_times(s);

@@ -21,6 +21,7 @@
 #include "run/layered_stress.hpp"
 #include "run/mesh_budget.hpp"
 #include "run/model_geometry.hpp"
+#include "run/sub_blocks.hpp"
 #include "hydro/permeability_law.hpp"
 #include "scenario/diagnostics.hpp"
 #include "scenario/scenario_queries.hpp"
@@ -537,6 +538,8 @@ dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::B
     if (block < 0) errors.push_back({file, p.line, "mechanics.measure.point", fmt::format("{} lies in no block", point_text(p.point))});
     else model.measured_points.push_back({block, p.point});
   }
+  model.broken_bonds = find_crack_bonds(s, blocks);  // a tessellation's cracks start broken
+  if (!model.broken_bonds.empty()) spdlog::info("geometry: {} bonds start broken along the cracks", model.broken_bonds.size());
   model.blocks = std::move(blocks);
   // Only on supports that all resolved: one in no block is its own error, not a missing support.
   if (errors.empty() && settings.analysis == dda::Analysis::static_) report_unsupported_blocks(s, model, errors);

@@ -47,13 +47,84 @@ SeedField make_seed_field(const scenario::TessellationDefinition& t, const Polyg
   return field;
 }
 
+// The first table whose region holds p (a table without one holds every point); −1: none.
+int first_table_holding(const std::vector<scenario::TessellationDefinition>& tables, Point p) {
+  for (std::size_t k = 0; k < tables.size(); ++k)
+    if (tables[k].region.empty() || geometry::contains(tables[k].region, p)) return static_cast<int>(k);
+  return -1;
+}
+
+// Every table's cracks with their seeds.
+struct Crack {
+  geometry::Segment2 segment;
+  geometry::CrackSeeds seeds;
+  double margin = 0.0;  // from a block's edge, 0.2 of its table's size
+};
+
+std::vector<Crack> make_cracks(const std::vector<scenario::TessellationDefinition>& tables) {
+  std::vector<Crack> cracks;
+  for (const scenario::TessellationDefinition& t : tables)
+    for (const scenario::Segment& c : t.cracks) {
+      const geometry::Segment2 segment{c.from, c.to};
+      cracks.push_back({segment, geometry::make_crack_seeds(segment, t.size), 0.2 * t.size});
+    }
+  return cracks;
+}
+
+// The seeds of one block: of each table's jittered grid, those in the block (clear of its edges
+// by 0.2 of the table's size) where that table is the first whose region holds them and no
+// crack is near; then every crack's pairs in the block. And the smallest size among them.
+std::pair<std::vector<Point>, double> gather_seeds(const std::vector<scenario::TessellationDefinition>& tables,
+                                                   const std::vector<SeedField>& fields, const std::vector<Crack>& cracks,
+                                                   const Polygon& block) {
+  std::vector<Point> seeds;
+  double smallest = 0.0;
+  const auto take_size = [&](double size) { smallest = smallest > 0.0 ? std::min(smallest, size) : size; };
+  for (std::size_t k = 0; k < tables.size(); ++k) {
+    const std::size_t before = seeds.size();
+    for (Point p : geometry::select_seeds(block, fields[k].near(geometry::bounding_box(block)), 0.2 * tables[k].size)) {
+      if (first_table_holding(tables, p) != static_cast<int>(k)) continue;
+      if (std::any_of(cracks.begin(), cracks.end(),
+                      [&](const Crack& c) { return geometry::lies_near_crack(p, c.segment, c.seeds.spacing); }))
+        continue;
+      seeds.push_back(p);
+    }
+    if (seeds.size() > before) take_size(tables[k].size);
+  }
+  for (const Crack& c : cracks) {
+    const std::vector<Point> in_block = geometry::select_seeds(block, c.seeds.seeds, c.margin);
+    seeds.insert(seeds.end(), in_block.begin(), in_block.end());
+    if (!in_block.empty()) take_size(c.seeds.spacing);
+  }
+  return {std::move(seeds), smallest};
+}
+
 }  // namespace
+
+std::vector<int> find_crack_bonds(const scenario::Scenario& s, const std::vector<dda::BlockDefinition>& blocks) {
+  std::vector<int> broken;
+  if (!s.geometry) return broken;
+  const std::vector<Crack> cracks = make_cracks(s.geometry->tessellations);
+  if (cracks.empty()) return broken;
+  for (const dda::BlockDefinition& block : blocks)
+    for (std::size_t e = 0; e < block.edge_bonds.size(); ++e) {
+      const int bond = block.edge_bonds[e];
+      if (bond < 0) continue;
+      const Point a = block.polygon[e], b = block.polygon[(e + 1) % block.polygon.size()];
+      for (const Crack& c : cracks)
+        if (geometry::lies_on_crack(a, b, c.segment, 1e-6 * c.seeds.spacing)) broken.push_back(bond);
+    }
+  std::sort(broken.begin(), broken.end());
+  broken.erase(std::unique(broken.begin(), broken.end()), broken.end());
+  return broken;
+}
 
 void tessellate_blocks(const scenario::Scenario& s, ModelGeometry& model) {
   const scenario::GeometryDefinition& g = *s.geometry;
   if (g.tessellations.empty()) return;
   std::vector<SeedField> fields;
   for (const scenario::TessellationDefinition& t : g.tessellations) fields.push_back(make_seed_field(t, g.domain));
+  const std::vector<Crack> cracks = make_cracks(g.tessellations);
   geometry::BlockNetwork& net = model.network;
   std::vector<Polygon> blocks;
   std::vector<std::vector<int>> edge_fractures, edge_bonds;
@@ -64,10 +135,8 @@ void tessellate_blocks(const scenario::Scenario& s, ModelGeometry& model) {
     const Point c = geometry::centroid(block);
     std::size_t k = 0;
     while (k < g.tessellations.size() && !g.tessellations[k].region.empty() && !geometry::contains(g.tessellations[k].region, c)) ++k;
-    const std::vector<Point> seeds =
-        k < g.tessellations.size()
-            ? geometry::select_seeds(block, fields[k].near(geometry::bounding_box(block)), 0.2 * g.tessellations[k].size)
-            : std::vector<Point>{};
+    const auto [seeds, size] = k < g.tessellations.size() ? gather_seeds(g.tessellations, fields, cracks, block)
+                                                           : std::pair<std::vector<Point>, double>{};
     if (seeds.size() < 2) {  // not tessellated, or too small to be
       blocks.push_back(block);
       edge_fractures.push_back(net.edge_fractures[b]);
@@ -77,7 +146,7 @@ void tessellate_blocks(const scenario::Scenario& s, ModelGeometry& model) {
     const scenario::TessellationDefinition& t = g.tessellations[k];
     geometry::Tessellation parts;
     try {
-      parts = geometry::tessellate_convex(block, seeds, t.size, t.kind);
+      parts = geometry::tessellate_convex(block, seeds, size, t.kind);
     } catch (const std::invalid_argument& e) {
       throw scenario::ScenarioError({{s.file.string(), t.line, "geometry.tessellate",
                                       fmt::format("block {} (centroid ({:g}, {:g})): {}; sub-blocks are made of convex "
@@ -113,6 +182,24 @@ void tessellate_blocks(const scenario::Scenario& s, ModelGeometry& model) {
   model.bond_types = std::move(bond_types);
   model.summary += fmt::format(", {} of them tessellated into {} sub-blocks with {} bonds", tessellated,
                                net.blocks.size(), model.bond_types.size());
+}
+
+geometry::BlockNetwork network_with_bond_faces(const ModelGeometry& model) {
+  geometry::BlockNetwork network = model.network;
+  const int first = static_cast<int>(model.traces.size());
+  std::vector<char> listed(model.bond_types.size(), 0);
+  for (std::size_t b = 0; b < model.edge_bonds.size(); ++b) {
+    const Polygon& block = network.blocks[b];
+    for (std::size_t e = 0; e < model.edge_bonds[b].size(); ++e) {
+      const int bond = model.edge_bonds[b][e];
+      if (bond < 0) continue;
+      network.edge_fractures[b][e] = first + bond;
+      if (listed[static_cast<std::size_t>(bond)]) continue;
+      listed[static_cast<std::size_t>(bond)] = 1;
+      network.faces.push_back({{block[e], block[(e + 1) % block.size()]}, first + bond});
+    }
+  }
+  return network;
 }
 
 }  // namespace hydrodda::run

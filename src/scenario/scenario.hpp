@@ -77,6 +77,10 @@ struct TessellationDefinition {
   Polygon region;                   // empty: the domain
   std::uint64_t seed = 0;
   TraceJoint joint;                 // empty name: [joint]
+  // Straight cracks of broken bonds inside the region: the sub-blocks conform to each (pairs of
+  // seeds `size` apart mirrored across it) and the bonds along it start broken.
+  std::vector<Segment> cracks;
+  int cracks_line = 0;
   int line = 0;
 };
 

@@ -16,12 +16,41 @@ double estimate_sub_blocks(const TessellationDefinition& t, const Polygon& domai
   return t.kind == geometry::TessellationKind::triangles ? 6.0 * cells : cells;
 }
 
+namespace {
+// geometry.tessellate.cracks: straight segments inside the region, each at least two sub-blocks
+// long (a pair of seeds on either side of it every `size`).
+void read_cracks(ReadContext& ctx, const TableView& t, TessellationDefinition& tess) {
+  if (!t.has("cracks")) return;
+  tess.cracks_line = t.line_of_key("cracks");
+  const std::string key = t.key_path("cracks");
+  for (auto& [points, line] : t.point_lists("cracks")) {
+    if (points.size() != 2) {
+      ctx.error(line, key, "a crack is a straight segment: two points [[x1, y1], [x2, y2]]");
+      continue;
+    }
+    const double length = geometry::distance(points[0], points[1]);
+    if (tess.size > 0.0 && !(length >= 2.0 * tess.size)) {
+      ctx.error(line, key,
+                fmt::format("a crack {} m long is shorter than two sub-blocks (2 size = {} m): make it longer or size "
+                            "smaller",
+                            format_number(length), format_number(2.0 * tess.size)));
+      continue;
+    }
+    if (!tess.region.empty() && !(geometry::contains(tess.region, points[0]) && geometry::contains(tess.region, points[1]))) {
+      ctx.error(line, key, "a crack must lie inside the tessellation's region");
+      continue;
+    }
+    tess.cracks.push_back({points[0], points[1]});
+  }
+}
+}  // namespace
+
 void read_tessellations(ReadContext& ctx, const TableView& g, GeometryDefinition& geometry) {
   int index = 0;
   double total = 0.0;
   int last_line = 0;
   for (const toml::table* table : g.tables("tessellate")) {
-    const TableView t(ctx, *table, "geometry.tessellate", {"kind", "size", "region", "seed", "joint"});
+    const TableView t(ctx, *table, "geometry.tessellate", {"kind", "size", "region", "seed", "joint", "cracks"});
     TessellationDefinition tess;
     tess.line = last_line = t.line();
     const std::string indexed = fmt::format("geometry.tessellate[{}]", index++);
@@ -41,6 +70,7 @@ void read_tessellations(ReadContext& ctx, const TableView& g, GeometryDefinition
           geometry.domain.size() >= 3 && !polygons_overlap(tess.region, geometry.domain))
         ctx.error(t.line_of_key("region"), t.key_path("region"), "the region lies wholly outside geometry.domain");
     }
+    read_cracks(ctx, t, tess);
     // A size larger than the region would make one sub-block of it, or none.
     const Polygon& region = tess.region.empty() ? geometry.domain : tess.region;
     if (tess.size > 0.0 && region.size() >= 3 && tess.size > geometry::width_across_edges(region))
@@ -80,10 +110,6 @@ void check_tessellations(ReadContext& ctx, const Scenario& s) {
                 "softening bonds are not yet implemented: the bonds of geometry.tessellate (line " +
                     std::to_string(t.line) + ") break at their strength; leave fracture_energy out");
   }
-  if (s.flow && s.mechanics)
-    ctx.error(s.geometry->tessellations.front().line, "geometry.tessellate",
-              "bonded sub-blocks in a coupled run are not yet supported (broken bonds do not yet conduct or take the "
-              "fluid's pressure): run the mechanics alone, or leave [flow] out");
 }
 
 }  // namespace hydrodda::scenario

@@ -102,5 +102,36 @@ TEST(Tessellation, ANonConvexPolygonIsRefused) {
                std::invalid_argument);
 }
 
+// A crack's seeds (make_crack_seeds): with the grid's seeds near it left out, the sub-blocks'
+// faces along the crack's line cover it exactly, from its start to its end (the bisectors of
+// the mirrored pairs: to 1e-9 m), with a face ending at each of its ends, and the whole is a
+// partition; on both kinds of sub-blocks.
+TEST(Tessellation, ACracksSeedsMakeFacesAlongItEndingAtItsEnds) {
+  const Segment2 crack{{1.0, 1.3}, {2.9, 1.7}};
+  const double length = distance(crack.from, crack.to);
+  for (const TessellationKind kind : {TessellationKind::voronoi, TessellationKind::triangles}) {
+    std::vector<Point> seeds;
+    for (Point p : select_seeds(kSquare, generate_seeds(bounding_box(kSquare), kSize, 7), 0.2 * kSize))
+      if (!lies_near_crack(p, crack, kSize)) seeds.push_back(p);
+    const CrackSeeds pairs = make_crack_seeds(crack, 0.25);
+    EXPECT_NEAR(pairs.spacing, length / std::round(length / 0.25), 1e-15);
+    for (Point p : select_seeds(kSquare, pairs.seeds, 0.2 * kSize)) seeds.push_back(p);
+    const Tessellation t = tessellate_convex(kSquare, seeds, pairs.spacing, kind);
+    expect_partition(kSquare, t);
+    double on_crack = 0.0;  // each face once: from the lower-numbered cell
+    bool starts = false, ends = false;
+    for (std::size_t c = 0; c < t.cells.size(); ++c)
+      for (std::size_t e = 0; e < t.cells[c].size(); ++e) {
+        const Point a = t.cells[c][e], b = t.cells[c][(e + 1) % t.cells[c].size()];
+        if (t.edge_sources[c][e] <= static_cast<int>(c) || !lies_on_crack(a, b, crack, 1e-9)) continue;
+        on_crack += distance(a, b);
+        starts = starts || distance(a, crack.from) < 1e-9 || distance(b, crack.from) < 1e-9;
+        ends = ends || distance(a, crack.to) < 1e-9 || distance(b, crack.to) < 1e-9;
+      }
+    EXPECT_NEAR(on_crack, length, 1e-9) << static_cast<int>(kind);
+    EXPECT_TRUE(starts && ends) << static_cast<int>(kind);
+  }
+}
+
 }  // namespace
 }  // namespace hydrodda::geometry

@@ -117,8 +117,11 @@ joint = "soft"
 )");
   EXPECT_TRUE(has_error(errors, "case.toml:17: joint.soft.fracture_energy: softening bonds are not yet implemented"))
       << dump(errors);
-  // A coupled run.
-  errors = errors_of(kHead + R"(
+}
+
+TEST(TessellationKeys, ACoupledRunWithBondedSubBlocksIsAccepted) {
+  // Broken bonds conduct and take the fluid's pressure (docs/dda.md, "Bonds").
+  const auto errors = errors_of(kHead + R"(
 [[geometry.tessellate]]
 size = 0.5
 [flow]
@@ -128,8 +131,22 @@ head = 1.0
 [mesh]
 size = 0.5
 )");
-  EXPECT_TRUE(has_error(errors, "case.toml:16: geometry.tessellate: bonded sub-blocks in a coupled run are not yet supported"))
+  for (const auto& e : errors) EXPECT_EQ(e.key.find("geometry.tessellate"), std::string::npos) << dump(errors);
+}
+
+TEST(TessellationKeys, CracksAreReadAndABadOneIsRefusedByName) {
+  auto errors = errors_of(kHead + R"(
+[[geometry.tessellate]]
+size = 0.2
+region = [[0.5, 0.5], [3.5, 0.5], [3.5, 1.5], [0.5, 1.5]]
+cracks = [[[1.0, 1.0], [3.0, 1.0]], [[1.0, 0.8], [1.3, 0.8]], [[1.0, 1.2], [3.9, 1.2]], [[1.0, 1.0]]]
+)");
+  EXPECT_TRUE(has_error(errors, "case.toml:19: geometry.tessellate.cracks: a crack 0.3 m long is shorter than two "
+                                "sub-blocks (2 size = 0.4 m)"))
       << dump(errors);
+  EXPECT_TRUE(has_error(errors, "geometry.tessellate.cracks: a crack must lie inside the tessellation's region")) << dump(errors);
+  EXPECT_TRUE(has_error(errors, "geometry.tessellate.cracks: a crack is a straight segment")) << dump(errors);
+  EXPECT_EQ(errors.size(), 3u) << dump(errors);  // the first crack is good
 }
 
 TEST(TessellationKeys, TooManySubBlocksAreRefusedNamingTheKeysThatSetThem) {
