@@ -20,36 +20,14 @@
 #include <string>
 
 #include "coupled_runs.hpp"
+#include "terzaghi_series.hpp"
 
 using namespace hydrodda::testing::coupled;
 using hydrodda::testing::read_csv;
 using hydrodda::testing::run_program;
+using namespace hydrodda::testing::terzaghi;
 
 namespace {
-
-constexpr double kLoad = 1.0e6, kHeight = 10.0, kStorage = 1.0e-10;
-constexpr double kConstrained = 1.0e9 * 0.75 / (1.25 * 0.5);                 // K_v (Pa)
-constexpr double kCv = 1.0e-15 / 1.0e-3 / (kStorage + 1.0 / kConstrained);  // m²/s
-constexpr double kP0 = kLoad / (1.0 + kStorage * kConstrained);
-constexpr double kS0 = (kLoad - kP0) * kHeight / kConstrained, kSinf = kLoad * kHeight / kConstrained;
-
-double series_pressure(double depth, double t) {
-  double sum = 0.0;
-  for (int m = 0; m < 400; ++m) {
-    const double big_m = (2 * m + 1) * std::numbers::pi / 2;
-    sum += 2 / big_m * std::sin(big_m * depth / kHeight) * std::exp(-big_m * big_m * kCv * t / (kHeight * kHeight));
-  }
-  return kP0 * sum;
-}
-
-double series_settlement(double t) {
-  double sum = 0.0;
-  for (int m = 0; m < 400; ++m) {
-    const double big_m = (2 * m + 1) * std::numbers::pi / 2;
-    sum += 2 / (big_m * big_m) * std::exp(-big_m * big_m * kCv * t / (kHeight * kHeight));
-  }
-  return kS0 + (kSinf - kS0) * (1 - sum);
-}
 
 struct Consolidation {
   nlohmann::json summary;
@@ -82,7 +60,9 @@ TEST(CoupledTransientVerification, AColumnOfBlocksConsolidatesAsTerzaghisSeries)
   for (std::size_t r = 1; r < c.probes.size(); ++r) {
     const double t = std::stod(c.probes[r][0]);
     const double p = std::stod(c.probes[r][3]);
-    if (t == 50.0 && c.probes[r][1] == "z10") EXPECT_NEAR(p / kP0, 1.0, 0.005) << "undrained at the first step";
+    if (t == 50.0 && c.probes[r][1] == "z10") {
+      EXPECT_NEAR(p / kP0, 1.0, 0.005) << "undrained at the first step";
+    }
     if (t != 4667.0 && t != 9333.0 && t != 2.8e4 && t != 9.333e4) continue;
     EXPECT_NEAR(p, series_pressure(depth.at(c.probes[r][1]), t), 0.02 * kP0) << c.probes[r][1] << " at t = " << t;
     ++pressures;

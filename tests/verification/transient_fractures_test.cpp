@@ -20,26 +20,14 @@
 #include <utility>
 
 #include "coupled_runs.hpp"
+#include "terzaghi_series.hpp"
 
 using namespace hydrodda::testing::coupled;
 using hydrodda::testing::read_csv;
 using hydrodda::testing::run_program;
+using namespace hydrodda::testing::terzaghi;
 
 namespace {
-
-constexpr double kLoad = 1.0e6, kHeight = 10.0, kStorage = 1.0e-10;
-constexpr double kConstrained = 1.0e9 * 0.75 / (1.25 * 0.5);                 // K_v (Pa)
-constexpr double kCv = 1.0e-15 / 1.0e-3 / (kStorage + 1.0 / kConstrained);  // m²/s
-constexpr double kP0 = kLoad / (1.0 + kStorage * kConstrained);
-
-double series_pressure(double depth, double t) {
-  double sum = 0.0;
-  for (int m = 0; m < 400; ++m) {
-    const double big_m = (2 * m + 1) * std::numbers::pi / 2;
-    sum += 2 / big_m * std::sin(big_m * depth / kHeight) * std::exp(-big_m * big_m * kCv * t / (kHeight * kHeight));
-  }
-  return kP0 * sum;
-}
 
 TEST(CoupledTransientFractures, TheColumnsJointsCarryTerzaghisEffectiveStressAtEveryStep) {
   const fs::path out = fs::temp_directory_path() / "hydrodda-transient-fractures";
