@@ -700,9 +700,12 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
     Eigen::VectorXd used(sliding.size());
     Eigen::VectorXd image(sliding.size());
     numerics::AndersonAccelerator friction_mixing;
+    char opened_standing_off = 0;  // as a pass's changes of state below
+    Eigen::VectorXd last_pass;     // the solution of the try's last pass but one
     for (int al = 0; al < lagrangian_limit_; ++al) {
       ++report.lagrangian_iterations;
       for (std::size_t k = 0; k < sliding.size(); ++k) used[k] = sliding[k]->record.normal_force;
+      if (al > 0 && al + 1 == lagrangian_limit_) last_pass = d;
       d = solver_->solve(assemble_contact_rhs(f_base));
       ContactForceExtent extent = update_contact_forces(d);
       for (std::size_t k = 0; k < sliding.size(); ++k) image[k] = sliding[k]->record.normal_force;
@@ -742,6 +745,19 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
       }
       // Forces that have not settled are no solution to accept: the step is cut and retried.
       if (al + 1 == lagrangian_limit_) {
+        // Unless a closed contact stands off its edge: it opens (lagrangian_limits.cpp).
+        if (!penetration_ok) opened_standing_off = open_contacts_standing_off();
+        if (opened_standing_off) break;
+        // Or the passes no longer move the blocks and no overlap grew (lagrangian_limits.cpp).
+        const bool stalled = !penetration_ok && last_pass.size() == d.size() &&
+                             largest_vertex_motion(d - last_pass) <= settled_motion;
+        if (stalled && overlaps_held(1.0)) {
+          settled_at_once = false;
+          force_scale = extent.force_scale;
+          break;
+        }
+        // Its multipliers go on to the next try if every overlap is at the tolerance.
+        if (stalled && overlaps_held(2.0)) keep_tried_multipliers();
         unsettled_forces_ = describe_unsettled_forces(penetration_ok, friction_change, extent.force_scale);
         return Unsettled::contact_forces;
       }
@@ -754,6 +770,12 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
         const Eigen::VectorXd mixed = friction_mixing.next(used, image);
         for (std::size_t k = 0; k < sliding.size(); ++k) sliding[k]->record.normal_force = mixed[k];
       }
+    }
+    if (opened_standing_off) {
+      // The other contacts' states are judged on the next pass's solution: this one did not settle.
+      if (opened_standing_off & 2) ++passes_without_progress;
+      before_friction_update.resize(0);
+      continue;
     }
     // Hysteresis bands (1% of the penetration tolerance) keep a contact that merely touches,
     // or a joint under no load, from flipping state on round-off. A closed joint set carrying
@@ -831,9 +853,12 @@ StepReport System::step() {
   lagrangian_limit_ = settings_.max_lagrangian_iterations;
   const double first_time_step = dt_;
   std::string first_failure;
+  tried_multipliers_.clear();
   for (;;) {
     undo_pending_bond_breaks();  // a retried step breaks its bonds anew
     detect_contacts();
+    start_from_tried_multipliers();  // those of a try stalled at the tolerance (lagrangian_limits.cpp)
+    tried_multipliers_.clear();
     Eigen::VectorXd d;
     const Unsettled unsettled = solve_step(dt_, d, report);
     const bool settled = unsettled == Unsettled::no;

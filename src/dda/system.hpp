@@ -285,6 +285,18 @@ class System {
   // The largest distance a vertex moves under the block unknowns `change` (first order).
   double largest_vertex_motion(const Eigen::VectorXd& change) const;
   void commit_step(const Eigen::VectorXd& d, double dt);
+  // What a try does when its Lagrangian passes run out (lagrangian_limits.cpp). The closed
+  // contacts standing off their edges by more than the penetration tolerance open; bit 1 of
+  // the result: some opened, bit 2: one of them had changed state already in this step.
+  char open_contacts_standing_off();
+  // Whether no closed contact overlaps its edge by more than a step whose passes no longer move
+  // the blocks may hold: the tolerance × `growth` and 1e-6 of the tolerance more, or the
+  // overlap it started with, up to twice the tolerance.
+  bool overlaps_held(double growth) const;
+  // The multipliers of a try that stalled with its overlaps at the tolerance, for the next
+  // try at the step, given to the contacts closed in both.
+  void keep_tried_multipliers();
+  void start_from_tried_multipliers();
   // After commit_step: the step's unbalanced force into `report` (unbalanced_force.cpp).
   void measure_unbalanced_force(const std::vector<Point>& step_translation, double dt, StepReport& report) const;
 
@@ -396,6 +408,9 @@ class System {
   std::vector<KeyedRecord> records_;
   std::vector<ActiveContact> active_;  // some 300 bytes each
   std::vector<int> closed_;            // active_'s closed contacts this pass, ascending
+  // The closed contacts' multipliers at the end of a try of this step that stalled with its
+  // overlaps at the tolerance, in key order; empty when the last try did not.
+  std::vector<std::pair<ContactKey, double>> tried_multipliers_;
   int unknown_count_ = 0;
   double time_ = 0.0;
   double dt_ = 0.0;

@@ -288,8 +288,10 @@ TEST(System, AStepWhoseContactForcesNeverSettleNamesTheContact) {
 // Contact forces that do not settle are no solution either. With a penalty so soft that the
 // block's weight pushes it past the penetration tolerance (1e-6 m) in a 1 ms step, the
 // augmented Lagrangian needs a second pass to lift it out; allowed one, every step is cut
-// until a single pass is enough, and no accepted step penetrates past the tolerance (the
-// first step, accepted as the pass left it, would penetrate 4.2e-6 m).
+// until a single pass is enough or the passes no longer move the block, and no accepted step
+// penetrates past the tolerance by more than the 1e-6 of it a stalled try may hold, with the
+// second order of the updates of the steps so held (src/dda/lagrangian_limits.cpp; the first
+// step, accepted as the pass left it, would penetrate 4.2e-6 m).
 TEST(System, ContactForcesThatDoNotSettleAreNotAccepted) {
   ModelDefinition m = testing::make_incline(30.0, 10.0, 0.0);
   m.settings.penalty = 1e3;
@@ -300,7 +302,9 @@ TEST(System, ContactForcesThatDoNotSettleAreNotAccepted) {
   for (int k = 0; k < 20; ++k) {
     const StepReport r = system.step();
     retries += r.retries;
-    EXPECT_LE(r.max_penetration, 1e-6) << "step " << k;
+    // 1e-6 of the tolerance held, and the second order of the held steps' updates (4e-16 m
+    // measured at step 19): within as much again.
+    EXPECT_LE(r.max_penetration, 1e-6 * (1 + 2e-6)) << "step " << k;
   }
   EXPECT_GT(retries, 0);
 }

@@ -1,0 +1,77 @@
+// What a step's try does when its augmented Lagrangian passes run out (System::solve_step).
+//
+// The passes end with every closed contact within the penetration tolerance of touching. A
+// try at a step so short that the blocks' inertia M/Δt² outweighs the penalty p by orders
+// cannot get there: a Lagrangian pass moves a contact by p/(M/Δt² + p) of the distance it
+// measures, next to nothing, and a shorter step moves it less, so cutting the step, the
+// remedy for forces that did not settle, only deepens the lock
+// (docs/studies/2026-11-30-contacts-at-the-tolerance.md). Two contacts end there:
+//
+//  - a closed contact whose vertex stands off its edge by more than the tolerance, held off by
+//    the blocks around it, its multiplier compressive from an earlier geometry: it touches
+//    nothing and carries no force. It opens, a change of state for the open–close iteration
+//    rather than a shorter step (Shi 1988 §5, and ntdda's open–close check, open_close in
+//    combineddf.c: a closed contact opens when its vertex lies off the edge by more than the
+//    open criterion);
+//  - a closed contact at the tolerance itself, a hair past it: the last step's update (its
+//    rotations exact, its penetrations linear) left it 1e-9 of the tolerance past it, or this
+//    step's load pushes it on by 1e-11 of it, where its multiplier would have to carry the
+//    pushing load to stop it and a pass raises it by p × the tolerance (6e5 N/m on the faulted
+//    seal, against 1e8 N/m). When the passes no longer move the blocks (the last moved no
+//    vertex by 1% of the tolerance, the length a step resolves), the try is accepted if no
+//    overlap is past the tolerance, or past what the step started with (up to twice the
+//    tolerance), by more than 1e-6 of the tolerance: the step did not deepen it. Its passes'
+//    multipliers are kept, and the longer steps that follow push it back within the tolerance.
+//    An overlap deeper than twice the tolerance is no contact at the tolerance, and a step
+//    that cannot push it out is cut and fails as before.
+
+#include <algorithm>
+
+#include "dda/system.hpp"
+
+namespace hydrodda::dda {
+
+char System::open_contacts_standing_off() {
+  char seen = 0;
+  for (int i : closed_) {
+    ActiveContact& c = active_[i];
+    ContactRecord& r = c.record;
+    // An intact bond's contacts stay locked: its face breaks as a whole (update_state).
+    if (is_intact_bond(c.key) || r.penetration >= -penetration_tolerance_) continue;
+    r.state = ContactState::open;
+    r.multiplier = 0.0;
+    r.normal_force = 0.0;
+    r.released = false;  // parted by more than the tolerance: it closes again at the band
+    seen |= c.changed_in_step ? 3 : 1;
+    c.changed_in_step = true;
+  }
+  return seen;
+}
+
+bool System::overlaps_held(double growth) const {
+  const double slack = 1e-6 * penetration_tolerance_;
+  for (int i : closed_) {
+    const ActiveContact& c = active_[i];
+    const double started = std::min(c.penetration0, 2.0 * penetration_tolerance_);
+    if (c.record.penetration > std::max(growth * penetration_tolerance_ + slack, started)) return false;
+  }
+  return true;
+}
+
+void System::keep_tried_multipliers() {
+  tried_multipliers_.clear();
+  for (const ActiveContact& c : active_)  // in key order
+    // Its normal force λ + p d: the multiplier the next pass would have taken.
+    if (c.record.state != ContactState::open) tried_multipliers_.emplace_back(c.key, c.record.normal_force);
+}
+
+void System::start_from_tried_multipliers() {
+  auto tried = tried_multipliers_.begin();
+  for (ActiveContact& c : active_) {  // both in key order
+    while (tried != tried_multipliers_.end() && tried->first < c.key) ++tried;
+    if (tried == tried_multipliers_.end()) break;
+    if (tried->first == c.key && c.record.state != ContactState::open) c.record.multiplier = tried->second;
+  }
+}
+
+}  // namespace hydrodda::dda

@@ -1,0 +1,111 @@
+// A step's try whose augmented Lagrangian passes run out at a step so short that the blocks'
+// inertia outweighs the penalty (src/dda/lagrangian_limits.cpp): a closed contact standing off
+// its edge opens, and one at the penetration tolerance itself is held rather than the step cut
+// until it fails.
+
+#include <gtest/gtest.h>
+
+#include "dda/system.hpp"
+#include "test_models.hpp"
+
+namespace hydrodda::dda {
+namespace {
+
+using testing::make_rectangle;
+
+constexpr double kTolerance = 1e-6;
+
+// A 1 m block (ρ 2500, E 10 GPa: the default penalty 5e11 N/m) with its base `lift` m over a
+// fixed base (lift < 0: overlapping it), under gravity; its base corners' contacts with the
+// base's top (edge 2, (4, 0) to (−1, 0)) closed, each pushing with `multiplier` N/m, and the
+// step the next one starts from `time_step` s.
+System make_block_on_closed_contacts(double lift, double multiplier, double time_step) {
+  ModelDefinition m;
+  m.materials = {Material{2500.0, 1.0e10, 0.25}};
+  m.blocks.push_back({make_rectangle(-1, -1, 4, 0), 0, true});
+  m.blocks.push_back({make_rectangle(1, lift, 2, 1 + lift), 0, false});
+  m.joint = {30.0, 0.0, 0.0};
+  m.settings.analysis = Analysis::static_;
+  m.settings.time_step = 1e-2;
+  m.settings.penetration_tolerance = kTolerance;
+  System system(std::move(m));
+  SystemState state = system.export_state();
+  state.time_step = time_step;
+  state.contacts.clear();
+  for (int vertex : {0, 1}) {
+    ContactRecord r;
+    r.state = ContactState::locked;
+    r.multiplier = multiplier;
+    r.normal_force = multiplier;
+    r.reference_ratio = vertex == 0 ? 0.6 : 0.4;  // the corner's place along the edge from (4, 0)
+    state.contacts.push_back({ContactKey{1, vertex, 0, 2}, r});
+  }
+  system.import_state(state);
+  return system;
+}
+
+// A block held 2 µm (twice the tolerance) off the base with its corners' contacts closed and
+// pushing it off with 1e9 N/m each, from a geometry it has left, at a 1e-6 s step: its
+// inertia 2M/Δt² (5e15 N/m) outweighs the penalty ten-thousandfold, so a Lagrangian pass,
+// lowering each multiplier by p × 2 µm = 1e6 N/m, hardly moves it, and the 30 + 60 passes of
+// a try lower the multipliers by under a tenth. The contacts touch nothing: the step opens
+// them (Shi's open rule) and goes on at its time step, the block falling ½ g Δt² (to 1e-9 of
+// it: round-off on a 1 m block). Without the rule the step was cut 40 times and failed.
+TEST(LagrangianLimits, AClosedContactStandingOffItsEdgeOpens) {
+  const double dt = 1e-6;
+  System system = make_block_on_closed_contacts(2 * kTolerance, 1e9, dt);
+  StepReport report;
+  ASSERT_NO_THROW(report = system.step());
+  EXPECT_EQ(report.retries, 0);
+  EXPECT_EQ(report.time_step, dt);
+  EXPECT_EQ(report.contacts, 0);
+  for (const ContactInfo& c : system.contacts()) EXPECT_EQ(c.state, ContactState::open);
+  const double fall = 0.5 * 9.81 * dt * dt;
+  EXPECT_NEAR(system.displacement(1).y, -fall, 1e-9 * fall + 1e-15);
+}
+
+// A block resting 1e-9 of the tolerance past it (where the last step's update, its rotations
+// exact and its penetrations linear, can leave a contact), its corners' contacts closed and
+// carrying none of its weight, at a 1e-10 s step (2M/Δt² = 5e23 N/m): the 30 + 60 passes of a
+// try raise each multiplier by p × 1e-6 m each, moving the block by 1e-16 m, less than the
+// 1e-15 m it lies past the tolerance, and a shorter step moves it less. The step holds the
+// overlap (its weight pushes it on by ½ g Δt² = 5e-20 m, under 1e-6 of the tolerance), at its
+// time step, and the steps after it, growing by half each, push it back within the tolerance
+// once they are long enough to move the block. Without the rule the step was cut 40 times and
+// failed.
+TEST(LagrangianLimits, AContactAtTheToleranceItselfIsHeldAndThenPushedBack) {
+  const double dt = 1e-10;
+  const double start = kTolerance * (1 + 1e-9);
+  System system = make_block_on_closed_contacts(-start, 0.0, dt);
+  StepReport first;
+  ASSERT_NO_THROW(first = system.step());
+  EXPECT_EQ(first.retries, 0);
+  EXPECT_EQ(first.time_step, dt);
+  EXPECT_EQ(first.contacts, 2);
+  EXPECT_GT(first.max_penetration, kTolerance) << "held where it was: no pass can move it";
+  EXPECT_LE(first.max_penetration, start + 1e-6 * kTolerance);
+  StepReport last = first;
+  int steps = 1;
+  for (; steps < 100 && last.max_penetration > kTolerance; ++steps) ASSERT_NO_THROW(last = system.step());
+  EXPECT_LE(last.max_penetration, kTolerance) << "after " << steps << " steps";
+  EXPECT_EQ(last.contacts, 2);
+}
+
+// An overlap deeper than twice the tolerance is no contact at the tolerance: a step that
+// cannot push it out (the same block 3 µm into the base at 1e-10 s) is cut until it fails, as
+// before, and the error names the contact.
+TEST(LagrangianLimits, ADeeperOverlapThatNoPassCanMoveStillFailsTheStep) {
+  System system = make_block_on_closed_contacts(-3 * kTolerance, 0.0, 1e-10);
+  try {
+    system.step();
+    ADD_FAILURE() << "the step should have failed";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("time step fell below any use"), std::string::npos) << what;
+    EXPECT_NE(what.find("of block 1 against edge 2 of block 0"), std::string::npos) << what;
+    EXPECT_NE(what.find("overlaps it by 3e-06 m"), std::string::npos) << what;
+  }
+}
+
+}  // namespace
+}  // namespace hydrodda::dda
