@@ -5,7 +5,7 @@
 // cannot get there: a Lagrangian pass moves a contact by p/(M/Δt² + p) of the distance it
 // measures, next to nothing, and a shorter step moves it less, so cutting the step, the
 // remedy for forces that did not settle, only deepens the lock
-// (docs/studies/2026-11-30-contacts-at-the-tolerance.md). Two contacts end there:
+// (docs/studies/2026-11-29-contacts-at-the-tolerance.md). Two contacts end there:
 //
 //  - a closed contact whose vertex stands off its edge by more than the tolerance, held off by
 //    the blocks around it, its multiplier compressive from an earlier geometry: it touches
