@@ -36,6 +36,9 @@ struct PassReport {
   double load_factor = 1.0;       // of the fluid forces, below 1 while ramped
   int settling_steps = 0;         // DDA steps past steps_per_pass (LoopSettings::settle_steps)
   bool at_rest = true;            // false: settle_steps ran out with the blocks still moving
+  // Settling stopped before settle_steps ran out (SettlingWatch): this block (−1: it did not)
+  // moved freely in the pass's last step, not slowing, landing only after the steps left.
+  int drifting_block = -1;
   // Whether the pass's last DDA step ran at the full mechanics.time_step, and the shortest
   // step of the pass. A step cut short moves the blocks little however far they are from
   // equilibrium, so a pass that ends on one does not count as converged.

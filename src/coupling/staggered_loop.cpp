@@ -9,6 +9,7 @@
 
 #include "coupling/local_aperture.hpp"
 #include "coupling/pass_changes.hpp"
+#include "coupling/settling_watch.hpp"
 #include "hydro/element_pressure.hpp"
 #include "numerics/aitken.hpp"
 
@@ -309,14 +310,22 @@ PassReport StaggeredLoop::run_pass() {
 // Mechanics under the mechanical and fluid loads: the pass's steps, then (settle_steps) on
 // until the blocks are at rest, as its fixed steps may stop them part-way to the equilibrium
 // of its loads and the next pass would meet them there (docs/coupling.md, "Passes that
-// settle").
+// settle"). Settling stops sooner, the blocks not at rest, once steps_per_pass steps in a row
+// have each moved a block freely that cannot come to rest within the steps left
+// (SettlingWatch): a stack of blocks falling into open joints lands a row at a time, hundreds
+// of steps a row, and a pass that stepped on to its limit would cost a hundred fixed passes
+// and still end moving.
 void StaggeredLoop::step_mechanics(PassReport& report) {
   const auto start = Clock::now();
   const int most_steps = settings_.steps_per_pass + settings_.settle_steps;
   int taken = 0;
+  SettlingWatch watch(settings_.steps_per_pass, mechanics_.at_rest_displacement());
   bool at_rest = false;
   report.shortest_time_step = mechanics_.full_time_step();
-  while (taken < settings_.steps_per_pass || (taken < most_steps && !at_rest)) {
+  const auto settling = [&] {
+    return taken < most_steps && !at_rest && !watch.cannot_come_to_rest();
+  };
+  while (taken < settings_.steps_per_pass || settling()) {
     const auto which = [&] {
       return std::to_string(taken + 1) + (taken < settings_.steps_per_pass
                                                ? " of " + std::to_string(settings_.steps_per_pass)
@@ -334,6 +343,7 @@ void StaggeredLoop::step_mechanics(PassReport& report) {
       at_rest = mechanics_.is_at_rest(step);
       report.full_time_step = mechanics_.ran_at_full_time_step(step);
       report.shortest_time_step = std::min(report.shortest_time_step, step.time_step);
+      watch.observe(mechanics_.free_drift(), most_steps - (taken + 1));
     } catch (const std::exception& e) {
       throw std::runtime_error("DDA step " + which() + " (t = " + std::to_string(mechanics_.time()) + " s): " + e.what());
     }
@@ -341,6 +351,8 @@ void StaggeredLoop::step_mechanics(PassReport& report) {
   }
   report.settling_steps = taken - settings_.steps_per_pass;
   report.at_rest = settings_.settle_steps == 0 || at_rest;
+  const bool stopped_drifting = !report.at_rest && taken < most_steps && watch.cannot_come_to_rest();
+  report.drifting_block = stopped_drifting ? watch.drifting_block() : -1;
   // The DDA's contact list goes while the flow model factors and the fields are written.
   mechanics_.release_step_buffers();
   report.mechanics_seconds = seconds_since(start);

@@ -47,7 +47,9 @@ struct LoopSettings {
   int ramp_passes = 1;
   int steps_per_pass = 100;       // DDA steps run in each pass
   // Then up to this many more, until the blocks are at rest (dda::System::is_at_rest);
-  // 0: none. A pass that ends with them still moving does not count as converged.
+  // 0: none. A pass that ends with them still moving does not count as converged. It stops
+  // sooner once steps_per_pass steps in a row have each moved a block freely that cannot come
+  // to rest within the steps left (coupling/settling_watch.hpp).
   int settle_steps = 0;
   // A loop whose change (the larger of the two norms) grew this many passes in a row, and by
   // diverging_growth over them, is reported as diverging (0 passes: never). A converging

@@ -879,6 +879,7 @@ StepReport System::step() {
     if (settled && largest <= allowed_displacement_) {
       report.max_displacement = largest;
       contact_search_.add_motion(largest);
+      measure_free_drift(d, report);
       std::vector<Point> translation(blocks_.size());
       for (std::size_t bi = 0; bi < blocks_.size(); ++bi)
         if (blocks_[bi].dof >= 0) translation[bi] = {d[6 * blocks_[bi].dof], d[6 * blocks_[bi].dof + 1]};

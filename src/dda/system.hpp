@@ -14,6 +14,7 @@
 #include "dda/block_kernels.hpp"
 #include "dda/contact_detection.hpp"
 #include "dda/contact_search.hpp"
+#include "dda/free_drift.hpp"
 #include "dda/initial_stress.hpp"
 #include "dda/definitions.hpp"
 #include "dda/linear_solver.hpp"
@@ -44,6 +45,14 @@ struct StepReport {
   // the magnitudes of the forces on the block; the block it was largest on (−1: none).
   double unbalanced_force_ratio = 0.0;
   int unbalanced_block = -1;
+  // Of the blocks the step moved freely (by more than the at-rest test allows, held by
+  // nothing at rest) and that will land at this step's rates, on what is at rest or behind a
+  // block that lands first: the most steps one takes to land, and that block (0 and −1: no
+  // such block); a block the step moved freely that meets nothing (−1: none). Each block's:
+  // System::free_drift().
+  double free_drift_steps = 0.0;
+  int free_drift_block = -1;
+  int block_meeting_nothing = -1;
 };
 
 // How a bond (a face of intact rock between two sub-blocks) failed.
@@ -115,6 +124,10 @@ class System {
   // the forces on it (a body that nothing holds moves by F Δt²/2M a static step, which the
   // displacement test alone passes when Δt is short).
   bool is_at_rest(const StepReport& step) const;
+  // The largest vertex displacement a step may make and leave the blocks at rest (m).
+  double at_rest_displacement() const { return settings_.static_tolerance * model_size_; }
+  // Each block's displacement in the last step and the steps it takes to land at its rates.
+  const FreeDrift& free_drift() const { return free_drift_; }
   // Whether a step ran at settings.time_step, not cut short (by an open–close iteration that
   // did not settle, or a displacement past the allowed one).
   bool ran_at_full_time_step(const StepReport& step) const;
@@ -299,8 +312,12 @@ class System {
   void start_from_tried_multipliers();
   // After commit_step: the step's unbalanced force into `report` (unbalanced_force.cpp).
   void measure_unbalanced_force(const std::vector<Point>& step_translation, double dt, StepReport& report) const;
+  // Before commit_step: how long the blocks that move freely in the step d take to meet
+  // anything, into free_drift_ and `report` (free_drift.cpp).
+  void measure_free_drift(const Eigen::VectorXd& d, StepReport& report);
 
   std::vector<Block> blocks_;
+  FreeDrift free_drift_;  // of the last step
   std::vector<Material> materials_;
   std::vector<Eigen::Matrix3d> elasticity_;
   // A joint type's strengths as the contact laws read them.

@@ -205,7 +205,12 @@ void CoupledRecorder::log_pass(const coupling::PassReport& r) const {
   if (scenario_.coupling.settle)
     spdlog::debug("iteration {}: {} more DDA steps to rest{}", r.iteration, r.settling_steps,
                   r.at_rest ? "" : ", and the blocks still move");
-  if (!r.at_rest)
+  if (!r.at_rest && r.drifting_block >= 0)
+    spdlog::warn("coupling iteration {}: the blocks still moved after the pass's DDA steps and {} more to "
+                 "settle (coupling.settle), block {} moving freely, not slowing, and at its steps' rate landing "
+                 "only after the settle steps left, so the pass stopped there; the pass does not count as converged",
+                 r.iteration, r.settling_steps, r.drifting_block);
+  else if (!r.at_rest)
     spdlog::warn("coupling iteration {}: the blocks still moved after the pass's DDA steps and {} more to "
                  "settle (coupling.settle); the pass does not count as converged",
                  r.iteration, r.settling_steps);
