@@ -20,6 +20,13 @@ namespace hydrodda::run {
 namespace {
 using Clock = std::chrono::steady_clock;
 
+// A material's drained bulk modulus in the plane (0 without elastic constants): E/(2(1 + ν)(1 − 2ν))
+// in plane strain (λ + μ: tr σ = 2 K_dr ε_v), E/(2(1 − ν)) in plane stress.
+double drained_bulk_modulus(const scenario::MaterialDefinition& material, bool plane_strain) {
+  const double young = material.young.value_or(0.0), nu = material.poisson.value_or(0.0);
+  return plane_strain ? young / (2.0 * (1.0 + nu) * (1.0 - 2.0 * nu)) : young / (2.0 * (1.0 - nu));
+}
+
 // The fixed-stress split's matrix storage per element (1/Pa): its material's 1/M (`storage`)
 // plus α²/K_dr, K_dr the drained bulk modulus in the plane, E/(2(1 + ν)(1 − 2ν)) in plane
 // strain and E/(2(1 − ν)) in plane stress (Kim, Tchelepi & Juanes 2011).
@@ -31,8 +38,7 @@ coupling::PseudoTimeSettings make_pseudo_time_settings(const scenario::Scenario&
   const bool strain = s.mechanics->plane == dda::Plane::strain;
   for (int m : find_element_materials(s, mesh)) {
     const scenario::MaterialDefinition& material = s.materials[m >= 0 ? m : 0];
-    const double young = material.young.value_or(0.0), nu = material.poisson.value_or(0.0);
-    const double bulk = strain ? young / (2.0 * (1.0 + nu) * (1.0 - 2.0 * nu)) : young / (2.0 * (1.0 - nu));
+    const double bulk = drained_bulk_modulus(material, strain);
     const double alpha = material.biot_coefficient;
     pseudo.matrix_storage.push_back(material.storage + (bulk > 0.0 ? alpha * alpha / bulk : 0.0));
   }
@@ -49,10 +55,9 @@ coupling::FixedStressSettings make_fixed_stress_settings(const scenario::Scenari
   const bool strain = s.mechanics->plane == dda::Plane::strain;
   for (const dda::BlockDefinition& b : blocks) {
     const scenario::MaterialDefinition& material = s.materials[b.material];
-    const double young = material.young.value_or(0.0), nu = material.poisson.value_or(0.0);
     fixed.storage.push_back(material.storage);
     fixed.biot.push_back(material.biot_coefficient);
-    fixed.drained_bulk.push_back(strain ? young / (2.0 * (1.0 + nu) * (1.0 - 2.0 * nu)) : young / (2.0 * (1.0 - nu)));
+    fixed.drained_bulk.push_back(drained_bulk_modulus(material, strain));
   }
   return fixed;
 }
