@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The table of docs/studies/2026-11-30-brazilian-disc.md: the Brazilian disc of
+"""The table of docs/studies/2026-11-29-brazilian-disc.md: the Brazilian disc of
 scenarios/verification/brazilian_disc.toml (D = 1 m, flats 2b = 0.1 m, bonds of T = 1 MPa) at
 three sizes of its triangle sub-blocks and in Voronoi cells: the Brazilian tension
 sigma_t = 2 P / (pi D t) at its first break over T, the breaks by the run's end, where they lie,

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The tables of docs/studies/2026-11-30-sneddon-crack-at-rest.md: the opening of the crack of
+"""The tables of docs/studies/2026-11-29-sneddon-crack-at-rest.md: the opening of the crack of
 scenarios/verification/sneddon_crack.toml against Sneddon's w(s) = 4 (1 - nu^2) p / E sqrt(a^2 - s^2)
 at its centre (s = 0.001 m) and at s = a/2, by the plate's mechanics alone under a remote
 tension sigma = p at its top (the same opening in an elastic continuum), stepped to rest, at

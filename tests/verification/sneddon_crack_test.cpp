@@ -14,7 +14,7 @@
 // - the fluid loads the crack's faces and nothing else: the intact plate, loaded on no intact
 //   bond's faces, does not open (under 1e-9 m; measured 8e-17 m).
 // Convergence with the size and Voronoi cells against triangles:
-// docs/studies/2026-11-30-sneddon-crack-at-rest.md.
+// docs/studies/2026-11-29-sneddon-crack-at-rest.md.
 
 #include <gtest/gtest.h>
 
