@@ -424,7 +424,10 @@ bool BlockCholesky::factorise(const BlockMatrix& a, const std::vector<int>& orde
 }
 
 bool BlockCholesky::factorise(const BlockMatrix& a, const RankOneTerms& springs, const std::vector<int>& order) {
-  clear();
+  // Every array below is written afresh; a factor made before keeps its memory for them, as
+  // the open–close passes factor the same pattern again and again (fresh memory each time is
+  // pages the kernel clears first).
+  block_count_ = 0;
   const int n = a.block_count;
   position_.resize(n);
   for (int k = 0; k < n; ++k) position_[order[k]] = k;
