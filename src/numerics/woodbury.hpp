@@ -17,7 +17,17 @@ class WoodburyCapacitance {
  public:
   // Factors C = σ + Wᵀ W (by partial pivoting: C is symmetric but indefinite where σ has
   // downdates).
-  void factor(const Eigen::MatrixXd& c) { lu_.compute(c); }
+  // On one thread: past some 100 rows Eigen's blocked LU runs its products on OpenMP's threads
+  // whatever the program's own thread count (numerics/parallel.hpp): with `--threads 1` on a
+  // loaded host, and the DDA's block solver following 256 springs, 30% of a 1,601-block wall's
+  // run was those threads and their barriers (docs/studies/2026-11-29-wall-open-close-passes.md).
+  // Called from one thread at a time.
+  void factor(const Eigen::MatrixXd& c) {
+    const int threads = Eigen::nbThreads();
+    Eigen::setNbThreads(1);
+    lu_.compute(c);
+    Eigen::setNbThreads(threads);
+  }
   // Whether M + U S Uᵀ is singular to working precision: C's reciprocal condition number
   // estimate at most `smallest`.
   bool singular(double smallest) const { return !(lu_.rcond() > smallest); }
