@@ -110,7 +110,8 @@ int run_app(int argc, char** argv) {
       "scenario copy saved there (no SCENARIO)");
   int stop_after = 0;
   run_cmd->add_option("--stop-after", stop_after,
-                      "Coupled runs: stop after this coupling iteration, resumable with --resume")
+                      "Coupled runs: stop after this coupling iteration (a coupled transient run: this time step), resumable "
+                      "with --resume")
       ->check(kWholeNumberFromOne);
   std::string mesh_cache;
   CLI::Option* mesh_cache_opt = run_cmd->add_option(

@@ -28,7 +28,7 @@ std::optional<run::ResumedRun> open_resumed_run(const std::filesystem::path& dir
   if (!scenario) return std::nullopt;
   run::check_resumable(directory, *scenario, saved);
   return run::ResumedRun{directory, std::move(*scenario), std::move(saved.scenario_text), std::move(saved.checkpoint),
-                         std::move(saved.transient)};
+                         std::move(saved.transient), std::move(saved.coupled_transient)};
 }
 
 // The exit code of a run that went as far as running, and the line that says how it ended.

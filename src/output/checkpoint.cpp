@@ -350,6 +350,69 @@ void get_input_files(Reader& r, std::vector<InputFile>& files) {
   }
 }
 
+// The coupling loop's state (LoopState), in one order for both checkpoints.
+void write_loop_state(Writer& w, const coupling::LoopState& coupling) {
+  w.put(coupling.iterations);
+  const hydro::FlowSolution& flow = coupling.flow;
+  visit_flow([&](const auto& v) { w.put(v); }, flow);
+  w.put(static_cast<std::int64_t>(flow.boundary_flows.size()));
+  for (const hydro::BoundaryFlow& b : flow.boundary_flows) {
+    w.put(b.name);
+    w.put(b.flow);
+  }
+  w.put(coupling.previous_heads);
+  w.put(coupling.previous_displacements);
+  w.put(coupling.growth.passes);
+  w.put(coupling.growth.base);
+  w.put(coupling.growth.last);
+  w.put(coupling.heads_two_back);
+  w.put(coupling.previous_update);
+  w.put(coupling.relaxation);
+  w.put(coupling.anderson_residuals);
+  w.put(coupling.anderson_images);
+  w.put(coupling.kept_factor_permeability);
+  w.put(static_cast<std::int64_t>(coupling.kept_factor_single_precision));
+  w.put(coupling.porosity.fracture_area);
+  w.put(coupling.porosity.porosity);
+  w.put(coupling.permeability);
+  w.put(coupling.permeability_tensors);
+}
+
+void read_loop_state(Reader& r, coupling::LoopState& s) {
+  r.get(s.iterations);
+  visit_flow([&](auto& v) { r.get(v); }, s.flow);
+  std::int64_t boundaries = 0;
+  r.get(boundaries);
+  if (boundaries < 0 || boundaries > kMaxCount) r.fail();
+  for (std::int64_t i = 0; i < boundaries; ++i) {
+    hydro::BoundaryFlow b;
+    r.get(b.name);
+    r.get(b.flow);
+    s.flow.boundary_flows.push_back(std::move(b));
+  }
+  r.get(s.previous_heads);
+  r.get(s.previous_displacements);
+  r.get(s.growth.passes);
+  r.get(s.growth.base);
+  r.get(s.growth.last);
+  r.get(s.heads_two_back);
+  r.get(s.previous_update);
+  r.get(s.relaxation);
+  r.get(s.anderson_residuals);
+  r.get(s.anderson_images);
+  std::vector<hydro::PermeabilityTensor> kept;
+  r.get(kept);
+  if (!kept.empty()) s.kept_factor_permeability = std::make_shared<const hydro::PermeabilityField>(kept);
+  std::int64_t single_precision = 0;
+  r.get(single_precision);
+  if (single_precision != 0 && single_precision != 1) r.fail();
+  s.kept_factor_single_precision = single_precision == 1;
+  r.get(s.porosity.fracture_area);
+  r.get(s.porosity.porosity);
+  r.get(s.permeability);
+  r.get(s.permeability_tensors);
+}
+
 }  // namespace
 
 std::uint64_t hash_text(std::string_view text) {
@@ -384,30 +447,7 @@ void put_checkpoint(Writer& w, const RunCheckpoint& c, const dda::SystemState& m
   w.put(c.refined_tips);
   w.put(c.recent_tips);
   write_mechanics(w, mechanics);
-  w.put(coupling.iterations);
-  const hydro::FlowSolution& flow = coupling.flow;
-  visit_flow([&](const auto& v) { w.put(v); }, flow);
-  w.put(static_cast<std::int64_t>(flow.boundary_flows.size()));
-  for (const hydro::BoundaryFlow& b : flow.boundary_flows) {
-    w.put(b.name);
-    w.put(b.flow);
-  }
-  w.put(coupling.previous_heads);
-  w.put(coupling.previous_displacements);
-  w.put(coupling.growth.passes);
-  w.put(coupling.growth.base);
-  w.put(coupling.growth.last);
-  w.put(coupling.heads_two_back);
-  w.put(coupling.previous_update);
-  w.put(coupling.relaxation);
-  w.put(coupling.anderson_residuals);
-  w.put(coupling.anderson_images);
-  w.put(coupling.kept_factor_permeability);
-  w.put(static_cast<std::int64_t>(coupling.kept_factor_single_precision));
-  w.put(coupling.porosity.fracture_area);
-  w.put(coupling.porosity.porosity);
-  w.put(coupling.permeability);
-  w.put(coupling.permeability_tensors);
+  write_loop_state(w, coupling);
   w.finish();
 }
 }  // namespace
@@ -441,38 +481,7 @@ RunCheckpoint decode_checkpoint(std::string_view file) {
   if (c.refined_tips.size() % 5 != 0) r.fail();
   r.get(c.recent_tips);
   read_mechanics(r, c.mechanics);
-  r.get(c.coupling.iterations);
-  visit_flow([&](auto& v) { r.get(v); }, c.coupling.flow);
-  std::int64_t boundaries = 0;
-  r.get(boundaries);
-  if (boundaries < 0 || boundaries > kMaxCount) r.fail();
-  for (std::int64_t i = 0; i < boundaries; ++i) {
-    hydro::BoundaryFlow b;
-    r.get(b.name);
-    r.get(b.flow);
-    c.coupling.flow.boundary_flows.push_back(std::move(b));
-  }
-  r.get(c.coupling.previous_heads);
-  r.get(c.coupling.previous_displacements);
-  r.get(c.coupling.growth.passes);
-  r.get(c.coupling.growth.base);
-  r.get(c.coupling.growth.last);
-  r.get(c.coupling.heads_two_back);
-  r.get(c.coupling.previous_update);
-  r.get(c.coupling.relaxation);
-  r.get(c.coupling.anderson_residuals);
-  r.get(c.coupling.anderson_images);
-  std::vector<hydro::PermeabilityTensor> kept;
-  r.get(kept);
-  if (!kept.empty()) c.coupling.kept_factor_permeability = std::make_shared<const hydro::PermeabilityField>(kept);
-  std::int64_t single_precision = 0;
-  r.get(single_precision);
-  if (single_precision != 0 && single_precision != 1) r.fail();
-  c.coupling.kept_factor_single_precision = single_precision == 1;
-  r.get(c.coupling.porosity.fracture_area);
-  r.get(c.coupling.porosity.porosity);
-  r.get(c.coupling.permeability);
-  r.get(c.coupling.permeability_tensors);
+  read_loop_state(r, c.coupling);
   r.expect_end();
   return c;
 }
@@ -553,6 +562,80 @@ TransientCheckpoint decode_transient_checkpoint(std::string_view file) {
     r.get(b.flow);
     c.state.boundary_flows.push_back(std::move(b));
   }
+  r.expect_end();
+  return c;
+}
+
+}  // namespace hydrodda::output
+
+// The coupled transient run's checkpoint: its own magic line and version, the Writer and Reader
+// and the engines' records above.
+namespace hydrodda::output {
+
+namespace {
+
+constexpr std::string_view kCoupledTransientMagic = "hydrodda coupled transient checkpoint\n";
+constexpr std::int64_t kCoupledTransientVersion = 1;
+
+// The fields after the header and before the engines' states, in one order for both ways.
+template <class Io, class Checkpoint>
+void visit_coupled_transient(Io&& io, Checkpoint& c) {
+  io(c.ended);
+  io(c.steps);
+  io(c.time);
+  io(c.nominal_step);
+  io(c.next_stop);
+  io(c.history);
+  io(c.probes);
+  io(c.measure);
+  io(c.output_times);
+  io(c.times);
+  io(c.storage_rates);
+  io(c.boundary_flows);
+  io(c.probe_pressures);
+  io(c.fracture_counts);
+}
+
+}  // namespace
+
+bool is_coupled_transient_checkpoint(std::string_view bytes) {
+  return bytes.substr(0, kCoupledTransientMagic.size()) == kCoupledTransientMagic;
+}
+
+std::string encode_coupled_transient_checkpoint(const CoupledTransientCheckpoint& c) {
+  return encode_coupled_transient_checkpoint(c, c.mechanics, c.coupling);
+}
+
+std::string encode_coupled_transient_checkpoint(const CoupledTransientCheckpoint& c, const dda::SystemState& mechanics,
+                                                const coupling::LoopState& coupling) {
+  std::string bytes;
+  Writer w([&](std::string_view piece) { bytes += piece; });
+  for (char ch : kCoupledTransientMagic) w.put_raw(ch);
+  w.put(kCoupledTransientVersion);
+  w.put_raw(kByteOrderMark);
+  w.put(c.scenario_hash);
+  w.put(c.scenario_file);
+  put_input_files(w, c.input_files);
+  visit_coupled_transient([&](const auto& v) { w.put(v); }, c);
+  write_mechanics(w, mechanics);
+  write_loop_state(w, coupling);
+  w.put(coupling.flow.storage_rate);
+  w.finish();
+  return bytes;
+}
+
+CoupledTransientCheckpoint decode_coupled_transient_checkpoint(std::string_view file) {
+  if (!is_coupled_transient_checkpoint(file)) throw CheckpointError("not a hydrodda coupled transient checkpoint");
+  Reader r = open_checked(file, kCoupledTransientMagic, kCoupledTransientVersion, "coupled transient checkpoint");
+  CoupledTransientCheckpoint c;
+  r.get(c.scenario_hash);
+  r.get(c.scenario_file);
+  get_input_files(r, c.input_files);
+  visit_coupled_transient([&](auto& v) { r.get(v); }, c);
+  if (c.steps < 0 || c.next_stop < 0 || c.fracture_counts.size() % 5 != 0) r.fail();
+  read_mechanics(r, c.mechanics);
+  read_loop_state(r, c.coupling);
+  r.get(c.coupling.flow.storage_rate);
   r.expect_end();
   return c;
 }

@@ -91,6 +91,47 @@ TransientCheckpoint decode_transient_checkpoint(std::string_view bytes);
 // The bytes begin as a transient run's checkpoint does (which of the two to decode).
 bool is_transient_checkpoint(std::string_view bytes);
 
+// The checkpoint of a coupled transient run ([mechanics] with [flow.transient]), in the same file
+// (checkpoint.bin), written at t = 0, at each output time, when the run is interrupted and at
+// its end: the state after its last finished step, where its step control stands, and what its
+// files and figures hold so far, so that a resumed run continues bit for bit. Format as above,
+// under its own magic line "hydrodda coupled transient checkpoint\n" and version.
+struct CoupledTransientCheckpoint {
+  std::uint64_t scenario_hash = 0;
+  std::string scenario_file;
+  std::vector<InputFile> input_files;
+  // The run ended: it reached end_time, or a step failed at the floor (nothing to resume).
+  bool ended = false;
+  // The step control (run::StepPosition): steps taken, the time they reached, the nominal length
+  // of the next step and the index of the next stop it lands on (run::find_step_stops).
+  int steps = 0;
+  double time = 0.0;
+  double nominal_step = 0.0;
+  int next_stop = 0;
+  std::vector<std::vector<std::string>> history;  // history.csv rows so far, header excluded
+  std::vector<std::vector<std::string>> probes;   // probes.csv rows so far
+  std::vector<std::vector<std::string>> measure;  // measure.csv rows so far
+  std::vector<double> output_times;  // the times of the fields_NNNN.vtu written, NNNN the index
+  // The figures' series so far: each step's time, rate of storage, each [[flow.boundary]]'s
+  // outward flow and each probe's pressure then, and with fractures five numbers a step
+  // (open, partly open, open length, largest opening, largest hydraulic aperture).
+  std::vector<double> times, storage_rates;
+  std::vector<std::vector<double>> boundary_flows, probe_pressures;
+  std::vector<double> fracture_counts;
+  dda::SystemState mechanics;
+  coupling::LoopState coupling;  // its flow's storage_rate included
+};
+
+std::string encode_coupled_transient_checkpoint(const CoupledTransientCheckpoint& checkpoint);
+// The same bytes with the engines' states given apart (checkpoint.mechanics and .coupling are
+// not read).
+std::string encode_coupled_transient_checkpoint(const CoupledTransientCheckpoint& checkpoint,
+                                                const dda::SystemState& mechanics, const coupling::LoopState& coupling);
+// Throws CheckpointError when the bytes are not a whole coupled transient checkpoint of this
+// format (one of an older format says which it is and which this hydrodda reads).
+CoupledTransientCheckpoint decode_coupled_transient_checkpoint(std::string_view bytes);
+bool is_coupled_transient_checkpoint(std::string_view bytes);
+
 // 64-bit FNV-1a of a text: tells a scenario edited since the run started.
 std::uint64_t hash_text(std::string_view text);
 

@@ -62,6 +62,15 @@ void FracturesInTime::record(long long step, double time) {
   counts_.push_back(count_fractures(*state_));
 }
 
+void FracturesInTime::resume(int steps, const std::vector<double>& written_times, std::vector<FractureCounts> counts) {
+  if (!meter_) return;
+  output_.continue_in_time(steps, written_times);
+  counts_ = std::move(counts);
+  const dda::System& system = model_.mechanics();
+  state_ = meter_->measure(model_.block_polygons(), system.penetration_tolerance(), system.contacts(), joint_laws_);
+  meter_->add_flow(*state_, flow_zones_, model_.mesh(), model_.loop().flow());
+}
+
 void FracturesInTime::write_series(int written, double time) {
   if (state_ && context_.scenario.output.fields.fractures) output_.write_series(written, time, *state_);
 }

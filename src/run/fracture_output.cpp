@@ -54,6 +54,19 @@ std::vector<std::string> fracture_type_names(const scenario::Scenario& s) {
 }
 
 void FractureOutput::continue_from(int last_step, const std::vector<int>& written) {
+  keep_rows_up_to(last_step);
+  if (!series_) series_.emplace(folder_.file("fractures.pvd"));
+  for (int step : written) list_if_present(*series_, folder_, step, fmt::format("fractures_{:04d}.vtu", step));
+}
+
+void FractureOutput::continue_in_time(int last_step, const std::vector<double>& written_times) {
+  keep_rows_up_to(last_step);
+  if (!series_) series_.emplace(folder_.file("fractures.pvd"));
+  for (std::size_t i = 0; i < written_times.size(); ++i)
+    list_if_present(*series_, folder_, written_times[i], fmt::format("fractures_{:04d}.vtu", i));
+}
+
+void FractureOutput::keep_rows_up_to(int last_step) {
   std::ifstream in(folder_.file("fractures.csv"));
   std::string line;
   std::getline(in, line);  // the header
@@ -64,8 +77,6 @@ void FractureOutput::continue_from(int last_step, const std::vector<int>& writte
     // Rows of a pass after the checkpoint (written before the run stopped) are left out.
     if (cells.size() == columns(with_flow_, with_bonds_).size() && std::stoll(cells[0]) <= last_step) table_.add_row(cells);
   }
-  if (!series_) series_.emplace(folder_.file("fractures.pvd"));
-  for (int step : written) list_if_present(*series_, folder_, step, fmt::format("fractures_{:04d}.vtu", step));
 }
 
 void FractureOutput::add_rows(long long step, double time, const fractures::FractureState& state) {

@@ -38,6 +38,8 @@ class FractureOutput {
   // again the .vtu files an earlier part of the run wrote at `written` (time = step) that are
   // still there.
   void continue_from(int last_step, const std::vector<int>& written);
+  // The same for a coupled transient run: fractures_NNNN.vtu listed at `written_times`[NNNN].
+  void continue_in_time(int last_step, const std::vector<double>& written_times);
   // One step's rows, written at once.
   void add_rows(long long step, double time, const fractures::FractureState& state);
   // A model with bonds: fractures.csv gets the columns mode, x1, y1, x2, y2 (empty on the
@@ -56,6 +58,10 @@ class FractureOutput {
   std::vector<std::string> types_;
   output::CsvTable table_;
   std::optional<output::PvdSeries> series_;
+
+  // fractures.csv's rows up to `last_step` (those of later steps, written before the run
+  // stopped, left out).
+  void keep_rows_up_to(int last_step);
 };
 
 // What a figure shows: at which coupling iteration or DDA step, and how the run ended when not

@@ -73,6 +73,15 @@ void ParaviewOutput::list_written_fluid(const std::vector<double>& times) {
     list_if_present(*fluid_, folder_, times[i], fmt::format("fluid_{:04d}.vtu", i));
 }
 
+void ParaviewOutput::list_written_at(const std::vector<double>& times) {
+  if (fields_.fluid && !fluid_) fluid_.emplace(folder_.file("fluid.pvd"));
+  if (fields_.blocks && !blocks_) blocks_.emplace(folder_.file("blocks.pvd"));
+  if (fields_.contacts && !contacts_) contacts_.emplace(folder_.file("contacts.pvd"));
+  for (std::size_t i = 0; i < times.size(); ++i)
+    for (auto [series, name] : {std::pair{&fluid_, "fluid"}, std::pair{&blocks_, "blocks"}, std::pair{&contacts_, "contacts"}})
+      if (*series) list_if_present(**series, folder_, times[i], fmt::format("{}_{:04d}.vtu", name, i));
+}
+
 void ParaviewOutput::write_blocks(int step, double time, const dda::System& system) {
   if (fields_.contacts) write_contacts(step, time, system);
   if (!fields_.blocks) return;

@@ -37,6 +37,9 @@ class ParaviewOutput {
   void list_written(const std::vector<int>& steps);
   // A continued transient run: lists again fluid_NNNN.vtu at times[NNNN], as it wrote them.
   void list_written_fluid(const std::vector<double>& times);
+  // A continued coupled transient run: lists again fluid_NNNN.vtu, blocks_NNNN.vtu and
+  // contacts_NNNN.vtu at times[NNNN], as it wrote them.
+  void list_written_at(const std::vector<double>& times);
 
  private:
   const output::RunFolder& folder_;

@@ -62,8 +62,8 @@ SavedRun read_saved_run(const fs::path& directory) {
   const fs::path checkpoint_file = directory / "checkpoint.bin";
   if (!fs::exists(checkpoint_file, ec))
     throw InputError(fmt::format("--resume {}: the folder holds no checkpoint.bin, so there is nothing to resume "
-                                 "(coupled runs write one after each coupling iteration, transient flow-only runs at each output time "
-                                 "and when interrupted; resuming a coupled transient run is not built yet)",
+                                 "(coupled runs write one after each coupling iteration, transient runs at each output time "
+                                 "and when interrupted)",
                                  dir));
   const std::optional<std::string> bytes = read_text_file(checkpoint_file);
   if (!bytes) throw InputError(fmt::format("--resume {}: cannot read {}", dir, checkpoint_file.string()));
@@ -74,6 +74,11 @@ SavedRun read_saved_run(const fs::path& directory) {
       run.checkpoint.scenario_hash = run.transient->scenario_hash;
       run.checkpoint.scenario_file = run.transient->scenario_file;
       run.checkpoint.input_files = run.transient->input_files;
+    } else if (output::is_coupled_transient_checkpoint(*bytes)) {
+      run.coupled_transient = output::decode_coupled_transient_checkpoint(*bytes);
+      run.checkpoint.scenario_hash = run.coupled_transient->scenario_hash;
+      run.checkpoint.scenario_file = run.coupled_transient->scenario_file;
+      run.checkpoint.input_files = run.coupled_transient->input_files;
     } else {
       run.checkpoint = output::decode_checkpoint(*bytes);
     }
@@ -107,15 +112,34 @@ void check_transient_resumable(const fs::path& directory, const scenario::Scenar
                                  checkpoint.time));
 }
 
+void check_coupled_transient_resumable(const fs::path& directory, const scenario::Scenario& scenario,
+                                       const output::CoupledTransientCheckpoint& checkpoint) {
+  const std::string dir = directory.string();
+  if (!scenario.mechanics || !scenario.flow || !scenario.flow->transient)
+    throw InputError(fmt::format("--resume {}: its checkpoint is a coupled transient run's, its scenario is not", dir));
+  if (!checkpoint.ended || !summary_records_end(directory, checkpoint.steps)) return;
+  if (checkpoint.time >= scenario.flow->transient->end_time)
+    throw InputError(fmt::format("--resume {}: the run already reached its end_time ({:g} s); nothing to resume", dir,
+                                 checkpoint.time));
+  throw InputError(fmt::format("--resume {}: the run ended not converged at t = {:g} s, its step there failed at the "
+                               "floor of its length (summary.json says why); nothing to resume",
+                               dir, checkpoint.time));
+}
+
 }  // namespace
 
 void check_resumable(const fs::path& directory, const scenario::Scenario& scenario, const SavedRun& saved) {
   if (saved.transient) return check_transient_resumable(directory, scenario, *saved.transient);
+  if (saved.coupled_transient) return check_coupled_transient_resumable(directory, scenario, *saved.coupled_transient);
   const output::RunCheckpoint& checkpoint = saved.checkpoint;
   const std::string dir = directory.string();
   if (!scenario.mechanics || !scenario.flow)
     throw InputError(fmt::format("--resume {}: only coupled runs ([mechanics] and [flow]) and transient flow-only runs "
                                  "([flow.transient]) can be resumed",
+                                 dir));
+  if (scenario.flow->transient)
+    throw InputError(fmt::format("--resume {}: its checkpoint is a steady coupled run's, its scenario has "
+                                 "[flow.transient]",
                                  dir));
   const int done = checkpoint.coupling.iterations;
   const bool ended = checkpoint.converged || done >= scenario.coupling.max_iterations;
@@ -133,7 +157,7 @@ ResumedRun open_resumed_run(const fs::path& directory) {
   scenario::Scenario scenario = scenario::parse_scenario(saved.scenario_text, saved.checkpoint.scenario_file);
   check_resumable(directory, scenario, saved);
   return {directory, std::move(scenario), std::move(saved.scenario_text), std::move(saved.checkpoint),
-          std::move(saved.transient)};
+          std::move(saved.transient), std::move(saved.coupled_transient)};
 }
 
 }  // namespace hydrodda::run

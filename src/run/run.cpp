@@ -81,7 +81,8 @@ RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output:
                  const std::string& scenario_text, const output::RunCheckpoint* resume,
                  std::optional<int> stop_after, const Callbacks& callbacks,
                  const std::optional<fs::path>& mesh_cache = std::nullopt,
-                 const output::TransientCheckpoint* resume_transient = nullptr) {
+                 const output::TransientCheckpoint* resume_transient = nullptr,
+                 const output::CoupledTransientCheckpoint* resume_coupled_transient = nullptr) {
   if (stop_after && kind_of(s) != RunKind::coupled)
     throw InputError("--stop-after: only coupled runs ([mechanics] and [flow]) stop after an iteration");
   std::error_code ec;
@@ -102,7 +103,8 @@ RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output:
     written = summary;
   };
   const RunContext context{s,          folder,     callbacks,           scenario_text,   resume,
-                           stop_after, write_final_summary, mesh_cache, resume_transient};
+                           stop_after, write_final_summary, mesh_cache, resume_transient, resume_coupled_transient};
+  const bool resumed = resume || resume_transient || resume_coupled_transient;
   const RunKind kind = kind_of(s);
   if (const std::optional<std::string> capped = describe_capped_matrix(s)) spdlog::warn("{}", *capped);
   try {
@@ -121,7 +123,7 @@ RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output:
   } catch (const SummaryNotWritten& e) {
     // An earlier run's summary.json (--overwrite) would be taken for this run's: removed. A
     // resumed run's is of the run it continues, and stays; so does anything not a file.
-    if (!resume && !resume_transient && fs::is_regular_file(fs::symlink_status(folder.file("summary.json"), ec)))
+    if (!resumed && fs::is_regular_file(fs::symlink_status(folder.file("summary.json"), ec)))
       fs::remove(folder.file("summary.json"), ec);
     return report_unwritten_summary(e, kind, folder.path());
   } catch (const RunFailure& failure) {
@@ -132,7 +134,7 @@ RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output:
               fmt::format("{} (summary.json holds the run's result)", e.what()), *written, folder.path()};
     // A resumed run that could not take up its state (its model no longer fits the checkpoint)
     // has no result of its own: the folder's summary.json, of the run it continues, is kept.
-    if (resume || resume_transient)
+    if (resumed)
       throw InputError(fmt::format("--resume {}: the run could not be continued: {}; its summary.json is left as it "
                                    "was",
                                    directory.string(), e.what()));
@@ -181,6 +183,9 @@ RunResult resume(const ResumedRun& resumed, std::optional<int> stop_after, const
   if (resumed.transient)
     return run_in(resumed.scenario, resumed.folder, output::ExistingFolder::Continue, resumed.scenario_text, nullptr,
                   stop_after, callbacks, std::nullopt, &*resumed.transient);
+  if (resumed.coupled_transient)
+    return run_in(resumed.scenario, resumed.folder, output::ExistingFolder::Continue, resumed.scenario_text, nullptr,
+                  stop_after, callbacks, std::nullopt, nullptr, &*resumed.coupled_transient);
   return run_in(resumed.scenario, resumed.folder, output::ExistingFolder::Continue, resumed.scenario_text,
                 &resumed.checkpoint, stop_after, callbacks);
 }

@@ -35,6 +35,8 @@ struct RunContext {
   std::optional<std::filesystem::path> mesh_cache;
   // A transient flow-only run continued from its checkpoint (resume), or none.
   const output::TransientCheckpoint* resume_transient = nullptr;
+  // A coupled transient run continued from its checkpoint (resume), or none.
+  const output::CoupledTransientCheckpoint* resume_coupled_transient = nullptr;
 
   void report(const ProgressReport& report) const {
     if (callbacks.progress) callbacks.progress(report);

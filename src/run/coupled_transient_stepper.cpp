@@ -1,0 +1,128 @@
+// The coupled transient run's steps (coupled_transient_stepper.hpp): each tried, cut by half
+// from the last step's end while it fails, to the floor.
+
+#include "run/coupled_transient_stepper.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <stdexcept>
+
+#include "coupling/staggered_loop.hpp"
+
+namespace hydrodda::run {
+
+namespace {
+
+// Counts a step's passes and keeps its last; stops at the stop request.
+class StepObserver final : public coupling::PassObserver {
+ public:
+  explicit StepObserver(const std::function<bool()>& stop_requested) : stop_requested_(stop_requested) {}
+  bool stop_requested() override { return stop_requested_ && stop_requested_(); }
+  void after_pass(const coupling::PassReport& report) override {
+    ++passes;
+    last = report;
+  }
+  int passes = 0;
+  coupling::PassReport last;
+
+ private:
+  const std::function<bool()>& stop_requested_;
+};
+
+// How one attempt at a step ended: converged, or why not.
+struct Attempt {
+  bool converged = false;
+  bool interrupted = false;
+  std::string why;
+};
+
+Attempt try_step(CoupledModel& model, StepObserver& observer, double time, double length) {
+  const scenario::Scenario& s = model.scenario();
+  model.begin_time_step(time, length);
+  coupling::LoopResult result;
+  try {
+    result = model.run({model.iterations() + s.coupling.max_iterations, std::nullopt}, observer);
+  } catch (const coupling::PassInterrupted&) {
+    return {false, true, ""};
+  } catch (const std::exception& e) {
+    model.abandon_pass();
+    return {false, false, e.what()};
+  }
+  switch (result.end) {
+    case coupling::LoopEnd::converged: return {true, false, ""};
+    case coupling::LoopEnd::stop_requested: return {false, true, ""};
+    case coupling::LoopEnd::diverging: return {false, false, "its iterations diverged"};
+    case coupling::LoopEnd::escaping: return {false, false, "blocks escaped beyond their own size"};
+    default: {
+      const coupling::PassReport& r = observer.last;
+      return {false, false,
+              fmt::format("its iterations did not converge in {} (coupling.max_iterations; head change {:.3e}, "
+                          "displacement change {:.3e}, tolerance {:g})",
+                          s.coupling.max_iterations, r.head_change, r.displacement_change, s.coupling.tolerance)};
+    }
+  }
+}
+
+}  // namespace
+
+CoupledTransientStepper::CoupledTransientStepper(CoupledModel& model)
+    : model_(model),
+      control_(make_step_control(model.scenario())),
+      stops_(find_step_stops(model.scenario())),
+      end_time_(model.scenario().flow->transient->end_time),
+      position_{0, 0.0, control_.first_step, 0},
+      saved_(model.export_state()) {}
+
+void CoupledTransientStepper::resume_at(const StepPosition& position) {
+  if (position.steps < 0 || position.next_stop < 0 || position.next_stop >= static_cast<int>(stops_.size()) + 1 ||
+      !(position.nominal > 0.0))
+    throw std::invalid_argument("the step position does not fit this scenario's steps");
+  position_ = position;
+  record_ = StepRecord{position.steps, position.time, 0.0, 0, 0, {}};
+  saved_ = model_.export_state();
+}
+
+CoupledTransientStepper::Outcome CoupledTransientStepper::step(const std::function<bool()>& stop_requested) {
+  if (finished()) throw std::logic_error("CoupledTransientStepper::step: the run has ended");
+  const double time = position_.time;
+  const double stop = stops_[static_cast<std::size_t>(position_.next_stop)];
+  StepObserver observer(stop_requested);
+  int cuts = 0;
+  double length = land_on_stop(time, position_.nominal, stop);
+  Attempt attempt;
+  for (;;) {
+    attempt = try_step(model_, observer, time, length);
+    if (attempt.converged || attempt.interrupted) break;
+    model_.import_state(saved_);  // back to the last step's end
+    if (length / 2.0 < control_.floor) break;
+    spdlog::info("t = {:g} s: the step of {:g} s failed ({}); cut to {:g} s", time, length, attempt.why, length / 2);
+    length /= 2.0;
+    ++cuts;
+  }
+  if (attempt.interrupted) {
+    model_.import_state(saved_);
+    return Outcome::interrupted;
+  }
+  if (!attempt.converged) {
+    failed_ = true;
+    failure_ = fmt::format("not converged at t = {:g} s: the step from there failed at {:g} s after {} cut(s), and "
+                           "half of it would be under the floor of {:g} s (flow.transient.time_step / 2^{}); the "
+                           "last try: {}",
+                           time, length, cuts, control_.floor, kMostCuts, attempt.why);
+    return Outcome::failed;
+  }
+  const bool landed = length == stop - time;
+  position_.time = landed ? stop : time + length;
+  if (landed) ++position_.next_stop;
+  ++position_.steps;
+  saved_ = model_.export_state();
+  record_ = {position_.steps, position_.time, length, observer.passes, cuts, observer.last};
+  // A cut step's length is where the next starts from; a full one grows when it came easily.
+  const double nominal = position_.nominal;
+  position_.nominal =
+      cuts > 0 ? length : (landed && length < nominal ? nominal : grow_step(control_, length, observer.passes));
+  return Outcome::stepped;
+}
+
+}  // namespace hydrodda::run
