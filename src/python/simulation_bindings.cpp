@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <atomic>
@@ -25,6 +26,7 @@
 #include "python/model_fields.hpp"
 #include "python/python_callbacks.hpp"
 #include "run/coupled_model.hpp"
+#include "run/coupled_transient_model.hpp"
 #include "run/model_building.hpp"
 #include "run/flow_model.hpp"
 #include "run/mechanics_model.hpp"
@@ -114,17 +116,23 @@ class Simulation {
           else model_ = std::make_unique<run::FlowModel>(scenario.definition);
           break;
         case run::RunKind::mechanics: model_ = std::make_unique<run::MechanicsModel>(scenario.definition); break;
-        case run::RunKind::coupled: model_ = std::make_unique<run::CoupledModel>(scenario.definition); break;
+        case run::RunKind::coupled:
+          if (scenario.definition.flow->transient)
+            model_ = std::make_unique<run::CoupledTransientModel>(scenario.definition);
+          else
+            model_ = std::make_unique<run::CoupledModel>(scenario.definition);
+          break;
       }
     }
     callbacks.raise_pending();
   }
 
   std::string kind() const {
-    return std::holds_alternative<Flow>(model_)        ? "flow"
-           : std::holds_alternative<Transient>(model_) ? "transient"
-           : std::holds_alternative<Mechanics>(model_) ? "mechanics"
-                                                       : "coupled";
+    return std::holds_alternative<Flow>(model_)               ? "flow"
+           : std::holds_alternative<Transient>(model_)        ? "transient"
+           : std::holds_alternative<CoupledTransient>(model_) ? "coupled_transient"
+           : std::holds_alternative<Mechanics>(model_)        ? "mechanics"
+                                                              : "coupled";
   }
 
   // Flow only: the steady solve.
@@ -140,12 +148,15 @@ class Simulation {
     callbacks.raise_pending();
   }
 
-  // Mechanics: up to `count` DDA steps; transient flow: up to `count` time steps; fewer when
-  // the run reaches its end; the number taken. Ctrl-C stops after the step under way
-  // (KeyboardInterrupt).
+  // Mechanics: up to `count` DDA steps; transient flow or coupled transient: up to `count` time
+  // steps; fewer when the run reaches its end; the number taken. Ctrl-C stops after the step
+  // under way (KeyboardInterrupt); a coupled transient step is abandoned, the model left at the
+  // last step's end.
   long long step(long long count) {
     const ModelLock::Held held = lock_.hold("step()");
     if (auto* transient = std::get_if<Transient>(&model_)) return step_transient(**transient, count, std::nullopt);
+    if (auto* coupled = std::get_if<CoupledTransient>(&model_))
+      return step_coupled_transient(**coupled, count, std::nullopt);
     run::MechanicsModel& model = *expect<Mechanics>("step()");
     PythonCallbacks callbacks{py::none()};
     const run::Callbacks stop = callbacks.callbacks();
@@ -199,6 +210,7 @@ class Simulation {
   // end time, or any time of the plan: step_times); the number taken.
   long long advance_to(double t) {
     const ModelLock::Held held = lock_.hold("advance_to()");
+    if (auto* coupled = std::get_if<CoupledTransient>(&model_)) return advance_coupled_transient(**coupled, t);
     run::TransientModel& model = *expect<Transient>("advance_to()");
     const std::vector<double>& times = model.step_times();
     if (t < model.time())
@@ -215,6 +227,7 @@ class Simulation {
 
   double time() const {
     const ModelLock::Held held = lock_.hold("time");
+    if (const auto* coupled = std::get_if<CoupledTransient>(&model_)) return (*coupled)->time();
     return expect_const<Transient>("time")->time();
   }
 
@@ -227,8 +240,13 @@ class Simulation {
   // probes.csv's rows at the time now: (time, name, head, pressure), one per probe.
   py::list probes() const {
     const ModelLock::Held held = lock_.hold("probes");
-    const run::TransientModel& model = *expect_const<Transient>("probes");
     py::list rows;
+    if (const auto* coupled = std::get_if<CoupledTransient>(&model_)) {
+      for (const run::ProbeReading& r : (*coupled)->read_probes())
+        rows.append(py::make_tuple((*coupled)->time(), r.name, r.head, r.pressure));
+      return rows;
+    }
+    const run::TransientModel& model = *expect_const<Transient>("probes");
     for (const run::ProbeReading& r : model.read_probes()) rows.append(py::make_tuple(model.time(), r.name, r.head, r.pressure));
     return rows;
   }
@@ -244,7 +262,7 @@ class Simulation {
       return fluid_fields((*f)->mesh(), &(*f)->flow(), (*f)->permeability());
     if (const auto* t = std::get_if<Transient>(&model_))
       return fluid_fields((*t)->model().mesh(), &(*t)->state(), (*t)->model().permeability());
-    const run::CoupledModel& model = *expect_const<Coupled>("fluid");
+    const run::CoupledModel& model = coupled_model("fluid");
     const coupling::StaggeredLoop& loop = model.loop();
     return fluid_fields(model.mesh(), &loop.flow(), loop.permeability(), &loop.porosity().porosity);
   }
@@ -264,9 +282,12 @@ class Simulation {
     if (!joint_laws_) joint_laws_ = run::make_joint_aperture_laws(scenario_.definition, meter_->layout().traces);
     fractures::FractureState state =
         meter_->measure(polygons, blocks.penetration_tolerance(), blocks.contacts(), *joint_laws_);
-    if (const auto* coupled = std::get_if<Coupled>(&model_); coupled && (*coupled)->loop().has_flow()) {
-      if (!flow_zones_) flow_zones_ = meter_->flow_zones((*coupled)->mesh());
-      meter_->add_flow(state, *flow_zones_, (*coupled)->mesh(), (*coupled)->loop().flow());
+    if (!std::holds_alternative<Mechanics>(model_)) {
+      const run::CoupledModel& coupled = coupled_model("fractures");
+      if (coupled.loop().has_flow()) {
+        if (!flow_zones_) flow_zones_ = meter_->flow_zones(coupled.mesh());
+        meter_->add_flow(state, *flow_zones_, coupled.mesh(), coupled.loop().flow());
+      }
     }
     return fracture_fields(state);
   }
@@ -283,7 +304,7 @@ class Simulation {
                             "(flow.boundary[i].head, ...) or a traction (mechanics.traction[i].normal, "
                             "normal_end, shear, shear_end) between steps or passes, not '" + key +
                             "': change the Scenario and build a new Simulation for anything else");
-    if (std::holds_alternative<Transient>(model_))
+    if (std::holds_alternative<Transient>(model_) || std::holds_alternative<CoupledTransient>(model_))
       throw py::value_error("Simulation.set: a transient simulation takes its boundary values from its scenario at each "
                             "step's time (a table of (time, value) rows); change the Scenario and build a new Simulation");
     PythonScenario changed = with_value(scenario_, key, value);
@@ -322,6 +343,15 @@ class Simulation {
   py::object summary() const {
     const ModelLock::Held held = lock_.hold("summary");
     output::RunSummary summary = std::visit([](const auto& model) { return model->summary(); }, model_);
+    if (std::holds_alternative<CoupledTransient>(model_)) {
+      // converged: end_time reached without a failure (else its message says why), as the run says it.
+      if (const std::string unreached = run::describe_unreached_displacement(scenario_.definition, system("summary"));
+          !unreached.empty()) {
+        summary.message = unreached;
+        summary.converged = false;
+      }
+      return summary_dict(summary);
+    }
     summary.converged = is_finished();
     if (!std::holds_alternative<Flow>(model_) && !std::holds_alternative<Transient>(model_)) {
       summary.message = run::describe_unreached_displacement(scenario_.definition, system("summary"));
@@ -335,6 +365,7 @@ class Simulation {
   using Mechanics = std::unique_ptr<run::MechanicsModel>;
   using Coupled = std::unique_ptr<run::CoupledModel>;
   using Transient = std::unique_ptr<run::TransientModel>;
+  using CoupledTransient = std::unique_ptr<run::CoupledTransientModel>;
 
   // Up to `count` steps, and none past `until` when given; Ctrl-C stops after the step under way.
   long long step_transient(run::TransientModel& model, long long count, std::optional<double> until) {
@@ -353,6 +384,44 @@ class Simulation {
     return taken;
   }
 
+  // Up to `count` time steps, and none past `until` when given; Ctrl-C abandons the step under
+  // way (the model back at the last step's end) and raises KeyboardInterrupt.
+  long long step_coupled_transient(run::CoupledTransientModel& model, long long count, std::optional<double> until) {
+    PythonCallbacks callbacks{py::none()};
+    const run::Callbacks stop = callbacks.callbacks();
+    long long taken = 0;
+    {
+      py::gil_scoped_release released;
+      const run::ThreadsOfThisCall own_threads(threads_);
+      while (taken < count && !model.finished() && !(until && model.time() >= *until)) {
+        if (model.step(stop.stop_requested) != run::CoupledTransientStepper::Outcome::stepped) break;
+        ++taken;
+      }
+    }
+    callbacks.raise_pending();
+    return taken;
+  }
+
+  // The steps up to `t`, which must be a time they land on: an output time, a load table's row
+  // or the end time (find_step_stops), or the time reached.
+  long long advance_coupled_transient(run::CoupledTransientModel& model, double t) {
+    if (t < model.time())
+      throw py::value_error(fmt::format("advance_to({:g}): the simulation is at t = {:g} s already", t, model.time()));
+    const std::vector<double>& stops = model.stepper().stops();
+    if (t != model.time() && std::find(stops.begin(), stops.end(), t) == stops.end())
+      throw py::value_error(fmt::format(
+          "advance_to({:g}): no step of a coupled transient simulation surely ends there (its steps' lengths follow "
+          "their iterations); they land on the output times, the load tables' rows and the end time: {}",
+          t, fmt::join(stops, ", ")));
+    return step_coupled_transient(model, std::numeric_limits<long long>::max(), t);
+  }
+
+  // The coupled model of a coupled or coupled transient simulation.
+  const run::CoupledModel& coupled_model(const char* what) const {
+    if (const auto* c = std::get_if<CoupledTransient>(&model_)) return (*c)->model();
+    return *expect_const<Coupled>(what);
+  }
+
   template <class Model>
   Model& expect(const char* what) {
     if (auto* m = std::get_if<Model>(&model_)) return *m;
@@ -368,17 +437,18 @@ class Simulation {
     if (const auto* m = std::get_if<Mechanics>(&model_)) return (*m)->finished();
     if (std::holds_alternative<Coupled>(model_)) return converged_;
     if (const auto* t = std::get_if<Transient>(&model_)) return (*t)->finished();
+    if (const auto* c = std::get_if<CoupledTransient>(&model_)) return (*c)->finished();
     return !std::get<Flow>(model_)->flow().head.empty();
   }
   const dda::System& system(const char* what) const {
     if (const auto* m = std::get_if<Mechanics>(&model_)) return (*m)->system();
-    return expect_const<Coupled>(what)->mechanics();
+    return coupled_model(what).mechanics();
   }
 
   mutable ModelLock lock_;   // every call but kind holds it
   PythonScenario scenario_;  // as built, with the changes set() made since
   std::optional<int> threads_;  // threads=: the threads of every call that computes (the results are the same on any)
-  std::variant<Flow, Mechanics, Coupled, Transient> model_;
+  std::variant<Flow, Mechanics, Coupled, Transient, CoupledTransient> model_;
   bool converged_ = false;  // coupled: the last pass met the tolerance
   std::optional<fractures::FractureMeter> meter_;                  // made on the first call of fractures
   std::optional<fractures::FractureMeter::FlowZones> flow_zones_;  // likewise, for a coupled model
@@ -396,16 +466,18 @@ void bind_simulation(py::module_& module) {
       .def_property_readonly("kind", &Simulation::kind)
       .def("solve", &Simulation::solve, "Flow only: the steady solve.")
       .def("step", &Simulation::step, py::arg("count") = 1,
-           "Mechanics: up to `count` DDA steps; transient flow: up to `count` time steps (fewer at the run's end); "
-           "the number taken.")
+           "Mechanics: up to `count` DDA steps; transient flow or coupled transient: up to `count` time steps (fewer "
+           "at the run's end); the number taken.")
       .def("advance_to", &Simulation::advance_to, py::arg("time"),
            "Transient flow: the steps up to `time` (s), which must end one (an output time, the end time, or one of "
-           "step_times); the number taken.")
-      .def_property_readonly("time", &Simulation::time, "Transient flow: the time reached (s)")
+           "step_times); coupled transient: `time` an output time, a load table's row or the end time; the number "
+           "taken.")
+      .def_property_readonly("time", &Simulation::time, "Transient flow, coupled transient: the time reached (s)")
       .def_property_readonly("step_times", &Simulation::step_times,
                              "Transient flow: the times its steps end on, to end_time (s)")
       .def_property_readonly("probes", &Simulation::probes,
-                             "Transient flow: probes.csv's rows at the time reached, (time, name, head, pressure)")
+                             "Transient flow, coupled transient: probes.csv's rows at the time reached, (time, name, "
+                             "head, pressure)")
       .def("run_pass", &Simulation::run_pass, "Coupled: one coupling pass; what it measured, as a dict.")
       .def_property_readonly("finished", &Simulation::finished,
                              "steps or end_time reached; coupling converged; flow solved")

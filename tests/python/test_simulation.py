@@ -327,3 +327,62 @@ def test_summary_says_converged_as_the_runs_summary_does(in_tmp, name):
     result = hydrodda.run(scenario, "run")
     assert result.converged and result.summary["converged"] is True
     assert sim.summary["converged"] is True
+
+
+def terzaghi_column():
+    """Terzaghi's column of twenty blocks as shipped, no figures: 54 steps to 1.4e5 s, outputs at
+    4,667, 9,333, 28,000 and 93,330 s."""
+    scenario = hydrodda.Scenario.load(VERIFICATION / "terzaghi_consolidation.toml")
+    scenario.set("output.figures", [])
+    return scenario
+
+
+def test_a_coupled_transient_simulation_stepped_to_the_end_gives_the_programs_probes_to_the_last_digit(in_tmp):
+    """Stepped one time step at a time, then by advance_to over the output times, a coupled
+    transient Simulation reads at every step the probes.csv rows of the program's run of the same
+    scenario, digit for digit (the same steps, cut and grown alike, on the same blocks and heads:
+    an exact identity); its summary is the run's apart from the fractures, and its blocks and
+    fluid at the end are the same either way."""
+    scenario = terzaghi_column()
+    (in_tmp / "column.toml").write_text(scenario.to_toml())
+    code, _, err = run_program("run", "column.toml", "-o", "prog", "--threads", "1", cwd=in_tmp)
+    assert code == 0, err
+    expected = probes_csv_rows(in_tmp / "prog")
+
+    sim = hydrodda.Simulation(scenario, threads=1)
+    assert (sim.kind, sim.time, sim.finished) == ("coupled_transient", 0.0, False)
+    rows = [as_csv(r) for r in sim.probes]  # t = 0
+    while not sim.finished:
+        assert sim.step() == 1
+        rows.extend(as_csv(r) for r in sim.probes)
+    assert sim.step() == 0  # nothing past end_time
+    assert sim.time == 1.4e5
+    assert rows == expected
+    summary = sim.summary
+    program_summary = json.loads((in_tmp / "prog" / "summary.json").read_text())
+    for key in ("converged", "time", "iterations", "flow", "blocks", "measure"):
+        assert summary.get(key) == program_summary.get(key), key
+
+    by_outputs = hydrodda.Simulation(scenario, threads=1)
+    for t in (4667.0, 9333.0, 28000.0, 93330.0, 1.4e5):
+        taken = by_outputs.advance_to(t)
+        assert taken > 0 and by_outputs.time == t
+        assert [as_csv(r) for r in by_outputs.probes] == [r for r in expected if float(r[0]) == t]
+    assert by_outputs.finished
+    assert np.array_equal(by_outputs.fluid["head"], sim.fluid["head"])
+    assert np.array_equal(by_outputs.blocks["displacement"], sim.blocks["displacement"])
+
+
+def test_a_coupled_transient_simulation_refuses_times_no_step_surely_ends_on_passes_and_setting_a_boundary():
+    sim = hydrodda.Simulation(terzaghi_column(), threads=1)
+    with pytest.raises(ValueError, match="no step of a coupled transient simulation surely ends there"):
+        sim.advance_to(100.0)
+    # The first step of 50 s takes 13 iterations, more than a quarter of max_iterations: the
+    # second keeps its length.
+    assert sim.step(2) == 2 and sim.time == 100.0
+    with pytest.raises(ValueError, match="at t = 100 s already"):
+        sim.advance_to(50.0)
+    with pytest.raises(ValueError, match="transient simulation takes its boundary values"):
+        sim.set("flow.boundary[0].head", 12.0)
+    with pytest.raises(Exception, match="not for a coupled_transient simulation"):
+        sim.run_pass()

@@ -1,0 +1,49 @@
+#pragma once
+// A coupled transient model stepped by hand (Python's Simulation): the CoupledModel with its
+// heads at t = 0, its CoupledTransientStepper and its probes, stepped as the run steps it, so
+// that stepped to the end it reads the run's probes.csv rows at every step, digit for digit.
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "output/summary.hpp"
+#include "run/coupled_model.hpp"
+#include "run/coupled_transient_stepper.hpp"
+#include "run/transient_flow.hpp"
+#include "run/transient_model.hpp"
+
+namespace hydrodda::run {
+
+class CoupledTransientModel {
+ public:
+  // Builds the model (as CoupledModel does) and takes its heads at t = 0. Throws
+  // std::invalid_argument for a scenario without [mechanics], [flow] and [flow.transient].
+  explicit CoupledTransientModel(const scenario::Scenario& scenario);
+
+  // One time step (CoupledTransientStepper::step), its DDA steps asking `stop_requested`.
+  CoupledTransientStepper::Outcome step(const std::function<bool()>& stop_requested = {});
+
+  double time() const { return stepper_->time(); }
+  int steps() const { return stepper_->steps(); }
+  // end_time reached, or a step failed at the floor (failed(), failure() says why).
+  bool finished() const { return stepper_->finished(); }
+  bool failed() const { return stepper_->failed(); }
+  const std::string& failure() const { return stepper_->failure(); }
+  const CoupledTransientStepper& stepper() const { return *stepper_; }
+  const CoupledModel& model() const { return *model_; }
+
+  // probes.csv's rows at time(): each [[flow.probe]]'s head and pressure.
+  std::vector<ProbeReading> read_probes() const;
+  // summary.json's content for the state now (no timings, no fractures): time, the steps as
+  // `iterations`, the rate of storage; `converged` when end_time is reached without a failure,
+  // else false with the failure as `message`.
+  output::RunSummary summary() const;
+
+ private:
+  std::unique_ptr<CoupledModel> model_;
+  std::unique_ptr<CoupledTransientStepper> stepper_;
+  std::vector<ProbeSite> sites_;
+};
+
+}  // namespace hydrodda::run
