@@ -53,8 +53,8 @@ def checkpoint_without_timings(data):
     scenario hash, scenario file, converged, history rows, measure rows (format 2 and later),
     written iterations, then the timings (count, then name and seconds for each); what follows
     the timings (format 3: the coupling loop's Aitken state) is compared as it is."""
-    if data.startswith(b"hydrodda transient checkpoint\n"):  # a transient run's: no timings
-        return bytes(data)
+    if data.startswith((b"hydrodda transient checkpoint\n", b"hydrodda coupled transient checkpoint\n")):
+        return bytes(data)  # a transient run's: no timings
     (version,) = struct.unpack_from("<q", data, len("hydrodda checkpoint\n"))
     if version >= 4:  # no timings: compared byte for byte
         return bytes(data)
