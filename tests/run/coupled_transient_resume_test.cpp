@@ -137,6 +137,25 @@ TEST(CoupledTransientResume, StoppedAfterAStepTwiceThenResumedToTheEndIsStillThe
   }
 }
 
+TEST(CoupledTransientResume, ARunThatEndedNotConvergedAtItsFloorIsNotResumed) {
+  // coupling.max_iterations = 3 against the ~13 the column's first step needs: that step is cut
+  // to its floor and the run ends not converged at t = 0 (CoupledTransientVerification.*); its
+  // checkpoint says it ended, and its summary.json says so too.
+  const Column column;
+  const std::string text = scenario::apply_overrides(column.text, kColumn, {{"coupling.max_iterations", "3"}});
+  const scenario::Scenario s = scenario::parse_scenario(text, kColumn);
+  Folder folder("floor");
+  const run::RunResult r = run::run(s, {folder.path, false, std::nullopt, text});
+  ASSERT_EQ(r.status, run::RunStatus::finished) << r.message;
+  ASSERT_FALSE(r.converged);
+  try {
+    run::open_resumed_run(folder.path);
+    ADD_FAILURE() << "a coupled transient run that ended not converged was resumed";
+  } catch (const run::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("ended not converged at t = 0 s"), std::string::npos) << e.what();
+  }
+}
+
 output::CoupledTransientCheckpoint small_checkpoint() {
   output::CoupledTransientCheckpoint c;
   c.scenario_hash = 42;
