@@ -36,21 +36,32 @@ std::string name_keys(const std::vector<std::string>& keys) {
   return keys.size() == 1 ? keys[0] : fmt::format("{} (and {} more)", keys[0], keys.size() - 1);
 }
 
-std::string describe_verdict(const SearchResult& r, const std::vector<std::string>& keys, const SearchSettings& settings) {
+std::string describe_unsettled(int steps, const std::optional<UnsettledSpread>& worst) {
+  if (steps == 0 || !worst) return "";
+  return fmt::format("; {} step{} below it held unsettled (blocks at rest, the loop not converged), K_eff/K_m of '{}' "
+                     "swinging by up to {:.2g}% over the last passes (at {:.6g})",
+                     steps, steps == 1 ? "" : "s", worst->region, 100.0 * worst->spread, worst->load);
+}
+
+std::string describe_verdict(const SearchResult& r, const std::vector<std::string>& keys, const SearchSettings& settings,
+                             const std::optional<UnsettledSpread>& worst) {
   const std::string key = name_keys(keys);
   const std::string unit = keys.empty() ? "" : unit_of(keys[0]);
+  const std::string unsettled = describe_unsettled(r.unsettled_held, worst);
   if (r.interrupted)
-    return r.held ? fmt::format("interrupted; {} held up to {:.6g} {}", key, *r.held, unit)
+    return r.held ? fmt::format("interrupted; {} held up to {:.6g} {}{}", key, *r.held, unit, unsettled)
                   : fmt::format("interrupted before any load held");
-  if (!r.broken) return fmt::format("no breach: every step held up to {} = {:.6g} {}", key, settings.to, unit);
+  if (!r.broken)
+    return fmt::format("no breach: every step held up to {} = {:.6g} {}{}", key, settings.to, unit, unsettled);
   const std::string how = status_name(*r.broken_status);
   if (!r.held)
     return fmt::format("breach below the first load: {} = {:.6g} {} did not hold ({})", key, *r.broken, unit, how);
-  return fmt::format("breach between {} = {:.6g} and {:.6g} {} (width {:.2g}% of the load{}): the last held, the "
-                     "first {}",
-                     key, *r.held, *r.broken, unit, 100.0 * std::abs(*r.broken - *r.held) / std::abs(*r.broken),
+  return fmt::format("{} breach between {} = {:.6g} and {:.6g} {} (width {:.2g}% of the load{}): the last held, the "
+                     "first {}{}",
+                     settings.converged_only ? "converged-only" : "mechanical", key, *r.held, *r.broken, unit,
+                     100.0 * std::abs(*r.broken - *r.held) / std::abs(*r.broken),
                      r.narrowed ? "" : fmt::format(", not narrowed to the tolerance {:g}%", 100.0 * settings.tolerance),
-                     how);
+                     how, unsettled);
 }
 
 BreachOutcome run_breach(const BreachJob& job, const std::function<bool()>& stop_requested) {
@@ -68,7 +79,7 @@ BreachOutcome run_breach(const BreachJob& job, const std::function<bool()>& stop
     files.add_step(step, stepper);
   };
   BreachOutcome outcome{search_breach(job.search, stepper, on_step), folder.path(), ""};
-  outcome.verdict = describe_verdict(outcome.search, job.keys, job.search);
+  outcome.verdict = describe_verdict(outcome.search, job.keys, job.search, files.worst_unsettled_spread());
   if (outcome.search.held) {
     stepper.back_to_kept_state();
     files.write_last_held(*outcome.search.held, stepper);

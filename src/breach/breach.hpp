@@ -38,9 +38,11 @@ struct BreachOutcome {
 // `stop_requested()`, the step under way ends and the folder holds what was found.
 BreachOutcome run_breach(const BreachJob& job, const std::function<bool()>& stop_requested);
 
-// The verdict line of a search over `keys` (named by the first, its unit from it: m, Pa, m/s).
+// The verdict line of a search over `keys` (named by the first, its unit from it: m, Pa, m/s):
+// which rule's breach (mechanical, or converged only), the bracket, and how many steps below it
+// held unsettled with the worst spread.
 std::string describe_verdict(const SearchResult& result, const std::vector<std::string>& keys,
-                             const SearchSettings& settings);
+                             const SearchSettings& settings, const std::optional<UnsettledSpread>& worst = std::nullopt);
 // "flow.boundary[0].head" or "flow.boundary[0].head (and 1 more)".
 std::string name_keys(const std::vector<std::string>& keys);
 

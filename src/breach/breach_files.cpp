@@ -27,13 +27,17 @@ std::vector<std::string> region_names(const scenario::Scenario& s) {
 
 std::vector<std::string> columns_of(const std::vector<std::string>& regions, const std::optional<Limit>& limit) {
   std::vector<std::string> columns{"step", "load", "kind", "status", "passes", "largest_opening", "open_fractures"};
-  for (const std::string& region : regions) columns.push_back(fmt::format("flow.regions.{}.normalised_conductivity", region));
+  for (const std::string& region : regions)
+    for (const char* suffix : {"", "_least", "_largest"})
+      columns.push_back(fmt::format("flow.regions.{}.normalised_conductivity{}", region, suffix));
   if (limit) columns.push_back(limit->path);
   columns.push_back("message");
   return columns;
 }
 
-bool is_state(StepStatus status) { return status == StepStatus::held || status == StepStatus::beyond_limit; }
+bool is_state(StepStatus status) {
+  return status == StepStatus::held || status == StepStatus::held_unsettled || status == StepStatus::beyond_limit;
+}
 
 std::string cell(const std::optional<double>& value) { return value ? CsvTable::cell(*value) : ""; }
 
@@ -43,6 +47,14 @@ nlohmann::json held_json(const HeldState& h, const std::vector<std::string>& reg
   for (std::size_t r = 0; r < regions.size(); ++r)
     k[regions[r]] = h.conductivity[r] ? nlohmann::json(*h.conductivity[r]) : nlohmann::json(nullptr);
   j["normalised_conductivity"] = k;
+  j["unsettled"] = h.unsettled;
+  if (h.unsettled) {
+    nlohmann::json ranges = nlohmann::json::object();
+    for (std::size_t r = 0; r < regions.size() && r < h.ranges.size(); ++r)
+      ranges[regions[r]] = h.ranges[r] ? nlohmann::json{{"least", h.ranges[r]->least}, {"largest", h.ranges[r]->largest}}
+                                       : nlohmann::json(nullptr);
+    j["normalised_conductivity_range"] = ranges;
+  }
   return j;
 }
 
@@ -60,18 +72,21 @@ BreachFiles::BreachFiles(const output::RunFolder& folder, const scenario::Scenar
 
 void BreachFiles::write_scenario(const std::string& text) const { folder_.write("scenario.toml", text); }
 
-HeldState BreachFiles::measure(const SearchStep& step,
-                               const output::RunSummary& summary) const {
+HeldState BreachFiles::measure(const SearchStep& step, const output::RunSummary& summary,
+                               const std::vector<std::optional<ValueRange>>& ranges) const {
   HeldState h;
   h.load = step.load;
   h.beyond_limit = step.result.status == StepStatus::beyond_limit;
+  h.unsettled = step.result.status == StepStatus::held_unsettled;
   for (const std::string& region : regions_) {
     std::optional<double> value;
-    if (summary.flow)
+    if (summary.flow && !h.unsettled)  // an unsettled answer is a range, not one number
       for (const output::RegionSummary& r : summary.flow->regions)
         if (r.name == region) value = r.normalised_conductivity;
     h.conductivity.push_back(value);
   }
+  if (h.unsettled) h.ranges = ranges;
+  h.ranges.resize(regions_.size());
   if (summary.fractures)
     for (const output::FractureRow& f : summary.fractures->rows) {
       h.largest_opening = std::max(h.largest_opening, f.max_aperture);
@@ -89,7 +104,12 @@ std::vector<std::string> BreachFiles::row_of(const SearchStep& step, const std::
                                status_name(step.result.status), std::to_string(step.result.passes)};
   row.push_back(held ? CsvTable::cell(held->largest_opening) : "");
   row.push_back(held ? std::to_string(held->open_fractures.size()) : "");
-  for (std::size_t r = 0; r < regions_.size(); ++r) row.push_back(held ? cell(held->conductivity[r]) : "");
+  for (std::size_t r = 0; r < regions_.size(); ++r) {
+    row.push_back(held ? cell(held->conductivity[r]) : "");
+    const bool ranged = held && held->ranges[r].has_value();
+    row.push_back(ranged ? CsvTable::cell(held->ranges[r]->least) : "");
+    row.push_back(ranged ? CsvTable::cell(held->ranges[r]->largest) : "");
+  }
   if (limit_) row.push_back(held ? cell(held->limit_value) : "");
   row.push_back(step.result.message);
   return row;
@@ -102,7 +122,7 @@ void BreachFiles::add_step(const SearchStep& step, const CoupledStepper& stepper
     summary.message = step.result.message;
     folder_.subfolder("steps");
     folder_.write(fmt::format("steps/step_{:03d}.json", step.index), output::format_summary(summary));
-    held = measure(step, summary);
+    held = measure(step, summary, stepper.unsettled_ranges());
     held_.push_back(*held);
     const run::CoupledModel& model = stepper.model();
     const auto& loop = model.loop();
@@ -142,10 +162,16 @@ void BreachFiles::finish(const SearchResult& result, const std::string& verdict,
   j["broken_status"] = result.broken_status ? nlohmann::json(status_name(*result.broken_status)) : nlohmann::json(nullptr);
   j["broken_message"] = nlohmann::json(nullptr);
   for (const SearchStep& step : steps_)
-    if (result.broken && step.load == *result.broken && !is_state(step.result.status)) j["broken_message"] = step.result.message;
+    if (result.broken && step.load == *result.broken && !holds(step.result.status, settings))
+      j["broken_message"] = step.result.message;
   j["last_held"] = nlohmann::json(nullptr);
   for (const HeldState& h : held_)
     if (result.held && h.load == *result.held && !h.beyond_limit) j["last_held"] = held_json(h, regions_);
+  j["rule"] = settings.converged_only ? "converged only" : "mechanical";
+  j["unsettled_held"] = result.unsettled_held;
+  j["worst_unsettled_spread"] = nlohmann::json(nullptr);
+  if (const std::optional<UnsettledSpread> worst = worst_unsettled_spread())
+    j["worst_unsettled_spread"] = {{"spread", worst->spread}, {"load", worst->load}, {"region", worst->region}};
   folder_.write("breach.json", j.dump(2) + "\n");
   for (const std::string& format : scenario_.output.figures) {
     try {
@@ -154,6 +180,15 @@ void BreachFiles::finish(const SearchResult& result, const std::string& verdict,
       spdlog::warn("the breach curves could not be drawn: {}", e.what());
     }
   }
+}
+
+std::optional<UnsettledSpread> BreachFiles::worst_unsettled_spread() const {
+  std::optional<UnsettledSpread> worst;
+  for (const HeldState& h : held_)
+    for (std::size_t r = 0; h.unsettled && r < h.ranges.size(); ++r)
+      if (h.ranges[r] && (!worst || h.ranges[r]->spread() > worst->spread))
+        worst = UnsettledSpread{h.ranges[r]->spread(), h.load, regions_[r]};
+  return worst;
 }
 
 void BreachFiles::draw_curves(const std::string& format) const {
@@ -168,27 +203,35 @@ void BreachFiles::draw_curves(const std::string& format) const {
   k.y_label = "K_eff / K_matrix";
   k.y_log = true;
   k.open_label = "beyond the limit";
+  k.range_label = "held, unsettled: range over its last passes";
   k.marks_x = broken;
   k.marks_label = "did not hold";
   for (std::size_t r = 0; r < regions_.size(); ++r) {
     output::LineSeries series{regions_[r], {}, {}, {}};
-    for (const HeldState& h : held)
-      if (h.conductivity[r]) {
-        series.x.push_back(h.load);
-        series.y.push_back(*h.conductivity[r]);
-        series.open.push_back(h.beyond_limit);
-      }
-    if (!series.x.empty()) k.series.push_back(std::move(series));
+    std::vector<output::RangeBar> bars;
+    for (const HeldState& h : held) {
+      if (const std::optional<ValueRange>& range = h.ranges[r])
+        bars.push_back({k.series.size(), h.load, range->least, range->largest});
+      if (!h.conductivity[r]) continue;
+      series.x.push_back(h.load);
+      series.y.push_back(*h.conductivity[r]);
+      series.open.push_back(h.beyond_limit);
+    }
+    if (series.x.empty() && bars.empty()) continue;
+    k.series.push_back(std::move(series));
+    k.range_bars.insert(k.range_bars.end(), bars.begin(), bars.end());
   }
   if (!k.series.empty()) output::render_line_plot(folder_.figures() / ("breach." + format), k);
   output::LinePlotSpec w = k;
   w.y_label = "largest fracture opening (mm)";
   w.y_log = false;
+  w.range_bars.clear();
+  w.open_label = "beyond the limit, or held unsettled (its last pass)";
   w.series = {output::LineSeries{"largest opening", {}, {}, {}}};
   for (const HeldState& h : held) {
     w.series[0].x.push_back(h.load);
     w.series[0].y.push_back(1e3 * h.largest_opening);
-    w.series[0].open.push_back(h.beyond_limit);
+    w.series[0].open.push_back(h.beyond_limit || h.unsettled);
   }
   if (!w.series[0].x.empty()) output::render_line_plot(folder_.figures() / ("breach_opening." + format), w);
 }

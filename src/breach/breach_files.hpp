@@ -20,7 +20,9 @@ namespace hydrodda::breach {
 struct HeldState {
   double load = 0.0;
   bool beyond_limit = false;
-  std::vector<std::optional<double>> conductivity;  // K_eff/K_m per flow region
+  bool unsettled = false;  // held, unsettled: its K_eff/K_m is `ranges`, not `conductivity`
+  std::vector<std::optional<double>> conductivity;  // K_eff/K_m per flow region (none when unsettled)
+  std::vector<std::optional<ValueRange>> ranges;    // per flow region, over the last passes when unsettled
   double largest_opening = 0.0;                     // m, over the fractures
   std::vector<int> open_fractures;                  // ids
   std::optional<double> limit_value;
@@ -38,9 +40,13 @@ class BreachFiles {
   void write_last_held(double load, const CoupledStepper& stepper);
   // breach.json and the curves.
   void finish(const SearchResult& result, const std::string& verdict, const SearchSettings& settings);
+  // Of the states that held unsettled, the widest spread of a region's K_eff/K_m ((largest −
+  // least) / largest) and its load; none when no state held unsettled.
+  std::optional<UnsettledSpread> worst_unsettled_spread() const;
 
  private:
-  HeldState measure(const SearchStep& step, const output::RunSummary& summary) const;
+  HeldState measure(const SearchStep& step, const output::RunSummary& summary,
+                    const std::vector<std::optional<ValueRange>>& ranges) const;
   std::vector<std::string> row_of(const SearchStep& step, const std::optional<HeldState>& held) const;
   void draw_curves(const std::string& format) const;
 

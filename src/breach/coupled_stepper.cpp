@@ -26,18 +26,32 @@ const std::regex& flow_key() {
   return key;
 }
 
-// Asks the program's stop request before every pass; records nothing (the search records steps).
+// Asks the program's stop request before every pass, and ends a step whose blocks came to rest
+// in none of kPassesStillMoving passes in a row (with settling passes: without them no pass
+// tests for rest); tells `record` after every pass. Records nothing else (the search records
+// steps).
 class StepObserver final : public coupling::PassObserver {
  public:
-  explicit StepObserver(const std::function<bool()>& stop_requested) : stop_requested_(stop_requested) {}
-  bool stop_requested() override { return stop_requested_ && stop_requested_(); }
+  StepObserver(const std::function<bool()>& stop_requested, bool settling, const PassTrail& trail,
+               std::function<void(const coupling::PassReport&)> record)
+      : stop_requested_(stop_requested), settling_(settling), trail_(trail), record_(std::move(record)) {}
+  bool stop_requested() override { return user_stop() || still_moving(); }
+  bool user_stop() const { return stop_requested_ && stop_requested_(); }
+  bool still_moving() const { return settling_ && trail_.passes_still_moving() >= kPassesStillMoving; }
   void after_pass(const coupling::PassReport& r) override {
-    spdlog::debug("coupling iteration {}: head change {:.3e}, displacement change {:.3e}, largest opening {:.3e} m{}",
-                  r.iteration, r.head_change, r.displacement_change, r.largest_opening, r.converged ? ", converged" : "");
+    spdlog::debug("coupling iteration {}: head change {:.3e}, displacement change {:.3e}, largest opening {:.3e} m, "
+                  "{}, last step {}, {} step cuts, {} crossings switched{}",
+                  r.iteration, r.head_change, r.displacement_change, r.largest_opening,
+                  r.at_rest ? "at rest" : "still moving", r.full_time_step ? "at the full time step" : "cut short",
+                  r.step_cuts, r.joint_crossings_switched, r.converged ? ", converged" : "");
+    record_(r);
   }
 
  private:
   const std::function<bool()>& stop_requested_;
+  bool settling_;
+  const PassTrail& trail_;
+  std::function<void(const coupling::PassReport&)> record_;
 };
 
 std::string describe_blocks(const std::vector<coupling::EscapingBlock>& escaping) {
@@ -46,6 +60,17 @@ std::string describe_blocks(const std::vector<coupling::EscapingBlock>& escaping
     text += fmt::format("{}block {} (moved {:.3g} m, size {:.3g} m)", i ? ", " : "", escaping[i].block,
                         escaping[i].distance, escaping[i].size);
   if (escaping.size() > 5) text += fmt::format(" and {} more", escaping.size() - 5);
+  return text;
+}
+
+// "K_eff/K_m of region 'seal' from 966 to 1044 (7.5%)", over the regions with a range.
+std::string describe_ranges(const std::vector<std::optional<ValueRange>>& ranges,
+                            const std::vector<scenario::FlowRegion>& regions) {
+  std::string text;
+  for (std::size_t r = 0; r < ranges.size() && r < regions.size(); ++r)
+    if (ranges[r] && ranges[r]->spread() > 1e-9)  // a region whose answer did not move is no news
+      text += fmt::format("{}K_eff/K_m of region '{}' from {:.4g} to {:.4g} ({:.2g}%)", text.empty() ? "" : ", ",
+                          regions[r].name, ranges[r]->least, ranges[r]->largest, 100.0 * ranges[r]->spread());
   return text;
 }
 
@@ -121,16 +146,37 @@ StepResult CoupledStepper::try_load(double load) {
   model_->import_state(kept_);
   set_load(load);
   last_load_ = load;
+  trail_.clear();
+  last_ranges_.clear();
   StepResult result;
   const int before = model_->iterations();
-  StepObserver observer(stop_requested_);
+  StepObserver observer(stop_requested_, model_->scenario().coupling.settle, trail_,
+                        [this](const coupling::PassReport& r) { record_pass(r); });
   try {
-    const coupling::LoopResult loop =
-        model_->run({before + model_->scenario().coupling.max_iterations, std::nullopt}, observer);
+    const coupling::LoopLimits limits{before + model_->scenario().coupling.max_iterations, std::nullopt};
+    coupling::LoopResult loop = model_->run(limits, observer);
     result.passes = loop.passes_run;
+    // A step begun from a converged state starts with a change far under the tolerance; a loop
+    // that then swings grows tenfold within five passes and reads as diverging. While every pass
+    // so far left the blocks at rest, the step runs its passes out to show whether the swing is
+    // bounded (held, unsettled) or still growing at its last pass (not converged).
+    while (loop.end == coupling::LoopEnd::diverging && model_->iterations() < limits.max_passes &&
+           model_->scenario().coupling.settle && trail_.rested_in_last(trail_.passes())) {
+      loop = model_->run(limits, observer);
+      result.passes += loop.passes_run;
+    }
     switch (loop.end) {
       case coupling::LoopEnd::converged: result.status = judge_converged_state(result.message); break;
-      case coupling::LoopEnd::stop_requested: result.status = StepStatus::interrupted; break;
+      case coupling::LoopEnd::stop_requested:
+        if (observer.user_stop() || !observer.still_moving()) {
+          result.status = StepStatus::interrupted;
+          break;
+        }
+        result.status = StepStatus::still_moving;
+        result.message = fmt::format(
+            "the blocks came to rest in none of {} passes in a row (each ran its DDA steps and its settling steps with "
+            "them still moving)", trail_.passes_still_moving());
+        break;
       case coupling::LoopEnd::escaping:
         result.status = StepStatus::no_equilibrium;
         result.message = "blocks escape: " + describe_blocks(loop.last_pass->escaping);
@@ -140,9 +186,7 @@ StepResult CoupledStepper::try_load(double load) {
         result.message = fmt::format("the coupling loop diverges ({} passes of growing change)",
                                      loop.last_pass->growing_passes);
         break;
-      default:
-        result.status = StepStatus::not_converged;
-        result.message = fmt::format("the coupling loop did not converge in {} passes", loop.passes_run);
+      default: result.status = judge_unconverged_state(loop.passes_run, result.message);
     }
   } catch (const coupling::PassInterrupted&) {
     model_->abandon_pass();
@@ -154,7 +198,43 @@ StepResult CoupledStepper::try_load(double load) {
     result.status = escaping.empty() ? StepStatus::failed : StepStatus::no_equilibrium;
     result.message = escaping.empty() ? e.what() : "blocks escape: " + describe_blocks(escaping);
   }
+  last_status_ = result.status;
   return result;
+}
+
+void CoupledStepper::record_pass(const coupling::PassReport& r) {
+  std::vector<std::optional<double>> conductivity;
+  for (const std::optional<output::RegionSummary>& region : model_->region_flows())
+    conductivity.push_back(region ? region->normalised_conductivity : std::nullopt);
+  trail_.add(r.at_rest, r.full_time_step, std::move(conductivity));
+}
+
+// A loop that ran its passes out: held, unsettled when settling passes brought the blocks to
+// rest in each of its last kUnsettledPasses (or all, if fewer); else not converged.
+StepStatus CoupledStepper::judge_unconverged_state(int passes, std::string& message) {
+  const bool settling = model_->scenario().coupling.settle;
+  if (!settling) {
+    message = fmt::format("the coupling loop did not converge in {} passes (without coupling.settle no pass tests the "
+                          "blocks for rest)", passes);
+    return StepStatus::not_converged;
+  }
+  if (!trail_.rested_in_last(kUnsettledPasses)) {
+    const int over = std::min(kUnsettledPasses, trail_.passes());
+    const int cut = trail_.passes_on_cut_steps(kUnsettledPasses);
+    message = fmt::format("the coupling loop did not converge in {} passes, and its blocks did not come to rest in each "
+                          "of the last {}{}", passes, over,
+                          cut > 0 ? fmt::format(" ({} of them ended on a DDA step cut short, whose at-rest test proves "
+                                                "nothing)", cut)
+                                  : "");
+    return StepStatus::not_converged;
+  }
+  last_ranges_ = trail_.ranges_over_last(kUnsettledPasses);
+  const int over = std::min(kUnsettledPasses, trail_.passes());
+  last_range_passes_ = over;
+  const std::string ranges = describe_ranges(last_ranges_, model_->scenario().flow->regions);
+  message = fmt::format("the coupling loop did not converge in {} passes; the blocks came to rest in each of the last "
+                        "{}{}", passes, over, ranges.empty() ? "" : ", over which " + ranges);
+  return StepStatus::held_unsettled;
 }
 
 StepStatus CoupledStepper::judge_converged_state(std::string& message) const {
@@ -175,17 +255,32 @@ StepStatus CoupledStepper::judge_converged_state(std::string& message) const {
 void CoupledStepper::keep_state() {
   kept_ = model_->export_state();
   kept_load_ = last_load_;
+  kept_status_ = last_status_;
+  kept_ranges_ = last_ranges_;
+  kept_range_passes_ = last_range_passes_;
 }
 
 void CoupledStepper::back_to_kept_state() {
   model_->import_state(kept_);
   set_load(kept_load_);
   last_load_ = kept_load_;
+  last_status_ = kept_status_;
+  last_ranges_ = kept_ranges_;
+  last_range_passes_ = kept_range_passes_;
 }
 
 output::RunSummary CoupledStepper::summary() const {
   output::RunSummary summary = model_->summary();
-  summary.converged = true;
+  // An unsettled state is the last pass's of a loop that did not converge: each region's answer
+  // is the range over its last passes, not one number.
+  summary.converged = last_status_ != StepStatus::held_unsettled;
+  const std::vector<scenario::FlowRegion>& regions = scenario().flow->regions;
+  if (summary.flow)
+    for (output::RegionSummary& region : summary.flow->regions)
+      for (std::size_t r = 0; r < last_ranges_.size() && r < regions.size(); ++r)
+        if (last_ranges_[r] && regions[r].name == region.name)
+          region.last_passes = output::RegionSummary::PassRange{last_range_passes_, last_ranges_[r]->least,
+                                                                last_ranges_[r]->largest};
   if (const std::optional<fractures::FractureState> state = measure_fractures())
     summary.fractures = run::summarise_fractures(*state, run::fracture_type_names(scenario()));
   return summary;

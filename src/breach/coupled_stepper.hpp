@@ -11,8 +11,10 @@
 #include <vector>
 
 #include "breach/load_search.hpp"
+#include "breach/pass_trail.hpp"
 #include "fractures/fracture_results.hpp"
 #include "coupling/joint_aperture_laws.hpp"
+#include "coupling/pass_report.hpp"
 #include "output/summary.hpp"
 #include "run/coupled_model.hpp"
 #include "scenario/scenario.hpp"
@@ -57,12 +59,17 @@ class CoupledStepper final : public LoadStepper {
   output::RunSummary summary() const;
   // The fractures as the blocks stand, with their flow; none for a scenario that lists its blocks.
   std::optional<fractures::FractureState> measure_fractures() const;
+  // Per flow region, K_eff/K_m's range over the last passes of the state the model is in when
+  // it held unsettled (a region without a value: none); empty for any other state.
+  const std::vector<std::optional<ValueRange>>& unsettled_ranges() const { return last_ranges_; }
   const run::CoupledModel& model() const { return *model_; }
   const scenario::Scenario& scenario() const { return model_->scenario(); }
 
  private:
   void set_load(double load);
   StepStatus judge_converged_state(std::string& message) const;
+  StepStatus judge_unconverged_state(int passes, std::string& message);
+  void record_pass(const coupling::PassReport& report);
 
   std::string text_;
   std::filesystem::path file_;
@@ -73,6 +80,11 @@ class CoupledStepper final : public LoadStepper {
   run::CoupledState kept_;
   double kept_load_;
   double last_load_;
+  PassTrail trail_;  // the passes of the step under way (or the last)
+  // How the last try and the kept state ended, and their K_eff/K_m ranges when unsettled.
+  StepStatus last_status_ = StepStatus::held, kept_status_ = StepStatus::held;
+  std::vector<std::optional<ValueRange>> last_ranges_, kept_ranges_;
+  int last_range_passes_ = 0, kept_range_passes_ = 0;  // the passes those ranges are over
   // What summary() measures the fractures with (none for listed blocks), found once.
   std::optional<fractures::FractureMeter> meter_;
   std::optional<fractures::FractureMeter::FlowZones> flow_zones_;

@@ -10,8 +10,10 @@ namespace hydrodda::breach {
 std::string status_name(StepStatus status) {
   switch (status) {
     case StepStatus::held: return "held";
+    case StepStatus::held_unsettled: return "held, unsettled";
     case StepStatus::beyond_limit: return "beyond limit";
     case StepStatus::not_converged: return "not converged";
+    case StepStatus::still_moving: return "still moving";
     case StepStatus::no_equilibrium: return "no equilibrium";
     case StepStatus::failed: return "failed";
     case StepStatus::interrupted: return "interrupted";
@@ -27,12 +29,16 @@ void check_settings(const SearchSettings& s) {
     throw std::invalid_argument(fmt::format("--tolerance must be between 0 and 1 (a share of the load), not {:g}", s.tolerance));
 }
 
+bool holds(StepStatus status, const SearchSettings& settings) {
+  return status == StepStatus::held || (status == StepStatus::held_unsettled && !settings.converged_only);
+}
+
 namespace {
 
 class Search {
  public:
-  Search(LoadStepper& stepper, const std::function<void(const SearchStep&)>& on_step)
-      : stepper_(stepper), on_step_(on_step) {}
+  Search(const SearchSettings& settings, LoadStepper& stepper, const std::function<void(const SearchStep&)>& on_step)
+      : settings_(settings), stepper_(stepper), on_step_(on_step) {}
 
   // Tries `load` from the kept state; keeps the state when it held. Whether it held.
   bool attempt(double load, bool bisection) {
@@ -44,9 +50,10 @@ class Search {
       result_.interrupted = true;
       return false;
     }
-    if (status == StepStatus::held) {
+    if (holds(status, settings_)) {
       stepper_.keep_state();
       result_.held = load;
+      if (status == StepStatus::held_unsettled) ++result_.unsettled_held;
       return true;
     }
     result_.broken = load;
@@ -57,6 +64,7 @@ class Search {
   SearchResult& result() { return result_; }
 
  private:
+  const SearchSettings& settings_;
   LoadStepper& stepper_;
   const std::function<void(const SearchStep&)>& on_step_;
   SearchResult result_;
@@ -71,7 +79,7 @@ bool narrow_enough(double held, double broken, double tolerance) {
 SearchResult search_breach(const SearchSettings& settings, LoadStepper& stepper,
                            const std::function<void(const SearchStep&)>& on_step) {
   check_settings(settings);
-  Search search(stepper, on_step);
+  Search search(settings, stepper, on_step);
   SearchResult& r = search.result();
   for (int i = 0; i <= settings.steps; ++i) {
     // The last step lands on `to` exactly, whatever the round-off of the sum.

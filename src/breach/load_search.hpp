@@ -6,10 +6,11 @@
 //   held ← none, broken ← none
 //   for L in from, from + Δ, …, to:            (Δ = (to − from) / steps)
 //     try L from the kept state
-//     held? keep its state, held ← L; else broken ← L, stop
+//     holds? keep its state, held ← L; else broken ← L, stop
 //   while held and broken and |broken − held| > tolerance · |broken|:
 //     try m = (held + broken) / 2 from the state kept at `held`
-//     held? keep its state, held ← m; else broken ← m
+//     holds? keep its state, held ← m; else broken ← m
+// "holds": `held`, or `held_unsettled` unless SearchSettings::converged_only (docs/breach.md).
 // A path-following search (the loading path of a limit analysis), as a laboratory raises a load
 // on one specimen: every state is reached from the one before, never from the start, so that
 // a path-dependent model (friction, contact states) is loaded as it would be.
@@ -21,12 +22,18 @@
 
 namespace hydrodda::breach {
 
-// How a step at one load ended. Only `held` is an equilibrium; `beyond_limit` held too but past
-// the limit the user set (e.g. a conductivity), which the search treats as the breach.
-enum class StepStatus { held, beyond_limit, not_converged, no_equilibrium, failed, interrupted };
+// How a step at one load ended. `held`: the loop converged. `held_unsettled`: the loop did not
+// converge but the blocks came to rest in every one of its last passes, so the model holds
+// mechanically while its answer (K_eff) swings within a range; the search counts it as holding
+// unless SearchSettings::converged_only. `beyond_limit` held too but past the limit the user
+// set (e.g. a conductivity), which the search treats as the breach. `still_moving`: the blocks
+// came to rest in none of several passes in a row (no state to hold).
+enum class StepStatus {
+  held, held_unsettled, beyond_limit, not_converged, still_moving, no_equilibrium, failed, interrupted
+};
 
-// As breach.csv writes it: "held", "beyond limit", "not converged", "no equilibrium", "failed",
-// "interrupted".
+// As breach.csv writes it: "held", "held, unsettled", "beyond limit", "not converged",
+// "still moving", "no equilibrium", "failed", "interrupted".
 std::string status_name(StepStatus status);
 
 struct StepResult {
@@ -50,7 +57,13 @@ struct SearchSettings {
   int steps = 10;            // equal steps from `from` to `to`
   double tolerance = 5e-3;   // the bracket's width as a share of the breaking load
   int max_bisections = 30;
+  // Only a converged step holds (`held_unsettled` then breaks): the loop's breach rather than the
+  // model's mechanical one.
+  bool converged_only = false;
 };
+
+// Whether the search counts a step that ended so as holding (its state kept, the load raised).
+bool holds(StepStatus status, const SearchSettings& settings);
 
 struct SearchStep {
   int index = 0;     // in the order tried
@@ -66,6 +79,8 @@ struct SearchResult {
   std::optional<StepStatus> broken_status;
   bool interrupted = false;
   bool narrowed = false;  // the bracket reached the tolerance
+  // Steps counted as holding that ended `held_unsettled` (all lie below the breach).
+  int unsettled_held = 0;
   std::vector<SearchStep> steps;
 };
 

@@ -175,6 +175,9 @@ int run_app(int argc, char** argv) {
   breach_cmd->add_option("--limit", breach.limit,
                          "PATH=VALUE: a state holds only while this summary.json value stays at or below VALUE, e.g. "
                          "flow.regions.seal.normalised_conductivity=100");
+  breach_cmd->add_flag("--converged-only", breach.converged_only,
+                       "Only a step whose coupling loop converged holds: a step whose blocks came to rest but whose "
+                       "loop swung (held, unsettled) is then the breach");
   CLI::Option* breach_output_opt =
       breach_cmd->add_option("-o,--output", breach_output, "Breach folder (default: out/<scenario name>-breach)");
   breach_cmd->add_option("--threads", breach.threads, threads_help)->check(kWholeNumberFromOne);

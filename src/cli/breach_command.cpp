@@ -23,7 +23,8 @@ int breach_command(const BreachOptions& options) {
   breach::BreachJob job;
   job.scenario = options.scenario;
   job.keys = options.keys;
-  job.search = {options.from, options.to, options.steps, options.tolerance};
+  job.search = {.from = options.from, .to = options.to, .steps = options.steps, .tolerance = options.tolerance,
+                .converged_only = options.converged_only};
   job.directory = options.output.value_or(std::filesystem::path("out") / (options.scenario.stem().string() + "-breach"));
   job.overwrite = options.overwrite;
   breach::BreachOutcome outcome;

@@ -44,6 +44,7 @@ struct BreachOptions {
   int steps = 10;                               // --steps
   double tolerance = 5e-3;                      // --tolerance: the bracket's width, a share of the load
   std::optional<std::string> limit;             // --limit PATH=VALUE
+  bool converged_only = false;                  // --converged-only: an unsettled step breaks
   std::optional<std::filesystem::path> output;  // default out/<scenario stem>-breach
   std::optional<int> threads;
   bool overwrite = false;

@@ -26,6 +26,19 @@ bool is_plottable(double v, bool log_axis) { return std::isfinite(v) && (!log_ax
 
 bool is_open(const LineSeries& s, std::size_t i) { return !s.open.empty() && s.open[i]; }
 
+// A capped vertical bar from y_low to y_high (page coordinates) in the current colour.
+void draw_range_bar(cairo_t* cr, double x, double y_low, double y_high) {
+  const double cap = 3.0;
+  cairo_set_line_width(cr, 1.4);
+  cairo_move_to(cr, x, y_low);
+  cairo_line_to(cr, x, y_high);
+  cairo_move_to(cr, x - cap, y_low);
+  cairo_line_to(cr, x + cap, y_low);
+  cairo_move_to(cr, x - cap, y_high);
+  cairo_line_to(cr, x + cap, y_high);
+  cairo_stroke(cr);
+}
+
 bool has_open_point(const LinePlotSpec& spec) {
   return std::any_of(spec.series.begin(), spec.series.end(), [](const LineSeries& s) {
     return std::find(s.open.begin(), s.open.end(), true) != s.open.end();
@@ -237,6 +250,11 @@ void draw_legend(cairo_t* cr, const LinePlotSpec& spec, const Axis& x, const Axi
     text_w = std::max(text_w, text_width(cr, spec.open_label));
     ++rows;
   }
+  const bool range_row = !spec.range_label.empty() && !spec.range_bars.empty();
+  if (range_row) {
+    text_w = std::max(text_w, text_width(cr, spec.range_label));
+    ++rows;
+  }
   const bool marks_row = !spec.marks_label.empty() && !spec.marks_x.empty();
   if (marks_row) {
     text_w = std::max(text_w, text_width(cr, spec.marks_label));
@@ -291,6 +309,12 @@ void draw_legend(cairo_t* cr, const LinePlotSpec& spec, const Axis& x, const Axi
     draw_marker(cr, 0, bx + 16.0, y, true);
     draw_text(cr, spec.open_label, bx + 31.0, y, 0.0, 0.5);
   }
+  if (range_row) {
+    const double y = by + 3.0 + row * (r++ + 0.5);
+    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+    draw_range_bar(cr, bx + 16.0, y + 4.5, y - 4.5);
+    draw_text(cr, spec.range_label, bx + 31.0, y, 0.0, 0.5);
+  }
   if (marks_row) {
     const double y = by + 3.0 + row * (r + 0.5);
     draw_cross(cr, bx + 16.0, y, 3.0);
@@ -320,6 +344,17 @@ void render_line_plot(const std::filesystem::path& path, const LinePlotSpec& spe
       xlo = std::min(xlo, mark);
       xhi = std::max(xhi, mark);
     }
+  for (const RangeBar& bar : spec.range_bars) {
+    if (bar.series >= spec.series.size())
+      throw std::invalid_argument(fmt::format("line plot {}: a range bar of series {} of {}", path.string(), bar.series,
+                                              spec.series.size()));
+    if (!is_plottable(bar.x, spec.x_log) || !is_plottable(bar.low, spec.y_log) || !is_plottable(bar.high, spec.y_log))
+      continue;
+    xlo = std::min(xlo, bar.x);
+    xhi = std::max(xhi, bar.x);
+    ylo = std::min(ylo, bar.low);
+    yhi = std::max(yhi, bar.high);
+  }
   if (!(xlo <= xhi)) throw std::invalid_argument(fmt::format("line plot {}: nothing to plot", path.string()));
   if (!(ylo <= yhi)) ylo = spec.y_log ? 0.1 : 0.0, yhi = 1.0;  // crosses alone
   for (const ReferenceLine& r : spec.references)
@@ -377,6 +412,13 @@ void render_line_plot(const std::filesystem::path& path, const LinePlotSpec& spe
       for (std::size_t i = 0; i < s.x.size(); ++i)
         if (is_plottable(s.x[i], spec.x_log) && is_plottable(s.y[i], spec.y_log))
           draw_marker(cr, static_cast<int>(k), x.to_page(s.x[i]), y.to_page(s.y[i]), is_open(s, i));
+    }
+    for (const RangeBar& bar : spec.range_bars) {
+      if (!is_plottable(bar.x, spec.x_log) || !is_plottable(bar.low, spec.y_log) || !is_plottable(bar.high, spec.y_log))
+        continue;
+      const double* c = kPalette[bar.series % std::size(kPalette)];
+      cairo_set_source_rgb(cr, c[0], c[1], c[2]);
+      draw_range_bar(cr, x.to_page(bar.x), y.to_page(bar.low), y.to_page(bar.high));
     }
     cairo_restore(cr);
 

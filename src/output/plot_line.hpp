@@ -3,6 +3,7 @@
 // responses of parameter sweeps, several series with a legend, horizontal reference lines
 // (a tolerance, a baseline). PNG, SVG or PDF by file extension.
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -22,6 +23,13 @@ struct ReferenceLine {
   double y = 0.0;
 };
 
+// A value known only as a range at one x, drawn as a capped vertical bar from low to high in
+// its series' colour, on no line: an answer that still swung from pass to pass.
+struct RangeBar {
+  std::size_t series = 0;  // index into LinePlotSpec::series, for the colour
+  double x = 0.0, low = 0.0, high = 0.0;
+};
+
 struct LinePlotSpec {
   std::string title;    // shrunk to fit the page when long
   std::string warning;  // in red under the title, e.g. "NOT CONVERGED"
@@ -30,6 +38,8 @@ struct LinePlotSpec {
   std::vector<LineSeries> series;
   std::vector<ReferenceLine> references;
   std::string open_label;  // the legend entry of the hollow markers, shown when some point is open
+  std::vector<RangeBar> range_bars;
+  std::string range_label;  // the legend entry of the range bars, shown when there is one
   // Points with no value (a sweep case that failed): a red cross at each x on the frame's
   // bottom edge, with the legend entry `marks_label` when there is one.
   std::vector<double> marks_x;

@@ -138,9 +138,82 @@ TEST(LoadSearch, RefusesSettingsThatCannotBeSearched) {
 
 TEST(LoadSearch, NamesEachStatusAsBreachCsvWritesIt) {
   EXPECT_EQ(hb::status_name(hb::StepStatus::held), "held");
+  EXPECT_EQ(hb::status_name(hb::StepStatus::held_unsettled), "held, unsettled");
   EXPECT_EQ(hb::status_name(hb::StepStatus::beyond_limit), "beyond limit");
   EXPECT_EQ(hb::status_name(hb::StepStatus::not_converged), "not converged");
+  EXPECT_EQ(hb::status_name(hb::StepStatus::still_moving), "still moving");
   EXPECT_EQ(hb::status_name(hb::StepStatus::no_equilibrium), "no equilibrium");
   EXPECT_EQ(hb::status_name(hb::StepStatus::failed), "failed");
   EXPECT_EQ(hb::status_name(hb::StepStatus::interrupted), "interrupted");
+}
+
+namespace {
+
+// Three ranges of load, as a seal meets them: converged up to `settled`, at rest but swinging
+// (held, unsettled) up to `lifts`, no equilibrium beyond. Records which state each try started
+// from, as ThresholdStepper does.
+class SwingingStepper final : public hb::LoadStepper {
+ public:
+  SwingingStepper(double settled, double lifts) : settled_(settled), lifts_(lifts) {}
+  hb::StepResult try_load(double load) override {
+    started_from.push_back(kept_);
+    last_ = load;
+    tried.push_back(load);
+    if (load <= settled_) return {hb::StepStatus::held, 4, ""};
+    if (load <= lifts_) return {hb::StepStatus::held_unsettled, 30, "swings"};
+    return {hb::StepStatus::no_equilibrium, 7, "blocks escape"};
+  }
+  void keep_state() override { kept_ = last_; }
+
+  std::vector<double> tried;
+  std::vector<std::optional<double>> started_from;
+
+ private:
+  double settled_, lifts_;
+  std::optional<double> kept_;
+  double last_ = 0.0;
+};
+
+}  // namespace
+
+TEST(LoadSearch, AStepThatHeldUnsettledHoldsByDefaultAndTheBracketIsTheMechanicalBreach) {
+  SwingingStepper model(9.0, 23.5);
+  const hb::SearchResult r = hb::search_breach({.from = 0.0, .to = 40.0, .steps = 8, .tolerance = 1e-3}, model);
+  ASSERT_TRUE(r.held && r.broken);
+  EXPECT_LE(*r.held, 23.5);
+  EXPECT_GT(*r.broken, 23.5);
+  EXPECT_LE(*r.broken - *r.held, 1e-3 * *r.broken);
+  EXPECT_EQ(r.broken_status, hb::StepStatus::no_equilibrium);
+  // Unsettled: steps 10, 15, 20 and every bisection below 23.5 (each counted once).
+  int unsettled = 0;
+  for (const hb::SearchStep& s : r.steps) unsettled += s.result.status == hb::StepStatus::held_unsettled;
+  EXPECT_EQ(r.unsettled_held, unsettled);
+  EXPECT_GE(r.unsettled_held, 3);
+}
+
+TEST(LoadSearch, AfterAnUnsettledStepTheNextStartsFromItsState) {
+  SwingingStepper model(9.0, 23.5);
+  hb::search_breach({.from = 0.0, .to = 40.0, .steps = 8, .tolerance = 1e-2}, model);
+  std::optional<double> largest_held;
+  for (std::size_t i = 0; i < model.tried.size(); ++i) {
+    EXPECT_EQ(model.started_from[i], largest_held) << "step " << i;
+    if (model.tried[i] <= 23.5) largest_held = model.tried[i];  // held or held unsettled: kept
+  }
+}
+
+TEST(LoadSearch, ConvergedOnlyCountsAnUnsettledStepAsTheBreach) {
+  SwingingStepper model(9.0, 23.5);
+  const hb::SearchResult r = hb::search_breach(
+      {.from = 0.0, .to = 40.0, .steps = 8, .tolerance = 1e-3, .converged_only = true}, model);
+  ASSERT_TRUE(r.held && r.broken);
+  EXPECT_LE(*r.held, 9.0);
+  EXPECT_GT(*r.broken, 9.0);
+  EXPECT_LE(*r.broken - *r.held, 1e-3 * *r.broken);
+  EXPECT_EQ(r.broken_status, hb::StepStatus::held_unsettled);
+  EXPECT_EQ(r.unsettled_held, 0);
+  // 0, 5, 10 (unsettled: the breach), then bisections of [5, 10].
+  ASSERT_GE(model.tried.size(), 4u);
+  EXPECT_EQ(model.tried[2], 10.0);
+  EXPECT_EQ(model.tried[3], 7.5);
+  EXPECT_TRUE(r.steps[3].bisection);
 }
