@@ -27,7 +27,7 @@ const std::regex& flow_key() {
 }
 
 // Asks the program's stop request before every pass, and ends a step whose blocks came to rest
-// in none of kPassesStillMoving passes in a row (with settling passes: without them no pass
+// in none of kPassesNotAtRest passes in a row (with settling passes: without them no pass
 // tests for rest); tells `record` after every pass. Records nothing else (the search records
 // steps).
 class StepObserver final : public coupling::PassObserver {
@@ -35,14 +35,14 @@ class StepObserver final : public coupling::PassObserver {
   StepObserver(const std::function<bool()>& stop_requested, bool settling, const PassTrail& trail,
                std::function<void(const coupling::PassReport&)> record)
       : stop_requested_(stop_requested), settling_(settling), trail_(trail), record_(std::move(record)) {}
-  bool stop_requested() override { return user_stop() || still_moving(); }
+  bool stop_requested() override { return user_stop() || not_at_rest(); }
   bool user_stop() const { return stop_requested_ && stop_requested_(); }
-  bool still_moving() const { return settling_ && trail_.passes_still_moving() >= kPassesStillMoving; }
+  bool not_at_rest() const { return settling_ && trail_.passes_not_at_rest() >= kPassesNotAtRest; }
   void after_pass(const coupling::PassReport& r) override {
     spdlog::debug("coupling iteration {}: head change {:.3e}, displacement change {:.3e}, largest opening {:.3e} m, "
                   "{}, last step {}, {} step cuts, {} crossings switched{}",
                   r.iteration, r.head_change, r.displacement_change, r.largest_opening,
-                  r.at_rest ? "at rest" : "still moving", r.full_time_step ? "at the full time step" : "cut short",
+                  r.at_rest ? "at rest" : "not at rest", r.full_time_step ? "at the full time step" : "cut short",
                   r.step_cuts, r.joint_crossings_switched, r.converged ? ", converged" : "");
     record_(r);
   }
@@ -168,14 +168,12 @@ StepResult CoupledStepper::try_load(double load) {
     switch (loop.end) {
       case coupling::LoopEnd::converged: result.status = judge_converged_state(result.message); break;
       case coupling::LoopEnd::stop_requested:
-        if (observer.user_stop() || !observer.still_moving()) {
+        if (observer.user_stop() || !observer.not_at_rest()) {
           result.status = StepStatus::interrupted;
           break;
         }
-        result.status = StepStatus::still_moving;
-        result.message = fmt::format(
-            "the blocks came to rest in none of {} passes in a row (each ran its DDA steps and its settling steps with "
-            "them still moving)", trail_.passes_still_moving());
+        result.status = StepStatus::not_at_rest;
+        result.message = describe_not_at_rest(loop.last_pass->largest_opening);
         break;
       case coupling::LoopEnd::escaping:
         result.status = StepStatus::no_equilibrium;
@@ -209,6 +207,20 @@ void CoupledStepper::record_pass(const coupling::PassReport& r) {
   trail_.add(r.at_rest, r.full_time_step, std::move(conductivity));
 }
 
+// Why a step whose blocks came to rest in none of kPassesNotAtRest passes in a row ended: moving
+// at the full time step, or stalled on steps cut short (neither moving nor passing the at-rest
+// test: whether they would rest is unknown).
+std::string CoupledStepper::describe_not_at_rest(double largest_opening) const {
+  const int passes = trail_.passes_not_at_rest();
+  const int cut = trail_.passes_cut_short(passes);
+  return fmt::format("the blocks came to rest in none of {} passes in a row, each with its settling steps{}; the largest "
+                     "opening {:.3g} m", passes,
+                     cut == 0 ? ", still moving at the full time step"
+                              : fmt::format(" ({} of them ended on DDA steps cut short, where the blocks stall: they "
+                                            "barely move and do not pass the at-rest test)", cut),
+                     largest_opening);
+}
+
 // A loop that ran its passes out: held, unsettled when settling passes brought the blocks to
 // rest in each of its last kUnsettledPasses (or all, if fewer); else not converged.
 StepStatus CoupledStepper::judge_unconverged_state(int passes, std::string& message) {
@@ -220,11 +232,11 @@ StepStatus CoupledStepper::judge_unconverged_state(int passes, std::string& mess
   }
   if (!trail_.rested_in_last(kUnsettledPasses)) {
     const int over = std::min(kUnsettledPasses, trail_.passes());
-    const int cut = trail_.passes_on_cut_steps(kUnsettledPasses);
+    const int cut = trail_.passes_cut_short(kUnsettledPasses);
     message = fmt::format("the coupling loop did not converge in {} passes, and its blocks did not come to rest in each "
                           "of the last {}{}", passes, over,
-                          cut > 0 ? fmt::format(" ({} of them ended on a DDA step cut short, whose at-rest test proves "
-                                                "nothing)", cut)
+                          cut > 0 ? fmt::format(" ({} of them ended on a DDA step cut short, whose at-rest test "
+                                                "proves nothing)", cut)
                                   : "");
     return StepStatus::not_converged;
   }

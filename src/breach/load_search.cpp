@@ -13,7 +13,7 @@ std::string status_name(StepStatus status) {
     case StepStatus::held_unsettled: return "held, unsettled";
     case StepStatus::beyond_limit: return "beyond limit";
     case StepStatus::not_converged: return "not converged";
-    case StepStatus::still_moving: return "still moving";
+    case StepStatus::not_at_rest: return "not at rest";
     case StepStatus::no_equilibrium: return "no equilibrium";
     case StepStatus::failed: return "failed";
     case StepStatus::interrupted: return "interrupted";

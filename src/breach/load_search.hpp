@@ -26,14 +26,15 @@ namespace hydrodda::breach {
 // converge but the blocks came to rest in every one of its last passes, so the model holds
 // mechanically while its answer (K_eff) swings within a range; the search counts it as holding
 // unless SearchSettings::converged_only. `beyond_limit` held too but past the limit the user
-// set (e.g. a conductivity), which the search treats as the breach. `still_moving`: the blocks
-// came to rest in none of several passes in a row (no state to hold).
+// set (e.g. a conductivity), which the search treats as the breach. `not_at_rest`: the blocks
+// did not come to rest in several passes in a row (no state to hold:
+// moving, or stalled on DDA steps cut short).
 enum class StepStatus {
-  held, held_unsettled, beyond_limit, not_converged, still_moving, no_equilibrium, failed, interrupted
+  held, held_unsettled, beyond_limit, not_converged, not_at_rest, no_equilibrium, failed, interrupted
 };
 
 // As breach.csv writes it: "held", "held, unsettled", "beyond limit", "not converged",
-// "still moving", "no equilibrium", "failed", "interrupted".
+// "not at rest", "no equilibrium", "failed", "interrupted".
 std::string status_name(StepStatus status);
 
 struct StepResult {

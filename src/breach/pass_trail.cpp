@@ -9,7 +9,7 @@ void PassTrail::add(bool at_rest, bool full_time_step, std::vector<std::optional
   passes_.push_back({at_rest, full_time_step, std::move(conductivity)});
 }
 
-int PassTrail::passes_still_moving() const {
+int PassTrail::passes_not_at_rest() const {
   int moving = 0;
   for (auto p = passes_.rbegin(); p != passes_.rend() && !p->at_rest; ++p) ++moving;
   return moving;
@@ -21,10 +21,10 @@ bool PassTrail::rested_in_last(int n) const {
   return std::all_of(passes_.end() - count, passes_.end(), [](const Pass& p) { return p.at_rest && p.full_time_step; });
 }
 
-int PassTrail::passes_on_cut_steps(int n) const {
+int PassTrail::passes_cut_short(int n) const {
   const int count = std::max(std::min(n, passes()), 0);
   return static_cast<int>(
-      std::count_if(passes_.end() - count, passes_.end(), [](const Pass& p) { return p.at_rest && !p.full_time_step; }));
+      std::count_if(passes_.end() - count, passes_.end(), [](const Pass& p) { return !p.full_time_step; }));
 }
 
 std::vector<std::optional<ValueRange>> PassTrail::ranges_over_last(int n) const {

@@ -4,8 +4,8 @@
 // converge is told apart (docs/breach.md, "What holds"):
 //   - its blocks came to rest in each of its last passes: the model holds mechanically, its
 //     loop swings; the answer is the range of K_eff/K_m over those passes (held, unsettled);
-//   - its blocks came to rest in none of kPassesStillMoving passes in a row: no pass's fluid load
-//     has a state of rest where they are (still moving), and the step ends there.
+//   - its blocks came to rest in none of kPassesNotAtRest passes in a row: moving, or stalled on
+//     DDA steps cut short, they reached no state of rest (not at rest), and the step ends there.
 
 #include <optional>
 #include <string>
@@ -13,9 +13,9 @@
 
 namespace hydrodda::breach {
 
-// Passes in a row whose blocks did not come to rest after which a step ends `still moving`
+// Passes in a row whose blocks did not come to rest after which a step ends `not at rest`
 // (as the loop's own diagnosis, coupling::kPassesNotAtRest).
-inline constexpr int kPassesStillMoving = 5;
+inline constexpr int kPassesNotAtRest = 5;
 // Passes over which an unsettled step's blocks must have rested and its K_eff/K_m is ranged (as
 // a run's summary ranges an unconverged answer, run::kRangePasses).
 inline constexpr int kUnsettledPasses = 10;
@@ -44,12 +44,12 @@ class PassTrail {
   int passes() const { return static_cast<int>(passes_.size()); }
 
   // The last passes in a row whose blocks failed the at-rest test.
-  int passes_still_moving() const;
+  int passes_not_at_rest() const;
   // Whether the blocks came to rest, at the full time step, in each of the last min(n, passes())
   // passes (false with none).
   bool rested_in_last(int n) const;
-  // Of the last min(n, passes()) passes, how many passed the at-rest test on a step cut short.
-  int passes_on_cut_steps(int n) const;
+  // Of the last min(n, passes()) passes, how many ended on a DDA step cut short.
+  int passes_cut_short(int n) const;
   // Per region, the least and largest K_eff/K_m over the last min(n, passes()) passes; none for
   // a region with no value in them.
   std::vector<std::optional<ValueRange>> ranges_over_last(int n) const;

@@ -270,6 +270,13 @@ void draw_legend(cairo_t* cr, const LinePlotSpec& spec, const Axis& x, const Axi
   std::size_t best = 0, best_hidden = std::numeric_limits<std::size_t>::max();
   for (std::size_t c = 0; c < corners.size(); ++c) {
     std::size_t hidden = 0;
+    const auto inside = [&](double px, double py) {
+      return px > corners[c][0] - 4 && px < corners[c][0] + w + 4 && py > corners[c][1] - 4 &&
+             py < corners[c][1] + h + 4;
+    };
+    for (const RangeBar& bar : spec.range_bars)  // its ends and middle
+      if (is_plottable(bar.x, x.log) && is_plottable(bar.low, y.log) && is_plottable(bar.high, y.log))
+        for (double v : {bar.low, 0.5 * (bar.low + bar.high), bar.high}) hidden += inside(x.to_page(bar.x), y.to_page(v));
     for (const LineSeries& s : spec.series)
       for (std::size_t i = 0; i < s.x.size(); ++i) {
         if (!is_plottable(s.x[i], x.log) || !is_plottable(s.y[i], y.log)) continue;

@@ -141,7 +141,7 @@ TEST(LoadSearch, NamesEachStatusAsBreachCsvWritesIt) {
   EXPECT_EQ(hb::status_name(hb::StepStatus::held_unsettled), "held, unsettled");
   EXPECT_EQ(hb::status_name(hb::StepStatus::beyond_limit), "beyond limit");
   EXPECT_EQ(hb::status_name(hb::StepStatus::not_converged), "not converged");
-  EXPECT_EQ(hb::status_name(hb::StepStatus::still_moving), "still moving");
+  EXPECT_EQ(hb::status_name(hb::StepStatus::not_at_rest), "not at rest");
   EXPECT_EQ(hb::status_name(hb::StepStatus::no_equilibrium), "no equilibrium");
   EXPECT_EQ(hb::status_name(hb::StepStatus::failed), "failed");
   EXPECT_EQ(hb::status_name(hb::StepStatus::interrupted), "interrupted");

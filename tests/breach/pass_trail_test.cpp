@@ -12,14 +12,15 @@ namespace hb = hydrodda::breach;
 
 TEST(PassTrail, CountsTheLastPassesInARowWhoseBlocksDidNotComeToRest) {
   hb::PassTrail trail;
-  EXPECT_EQ(trail.passes_still_moving(), 0);
+  EXPECT_EQ(trail.passes_not_at_rest(), 0);
   EXPECT_FALSE(trail.rested_in_last(10));  // no pass: nothing came to rest
   for (bool at_rest : {false, true, false, false, false}) trail.add(at_rest, true, {});
-  EXPECT_EQ(trail.passes_still_moving(), 3);
+  EXPECT_EQ(trail.passes_not_at_rest(), 3);
   trail.add(true, false, {});  // at rest on a step cut short: not moving, not rested either
-  EXPECT_EQ(trail.passes_still_moving(), 0);
+  EXPECT_EQ(trail.passes_not_at_rest(), 0);
   EXPECT_FALSE(trail.rested_in_last(1));
-  EXPECT_EQ(trail.passes_on_cut_steps(3), 1);
+  EXPECT_EQ(trail.passes_cut_short(3), 1);
+  EXPECT_EQ(trail.passes_cut_short(100), 1);
 }
 
 TEST(PassTrail, RestedInLastLooksOnlyAtTheLastPasses) {
