@@ -119,7 +119,8 @@ def resume(folder, *, progress=None, stop_after=None, threads=None):
 class BreachResult:
     """Where a breach search ended (docs/breach.md): held (the largest load that held) and
     broken (the least that did not), either None; broken_status ('beyond limit', 'not
-    converged', 'no equilibrium', 'failed'); narrowed (the bracket reached the tolerance);
+    converged', 'not at rest', 'no equilibrium', 'failed'); a step that held unsettled (blocks at
+    rest, the loop swinging) holds; narrowed (the bracket reached the tolerance);
     verdict (the line `hydrodda breach` prints); folder; steps, one dict per step tried (index,
     load, kind, status, passes, message); summary (breach.json as a dict)."""
 
