@@ -203,7 +203,7 @@ void BreachFiles::draw_curves(const std::string& format) const {
   k.y_label = "K_eff / K_matrix";
   k.y_log = true;
   k.open_label = "beyond the limit";
-  k.range_label = "held, unsettled: range over its last passes";
+  k.range_label = "held, unsettled (last passes)";
   k.marks_x = broken;
   k.marks_label = "did not hold";
   for (std::size_t r = 0; r < regions_.size(); ++r) {

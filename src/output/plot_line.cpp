@@ -274,9 +274,10 @@ void draw_legend(cairo_t* cr, const LinePlotSpec& spec, const Axis& x, const Axi
       return px > corners[c][0] - 4 && px < corners[c][0] + w + 4 && py > corners[c][1] - 4 &&
              py < corners[c][1] + h + 4;
     };
-    for (const RangeBar& bar : spec.range_bars)  // its ends and middle
+    for (const RangeBar& bar : spec.range_bars)  // hidden when its ends or its middle are
       if (is_plottable(bar.x, x.log) && is_plottable(bar.low, y.log) && is_plottable(bar.high, y.log))
-        for (double v : {bar.low, 0.5 * (bar.low + bar.high), bar.high}) hidden += inside(x.to_page(bar.x), y.to_page(v));
+        hidden += inside(x.to_page(bar.x), y.to_page(bar.low)) || inside(x.to_page(bar.x), y.to_page(bar.high)) ||
+                  inside(x.to_page(bar.x), y.to_page(0.5 * (bar.low + bar.high)));
     for (const LineSeries& s : spec.series)
       for (std::size_t i = 0; i < s.x.size(); ++i) {
         if (!is_plottable(s.x[i], x.log) || !is_plottable(s.y[i], y.log)) continue;
