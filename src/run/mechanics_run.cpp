@@ -11,6 +11,7 @@
 #include "run/model_building.hpp"
 #include "run/no_equilibrium.hpp"
 #include "run/mechanics_model.hpp"
+#include "run/mechanics_rest.hpp"
 #include "run/paraview_output.hpp"
 #include "run/run_summary.hpp"
 #include "run/runs.hpp"
@@ -113,7 +114,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
                 describe_status_for_figures(fmt::format("no equilibrium at step {}", model.steps()), message));
   };
   const bool static_analysis = m.analysis == dda::Analysis::static_;
-  double last_step_displacement = 0.0;
+  dda::StepReport last_step;
   write_step(0, 0.0);
   long long last_written = 0;
   try {
@@ -123,7 +124,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
                    fmt::format("interrupted at step {} (t = {:g} s)", model.steps(), system.time()),
                    fmt::format("interrupted at step {}", model.steps()));
       const dda::StepReport r = model.step();
-      last_step_displacement = r.max_displacement;
+      last_step = r;
       fracture_state.reset();  // no longer the blocks' state: measured again at an output step
       const long long step = model.steps();
       std::vector<std::string> row{CsvTable::cell(step), CsvTable::cell(r.time), CsvTable::cell(r.time_step),
@@ -178,19 +179,27 @@ output::RunSummary run_mechanics(const RunContext& context) {
   if (last_written != model.steps()) write_step(model.steps(), system.time());
   // Still moving at the end (its last step moved a vertex past the contacts' own precision).
   if (const auto escaping = find_escaping_blocks(system);
-      static_analysis && !escaping.empty() && last_step_displacement > system.penetration_tolerance())
+      static_analysis && !escaping.empty() && last_step.max_displacement > system.penetration_tolerance())
     throw no_equilibrium(escaping);
   if (const std::string unreached = describe_unreached_displacement(s, system); !unreached.empty())
     throw stop(RunStatus::failed, unreached, describe_status_for_figures("failed", unreached));
 
   output::RunSummary summary = model.summary();
   if (fracture_state) summary.fractures = summarise_fractures(*fracture_state, fracture_types);
-  // Mechanics alone has no coupling loop: `converged` says the run reached its end.
-  summary.converged = true;
+  // Mechanics alone has no coupling loop: a static run has converged when its blocks are at rest
+  // at its end, a dynamic one when it reached its end.
+  const std::string moving =
+      static_analysis ? describe_motion_at_end(s, system, last_step, model.steps()) : std::string();
+  summary.converged = moving.empty();
+  if (!moving.empty()) {
+    summary.message = moving;
+    spdlog::warn("{}", moving);
+  }
   summary.timings.push_back(
       {"mechanics", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
   context.write_summary(summary);  // the run's result is on disk before the figure is drawn
-  draw_figure("");  // of the last step, written just above or in the loop
+  // of the last step, written just above or in the loop
+  draw_figure(moving.empty() ? "" : fmt::format("not at rest at step {}", model.steps()));
   return summary;
 }
 

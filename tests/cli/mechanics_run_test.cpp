@@ -99,4 +99,40 @@ TEST(MechanicsRun, ABlockPushedPastItsFrictionHasNoEquilibrium) {
   }
 }
 
+// A static run's `converged` says its blocks are at rest at its end (run/mechanics_rest.hpp):
+// the pushed block (held by friction at F*/2) at a time step of 1e-4 s, where a static step's
+// inertia 2M/Δt² = 5e11 N/m is as stiff as its contacts' springs and each step closes only part
+// of the way to equilibrium. Cut short at 2 steps the block still moves (6e-8 m a step against
+// the 1e-9 m at rest, its unbalanced force half the forces on it): exit 0, status "ok",
+// converged false, and the message says by how much, which block and what to raise. Given 300
+// steps it is at rest: converged.
+TEST(MechanicsRun, AStaticRunCutShortOfRestIsNotConverged) {
+  const fs::path original = fs::path(HYDRODDA_SOURCE_DIR) / "tests/cli/scenarios/pushed_block.toml";
+  for (const int steps : {2, 300}) {
+    const fs::path file = hydrodda::testing::edited_scenario(
+        original, "hydrodda-static-rest-" + std::to_string(steps),
+        {{"time_step = 1.0", "time_step = 1.0e-4"}, {"steps = 300", "steps = " + std::to_string(steps)}});
+    const fs::path out = fs::temp_directory_path() / ("hydrodda-static-rest-" + std::to_string(steps));
+    fs::remove_all(out);
+    const auto result = run_program("run " + file.string() + " -o " + out.string() + " --threads 1");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    const auto summary = nlohmann::json::parse(std::ifstream(out / "summary.json"));
+    EXPECT_EQ(summary["status"], "ok");
+    EXPECT_EQ(summary["iterations"], steps);
+    if (steps == 2) {
+      EXPECT_EQ(summary["converged"], false);
+      const std::string message = summary["message"];
+      EXPECT_NE(message.find("the blocks were not at rest at the end: the last step (step 2) still moved a vertex by"),
+                std::string::npos) << message;
+      EXPECT_NE(message.find("block 1 at (1.5, 1.5)"), std::string::npos) << message;
+      EXPECT_NE(message.find("raise mechanics.steps"), std::string::npos) << message;
+      EXPECT_NE(result.output.find("not converged; results in"), std::string::npos) << result.output;
+    } else {
+      EXPECT_EQ(summary["converged"], true) << summary["message"];
+    }
+    fs::remove_all(out);
+    fs::remove(file);
+  }
+}
+
 }  // namespace
