@@ -706,7 +706,14 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
       ++report.lagrangian_iterations;
       for (std::size_t k = 0; k < sliding.size(); ++k) used[k] = sliding[k]->record.normal_force;
       if (al > 0 && al + 1 == lagrangian_limit_) last_pass = d;
-      d = solver_->solve(assemble_contact_rhs(f_base));
+      // Multipliers that grew without bound (a pass's solution far past the allowed step,
+      // λ ← λ + p d amplifying it pass after pass) leave nothing to solve: the try is cut.
+      const Eigen::VectorXd rhs = assemble_contact_rhs(f_base);
+      if (!std::isfinite(rhs.norm())) {
+        unsettled_forces_ = "the contact forces grew without bound";
+        return Unsettled::contact_forces;
+      }
+      d = solver_->solve(rhs);
       ContactForceExtent extent = update_contact_forces(d);
       for (std::size_t k = 0; k < sliding.size(); ++k) image[k] = sliding[k]->record.normal_force;
       const double friction_change = sliding.empty() ? 0.0 : (image - used).lpNorm<Eigen::Infinity>();
