@@ -23,9 +23,9 @@ constexpr std::string_view kMagic = "hydrodda checkpoint\n";
 // passes); 13: the hashes of the files the scenario names, and the porosity and permeability
 // of the last pass; 14: history rows end in each pass's changes (contacts, joint crossings,
 // fluid load, open–close iterations, step cuts); 15: whether the tension cutoff released each
-// open contact. Only the current format is read: a run stopped by an older hydrodda is run
-// again.
-constexpr std::int64_t kVersion = 15;
+// open contact; 16: the bonds broken so far (a resumed run had its sub-blocks bonded whole
+// again). Only the current format is read: a run stopped by an older hydrodda is run again.
+constexpr std::int64_t kVersion = 16;
 // The last 8 bytes: the CRC-32 of every byte before them (zlib's, as a 64-bit word). A CRC
 // detects every error burst of up to 32 bits, so a flipped bit is refused, not resumed from;
 // zlib computes it four times as fast as a byte-at-a-time hash on a checkpoint of tens of MB.
@@ -259,6 +259,14 @@ void write_mechanics(Writer& w, const dda::SystemState& s) {
   w.put(s.measured_points);
   w.put(s.vertex_forces);
   w.put(s.roller_reliefs);
+  w.put(static_cast<std::int64_t>(s.bond_breaks.size()));
+  for (const dda::BondBreak& b : s.bond_breaks) {
+    w.put(b.bond);
+    w.put(b.time);
+    w.put(static_cast<int>(b.mode));
+    w.put(b.from);
+    w.put(b.to);
+  }
 }
 
 void read_mechanics(Reader& r, dda::SystemState& s) {
@@ -297,6 +305,21 @@ void read_mechanics(Reader& r, dda::SystemState& s) {
   r.get(s.measured_points);
   r.get(s.vertex_forces);
   r.get(s.roller_reliefs);
+  std::int64_t breaks = 0;
+  r.get(breaks);
+  if (breaks < 0 || breaks > kMaxCount) r.fail();
+  for (std::int64_t i = 0; i < breaks; ++i) {
+    dda::BondBreak b;
+    r.get(b.bond);
+    r.get(b.time);
+    int mode = 0;
+    r.get(mode);
+    if (mode < static_cast<int>(dda::BondFailure::tension) || mode > static_cast<int>(dda::BondFailure::shear)) r.fail();
+    b.mode = static_cast<dda::BondFailure>(mode);
+    r.get(b.from);
+    r.get(b.to);
+    s.bond_breaks.push_back(b);
+  }
 }
 
 // `Flow`: a hydro::FlowSolution, const when written.
@@ -575,7 +598,8 @@ namespace hydrodda::output {
 namespace {
 
 constexpr std::string_view kCoupledTransientMagic = "hydrodda coupled transient checkpoint\n";
-constexpr std::int64_t kCoupledTransientVersion = 1;
+// 2: the DDA state's bonds broken so far (as the coupled checkpoint's format 16).
+constexpr std::int64_t kCoupledTransientVersion = 2;
 
 // The fields after the header and before the engines' states, in one order for both ways.
 template <class Io, class Checkpoint>

@@ -4,6 +4,7 @@
 
 #include "output/field_figure.hpp"
 #include "output/vtk_writer.hpp"
+#include "run/paraview_output.hpp"
 
 namespace hydrodda::run {
 
@@ -14,40 +15,65 @@ const char* mode_name(dda::BondFailure mode) { return mode == dda::BondFailure::
 }  // namespace
 
 BondOutput::BondOutput(const output::RunFolder& folder, const scenario::Scenario& s, const dda::System& system,
-                       int trace_count)
-    : folder_(folder), trace_count_(trace_count) {
+                       int trace_count, BondClock clock)
+    : folder_(folder), clock_(clock), trace_count_(trace_count) {
+  const auto n = static_cast<std::size_t>(system.bond_count());
   for (int b = 0; b < system.bond_count(); ++b) {
     const std::string& name = s.joint_type(system.bond_joint_type(b)).name;
     type_names_.push_back(name.empty() ? "joint" : name);
+    broken_.push_back(system.is_bond_broken(b) ? 1 : 0);
   }
+  broken_at_.assign(n, -1.0);
+  mode_.assign(n, 0);
+  // Broken by a step, not from the start (a resumed run's earlier breaks): listed by continue_from.
+  for (const dda::BondBreak& b : system.bond_breaks()) broken_[static_cast<std::size_t>(b.bond)] = 0;
 }
 
-int BondOutput::add_breaks(long long step, const dda::System& system, FractureOutput& fractures) {
+int BondOutput::add_breaks(long long step, const dda::System& system, FractureOutput& fractures, double pass_time) {
   const std::vector<dda::BondBreak>& breaks = system.bond_breaks();
   std::vector<BrokenBondRow> rows;
   for (std::size_t k = listed_; k < breaks.size(); ++k) {
     const dda::BondBreak& b = breaks[k];
-    rows.push_back({trace_count_ + b.bond, b.bond, b.time, mode_name(b.mode),
+    const bool by_pass = clock_ == BondClock::pass;
+    const double when = by_pass ? static_cast<double>(step) : b.time;
+    rows.push_back({trace_count_ + b.bond, b.bond, by_pass ? pass_time : b.time, mode_name(b.mode),
                     type_names_.at(static_cast<std::size_t>(b.bond)), b.from, b.to});
+    const auto bond = static_cast<std::size_t>(b.bond);
+    broken_[bond] = 1;
+    broken_at_[bond] = when;
+    mode_[bond] = b.mode == dda::BondFailure::shear ? 2 : 1;
   }
   listed_ = breaks.size();
   if (!rows.empty()) fractures.add_broken_bonds(step, rows);
   return static_cast<int>(rows.size());
 }
 
+void BondOutput::continue_from(const dda::System& system, std::span<const int> broken_per_pass,
+                               std::span<const int> written) {
+  const std::vector<dda::BondBreak>& breaks = system.bond_breaks();
+  std::size_t k = 0;
+  for (std::size_t pass = 0; pass < broken_per_pass.size(); ++pass)
+    for (int i = 0; i < broken_per_pass[pass] && k < breaks.size(); ++i, ++k) {
+      const auto bond = static_cast<std::size_t>(breaks[k].bond);
+      broken_[bond] = 1;
+      broken_at_[bond] = static_cast<double>(pass + 1);
+      mode_[bond] = breaks[k].mode == dda::BondFailure::shear ? 2 : 1;
+    }
+  listed_ = k;
+  if (!series_) series_.emplace(folder_.file("bonds.pvd"));
+  for (int pass : written) list_if_present(*series_, folder_, pass, fmt::format("bonds_{:04d}.vtu", pass));
+}
+
 void BondOutput::write_series(int step, double time, const dda::System& system) {
   std::vector<std::array<geometry::Point, 2>> faces;
   output::DataArray bond{"bond", 1, {}}, broken{"broken", 1, {}}, mode{"mode", 1, {}}, broken_at{"broken_at", 1, {}};
   for (int b = 0; b < system.bond_count(); ++b) {
+    const auto k = static_cast<std::size_t>(b);
     faces.push_back(system.bond_face(b));
     bond.values.push_back(b);
-    broken.values.push_back(system.is_bond_broken(b) ? 1.0 : 0.0);
-    mode.values.push_back(0.0);
-    broken_at.values.push_back(-1.0);
-  }
-  for (const dda::BondBreak& b : system.bond_breaks()) {
-    mode.values[static_cast<std::size_t>(b.bond)] = b.mode == dda::BondFailure::shear ? 2.0 : 1.0;
-    broken_at.values[static_cast<std::size_t>(b.bond)] = b.time;
+    broken.values.push_back(broken_[k] ? 1.0 : 0.0);
+    mode.values.push_back(mode_[k]);
+    broken_at.values.push_back(broken_at_[k]);
   }
   const std::vector<output::DataArray> cells{bond, broken, mode, broken_at};
   const std::string name = fmt::format("bonds_{:04d}.vtu", step);
@@ -60,16 +86,21 @@ void BondOutput::draw_figure(const scenario::Scenario& s, const dda::System& sys
   if (s.output.figures.empty()) return;
   output::FieldFigure figure;
   figure.title = s.title;
-  figure.subtitle = fmt::format("Broken bonds ({} of {}; intact in grey), {}", system.bond_breaks().size(),
-                                system.bond_count(), when);
-  figure.field_label = "broke at (s)";
+  // Bonds the system holds broken that were never listed: broken in the step (or pass) that failed.
+  int unlisted = 0;
+  for (int b = 0; b < system.bond_count(); ++b)
+    if (system.is_bond_broken(b) && !broken_[static_cast<std::size_t>(b)]) ++unlisted;
+  const char* unit = clock_ == BondClock::pass ? "pass" : "step";
+  figure.subtitle = fmt::format("Broken bonds ({} of {}; intact in grey), {}{}", listed_, system.bond_count(), when,
+                                unlisted > 0 ? fmt::format("; {} more in the failed {}, not drawn", unlisted, unit)
+                                             : std::string());
+  figure.field_label = clock_ == BondClock::pass ? "broke in pass" : "broke at (s)";
   for (int b = 0; b < system.block_count(); ++b) figure.blocks.push_back(system.polygon(b));
-  std::vector<double> broken_at(static_cast<std::size_t>(system.bond_count()), 0.0);
-  for (const dda::BondBreak& b : system.bond_breaks()) broken_at[static_cast<std::size_t>(b.bond)] = b.time;
   for (int b = 0; b < system.bond_count(); ++b) {
+    const auto k = static_cast<std::size_t>(b);
     figure.segments.push_back(system.bond_face(b));
-    figure.segment_values.push_back(broken_at[static_cast<std::size_t>(b)]);
-    figure.segment_highlighted.push_back(system.is_bond_broken(b));
+    figure.segment_values.push_back(broken_at_[k] < 0.0 ? 0.0 : broken_at_[k]);
+    figure.segment_highlighted.push_back(broken_[k] != 0);
   }
   for (const std::string& format : s.output.figures)
     output::render_field_figure(folder_.figures() / ("cracks." + format), figure);

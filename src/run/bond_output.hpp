@@ -1,9 +1,11 @@
 #pragma once
 // The run folder's record of bonds (docs/output.md, "Bonds"): each bond that broke as a new
 // fracture in fractures.csv, and bonds.pvd with bonds_NNNN.vtu, every bonded face as a line
-// with its state.
+// with its state. A mechanics run records its breaks by DDA step and time (s), a coupled run by
+// the coupling iteration (pass) whose DDA steps broke them.
 
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -15,25 +17,42 @@
 
 namespace hydrodda::run {
 
+// What a break is recorded at: the time (s) of the DDA step it broke in, or the pass.
+enum class BondClock { time, pass };
+
 class BondOutput {
  public:
   // `trace_count`: the fractures the traces number, after which the broken bonds are numbered.
+  // The bonds `system` holds broken and not among its breaks started broken (a tessellation's
+  // cracks).
   BondOutput(const output::RunFolder& folder, const scenario::Scenario& scenario, const dda::System& system,
-             int trace_count);
+             int trace_count, BondClock clock = BondClock::time);
 
-  // The bonds that broke since the last call, as rows of fractures.csv at step `step`; how many.
-  int add_breaks(long long step, const dda::System& system, FractureOutput& fractures);
+  // The bonds that broke since the last call, as rows of fractures.csv at step (or pass) `step`,
+  // their `time` each break's own step's end (BondClock::time) or the pass's, `pass_time`
+  // (BondClock::pass, which records the pass as when it broke); how many. Only breaks listed
+  // here are written or drawn as broken: those of a step that failed never are.
+  int add_breaks(long long step, const dda::System& system, FractureOutput& fractures, double pass_time = 0.0);
+  // A resumed coupled run: the breaks `system` holds are those of its earlier passes,
+  // `broken_per_pass[p]` of them in pass p + 1, in order (history.csv's broken_bonds); bonds.pvd
+  // lists again the files of the passes `written` that are still there.
+  void continue_from(const dda::System& system, std::span<const int> broken_per_pass, std::span<const int> written);
   // bonds_NNNN.vtu, listed in bonds.pvd at `time`: each bond's face (the first sub-block's edge)
   // with `bond` (its id), `broken` (0 or 1), `mode` (0 intact, 1 tension, 2 shear) and
-  // `broken_at` (the time it broke; −1 intact).
+  // `broken_at` (the time it broke, or its pass; −1 intact or broken from the start).
   void write_series(int step, double time, const dda::System& system);
   // figures/cracks.* for each format output.figures asks for: the sub-blocks as they are, each
-  // broken bond's face coloured by the time it broke, intact ones thin and grey.
+  // broken bond's face coloured by the time (or pass) it broke, intact ones thin and grey; bonds
+  // broken in a step that failed are not drawn as broken, and the subtitle says how many.
   void draw_figure(const scenario::Scenario& scenario, const dda::System& system, const std::string& when) const;
 
  private:
   const output::RunFolder& folder_;
+  BondClock clock_;
   std::vector<std::string> type_names_;  // per bond
+  std::vector<char> broken_;             // per bond: broken from the start or in a listed break
+  std::vector<double> broken_at_;        // per bond: when its listed break was (−1: none)
+  std::vector<char> mode_;               // per bond: 0 intact or from the start, 1 tension, 2 shear
   int trace_count_ = 0;
   std::size_t listed_ = 0;  // breaks already in fractures.csv
   std::optional<output::PvdSeries> series_;

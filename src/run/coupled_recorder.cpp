@@ -21,7 +21,7 @@ using output::CsvTable;
 
 // history.csv's header: the pass's norms and fields, each boundary's flow, each region's flow
 // and conductivity, then the loop's own measures.
-std::vector<std::string> make_history_columns(const scenario::Scenario& s) {
+std::vector<std::string> make_history_columns(const scenario::Scenario& s, bool bonded) {
   std::vector<std::string> columns{"iteration", "time", "head_change", "displacement_change",
                                    "largest_opening", "mean_porosity", "max_permeability"};
   for (const scenario::FlowBoundaryCondition& bc : s.flow->boundaries) columns.push_back("flow_" + bc.name);
@@ -32,6 +32,9 @@ std::vector<std::string> make_history_columns(const scenario::Scenario& s) {
   columns.insert(columns.end(), {"head_change_two_passes", "relaxation", "load_factor", "contact_state_changes",
                                  "joint_crossings_switched", "fluid_load_change", "most_open_close_iterations",
                                  "step_cuts", "at_rest"});
+  // A model with bonds: the bonds broken in the pass (none without, so that such a run's
+  // history is as it was).
+  if (bonded) columns.push_back("broken_bonds");
   // Loads over time: the load step each pass ran at and its time (none when every load is a
   // constant, so that such a run's history is as it was).
   if (!scenario::find_load_times(s).empty()) columns.insert(columns.end(), {"load_step", "load_time"});
@@ -66,7 +69,7 @@ CoupledRecorder::CoupledRecorder(const RunContext& context, const CoupledModel& 
       scenario_(context.scenario),
       model_(model),
       refined_tips_(std::move(refined_tips)),
-      columns_(make_history_columns(context.scenario)),
+      columns_(make_history_columns(context.scenario, model.mechanics().bond_count() > 0)),
       history_(columns_),
       measure_({"iteration", "time", "name", "x", "y", "ux", "uy"}),
       paraview_(context.folder, context.scenario.output.fields),
@@ -82,6 +85,11 @@ CoupledRecorder::CoupledRecorder(const RunContext& context, const CoupledModel& 
   cubic_law_ = s.flow->permeability_law == coupling::PermeabilityLaw::cubic;
   matrix_permeability_ = make_permeability_model(s).matrix_permeability();
   follow_tips_ = meter_ && s.mesh->refine_tips && fractures::current_round(refined_tips_) <= scenario::kRefineTipRounds;
+  if (model.mechanics().bond_count() > 0) {
+    fractures_.list_broken_bonds();
+    bonds_.emplace(context.folder, s, model.mechanics(), static_cast<int>(fracture_type_names(s).size()),
+                   BondClock::pass);
+  }
 }
 
 void CoupledRecorder::start() { context_.folder.write("scenario.toml", context_.scenario_text); }
@@ -95,7 +103,14 @@ void CoupledRecorder::resume_from(const output::RunCheckpoint& saved, CoupledMod
   for (const std::vector<std::string>& row : saved.history) history_.add_row(row);
   paraview_.list_written(saved.written_iterations);
   const int iterations = model.loop().iterations();
-  if (meter_)
+  if (bonds_) {
+    const auto column = static_cast<std::size_t>(
+        std::find(columns_.begin(), columns_.end(), "broken_bonds") - columns_.begin());
+    std::vector<int> broken_per_pass;
+    for (const std::vector<std::string>& row : saved.history) broken_per_pass.push_back(std::stoi(row.at(column)));
+    bonds_->continue_from(model.mechanics(), broken_per_pass, saved.written_iterations);
+  }
+  if (meter_ || bonds_)
     fractures_.continue_from(iterations,
                              scenario_.output.fields.fractures ? saved.written_iterations : std::vector<int>{});
   // The fractures as the last pass left them: a run resumed after its last pass (to write its
@@ -124,6 +139,9 @@ int CoupledRecorder::passes_before_load_step() const {
 
 void CoupledRecorder::after_pass(const coupling::PassReport& r) {
   if (meter_) measure_fractures();
+  // The bonds broken in the pass's DDA steps, recorded at the pass (before its fractures' rows,
+  // as a mechanics run's step).
+  if (bonds_) broken_in_pass_ = bonds_->add_breaks(r.iteration, model_.mechanics(), fractures_, r.time);
   add_history_row(r);
   add_measures(r);
   if (meter_) fractures_.add_rows(r.iteration, r.time, *fracture_state_);
@@ -165,6 +183,7 @@ void CoupledRecorder::add_history_row(const coupling::PassReport& r) {
                          CsvTable::cell(static_cast<long long>(r.most_open_close_iterations)),
                          CsvTable::cell(static_cast<long long>(r.step_cuts)),
                          CsvTable::cell(static_cast<long long>(r.at_rest ? 1 : 0))});
+  if (bonds_) row.push_back(CsvTable::cell(static_cast<long long>(broken_in_pass_)));
   if (model_.has_load_tables())
     row.insert(row.end(), {CsvTable::cell(static_cast<long long>(model_.load_step())), CsvTable::cell(model_.load_time())});
   history_.add_row(row);
@@ -224,6 +243,7 @@ void CoupledRecorder::write_fields(int iteration) {
   paraview_.write_fluid(iteration, iteration, model_.mesh(), loop.flow(), loop.porosity().porosity,
                         loop.permeability());
   paraview_.write_blocks(iteration, iteration, model_.mechanics());
+  if (bonds_) bonds_->write_series(iteration, iteration, model_.mechanics());
   if (meter_ && scenario_.output.fields.fractures) {
     if (!fracture_state_) measure_fractures();
     fractures_.write_series(iteration, iteration, *fracture_state_);
@@ -271,6 +291,12 @@ std::vector<fractures::WedgeTipElement> CoupledRecorder::find_tip_elements() {
 const mesh::PointLocator& CoupledRecorder::tip_locator() {
   if (!locator_) locator_.emplace(model_.mesh());
   return *locator_;
+}
+
+void CoupledRecorder::draw_bond_figure(const std::string& status) const {
+  if (!bonds_) return;
+  const std::string when = fmt::format("coupling iteration {}", model_.loop().iterations());
+  bonds_->draw_figure(scenario_, model_.mechanics(), status.empty() ? when : when + ", " + status);
 }
 
 output::RunSummary CoupledRecorder::summary() {

@@ -1,6 +1,6 @@
 #pragma once
 // What a coupled run writes of each pass, as the staggered loop's observer: history.csv's row,
-// measure.csv's rows, fractures.csv's rows, the ParaView fields of the first pass, every
+// measure.csv's rows, fractures.csv's rows (with the bonds broken in the pass), the ParaView fields of the first pass, every
 // output.every-th and the last, the checkpoint after every pass, and the wedge tips a round of
 // mesh.refine_tips leaves to the next. Also what the end of a round reads of them: the
 // history's rows, the fractures as the last pass left them, the summary of the model now.
@@ -18,6 +18,7 @@
 #include "output/checkpoint.hpp"
 #include "output/csv_table.hpp"
 #include "output/summary.hpp"
+#include "run/bond_output.hpp"
 #include "run/coupled_model.hpp"
 #include "run/fracture_output.hpp"
 #include "run/paraview_output.hpp"
@@ -86,6 +87,9 @@ class CoupledRecorder final : public coupling::PassObserver {
 
   // summary.json of the model now: its blocks, flow, timings and fractures.
   output::RunSummary summary();
+  // figures/cracks.* of a model with bonds (none without): its breaks listed so far, by pass,
+  // `status` beside the pass (BondOutput::draw_figure).
+  void draw_bond_figure(const std::string& status) const;
 
  private:
   void measure_fractures();
@@ -110,8 +114,10 @@ class CoupledRecorder final : public coupling::PassObserver {
   coupling::JointApertureLaws joint_laws_;  // by fracture id, the meter's
   fractures::FractureMeter::FlowZones flow_zones_;
   FractureOutput fractures_;
+  std::optional<BondOutput> bonds_;  // a model with bonds: its breaks, by the pass they broke in
   std::optional<fractures::FractureState> fracture_state_;  // of the last finished pass
   int last_written_ = 0;
+  int broken_in_pass_ = 0;  // bonds broken in the last pass (history.csv's broken_bonds)
   bool converged_ = false;
   bool last_pass_cut_short_ = false;  // its last DDA step was cut short (PassReport::full_time_step)
   bool last_pass_moving_ = false;     // its blocks still moved after the settle steps (PassReport::at_rest)

@@ -96,6 +96,7 @@ void draw_round_figures(const Round& round, const std::string& status) {
   ConvergenceHistory convergence = read_convergence(round.recorder.history_rows(), s.coupling.tolerance);
   convergence.status = status;
   draw_convergence(s, round.context.folder, convergence);
+  round.recorder.draw_bond_figure(status);
   if (loop.iterations() > 0)
     if (const fractures::FractureState* fractures = round.recorder.measured_fractures())
       draw_aperture_figure(s, round.context.folder, round.model.block_polygons(), *fractures,

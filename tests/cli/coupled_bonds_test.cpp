@@ -1,0 +1,128 @@
+// A coupled run's record of its broken bonds (docs/output.md, "Bonds"), on
+// tests/cli/scenarios/bonded_crack_coupled.toml: a crack of broken bonds under fluid pressure
+// whose tip bonds break pass by pass. Exact identities of the record, no tolerance:
+// - history.csv's broken_bonds of each pass is the number of fractures.csv's bond rows of that
+//   pass (`step` the pass, `time` the pass's as history.csv has it), every bond listed once;
+// - bonds.pvd lists the written passes and figures/cracks.png is drawn;
+// - a run stopped after its first pass and resumed lists the first pass's breaks once, as the
+//   stopped run wrote them (history.csv's counts give each earlier break its pass), and writes
+//   the same files, byte for byte, as one never stopped (checkpoint.bin keeps the breaks).
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+#include <set>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include "run_folder_compare.hpp"
+#include "run_program.hpp"
+
+namespace fs = std::filesystem;
+using hydrodda::testing::expect_same_results;
+using hydrodda::testing::read_csv;
+using hydrodda::testing::read_file;
+using hydrodda::testing::run_program;
+
+namespace {
+
+const fs::path kCrack = fs::path(HYDRODDA_SOURCE_DIR) / "tests/cli/scenarios/bonded_crack_coupled.toml";
+
+std::size_t column_of(const std::vector<std::string>& header, const std::string& name) {
+  for (std::size_t i = 0; i < header.size(); ++i)
+    if (header[i] == name) return i;
+  ADD_FAILURE() << "no column " << name;
+  return 0;
+}
+
+struct Folder {
+  fs::path path;
+  explicit Folder(const std::string& name)
+      : path(fs::temp_directory_path() / ("hydrodda-coupled-bonds-" + name + "-" + std::to_string(::getpid()))) {
+    fs::remove_all(path);
+  }
+  ~Folder() { fs::remove_all(path); }
+};
+
+// history.csv's broken_bonds of each pass against fractures.csv's bond rows of that pass (their
+// `time` the pass's); every bond listed once. The number of bonds broken.
+int expect_breaks_recorded_by_pass(const fs::path& folder) {
+  const auto history = read_csv(folder / "history.csv");
+  const std::size_t iteration = column_of(history[0], "iteration"), time = column_of(history[0], "time");
+  const std::size_t broken = column_of(history[0], "broken_bonds");
+  const auto fractures = read_csv(folder / "fractures.csv");
+  const std::size_t step = column_of(fractures[0], "step"), row_time = column_of(fractures[0], "time");
+  const std::size_t origin = column_of(fractures[0], "origin"), number = column_of(fractures[0], "number");
+  std::map<std::string, int> rows_by_pass;
+  std::map<std::string, std::string> time_of_pass;
+  std::set<std::string> bonds;
+  for (std::size_t r = 1; r < fractures.size(); ++r) {
+    if (fractures[r][origin] != "bond") continue;
+    ++rows_by_pass[fractures[r][step]];
+    time_of_pass[fractures[r][step]] = fractures[r][row_time];
+    EXPECT_TRUE(bonds.insert(fractures[r][number]).second) << "bond " << fractures[r][number] << " listed twice";
+  }
+  int total = 0;
+  for (std::size_t r = 1; r < history.size(); ++r) {
+    const std::string& pass = history[r][iteration];
+    const int in_pass = std::stoi(history[r][broken]);
+    EXPECT_EQ(in_pass, rows_by_pass[pass]) << "pass " << pass;
+    if (in_pass > 0) {
+      EXPECT_EQ(time_of_pass[pass], history[r][time]) << "pass " << pass;
+    }
+    total += in_pass;
+  }
+  EXPECT_EQ(total, static_cast<int>(bonds.size()));
+  return total;
+}
+
+// The bond rows of pass `pass` in a run folder's fractures.csv, as text.
+std::vector<std::vector<std::string>> bond_rows_of_pass(const fs::path& folder, const std::string& pass) {
+  const auto fractures = read_csv(folder / "fractures.csv");
+  std::vector<std::vector<std::string>> rows;
+  for (std::size_t r = 1; r < fractures.size(); ++r)
+    if (fractures[r][column_of(fractures[0], "origin")] == "bond" && fractures[r][0] == pass) rows.push_back(fractures[r]);
+  return rows;
+}
+
+TEST(CoupledBonds, EachPassRecordsTheBondsItsStepsBroke) {
+  const Folder out("whole");
+  const auto result = run_program("-q run " + kCrack.string() + " -o " + out.path.string() + " --threads 1");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const auto history = read_csv(out.path / "history.csv");
+  ASSERT_EQ(history.size(), 4u) << "three passes";
+  EXPECT_GT(std::stoi(history[1][column_of(history[0], "broken_bonds")]), 0) << "the first pass breaks bonds";
+  EXPECT_GT(expect_breaks_recorded_by_pass(out.path), 0);
+  const std::string series = read_file(out.path / "bonds.pvd");
+  EXPECT_NE(series.find("bonds_0001.vtu"), std::string::npos) << series;
+  EXPECT_NE(series.find("bonds_0003.vtu"), std::string::npos) << series;
+  EXPECT_TRUE(fs::exists(out.path / "figures" / "cracks.png"));
+}
+
+// Stopped after its first pass and resumed, the run lists the first pass's breaks once, as the
+// stopped run wrote them, and each later pass's with it; bonds.pvd keeps the first pass's file.
+TEST(CoupledBonds, AResumedRunListsTheBreaksOfItsEarlierPassesOnce) {
+  const Folder parts("resume");
+  const auto stopped = run_program("-q run " + kCrack.string() + " -o " + parts.path.string() +
+                                   " --threads 1 --stop-after 1");
+  ASSERT_EQ(stopped.exit_code, 0) << stopped.output;
+  const auto first_pass = bond_rows_of_pass(parts.path, "1");
+  ASSERT_FALSE(first_pass.empty());
+  const auto resumed = run_program("-q run --resume " + parts.path.string() + " --threads 1");
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_EQ(bond_rows_of_pass(parts.path, "1"), first_pass);
+  EXPECT_GE(expect_breaks_recorded_by_pass(parts.path), static_cast<int>(first_pass.size()));
+  const std::string series = read_file(parts.path / "bonds.pvd");
+  EXPECT_NE(series.find("bonds_0001.vtu"), std::string::npos) << series;
+  EXPECT_NE(series.find("bonds_0003.vtu"), std::string::npos) << series;
+  // And the run is the one never stopped, byte for byte: the checkpoint keeps the bonds broken
+  // so far (before it did not, and the resumed run broke the first pass's bonds again).
+  const Folder whole("resume-whole");
+  const auto first = run_program("-q run " + kCrack.string() + " -o " + whole.path.string() + " --threads 1");
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  expect_same_results(whole.path, parts.path);
+}
+
+}  // namespace
