@@ -30,6 +30,7 @@
 #include "run/model_building.hpp"
 #include "run/flow_model.hpp"
 #include "run/mechanics_model.hpp"
+#include "run/mechanics_rest.hpp"
 #include "run/run.hpp"
 #include "run/run_summary.hpp"
 #include "run/scenario_fractures.hpp"
@@ -165,7 +166,7 @@ class Simulation {
       py::gil_scoped_release released;
       const run::ThreadsOfThisCall own_threads(threads_);
       while (taken < count && !model.finished() && !stop.stop_requested()) {
-        model.step();
+        last_step_ = model.step();
         ++taken;
       }
     }
@@ -338,8 +339,9 @@ class Simulation {
   }
 
   // `converged` as a run's summary.json says it: the model finished (flow solved, steps or end
-  // time reached, the coupling loop met its tolerance) and its blocks followed every prescribed
-  // displacement (else the run fails, and `message` says which did not).
+  // time reached, the coupling loop met its tolerance, a static mechanics model's blocks at
+  // rest) and its blocks followed every prescribed displacement (else the run fails, and
+  // `message` says which did not).
   py::object summary() const {
     const ModelLock::Held held = lock_.hold("summary");
     output::RunSummary summary = std::visit([](const auto& model) { return model->summary(); }, model_);
@@ -356,6 +358,13 @@ class Simulation {
     if (!std::holds_alternative<Flow>(model_) && !std::holds_alternative<Transient>(model_)) {
       summary.message = run::describe_unreached_displacement(scenario_.definition, system("summary"));
       if (!summary.message.empty()) summary.converged = false;
+    }
+    // A static mechanics model finished with its blocks still moving has not converged, as its
+    // run's summary.json says (run/mechanics_rest.hpp).
+    if (const auto* m = std::get_if<Mechanics>(&model_);
+        m && summary.converged && (*m)->scenario().mechanics->analysis == dda::Analysis::static_) {
+      summary.message = run::describe_motion_at_end((*m)->scenario(), (*m)->system(), last_step_, (*m)->steps());
+      summary.converged = summary.message.empty();
     }
     return summary_dict(summary);
   }
@@ -450,6 +459,7 @@ class Simulation {
   std::optional<int> threads_;  // threads=: the threads of every call that computes (the results are the same on any)
   std::variant<Flow, Mechanics, Coupled, Transient, CoupledTransient> model_;
   bool converged_ = false;  // coupled: the last pass met the tolerance
+  dda::StepReport last_step_;  // mechanics: of the last DDA step taken
   std::optional<fractures::FractureMeter> meter_;                  // made on the first call of fractures
   std::optional<fractures::FractureMeter::FlowZones> flow_zones_;  // likewise, for a coupled model
   std::optional<coupling::JointApertureLaws> joint_laws_;    // likewise

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import hydrodda
-from conftest import VERIFICATION, run_program
+from conftest import SOURCE_DIR, VERIFICATION, run_program
 
 
 def test_flow_fields_are_the_exact_linear_head():
@@ -386,3 +386,18 @@ def test_a_coupled_transient_simulation_refuses_times_no_step_surely_ends_on_pas
         sim.set("flow.boundary[0].head", 12.0)
     with pytest.raises(Exception, match="not for a coupled_transient simulation"):
         sim.run_pass()
+
+
+def test_a_static_model_cut_short_of_rest_says_it_did_not_converge_as_its_run_does(in_tmp):
+    """A static mechanics model whose steps end with its blocks still moving (the pushed block at
+    a time step of 1e-4 s, two steps) is not converged, and says why as summary.json does."""
+    scenario = hydrodda.Scenario.load(SOURCE_DIR / "tests/cli/scenarios/pushed_block.toml")
+    scenario.set("mechanics.time_step", 1.0e-4)
+    scenario.set("mechanics.steps", 2)
+    sim = hydrodda.Simulation(scenario, threads=1)
+    while not sim.finished:
+        sim.step()
+    result = hydrodda.run(scenario, "run")
+    assert (result.converged, result.summary["converged"], sim.summary["converged"]) == (False, False, False)
+    assert sim.summary["message"] == result.summary["message"]
+    assert "raise mechanics.steps" in sim.summary["message"]
