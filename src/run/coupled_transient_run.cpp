@@ -15,6 +15,7 @@
 
 #include "output/csv_table.hpp"
 #include "output/plot_line.hpp"
+#include "output/time_axis.hpp"
 #include "run/coupled_model.hpp"
 #include "run/coupled_transient.hpp"
 #include "run/coupled_transient_fractures.hpp"
@@ -212,7 +213,7 @@ void CoupledTransientRecorder::draw(const std::string& status) const {
   const auto render = [&](output::LinePlotSpec plot, const std::string& name) {
     plot.title = s.title;
     plot.warning = status;
-    plot.x_label = "time (s)";
+    output::put_time_axis(plot);  // the times in seconds, shown in the unit of their span
     plot.x_log = log_time;
     for (const std::string& format : s.output.figures)
       output::render_line_plot(context_.folder.figures() / (name + "." + format), plot);

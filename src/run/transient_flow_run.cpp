@@ -11,6 +11,7 @@
 
 #include "output/csv_table.hpp"
 #include "output/plot_line.hpp"
+#include "output/time_axis.hpp"
 #include "run/figures.hpp"
 #include "run/paraview_output.hpp"
 #include "run/runs.hpp"
@@ -120,7 +121,6 @@ void TransientRecorder::draw(const std::string& status) const {
   output::LinePlotSpec flows;
   flows.title = s.title;
   flows.warning = status;
-  flows.x_label = "time (s)";
   flows.x_log = log_time;
   flows.y_label = "flow (m²/s per m)";
   for (std::size_t b = 0; b < record_.boundary_flows.size(); ++b) {
@@ -129,17 +129,18 @@ void TransientRecorder::draw(const std::string& status) const {
       flows.series.push_back({"out by " + model_.model().mesh().boundary_names[b], times, q, {}});
   }
   flows.series.push_back({"into storage", times, record_.storage_rates, {}});
+  output::put_time_axis(flows);
   for (const std::string& format : s.output.figures) {
     output::render_line_plot(context_.folder.figures() / ("flows." + format), flows);
     if (model_.probe_sites().empty()) continue;
     output::LinePlotSpec probes;
     probes.title = s.title;
     probes.warning = status;
-    probes.x_label = "time (s)";
     probes.x_log = log_time;
     probes.y_label = "pressure (Pa)";
     for (std::size_t p = 0; p < model_.probe_sites().size(); ++p)
       probes.series.push_back({model_.probe_sites()[p].name, times, record_.probe_pressures[p], {}});
+    output::put_time_axis(probes);
     output::render_line_plot(context_.folder.figures() / ("probes." + format), probes);
   }
 }
