@@ -10,6 +10,7 @@
 #include "run/coupled_model.hpp"
 #include "run/flow_model.hpp"
 #include "run/mechanics_model.hpp"
+#include "run/run_summary.hpp"
 
 namespace hydrodda::python {
 
@@ -54,7 +55,7 @@ py::dict fluid_fields(const mesh::TriangleMesh& mesh, const hydro::FlowSolution*
   return fields;
 }
 
-py::dict block_fields(const dda::System& system) {
+py::dict block_fields(const dda::System& system, const scenario::Scenario& scenario) {
   const auto n = static_cast<std::size_t>(system.block_count());
   py::list polygons;
   for (int b = 0; b < system.block_count(); ++b) polygons.append(points(system.polygon(b)));
@@ -73,6 +74,9 @@ py::dict block_fields(const dda::System& system) {
   fields["stress"] = table(n, 3, [&](std::size_t b, std::size_t j) { return system.stress(static_cast<int>(b))[j]; });
   fields["area"] = table(n, 1, [&](std::size_t b, std::size_t) { return system.area(static_cast<int>(b)); })
                        .attr("reshape")(n);
+  py::list material;
+  for (int b = 0; b < system.block_count(); ++b) material.append(run::block_material_name(scenario, system, b));
+  fields["material"] = py::array(material);
   return fields;
 }
 
@@ -155,14 +159,14 @@ py::dict fields_at_end(const run::ModelAtEnd& end) {
     const run::FlowModel& model = **flow;
     fields["fluid"] = fluid_fields(model.mesh(), &model.flow(), model.permeability());
   } else if (const auto* mechanics = std::get_if<const run::MechanicsModel*>(&end.model)) {
-    fields["blocks"] = block_fields((*mechanics)->system());
+    fields["blocks"] = block_fields((*mechanics)->system(), (*mechanics)->scenario());
     fields["contacts"] = contact_fields((*mechanics)->system());
   } else {
     const run::CoupledModel& model = *std::get<const run::CoupledModel*>(end.model);
     const coupling::StaggeredLoop& loop = model.loop();
     fields["fluid"] = fluid_fields(model.mesh(), loop.has_flow() ? &loop.flow() : nullptr, loop.permeability(),
                                    &loop.porosity().porosity);
-    fields["blocks"] = block_fields(model.mechanics());
+    fields["blocks"] = block_fields(model.mechanics(), model.scenario());
     fields["contacts"] = contact_fields(model.mechanics());
   }
   if (end.fractures != nullptr) fields["fractures"] = fracture_fields(*end.fractures);

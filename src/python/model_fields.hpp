@@ -13,6 +13,7 @@
 #include "mesh/triangle_mesh.hpp"
 #include "python/bindings.hpp"
 #include "run/run.hpp"
+#include "scenario/scenario.hpp"
 
 namespace hydrodda::python {
 
@@ -21,8 +22,9 @@ namespace hydrodda::python {
 py::dict fluid_fields(const mesh::TriangleMesh& mesh, const hydro::FlowSolution* flow,
                       const std::vector<double>& permeability, const std::vector<double>* porosity = nullptr);
 // polygons (a list of (n, 2) arrays, m), centroid and displacement (B, 2) m, rotation (B) rad,
-// stress (B, 3) σxx, σyy, τxy Pa, area (B) m².
-py::dict block_fields(const dda::System& system);
+// stress (B, 3) σxx, σyy, τxy Pa, area (B) m², material (B) str: its material's name as
+// summary.json's blocks give it ("" where the scenario names no material).
+py::dict block_fields(const dda::System& system, const scenario::Scenario& scenario);
 // block_i, vertex, block_j, edge (vertex `vertex` of block_i against edge `edge` of block_j),
 // state ("open", "sliding", "locked"), penetration (m, > 0 overlap), normal_force (N/m,
 // compression positive).

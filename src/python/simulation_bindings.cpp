@@ -331,7 +331,7 @@ class Simulation {
 
   py::dict blocks() const {
     const ModelLock::Held held = lock_.hold("blocks");
-    return block_fields(system("blocks"));
+    return block_fields(system("blocks"), scenario_.definition);
   }
   py::dict contacts() const {
     const ModelLock::Held held = lock_.hold("contacts");

@@ -36,6 +36,11 @@ std::string describe_unreached_displacement(const scenario::Scenario& s, const d
   return {};
 }
 
+std::string block_material_name(const scenario::Scenario& s, const dda::System& system, int block) {
+  const int material = system.material(block);
+  return material >= 0 && material < static_cast<int>(s.materials.size()) ? s.materials[material].name : "";
+}
+
 output::RunSummary summarise_mechanics(const scenario::Scenario& s, const dda::System& system) {
   output::RunSummary summary;
   summary.title = s.title;
@@ -43,9 +48,8 @@ output::RunSummary summarise_mechanics(const scenario::Scenario& s, const dda::S
   for (int b = 0; b < system.block_count(); ++b) {
     const Point c = system.centroid(b);
     const Point u = system.displacement(b);
-    const int material = system.material(b);
     summary.blocks.push_back({b, {c.x, c.y}, {u.x, u.y}, system.rotation(b), system.stress(b), system.area(b),
-                              material >= 0 && material < static_cast<int>(s.materials.size()) ? s.materials[material].name : ""});
+                              block_material_name(s, system, b)});
   }
   const auto positions = system.measured_positions();
   for (std::size_t i = 0; i < positions.size(); ++i) {

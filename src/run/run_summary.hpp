@@ -16,6 +16,10 @@
 
 namespace hydrodda::run {
 
+// The name of block `block`'s material as summary.json's blocks give it; empty where the
+// scenario names no material.
+std::string block_material_name(const scenario::Scenario& scenario, const dda::System& system, int block);
+
 // Title, blocks (centroid, displacement, rotation, stress, area) and measured points.
 output::RunSummary summarise_mechanics(const scenario::Scenario& scenario, const dda::System& system);
 

@@ -401,3 +401,18 @@ def test_a_static_model_cut_short_of_rest_says_it_did_not_converge_as_its_run_do
     assert (result.converged, result.summary["converged"], sim.summary["converged"]) == (False, False, False)
     assert sim.summary["message"] == result.summary["message"]
     assert "raise mechanics.steps" in sim.summary["message"]
+
+
+def test_blocks_name_their_material_as_the_summary_does(in_tmp):
+    """Each block's material is the one whose region holds its centroid (mudstone, without a
+    region, the rest): sandstone below y = 10 m, siltstone above 20 m. A run's blocks name the
+    same as its summary.json."""
+    scenario = hydrodda.Scenario.load(VERIFICATION / "three_layer_column.toml")
+    blocks = hydrodda.Simulation(scenario).blocks
+    y = blocks["centroid"][:, 1]
+    assert blocks["material"].shape == y.shape == (15,)
+    expected = np.where(y < 10.0, "sandstone", np.where(y > 20.0, "siltstone", "mudstone"))
+    np.testing.assert_array_equal(blocks["material"], expected)
+    result = hydrodda.run(scenario, "run")
+    assert result.blocks["material"].tolist() == [b["material"] for b in result.summary["blocks"]]
+    assert result.blocks["material"].tolist() == expected.tolist()
