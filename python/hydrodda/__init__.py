@@ -119,8 +119,11 @@ def resume(folder, *, progress=None, stop_after=None, threads=None):
 class BreachResult:
     """Where a breach search ended (docs/breach.md): held (the largest load that held) and
     broken (the least that did not), either None; broken_status ('beyond limit', 'not
-    converged', 'not at rest', 'no equilibrium', 'failed'); a step that held unsettled (blocks at
-    rest, the loop swinging) holds; narrowed (the bracket reached the tolerance);
+    converged', 'held, unsettled' under converged_only, 'not at rest', 'no equilibrium', 'failed');
+    a step that held unsettled (blocks at rest, the loop swinging) holds unless converged_only;
+    narrowed (the bracket reached the tolerance); unsettled_held (how many steps below the breach
+    held unsettled) and worst_unsettled_spread (of those, the widest spread of a region's
+    K_eff/K_m, a dict of spread, load and region, as breach.json gives it; None when none);
     verdict (the line `hydrodda breach` prints); folder; steps, one dict per step tried (index,
     load, kind, status, passes, message); summary (breach.json as a dict)."""
 
@@ -130,27 +133,31 @@ class BreachResult:
         self.broken_status = fields["broken_status"]
         self.narrowed = fields["narrowed"]
         self.interrupted = fields["interrupted"]
+        self.unsettled_held = fields["unsettled_held"]
         self.verdict = fields["verdict"]
         self.folder = Path(fields["folder"])
         self.steps = fields["steps"]
         self.summary = json.loads((self.folder / "breach.json").read_text())
+        self.worst_unsettled_spread = self.summary["worst_unsettled_spread"]
 
     def __repr__(self):
         return f"<BreachResult {self.verdict!r}>"
 
 
 def breach(scenario, vary, start, stop, *, steps=10, tolerance=0.005, limit=None, folder=None, overwrite=False,
-           threads=None):
+           threads=None, converged_only=False):
     """Raises the load `vary` (a key path, or a list of key paths that take the same value) of a
     coupled `scenario` from `start` towards `stop` in `steps` equal steps, each from the last
     state that held, then bisects the first step that did not hold until the bracket is within
     `tolerance` of the load, as `hydrodda breach` does, into `folder` (default: the scenario's
     output.directory + "-breach"). `limit`: (path, value), a summary.json value a state must keep
-    at or below to hold. Ctrl-C ends the search after its current pass and raises
-    KeyboardInterrupt. Returns a BreachResult."""
+    at or below to hold. `converged_only`: only a step whose coupling loop converged holds, as
+    `--converged-only` does (a 'held, unsettled' step is then the breach). Ctrl-C ends the search
+    after its current pass and raises KeyboardInterrupt. Returns a BreachResult."""
     keys = [vary] if isinstance(vary, str) else list(vary)
     steps = _check_count("steps", steps)
     threads = _check_count("threads", threads, 4096)
     limit_path, limit_value = (None, None) if limit is None else (str(limit[0]), float(limit[1]))
     return BreachResult(_breach(scenario, keys, float(start), float(stop), steps, float(tolerance), limit_path,
-                                limit_value, None if folder is None else Path(folder), overwrite, threads))
+                                limit_value, None if folder is None else Path(folder), overwrite, threads,
+                                bool(converged_only)))

@@ -60,6 +60,7 @@ py::dict breach_fields(const breach::BreachOutcome& outcome) {
   fields["broken_status"] = r.broken_status ? py::object(py::str(breach::status_name(*r.broken_status))) : py::object(py::none());
   fields["narrowed"] = r.narrowed;
   fields["interrupted"] = r.interrupted;
+  fields["unsettled_held"] = r.unsettled_held;
   fields["verdict"] = outcome.verdict;
   fields["folder"] = outcome.folder;
   py::list steps;
@@ -188,12 +189,14 @@ void bind_run(py::module_& module) {
       "_breach",
       [](const PythonScenario& scenario, std::vector<std::string> keys, double start, double stop, int steps,
          double tolerance, std::optional<std::string> limit_path, std::optional<double> limit_value,
-         const std::optional<std::filesystem::path>& folder, bool overwrite, std::optional<int> threads) {
+         const std::optional<std::filesystem::path>& folder, bool overwrite, std::optional<int> threads,
+         bool converged_only) {
         breach::BreachJob job;
         job.scenario = scenario.file;
         job.text = scenario.text;
         job.keys = std::move(keys);
         job.search = {start, stop, steps, tolerance};
+        job.search.converged_only = converged_only;
         if (limit_path) job.limit = breach::Limit{*limit_path, limit_value.value_or(0.0)};
         job.directory = folder.value_or(scenario.definition.output.directory.parent_path() /
                                         (scenario.definition.output.directory.filename().string() + "-breach"));
@@ -209,7 +212,8 @@ void bind_run(py::module_& module) {
         return breach_fields(*outcome);
       },
       py::arg("scenario"), py::arg("keys"), py::arg("start"), py::arg("stop"), py::arg("steps"), py::arg("tolerance"),
-      py::arg("limit_path"), py::arg("limit_value"), py::arg("folder"), py::arg("overwrite"), py::arg("threads"));
+      py::arg("limit_path"), py::arg("limit_value"), py::arg("folder"), py::arg("overwrite"), py::arg("threads"),
+      py::arg("converged_only"));
 }
 
 }  // namespace hydrodda::python

@@ -38,3 +38,23 @@ def test_a_key_that_is_no_load_is_refused(tmp_path):
     with pytest.raises(ValueError, match="steps"):
         hydrodda.breach(scenario, MOUTHS, 2.0, 3.0, steps=0, folder=tmp_path / "out")
     assert not (tmp_path / "out" / "breach.csv").exists()
+
+
+def test_converged_only_is_the_programs_flag_and_the_unsettled_count_is_breach_json(tmp_path):
+    """converged_only=True searches as `hydrodda breach --converged-only` does, to the same files;
+    the result's unsettled_held and worst_unsettled_spread are breach.json's. The jacked block's
+    loop converges at every load that holds, so no step held unsettled: 0 and None."""
+    scenario = hydrodda.Scenario.load(JACKING)
+    result = hydrodda.breach(scenario, MOUTHS, 2.0, 3.0, steps=5, folder=tmp_path / "python", threads=1,
+                             converged_only=True)
+    assert result.summary["rule"] == "converged only"
+    assert result.verdict.startswith("converged-only")
+    assert result.held <= JACKING_HEAD * 1.002 and result.broken >= JACKING_HEAD * 0.998
+    assert result.unsettled_held == result.summary["unsettled_held"] == 0
+    assert result.worst_unsettled_spread is None and result.summary["worst_unsettled_spread"] is None
+
+    code, out, err = run_program("breach", JACKING, "--vary", MOUTHS[0], "--vary", MOUTHS[1], "--from", "2",
+                                 "--to", "3", "--steps", "5", "--threads", "1", "--converged-only",
+                                 "-o", tmp_path / "program")
+    assert code == 0, out + err
+    assert json.loads((tmp_path / "program" / "breach.json").read_text()) == result.summary
