@@ -5,7 +5,8 @@
 //   HYDRODDA_HOLD_AFTER_LINE=TEXT   after the N-th log line containing TEXT, at any level (also
 //                                   those that -q or the default leave out)
 //   HYDRODDA_HOLD_AT_STOP_CHECK=N   at the N-th time the run asks whether to stop (before each
-//                                   DDA step, each coupling iteration, each phase of a flow run)
+//                                   DDA step and each of its open–close passes, each coupling
+//                                   iteration, each phase of a flow run)
 //   HYDRODDA_HOLD_COUNT=N           the N of HYDRODDA_HOLD_AFTER_LINE (default 1)
 // The thread that got there writes "held: ..." to stderr and waits until an interrupt (SIGINT,
 // SIGTERM) has been taken, then goes on. Unset: nothing is held, and nothing costs.

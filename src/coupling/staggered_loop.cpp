@@ -344,6 +344,9 @@ void StaggeredLoop::step_mechanics(PassReport& report) {
       report.full_time_step = mechanics_.ran_at_full_time_step(step);
       report.shortest_time_step = std::min(report.shortest_time_step, step.time_step);
       watch.observe(mechanics_.free_drift(), most_steps - (taken + 1));
+    } catch (const dda::StepInterrupted&) {
+      abandon_pass();
+      throw PassInterrupted("coupling iteration " + std::to_string(iteration_) + " stopped within DDA step " + which());
     } catch (const std::exception& e) {
       throw std::runtime_error("DDA step " + which() + " (t = " + std::to_string(mechanics_.time()) + " s): " + e.what());
     }

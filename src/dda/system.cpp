@@ -690,6 +690,7 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
   int passes_without_progress = 0;
   const int pass_cap = 4 * settings_.max_open_close_iterations;
   for (int oc = 0; oc < pass_cap && passes_without_progress < settings_.max_open_close_iterations; ++oc) {
+    if (interrupt_check_ && interrupt_check_()) return Unsettled::interrupted;
     report.open_close_iterations = oc + 1;
     factor_with_contacts();
     // The sliding contacts' normal forces: those the friction loads were made with (x) and
@@ -868,6 +869,7 @@ StepReport System::step() {
     tried_multipliers_.clear();
     Eigen::VectorXd d;
     const Unsettled unsettled = solve_step(dt_, d, report);
+    if (unsettled == Unsettled::interrupted) abandon_interrupted_step(first_time_step, report);
     const bool settled = unsettled == Unsettled::no;
     double largest = 0.0;
     int largest_block = -1;
@@ -934,6 +936,14 @@ StepReport System::step() {
   }
   dt_ = std::min(settings_.time_step, 1.5 * dt_);
   return report;
+}
+
+void System::abandon_interrupted_step(double first_time_step, const StepReport& report) {
+  undo_pending_bond_breaks();
+  dt_ = first_time_step;
+  throw StepInterrupted("interrupted within the step from t = " + format_number(time_) + " s, after " +
+                        std::to_string(report.lagrangian_iterations) + " solves and " + std::to_string(report.retries) +
+                        (report.retries == 1 ? " cut of its time step" : " cuts of its time step"));
 }
 
 void System::commit_step(const Eigen::VectorXd& d, double dt) {

@@ -8,6 +8,8 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -102,6 +104,12 @@ struct SystemState {
   std::vector<BondBreak> bond_breaks;  // the bonds broken so far, in the order they broke
 };
 
+// Thrown by System::step when its interrupt check asks it to stop: the step is abandoned and
+// the system is as the last finished step left it.
+struct StepInterrupted : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 class System {
  public:
   explicit System(ModelDefinition definition,
@@ -109,6 +117,13 @@ class System {
 
   // One time step (cut and retried as needed).
   StepReport step();
+  // Asked before each try at a step and before each of its open–close passes (a pass is
+  // bounded: at most twice max_lagrangian_iterations solves, each at most its solver's
+  // iterations and two factorisations): true abandons the step, leaving the system as the last
+  // finished step left it, and throws StepInterrupted. A step on a large model can take many
+  // passes (docs/dda.md, "How long a step may take"); this is how a run stops within one.
+  // Unset: never asked.
+  void set_interrupt_check(std::function<bool()> check) { interrupt_check_ = std::move(check); }
   // `count` steps; the last report.
   StepReport run_steps(int count);
   // Steps until `end_time`, the last step shortened to land on it.
@@ -268,7 +283,8 @@ class System {
   void linearise_contact(ActiveContact& c) const;
   void linearise_closed_contact(ActiveContact& c) const;
   // Why a step's solve did not settle, if it did not.
-  enum class Unsettled { no, contact_states, contact_forces };
+  // interrupted: interrupt_check_ said stop before a pass (the step is to be abandoned).
+  enum class Unsettled { no, contact_states, contact_forces, interrupted };
   Unsettled solve_step(double dt, Eigen::VectorXd& d, StepReport& report);
   void assemble_blocks(double dt, Matrix6Array& k_base, Eigen::VectorXd& f_base) const;
   void factor_with_contacts();
@@ -441,6 +457,10 @@ class System {
   // The augmented Lagrangian's passes allowed in this attempt at a step: max_lagrangian_iterations,
   // twice that once its forces failed to settle (System::step).
   int lagrangian_limit_ = 0;
+  std::function<bool()> interrupt_check_;  // set_interrupt_check
+  // Undoes what the step under way changed (its bonds broken, its cuts of the time step, which
+  // began at `first_time_step`) and throws StepInterrupted.
+  [[noreturn]] void abandon_interrupted_step(double first_time_step, const StepReport& report);
   // What the last step whose contact forces did not settle left unsettled, for its error.
   std::string unsettled_forces_;
   std::string describe_unsettled_forces(bool penetration_ok, double friction_change, double force_scale) const;

@@ -123,6 +123,8 @@ CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::option
   if (s.any_joint_hydraulic() || has_tessellation(s)) settings.joints = make_embedded_joints(s);
   if (s.coupling.pseudo_time_step > 0.0) settings.pseudo_time = make_pseudo_time_settings(s, mesh_);
   settings.stop_requested = [this] { return stop_requested_ && stop_requested_(); };
+  // Within a DDA step too, between its open–close passes: the loop abandons the pass.
+  system_->set_interrupt_check([this] { return stop_requested_ && stop_requested_(); });
   load_times_ = scenario::find_load_times(s);
   loop_.emplace(mesh_, build_flow_problem(*s.flow, load_time()), *system_, std::move(settings));
   if (has_load_tables()) system_->hold_load_time(load_time());

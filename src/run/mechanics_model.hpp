@@ -1,4 +1,6 @@
 #pragma once
+
+#include <functional>
 // A mechanics-only model: the DDA system of the scenario's blocks and loads, stepped until the
 // scenario's `steps` or `end_time`. It writes no file; run() drives it into a run folder.
 
@@ -28,6 +30,9 @@ class MechanicsModel {
 
   const scenario::Scenario& scenario() const { return scenario_; }
   const dda::System& system() const { return system_; }
+  // Asked within each step, between its open–close passes (dda::System::set_interrupt_check):
+  // true abandons the step and step() throws dda::StepInterrupted.
+  void set_interrupt_check(std::function<bool()> check) { system_.set_interrupt_check(std::move(check)); }
   // summary.json's blocks and measured points, iterations = steps taken; no timings.
   output::RunSummary summary() const;
 

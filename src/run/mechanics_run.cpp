@@ -36,6 +36,8 @@ output::RunSummary run_mechanics(const RunContext& context) {
   MechanicsModel model(s);
   building.reset();
   const dda::System& system = model.system();
+  // A step on a large model may take minutes: it is left between its passes when asked to stop.
+  model.set_interrupt_check([&context] { return context.stop_requested(); });
 
   // A model with bonds adds the bonds broken in each step, and in all (added last).
   const bool bonded = system.bond_count() > 0;
@@ -161,6 +163,11 @@ output::RunSummary run_mechanics(const RunContext& context) {
     }
   } catch (const RunFailure&) {
     throw;
+  } catch (const dda::StepInterrupted& e) {
+    // The system is as the last finished step left it, which the tables and summary describe.
+    throw stop(RunStatus::interrupted,
+               fmt::format("interrupted at step {} (t = {:g} s), {}", model.steps(), system.time(), e.what()),
+               fmt::format("interrupted at step {}", model.steps()));
   } catch (const std::exception& e) {
     // The fractures were measured at an earlier output step, not at the state the run failed
     // in: a front end is told of none, as summary.json gives none.

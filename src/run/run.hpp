@@ -59,7 +59,8 @@ struct ModelAtEnd {
 struct Callbacks {
   // Called after every step, pass or solve; unset: nothing is reported.
   std::function<void(const ProgressReport&)> progress;
-  // Asked before every DDA step (those inside a coupling pass too) and every pass, and in a
+  // Asked before every DDA step (those inside a coupling pass too), every open–close pass within
+  // a step (dda::System::set_interrupt_check) and every pass, and in a
   // flow-only run after its one solve (which is not stopped) and before each of its figures.
   // True stops the run there, with the run folder and summary.json at the last finished step or
   // pass, or a flow run's solution (RunStatus::interrupted). Unset: never.

@@ -34,12 +34,12 @@ TEST(CoupledTransientResumeCli, AnInterruptedCoupledTransientRunResumesToTheFile
 
   {
     RunningProgram program({"run", scenario.string(), "-o", parts.string(), "--threads", "1"},
-                           dir.path / "parts.log", {"HYDRODDA_HOLD_AT_STOP_CHECK=800"});
+                           dir.path / "parts.log", {"HYDRODDA_HOLD_AT_STOP_CHECK=1450"});
     ASSERT_TRUE(program.wait_until_held()) << program.output();
     program.signal(SIGINT);
     ASSERT_TRUE(program.wait_for_exit()) << program.output();
     EXPECT_EQ(program.exit_code(), 1) << program.output();
-    EXPECT_NE(program.output().find("interrupted at t = 5591.42 s, after 20 steps"), std::string::npos) << program.output();
+    EXPECT_NE(program.output().find("interrupted at t = 6700.73 s, after 21 steps"), std::string::npos) << program.output();
   }
   const nlohmann::json stopped = nlohmann::json::parse(std::ifstream(parts / "summary.json"));
   EXPECT_EQ(stopped["status"], "interrupted");

@@ -64,11 +64,12 @@ const fs::path& whole_run() {
 TEST(CoupledTransientResume, AnInterruptMidStepThenResumeGivesTheFilesOfARunNeverStopped) {
   const Column column;
   Folder parts("interrupted");
-  // Stop checks come before every DDA step and pass: the 800th falls within a step between
-  // the outputs at 4,667 s and 9,333 s, which is abandoned, the model back at the last step's end.
+  // Stop checks come before every pass, DDA step and open–close pass: the 1,450th falls within
+  // a step between the outputs at 4,667 s and 9,333 s, which is abandoned, the model back at the
+  // last step's end.
   int asked = 0;
   run::Callbacks stop;
-  stop.stop_requested = [&] { return ++asked == 800; };
+  stop.stop_requested = [&] { return ++asked == 1450; };
   const run::RunResult stopped = run::run(column.s, column.options(parts.path), stop);
   ASSERT_EQ(stopped.status, run::RunStatus::interrupted) << stopped.message;
   EXPECT_TRUE(stopped.good_state_kept);

@@ -343,14 +343,16 @@ TEST(RunLayer, AFailedPassLeavesTheRunAtTheLastFinishedPass) {
   run::Callbacks callbacks;
   callbacks.progress = [&](const run::ProgressReport&) { ++reports; };
   callbacks.stop_requested = [&] {
-    // Asked before pass 2, then before each of its DDA steps: the third is its second step.
+    // Asked before pass 2, before its first DDA step and before that step's first open–close
+    // pass: the third is within its first step.
     if (reports == 1 && ++asked_since == 3) throw std::runtime_error("a DDA step failed");
     return false;
   };
   const run::RunResult failed = run::run(s, {folder.path}, callbacks);
   ASSERT_EQ(failed.status, run::RunStatus::failed) << failed.message;
   EXPECT_EQ(failed.iterations, 1);
-  EXPECT_EQ(failed.message.rfind("coupling iteration 2 failed: a DDA step failed; summary.json and the figures hold "
+  EXPECT_EQ(failed.message.rfind("coupling iteration 2 failed: DDA step 1 of 10 (t = 0.500000 s): a DDA step failed; "
+                                 "summary.json and the figures hold "
                                  "coupling iteration 1, the last that finished",
                                  0),
             0u)
@@ -408,10 +410,11 @@ TEST(RunLayer, AFailedMechanicsRunDrawsItsLastOutputStepSayingHowItFailed) {
   // and its apertures figure is drawn of step 20, the last output step, with a status line.
   // The same state drawn by a run that ends at step 20 has no status line: the pictures differ.
   Folder failed_folder("mechanics-failed"), finished_folder("mechanics-to-20");
-  int asked = 0;
+  int steps = 0;
   run::Callbacks callbacks;
-  callbacks.stop_requested = [&] {
-    if (++asked == 26) throw std::runtime_error("a DDA step failed: its matrix is singular");
+  callbacks.progress = [&](const run::ProgressReport&) { ++steps; };
+  callbacks.stop_requested = [&] {  // asked before each step, first after 25 of them
+    if (steps == 25) throw std::runtime_error("a DDA step failed: its matrix is singular");
     return false;
   };
   const run::RunResult failed = run::run(in_situ_column(100), {failed_folder.path}, callbacks);
@@ -435,6 +438,31 @@ TEST(RunLayer, AnInterruptedMechanicsRunDrawsItsLastOutputStep) {
   ASSERT_EQ(stopped.status, run::RunStatus::interrupted) << stopped.message;
   EXPECT_EQ(stopped.message, "interrupted at step 15 (t = 0.15 s)");
   EXPECT_TRUE(fs::exists(folder.path / "figures" / "apertures.png"));
+}
+
+TEST(RunLayer, AMechanicsRunInterruptedWithinAStepKeepsItsLastFinishedStep) {
+  // Asked before each step and before each open–close pass within it: after 15 steps, the
+  // second ask is within step 16, before its first pass. The run stops there with step 15's
+  // summary and history, as the run stopped before step 16 has them.
+  Folder within_folder("mechanics-interrupted-within"), between_folder("mechanics-interrupted-between");
+  int steps = 0, asked_after = 0;
+  run::Callbacks callbacks;
+  callbacks.progress = [&](const run::ProgressReport&) { ++steps; };
+  callbacks.stop_requested = [&] { return steps == 15 && ++asked_after == 2; };
+  const run::RunResult within = run::run(in_situ_column(100), {within_folder.path}, callbacks);
+  ASSERT_EQ(within.status, run::RunStatus::interrupted) << within.message;
+  EXPECT_EQ(within.message.rfind("interrupted at step 15 (t = 0.15 s), interrupted within the step from t = 0.15 s", 0),
+            0u)
+      << within.message;
+
+  Recorder recorder;
+  recorder.stop_after_reports = 15;
+  const run::RunResult between = run::run(in_situ_column(100), {between_folder.path}, recorder.callbacks());
+  ASSERT_EQ(between.status, run::RunStatus::interrupted) << between.message;
+  ASSERT_EQ(within.summary.blocks.size(), between.summary.blocks.size());
+  for (std::size_t b = 0; b < between.summary.blocks.size(); ++b)
+    EXPECT_EQ(within.summary.blocks[b].displacement, between.summary.blocks[b].displacement) << "block " << b;
+  EXPECT_EQ(read_file(within_folder.path / "history.csv"), read_file(between_folder.path / "history.csv"));
 }
 
 TEST(RunLayer, AnInterruptedCoupledRunDrawsItsLastFinishedPass) {
