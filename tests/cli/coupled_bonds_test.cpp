@@ -14,10 +14,10 @@
 #include <map>
 #include <set>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include "run_folder_compare.hpp"
+#include "result_files.hpp"
 #include "run_program.hpp"
 
 namespace fs = std::filesystem;
@@ -37,14 +37,6 @@ std::size_t column_of(const std::vector<std::string>& header, const std::string&
   return 0;
 }
 
-struct Folder {
-  fs::path path;
-  explicit Folder(const std::string& name)
-      : path(fs::temp_directory_path() / ("hydrodda-coupled-bonds-" + name + "-" + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-  }
-  ~Folder() { fs::remove_all(path); }
-};
 
 // history.csv's broken_bonds of each pass against fractures.csv's bond rows of that pass (their
 // `time` the pass's); every bond listed once. The number of bonds broken.
@@ -88,7 +80,7 @@ std::vector<std::vector<std::string>> bond_rows_of_pass(const fs::path& folder, 
 }
 
 TEST(CoupledBonds, EachPassRecordsTheBondsItsStepsBroke) {
-  const Folder out("whole");
+  const auto out = hydrodda::testing::fresh_dir("hydrodda-coupled-bonds-whole");
   const auto result = run_program("-q run " + kCrack.string() + " -o " + out.path.string() + " --threads 1");
   ASSERT_EQ(result.exit_code, 0) << result.output;
   const auto history = read_csv(out.path / "history.csv");
@@ -104,7 +96,7 @@ TEST(CoupledBonds, EachPassRecordsTheBondsItsStepsBroke) {
 // Stopped after its first pass and resumed, the run lists the first pass's breaks once, as the
 // stopped run wrote them, and each later pass's with it; bonds.pvd keeps the first pass's file.
 TEST(CoupledBonds, AResumedRunListsTheBreaksOfItsEarlierPassesOnce) {
-  const Folder parts("resume");
+  const auto parts = hydrodda::testing::fresh_dir("hydrodda-coupled-bonds-resume");
   const auto stopped = run_program("-q run " + kCrack.string() + " -o " + parts.path.string() +
                                    " --threads 1 --stop-after 1");
   ASSERT_EQ(stopped.exit_code, 0) << stopped.output;
@@ -119,7 +111,7 @@ TEST(CoupledBonds, AResumedRunListsTheBreaksOfItsEarlierPassesOnce) {
   EXPECT_NE(series.find("bonds_0003.vtu"), std::string::npos) << series;
   // And the run is the one never stopped, byte for byte: the checkpoint keeps the bonds broken
   // so far (before it did not, and the resumed run broke the first pass's bonds again).
-  const Folder whole("resume-whole");
+  const auto whole = hydrodda::testing::fresh_dir("hydrodda-coupled-bonds-resume-whole");
   const auto first = run_program("-q run " + kCrack.string() + " -o " + whole.path.string() + " --threads 1");
   ASSERT_EQ(first.exit_code, 0) << first.output;
   expect_same_results(whole.path, parts.path);

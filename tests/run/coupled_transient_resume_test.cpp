@@ -7,12 +7,12 @@
 // pass in both runs; the flow factors again from the same values).
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <string>
 
 #include "../cli/run_folder_compare.hpp"
+#include "../cli/result_files.hpp"
 #include "output/checkpoint.hpp"
 #include "run/run.hpp"
 #include "scenario/overrides.hpp"
@@ -29,15 +29,6 @@ namespace {
 
 const fs::path kColumn = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/verification/terzaghi_consolidation.toml";
 
-struct Folder {
-  fs::path path;
-  explicit Folder(const std::string& name)
-      : path(fs::temp_directory_path() /
-             ("hydrodda-coupled-transient-resume-" + name + "-" + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-  }
-  ~Folder() { fs::remove_all(path); }
-};
 
 // Terzaghi's column of twenty blocks as shipped, no figures: 54 steps to 1.4e5 s, outputs at
 // 4,667, 9,333, 28,000 and 93,330 s (steps 19, 23, 30 and 44).
@@ -49,7 +40,7 @@ struct Column {
 
 // The uninterrupted run, once for every test.
 const fs::path& whole_run() {
-  static const Folder folder("whole");
+  static const auto folder = hydrodda::testing::fresh_dir("hydrodda-coupled-transient-resume-whole");
   static const bool ran = [] {
     const Column column;
     const run::RunResult r = run::run(column.s, column.options(folder.path));
@@ -63,7 +54,7 @@ const fs::path& whole_run() {
 
 TEST(CoupledTransientResume, AnInterruptMidStepThenResumeGivesTheFilesOfARunNeverStopped) {
   const Column column;
-  Folder parts("interrupted");
+  const auto parts = hydrodda::testing::fresh_dir("hydrodda-coupled-transient-resume-interrupted");
   // Stop checks come before every pass, DDA step and open–close pass: the 1,450th falls within
   // a step between the outputs at 4,667 s and 9,333 s, which is abandoned, the model back at the
   // last step's end.
@@ -92,7 +83,7 @@ TEST(CoupledTransientResume, ResumedFromTheCheckpointOfItsFirstOutputTimeAsAKill
   // checkpoint's rows, keeps fractures.csv's up to its step, and runs the steps after it again,
   // writing the fields at 9,333 s anew.
   const Column column;
-  Folder parts("killed");
+  const auto parts = hydrodda::testing::fresh_dir("hydrodda-coupled-transient-resume-killed");
   const fs::path kept = parts.path.string() + "-first-output.bin";
   int steps = 0;
   run::Callbacks callbacks;
@@ -116,7 +107,7 @@ TEST(CoupledTransientResume, ResumedFromTheCheckpointOfItsFirstOutputTimeAsAKill
 
 TEST(CoupledTransientResume, StoppedAfterAStepTwiceThenResumedToTheEndIsStillTheSame) {
   const Column column;
-  Folder parts("stop-after");
+  const auto parts = hydrodda::testing::fresh_dir("hydrodda-coupled-transient-resume-stop-after");
   run::RunOptions options = column.options(parts.path);
   options.stop_after = 3;
   const run::RunResult first = run::run(column.s, options);
@@ -145,7 +136,7 @@ TEST(CoupledTransientResume, ARunThatEndedNotConvergedAtItsFloorIsNotResumed) {
   const Column column;
   const std::string text = scenario::apply_overrides(column.text, kColumn, {{"coupling.max_iterations", "3"}});
   const scenario::Scenario s = scenario::parse_scenario(text, kColumn);
-  Folder folder("floor");
+  const auto folder = hydrodda::testing::fresh_dir("hydrodda-coupled-transient-resume-floor");
   const run::RunResult r = run::run(s, {folder.path, false, std::nullopt, text});
   ASSERT_EQ(r.status, run::RunStatus::finished) << r.message;
   ASSERT_FALSE(r.converged);
