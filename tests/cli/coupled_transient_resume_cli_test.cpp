@@ -5,21 +5,18 @@
 // and a second `run --resume` of the finished run is refused with exit code 2.
 
 #include <gtest/gtest.h>
-#include <signal.h>
 
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "interrupted_run.hpp"
 #include "result_files.hpp"
-#include "run_folder_compare.hpp"
 #include "run_program.hpp"
-#include "spawn_program.hpp"
 
 namespace fs = std::filesystem;
 using hydrodda::testing::fresh_dir;
 using hydrodda::testing::run_program;
-using hydrodda::testing::RunningProgram;
 
 TEST(CoupledTransientResumeCli, AnInterruptedCoupledTransientRunResumesToTheFilesOfOneNeverStopped) {
   const auto dir = fresh_dir("hydrodda-coupled-transient-resume-cli");
@@ -32,25 +29,14 @@ TEST(CoupledTransientResumeCli, AnInterruptedCoupledTransientRunResumesToTheFile
   const auto uninterrupted = run_program("run " + scenario.string() + " -o " + whole.string() + " --threads 1");
   ASSERT_EQ(uninterrupted.exit_code, 0) << uninterrupted.output;
 
-  {
-    RunningProgram program({"run", scenario.string(), "-o", parts.string(), "--threads", "1"},
-                           dir.path / "parts.log", {"HYDRODDA_HOLD_AT_STOP_CHECK=1450"});
-    ASSERT_TRUE(program.wait_until_held()) << program.output();
-    program.signal(SIGINT);
-    ASSERT_TRUE(program.wait_for_exit()) << program.output();
-    EXPECT_EQ(program.exit_code(), 1) << program.output();
-    EXPECT_NE(program.output().find("interrupted at t = 6700.73 s, after 21 steps"), std::string::npos) << program.output();
-  }
+  const auto interrupted = hydrodda::testing::interrupt_at_stop_check(scenario, parts, 1450);
+  EXPECT_EQ(interrupted.exit_code, 1) << interrupted.output;
+  EXPECT_NE(interrupted.output.find("interrupted at t = 6700.73 s, after 21 steps"), std::string::npos) << interrupted.output;
   const nlohmann::json stopped = nlohmann::json::parse(std::ifstream(parts / "summary.json"));
   EXPECT_EQ(stopped["status"], "interrupted");
   EXPECT_GT(stopped["time"].get<double>(), 4667.0);
   EXPECT_LT(stopped["time"].get<double>(), 9333.0);
 
-  const auto resumed = run_program("run --resume " + parts.string() + " --threads 1");
-  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
-  hydrodda::testing::expect_same_results(whole, parts);
-  const auto again = run_program("run --resume " + parts.string());
-  EXPECT_EQ(again.exit_code, 2) << again.output;
-  EXPECT_NE(again.output.find("already reached its end_time"), std::string::npos) << again.output;
+  hydrodda::testing::expect_resumes_to(parts, whole, "already reached its end_time");
   fs::remove(scenario);
 }
