@@ -3,6 +3,8 @@
 #include <spdlog/spdlog.h>
 #include <stdlib.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <string>
 
@@ -39,11 +41,12 @@ std::optional<int> chosen_thread_count(std::optional<int> requested) {
   return n;
 }
 
-// One thread when other processes already keep every core busy (the last minute's load
-// average at least the cores) and nobody chose a count. At each barrier OpenMP's waiting thread
-// spins before it sleeps, and on a full machine it spins on the core the thread it waits for
-// needs: the 1,601-block wall's 20 steps took 3.9 s of CPU and 25–30 s on two threads under a
-// load of 13, 0.35 s and 3–5 s on one.
+// When nobody chose a count, the cores other processes leave free: the cores less the last
+// minute's load average, rounded (at least one). At each barrier OpenMP's waiting thread spins
+// before it sleeps, and where the threads outnumber the free cores it spins on the core the
+// thread it waits for needs: the 1,601-block wall's 20 steps took 3.9 s of CPU and 25–30 s on
+// two threads under a load of 13, 0.35 s and 3–5 s on one; under a load of 2.6–6.8, 2.5–8.9 s
+// of CPU and 5–22 s on two threads, 0.5–0.65 s and 1.1–1.8 s on one (docs/performance.md).
 int use_threads(std::optional<int> requested, bool spare_busy_machine) {
   if (const std::optional<int> n = chosen_thread_count(requested)) {
     numerics::set_thread_count(*n);
@@ -52,14 +55,23 @@ int use_threads(std::optional<int> requested, bool spare_busy_machine) {
   }
   const int cores = numerics::thread_count();
   double load[1] = {0.0};
-  if (spare_busy_machine && !std::getenv("OMP_NUM_THREADS") && cores > 1 && ::getloadavg(load, 1) == 1 &&
-      load[0] >= static_cast<double>(cores)) {
-    numerics::set_thread_count(1);
-    spdlog::debug("one thread: the machine's load ({:.1f}) fills its {} cores", load[0], cores);
-    return 1;
+  if (spare_busy_machine && !std::getenv("OMP_NUM_THREADS") && cores > 1 && ::getloadavg(load, 1) == 1) {
+    const int free_cores = cores_left_free(cores, load[0]);
+    if (free_cores < cores) {
+      numerics::set_thread_count(free_cores);
+      spdlog::debug("{} thread(s): the machine's load ({:.1f}) keeps the rest of its {} cores busy", free_cores,
+                    load[0], cores);
+      return free_cores;
+    }
   }
   spdlog::debug("{} thread(s): the cores this process may use", cores);
   return cores;
+}
+
+int cores_left_free(int cores, double load) {
+  if (!(load >= 0.0)) return cores;
+  const double busy = std::round(std::min(load, static_cast<double>(cores)));
+  return std::max(1, cores - static_cast<int>(busy));
 }
 
 ThreadsOfThisCall::ThreadsOfThisCall(std::optional<int> requested)

@@ -21,9 +21,13 @@ std::optional<int> chosen_thread_count(std::optional<int> requested);
 
 // Sets the threads of every run of this process (the command line's run and sweep):
 // chosen_thread_count(requested), else the machine's count; with nothing chosen and
-// `spare_busy_machine`, one thread where the load average already fills the cores. Returns
+// `spare_busy_machine`, the cores the load average leaves free (the cores less the load,
+// rounded; at least one). Returns
 // the count set. Throws as chosen_thread_count does.
 int use_threads(std::optional<int> requested, bool spare_busy_machine);
+// The cores a load average leaves free: cores − round(load), at least one (and `cores` for a
+// load that is not a number).
+int cores_left_free(int cores, double load);
 
 // For the calls made on the constructing thread while it lives, chosen_thread_count(requested)
 // threads where something was chosen (a Python run's threads=): two runs side by side in one

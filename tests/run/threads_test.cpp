@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <stdlib.h>
 
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -55,6 +56,19 @@ TEST(Threads, TheFrontEndsChoiceComesFirstThenTheVariable) {
     EXPECT_EQ(chosen_thread_count(std::nullopt), std::nullopt);
     EXPECT_EQ(chosen_thread_count(2), 2);
   }
+}
+
+// The default count is the cores the load average leaves free (the cores less the load,
+// rounded), never fewer than one: threads that outnumber the free cores wait on each other.
+TEST(Threads, TheDefaultTakesTheCoresTheLoadLeavesFree) {
+  EXPECT_EQ(cores_left_free(2, 0.0), 2);
+  EXPECT_EQ(cores_left_free(2, 0.49), 2);
+  EXPECT_EQ(cores_left_free(2, 0.5), 1);
+  EXPECT_EQ(cores_left_free(2, 1.49), 1);
+  EXPECT_EQ(cores_left_free(2, 13.0), 1);
+  EXPECT_EQ(cores_left_free(64, 10.2), 54);
+  EXPECT_EQ(cores_left_free(64, 1e300), 1);
+  EXPECT_EQ(cores_left_free(8, std::nan("")), 8);
 }
 
 TEST(Threads, ABadVariableIsNamedWithItsValue) {
