@@ -6,6 +6,8 @@
 
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <utility>
 
 #include "mesh/mesh_cache.hpp"
 #include "output/item_list.hpp"
@@ -91,16 +93,21 @@ RunResult run_in(const scenario::Scenario& s, const fs::path& directory, output:
   // What summary.json holds once the run's result is written: a later failure (a figure that
   // cannot be drawn) does not replace it.
   std::optional<output::RunSummary> written;
-  const auto write_final_summary = [&folder, &written](const output::RunSummary& summary) {
-    const output::CheckedSummary checked = output::format_checked_summary(summary);
+  // The run writes its result before its figures and returns it: the same text is not written
+  // (and flushed) twice.
+  std::string written_text;
+  const auto write_final_summary = [&folder, &written, &written_text](const output::RunSummary& summary) {
+    output::CheckedSummary checked = output::format_checked_summary(summary);
     if (!checked.non_finite.empty())
       throw RunFailure(RunStatus::failed, describe_non_finite(checked.non_finite, folder), summary);
+    if (written && checked.text == written_text) return;
     try {
       folder.write("summary.json", checked.text);
     } catch (const output::RunFolderError& e) {
       throw SummaryNotWritten(e.what(), summary);
     }
     written = summary;
+    written_text = std::move(checked.text);
   };
   const RunContext context{s,          folder,     callbacks,           scenario_text,   resume,
                            stop_after, write_final_summary, mesh_cache, resume_transient, resume_coupled_transient};
