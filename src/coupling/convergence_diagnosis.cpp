@@ -130,6 +130,22 @@ std::string unsettled_advice(const LoopAsRun& loop) {
          "state under this load";
 }
 
+// A loop that swings, jumps or drifts after the whole fluid load went on at once: its first pass
+// threw the blocks from the state as built, and the joints that pass opened may chatter from
+// then on. Raised over three passes instead, the load met the layered faulted seal's blocks near
+// an equilibrium under part of it, and its loop settled in 7-9 passes at 0.92-1.00 of its
+// jacking head, where the sudden load's swung or drifted for 30
+// (docs/studies/2026-11-29-default-ramp.md). The ramp scales the whole fluid load, the water
+// that floats a layer too, and friction keeps each path's state: said, not hidden.
+std::string ramp_advice(const LoopAsRun& loop) {
+  if (!loop.sudden_load) return "";
+  return "; the whole fluid load went on at once in the first pass (coupling.ramp_passes = 1): try "
+         "coupling.ramp_passes = 3, which raises it over three passes so that the blocks meet it from near an "
+         "equilibrium under part of it (friction may then hold them in another state, and a layer its water "
+         "floats may sink under part of the load: docs/coupling.md, \"Relaxation, acceleration and the load "
+         "ramp\")";
+}
+
 // Blocks that no pass brought to rest: no pass's fluid load has an equilibrium where they are.
 std::string describe_never_at_rest(int passes, const std::string& name, const std::string& level) {
   return "the blocks came to rest in none of the last " + std::to_string(passes) +
@@ -217,7 +233,7 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
                                              "written is the last pass's, one of the two")
                 : d.period == 2 ? std::string(", coming back to the same values every 2 passes")
                                 : std::string(", rising and falling by turns")) +
-               "); " + unsettled_advice(loop);
+               "); " + unsettled_advice(loop) + ramp_advice(loop);
       break;
     case NonConvergence::erratic: {
       const auto [low, high] = std::minmax_element(last.begin(), last.end());
@@ -225,7 +241,7 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
                format_number(*low) + " and " + format_number(*high) + " over the last " +
                std::to_string(last.size()) +
                " passes, at " + level + "), with no steady trend, so no number of passes can be told; " +
-               unsettled_advice(loop);
+               unsettled_advice(loop) + ramp_advice(loop);
       break;
     }
     case NonConvergence::diverging:
@@ -251,7 +267,8 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
                          : std::string("): the blocks keep moving from pass to pass; try coupling.settle = true (each "
                                        "pass steps on until the blocks are at rest) or more mechanics.steps per pass, "
                                        "or check that the fluid load leaves the blocks an equilibrium")) +
-               (loop.crossings_switched >= kChatteringCrossings ? "; " + chattering_joints(loop) : std::string());
+               (loop.crossings_switched >= kChatteringCrossings ? "; " + chattering_joints(loop) : std::string()) +
+               ramp_advice(loop);
       break;
   }
   return d;

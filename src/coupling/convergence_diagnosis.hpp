@@ -49,7 +49,8 @@ struct ConvergenceDiagnosis {
 //   r < 0.95 otherwise; drifting otherwise.
 // never at rest as above (kPassesNotAtRest);
 // `loop` is the loop as run: the advice names an acceleration only to a loop that had none,
-// settling passes only to a loop whose passes did not settle, and a relaxation below the one it had.
+// settling passes only to a loop whose passes did not settle, a relaxation below the one it had,
+// and the load ramp only to a loop whose load went on at once.
 struct LoopAsRun {
   std::string_view acceleration = "none";  // coupling.acceleration: "none", "aitken", "anderson"
   double relaxation = 1.0;                 // coupling.relaxation
@@ -59,6 +60,10 @@ struct LoopAsRun {
   // last passes (those the norms are fitted over; 0 without joint apertures).
   int crossings_switched = 0;
   int contacts_changed = 0;
+  // The whole fluid load went on at once in the first pass (coupling.ramp_passes = 1, the loop
+  // unconverged in a steady run's first load step): a loop that swings, jumps or drifts is then
+  // told to try the ramp too.
+  bool sudden_load = false;
 };
 // A loop that oscillates or jumps while a median of at least this many joint crossings switch
 // between open and closed every pass is told that its joints chatter rather than sent to a

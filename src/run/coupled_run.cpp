@@ -330,7 +330,8 @@ std::string describe_non_convergence(const Round& round) {
                                           .settling = s.coupling.settle,
                                           .passes_not_at_rest = passes_not_at_rest,
                                           .crossings_switched = median_of_last("joint_crossings_switched"),
-                                          .contacts_changed = median_of_last("contact_state_changes")});
+                                          .contacts_changed = median_of_last("contact_state_changes"),
+                                          .sudden_load = s.coupling.ramp_passes == 1 && round.model.load_step() == 1});
   std::string message = fmt::format("the coupling loop did not converge in {} iterations (tolerance {:g}): {}",
                                     s.coupling.max_iterations, s.coupling.tolerance, why.text);
   const bool never_at_rest = why.behaviour == coupling::NonConvergence::never_at_rest;

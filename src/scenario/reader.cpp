@@ -652,7 +652,15 @@ void read_coupling(ReadContext& ctx, const TableView& root, Scenario& s) {
   c.require("relaxation", s.coupling.relaxation > 0.0 && s.coupling.relaxation <= 1.0,
             "must lie in (0, 1]");
   s.coupling.acceleration = c.choice("acceleration", coupling::Acceleration::none);
-  if (auto n = c.integer("ramp_passes", 1, 1'000'000)) s.coupling.ramp_passes = *n;
+  if (auto n = c.integer("ramp_passes", 1, 1'000'000)) {
+    s.coupling.ramp_passes = *n;
+    // A pass counts towards convergence only once it and the pass before it had the full load:
+    // a ramp as long as the passes allowed ends every steady run unconverged.
+    c.require("ramp_passes", (s.flow && s.flow->transient) || *n < s.coupling.max_iterations,
+              fmt::format("must be below coupling.max_iterations ({}): the first pass that can count towards "
+                          "convergence is pass ramp_passes + 1",
+                          s.coupling.max_iterations));
+  }
   if (c.has("pseudo_time_step")) {
     s.coupling.pseudo_time_step = c.number_or("pseudo_time_step", 0.0);
     c.require("pseudo_time_step", s.coupling.pseudo_time_step > 0.0, "must be > 0 (s); leave it out for none");

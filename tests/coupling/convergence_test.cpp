@@ -324,5 +324,52 @@ TEST(NonConvergence, BlocksThatNoPassBringsToRestAreNamedSoBeforeAnyTrend) {
             NonConvergence::never_at_rest);
 }
 
+// The layered faulted seal at 0.95 of its jacking head from its in-situ state, the whole load at
+// once (history.csv of docs/studies/2026-11-29-default-ramp.md, measured): the head change
+// drifts near 0.011 while a median of 197 crossings switch a pass. Its loop settles with the
+// load raised over three passes, so a run whose load went on at once is told to try
+// coupling.ramp_passes = 3; one already ramped (or a later load step, which no ramp reaches)
+// is not.
+TEST(NonConvergence, ALoopThatDriftsAfterASuddenLoadIsToldToTryTheRamp) {
+  const std::vector<double> head{1,      0.242,  0.057,  0.0194, 0.0218, 0.0208, 0.0147, 0.0109, 0.0135, 0.0131,
+                                 0.0112, 0.013,  0.0108, 0.013,  0.0128, 0.0108, 0.01,   0.0215, 0.018,  0.0114,
+                                 0.0117, 0.0128, 0.0134, 0.0104, 0.00928, 0.0121, 0.0124, 0.0137, 0.012, 0.0111};
+  const std::vector<double> displacement{
+      1,        0.0624,  0.0102,   0.00344,  0.00229, 0.00277, 0.00124,  0.000508, 0.00182, 0.00219,
+      0.00221,  0.00104, 0.00107,  0.00107,  0.000256, 0.00058, 0.000653, 0.0034,   0.00281, 0.00138,
+      0.000204, 0.00195, 0.00188,  0.000464, 0.000598, 0.000807, 0.00144, 0.00175,  0.00135, 0.00115};
+  const std::vector<double> two_back{1,       1,       0.235,   0.0657,  0.0294,  0.00993, 0.0134,  0.0128,
+                                     0.0113,  0.00972, 0.0114,  0.0101,  0.0141,  0.0138,  0.00961, 0.00884,
+                                     0.0114,  0.0174,  0.0135,  0.0142,  0.0132,  0.0124,  0.0118,  0.00938,
+                                     0.00956, 0.00856, 0.00698, 0.00993, 0.00782, 0.00791};
+  const LoopAsRun sudden{.settling = true, .crossings_switched = 197, .contacts_changed = 18, .sudden_load = true};
+  const ConvergenceDiagnosis d = diagnose_non_convergence(head, displacement, two_back, 1e-4, sudden);
+  EXPECT_EQ(d.behaviour, NonConvergence::drifting);
+  EXPECT_NE(d.text.find("the whole fluid load went on at once in the first pass (coupling.ramp_passes = 1): try "
+                        "coupling.ramp_passes = 3"),
+            std::string::npos)
+      << d.text;
+  LoopAsRun ramped = sudden;
+  ramped.sudden_load = false;
+  const ConvergenceDiagnosis r = diagnose_non_convergence(head, displacement, two_back, 1e-4, ramped);
+  EXPECT_EQ(r.behaviour, NonConvergence::drifting);
+  EXPECT_EQ(r.text.find("ramp_passes"), std::string::npos) << r.text;
+}
+
+// A loop that merely needs more passes, or diverges, gets its own advice, not the ramp's
+// (a divergence is already told to ramp, with a smaller relaxation).
+TEST(NonConvergence, TheRampIsAdvisedOnlyOnceAndNotToALoopStillConverging) {
+  const ConvergenceDiagnosis slow = diagnose_non_convergence(geometric(1e-2, 0.8, 12), geometric(1e-6, 0.8, 12),
+                                                             std::vector<double>(12, 1.0), 1e-4, {.sudden_load = true});
+  EXPECT_EQ(slow.behaviour, NonConvergence::still_converging);
+  EXPECT_EQ(slow.text.find("ramp_passes"), std::string::npos) << slow.text;
+  const ConvergenceDiagnosis grows = diagnose_non_convergence(geometric(1e-3, 1.01, 12), geometric(1e-3, 1.3, 12),
+                                                              std::vector<double>(12, 1.0), 1e-4, {.sudden_load = true});
+  EXPECT_EQ(grows.behaviour, NonConvergence::diverging);
+  const std::size_t first = grows.text.find("ramp_passes");
+  ASSERT_NE(first, std::string::npos) << grows.text;
+  EXPECT_EQ(grows.text.find("ramp_passes", first + 1), std::string::npos) << grows.text;
+}
+
 }  // namespace
 }  // namespace hydrodda::coupling
