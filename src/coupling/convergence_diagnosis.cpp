@@ -146,6 +146,47 @@ std::string ramp_advice(const LoopAsRun& loop) {
          "ramp\")";
 }
 
+// Whether the widest opening went up and down over the last passes rather than one way: it
+// ended less than a third of the way it travelled from where it began (net < path / 3 over the
+// last 10 passes, the first pass left out). A drift whose openings wander so comes to rest each
+// pass about one state, not farther on: the layered faulted seal at 0.95 H* at once, its widest
+// opening 0.406–0.414 mm over its last 10 passes (docs/studies/2026-11-29-default-ramp.md).
+struct Wander {
+  bool wanders = false;
+  double low = 0.0, high = 0.0;
+  int passes = 0;
+};
+Wander opening_wander(const std::vector<double>& opening) {
+  if (opening.size() < 5) return {};
+  const std::size_t first = std::max<std::size_t>(1, opening.size() > 10 ? opening.size() - 10 : 1);
+  double path = 0.0;
+  for (std::size_t k = first + 1; k < opening.size(); ++k) path += std::abs(opening[k] - opening[k - 1]);
+  const double net = std::abs(opening.back() - opening[first]);
+  const auto [low, high] = std::minmax_element(opening.begin() + static_cast<std::ptrdiff_t>(first), opening.end());
+  return {path > 0.0 && net < path / 3.0, *low, *high, static_cast<int>(opening.size() - first)};
+}
+
+// To 3 figures: openings that wander by a few per cent differ there.
+std::string format_millimetres(double metres) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g mm", metres * 1e3);
+  return text;
+}
+
+// What a drift's blocks do, by the passes' widest openings when known.
+std::string drifting_blocks(const LoopAsRun& loop) {
+  if (!loop.settling)
+    return "the blocks keep moving from pass to pass; try coupling.settle = true (each pass steps on until the "
+           "blocks are at rest) or more mechanics.steps per pass, or check that the fluid load leaves the blocks an "
+           "equilibrium";
+  if (const Wander w = opening_wander(loop.largest_opening); w.wanders)
+    return "the blocks come to rest every pass, about one state rather than farther on (history.csv's "
+           "largest_opening went up and down between " + format_millimetres(w.low) + " and " +
+           format_millimetres(w.high) + " over the last " + std::to_string(w.passes) + " passes)";
+  return "the blocks keep moving from pass to pass, each pass coming to rest a little farther on; check that the "
+         "fluid load leaves the blocks an equilibrium (history.csv's largest_opening shows a joint that keeps opening)";
+}
+
 // Blocks that no pass brought to rest: no pass's fluid load has an equilibrium where they are.
 std::string describe_never_at_rest(int passes, const std::string& name, const std::string& level) {
   return "the blocks came to rest in none of the last " + std::to_string(passes) +
@@ -261,12 +302,7 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
       d.text = norms + " stayed above the tolerance: the " + name + " change drifts (" +
                (d.rate < 0.95 ? "at " + level + ", falling only as a power of the passes, not geometrically"
                               : "near " + level + ", neither falling nor alternating") +
-               (loop.settling ? std::string("): the blocks keep moving from pass to pass, each pass coming to rest a little "
-                                       "farther on; check that the fluid load leaves the blocks an equilibrium "
-                                       "(history.csv's largest_opening shows a joint that keeps opening)")
-                         : std::string("): the blocks keep moving from pass to pass; try coupling.settle = true (each "
-                                       "pass steps on until the blocks are at rest) or more mechanics.steps per pass, "
-                                       "or check that the fluid load leaves the blocks an equilibrium")) +
+               "): " + drifting_blocks(loop) +
                (loop.crossings_switched >= kChatteringCrossings ? "; " + chattering_joints(loop) : std::string()) +
                ramp_advice(loop);
       break;

@@ -64,6 +64,8 @@ struct LoopAsRun {
   // unconverged in a steady run's first load step): a loop that swings, jumps or drifts is then
   // told to try the ramp too.
   bool sudden_load = false;
+  // history.csv's largest_opening (m), one a pass; empty when not known.
+  std::vector<double> largest_opening;
 };
 // A loop that oscillates or jumps while a median of at least this many joint crossings switch
 // between open and closed every pass is told that its joints chatter rather than sent to a

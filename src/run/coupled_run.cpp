@@ -316,10 +316,13 @@ std::string describe_non_convergence(const Round& round) {
     return static_cast<int>(values[values.size() / 2]);
   };
   const std::size_t two_passes_column = column("head_change_two_passes"), at_rest_column = column("at_rest");
+  const std::size_t opening_column = column("largest_opening");
   std::vector<double> two_passes;  // history.csv's head_change_two_passes
+  std::vector<double> largest_opening;
   int passes_not_at_rest = 0;      // the last passes in a row whose at_rest is 0
   for (const std::vector<std::string>& row : recorder.history_rows()) {
     two_passes.push_back(std::stod(row.at(two_passes_column)));
+    largest_opening.push_back(std::stod(row.at(opening_column)));
     passes_not_at_rest = row.at(at_rest_column) == "0" ? passes_not_at_rest + 1 : 0;
   }
   const coupling::ConvergenceDiagnosis why =
@@ -331,7 +334,8 @@ std::string describe_non_convergence(const Round& round) {
                                           .passes_not_at_rest = passes_not_at_rest,
                                           .crossings_switched = median_of_last("joint_crossings_switched"),
                                           .contacts_changed = median_of_last("contact_state_changes"),
-                                          .sudden_load = s.coupling.ramp_passes == 1 && round.model.load_step() == 1});
+                                          .sudden_load = s.coupling.ramp_passes == 1 && round.model.load_step() == 1,
+                                          .largest_opening = std::move(largest_opening)});
   std::string message = fmt::format("the coupling loop did not converge in {} iterations (tolerance {:g}): {}",
                                     s.coupling.max_iterations, s.coupling.tolerance, why.text);
   const bool never_at_rest = why.behaviour == coupling::NonConvergence::never_at_rest;

@@ -371,5 +371,31 @@ TEST(NonConvergence, TheRampIsAdvisedOnlyOnceAndNotToALoopStillConverging) {
   EXPECT_EQ(grows.text.find("ramp_passes", first + 1), std::string::npos) << grows.text;
 }
 
+// The same run's widest opening (history.csv's largest_opening, mm, measured): after its first
+// passes it goes up and down, over its last ten between 0.406 and 0.414 mm, ending 0.003 mm from
+// where they began after travelling 0.04 mm. Its blocks rest every pass about one state, so the drift
+// is told as such, not as blocks "coming to rest a little farther on"; an opening that grows
+// pass after pass (0.40 mm + 0.01 mm a pass) keeps that text.
+TEST(NonConvergence, ADriftWhoseWidestOpeningGoesUpAndDownIsToldAsRestingAboutOneState) {
+  const std::vector<double> head(30, 0.011), displacement(30, 0.0012), two_back(30, 0.011);
+  const std::vector<double> opening_mm{0.4808, 0.254,  0.3598, 0.3647, 0.3872, 0.391,  0.4175, 0.4182, 0.4079, 0.4175,
+                                       0.4069, 0.4149, 0.416,  0.4129, 0.4144, 0.4154, 0.4169, 0.4003, 0.4069, 0.4022,
+                                       0.4058, 0.4126, 0.4058, 0.4089, 0.4106, 0.4105, 0.4136, 0.4073, 0.4141, 0.4087};
+  LoopAsRun wandering{.settling = true};
+  for (double mm : opening_mm) wandering.largest_opening.push_back(mm * 1e-3);
+  const ConvergenceDiagnosis d = diagnose_non_convergence(head, displacement, two_back, 1e-4, wandering);
+  EXPECT_EQ(d.behaviour, NonConvergence::drifting);
+  EXPECT_NE(d.text.find("the blocks come to rest every pass, about one state rather than farther on (history.csv's "
+                        "largest_opening went up and down between 0.406 mm and 0.414 mm over the last 10 passes)"),
+            std::string::npos)
+      << d.text;
+  EXPECT_EQ(d.text.find("a little farther on"), std::string::npos) << d.text;
+  LoopAsRun opening{.settling = true};
+  for (int k = 0; k < 30; ++k) opening.largest_opening.push_back(0.4e-3 + 1e-5 * k);
+  const ConvergenceDiagnosis grows = diagnose_non_convergence(head, displacement, two_back, 1e-4, opening);
+  EXPECT_EQ(grows.behaviour, NonConvergence::drifting);
+  EXPECT_NE(grows.text.find("each pass coming to rest a little farther on"), std::string::npos) << grows.text;
+}
+
 }  // namespace
 }  // namespace hydrodda::coupling
