@@ -237,10 +237,9 @@ void System::detect_contacts() {
         // Touching (within the hysteresis band) counts as closed: a settled packing starts
         // with its contacts carrying load instead of finding them one open–close pass at a
         // time.
-        a.record.state = c.penetration > -1e-2 * penetration_tolerance_ ? ContactState::locked
-                                                                         : ContactState::open;
+        a.record.state = c.penetration > -1e-2 * penetration_tolerance_ ? closed_state(c.key) : ContactState::open;
         a.record.reference_ratio = c.edge_ratio;
-        if (preload_new_contacts_ && a.record.state == ContactState::locked) preload_contact(a);
+        if (preload_new_contacts_ && is_closed(a.record.state)) preload_contact(a);
       }
       if (a.record.state == ContactState::open) a.record.reference_ratio = c.edge_ratio;
       linearise_contact(a);
@@ -548,6 +547,18 @@ double System::compute_shear_strength(const ActiveContact& c, double normal_forc
   return std::max(normal_force, 0.0) * joint.tan_friction + joint.cohesion * c.length;
 }
 
+// A locked contact on a frictionless, cohesionless joint would hold a shear of up to p × its
+// shear band (update_state) that the joint cannot carry, slide once that is passed, and lock
+// again at the next reversal: across the passes of a coupled step, the strips of Mandel's
+// problem pulled under their frictionless plate flipped locked ↔ sliding at every corner and
+// the step's iterations cycled (docs/studies/2026-11-29-mandel-first-attempt.md). Such a
+// contact slides from the moment it closes, its friction N tan φ + c l = 0.
+ContactState System::closed_state(const ContactKey& key) const {
+  if (is_intact_bond(key)) return ContactState::locked;
+  const JointStrength& joint = joint_of(key);
+  return joint.tan_friction == 0.0 && joint.cohesion == 0.0 ? ContactState::sliding : ContactState::locked;
+}
+
 System::ContactForceExtent System::update_contact_forces(const Eigen::VectorXd& d) {
   // Largest values: the same whatever the chunks.
   const auto chunks = numerics::results_in_chunks(many_closed_contacts(), closed_.size(), kContactChunk,
@@ -622,7 +633,7 @@ bool System::update_state(ActiveContact& c, const Eigen::VectorXd& d, double ban
   r.penetration = pen;
   if (r.state == ContactState::open) {
     if (pen > (r.released ? std::max(band, penetration_tolerance_) : band)) {
-      r.state = ContactState::locked;
+      r.state = closed_state(c.key);
       r.multiplier = 0.0;
       r.released = false;
       linearise_closed_contact(c);
@@ -648,7 +659,7 @@ bool System::update_state(ActiveContact& c, const Eigen::VectorXd& d, double ban
       r.slide_sign = shear > 0 ? 1 : -1;
       return true;
     }
-  } else if (shear * r.slide_sign < -band) {  // a clear reversal only
+  } else if (shear * r.slide_sign < -band && closed_state(c.key) == ContactState::locked) {  // a clear reversal only
     r.state = ContactState::locked;
     return true;
   }

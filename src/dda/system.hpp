@@ -301,6 +301,9 @@ class System {
   double compute_shear(const ActiveContact& c, const Eigen::VectorXd& d) const;
   double compute_normal_force(const ActiveContact& c, double penetration) const;
   double compute_shear_strength(const ActiveContact& c, double normal_force) const;
+  // The state a contact closes in: sliding on a joint that has no shear strength at any normal
+  // force (no friction, no cohesion, no intact bond), locked otherwise (System::update_state).
+  ContactState closed_state(const ContactKey& key) const;
   // The closed contacts' penetrations and normal forces under the solution d, into their
   // records; the deepest penetration and the largest normal force (in size).
   struct ContactForceExtent {
