@@ -56,7 +56,8 @@ void StaggeredLoop::begin_time_step(double time_step) {
   BlockPieces pieces;
   const PorosityField field = clip_blocks(blocks, &pieces);
   std::vector<double> apertures;
-  if (joints_) apertures = joints_->apertures(blocks, mechanics_.contacts(), mechanics_.penetration_tolerance());
+  // With bonds, an intact bond's crossing is rock, as in every pass (compute_joint_apertures).
+  if (joints_) apertures = compute_joint_apertures(blocks);
   const SkeletonVolumes start =
       compute_skeleton_volumes(*settings_.fixed_stress, porosity_mapper_.element_areas(), pieces,
                                block_volumetric_strains(), field.fracture_area, joints_ ? &*joints_ : nullptr, apertures);

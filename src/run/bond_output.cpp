@@ -35,8 +35,9 @@ int BondOutput::add_breaks(long long step, const dda::System& system, FractureOu
   for (std::size_t k = listed_; k < breaks.size(); ++k) {
     const dda::BondBreak& b = breaks[k];
     const bool by_pass = clock_ == BondClock::pass;
-    const double when = by_pass ? static_cast<double>(step) : b.time;
-    rows.push_back({trace_count_ + b.bond, b.bond, by_pass ? pass_time : b.time, mode_name(b.mode),
+    const double row_time = clock_ == BondClock::time ? b.time : pass_time;
+    const double when = by_pass ? static_cast<double>(step) : row_time;
+    rows.push_back({trace_count_ + b.bond, b.bond, row_time, mode_name(b.mode),
                     type_names_.at(static_cast<std::size_t>(b.bond)), b.from, b.to});
     const auto bond = static_cast<std::size_t>(b.bond);
     broken_[bond] = 1;
@@ -48,20 +49,33 @@ int BondOutput::add_breaks(long long step, const dda::System& system, FractureOu
   return static_cast<int>(rows.size());
 }
 
-void BondOutput::continue_from(const dda::System& system, std::span<const int> broken_per_pass,
-                               std::span<const int> written) {
+template <class When>
+void BondOutput::list_earlier_breaks(const dda::System& system, std::span<const int> broken_per_group, When when) {
   const std::vector<dda::BondBreak>& breaks = system.bond_breaks();
   std::size_t k = 0;
-  for (std::size_t pass = 0; pass < broken_per_pass.size(); ++pass)
-    for (int i = 0; i < broken_per_pass[pass] && k < breaks.size(); ++i, ++k) {
+  for (std::size_t group = 0; group < broken_per_group.size(); ++group)
+    for (int i = 0; i < broken_per_group[group] && k < breaks.size(); ++i, ++k) {
       const auto bond = static_cast<std::size_t>(breaks[k].bond);
       broken_[bond] = 1;
-      broken_at_[bond] = static_cast<double>(pass + 1);
+      broken_at_[bond] = when(group);
       mode_[bond] = breaks[k].mode == dda::BondFailure::shear ? 2 : 1;
     }
   listed_ = k;
+}
+
+void BondOutput::continue_from(const dda::System& system, std::span<const int> broken_per_pass,
+                               std::span<const int> written) {
+  list_earlier_breaks(system, broken_per_pass, [](std::size_t pass) { return static_cast<double>(pass + 1); });
   if (!series_) series_.emplace(folder_.file("bonds.pvd"));
   for (int pass : written) list_if_present(*series_, folder_, pass, fmt::format("bonds_{:04d}.vtu", pass));
+}
+
+void BondOutput::continue_in_time(const dda::System& system, std::span<const int> broken_per_step,
+                                  std::span<const double> step_times, std::span<const double> written_times) {
+  list_earlier_breaks(system, broken_per_step, [step_times](std::size_t step) { return step < step_times.size() ? step_times[step] : -1.0; });
+  if (!series_) series_.emplace(folder_.file("bonds.pvd"));
+  for (std::size_t i = 0; i < written_times.size(); ++i)
+    list_if_present(*series_, folder_, written_times[i], fmt::format("bonds_{:04d}.vtu", i));
 }
 
 void BondOutput::write_series(int step, double time, const dda::System& system) {
@@ -90,7 +104,7 @@ void BondOutput::draw_figure(const scenario::Scenario& s, const dda::System& sys
   int unlisted = 0;
   for (int b = 0; b < system.bond_count(); ++b)
     if (system.is_bond_broken(b) && !broken_[static_cast<std::size_t>(b)]) ++unlisted;
-  const char* unit = clock_ == BondClock::pass ? "pass" : "step";
+  const char* unit = clock_ == BondClock::pass ? "pass" : clock_ == BondClock::time_step ? "time step" : "step";
   figure.subtitle = fmt::format("Broken bonds ({} of {}; intact in grey), {}{}", listed_, system.bond_count(), when,
                                 unlisted > 0 ? fmt::format("; {} more in the failed {}, not drawn", unlisted, unit)
                                              : std::string());

@@ -2,7 +2,8 @@
 // The run folder's record of bonds (docs/output.md, "Bonds"): each bond that broke as a new
 // fracture in fractures.csv, and bonds.pvd with bonds_NNNN.vtu, every bonded face as a line
 // with its state. A mechanics run records its breaks by DDA step and time (s), a coupled run by
-// the coupling iteration (pass) whose DDA steps broke them.
+// the coupling iteration (pass) whose DDA steps broke them, a coupled transient run by the time
+// step whose iterations broke them and its end time (s).
 
 #include <optional>
 #include <span>
@@ -17,8 +18,9 @@
 
 namespace hydrodda::run {
 
-// What a break is recorded at: the time (s) of the DDA step it broke in, or the pass.
-enum class BondClock { time, pass };
+// What a break is recorded at: the time (s) of the DDA step it broke in, the pass, or the time
+// step of a coupled transient run (its row at the step, at the step's end time in s).
+enum class BondClock { time, pass, time_step };
 
 class BondOutput {
  public:
@@ -30,13 +32,19 @@ class BondOutput {
 
   // The bonds that broke since the last call, as rows of fractures.csv at step (or pass) `step`,
   // their `time` each break's own step's end (BondClock::time) or the pass's, `pass_time`
-  // (BondClock::pass, which records the pass as when it broke); how many. Only breaks listed
+  // (BondClock::pass, which records the pass as when it broke; BondClock::time_step, the time
+  // step's end, which records that time as when it broke); how many. Only breaks listed
   // here are written or drawn as broken: those of a step that failed never are.
   int add_breaks(long long step, const dda::System& system, FractureOutput& fractures, double pass_time = 0.0);
   // A resumed coupled run: the breaks `system` holds are those of its earlier passes,
   // `broken_per_pass[p]` of them in pass p + 1, in order (history.csv's broken_bonds); bonds.pvd
   // lists again the files of the passes `written` that are still there.
   void continue_from(const dda::System& system, std::span<const int> broken_per_pass, std::span<const int> written);
+  // A resumed coupled transient run: `broken_per_step[k]` of the breaks `system` holds in time
+  // step k (history.csv's broken_bonds, the row of t = 0 first), each broken at `step_times[k]`;
+  // bonds.pvd lists again the files bonds_NNNN.vtu still there, at `written_times`[NNNN].
+  void continue_in_time(const dda::System& system, std::span<const int> broken_per_step,
+                        std::span<const double> step_times, std::span<const double> written_times);
   // bonds_NNNN.vtu, listed in bonds.pvd at `time`: each bond's face (the first sub-block's edge)
   // with `bond` (its id), `broken` (0 or 1), `mode` (0 intact, 1 tension, 2 shear) and
   // `broken_at` (the time it broke, or its pass; −1 intact or broken from the start).
@@ -56,6 +64,11 @@ class BondOutput {
   int trace_count_ = 0;
   std::size_t listed_ = 0;  // breaks already in fractures.csv
   std::optional<output::PvdSeries> series_;
+
+  // The first breaks `system` holds, `broken_per_group[g]` in group g (a pass or a time step),
+  // marked broken at `when(g)`.
+  template <class When>
+  void list_earlier_breaks(const dda::System& system, std::span<const int> broken_per_group, When when);
 };
 
 }  // namespace hydrodda::run

@@ -63,7 +63,11 @@ void FracturesInTime::record(long long step, double time) {
 }
 
 void FracturesInTime::resume(int steps, const std::vector<double>& written_times, std::vector<FractureCounts> counts) {
-  if (!meter_) return;
+  if (!meter_) {
+    // Without traces fractures.csv holds only broken bonds' rows, if any: those up to `steps` kept.
+    output_.continue_in_time(steps, {});
+    return;
+  }
   output_.continue_in_time(steps, written_times);
   counts_ = std::move(counts);
   const dda::System& system = model_.mechanics();

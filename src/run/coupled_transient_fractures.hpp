@@ -49,11 +49,16 @@ class FracturesInTime {
   void record(long long step, double time);
   // fractures_NNNN.vtu in fractures.pvd at `time` (output.fields.fractures).
   void write_series(int written, double time);
-  // A continued run after step `steps`: fractures.csv's rows up to it kept, fractures_NNNN.vtu
+  // A continued run after step `steps`: fractures.csv's rows up to it kept (its broken bonds'
+  // too: call list_broken_bonds first), fractures_NNNN.vtu
   // listed again at `written_times`[NNNN], the counts so far taken up and the fractures measured
   // again as the model stands (the state that step left).
   void resume(int steps, const std::vector<double>& written_times, std::vector<FractureCounts> counts);
   const std::vector<FractureCounts>& counts() const { return counts_; }
+  // A model with bonds: fractures.csv lists its breaks too, as BondOutput adds them to output()
+  // (call before any row).
+  void list_broken_bonds() { output_.list_broken_bonds(); }
+  FractureOutput& output() { return output_; }
   const std::optional<fractures::FractureState>& state() const { return state_; }
 
  private:

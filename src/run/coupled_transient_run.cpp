@@ -2,8 +2,9 @@
 // step's passes its iterations (coupled_transient.hpp for the step control,
 // coupled_transient_stepper.hpp for the steps). Recorded per step: history.csv, probes.csv and
 // measure.csv; at t = 0 and each output time: fluid.pvd and blocks.pvd at their real times and
-// checkpoint.bin, which an interrupt, --stop-after and the end write too; at the end
-// summary.json and the figures (docs/coupling.md, "Coupled transient runs"). `run --resume`
+// checkpoint.bin, which an interrupt, --stop-after and the end write too; with bonds, the breaks
+// of each step (fractures.csv's bond rows, history.csv's broken_bonds, bonds.pvd at the output
+// times, figures/cracks.*); at the end summary.json and the figures (docs/coupling.md, "Coupled transient runs"). `run --resume`
 // continues from the checkpoint bit for bit.
 
 #include <fmt/format.h>
@@ -16,6 +17,7 @@
 #include "output/csv_table.hpp"
 #include "output/plot_line.hpp"
 #include "output/time_axis.hpp"
+#include "run/bond_output.hpp"
 #include "run/coupled_model.hpp"
 #include "run/coupled_transient.hpp"
 #include "run/coupled_transient_fractures.hpp"
@@ -60,12 +62,18 @@ using output::CsvTable;
 
 // history.csv, probes.csv, measure.csv and fractures.csv, rows per step; the fields at output
 // times; checkpoint.bin, whose record (output::CoupledTransientCheckpoint) holds all of it so
-// far.
+// far, the bonds broken so far in its DDA state.
 class CoupledTransientRecorder {
  public:
   CoupledTransientRecorder(const RunContext& context, const CoupledModel& model)
       : context_(context), model_(model), fields_(context.folder, context.scenario.output.fields),
-        sites_(locate_probes(context.scenario, model.mesh())), fractures_(context, model) {}
+        sites_(locate_probes(context.scenario, model.mesh())), fractures_(context, model) {
+    if (model.mechanics().bond_count() > 0) {
+      fractures_.list_broken_bonds();
+      bonds_.emplace(context.folder, context.scenario, model.mechanics(),
+                     static_cast<int>(fracture_type_names(context.scenario).size()), BondClock::time_step);
+    }
+  }
 
   // A new run: the scenario's copy for resume, and the state at t = 0.
   void start() {
@@ -91,6 +99,7 @@ class CoupledTransientRecorder {
       counts.push_back({static_cast<int>(c[0]), static_cast<int>(c[1]), c[2], c[3], c[4]});
     }
     fractures_.resume(record_.steps, record_.output_times, std::move(counts));
+    if (bonds_) bonds_->continue_in_time(model_.mechanics(), broken_per_step(), record_.times, record_.output_times);
   }
   void record(const StepRecord& r);
   void write_fields() {
@@ -100,6 +109,7 @@ class CoupledTransientRecorder {
                         model_.loop().permeability());
     fields_.write_blocks(written, time, model_.mechanics());
     fractures_.write_series(written, time);
+    if (bonds_) bonds_->write_series(written, time, model_.mechanics());
     record_.output_times.push_back(time);
   }
   // checkpoint.bin of the state at the last step's end and where the steps stand; `ended`: the
@@ -120,14 +130,29 @@ class CoupledTransientRecorder {
 
  private:
   void write_tables() const;
+  std::vector<std::string> history_columns() const;
+  // history.csv's broken_bonds of each step recorded so far (the row of t = 0 first).
+  std::vector<int> broken_per_step() const;
 
   const RunContext& context_;
   const CoupledModel& model_;
   ParaviewOutput fields_;
   std::vector<ProbeSite> sites_;
   FracturesInTime fractures_;
+  std::optional<BondOutput> bonds_;  // a model with bonds: its breaks, by the time step they broke in
   output::CoupledTransientCheckpoint record_;
 };
+
+std::vector<int> CoupledTransientRecorder::broken_per_step() const {
+  std::vector<int> counts;
+  for (const std::vector<std::string>& row : record_.history) {
+    if (row.size() != history_columns().size())
+      throw InputError("run --resume: the checkpoint's history has no broken_bonds column (written before coupled "
+                       "transient runs recorded their breaks); run the scenario again");
+    counts.push_back(std::stoi(row.back()));
+  }
+  return counts;
+}
 
 void CoupledTransientRecorder::record(const StepRecord& r) {
   const hydro::FlowSolution& flow = model_.loop().flow();
@@ -145,6 +170,9 @@ void CoupledTransientRecorder::record(const StepRecord& r) {
     record_.boundary_flows[b].push_back(flow.boundary_flow(boundaries[b].name));
   }
   record_.storage_rates.push_back(flow.storage_rate);
+  // The bonds broken in the step's iterations, recorded at the step (before its fractures' rows,
+  // as a coupled run's at the pass); only a step that converged gets here.
+  const int broken = bonds_ ? bonds_->add_breaks(r.step, model_.mechanics(), fractures_.output(), r.time) : 0;
   fractures_.record(r.step, r.time);
   if (fractures_.measured()) {
     const FractureCounts& c = fractures_.counts().back();
@@ -153,6 +181,7 @@ void CoupledTransientRecorder::record(const StepRecord& r) {
                                    {static_cast<double>(c.open), static_cast<double>(c.partly_open), c.open_length,
                                     c.largest_opening, c.largest_hydraulic});
   }
+  if (bonds_) row.push_back(CsvTable::cell(static_cast<long long>(broken)));
   record_.history.push_back(std::move(row));
   record_.times.push_back(r.time);
   for (std::size_t p = 0; p < sites_.size(); ++p) {
@@ -171,12 +200,18 @@ void CoupledTransientRecorder::record(const StepRecord& r) {
   write_tables();
 }
 
-void CoupledTransientRecorder::write_tables() const {
+std::vector<std::string> CoupledTransientRecorder::history_columns() const {
   std::vector<std::string> columns{"step", "time", "time_step", "iterations", "cuts", "head_change",
                                    "displacement_change", "storage_rate", "balance"};
   for (const scenario::FlowBoundaryCondition& bc : context_.scenario.flow->boundaries) columns.push_back("flow_" + bc.name);
   if (fractures_.measured())
     for (const std::string& c : fracture_count_columns()) columns.push_back(c);
+  if (bonds_) columns.push_back("broken_bonds");
+  return columns;
+}
+
+void CoupledTransientRecorder::write_tables() const {
+  const std::vector<std::string> columns = history_columns();
   const auto write = [this](const char* name, std::vector<std::string> header,
                             const std::vector<std::vector<std::string>>& rows) {
     CsvTable table(std::move(header));
@@ -203,6 +238,9 @@ void CoupledTransientRecorder::draw(const std::string& status) const {
   if (const auto& state = fractures_.state())
     draw_aperture_figure(s, context_.folder, model_.block_polygons(), *state,
                          {fmt::format("t = {:g} s", record_.times.back()), status});
+  if (bonds_)
+    bonds_->draw_figure(s, model_.mechanics(), fmt::format("t = {:g} s", record_.times.back()) +
+                                                   (status.empty() ? "" : ", " + status));
   if (record_.times.size() < 2) return;
   const bool log_time = s.flow->transient->time_step <= 0.01 * s.flow->transient->end_time;
   // The t = 0 row is left off a log axis.
