@@ -2,7 +2,8 @@
 // is carried by the ordinary vertex–edge contacts at its ends, which start locked and stay
 // locked while the bond is intact; the face breaks for good when the traction of its
 // sub-blocks' stress exceeds its joint type's tensile strength or shear strength
-// (break_overloaded_bonds). A
+// (break_overloaded_bonds), or, of a type with a fracture energy, starts to soften in tension
+// (softening_bonds.cpp). A
 // broken bond is a joint of its type with friction only (System::joint_of). Breaks made in an attempt at a step
 // that is then cut are undone with it, so that a bond breaks under the load of the step that
 // is kept (docs/dda.md, "Bonds").
@@ -67,7 +68,7 @@ void System::setup_bonds(const std::vector<BlockDefinition>& blocks, const std::
 //     σ = the mean stress of its two sub-blocks at the end of the step under d (a fixed
 //         block, which carries none, left out)
 //     σn = n·σ·n (tension positive), τ = t·σ·n
-//     σn > T                     → broken in tension
+//     σn > T                     → broken in tension (softening, with a fracture energy)
 //     |τ| > c + max(−σn, 0) tan φ → broken in shear
 // The face's traction is read from the sub-blocks' stresses, not from its contacts' forces:
 // the uniform-strain blocks leave the forces of single contacts, and their sums over a face,
@@ -101,9 +102,13 @@ bool System::break_overloaded_bonds(const Eigen::VectorXd& d) {
     else if (std::abs(shear) > strength.cohesion + std::max(-normal, 0.0) * strength.tan_friction)
       mode = BondFailure::shear;
     if (mode == BondFailure::none) continue;
+    any = true;
+    if (mode == BondFailure::tension && strength.fracture_energy > 0.0) {
+      start_softening(static_cast<int>(bond));  // softening_bonds.cpp
+      continue;
+    }
     bond_broken_[bond] = 1;
     pending_breaks_.emplace_back(static_cast<int>(bond), mode);
-    any = true;
   }
   return any;
 }
@@ -111,6 +116,7 @@ bool System::break_overloaded_bonds(const Eigen::VectorXd& d) {
 void System::undo_pending_bond_breaks() {
   for (const auto& [bond, mode] : pending_breaks_) bond_broken_[static_cast<std::size_t>(bond)] = 0;
   pending_breaks_.clear();
+  if (!softening_.empty()) undo_pending_softening();
 }
 
 void System::record_pending_bond_breaks() {
@@ -119,6 +125,7 @@ void System::record_pending_bond_breaks() {
     bond_breaks_.push_back({bond, time_, mode, face[0], face[1]});
   }
   pending_breaks_.clear();
+  if (!softening_.empty()) commit_softening();
 }
 
 std::array<Point, 2> System::bond_face(int bond) const {

@@ -26,6 +26,9 @@ struct Joint {
   double friction_angle_deg = 30.0;
   double cohesion = 0.0;          // Pa
   double tensile_strength = 0.0;  // Pa
+  // J/m2, G_f; > 0 on a bond's type: the bond softens in tension over G_f instead of breaking
+  // at T (a cohesive traction T (1 − w/w_c), w_c = 2 G_f / T; docs/dda.md, "Bonds").
+  double fracture_energy = 0.0;
 };
 
 struct BlockDefinition {

@@ -37,7 +37,7 @@ std::string format_number(double v) {
 }  // namespace
 
 System::JointStrength System::strength_of(const Joint& j) {
-  return {std::tan(j.friction_angle_deg * std::numbers::pi / 180.0), j.cohesion, j.tensile_strength};
+  return {std::tan(j.friction_angle_deg * std::numbers::pi / 180.0), j.cohesion, j.tensile_strength, j.fracture_energy};
 }
 
 System::System(ModelDefinition def, std::unique_ptr<LinearSolver> solver)
@@ -704,10 +704,18 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
   // there are at most 4 × max_open_close_iterations + (the bonds intact at the try's start).
   int passes_breaking_bonds = 0;
   const int pass_cap = 4 * settings_.max_open_close_iterations;
+  Eigen::VectorXd f_pass;  // f_base and the softening bonds' cohesive loads
   for (int oc = 0; oc < pass_cap + passes_breaking_bonds && passes_without_progress < settings_.max_open_close_iterations;
        ++oc) {
     if (interrupt_check_ && interrupt_check_()) return Unsettled::interrupted;
     report.open_close_iterations = oc + 1;
+    // Softening bonds' cohesive tractions, from the opening of the last pass (the step's start
+    // in the first): loads on their faces (softening_bonds.cpp).
+    if (!softening_.empty()) {
+      f_pass = f_base;
+      add_cohesive_loads(oc == 0 ? Eigen::VectorXd() : d, f_pass);
+    }
+    const Eigen::VectorXd& f_loads = softening_.empty() ? f_base : f_pass;
     factor_with_contacts();
     // The sliding contacts' normal forces: those the friction loads were made with (x) and
     // those the solution gives (G(x)).
@@ -727,8 +735,8 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
       // λ ← λ + p d amplifying it pass after pass) leave nothing to solve: the try is cut.
       // Loads not finite before any contact (a mass that overflows) are the model's: the
       // solver names them, and no shorter step would mend them.
-      const Eigen::VectorXd rhs = assemble_contact_rhs(f_base);
-      if (!std::isfinite(rhs.norm()) && std::isfinite(f_base.norm())) {
+      const Eigen::VectorXd rhs = assemble_contact_rhs(f_loads);
+      if (!std::isfinite(rhs.norm()) && std::isfinite(f_loads.norm())) {
         unsettled_forces_ = "the contact forces grew without bound";
         return Unsettled::contact_forces;
       }
@@ -828,8 +836,15 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
     });
     // A bond whose face the solution overloads breaks before the next pass, which then opens
     // or slides its contacts as a joint's: a change of state like a contact's.
-    const bool bonds_broke = !bond_sides_.empty() && break_overloaded_bonds(d);
-    if (!bonds_broke && std::none_of(changed.begin(), changed.end(), [](char c) { return c != 0; })) return Unsettled::no;
+    // Softening bonds: a pass whose opening moved their tractions from those its loads were
+    // made with is no solution yet, and one that opened a face past w_c broke its bond.
+    const CohesionChange cohesion =
+        softening_.empty() ? CohesionChange::none : settle_cohesive_loads(d);
+    const bool bonds_broke =
+        (!bond_sides_.empty() && break_overloaded_bonds(d)) || cohesion == CohesionChange::broke;
+    if (!bonds_broke && cohesion == CohesionChange::none &&
+        std::none_of(changed.begin(), changed.end(), [](char c) { return c != 0; }))
+      return Unsettled::no;
     // A pass that changed only contacts that had kept their state all step is progress: the
     // cutoff opening, pass by pass, the joints that its earlier openings left pulling (a
     // 1,601-block wall's first step: 2,725 of them, then 697, 93, 45, ..., 2), which ends, as

@@ -69,6 +69,13 @@ struct BondBreak {
   Point from, to;
 };
 
+// A bond softening over its fracture energy (dda/softening_bonds.cpp): the largest opening
+// each end of its face (the first block's edge's start and end) has reached at a step's end.
+struct SofteningBond {
+  int bond = 0;
+  std::array<double, 2> peak_opening{0.0, 0.0};  // m
+};
+
 // Persistent contact state (Shi's contact transfer): carried between steps by key.
 struct ContactRecord {
   ContactState state = ContactState::open;
@@ -102,6 +109,7 @@ struct SystemState {
   std::vector<std::vector<Point>> vertex_forces;
   std::vector<double> roller_reliefs;  // in definition order (System::relieve_start_loads)
   std::vector<BondBreak> bond_breaks;  // the bonds broken so far, in the order they broke
+  std::vector<SofteningBond> softening_bonds;  // those softening, not yet broken
 };
 
 // Thrown by System::step when its interrupt check asks it to stop: the step is abandoned and
@@ -218,7 +226,15 @@ class System {
   // Bonds (BlockDefinition::edge_bonds; dda/bonds.cpp): how many, which broke and when, and a
   // bond's face as it is now (the first block's edge that carries it).
   int bond_count() const { return static_cast<int>(bond_sides_.size()); }
-  bool is_bond_broken(int bond) const { return bond_broken_[static_cast<std::size_t>(bond)] != 0; }
+  bool is_bond_broken(int bond) const { return bond_broken_[static_cast<std::size_t>(bond)] == 1; }
+  // A bond of a type with a fracture energy, past its strength and not yet broken: its faces
+  // held by a cohesive traction (dda/softening_bonds.cpp); its contacts a joint's.
+  bool is_bond_softening(int bond) const { return bond_broken_[static_cast<std::size_t>(bond)] == 2; }
+  // The opening of a bond's face at its two ends (the first block's edge's start and end), m:
+  // the second block's matching vertex off the first's edge, along its outward normal.
+  std::array<double, 2> bond_opening(int bond) const;
+  // The cohesive traction (Pa) a softening bond's face carries at its ends at `opening`.
+  std::array<double, 2> bond_cohesive_traction(int bond, std::array<double, 2> opening) const;
   const std::vector<BondBreak>& bond_breaks() const { return bond_breaks_; }
   std::array<Point, 2> bond_face(int bond) const;
   int bond_joint_type(int bond) const;  // 0: `joint`, i: joint_types[i − 1]
@@ -344,6 +360,7 @@ class System {
     double tan_friction = 0.0;
     double cohesion = 0.0;          // Pa
     double tensile_strength = 0.0;  // Pa
+    double fracture_energy = 0.0;   // J/m2
   };
   static JointStrength strength_of(const Joint& j);
   std::vector<JointStrength> joints_;           // by type (ModelDefinition::joint, joint_types)
@@ -394,12 +411,24 @@ class System {
   };
   std::vector<std::array<BondSide, 2>> bond_sides_;  // by bond id
   std::vector<std::vector<int>> edge_bonds_;          // per block, per edge: the bond; empty: none
-  std::vector<char> bond_broken_;                     // by bond id
+  std::vector<char> bond_broken_;                     // by bond id: 0 intact, 1 broken, 2 softening
   std::vector<int> broken_at_start_;                  // ModelDefinition::broken_bonds
   std::vector<JointStrength> broken_joints_;          // by type: tan φ only
   std::vector<std::pair<int, BondFailure>> pending_breaks_;  // broken in the step under way
   std::vector<BondBreak> bond_breaks_;
   double bond_reference_length_ = 1.0;  // m, l̄: half the bonds' mean face length
+  // dda/softening_bonds.cpp: the bonds softening, with their ends' peak openings; those that
+  // started to soften in the step under way; the tractions the pass's loads were made with.
+  std::vector<SofteningBond> softening_;
+  std::vector<int> pending_softening_;
+  std::vector<std::array<double, 2>> cohesion_used_;  // by softening_'s index
+  std::array<double, 2> opening_after(int bond, const Eigen::VectorXd& d) const;
+  void add_cohesive_loads(const Eigen::VectorXd& d, Eigen::VectorXd& f);
+  enum class CohesionChange { none, moved, broke };
+  CohesionChange settle_cohesive_loads(const Eigen::VectorXd& d);
+  void start_softening(int bond);
+  void undo_pending_softening();
+  void commit_softening();
   Settings settings_;
   std::vector<TrackedPoint> fixed_points_;
   std::vector<PointLoad> point_loads_;  // point = current position

@@ -41,6 +41,7 @@ SystemState System::export_state() const {
   s.vertex_forces = vertex_forces_;
   for (const RollerPoint& r : rollers_) s.roller_reliefs.push_back(r.relief);
   s.bond_breaks = bond_breaks_;
+  s.softening_bonds = softening_;
   return s;
 }
 
@@ -108,6 +109,14 @@ void System::import_state(const SystemState& s) {
   bond_broken_.assign(bond_sides_.size(), 0);
   for (int bond : broken_at_start_) bond_broken_[static_cast<std::size_t>(bond)] = 1;
   for (const BondBreak& b : bond_breaks_) bond_broken_[static_cast<std::size_t>(b.bond)] = 1;
+  softening_ = s.softening_bonds;
+  pending_softening_.clear();
+  for (const SofteningBond& b : softening_) {
+    if (b.bond < 0 || static_cast<std::size_t>(b.bond) >= bond_sides_.size())
+      throw std::invalid_argument("DDA: the state names softening bond " + std::to_string(b.bond) + ", and there are " +
+                                  std::to_string(bond_sides_.size()));
+    bond_broken_[static_cast<std::size_t>(b.bond)] = 2;
+  }
   start_face_share_ = nullptr;  // relieve_start_loads gives it again before a first step
   // Contacts carry the initial stress from the first step only.
   preload_new_contacts_ = initial_stress_ && s.time == 0.0 && s.contacts.empty();

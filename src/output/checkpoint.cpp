@@ -24,8 +24,8 @@ constexpr std::string_view kMagic = "hydrodda checkpoint\n";
 // of the last pass; 14: history rows end in each pass's changes (contacts, joint crossings,
 // fluid load, open–close iterations, step cuts); 15: whether the tension cutoff released each
 // open contact; 16: the bonds broken so far (a resumed run had its sub-blocks bonded whole
-// again). Only the current format is read: a run stopped by an older hydrodda is run again.
-constexpr std::int64_t kVersion = 16;
+// again); 17: the bonds softening, with their faces' peak openings. Only the current format is read: a run stopped by an older hydrodda is run again.
+constexpr std::int64_t kVersion = 17;
 // The last 8 bytes: the CRC-32 of every byte before them (zlib's, as a 64-bit word). A CRC
 // detects every error burst of up to 32 bits, so a flipped bit is refused, not resumed from;
 // zlib computes it four times as fast as a byte-at-a-time hash on a checkpoint of tens of MB.
@@ -267,6 +267,12 @@ void write_mechanics(Writer& w, const dda::SystemState& s) {
     w.put(b.from);
     w.put(b.to);
   }
+  w.put(static_cast<std::int64_t>(s.softening_bonds.size()));
+  for (const dda::SofteningBond& b : s.softening_bonds) {
+    w.put(b.bond);
+    w.put(b.peak_opening[0]);
+    w.put(b.peak_opening[1]);
+  }
 }
 
 void read_mechanics(Reader& r, dda::SystemState& s) {
@@ -319,6 +325,16 @@ void read_mechanics(Reader& r, dda::SystemState& s) {
     r.get(b.from);
     r.get(b.to);
     s.bond_breaks.push_back(b);
+  }
+  std::int64_t softening = 0;
+  r.get(softening);
+  if (softening < 0 || softening > kMaxCount) r.fail();
+  for (std::int64_t i = 0; i < softening; ++i) {
+    dda::SofteningBond b;
+    r.get(b.bond);
+    r.get(b.peak_opening[0]);
+    r.get(b.peak_opening[1]);
+    s.softening_bonds.push_back(b);
   }
 }
 

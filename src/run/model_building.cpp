@@ -450,9 +450,9 @@ dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::B
   dda::ModelDefinition model;
   for (const scenario::MaterialDefinition& mat : s.materials)
     model.materials.push_back({mat.density.value_or(0.0), mat.young.value_or(0.0), mat.poisson.value_or(0.0)});
-  model.joint = {s.joint.friction_angle, s.joint.cohesion, s.joint.tensile_strength};
+  model.joint = {s.joint.friction_angle, s.joint.cohesion, s.joint.tensile_strength, s.joint.fracture_energy.value_or(0.0)};
   for (const scenario::JointDefinition& j : s.joint_types)
-    model.joint_types.push_back({j.friction_angle, j.cohesion, j.tensile_strength});
+    model.joint_types.push_back({j.friction_angle, j.cohesion, j.tensile_strength, j.fracture_energy.value_or(0.0)});
 
   dda::Settings& settings = model.settings;
   settings.analysis = m.analysis;

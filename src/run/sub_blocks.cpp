@@ -54,20 +54,39 @@ int first_table_holding(const std::vector<scenario::TessellationDefinition>& tab
   return -1;
 }
 
-// Every table's cracks with their seeds.
+// Every table's cracks and paths with their seeds; a crack that lies on a path takes the
+// path's faces and has no seeds of its own (two rows of seeds along one line would make
+// slivers). Its broken faces are those whose middle lies on it.
 struct Crack {
   geometry::Segment2 segment;
   geometry::CrackSeeds seeds;
   double margin = 0.0;  // from a block's edge, 0.2 of its table's size
+  bool broken = true;   // a crack; false: a path, its bonds intact
 };
 
+bool lies_on_path(const geometry::Segment2& crack, const Crack& path) {
+  const double tolerance = 1e-6 * path.seeds.spacing;
+  return geometry::distance_to_segment(crack.from, path.segment.from, path.segment.to) <= tolerance &&
+         geometry::distance_to_segment(crack.to, path.segment.from, path.segment.to) <= tolerance;
+}
+
 std::vector<Crack> make_cracks(const std::vector<scenario::TessellationDefinition>& tables) {
+  std::vector<Crack> paths;
+  for (const scenario::TessellationDefinition& t : tables)
+    for (const scenario::Segment& c : t.paths) {
+      const geometry::Segment2 segment{c.from, c.to};
+      paths.push_back({segment, geometry::make_crack_seeds(segment, t.size), 0.2 * t.size, false});
+    }
   std::vector<Crack> cracks;
   for (const scenario::TessellationDefinition& t : tables)
     for (const scenario::Segment& c : t.cracks) {
       const geometry::Segment2 segment{c.from, c.to};
-      cracks.push_back({segment, geometry::make_crack_seeds(segment, t.size), 0.2 * t.size});
+      Crack crack{segment, geometry::make_crack_seeds(segment, t.size), 0.2 * t.size, true};
+      for (const Crack& path : paths)
+        if (lies_on_path(segment, path)) crack.seeds.seeds.clear();
+      cracks.push_back(std::move(crack));
     }
+  cracks.insert(cracks.end(), paths.begin(), paths.end());
   return cracks;
 }
 
@@ -112,7 +131,7 @@ std::vector<int> find_crack_bonds(const scenario::Scenario& s, const std::vector
       if (bond < 0) continue;
       const Point a = block.polygon[e], b = block.polygon[(e + 1) % block.polygon.size()];
       for (const Crack& c : cracks)
-        if (geometry::lies_on_crack(a, b, c.segment, 1e-6 * c.seeds.spacing)) broken.push_back(bond);
+        if (c.broken && geometry::lies_on_crack(a, b, c.segment, 1e-6 * c.seeds.spacing)) broken.push_back(bond);
     }
   std::sort(broken.begin(), broken.end());
   broken.erase(std::unique(broken.begin(), broken.end()), broken.end());

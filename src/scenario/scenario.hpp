@@ -81,6 +81,10 @@ struct TessellationDefinition {
   // seeds `size` apart mirrored across it) and the bonds along it start broken.
   std::vector<Segment> cracks;
   int cracks_line = 0;
+  // Straight lines the sub-blocks' faces follow (seeded as cracks are), their bonds intact:
+  // where a crack may run straight. A crack on a path takes its faces.
+  std::vector<Segment> paths;
+  int paths_line = 0;
   int line = 0;
 };
 
@@ -148,7 +152,7 @@ struct JointDefinition {
   std::optional<double> barrier_width;
   int barrier_line = 0;
   // J/m², the energy a bond of this type takes to soften from its strength to nothing (a
-  // softening bond, not yet implemented: refused where bonds use it).
+  // softening bond: docs/dda.md, "Bonds"); ordinary joints of the type have no use for it.
   std::optional<double> fracture_energy;
   int fracture_energy_line = 0;
   bool hydraulic() const { return residual_aperture || normal_stiffness || max_closure; }

@@ -17,30 +17,32 @@ double estimate_sub_blocks(const TessellationDefinition& t, const Polygon& domai
 }
 
 namespace {
-// geometry.tessellate.cracks: straight segments inside the region, each at least two sub-blocks
-// long (a pair of seeds on either side of it every `size`).
-void read_cracks(ReadContext& ctx, const TableView& t, TessellationDefinition& tess) {
-  if (!t.has("cracks")) return;
-  tess.cracks_line = t.line_of_key("cracks");
-  const std::string key = t.key_path("cracks");
-  for (auto& [points, line] : t.point_lists("cracks")) {
+// geometry.tessellate.cracks (and .paths): straight segments inside the region, each at least
+// two sub-blocks long (a pair of seeds on either side of it every `size`).
+void read_segments(ReadContext& ctx, const TableView& t, TessellationDefinition& tess, const std::string& name,
+                   std::vector<Segment>& out, int& line_of_key) {
+  if (!t.has(name)) return;
+  line_of_key = t.line_of_key(name);
+  const std::string key = t.key_path(name);
+  const std::string what = name == "cracks" ? "a crack" : "a path";
+  for (auto& [points, line] : t.point_lists(name)) {
     if (points.size() != 2) {
-      ctx.error(line, key, "a crack is a straight segment: two points [[x1, y1], [x2, y2]]");
+      ctx.error(line, key, what + " is a straight segment: two points [[x1, y1], [x2, y2]]");
       continue;
     }
     const double length = geometry::distance(points[0], points[1]);
     if (tess.size > 0.0 && !(length >= 2.0 * tess.size)) {
       ctx.error(line, key,
-                fmt::format("a crack {} m long is shorter than two sub-blocks (2 size = {} m): make it longer or size "
+                fmt::format("{} {} m long is shorter than two sub-blocks (2 size = {} m): make it longer or size "
                             "smaller",
-                            format_number(length), format_number(2.0 * tess.size)));
+                            what, format_number(length), format_number(2.0 * tess.size)));
       continue;
     }
     if (!tess.region.empty() && !(geometry::contains(tess.region, points[0]) && geometry::contains(tess.region, points[1]))) {
-      ctx.error(line, key, "a crack must lie inside the tessellation's region");
+      ctx.error(line, key, what + " must lie inside the tessellation's region");
       continue;
     }
-    tess.cracks.push_back({points[0], points[1]});
+    out.push_back({points[0], points[1]});
   }
 }
 }  // namespace
@@ -50,7 +52,7 @@ void read_tessellations(ReadContext& ctx, const TableView& g, GeometryDefinition
   double total = 0.0;
   int last_line = 0;
   for (const toml::table* table : g.tables("tessellate")) {
-    const TableView t(ctx, *table, "geometry.tessellate", {"kind", "size", "region", "seed", "joint", "cracks"});
+    const TableView t(ctx, *table, "geometry.tessellate", {"kind", "size", "region", "seed", "joint", "cracks", "paths"});
     TessellationDefinition tess;
     tess.line = last_line = t.line();
     const std::string indexed = fmt::format("geometry.tessellate[{}]", index++);
@@ -70,7 +72,8 @@ void read_tessellations(ReadContext& ctx, const TableView& g, GeometryDefinition
           geometry.domain.size() >= 3 && !polygons_overlap(tess.region, geometry.domain))
         ctx.error(t.line_of_key("region"), t.key_path("region"), "the region lies wholly outside geometry.domain");
     }
-    read_cracks(ctx, t, tess);
+    read_segments(ctx, t, tess, "cracks", tess.cracks, tess.cracks_line);
+    read_segments(ctx, t, tess, "paths", tess.paths, tess.paths_line);
     // A size larger than the region would make one sub-block of it, or none.
     const Polygon& region = tess.region.empty() ? geometry.domain : tess.region;
     if (tess.size > 0.0 && region.size() >= 3 && tess.size > geometry::width_across_edges(region))
@@ -105,10 +108,12 @@ void check_tessellations(ReadContext& ctx, const Scenario& s) {
       continue;
     }
     const JointDefinition& j = s.joint_type(type);
-    if (j.fracture_energy && *j.fracture_energy > 0.0)
+    // A softening bond's critical opening w_c = 2 G_f / T: no strength, no softening law.
+    if (j.fracture_energy && *j.fracture_energy > 0.0 && !(j.tensile_strength > 0.0))
       ctx.error(j.fracture_energy_line, (j.name.empty() ? "joint" : "joint." + j.name) + ".fracture_energy",
-                "softening bonds are not yet implemented: the bonds of geometry.tessellate (line " +
-                    std::to_string(t.line) + ") break at their strength; leave fracture_energy out");
+                "a softening bond (geometry.tessellate, line " + std::to_string(t.line) +
+                    ") softens from its tensile_strength over its fracture energy: give the type a tensile_strength "
+                    "> 0, or leave fracture_energy out");
   }
 }
 

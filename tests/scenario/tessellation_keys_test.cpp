@@ -106,8 +106,8 @@ joint = "weak"
   EXPECT_TRUE(has_error(errors, "case.toml:19: joint.weak.fracture_energy: must be >= 0")) << dump(errors);
 }
 
-TEST(TessellationKeys, WhatIsNotYetBuiltIsRefusedByName) {
-  // A softening bond.
+TEST(TessellationKeys, ASofteningBondNeedsATensileStrength) {
+  // w_c = 2 G_f / T: a fracture energy on bonds of no tensile strength has no softening law.
   auto errors = errors_of(kHead + R"(
 [joint.soft]
 fracture_energy = 50.0
@@ -115,8 +115,19 @@ fracture_energy = 50.0
 size = 0.5
 joint = "soft"
 )");
-  EXPECT_TRUE(has_error(errors, "case.toml:17: joint.soft.fracture_energy: softening bonds are not yet implemented"))
+  EXPECT_TRUE(has_error(errors, "case.toml:17: joint.soft.fracture_energy: a softening bond (geometry.tessellate, line 18) "
+                                "softens from its tensile_strength"))
       << dump(errors);
+  // With one, it is a softening bond (docs/dda.md, "Bonds").
+  errors = errors_of(kHead + R"(
+[joint.soft]
+tensile_strength = 1.0e6
+fracture_energy = 50.0
+[[geometry.tessellate]]
+size = 0.5
+joint = "soft"
+)");
+  EXPECT_TRUE(errors.empty()) << dump(errors);
 }
 
 TEST(TessellationKeys, ACoupledRunWithBondedSubBlocksIsAccepted) {
