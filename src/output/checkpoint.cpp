@@ -24,7 +24,8 @@ constexpr std::string_view kMagic = "hydrodda checkpoint\n";
 // of the last pass; 14: history rows end in each pass's changes (contacts, joint crossings,
 // fluid load, open–close iterations, step cuts); 15: whether the tension cutoff released each
 // open contact; 16: the bonds broken so far (a resumed run had its sub-blocks bonded whole
-// again); 17: the bonds softening, with their faces' peak openings. Only the current format is read: a run stopped by an older hydrodda is run again.
+// again); 17: the bonds softening, with their faces' peak openings. Only the current format is
+// read: a run stopped by an older hydrodda is run again.
 constexpr std::int64_t kVersion = 17;
 // The last 8 bytes: the CRC-32 of every byte before them (zlib's, as a 64-bit word). A CRC
 // detects every error burst of up to 32 bits, so a flipped bit is refused, not resumed from;
@@ -614,8 +615,9 @@ namespace hydrodda::output {
 namespace {
 
 constexpr std::string_view kCoupledTransientMagic = "hydrodda coupled transient checkpoint\n";
-// 2: the DDA state's bonds broken so far (as the coupled checkpoint's format 16).
-constexpr std::int64_t kCoupledTransientVersion = 2;
+// 2: the DDA state's bonds broken so far (as the coupled checkpoint's format 16); 3: the bonds
+// softening (as its format 17).
+constexpr std::int64_t kCoupledTransientVersion = 3;
 
 // The fields after the header and before the engines' states, in one order for both ways.
 template <class Io, class Checkpoint>
