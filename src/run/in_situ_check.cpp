@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 
 #include "run/layered_stress.hpp"
 #include "scenario/scenario_queries.hpp"
@@ -59,6 +61,38 @@ std::optional<double> find_seepage_allowance(const scenario::Scenario& s) {
   return biot * s.flow->fluid_density * std::abs(s.mechanics->gravity.y) * *range;
 }
 
+// The heads the pore pressure at the top point p may stand at, m, as the least and the largest:
+// the head of a boundary through p that fixes one (at time 0, as the model starts), else the
+// bounds of the boundaries' heads (a steady head lies within them); empty where none fixes one.
+std::optional<std::pair<double, double>> find_top_heads(const scenario::Scenario& s, Point p, double tolerance) {
+  double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
+  for (const scenario::FlowBoundaryCondition& bc : s.flow->boundaries) {
+    if (bc.kind != hydro::BoundaryKind::head) continue;
+    const scenario::BoundarySegment* b = s.find_boundary(bc.name);
+    if (b && geometry::distance_to_segment(p, b->segment.from, b->segment.to) <= tolerance)
+      return std::pair{bc.value.value(0.0), bc.value.value(0.0)};
+    lowest = std::min(lowest, bc.value.lowest()), highest = std::max(highest, bc.value.highest());
+  }
+  if (!std::isfinite(lowest)) return std::nullopt;
+  return std::pair{lowest, highest};
+}
+
+// The fluid's share of the top's stress at the top point p, Pa, compression negative, as the
+// least and the most compressive it may be: under hydrostatic pore pressure the top's face takes
+// (1 − α) p_top from the fluid beside the traction (docs/coupling.md, "Fluid pressure on the
+// blocks"), which the blocks' σ + α p carries below it (α that of the material at the top),
+// p_top = ρ_w g (h − y_top). Zero under the overpressure convention (still water has none),
+// at α = 1, or where no boundary fixes a head.
+std::pair<double, double> find_top_fluid_share(const scenario::Scenario& s, Point p, double tolerance) {
+  if (!s.flow || s.flow->pressure != hydro::PressureConvention::hydrostatic) return {0.0, 0.0};
+  const int material = scenario::find_material_at(s, {p.x, p.y - tolerance});
+  const double share = material >= 0 ? 1.0 - s.materials[material].biot_coefficient : 0.0;
+  const std::optional<std::pair<double, double>> heads = find_top_heads(s, p, tolerance);
+  if (share == 0.0 || !heads) return {0.0, 0.0};
+  const double unit_weight = s.flow->fluid_density * std::abs(s.mechanics->gravity.y);
+  return {-share * unit_weight * (heads->first - p.y), -share * unit_weight * (heads->second - p.y)};
+}
+
 }  // namespace
 
 std::vector<InSituComparison> compare_in_situ_stress(const scenario::Scenario& s,
@@ -78,8 +112,12 @@ std::vector<InSituComparison> compare_in_situ_stress(const scenario::Scenario& s
     if (column.empty()) continue;
     const std::optional<double> top = find_top_stress(s, {c.x, column.back().top}, tolerance);
     if (!top) continue;
-    const double expected = *top + g_y * weight_above(column, c.y);
+    const Point top_point{c.x, column.back().top};
+    const auto [fluid_least, fluid_most] = find_top_fluid_share(s, top_point, tolerance);
+    const double weight = *top + g_y * weight_above(column, c.y);
+    // The expected σyy lies between the fluid's least and most; compared with the nearer.
     const double initial = field.at(c.y)[1];
+    const double expected = std::clamp(initial, weight + std::min(fluid_least, fluid_most), weight + std::max(fluid_least, fluid_most));
     const double difference = std::max(0.0, std::abs(initial - expected) - *seepage);
     if (difference > kInSituTolerance * std::abs(expected) && difference > 1.0)
       out.push_back({static_cast<int>(b), c, initial, expected});

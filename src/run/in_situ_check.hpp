@@ -9,7 +9,10 @@
 // 0 where the top is free). A block whose top is held by a roller or a prescribed
 // displacement is not compared: what holds it there is not known before the run. In a coupled
 // run the seepage the boundary heads drive may move it by up to α ρ_w g Δh (Δh the heads'
-// range), which is allowed for; where the heads are not bounded nothing is compared.
+// range), which is allowed for; where the heads are not bounded nothing is compared. Under
+// hydrostatic pore pressure the top's face also takes (1 − α) p_top from the fluid beside the
+// traction (docs/coupling.md), which the blocks carry below it: p_top from the head of a boundary
+// through the top, else anywhere within the boundary heads' bounds.
 
 #include <optional>
 #include <string>

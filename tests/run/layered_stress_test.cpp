@@ -113,4 +113,30 @@ TEST(InSituCheck, AllowsForTheSeepageTheBoundaryHeadsCanDrive) {
   EXPECT_EQ(hydrodda::run::compare_in_situ_stress(s, blocks, field).size(), 1u);
 }
 
+TEST(InSituCheck, CountsTheFluidsShareOnTheTopsFaceWhereTheBiotCoefficientIsBelowOne) {
+  // Mud only at α = 0 (total stress), hydrostatic, the top (y = 10) at a head of 30 m, the base at
+  // 40 m: the top's face takes (1 − α) p_top = ρ_w g (30 − 10) = 1000 × 10 × 20 = 2e5 Pa beside
+  // its (here zero) traction (docs/coupling.md, "Fluid pressure on the blocks"), so a field of
+  // −2e5 Pa at the top, growing by ρ g = 2.5e4 Pa/m, is in equilibrium and passes; the field
+  // without the fluid's share (0 at the top), 2e5 Pa off the 2.25e5 expected at y = 9, is warned
+  // about, and so is the in-equilibrium field once α = 1 (the face then takes none).
+  Scenario s = two_layers();
+  s.materials.pop_back();
+  s.materials[0].biot_coefficient = 0.0;
+  s.mechanics->initial_stress->stress = {0.0, -2e5, 0.0};
+  s.flow.emplace();
+  s.flow->pressure = hydrodda::hydro::PressureConvention::hydrostatic;
+  s.flow->boundaries = {{"bottom", hydrodda::hydro::BoundaryKind::head, 40.0, 0},
+                        {"top", hydrodda::hydro::BoundaryKind::head, 30.0, 0}};
+  const std::vector<hydrodda::dda::BlockDefinition> blocks = {{{{0, 8}, {4, 8}, {4, 10}, {0, 10}}, 0, false}};
+  const auto in_equilibrium = hydrodda::run::build_initial_stress(s);
+  EXPECT_TRUE(hydrodda::run::compare_in_situ_stress(s, blocks, in_equilibrium).empty());
+  s.mechanics->initial_stress->stress = {0.0, 0.0, 0.0};
+  const auto mismatches = hydrodda::run::compare_in_situ_stress(s, blocks, hydrodda::run::build_initial_stress(s));
+  ASSERT_EQ(mismatches.size(), 1u);
+  EXPECT_NEAR(mismatches[0].expected, -2.25e5, 1e-9 * 2.25e5);
+  s.materials[0].biot_coefficient = 1.0;
+  EXPECT_EQ(hydrodda::run::compare_in_situ_stress(s, blocks, in_equilibrium).size(), 1u);
+}
+
 }  // namespace
