@@ -21,6 +21,7 @@
 
 #include "coupling/staggered_loop.hpp"
 #include "fractures/fracture_results.hpp"
+#include "geometry/point.hpp"
 #include "output/summary.hpp"
 #include "python/bindings.hpp"
 #include "python/model_fields.hpp"
@@ -293,6 +294,44 @@ class Simulation {
     return fracture_fields(state);
   }
 
+  // Coupled transient: the bonds broken so far, by time step, as fractures.csv's bond rows (a
+  // dict of arrays, one entry per break, in the order they broke).
+  py::dict broken_bonds() const {
+    const ModelLock::Held held = lock_.hold("broken_bonds");
+    const auto& breaks = expect_const<CoupledTransient>("broken_bonds")->broken_bonds();
+    const auto n = static_cast<py::ssize_t>(breaks.size());
+    py::array_t<int> step(n), fracture(n), bond(n);
+    py::array_t<double> time(n), length(n), x1(n), y1(n), x2(n), y2(n);
+    py::list type, mode;
+    for (py::ssize_t i = 0; i < n; ++i) {
+      const run::SteppedBondBreak& b = breaks[static_cast<std::size_t>(i)];
+      step.mutable_at(i) = b.step;
+      time.mutable_at(i) = b.row.time;
+      fracture.mutable_at(i) = b.row.fracture;
+      bond.mutable_at(i) = b.row.bond;
+      length.mutable_at(i) = geometry::distance(b.row.from, b.row.to);
+      type.append(b.row.type);
+      mode.append(b.row.mode);
+      x1.mutable_at(i) = b.row.from.x;
+      y1.mutable_at(i) = b.row.from.y;
+      x2.mutable_at(i) = b.row.to.x;
+      y2.mutable_at(i) = b.row.to.y;
+    }
+    py::dict rows;
+    rows["step"] = step;
+    rows["time"] = time;
+    rows["fracture"] = fracture;
+    rows["number"] = bond;
+    rows["length"] = length;
+    rows["type"] = py::array(type);
+    rows["mode"] = py::array(mode);
+    rows["x1"] = x1;
+    rows["y1"] = y1;
+    rows["x2"] = x2;
+    rows["y2"] = y2;
+    return rows;
+  }
+
   // A loading path: a new value of a flow boundary condition or of a traction, from the next
   // solve, step or pass on (the key paths of Scenario.set).
   void set(const std::string& key, const py::handle& value) {
@@ -496,6 +535,9 @@ void bind_simulation(py::module_& module) {
       .def_property_readonly("contacts", &Simulation::contacts)
       .def_property_readonly("fractures", &Simulation::fractures,
                              "Per fracture, as fractures.csv's columns (a dict of arrays); None without a [geometry] domain")
+      .def_property_readonly("broken_bonds", &Simulation::broken_bonds,
+                             "Coupled transient: the bonds broken so far, by time step, as fractures.csv's bond rows "
+                             "(a dict of arrays)")
       .def("set", &Simulation::set, py::arg("key"), py::arg("value"),
            "Changes a flow boundary's head, pressure or flux, or a traction, from the next step or pass on.")
       .def_property_readonly("scenario", &Simulation::scenario, "The scenario as built, with the changes set() made")

@@ -14,6 +14,12 @@ const char* mode_name(dda::BondFailure mode) { return mode == dda::BondFailure::
 
 }  // namespace
 
+BrokenBondRow broken_bond_row(const scenario::Scenario& s, const dda::System& system, const dda::BondBreak& b,
+                              int trace_count, double time) {
+  const std::string& name = s.joint_type(system.bond_joint_type(b.bond)).name;
+  return {trace_count + b.bond, b.bond, time, mode_name(b.mode), name.empty() ? "joint" : name, b.from, b.to};
+}
+
 BondOutput::BondOutput(const output::RunFolder& folder, const scenario::Scenario& s, const dda::System& system,
                        int trace_count, BondClock clock)
     : folder_(folder), clock_(clock), trace_count_(trace_count) {

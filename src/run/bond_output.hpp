@@ -22,6 +22,11 @@ namespace hydrodda::run {
 // step of a coupled transient run (its row at the step, at the step's end time in s).
 enum class BondClock { time, pass, time_step };
 
+// fractures.csv's row of a bond's break recorded at `time`: its fracture id the bond's after the
+// `trace_count` traces', its type the name of its joint type ("joint" for [joint]).
+BrokenBondRow broken_bond_row(const scenario::Scenario& scenario, const dda::System& system,
+                              const dda::BondBreak& bond_break, int trace_count, double time);
+
 class BondOutput {
  public:
   // `trace_count`: the fractures the traces number, after which the broken bonds are numbered.

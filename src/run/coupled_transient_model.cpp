@@ -19,6 +19,8 @@ CoupledTransientModel::CoupledTransientModel(const scenario::Scenario& scenario)
   model_->start_in_time();
   stepper_ = std::make_unique<CoupledTransientStepper>(*model_);
   sites_ = locate_probes(model_->scenario(), model_->mesh());
+  if (model_->mechanics().bond_count() > 0)
+    trace_count_ = static_cast<int>(fracture_type_names(model_->scenario()).size());
 }
 
 CoupledTransientStepper::Outcome CoupledTransientModel::step(const std::function<bool()>& stop_requested) {
@@ -27,7 +29,18 @@ CoupledTransientStepper::Outcome CoupledTransientModel::step(const std::function
     CoupledModel& model;
     ~Unset() { model.set_stop_request({}); }
   } unset{*model_};
-  return stepper_->step(stop_requested);
+  const CoupledTransientStepper::Outcome outcome = stepper_->step(stop_requested);
+  if (outcome == CoupledTransientStepper::Outcome::stepped) record_breaks();
+  return outcome;
+}
+
+// The breaks the system lists beyond those recorded: the step just taken's (a step cut and
+// tried again starts again from the last step's state, its breaks with it).
+void CoupledTransientModel::record_breaks() {
+  const dda::System& system = model_->mechanics();
+  const std::vector<dda::BondBreak>& breaks = system.bond_breaks();
+  for (std::size_t k = broken_bonds_.size(); k < breaks.size(); ++k)
+    broken_bonds_.push_back({steps(), broken_bond_row(model_->scenario(), system, breaks[k], trace_count_, time())});
 }
 
 std::vector<ProbeReading> CoupledTransientModel::read_probes() const {

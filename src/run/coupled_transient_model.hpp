@@ -8,12 +8,20 @@
 #include <vector>
 
 #include "output/summary.hpp"
+#include "run/bond_output.hpp"
 #include "run/coupled_model.hpp"
 #include "run/coupled_transient_stepper.hpp"
 #include "run/transient_flow.hpp"
 #include "run/transient_model.hpp"
 
 namespace hydrodda::run {
+
+// A bond's break as the run records it: at the time step whose iterations broke it, its row of
+// fractures.csv at that step (`row.time` the step's end).
+struct SteppedBondBreak {
+  int step = 0;
+  BrokenBondRow row;
+};
 
 class CoupledTransientModel {
  public:
@@ -33,6 +41,10 @@ class CoupledTransientModel {
   const CoupledTransientStepper& stepper() const { return *stepper_; }
   const CoupledModel& model() const { return *model_; }
 
+  // The bonds broken so far, by time step (fractures.csv's bond rows: a step cut and tried again
+  // keeps only the breaks of the try that converged); empty without bonds.
+  const std::vector<SteppedBondBreak>& broken_bonds() const { return broken_bonds_; }
+
   // probes.csv's rows at time(): each [[flow.probe]]'s head and pressure.
   std::vector<ProbeReading> read_probes() const;
   // summary.json's content for the state now (no timings, no fractures): time, the steps as
@@ -41,9 +53,13 @@ class CoupledTransientModel {
   output::RunSummary summary() const;
 
  private:
+  void record_breaks();
+
   std::unique_ptr<CoupledModel> model_;
   std::unique_ptr<CoupledTransientStepper> stepper_;
   std::vector<ProbeSite> sites_;
+  int trace_count_ = 0;  // the fractures the traces number: the broken bonds' ids follow theirs
+  std::vector<SteppedBondBreak> broken_bonds_;
 };
 
 }  // namespace hydrodda::run

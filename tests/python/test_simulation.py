@@ -1,5 +1,6 @@
 """Models stepped from Python, their fields as NumPy arrays without files."""
 
+import csv
 import json
 
 import numpy as np
@@ -386,6 +387,44 @@ def test_a_coupled_transient_simulation_refuses_times_no_step_surely_ends_on_pas
         sim.set("flow.boundary[0].head", 12.0)
     with pytest.raises(Exception, match="not for a coupled_transient simulation"):
         sim.run_pass()
+
+
+def test_a_coupled_transient_simulation_records_the_bonds_each_step_broke_as_the_run_does(in_tmp):
+    """The crack of broken bonds under a rising pressure (tests/cli/scenarios/bonded_crack_transient.toml:
+    4, 1, 1 and 16 bonds break in its four 1 s steps), stepped by hand: sim.broken_bonds holds,
+    after each step, the program's fractures.csv bond rows up to that step, cell for cell (the
+    same steps on the same blocks: an exact identity), and their count by step is history.csv's
+    broken_bonds."""
+    scenario = hydrodda.Scenario.load(SOURCE_DIR / "tests/cli/scenarios/bonded_crack_transient.toml")
+    scenario.set("output.figures", [])
+    (in_tmp / "crack.toml").write_text(scenario.to_toml())
+    code, _, err = run_program("run", "crack.toml", "-o", "prog", "--threads", "1", cwd=in_tmp)
+    assert code == 0, err
+    with open(in_tmp / "prog" / "fractures.csv") as f:
+        bond_rows = [r for r in csv.DictReader(f) if r["origin"] == "bond"]
+    with open(in_tmp / "prog" / "history.csv") as f:
+        broken_per_step = [int(r["broken_bonds"]) for r in csv.DictReader(f)][1:]  # the row of t = 0 first
+    assert broken_per_step == [4, 1, 1, 16]
+
+    sim = hydrodda.Simulation(scenario, threads=1)
+    assert len(sim.broken_bonds["step"]) == 0
+    taken = 0
+    while not sim.finished:
+        assert sim.step() == 1
+        taken += 1
+        record = sim.broken_bonds
+        expected = [r for r in bond_rows if int(r["step"]) <= taken]
+        assert len(record["step"]) == len(expected) == sum(broken_per_step[:taken])
+        for i, row in enumerate(expected):
+            assert "%d" % record["step"][i] == row["step"]
+            for key in ("time", "length", "x1", "y1", "x2", "y2"):
+                assert "%.17g" % record[key][i] == row[key], key
+            for key in ("fracture", "number"):
+                assert "%d" % record[key][i] == row[key], key
+            assert (record["type"][i], record["mode"][i]) == (row["type"], row["mode"])
+    assert (taken, sim.time) == (4, 4.0)
+    with pytest.raises(Exception, match="broken_bonds is not for a mechanics simulation"):
+        hydrodda.Simulation(hydrodda.Scenario.load(VERIFICATION / "free_fall.toml"), threads=1).broken_bonds
 
 
 def test_a_static_model_cut_short_of_rest_says_it_did_not_converge_as_its_run_does(in_tmp):
