@@ -153,13 +153,24 @@ void check_transient(ReadContext& ctx, const TableView&, const Scenario& s) {
       return m.storage > 0.0 || ctx.has_error("material." + m.name + ".storage") ||
              (s.mechanics && m.biot_coefficient > 0.0);
     });
-    // Or the water of the open gaps between blocks, by its compressibility.
-    const bool gaps_store = s.flow->fluid_compressibility > 0.0 && s.geometry && s.geometry->initial_aperture > 0.0;
-    if (!any_storage && !gaps_store)
+    // Or the water of the open gaps between blocks, by its compressibility; in a coupled run
+    // also that of the joints' hydraulic apertures (docs/coupling.md, "Coupled transient runs").
+    const bool compressible = s.flow->fluid_compressibility > 0.0;
+    const bool gaps_store = compressible && s.geometry && s.geometry->initial_aperture > 0.0;
+    const bool has_joints = s.geometry && (!s.geometry->fractures.empty() || !s.geometry->joint_sets.empty() ||
+                                           !s.geometry->file_fractures.empty() || !s.geometry->tessellations.empty() ||
+                                           s.geometry->blocks.size() > 1);
+    const bool joints_store = compressible && s.mechanics && s.any_joint_hydraulic() && has_joints;
+    if (!any_storage && !gaps_store && !joints_store)
       ctx.error(t.line, "flow.transient",
-                "no material has a storage (every [material.NAME] storage is 0 or absent) and no open gap holds water "
-                "(geometry.initial_aperture is 0), so nothing stores water and the heads jump to the steady ones at "
-                "once: give storage (1/Pa) to the materials, or remove [flow.transient] for a steady run");
+                fmt::format("no material has a storage (every [material.NAME] storage is 0 or absent{}) and no {} "
+                            "holds water ({}), so nothing stores water and the heads jump to the steady ones at once: "
+                            "give storage (1/Pa) to the materials, or remove [flow.transient] for a steady run",
+                            s.mechanics ? ", every biot_coefficient 0" : "",
+                            s.mechanics ? "open gap or joint" : "open gap",
+                            !compressible ? "the fluid is incompressible: flow.fluid.compressibility = 0"
+                            : s.mechanics ? "geometry.initial_aperture is 0 and no joint type has a hydraulic aperture"
+                                          : "geometry.initial_aperture is 0"));
   }
   for (const ProbeDefinition& probe : s.flow->probes) {
     if (s.mechanics && !s.flow->transient)

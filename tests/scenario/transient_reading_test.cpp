@@ -179,6 +179,26 @@ TEST(TransientReading, AcceptsTransientFlowAndProbesInACoupledRun) {
   EXPECT_TRUE(errors_of(no_storage).empty());
 }
 
+// Coupled, with neither storage nor Biot's α: the water of the joints' hydraulic apertures
+// stores by its compressibility (docs/coupling.md, "Coupled transient runs": Σ_c (L_c/A_e) a_c c_w),
+// so joints with a hydraulic aperture make it a run; without them, or with an incompressible
+// fluid, nothing stores and it is refused at [flow.transient]'s line.
+TEST(TransientReading, ACoupledRunWithoutStorageOrBiotStoresInItsJointsOrIsRefused) {
+  std::string rigid = kCoupledTransient;
+  rigid.replace(rigid.find("storage = 1.0e-9\n"), 17, "biot_coefficient = 0.0\n");
+  expect_one_error(rigid, 15, "flow.transient", "no open gap or joint holds water");
+  const std::string jointed = std::string(R"([geometry]
+fractures = [[[5.0, 0.0], [5.0, 1.0]]]
+)") + rigid.substr(std::string("[geometry]\n").size());
+  expect_one_error(jointed, 16, "flow.transient", "no joint type has a hydraulic aperture");
+  const std::string hydraulic = jointed + "[joint]\nresidual_aperture = 1.0e-5\n";
+  EXPECT_TRUE(errors_of(hydraulic).empty());
+  expect_one_error(hydraulic + "[flow.fluid]\ncompressibility = 0.0\n", 16, "flow.transient",
+                   "the fluid is incompressible");
+  // Joint keys with no joint to carry them store nothing.
+  expect_one_error(rigid + "[joint]\nresidual_aperture = 1.0e-5\n", 15, "flow.transient", "no open gap or joint");
+}
+
 TEST(TransientReading, RefusesProbesInASteadyCoupledRunAndAccelerationOrPseudoTimeInATransientOne) {
   std::string steady = kCoupledTransient;
   steady.replace(steady.find("[flow.transient]\nend_time = 10.0\n"), 33, "");
