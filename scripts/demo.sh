@@ -10,7 +10,8 @@ echo "Results of $scenario are in $out/:"
 describe() {
   case "$1" in
     summary.json) echo "converged or not, block displacements and stresses, boundary flows" ;;
-    history.csv) echo "the coupling loop's convergence norms and flows, one row per iteration" ;;
+    history.csv) echo "the coupling loop's convergence norms and flows, one row per iteration (a transient run: per time step)" ;;
+    probes.csv) echo "each [[flow.probe]]'s head and pressure, one row per time step" ;;
     measure.csv) echo "measured points, one row per coupling iteration (or DDA step)" ;;
     fractures.csv) echo "each fracture's aperture, open length and flow, one row per iteration" ;;
     checkpoint.bin) echo "the state a stopped run resumes from (run --resume)" ;;
