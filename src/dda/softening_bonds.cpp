@@ -23,6 +23,7 @@
 // stiffness T / w_peak, which applied as a lagged load would not converge at a small w_peak).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "dda/block_kernels.hpp"
 #include "dda/system.hpp"
@@ -31,6 +32,10 @@ namespace hydrodda::dda {
 
 namespace {
 constexpr double kSettledShare = 1e-3;  // of T: a pass's tractions within it of those it used
+// Passes of a try whose cohesive loads have not settled since the map last changed, after
+// which the zone is taken to have no equilibrium (below the peak the mixing settles in far
+// fewer: docs/studies/2026-11-29-softening-bonds.md).
+constexpr int kRunningPasses = 20;
 }  // namespace
 
 std::array<double, 2> System::opening_after(int bond, const Eigen::VectorXd& d) const {
@@ -66,12 +71,23 @@ std::array<double, 2> System::bond_cohesive_traction(int bond, std::array<double
   return traction;
 }
 
+void System::restart_cohesive_mixing() {
+  cohesion_next_.resize(0);
+  cohesion_mixing_.reset();
+  cohesion_passes_ = 0;
+}
+
 void System::add_cohesive_loads(const Eigen::VectorXd& d, Eigen::VectorXd& f) {
+  // The step's first pass, or a set of softening bonds that changed: the map is new.
+  if (d.size() == 0 || cohesion_next_.size() != static_cast<Eigen::Index>(2 * softening_.size()))
+    restart_cohesive_mixing();
+  const bool mixed = cohesion_next_.size() > 0;
   cohesion_used_.assign(softening_.size(), {0.0, 0.0});
   for (std::size_t i = 0; i < softening_.size(); ++i) {
     const int bond = softening_[i].bond;
     if (bond_broken_[static_cast<std::size_t>(bond)] != 2) continue;  // broke in this try
-    const std::array<double, 2> sigma = bond_cohesive_traction(bond, opening_after(bond, d));
+    const std::array<double, 2> sigma = mixed ? std::array<double, 2>{cohesion_next_[2 * i], cohesion_next_[2 * i + 1]}
+                                              : bond_cohesive_traction(bond, opening_after(bond, d));
     cohesion_used_[i] = sigma;
     // A pull on each face towards the other: tension on both (normal positive outward).
     const std::array<BondSide, 2>& sides = bond_sides_[static_cast<std::size_t>(bond)];
@@ -88,9 +104,45 @@ void System::add_cohesive_loads(const Eigen::VectorXd& d, Eigen::VectorXd& f) {
   }
 }
 
+// No equilibrium of the cohesive zone at this load (past the peak of a load held): the crack
+// runs. Its most open softening face, at the zone's trailing end next to the open crack, is
+// let go (broken), and the zone ahead is sought again; repeated, the crack runs until the
+// zone finds an equilibrium (it arrests) or the path is cut through.
+bool System::release_most_open_bond(const Eigen::VectorXd& d) {
+  int chosen = -1;
+  double widest = -std::numeric_limits<double>::infinity();
+  for (const SofteningBond& s : softening_) {
+    if (bond_broken_[static_cast<std::size_t>(s.bond)] != 2) continue;
+    const JointStrength& j = joints_[static_cast<std::size_t>(bond_joint_type(s.bond))];
+    const std::array<double, 2> w = opening_after(s.bond, d);
+    const double share = std::max(w[0], w[1]) / (2.0 * j.fracture_energy / j.tensile_strength);
+    if (share > widest) {
+      widest = share;
+      chosen = s.bond;
+    }
+  }
+  if (chosen < 0) return false;
+  bond_broken_[static_cast<std::size_t>(chosen)] = 1;
+  pending_breaks_.emplace_back(chosen, BondFailure::tension);
+  return true;
+}
+
+// Pseudocode (the cohesive fixed point x = G(x), x the faces' tractions the loads were made
+// with, G(x) = σ(w(x)) those the solution's openings give; Walker & Ni 2011, Anderson
+// acceleration, as the friction loads):
+//   G(x) within 1e-3 T of x at every face → settled
+//   a face open past w_c at both ends → broken; the map is new (plain step next)
+//   else x ← AA(x, G(x)) clipped to [0, T]; after kRunningPasses without settling, the zone
+//     has no equilibrium: the crack runs (release_most_open_bond)
+// The plain iteration x ← G(x) contracts by T L C / w_c a pass (C the compliance at the
+// face), which tends to 1 as the zone grows to the peak; the mixing's secant model of G
+// settles it in a few passes there (docs/studies/2026-11-29-softening-bonds.md).
 System::CohesionChange System::settle_cohesive_loads(const Eigen::VectorXd& d) {
   CohesionChange change = CohesionChange::none;
   const std::size_t used = std::min(softening_.size(), cohesion_used_.size());
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(2 * softening_.size()));
+  Eigen::VectorXd image = x;
+  Eigen::VectorXd ceiling = x;
   for (std::size_t i = 0; i < used; ++i) {
     const int bond = softening_[i].bond;
     if (bond_broken_[static_cast<std::size_t>(bond)] != 2) continue;
@@ -103,9 +155,21 @@ System::CohesionChange System::settle_cohesive_loads(const Eigen::VectorXd& d) {
       change = CohesionChange::broke;
       continue;
     }
+    for (std::size_t k = 0; k < 2; ++k) {
+      x[static_cast<Eigen::Index>(2 * i + k)] = cohesion_used_[i][k];
+      image[static_cast<Eigen::Index>(2 * i + k)] = sigma[k];
+      ceiling[static_cast<Eigen::Index>(2 * i + k)] = j.tensile_strength;
+    }
     const double moved = std::max(std::abs(sigma[0] - cohesion_used_[i][0]), std::abs(sigma[1] - cohesion_used_[i][1]));
     if (moved > kSettledShare * j.tensile_strength && change == CohesionChange::none) change = CohesionChange::moved;
   }
+  if (change == CohesionChange::moved && ++cohesion_passes_ > kRunningPasses && release_most_open_bond(d))
+    change = CohesionChange::broke;
+  if (change == CohesionChange::broke || used != softening_.size()) {
+    restart_cohesive_mixing();
+    return change;
+  }
+  cohesion_next_ = cohesion_mixing_.next(x, image).cwiseMax(0.0).cwiseMin(ceiling);
   return change;
 }
 

@@ -704,8 +704,12 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
   // there are at most 4 × max_open_close_iterations + (the bonds intact at the try's start).
   int passes_breaking_bonds = 0;
   const int pass_cap = 4 * settings_.max_open_close_iterations;
+  // Passes whose softening bonds' cohesive loads moved lengthen it too: they are bounded by
+  // the crack's running, which breaks a bond after a few of them (softening_bonds.cpp).
+  int passes_settling_cohesion = 0;
   Eigen::VectorXd f_pass;  // f_base and the softening bonds' cohesive loads
-  for (int oc = 0; oc < pass_cap + passes_breaking_bonds && passes_without_progress < settings_.max_open_close_iterations;
+  for (int oc = 0; oc < pass_cap + passes_breaking_bonds + passes_settling_cohesion &&
+                   passes_without_progress < settings_.max_open_close_iterations;
        ++oc) {
     if (interrupt_check_ && interrupt_check_()) return Unsettled::interrupted;
     report.open_close_iterations = oc + 1;
@@ -855,6 +859,7 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
     // next faces (across the Brazilian disc at D/40: 50 bonds in 13 passes, contacts changing
     // back in every one). Counted, they cut the step until it broke nothing, and the run crept
     // in ever-shorter steps towards the load at which the crack starts, never passing it.
+    if (cohesion == CohesionChange::moved) ++passes_settling_cohesion;
     if (bonds_broke)
       ++passes_breaking_bonds;
     else if (std::any_of(changed.begin(), changed.end(), [](char c) { return (c & 2) != 0; }))

@@ -20,6 +20,7 @@
 #include "dda/initial_stress.hpp"
 #include "dda/definitions.hpp"
 #include "dda/linear_solver.hpp"
+#include "numerics/anderson.hpp"
 
 namespace hydrodda::dda {
 
@@ -422,6 +423,13 @@ class System {
   std::vector<SofteningBond> softening_;
   std::vector<int> pending_softening_;
   std::vector<std::array<double, 2>> cohesion_used_;  // by softening_'s index
+  // The tractions the next pass's loads take (Anderson-mixed; empty: read from the opening),
+  // their mixing, and the passes since the fixed point's map last changed.
+  Eigen::VectorXd cohesion_next_;
+  numerics::AndersonAccelerator cohesion_mixing_;
+  int cohesion_passes_ = 0;
+  void restart_cohesive_mixing();
+  bool release_most_open_bond(const Eigen::VectorXd& d);
   std::array<double, 2> opening_after(int bond, const Eigen::VectorXd& d) const;
   void add_cohesive_loads(const Eigen::VectorXd& d, Eigen::VectorXd& f);
   enum class CohesionChange { none, moved, broke };
