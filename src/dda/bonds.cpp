@@ -134,6 +134,45 @@ std::array<Point, 2> System::bond_face(int bond) const {
   return {p[static_cast<std::size_t>(side.edge)], p[(static_cast<std::size_t>(side.edge) + 1) % p.size()]};
 }
 
+// A corner inside intact rock: both faces at vertex v of `block` are intact bonds.
+bool System::is_corner_within_intact_rock(int block, int vertex) const {
+  const std::vector<int>& bonds = edge_bonds_[static_cast<std::size_t>(block)];
+  if (bonds.empty()) return false;
+  const std::size_t n = bonds.size();
+  const std::size_t v = static_cast<std::size_t>(vertex);
+  for (const int bond : {bonds[v], bonds[(v + n - 1) % n]})
+    if (bond < 0 || bond_broken_[static_cast<std::size_t>(bond)] != 0) return false;
+  return true;
+}
+
+// Where several sub-blocks of intact rock meet at a node, each one's corner there lies on the
+// ends of the faces of the others. Its own two faces are bonded to its neighbours, whose
+// corners stand between it and the rest: a third sub-block's corner can reach it only through
+// them. The constant-strain sub-blocks' corners at a node part by their faces' penalty
+// compliance (1e-7 m), so a corner sits just inside or just past another's, tip to tip: the
+// edge it is taken against flips with that (the entrance edge, or none past the corner), and
+// each flip moves the sub-block by as much, from step to step without end (the seal through
+// intact rock, 1 m triangles at 1,100 m over hydrostatic: a 2e-7 m two-step cycle, at rest never).
+// So where two corners at a node are both inside intact rock (each one's two faces intact
+// bonds), the one has no contact with the other's faces' ends; a broken face at either gives
+// the contact back (a crack through the node, its corners joints' again).
+void System::drop_corner_contacts_within_intact_rock(ContactCandidates& candidates) const {
+  if (bond_sides_.empty()) return;
+  const double tie = 1e-3 * contact_distance_;  // contact_detection.cpp's corner tie
+  const auto tip_to_tip_within_intact_rock = [&](const ContactCandidate& c) {
+    if (bond_of(c.key) < 0 || bond_across(c.key) >= 0) return false;  // no bond, or the face's own
+    const Polygon& edge_block = blocks_[static_cast<std::size_t>(c.key.block_j)].polygon;
+    const Point p = blocks_[static_cast<std::size_t>(c.key.block_i)].polygon[static_cast<std::size_t>(c.key.vertex)];
+    const auto start = static_cast<std::size_t>(c.key.edge);
+    const std::size_t end = (start + 1) % edge_block.size();
+    const bool at_start = geometry::distance(p, edge_block[start]) <= tie;
+    if (!at_start && geometry::distance(p, edge_block[end]) > tie) return false;
+    return is_corner_within_intact_rock(c.key.block_i, c.key.vertex) &&
+           is_corner_within_intact_rock(c.key.block_j, static_cast<int>(at_start ? start : end));
+  };
+  candidates.erase(std::remove_if(candidates.begin(), candidates.end(), tip_to_tip_within_intact_rock), candidates.end());
+}
+
 int System::bond_joint_type(int bond) const {
   const BondSide& side = bond_sides_.at(static_cast<std::size_t>(bond))[0];
   const std::vector<int>& types = edge_joints_[static_cast<std::size_t>(side.block)];

@@ -216,6 +216,7 @@ void System::detect_contacts() {
   for (const Block& b : blocks_) buffers.polygons.emplace_back(b.polygon);
   ContactCandidates& candidates = buffers.candidates;
   contact_search_.find(buffers.polygons, buffers.fixed, candidates);
+  drop_corner_contacts_within_intact_rock(candidates);
   resize_for_overwrite(active_, candidates.size());
   // The linearisation in chunks of contacts, over the threads: each contact writes only its own.
   numerics::for_each_chunk(many_contacts_to_linearise(), candidates.size(), kContactChunk,

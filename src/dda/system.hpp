@@ -294,6 +294,10 @@ class System {
   bool many_closed_contacts() const { return closed_.size() >= 5000; }  // loops over closed_
   void check_tractions(std::span<const EdgeTraction> tractions) const;
   void detect_contacts();
+  // bonds.cpp: drops a corner's contacts with the ends of other sub-blocks' faces where both
+  // are inside intact rock (tip to tip at a node of the tessellation).
+  bool is_corner_within_intact_rock(int block, int vertex) const;
+  void drop_corner_contacts_within_intact_rock(ContactCandidates& candidates) const;
   // A contact that touches at the start takes the initial stress's force across its faces: its
   // multiplier the normal force, its shear reference moved so that its spring holds the shear.
   void preload_contact(ActiveContact& c) const;

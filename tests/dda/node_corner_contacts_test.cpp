@@ -1,0 +1,87 @@
+// Corners at a node of intact rock (System::drop_corner_contacts_within_intact_rock): where six
+// bonded triangles meet at a point, each one's corner there lies on the ends of the others'
+// faces. A corner whose two faces are intact bonds reaches a third sub-block only through its
+// bonded neighbours, so where both corners are inside intact rock neither touches the other's
+// faces' ends; once a face at either corner is broken, their contact comes back.
+// Exact: the contacts are counted, no tolerance.
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "dda/system.hpp"
+
+namespace hydrodda::dda {
+namespace {
+
+constexpr int kTriangles = 6;
+
+// Six triangles around a centre off the ring's middle (unequal angles at it, as a
+// tessellation's): triangle i = (centre, ring i, ring i+1), edges 0 and 2 its spokes i and
+// i+1 (bond i and i+1 mod 6), edge 1 the ring; every spoke bonded, the ring free.
+ModelDefinition make_node(const std::vector<int>& broken) {
+  const Point centre{0.07, -0.04};
+  std::array<Point, kTriangles> ring;
+  for (int i = 0; i < kTriangles; ++i) {
+    const double angle = 2.0 * M_PI * i / kTriangles + 0.15 * std::sin(3.0 * i);
+    ring[static_cast<std::size_t>(i)] = {std::cos(angle), std::sin(angle)};
+  }
+  ModelDefinition m;
+  m.materials = {Material{2500.0, 1.0e10, 0.25}};
+  for (int i = 0; i < kTriangles; ++i) {
+    BlockDefinition b{{centre, ring[static_cast<std::size_t>(i)], ring[static_cast<std::size_t>((i + 1) % kTriangles)]}, 0, false};
+    b.edge_joints = {1, 0, 1};
+    b.edge_bonds = {i, -1, (i + 1) % kTriangles};
+    m.blocks.push_back(b);
+  }
+  m.joint = {30.0, 0.0, 0.0};
+  m.joint_types = {Joint{25.0, 6.0e6, 2.0e6}};
+  m.settings.analysis = Analysis::static_;
+  m.settings.gravity = {0.0, 0.0};
+  m.settings.time_step = 1e-3;
+  m.broken_bonds = broken;
+  return m;
+}
+
+// Contacts of a triangle's centre corner (vertex 0) with a triangle that is not its neighbour
+// across a spoke (tip to tip at the node).
+int count_tip_to_tip(const System& system) {
+  int count = 0;
+  for (const ContactInfo& c : system.contacts()) {
+    const int apart = (c.key.block_j - c.key.block_i + kTriangles) % kTriangles;
+    if (c.key.vertex == 0 && apart != 1 && apart != kTriangles - 1) ++count;
+  }
+  return count;
+}
+
+TEST(NodeCornerContacts, ACornerOfIntactRockHasNoContactWithTheThirdSubBlocksAtItsNode) {
+  System system(make_node({}));
+  system.step();
+  EXPECT_EQ(count_tip_to_tip(system), 0);
+  // The spokes' own end contacts are there: two a spoke (one at each end), six spokes.
+  int face_contacts = 0;
+  for (const ContactInfo& c : system.contacts()) face_contacts += system.bond_of_contact(c.key) >= 0 ? 1 : 0;
+  EXPECT_GE(face_contacts, 2 * kTriangles);
+}
+
+TEST(NodeCornerContacts, ABrokenFaceAtTheCornerGivesItsTipToTipContactsBack) {
+  // Spoke 0 broken: triangles 0 and 5 have a broken face at the centre, so their corners
+  // there touch the other triangles' corners again; those of triangles 1-4, all faces intact,
+  // still touch none of each other's.
+  System system(make_node({0}));
+  system.step();
+  int with_a_broken_corner = 0, between_intact_corners = 0;
+  const auto broken_corner = [](int block) { return block == 0 || block == kTriangles - 1; };
+  for (const ContactInfo& c : system.contacts()) {
+    const int apart = (c.key.block_j - c.key.block_i + kTriangles) % kTriangles;
+    if (c.key.vertex != 0 || apart == 1 || apart == kTriangles - 1) continue;
+    ((broken_corner(c.key.block_i) || broken_corner(c.key.block_j)) ? with_a_broken_corner : between_intact_corners) += 1;
+  }
+  EXPECT_GT(with_a_broken_corner, 0);
+  EXPECT_EQ(between_intact_corners, 0);
+}
+
+}  // namespace
+}  // namespace hydrodda::dda
