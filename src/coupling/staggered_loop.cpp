@@ -212,6 +212,21 @@ std::vector<Point> StaggeredLoop::block_displacements() const {
   return u;
 }
 
+// The fluid forces of the P1 pressure field `pressure` on the blocks as they are now: the faces'
+// share (1 − α) of the pressure along them, and the seepage force −α ∇p inside (on the pieces
+// of this pass's clip).
+std::vector<std::vector<Point>> StaggeredLoop::fluid_forces(const std::vector<geometry::Polygon>& blocks,
+                                                            std::span<const double> pressure) const {
+  std::vector<std::vector<Point>> forces =
+      face_loads_.compute(blocks, pressure, settings_.biot_coefficients, sealed_edges());
+  if (!seepage_) return forces;
+  const std::vector<std::vector<Point>> seepage = compute_seepage_forces(
+      blocks, pieces_, hydro::compute_pressure_gradients(mesh_, pressure), settings_.biot_coefficients);
+  for (std::size_t b = 0; b < forces.size(); ++b)
+    for (std::size_t v = 0; v < forces[b].size(); ++v) forces[b][v] += seepage[b][v];
+  return forces;
+}
+
 PassReport StaggeredLoop::run_pass() {
   PassReport report;
   report.iteration = ++iteration_;
@@ -268,32 +283,34 @@ PassReport StaggeredLoop::run_pass() {
   // of the pressure along them, and the seepage force −α ∇p inside.
   start = Clock::now();
   // Ramped over the first passes: the blocks meet the full load from a state near equilibrium
-  // under part of it, instead of all at once from the state as built.
-  report.load_factor = std::min(1.0, static_cast<double>(iteration_) / settings_.ramp_passes);
-  std::vector<std::vector<Point>> forces =
-      face_loads_.compute(blocks, solution_.pressure, settings_.biot_coefficients, sealed_edges());
-  if (seepage_) {
-    const std::vector<std::vector<Point>> seepage = compute_seepage_forces(
-        blocks, pieces_, hydro::compute_pressure_gradients(mesh_, solution_.pressure), settings_.biot_coefficients);
-    // Made again by the next pass's clip: not held while the blocks move.
-    pieces_.release();
-    for (std::size_t b = 0; b < forces.size(); ++b)
-      for (std::size_t v = 0; v < forces[b].size(); ++v) forces[b][v] += seepage[b][v];
-  }
-  if (report.load_factor < 1.0)
-    for (std::vector<Point>& block : forces)
-      for (Point& f : block) f = report.load_factor * f;
+  // under part of it, instead of all at once from the state as built (load_ramp.hpp).
+  report.load_factor = ramp_factor(iteration_, settings_.ramp_passes);
+  const bool from_still_water = report.load_factor < 1.0 && settings_.ramped_load == RampedLoad::overpressure;
+  const std::vector<double> still_pressure = from_still_water ? darcy_.still_water_pressure() : std::vector<double>{};
+  std::vector<std::vector<Point>> forces = fluid_forces(blocks, solution_.pressure);
+  if (from_still_water) ramp_fluid_forces(forces, fluid_forces(blocks, still_pressure), report.load_factor);
+  else ramp_fluid_forces(forces, {}, report.load_factor);
+  // Made again by the next pass's clip: not held while the blocks move.
+  if (seepage_) pieces_.release();
   report.fluid_load_change = relative_load_change(forces, last_mechanics_.vertex_forces);
   mechanics_.set_vertex_forces(std::move(forces));
   // A run that starts in its in-situ stress: the faces take their share (1 − α) p of the first
   // pass's pressure, which the contacts and rollers then need not carry, so that they start in
-  // the effective traction (σ + p I) n while the blocks carry σ + α p I.
+  // the effective traction (σ + p I) n while the blocks carry σ + α p I. The pressure is the
+  // ramped load's: r p, or p_s + r (p − p_s).
   if (iteration_ == 1 && std::any_of(settings_.biot_coefficients.begin(), settings_.biot_coefficients.end(),
                                      [](double alpha) { return alpha < 1.0; }))
-    mechanics_.relieve_start_loads([this, factor = report.load_factor](int block, Point from, Point to) {
-      const FacePressureLoads::SegmentIntegrals along = face_loads_.integrate_along(from, to, solution_.pressure);
-      return factor * (1.0 - settings_.biot_coefficients[static_cast<std::size_t>(block)]) *
-             (along.start_inside + along.start_outside);
+    mechanics_.relieve_start_loads([&, factor = report.load_factor](int block, Point from, Point to) {
+      const auto integral = [&](std::span<const double> pressure) {
+        const FacePressureLoads::SegmentIntegrals along = face_loads_.integrate_along(from, to, pressure);
+        return along.start_inside + along.start_outside;
+      };
+      const double face_share = 1.0 - settings_.biot_coefficients[static_cast<std::size_t>(block)];
+      const double full = integral(solution_.pressure);
+      if (!from_still_water) return factor * face_share * full;
+      const double still = integral(still_pressure);
+      // Written so that still water loading nothing (p_s = 0) gives the whole ramp's bits.
+      return face_share * still + factor * face_share * (full - still);
     });
   report.forces_seconds = seconds_since(start);
 

@@ -20,6 +20,7 @@
 #include "coupling/boundary_gaps.hpp"
 #include "coupling/embedded_joints.hpp"
 #include "coupling/fixed_stress_step.hpp"
+#include "coupling/load_ramp.hpp"
 #include "coupling/loop_acceleration.hpp"
 #include "coupling/pass_loop.hpp"
 #include "coupling/pass_report.hpp"
@@ -42,9 +43,11 @@ struct LoopSettings {
   // mixed from the last anderson_depth passes (StaggeredLoop::relax).
   Acceleration acceleration = Acceleration::none;
   int anderson_depth = 5;
-  // The fluid forces of pass k are min(1, k / ramp_passes) of the full ones; no pass before
-  // the first at full load counts as converged.
+  // The fluid forces of pass k are r_k = min(1, k / ramp_passes) of the way to the full ones,
+  // from none (whole) or from still water's (overpressure; load_ramp.hpp); no pass before the
+  // first at full load counts as converged.
   int ramp_passes = 1;
+  RampedLoad ramped_load = RampedLoad::whole;
   int steps_per_pass = 100;       // DDA steps run in each pass
   // Then up to this many more, until the blocks are at rest (dda::System::is_at_rest);
   // 0: none. A pass that ends with them still moving does not count as converged. It stops
@@ -228,6 +231,8 @@ class StaggeredLoop final : public PassRunner {
   void set_joint_zone_matrix_permeability();
   void relax(hydro::FlowSolution& fresh);
   hydro::FlowSolution step_in_pseudo_time(double steady_change);
+  std::vector<std::vector<Point>> fluid_forces(const std::vector<geometry::Polygon>& blocks,
+                                               std::span<const double> pressure) const;
   void step_mechanics(PassReport& report);
   void measure_convergence(PassReport& report, double unrelaxed_head_change);
   void finish_pass(const PassReport& report);

@@ -348,6 +348,18 @@ void DarcySolver::restore_kept_factor(std::shared_ptr<const PermeabilityField> k
   if (kept_ && single_precision && unknown_count() > 0) solver_->keep_for_preconditioning();
 }
 
+std::vector<double> DarcySolver::still_water_pressure() const {
+  const double datum = assembler_.fixed_head_range()[0];
+  const DarcyProblem& problem = assembler_.problem();
+  const mesh::TriangleMesh& mesh = assembler_.mesh();
+  const double rho_g = problem.fluid.unit_weight();
+  std::vector<double> pressure(mesh.nodes.size());
+  for (std::size_t v = 0; v < pressure.size(); ++v)
+    pressure[v] = problem.pressure == PressureConvention::overpressure ? rho_g * (datum - assembler_.reference_head())
+                                                                       : rho_g * (datum - mesh.nodes[v].y);
+  return pressure;
+}
+
 // Preconditioned CG (numerics/conjugate_gradients.hpp), M the kept factor, stopped here when
 // |z|∞ ≤ kHeadTolerance · range(h), z = M⁻¹ r being the error A⁻¹ r as far as M is A; and
 // |Σ r| ≤ kBalanceTolerance / 10 of the boundary flow at the start, Σ r being what the boundary

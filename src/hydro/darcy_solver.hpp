@@ -99,6 +99,12 @@ class DarcySolver {
   int unknown_count() const { return assembler_.unknown_count(); }
   long long stored_nonzeros() const { return assembler_.matrix().nonZeros(); }
   double reference_head() const { return assembler_.reference_head(); }
+  // Still water standing at the lowest head the boundaries fix, h_s (the smallest fixed
+  // head over the nodes: a head boundary's value, or z + p / ρg of a pressure boundary's node):
+  // per node ρg (h_s − z) under the hydrostatic convention, ρg (h_s − h_ref) under the
+  // overpressure one, which is 0 where h_s is h_ref (a head boundary the lowest). The state
+  // the load ramp of the overpressure alone starts from (coupling/load_ramp.hpp).
+  std::vector<double> still_water_pressure() const;
   // Seconds to build the pattern and analyse it.
   double setup_seconds() const { return setup_seconds_; }
   const std::string& solver_name() const { return solver_name_; }
