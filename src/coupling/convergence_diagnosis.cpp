@@ -140,10 +140,10 @@ std::string unsettled_advice(const LoopAsRun& loop) {
 std::string ramp_advice(const LoopAsRun& loop) {
   if (!loop.sudden_load) return "";
   return "; the whole fluid load went on at once in the first pass (coupling.ramp_passes = 1): try "
-         "coupling.ramp_passes = 3, which raises it over three passes so that the blocks meet it from near an "
-         "equilibrium under part of it (friction may then hold them in another state, and a layer its water "
-         "floats may sink under part of the load: docs/coupling.md, \"Relaxation, acceleration and the load "
-         "ramp\")";
+         "coupling.ramp_passes = 3, which raises it over three passes (its excess over still water: coupling.ramp) "
+         "so that the blocks meet it from near an equilibrium under part of it (friction may then hold them in "
+         "another state, and a layer the overpressure holds up may sink under part of it: docs/coupling.md, "
+         "\"Relaxation, acceleration and the load ramp\")";
 }
 
 // Whether the widest opening went up and down over the last passes rather than one way: it

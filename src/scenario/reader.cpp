@@ -639,7 +639,7 @@ void read_coupling(ReadContext& ctx, const TableView& root, Scenario& s) {
     return;
   }
   const TableView c(ctx, *t, "coupling",
-                    {"tolerance", "max_iterations", "relaxation", "acceleration", "ramp_passes", "settle",
+                    {"tolerance", "max_iterations", "relaxation", "acceleration", "ramp_passes", "ramp", "settle",
                      "pseudo_time_step"});
   s.coupling.tolerance = c.number_or("tolerance", s.coupling.tolerance);
   c.require("tolerance", s.coupling.tolerance > 0.0, "must be > 0");
@@ -661,6 +661,9 @@ void read_coupling(ReadContext& ctx, const TableView& root, Scenario& s) {
                           "convergence is pass ramp_passes + 1",
                           s.coupling.max_iterations));
   }
+  // Read (and its default listed) only where a ramp is asked for or the key is given.
+  if (c.has("ramp") || s.coupling.ramp_passes > 1)
+    s.coupling.ramp = c.choice("ramp", coupling::RampedLoad::overpressure);
   if (c.has("pseudo_time_step")) {
     s.coupling.pseudo_time_step = c.number_or("pseudo_time_step", 0.0);
     c.require("pseudo_time_step", s.coupling.pseudo_time_step > 0.0, "must be > 0 (s); leave it out for none");

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "coupling/load_ramp.hpp"
 #include "coupling/loop_acceleration.hpp"
 #include "coupling/permeability_laws.hpp"
 #include "dda/definitions.hpp"
@@ -330,6 +331,8 @@ struct CouplingDefinition {
   double relaxation = 1.0;
   coupling::Acceleration acceleration = coupling::Acceleration::none;
   int ramp_passes = 1;   // the fluid load raised over the first passes
+  // From still water at the lowest fixed head (overpressure) or from no fluid load (whole).
+  coupling::RampedLoad ramp = coupling::RampedLoad::overpressure;
   bool settle = false;   // each pass steps on until the blocks are at rest (the reader's default: a static analysis)
   // s: each pass's flow a backward-Euler step in pseudo-time of this first step (growing by
   // SER) from the last pass's heads, with the fixed-stress split's storage; 0: steady passes

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <string_view>
 
+#include "coupling/load_ramp.hpp"
 #include "coupling/loop_acceleration.hpp"
 #include "coupling/permeability_laws.hpp"
 #include "dda/definitions.hpp"
@@ -81,6 +82,14 @@ struct Spellings<coupling::Acceleration> {  // coupling.acceleration
       {coupling::Acceleration::none, "none"},
       {coupling::Acceleration::aitken, "aitken"},
       {coupling::Acceleration::anderson, "anderson"},
+  }};
+};
+
+template <>
+struct Spellings<coupling::RampedLoad> {  // coupling.ramp
+  static constexpr std::array<Spelling<coupling::RampedLoad>, 2> table{{
+      {coupling::RampedLoad::whole, "whole"},
+      {coupling::RampedLoad::overpressure, "overpressure"},
   }};
 };
 
