@@ -17,10 +17,14 @@
 #include <vector>
 
 #include "run_folder_compare.hpp"
+#include "bond_record.hpp"
 #include "result_files.hpp"
 #include "run_program.hpp"
 
 namespace fs = std::filesystem;
+using hydrodda::testing::bond_rows_of;
+using hydrodda::testing::column_of;
+using hydrodda::testing::expect_breaks_recorded;
 using hydrodda::testing::expect_same_results;
 using hydrodda::testing::read_csv;
 using hydrodda::testing::read_file;
@@ -30,55 +34,6 @@ namespace {
 
 const fs::path kCrack = fs::path(HYDRODDA_SOURCE_DIR) / "tests/cli/scenarios/bonded_crack_coupled.toml";
 
-std::size_t column_of(const std::vector<std::string>& header, const std::string& name) {
-  for (std::size_t i = 0; i < header.size(); ++i)
-    if (header[i] == name) return i;
-  ADD_FAILURE() << "no column " << name;
-  return 0;
-}
-
-
-// history.csv's broken_bonds of each pass against fractures.csv's bond rows of that pass (their
-// `time` the pass's); every bond listed once. The number of bonds broken.
-int expect_breaks_recorded_by_pass(const fs::path& folder) {
-  const auto history = read_csv(folder / "history.csv");
-  const std::size_t iteration = column_of(history[0], "iteration"), time = column_of(history[0], "time");
-  const std::size_t broken = column_of(history[0], "broken_bonds");
-  const auto fractures = read_csv(folder / "fractures.csv");
-  const std::size_t step = column_of(fractures[0], "step"), row_time = column_of(fractures[0], "time");
-  const std::size_t origin = column_of(fractures[0], "origin"), number = column_of(fractures[0], "number");
-  std::map<std::string, int> rows_by_pass;
-  std::map<std::string, std::string> time_of_pass;
-  std::set<std::string> bonds;
-  for (std::size_t r = 1; r < fractures.size(); ++r) {
-    if (fractures[r][origin] != "bond") continue;
-    ++rows_by_pass[fractures[r][step]];
-    time_of_pass[fractures[r][step]] = fractures[r][row_time];
-    EXPECT_TRUE(bonds.insert(fractures[r][number]).second) << "bond " << fractures[r][number] << " listed twice";
-  }
-  int total = 0;
-  for (std::size_t r = 1; r < history.size(); ++r) {
-    const std::string& pass = history[r][iteration];
-    const int in_pass = std::stoi(history[r][broken]);
-    EXPECT_EQ(in_pass, rows_by_pass[pass]) << "pass " << pass;
-    if (in_pass > 0) {
-      EXPECT_EQ(time_of_pass[pass], history[r][time]) << "pass " << pass;
-    }
-    total += in_pass;
-  }
-  EXPECT_EQ(total, static_cast<int>(bonds.size()));
-  return total;
-}
-
-// The bond rows of pass `pass` in a run folder's fractures.csv, as text.
-std::vector<std::vector<std::string>> bond_rows_of_pass(const fs::path& folder, const std::string& pass) {
-  const auto fractures = read_csv(folder / "fractures.csv");
-  std::vector<std::vector<std::string>> rows;
-  for (std::size_t r = 1; r < fractures.size(); ++r)
-    if (fractures[r][column_of(fractures[0], "origin")] == "bond" && fractures[r][0] == pass) rows.push_back(fractures[r]);
-  return rows;
-}
-
 TEST(CoupledBonds, EachPassRecordsTheBondsItsStepsBroke) {
   const auto out = hydrodda::testing::fresh_dir("hydrodda-coupled-bonds-whole");
   const auto result = run_program("-q run " + kCrack.string() + " -o " + out.path.string() + " --threads 1");
@@ -86,7 +41,7 @@ TEST(CoupledBonds, EachPassRecordsTheBondsItsStepsBroke) {
   const auto history = read_csv(out.path / "history.csv");
   ASSERT_EQ(history.size(), 4u) << "three passes";
   EXPECT_GT(std::stoi(history[1][column_of(history[0], "broken_bonds")]), 0) << "the first pass breaks bonds";
-  EXPECT_GT(expect_breaks_recorded_by_pass(out.path), 0);
+  EXPECT_GT(expect_breaks_recorded(out.path, "iteration").total, 0);
   const std::string series = read_file(out.path / "bonds.pvd");
   EXPECT_NE(series.find("bonds_0001.vtu"), std::string::npos) << series;
   EXPECT_NE(series.find("bonds_0003.vtu"), std::string::npos) << series;
@@ -100,12 +55,12 @@ TEST(CoupledBonds, AResumedRunListsTheBreaksOfItsEarlierPassesOnce) {
   const auto stopped = run_program("-q run " + kCrack.string() + " -o " + parts.path.string() +
                                    " --threads 1 --stop-after 1");
   ASSERT_EQ(stopped.exit_code, 0) << stopped.output;
-  const auto first_pass = bond_rows_of_pass(parts.path, "1");
+  const auto first_pass = bond_rows_of(parts.path, "1");
   ASSERT_FALSE(first_pass.empty());
   const auto resumed = run_program("-q run --resume " + parts.path.string() + " --threads 1");
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
-  EXPECT_EQ(bond_rows_of_pass(parts.path, "1"), first_pass);
-  EXPECT_GE(expect_breaks_recorded_by_pass(parts.path), static_cast<int>(first_pass.size()));
+  EXPECT_EQ(bond_rows_of(parts.path, "1"), first_pass);
+  EXPECT_GE(expect_breaks_recorded(parts.path, "iteration").total, static_cast<int>(first_pass.size()));
   const std::string series = read_file(parts.path / "bonds.pvd");
   EXPECT_NE(series.find("bonds_0001.vtu"), std::string::npos) << series;
   EXPECT_NE(series.find("bonds_0003.vtu"), std::string::npos) << series;

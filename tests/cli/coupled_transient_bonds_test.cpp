@@ -18,11 +18,15 @@
 #include <string>
 #include <vector>
 
+#include "bond_record.hpp"
 #include "result_files.hpp"
 #include "run_folder_compare.hpp"
 #include "run_program.hpp"
 
 namespace fs = std::filesystem;
+using hydrodda::testing::bond_rows_of;
+using hydrodda::testing::column_of;
+using hydrodda::testing::expect_breaks_recorded;
 using hydrodda::testing::expect_same_results;
 using hydrodda::testing::read_csv;
 using hydrodda::testing::read_file;
@@ -32,61 +36,13 @@ namespace {
 
 const fs::path kCrack = fs::path(HYDRODDA_SOURCE_DIR) / "tests/cli/scenarios/bonded_crack_transient.toml";
 
-std::size_t column_of(const std::vector<std::string>& header, const std::string& name) {
-  for (std::size_t i = 0; i < header.size(); ++i)
-    if (header[i] == name) return i;
-  ADD_FAILURE() << "no column " << name;
-  return 0;
-}
-
-// history.csv's broken_bonds of each time step against fractures.csv's bond rows of that step
-// (their `time` the step's); every bond listed once. The steps that broke bonds.
-int expect_breaks_recorded_by_step(const fs::path& folder) {
-  const auto history = read_csv(folder / "history.csv");
-  const std::size_t step = column_of(history[0], "step"), time = column_of(history[0], "time");
-  const std::size_t broken = column_of(history[0], "broken_bonds");
-  const auto fractures = read_csv(folder / "fractures.csv");
-  const std::size_t row_step = column_of(fractures[0], "step"), row_time = column_of(fractures[0], "time");
-  const std::size_t origin = column_of(fractures[0], "origin"), number = column_of(fractures[0], "number");
-  std::map<std::string, int> rows_by_step;
-  std::map<std::string, std::string> time_of_step;
-  std::set<std::string> bonds;
-  for (std::size_t r = 1; r < fractures.size(); ++r) {
-    if (fractures[r][origin] != "bond") continue;
-    ++rows_by_step[fractures[r][row_step]];
-    time_of_step[fractures[r][row_step]] = fractures[r][row_time];
-    EXPECT_TRUE(bonds.insert(fractures[r][number]).second) << "bond " << fractures[r][number] << " listed twice";
-  }
-  int total = 0, steps_breaking = 0;
-  for (std::size_t r = 1; r < history.size(); ++r) {
-    const std::string& s = history[r][step];
-    const int in_step = std::stoi(history[r][broken]);
-    EXPECT_EQ(in_step, rows_by_step[s]) << "step " << s;
-    if (in_step > 0) {
-      EXPECT_EQ(time_of_step[s], history[r][time]) << "step " << s;
-      ++steps_breaking;
-    }
-    total += in_step;
-  }
-  EXPECT_EQ(total, static_cast<int>(bonds.size()));
-  return steps_breaking;
-}
-
-std::vector<std::vector<std::string>> bond_rows_of_step(const fs::path& folder, const std::string& step) {
-  const auto fractures = read_csv(folder / "fractures.csv");
-  std::vector<std::vector<std::string>> rows;
-  for (std::size_t r = 1; r < fractures.size(); ++r)
-    if (fractures[r][column_of(fractures[0], "origin")] == "bond" && fractures[r][0] == step) rows.push_back(fractures[r]);
-  return rows;
-}
-
 TEST(CoupledTransientBonds, EachTimeStepRecordsTheBondsItsIterationsBroke) {
   const auto out = hydrodda::testing::fresh_dir("hydrodda-transient-bonds-whole");
   const auto result = run_program("-q run " + kCrack.string() + " -o " + out.path.string() + " --threads 1");
   ASSERT_EQ(result.exit_code, 0) << result.output;
   const auto history = read_csv(out.path / "history.csv");
   ASSERT_EQ(history.size(), 6u) << "t = 0 and four steps";
-  EXPECT_GE(expect_breaks_recorded_by_step(out.path), 2) << "bonds break in more than one step";
+  EXPECT_GE(expect_breaks_recorded(out.path, "step").rows_breaking, 2) << "bonds break in more than one step";
   const std::string series = read_file(out.path / "bonds.pvd");
   EXPECT_NE(series.find("timestep=\"0\" group=\"\" part=\"0\" file=\"bonds_0000.vtu\""), std::string::npos) << series;
   EXPECT_NE(series.find("timestep=\"2\" group=\"\" part=\"0\" file=\"bonds_0001.vtu\""), std::string::npos) << series;
@@ -99,12 +55,12 @@ TEST(CoupledTransientBonds, AResumedRunListsTheBreaksOfItsEarlierStepsOnce) {
   const auto stopped =
       run_program("-q run " + kCrack.string() + " -o " + parts.path.string() + " --threads 1 --stop-after 1");
   ASSERT_EQ(stopped.exit_code, 0) << stopped.output;
-  const auto first_step = bond_rows_of_step(parts.path, "1");
+  const auto first_step = bond_rows_of(parts.path, "1");
   ASSERT_FALSE(first_step.empty());
   const auto resumed = run_program("-q run --resume " + parts.path.string() + " --threads 1");
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
-  EXPECT_EQ(bond_rows_of_step(parts.path, "1"), first_step);
-  EXPECT_GE(expect_breaks_recorded_by_step(parts.path), 2);
+  EXPECT_EQ(bond_rows_of(parts.path, "1"), first_step);
+  EXPECT_GE(expect_breaks_recorded(parts.path, "step").rows_breaking, 2);
   const auto whole = hydrodda::testing::fresh_dir("hydrodda-transient-bonds-resume-whole");
   const auto first = run_program("-q run " + kCrack.string() + " -o " + whole.path.string() + " --threads 1");
   ASSERT_EQ(first.exit_code, 0) << first.output;
