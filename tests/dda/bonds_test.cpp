@@ -14,30 +14,9 @@
 namespace hydrodda::dda {
 namespace {
 
-using testing::make_rectangle;
+using testing::make_bonded_block;
 
 constexpr double kStrength = 1.0e5;  // Pa, T (or c), on faces of L = 1 m
-
-// A fixed base [0, 1] × [−1, 0] and a 1 m × 1 m sub-block on it, their shared face (the
-// base's top edge 2, the block's bottom edge 0) bonded, no gravity, static analysis. The
-// face's traction is the free sub-block's stress (the fixed base carries none).
-ModelDefinition make_bonded_block(const Joint& bond) {
-  ModelDefinition m;
-  m.materials = {Material{2500.0, 1.0e10, 0.25}};
-  BlockDefinition base{make_rectangle(0.0, -1.0, 1.0, 0.0), 0, true};
-  BlockDefinition block{make_rectangle(0.0, 0.0, 1.0, 1.0), 0, false};
-  base.edge_joints = {0, 0, 1, 0};
-  base.edge_bonds = {-1, -1, 0, -1};
-  block.edge_joints = {1, 0, 0, 0};
-  block.edge_bonds = {0, -1, -1, -1};
-  m.blocks = {base, block};
-  m.joint = {30.0, 0.0, 0.0};
-  m.joint_types = {bond};
-  m.settings.analysis = Analysis::static_;
-  m.settings.gravity = {0.0, 0.0};
-  m.settings.time_step = 1e-3;
-  return m;
-}
 
 // Loads block 1 by `force` shared by the two vertices given (its corners 0..3 from the lower left).
 void load_block(System& system, Point force, int v0, int v1) {

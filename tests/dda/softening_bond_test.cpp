@@ -30,7 +30,6 @@
 namespace hydrodda::dda {
 namespace {
 
-using testing::make_rectangle;
 
 constexpr double kStrength = 1.0e5;        // T (Pa)
 constexpr double kFractureEnergy = 100.0;  // G_f (J/m²): w_c = 2 G_f / T = 2 mm
@@ -40,19 +39,7 @@ constexpr int kSteps = 2000;
 constexpr double kTravel = 1.15 * kCritical + kStrength / kYoung * 1.0;  // past w_c and the elastic stretch
 
 ModelDefinition make_pulled_block(double fracture_energy, double young = kYoung) {
-  ModelDefinition m;
-  m.materials = {Material{2500.0, young, 0.0}};
-  BlockDefinition base{make_rectangle(0.0, -1.0, 1.0, 0.0), 0, true};
-  BlockDefinition block{make_rectangle(0.0, 0.0, 1.0, 1.0), 0, false};
-  base.edge_joints = {0, 0, 1, 0};
-  base.edge_bonds = {-1, -1, 0, -1};
-  block.edge_joints = {1, 0, 0, 0};
-  block.edge_bonds = {0, -1, -1, -1};
-  m.blocks = {base, block};
-  m.joint = {30.0, 0.0, 0.0};
-  m.joint_types = {Joint{30.0, 1.0e9, kStrength, fracture_energy}};
-  m.settings.analysis = Analysis::static_;
-  m.settings.gravity = {0.0, 0.0};
+  ModelDefinition m = testing::make_bonded_block(Joint{30.0, 1.0e9, kStrength, fracture_energy}, Material{2500.0, young, 0.0});
   m.settings.time_step = 1.0;
   m.settings.max_displacement_ratio = 0.01;
   for (Point corner : {Point{1.0, 1.0}, Point{0.0, 1.0}})

@@ -14,7 +14,6 @@
 namespace hydrodda::dda {
 namespace {
 
-using testing::make_rectangle;
 
 constexpr double kStrength = 1.0e5;  // Pa, the bond's tensile strength T, on a face of L = 1 m
 
@@ -22,23 +21,7 @@ constexpr double kStrength = 1.0e5;  // Pa, the bond's tensile strength T, on a 
 // static analysis: pulled up at its top corners by 1.5 T L (a static step takes the block some
 // 0.88 of the way to its load: 1.3 T), the face breaks in the first pass of the step and its
 // contacts open in a later one (a step of at least two passes).
-ModelDefinition make_bonded_block() {
-  ModelDefinition m;
-  m.materials = {Material{2500.0, 1.0e10, 0.25}};
-  BlockDefinition base{make_rectangle(0.0, -1.0, 1.0, 0.0), 0, true};
-  BlockDefinition block{make_rectangle(0.0, 0.0, 1.0, 1.0), 0, false};
-  base.edge_joints = {0, 0, 1, 0};
-  base.edge_bonds = {-1, -1, 0, -1};
-  block.edge_joints = {1, 0, 0, 0};
-  block.edge_bonds = {0, -1, -1, -1};
-  m.blocks = {base, block};
-  m.joint = {30.0, 0.0, 0.0};
-  m.joint_types = {{30.0, 1.0e9, kStrength}};
-  m.settings.analysis = Analysis::static_;
-  m.settings.gravity = {0.0, 0.0};
-  m.settings.time_step = 1e-3;
-  return m;
-}
+ModelDefinition make_bonded_block() { return testing::make_bonded_block({30.0, 1.0e9, kStrength}); }
 
 // Settled on its base (one step), then pulled up by 1.5 T L.
 void settle_and_pull(System& system) {

@@ -133,4 +133,26 @@ inline BlockMatrix make_wall_graph_matrix(int rows) {
   return make_block_graph_matrix(rows * rows, joints, 21);
 }
 
+// A fixed base [0, 1] × [−1, 0] and a 1 m × 1 m sub-block on it, their shared face (the
+// base's top edge 2, the block's bottom edge 0) bonded by a face of type `bond`, no gravity,
+// static analysis, Δt 1 ms. The face's traction is the free sub-block's stress (the fixed base
+// carries none).
+inline ModelDefinition make_bonded_block(const Joint& bond, const Material& material = {2500.0, 1.0e10, 0.25}) {
+  ModelDefinition m;
+  m.materials = {material};
+  BlockDefinition base{make_rectangle(0.0, -1.0, 1.0, 0.0), 0, true};
+  BlockDefinition block{make_rectangle(0.0, 0.0, 1.0, 1.0), 0, false};
+  base.edge_joints = {0, 0, 1, 0};
+  base.edge_bonds = {-1, -1, 0, -1};
+  block.edge_joints = {1, 0, 0, 0};
+  block.edge_bonds = {0, -1, -1, -1};
+  m.blocks = {base, block};
+  m.joint = {30.0, 0.0, 0.0};
+  m.joint_types = {bond};
+  m.settings.analysis = Analysis::static_;
+  m.settings.gravity = {0.0, 0.0};
+  m.settings.time_step = 1e-3;
+  return m;
+}
+
 }  // namespace hydrodda::dda::testing
