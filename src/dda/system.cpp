@@ -843,13 +843,12 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
     // or slides its contacts as a joint's: a change of state like a contact's.
     // Softening bonds: a pass whose opening moved their tractions from those its loads were
     // made with is no solution yet, and one that opened a face past w_c broke its bond.
+    const bool contacts_changed = std::any_of(changed.begin(), changed.end(), [](char c) { return c != 0; });
     const CohesionChange cohesion =
-        softening_.empty() ? CohesionChange::none : settle_cohesive_loads(d);
+        softening_.empty() ? CohesionChange::none : settle_cohesive_loads(d, contacts_changed);
     const bool bonds_broke =
         (!bond_sides_.empty() && break_overloaded_bonds(d)) || cohesion == CohesionChange::broke;
-    if (!bonds_broke && cohesion == CohesionChange::none &&
-        std::none_of(changed.begin(), changed.end(), [](char c) { return c != 0; }))
-      return Unsettled::no;
+    if (!bonds_broke && cohesion == CohesionChange::none && !contacts_changed) return Unsettled::no;
     // A pass that changed only contacts that had kept their state all step is progress: the
     // cutoff opening, pass by pass, the joints that its earlier openings left pulling (a
     // 1,601-block wall's first step: 2,725 of them, then 697, 93, 45, ..., 2), which ends, as

@@ -437,7 +437,8 @@ class System {
   std::array<double, 2> opening_after(int bond, const Eigen::VectorXd& d) const;
   void add_cohesive_loads(const Eigen::VectorXd& d, Eigen::VectorXd& f);
   enum class CohesionChange { none, moved, broke };
-  CohesionChange settle_cohesive_loads(const Eigen::VectorXd& d);
+  // `contacts_changed`: some contact changed state in the pass (the map of the fixed point changed).
+  CohesionChange settle_cohesive_loads(const Eigen::VectorXd& d, bool contacts_changed);
   void start_softening(int bond);
   void undo_pending_softening();
   void commit_softening();
