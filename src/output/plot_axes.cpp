@@ -71,4 +71,25 @@ std::string format_tick(double value, double step) {
   return fmt::format("{:.{}f}", std::abs(value) < 1e-12 * step ? 0.0 : value, decimals);
 }
 
+std::vector<std::string> log_tick_labels(const std::vector<double>& ticks) {
+  // Evenly spaced ticks are the linear ones of a range under a decade (log_ticks' fallback):
+  // labelled by their step. The 1, 2, 5 ticks of wider ranges keep their shortest form.
+  bool even = ticks.size() >= 2;
+  for (std::size_t i = 2; even && i < ticks.size(); ++i)
+    even = std::abs((ticks[i] - ticks[i - 1]) - (ticks[1] - ticks[0])) <= 1e-9 * (ticks[1] - ticks[0]);
+  std::vector<std::string> labels;
+  for (double v : ticks) {
+    const double e = std::round(std::log10(v));
+    if (std::abs(v - std::pow(10.0, e)) < 1e-9 * v)
+      labels.emplace_back();
+    else
+      labels.push_back(even ? format_tick(v, ticks[1] - ticks[0]) : fmt::format("{:g}", v));
+  }
+  return labels;
+}
+
+bool is_flat_range(double lo, double hi) {
+  return std::abs(hi - lo) <= kFlatSpread * std::max(std::abs(lo), std::abs(hi));
+}
+
 }  // namespace hydrodda::output

@@ -22,6 +22,16 @@ std::vector<double> log_ticks(double lo, double hi);
 // A linear tick's label with as few decimals as the step between ticks needs.
 std::string format_tick(double value, double step);
 
+// The labels of log_ticks: empty for a power of ten (drawn as 10^e); the others with as many
+// decimals as the least gap between neighbouring ticks needs, so that the linear ticks of a
+// narrow range (1.6521, 1.6522, ...) never print alike, as 6 significant digits would.
+std::vector<std::string> log_tick_labels(const std::vector<double>& ticks);
+
+// Values over [lo, hi] that agree to kFlatSpread of the larger's size: one value and its
+// round-off, which an axis drawn over them alone would magnify into a slope.
+inline constexpr double kFlatSpread = 1e-6;
+bool is_flat_range(double lo, double hi);
+
 // Viridis colour map, t in [0, 1] → RGB in [0, 1].
 std::array<double, 3> viridis(double t);
 

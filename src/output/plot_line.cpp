@@ -60,7 +60,7 @@ struct Axis {
 Axis make_axis(double lo, double hi, bool log_axis, double page_lo, double page_hi) {
   if (log_axis) {
     double a = std::log10(lo), b = std::log10(hi);
-    if (b - a < 1e-9) {
+    if (is_flat_range(lo, hi)) {  // one value: a decade about it, not its round-off magnified
       a -= 0.5;
       b += 0.5;
     }
@@ -159,12 +159,10 @@ TickLabels make_tick_labels(const Axis& a) {
   const double largest = std::max(std::abs(a.lo), std::abs(a.hi));
   if (!a.log && (largest >= 1e5 || largest < 1e-3)) t.scale = static_cast<int>(std::floor(std::log10(largest)));
   const double factor = std::pow(10.0, t.scale);
-  for (double v : t.major) {
-    const int e = static_cast<int>(std::lround(std::log10(v)));
-    if (a.log && std::abs(v - std::pow(10.0, e)) < 1e-9 * v)
-      t.text.emplace_back();
-    else
-      t.text.push_back(a.log ? fmt::format("{:g}", v) : format_tick(v / factor, step / factor));
+  if (a.log) {
+    t.text = log_tick_labels(t.major);
+  } else {
+    for (double v : t.major) t.text.push_back(format_tick(v / factor, step / factor));
   }
   return t;
 }

@@ -37,5 +37,27 @@ TEST(FormatTick, DecimalsFollowTheStep) {
   EXPECT_EQ(format_tick(1e-17, 0.1), "0.0");
 }
 
+// A log axis over a range under a decade falls back to linear ticks (1.6521, 1.6522, ...): their
+// labels take the decimals of the step, where 6 significant digits printed "1.65217" at every
+// tick of a breach curve that barely moved. Exact strings: the rule is formatting, not arithmetic.
+TEST(LogTickLabels, EvenTicksOfANarrowRangeAreLabelledByTheirStep) {
+  const std::vector<double> ticks = log_ticks(1.652165, 1.652175);
+  ASSERT_GE(ticks.size(), 2u);
+  const std::vector<std::string> labels = log_tick_labels(ticks);
+  for (std::size_t i = 1; i < labels.size(); ++i) EXPECT_NE(labels[i], labels[i - 1]) << i;
+  EXPECT_EQ(log_tick_labels({1.6521, 1.6522, 1.6523}), (std::vector<std::string>{"1.6521", "1.6522", "1.6523"}));
+  // Decades stay empty (drawn as 10^e); the 1, 2, 5 ticks of a wider range keep their short form.
+  EXPECT_EQ(log_tick_labels({0.2, 0.5, 1.0, 2.0}), (std::vector<std::string>{"0.2", "0.5", "", "2"}));
+}
+
+// Values that agree to 1e-6 of their size are one value (a breach curve's K_eff/K_m at every
+// load, 1.6521680073 to 1.6521680123): the axis is drawn about it, not over its round-off.
+TEST(FlatRange, ValuesAgreeingToAMillionthAreFlat) {
+  EXPECT_TRUE(is_flat_range(1.6521680073837006, 1.6521680123449394));
+  EXPECT_TRUE(is_flat_range(2.0, 2.0));
+  EXPECT_FALSE(is_flat_range(2.4450, 2.4460));  // the 0.04% step of an opening flaw is drawn
+  EXPECT_FALSE(is_flat_range(1.0, 1.0 + 2.0 * kFlatSpread));
+}
+
 }  // namespace
 }  // namespace hydrodda::output
