@@ -70,13 +70,13 @@ BreachOutcome run_breach(const BreachJob& job, const std::function<bool()>& stop
   const output::RunFolder folder(job.directory,
                                  job.overwrite ? output::ExistingFolder::Overwrite : output::ExistingFolder::Refuse);
   CoupledStepper stepper(text, job.scenario, job.keys, job.search.from, job.limit, stop_requested);
-  BreachFiles files(folder, stepper.scenario(), name_keys(job.keys), job.limit);
+  BreachFiles files(folder, stepper.scenario(), name_keys(job.keys), job.limit, stepper.model().mechanics());
   files.write_scenario(text);
   const auto on_step = [&](const SearchStep& step) {
     spdlog::info("step {}: {} = {:.6g}: {} in {} pass(es){}", step.index, name_keys(job.keys), step.load,
                  status_name(step.result.status), step.result.passes,
                  step.result.message.empty() ? "" : ": " + step.result.message);
-    files.add_step(step, stepper);
+    files.add_step(step, stepper, holds(step.result.status, job.search));
   };
   BreachOutcome outcome{search_breach(job.search, stepper, on_step), folder.path(), ""};
   outcome.verdict = describe_verdict(outcome.search, job.keys, job.search, files.worst_unsettled_spread());

@@ -25,12 +25,14 @@ std::vector<std::string> region_names(const scenario::Scenario& s) {
   return names;
 }
 
-std::vector<std::string> columns_of(const std::vector<std::string>& regions, const std::optional<Limit>& limit) {
+std::vector<std::string> columns_of(const std::vector<std::string>& regions, const std::optional<Limit>& limit,
+                                    bool bonded) {
   std::vector<std::string> columns{"step", "load", "kind", "status", "passes", "largest_opening", "open_fractures"};
   for (const std::string& region : regions)
     for (const char* suffix : {"", "_least", "_largest"})
       columns.push_back(fmt::format("flow.regions.{}.normalised_conductivity{}", region, suffix));
   if (limit) columns.push_back(limit->path);
+  if (bonded) columns.insert(columns.end(), {"broken_bonds", "broken_bonds_total"});
   columns.push_back("message");
   return columns;
 }
@@ -41,13 +43,17 @@ bool is_state(StepStatus status) {
 
 std::string cell(const std::optional<double>& value) { return value ? CsvTable::cell(*value) : ""; }
 
-nlohmann::json held_json(const HeldState& h, const std::vector<std::string>& regions) {
+nlohmann::json held_json(const HeldState& h, const std::vector<std::string>& regions, bool bonded) {
   nlohmann::json j{{"load", h.load}, {"largest_opening", h.largest_opening}, {"open_fractures", h.open_fractures}};
   nlohmann::json k = nlohmann::json::object();
   for (std::size_t r = 0; r < regions.size(); ++r)
     k[regions[r]] = h.conductivity[r] ? nlohmann::json(*h.conductivity[r]) : nlohmann::json(nullptr);
   j["normalised_conductivity"] = k;
   j["unsettled"] = h.unsettled;
+  if (bonded) {
+    j["broken_bonds"] = h.broken_bonds;
+    j["broken_bonds_total"] = h.broken_bonds_total;
+  }
   if (h.unsettled) {
     nlohmann::json ranges = nlohmann::json::object();
     for (std::size_t r = 0; r < regions.size() && r < h.ranges.size(); ++r)
@@ -61,14 +67,20 @@ nlohmann::json held_json(const HeldState& h, const std::vector<std::string>& reg
 }  // namespace
 
 BreachFiles::BreachFiles(const output::RunFolder& folder, const scenario::Scenario& scenario, std::string key,
-                         std::optional<Limit> limit)
+                         std::optional<Limit> limit, const dda::System& mechanics)
     : folder_(folder),
       scenario_(scenario),
       key_(std::move(key)),
       limit_(std::move(limit)),
       regions_(region_names(scenario)),
-      table_(columns_of(regions_, limit_)),
-      paraview_(folder, scenario.output.fields) {}
+      table_(columns_of(regions_, limit_, mechanics.bond_count() > 0)),
+      paraview_(folder, scenario.output.fields),
+      fractures_(folder, true, run::fracture_type_names(scenario)) {
+  if (mechanics.bond_count() == 0) return;
+  fractures_.list_broken_bonds();
+  bonds_.emplace(folder, scenario, mechanics, static_cast<int>(run::fracture_type_names(scenario).size()),
+                 run::BondClock::load);
+}
 
 void BreachFiles::write_scenario(const std::string& text) const { folder_.write("scenario.toml", text); }
 
@@ -111,11 +123,15 @@ std::vector<std::string> BreachFiles::row_of(const SearchStep& step, const std::
     row.push_back(ranged ? CsvTable::cell(held->ranges[r]->largest) : "");
   }
   if (limit_) row.push_back(held ? cell(held->limit_value) : "");
+  if (bonds_) {
+    row.push_back(held ? std::to_string(held->broken_bonds.size()) : "");
+    row.push_back(held ? std::to_string(held->broken_bonds_total) : "");
+  }
   row.push_back(step.result.message);
   return row;
 }
 
-void BreachFiles::add_step(const SearchStep& step, const CoupledStepper& stepper) {
+void BreachFiles::add_step(const SearchStep& step, const CoupledStepper& stepper, bool kept) {
   std::optional<HeldState> held;
   if (is_state(step.result.status)) {
     output::RunSummary summary = stepper.summary();
@@ -123,6 +139,7 @@ void BreachFiles::add_step(const SearchStep& step, const CoupledStepper& stepper
     folder_.subfolder("steps");
     folder_.write(fmt::format("steps/step_{:03d}.json", step.index), output::format_summary(summary));
     held = measure(step, summary, stepper.unsettled_ranges());
+    record_fractures(step, stepper, kept, *held);
     held_.push_back(*held);
     const run::CoupledModel& model = stepper.model();
     const auto& loop = model.loop();
@@ -132,6 +149,24 @@ void BreachFiles::add_step(const SearchStep& step, const CoupledStepper& stepper
   steps_.push_back(step);
   table_.add_row(row_of(step, held));
   folder_.write("breach.csv", table_.text());
+}
+
+void BreachFiles::record_fractures(const SearchStep& step, const CoupledStepper& stepper, bool kept, HeldState& held) {
+  const dda::System& mechanics = stepper.model().mechanics();
+  if (bonds_) {
+    // The model stands at this step's state, reached from the last kept: the breaks past those
+    // recorded are this step's (a step not kept leaves none behind: the model goes back).
+    const std::vector<dda::BondBreak>& breaks = mechanics.bond_breaks();
+    for (std::size_t k = static_cast<std::size_t>(bonds_listed_); k < breaks.size(); ++k)
+      held.broken_bonds.push_back(breaks[k].bond);
+    held.broken_bonds_total = static_cast<int>(breaks.size());
+    if (kept) {  // recorded as a run records them; a state the search does not go on from is not
+      bonds_listed_ += bonds_->add_breaks(step.index, mechanics, fractures_, step.load);
+      bonds_->write_series(step.index, step.load, mechanics);
+    }
+  }
+  if (const std::optional<fractures::FractureState> state = stepper.measure_fractures())
+    fractures_.add_rows(step.index, step.load, *state);
 }
 
 void BreachFiles::write_last_held(double load, const CoupledStepper& stepper) {
@@ -148,6 +183,7 @@ void BreachFiles::write_last_held(double load, const CoupledStepper& stepper) {
                        model.iterations()});
     if (const std::optional<fractures::FractureState> state = stepper.measure_fractures())
       run::draw_aperture_figure(scenario_, folder_, blocks, *state, {when, ""});
+    if (bonds_) bonds_->draw_figure(scenario_, model.mechanics(), when);
   } catch (const std::exception& e) {
     spdlog::warn("the figures of the last state that held could not be drawn: {}", e.what());
   }
@@ -166,7 +202,7 @@ void BreachFiles::finish(const SearchResult& result, const std::string& verdict,
       j["broken_message"] = step.result.message;
   j["last_held"] = nlohmann::json(nullptr);
   for (const HeldState& h : held_)
-    if (result.held && h.load == *result.held && !h.beyond_limit) j["last_held"] = held_json(h, regions_);
+    if (result.held && h.load == *result.held && !h.beyond_limit) j["last_held"] = held_json(h, regions_, bonds_.has_value());
   j["rule"] = settings.converged_only ? "converged only" : "mechanical";
   j["unsettled_held"] = result.unsettled_held;
   j["worst_unsettled_spread"] = nlohmann::json(nullptr);

@@ -114,7 +114,7 @@ void BondOutput::draw_figure(const scenario::Scenario& s, const dda::System& sys
   figure.subtitle = fmt::format("Broken bonds ({} of {}; intact in grey), {}{}", listed_, system.bond_count(), when,
                                 unlisted > 0 ? fmt::format("; {} more in the failed {}, not drawn", unlisted, unit)
                                              : std::string());
-  figure.field_label = clock_ == BondClock::pass ? "broke in pass" : "broke at (s)";
+  figure.field_label = clock_ == BondClock::pass ? "broke in pass" : clock_ == BondClock::load ? "broke at the load" : "broke at (s)";
   for (int b = 0; b < system.block_count(); ++b) figure.blocks.push_back(system.polygon(b));
   for (int b = 0; b < system.bond_count(); ++b) {
     const auto k = static_cast<std::size_t>(b);

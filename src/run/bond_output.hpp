@@ -18,9 +18,10 @@
 
 namespace hydrodda::run {
 
-// What a break is recorded at: the time (s) of the DDA step it broke in, the pass, or the time
-// step of a coupled transient run (its row at the step, at the step's end time in s).
-enum class BondClock { time, pass, time_step };
+// What a break is recorded at: the time (s) of the DDA step it broke in, the pass, the time
+// step of a coupled transient run (its row at the step, at the step's end time in s), or the
+// load of a breach search's step that held (its row at the step, at the load).
+enum class BondClock { time, pass, time_step, load };
 
 // fractures.csv's row of a bond's break recorded at `time`: its fracture id the bond's after the
 // `trace_count` traces', its type the name of its joint type ("joint" for [joint]).
@@ -38,7 +39,7 @@ class BondOutput {
   // The bonds that broke since the last call, as rows of fractures.csv at step (or pass) `step`,
   // their `time` each break's own step's end (BondClock::time) or the pass's, `pass_time`
   // (BondClock::pass, which records the pass as when it broke; BondClock::time_step, the time
-  // step's end, which records that time as when it broke); how many. Only breaks listed
+  // step's end, and BondClock::load, the step's load, which record that as when it broke); how many. Only breaks listed
   // here are written or drawn as broken: those of a step that failed never are.
   int add_breaks(long long step, const dda::System& system, FractureOutput& fractures, double pass_time = 0.0);
   // A resumed coupled run: the breaks `system` holds are those of its earlier passes,
