@@ -14,6 +14,7 @@
 
 #include "coupling/convergence_diagnosis.hpp"
 #include "run/coupled_messages.hpp"
+#include "run/model_building.hpp"
 #include "run/no_equilibrium.hpp"
 #include "run/permeability_cap.hpp"
 #include "run/coupled_model.hpp"
@@ -278,7 +279,9 @@ void warn_at_end(const Round& round, const output::RunSummary& summary) {
     spdlog::warn("{} block(s) reach outside the fluid mesh, block {} farthest, by {:.3g} m: their parts outside "
                  "take the pressure of the mesh boundary there",
                  summary.outside_mesh->blocks, summary.outside_mesh->block, summary.outside_mesh->largest_distance);
-  if (const auto capped = describe_capped_fractures(round.model.loop().capped_elements(), round.model.mesh(),
+  const std::vector<int> capped_elements =
+      capped_by_the_law(round.model.loop().capped_elements(), find_fixed_permeability(s, round.model.mesh()));
+  if (const auto capped = describe_capped_fractures(capped_elements, round.model.mesh(),
                                                     round.recorder.element_fractures(),
                                                     s.flow->fracture_permeability_cap, &round.context.folder))
     spdlog::warn("at coupling iteration {}, {}", round.model.iterations(), *capped);

@@ -33,4 +33,11 @@ std::optional<std::string> describe_capped_fractures(std::span<const int> capped
       cap, 1e3 * std::sqrt(12.0 * cap), capped.size(), capped.size() == 1 ? "" : "s", along, first.x, first.y);
 }
 
+std::vector<int> capped_by_the_law(std::span<const int> capped, std::span<const std::optional<double>> given) {
+  std::vector<int> kept;
+  for (int e : capped)
+    if (static_cast<std::size_t>(e) >= given.size() || !given[static_cast<std::size_t>(e)]) kept.push_back(e);
+  return kept;
+}
+
 }  // namespace hydrodda::run

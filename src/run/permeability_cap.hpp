@@ -6,6 +6,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "mesh/triangle_mesh.hpp"
 #include "output/run_folder.hpp"
@@ -21,5 +22,14 @@ namespace hydrodda::run {
 std::optional<std::string> describe_capped_fractures(std::span<const int> capped, const mesh::TriangleMesh& mesh,
                                                      std::span<const int> element_fractures, double cap,
                                                      const output::RunFolder* folder = nullptr);
+
+// Of the `capped` elements, those whose permeability is the law's: an element whose permeability
+// the scenario gives (`given[e]`: a material's `permeability`, a flow region's, a barrier strip's;
+// run::find_fixed_permeability) takes that value, in series with its open fraction along a joint,
+// and never the law's w²/12, so its cap changes no flow. Beside a roller, a fluid element whose
+// open area is a round-off sliver (1e-8 of it) between bonded sub-blocks has no two facing walls
+// near its centroid and a local aperture of centimetres: in a mudstone of given permeability
+// that was warned about as a capped gap.
+std::vector<int> capped_by_the_law(std::span<const int> capped, std::span<const std::optional<double>> given);
 
 }  // namespace hydrodda::run
