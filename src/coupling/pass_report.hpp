@@ -66,6 +66,10 @@ struct PassReport {
   double fluid_load_change = 1.0;
   int most_open_close_iterations = 0;
   int step_cuts = 0;
+  // Groups of blocks that met nothing in the pass, moved after it to where the secant of their
+  // net load vanishes (float_secant.hpp), and the longest such shift (m).
+  int groups_moved = 0;
+  double longest_group_shift = 0.0;
   // Seconds per phase in this pass.
   double porosity_seconds = 0.0, flow_seconds = 0.0, forces_seconds = 0.0, mechanics_seconds = 0.0;
 };

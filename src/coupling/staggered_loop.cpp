@@ -314,7 +314,9 @@ PassReport StaggeredLoop::run_pass() {
     });
   report.forces_seconds = seconds_since(start);
 
+  const std::vector<Point> start_displacements = block_displacements();
   step_mechanics(report);
+  move_free_groups(report, start_displacements);
   report.contact_state_changes = count_contact_state_changes(contacts_before, mechanics_.contacts());
   if (joints_)
     report.joint_crossings_switched =
@@ -339,6 +341,7 @@ void StaggeredLoop::step_mechanics(PassReport& report) {
   SettlingWatch watch(settings_.steps_per_pass, mechanics_.at_rest_displacement());
   bool at_rest = false;
   report.shortest_time_step = mechanics_.full_time_step();
+  pass_squared_steps_ = 0.0;
   const auto settling = [&] {
     return taken < most_steps && !at_rest && !watch.cannot_come_to_rest();
   };
@@ -360,6 +363,7 @@ void StaggeredLoop::step_mechanics(PassReport& report) {
       at_rest = mechanics_.is_at_rest(step);
       report.full_time_step = mechanics_.ran_at_full_time_step(step);
       report.shortest_time_step = std::min(report.shortest_time_step, step.time_step);
+      pass_squared_steps_ += step.time_step * step.time_step;
       watch.observe(mechanics_.free_drift(), most_steps - (taken + 1));
     } catch (const dda::StepInterrupted&) {
       abandon_pass();
@@ -378,6 +382,45 @@ void StaggeredLoop::step_mechanics(PassReport& report) {
   report.mechanics_seconds = seconds_since(start);
   report.time = mechanics_.time();
   report.outside_mesh = outside_mesh();
+}
+
+// After a settling pass at the full load whose blocks did not come to rest: each group of
+// blocks that met nothing in its last step moved rigidly to where the secant of its net load
+// vanishes (float_secant.hpp), so that the next pass's flow sees it there. Steady runs only:
+// a transient step's iterations move the blocks under the step's own load.
+void StaggeredLoop::move_free_groups(PassReport& report, const std::vector<Point>& start_displacements) {
+  const bool applies = settings_.settle_steps > 0 && !time_level_ && report.load_factor == 1.0 && !report.at_rest;
+  if (!applies) {
+    float_secant_.forget();
+    return;
+  }
+  const std::vector<std::vector<int>> groups =
+      find_free_groups(mechanics_.free_drift().landing_steps, mechanics_.contacts());
+  float_secant_.keep_only(groups);
+  const std::vector<Point> end_displacements = block_displacements();
+  for (const std::vector<int>& group : groups) {
+    Point start{0.0, 0.0}, end{0.0, 0.0};
+    for (int b : group) {
+      start += start_displacements[static_cast<std::size_t>(b)];
+      end += end_displacements[static_cast<std::size_t>(b)];
+    }
+    const double n = static_cast<double>(group.size());
+    start = {start.x / n, start.y / n};
+    end = {end.x / n, end.y / n};
+    const Point motion = end - start;
+    const double moved = std::hypot(motion.x, motion.y);
+    double least_advance = moved;
+    for (int b : group) {
+      const Point own = end_displacements[static_cast<std::size_t>(b)] - start_displacements[static_cast<std::size_t>(b)];
+      if (moved > 0.0) least_advance = std::min(least_advance, geometry::dot(own, motion) / moved);
+    }
+    const Point shift = float_secant_.shift(group, start, end, least_advance, pass_squared_steps_,
+                                            mechanics_.allowed_step_displacement());
+    if (shift.x == 0.0 && shift.y == 0.0) continue;
+    mechanics_.translate_blocks(group, shift);
+    ++report.groups_moved;
+    report.longest_group_shift = std::max(report.longest_group_shift, std::hypot(shift.x, shift.y));
+  }
 }
 
 // The pass's convergence norms against the last pass (the heads' judged unrelaxed), whether it

@@ -19,6 +19,7 @@
 
 #include "coupling/boundary_gaps.hpp"
 #include "coupling/embedded_joints.hpp"
+#include "coupling/float_secant.hpp"
 #include "coupling/fixed_stress_step.hpp"
 #include "coupling/load_ramp.hpp"
 #include "coupling/loop_acceleration.hpp"
@@ -185,6 +186,7 @@ class StaggeredLoop final : public PassRunner {
   // the next pass on: a loading path scripted between passes.
   void set_flow_boundary_values(std::span<const hydro::BoundaryCondition> boundaries) {
     darcy_.set_boundary_values(boundaries);
+    float_secant_.forget();  // a new load: the last passes' secant is of another
   }
 
   const hydro::FlowSolution& flow() const { return solution_; }
@@ -234,6 +236,7 @@ class StaggeredLoop final : public PassRunner {
   std::vector<std::vector<Point>> fluid_forces(const std::vector<geometry::Polygon>& blocks,
                                                std::span<const double> pressure) const;
   void step_mechanics(PassReport& report);
+  void move_free_groups(PassReport& report, const std::vector<Point>& start_displacements);
   void measure_convergence(PassReport& report, double unrelaxed_head_change);
   void finish_pass(const PassReport& report);
   void accelerate_by_anderson(hydro::FlowSolution& fresh);
@@ -292,6 +295,11 @@ class StaggeredLoop final : public PassRunner {
   numerics::AndersonAccelerator anderson_;
   double pseudo_time_step_ = 0.0;     // Δτ of the next pass's step (pass_storage.hpp)
   double last_steady_change_ = 0.0;   // the last pass's steady head change, for SER
+  // Groups that meet nothing, moved between settling passes to where their net load vanishes
+  // (float_secant.hpp); Σ Δt² over the pass's DDA steps. Not in a checkpoint: a resumed run
+  // starts its secant again (one plain pass).
+  FloatSecant float_secant_;
+  double pass_squared_steps_ = 0.0;
   // The start of the time step under way (coupled transient runs): Δt, the heads h^n and the
   // skeleton's volumes ζ^n per element there, and the passes (iterations) of the step so far.
   struct TimeLevel {

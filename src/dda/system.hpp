@@ -152,6 +152,11 @@ class System {
   double at_rest_displacement() const { return settings_.static_tolerance * model_size_; }
   // Each block's displacement in the last step and the steps it takes to land at its rates.
   const FreeDrift& free_drift() const { return free_drift_; }
+  // Moves `blocks` rigidly by `shift` between steps (block_translation.cpp): their vertices,
+  // centroids and the points tracked on them; stresses, strains and contact records stay. For
+  // a group that meets nothing, moved by the coupled loop to where its net load vanishes.
+  // Throws std::invalid_argument for a block that does not exist or is fixed.
+  void translate_blocks(std::span<const int> blocks, Point shift);
   // Whether a step ran at settings.time_step, not cut short (by an open–close iteration that
   // did not settle, or a displacement past the allowed one).
   bool ran_at_full_time_step(const StepReport& step) const;

@@ -233,6 +233,10 @@ void CoupledRecorder::log_pass(const coupling::PassReport& r) const {
     spdlog::warn("coupling iteration {}: the blocks still moved after the pass's DDA steps and {} more to "
                  "settle (coupling.settle); the pass does not count as converged",
                  r.iteration, r.settling_steps);
+  if (r.groups_moved > 0)
+    spdlog::info("coupling iteration {}: {} group(s) of blocks meeting nothing moved on to where the secant of "
+                 "their net load vanishes, the farthest by {:.3g} m (docs/coupling.md, \"A group that floats\")",
+                 r.iteration, r.groups_moved, r.longest_group_shift);
   if (r.under_tolerance && !r.full_time_step)
     spdlog::warn("coupling iteration {}: {}; the pass does not count as converged", r.iteration,
                  describe_cut_steps(r.shortest_time_step, scenario_.mechanics->time_step));
