@@ -43,7 +43,9 @@ Point FloatSecant::shift(const std::vector<int>& group, Point start, Point end, 
   const double ss = geometry::dot(s, s);
   if (!(ss > 0.0)) return {0.0, 0.0};
   const double kappa = -geometry::dot(y, s) / ss;
-  if (!(kappa > 0.0)) return {0.0, 0.0};
+  // The pass itself closes κ Σ Δt² of the distance to the secant's float: under a thousandth
+  // it lies a thousand passes' motion ahead or more, and its κ is as likely round-off.
+  if (!(kappa * sum_squared_steps >= kLeastClosing)) return {0.0, 0.0};
   const Point target{start.x + rate.x / kappa, start.y + rate.y / kappa};
   Point shift = target - end;
   double scale = 1.0;

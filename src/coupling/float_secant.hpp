@@ -19,7 +19,8 @@
 //     a_k = (x_end − x_k) / Σ Δt²                   (= N(x_k)/2M: the pass's motion per step²)
 //     with the same group free in the pass before, at x_{k−1} with a_{k−1}:
 //       s = x_k − x_{k−1},  y = a_k − a_{k−1},  κ = −(y·s)/(s·s)      (K/2M along s)
-//       κ > 0 (a load that falls as the group moves):
+//       κ Σ Δt² ≥ 10⁻³ (a load that falls as the group moves, the pass closing a thousandth
+//       of the distance to the float or more):
 //         x* = x_k + a_k/κ  (where the secant's net load vanishes)
 //         shift = x* − x_end, scaled down so that
 //           – it takes no block back along the group's motion r̂ (r = x_end − x_k) farther than
@@ -27,8 +28,9 @@
 //             only through space it crossed free), and
 //           – |shift| ≤ the DDA's allowed step displacement (the contacts a step would find
 //             ahead of it are found: the contact search reaches 2.5 times that);
-//       κ ≤ 0: no shift (no equilibrium ahead: the group steps on, and escapes once farther
-//              than its size from where it was built: "no equilibrium").
+//       κ Σ Δt² < 10⁻³ (κ ≤ 0 above all): no shift (no equilibrium ahead, or one more than a
+//              thousand passes' motion away, its κ as likely round-off: the group steps on,
+//              and escapes once farther than its size from where it was built: "no equilibrium").
 //     remember (x_k, a_k) for the next pass.
 //
 // A group free in one pass and not the next is forgotten; a group whose blocks change is a new
@@ -52,6 +54,8 @@ std::vector<std::vector<int>> find_free_groups(std::span<const double> landing_s
 
 class FloatSecant {
  public:
+  static constexpr double kLeastClosing = 1e-3;
+
   // After a pass in which `group` met nothing: its mean centroid displacement at the pass's
   // start and end, the least any of its blocks advanced along the group's motion in the pass
   // (m), the pass's Σ Δt² over its DDA steps, and the largest shift allowed. The shift that

@@ -55,13 +55,28 @@ TEST(FloatSecant, APassOfFewerOrShorterStepsGivesTheSameRoot) {
 }
 
 // A load that does not fall as the group moves (a jacked block whose joint keeps its
-// pressure) has no equilibrium ahead: no shift, the group steps on.
+// pressure) has no equilibrium ahead: no shift, the group steps on; nor does one whose float
+// lies more than a thousand passes' motion ahead.
 TEST(FloatSecant, ALoadThatDoesNotFallAsTheGroupMovesGivesNoShift) {
   FloatSecant secant;
   const std::vector<int> group{1};
   secant.shift(group, {0, 0.0}, {0, 0.01}, 0.01, 0.2, 1.0);
   EXPECT_EQ(secant.shift(group, {0, 0.01}, {0, 0.02}, 0.01, 0.2, 1.0).y, 0.0) << "constant load";
   EXPECT_EQ(secant.shift(group, {0, 0.02}, {0, 0.04}, 0.02, 0.2, 1.0).y, 0.0) << "a load that grows";
+  // One that falls so slowly that a pass closes under a thousandth of the way to its float
+  // (K S/2M = 0.9e-3, the float 0.279 m off): the group steps on.
+  LinearFloat slow;
+  slow.squared_steps = 0.9e-3 * 2.0 * slow.mass / slow.stiffness;
+  FloatSecant again;
+  const double x1 = slow.end_of_pass(0.0), x2 = slow.end_of_pass(x1);
+  again.shift(group, {0, 0.0}, {0, x1}, x1, slow.squared_steps, 1.0);
+  EXPECT_EQ(again.shift(group, {0, x1}, {0, x2}, x2 - x1, slow.squared_steps, 1.0).y, 0.0) << "too slow a fall";
+  // At 1.1e-3 it is moved.
+  slow.squared_steps = 1.1e-3 * 2.0 * slow.mass / slow.stiffness;
+  FloatSecant third;
+  const double y1 = slow.end_of_pass(0.0), y2 = slow.end_of_pass(y1);
+  third.shift(group, {0, 0.0}, {0, y1}, y1, slow.squared_steps, 1.0);
+  EXPECT_NEAR(y2 + third.shift(group, {0, y1}, {0, y2}, y2 - y1, slow.squared_steps, 1.0).y, slow.rest, 1e-9);
 }
 
 // The shift is at most the DDA's allowed step displacement, along the secant's direction.
