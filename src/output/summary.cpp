@@ -122,6 +122,12 @@ json to_json(const RunSummary& s) {
                            {"blocks", s.outside_mesh->blocks}};
   if (s.fractures) out["fractures"] = format_fractures(*s.fractures);
   if (s.time) out["time"] = *s.time;
+  if (s.last_held) {
+    json held = {{"state", s.last_held->state}, {"step", s.last_held->step}};
+    if (s.last_held->open_fractures) held["open_fractures"] = *s.last_held->open_fractures;
+    if (s.last_held->broken_bonds) held["broken_bonds"] = *s.last_held->broken_bonds;
+    out["last_held"] = held;
+  }
   return out;
 }
 

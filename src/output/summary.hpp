@@ -101,6 +101,15 @@ struct FractureSummary {
   std::optional<int> rounds;             // with mesh.refine_tips: the rounds run, 1 when none refined
 };
 
+// A run that found no equilibrium: the last state that held (the last step or pass after which
+// no block was farther than its own size), as its message names it.
+struct LastHeldSummary {
+  std::string state;                               // "DDA step 28", "coupling iteration 3", "the blocks as built"
+  long long step = 0;                              // the step or pass; 0: the blocks as built
+  std::optional<std::vector<int>> open_fractures;  // ids; none measured (no traces): absent
+  std::optional<int> broken_bonds;                 // a model with bonds: broken by then
+};
+
 struct RunSummary {
   std::string title;
   std::string scenario;          // the scenario file as given
@@ -115,6 +124,7 @@ struct RunSummary {
   std::optional<FractureSummary> fractures;  // runs of a domain cut by fractures
   std::vector<NamedValue> timings;  // seconds per phase
   std::optional<double> time;       // transient runs: the time reached (s)
+  std::optional<LastHeldSummary> last_held;  // status "no equilibrium"
 };
 
 // The summary as JSON text, pretty-printed, full double precision.

@@ -92,7 +92,26 @@ CoupledRecorder::CoupledRecorder(const RunContext& context, const CoupledModel& 
   }
 }
 
-void CoupledRecorder::start() { context_.folder.write("scenario.toml", context_.scenario_text); }
+void CoupledRecorder::start() {
+  context_.folder.write("scenario.toml", context_.scenario_text);
+  hold(0);
+}
+
+void CoupledRecorder::hold(int iteration) {
+  held_ = HeldState{};
+  held_.step = iteration;
+  if (iteration > 0) held_.name = fmt::format("coupling iteration {}", iteration);
+  if (bonds_) held_.broken_bonds = static_cast<int>(model_.mechanics().bond_breaks().size());
+  if (!meter_) return;
+  if (iteration == 0) {  // the blocks as built, which no pass has measured
+    const dda::System& system = model_.mechanics();
+    take_open_fractures(meter_->measure(model_.block_polygons(), system.penetration_tolerance(), system.contacts(),
+                                        joint_laws_),
+                        held_);
+  } else if (fracture_state_) {
+    take_open_fractures(*fracture_state_, held_);
+  }
+}
 
 void CoupledRecorder::resume_from(const output::RunCheckpoint& saved, CoupledModel& model) {
   model.import_state({saved.mechanics, saved.coupling});
@@ -116,6 +135,7 @@ void CoupledRecorder::resume_from(const output::RunCheckpoint& saved, CoupledMod
   // The fractures as the last pass left them: a run resumed after its last pass (to write its
   // summary) measures no pass of its own.
   if (meter_ && iterations > 0) measure_fractures();
+  hold(iterations);  // the run went on from it: it held
   spdlog::info("resuming after coupling iteration {}", iterations);
   last_written_ = checkpoint_.written_iterations.empty() ? 0 : checkpoint_.written_iterations.back();
   // A run resumed after its last pass (its summary was not written) only writes it.
@@ -145,6 +165,7 @@ void CoupledRecorder::after_pass(const coupling::PassReport& r) {
   add_history_row(r);
   add_measures(r);
   if (meter_) fractures_.add_rows(r.iteration, r.time, *fracture_state_);
+  if (r.escaping.empty()) hold(r.iteration);
   if (follow_tips_) follow_tips(r);
   context_.report(report_pass(r));
   log_pass(r);

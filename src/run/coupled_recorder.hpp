@@ -21,6 +21,7 @@
 #include "run/bond_output.hpp"
 #include "run/coupled_model.hpp"
 #include "run/fracture_output.hpp"
+#include "run/no_equilibrium.hpp"
 #include "run/paraview_output.hpp"
 #include "run/runs.hpp"
 
@@ -70,6 +71,10 @@ class CoupledRecorder final : public coupling::PassObserver {
   // The fractures as the model's blocks are now (measured when not yet), or null for a
   // scenario that lists its blocks.
   const fractures::FractureState* measured_fractures();
+  // The last state that held: the last pass after which no block was farther than its own size
+  // (before the first: the blocks as built; resumed: the pass it resumed after), its open
+  // fractures and the bonds broken by then.
+  const HeldState& held_state() const { return held_; }
   // The fractures of the last finished pass, once measured (what the front end is shown).
   const std::optional<fractures::FractureState>& fracture_state() const { return fracture_state_; }
   // The cubic law's wedge tips in the fluid elements, the least resolved first (none without
@@ -93,6 +98,7 @@ class CoupledRecorder final : public coupling::PassObserver {
 
  private:
   void measure_fractures();
+  void hold(int iteration);
   void add_history_row(const coupling::PassReport& r);
   void add_measures(const coupling::PassReport& r);
   void follow_tips(const coupling::PassReport& r);
@@ -116,6 +122,7 @@ class CoupledRecorder final : public coupling::PassObserver {
   FractureOutput fractures_;
   std::optional<BondOutput> bonds_;  // a model with bonds: its breaks, by the pass they broke in
   std::optional<fractures::FractureState> fracture_state_;  // of the last finished pass
+  HeldState held_;
   int last_written_ = 0;
   int broken_in_pass_ = 0;  // bonds broken in the last pass (history.csv's broken_bonds)
   bool converged_ = false;

@@ -127,22 +127,20 @@ RunFailure fail_round(const Round& round, std::string message, bool with_range, 
 }
 
 // A load under which no equilibrium exists: the blocks that escape, where they are at the last
-// finished pass (which the summary, history and figures describe), and the fractures open
-// then, under the load the scenario drives the blocks with.
+// finished pass (which the summary, history and figures describe), and the fractures open and
+// bonds broken at the last pass that held, under the load the scenario drives the blocks with.
 RunFailure no_equilibrium_round(const Round& round, const std::vector<coupling::EscapingBlock>& escaping) {
-  const int held = round.model.iterations();
-  const std::string state = held > 0 ? fmt::format("coupling iteration {}", held) : "the blocks as built";
-  std::vector<int> open;
-  const std::optional<fractures::FractureState>& fractures = round.recorder.fracture_state();
-  if (fractures)
-    for (const fractures::FractureResult& r : fractures->fractures)
-      if (r.open) open.push_back(r.id);
-  std::string message =
-      describe_no_equilibrium(round.context.scenario, locate_escaping_blocks(escaping, round.model.block_polygons()),
-                              state, open, fractures.has_value(), round.context.folder);
+  const int kept = round.model.iterations();
+  HeldState held = round.recorder.held_state();
+  if (held.broken_bonds)
+    held.broken_bonds_later = static_cast<int>(round.model.mechanics().bond_breaks().size()) - *held.broken_bonds;
+  std::string message = describe_no_equilibrium(
+      round.context.scenario, locate_escaping_blocks(escaping, round.model.block_polygons()), held,
+      kept > 0 ? fmt::format("coupling iteration {}", kept) : "the blocks as built", round.context.folder);
   output::RunSummary summary = round.recorder.summary();
+  summary.last_held = summarise_held_state(held);
   try {
-    draw_round_figures(round, describe_status_for_figures(fmt::format("no equilibrium after pass {}", held), message));
+    draw_round_figures(round, describe_status_for_figures(fmt::format("no equilibrium after pass {}", kept), message));
   } catch (const std::exception& e) {
     spdlog::warn("the figures of the run without equilibrium could not be drawn: {}", e.what());
   }

@@ -25,6 +25,51 @@ namespace {
 using output::CsvTable;
 using geometry::Point;
 
+// A static run's last state that held: the last step after which no block was farther than
+// its own size. Its blocks and contacts are kept (where the scenario has traces to measure) so
+// that its fractures are measured only if the run ends without equilibrium.
+class HeldStep {
+ public:
+  HeldStep(const std::optional<fractures::FractureMeter>& meter, const dda::System& system)
+      : meter_(meter), bonded_(system.bond_count() > 0) {
+    keep(0, system);
+  }
+
+  // After each finished step: kept when no block is beyond its size.
+  void update(long long step, const dda::System& system) {
+    if (find_escaping_blocks(system).empty()) keep(step, system);
+  }
+
+  HeldState state(const coupling::JointApertureLaws& laws) const {
+    HeldState held;
+    held.step = step_;
+    if (step_ > 0) held.name = fmt::format("DDA step {}", step_);
+    if (bonded_) held.broken_bonds = broken_bonds_;
+    if (measures()) take_open_fractures(meter_->measure(polygons_, tolerance_, contacts_, laws), held);
+    return held;
+  }
+
+ private:
+  const std::optional<fractures::FractureMeter>& meter_;
+  bool bonded_;
+  long long step_ = 0;
+  int broken_bonds_ = 0;
+  std::vector<geometry::Polygon> polygons_;
+  std::vector<dda::ContactInfo> contacts_;
+  double tolerance_ = 0.0;
+
+  bool measures() const { return meter_ && !meter_->layout().traces.empty(); }
+  void keep(long long step, const dda::System& system) {
+    step_ = step;
+    broken_bonds_ = static_cast<int>(system.bond_breaks().size());
+    if (!measures()) return;
+    polygons_.clear();
+    for (int b = 0; b < system.block_count(); ++b) polygons_.push_back(system.polygon(b));
+    contacts_ = system.contacts();
+    tolerance_ = system.penetration_tolerance();
+  }
+};
+
 }  // namespace
 
 output::RunSummary run_mechanics(const RunContext& context) {
@@ -91,29 +136,32 @@ output::RunSummary run_mechanics(const RunContext& context) {
                            {fmt::format("DDA step {}", last_output->step), status});
   };
   // A run that stops before its end: its figure of the last output step says how it stopped.
-  const auto stop = [&](RunStatus status, std::string message, const std::string& figure_status) {
+  const auto stop = [&](RunStatus status, std::string message, const std::string& figure_status,
+                        std::optional<output::LastHeldSummary> last_held = std::nullopt) {
     write_tables();
     try {
       draw_figure(figure_status);
     } catch (const std::exception& e) {
       spdlog::warn("the figure of the stopped run could not be drawn: {}", e.what());
     }
-    return RunFailure(status, std::move(message), model.summary());
+    output::RunSummary summary = model.summary();
+    summary.last_held = std::move(last_held);
+    return RunFailure(status, std::move(message), std::move(summary));
   };
+  HeldStep held_step(meter, system);
   // A static analysis whose blocks went farther than their own size and still move has found no
-  // equilibrium under its load: named as such, with the state of the last finished step.
+  // equilibrium under its load: named as such, with the blocks of the last finished step and
+  // the fractures and bonds of the last that held.
   const auto no_equilibrium = [&](const std::vector<coupling::EscapingBlock>& escaping) {
-    std::vector<int> open;
-    if (fracture_state)
-      for (const fractures::FractureResult& r : fracture_state->fractures)
-        if (r.open) open.push_back(r.id);
+    HeldState held = held_step.state(joint_laws);
+    if (held.broken_bonds) held.broken_bonds_later = static_cast<int>(system.bond_breaks().size()) - *held.broken_bonds;
     std::vector<geometry::Polygon> polygons;
     for (int b = 0; b < system.block_count(); ++b) polygons.push_back(system.polygon(b));
-    const std::string message =
-        describe_no_equilibrium(s, locate_escaping_blocks(escaping, polygons), fmt::format("DDA step {}", model.steps()),
-                                open, fracture_state.has_value(), context.folder);
+    const std::string message = describe_no_equilibrium(s, locate_escaping_blocks(escaping, polygons), held,
+                                                        fmt::format("DDA step {}", model.steps()), context.folder);
     return stop(RunStatus::no_equilibrium, message,
-                describe_status_for_figures(fmt::format("no equilibrium at step {}", model.steps()), message));
+                describe_status_for_figures(fmt::format("no equilibrium at step {}", model.steps()), message),
+                summarise_held_state(held));
   };
   const bool static_analysis = m.analysis == dda::Analysis::static_;
   dda::StepReport last_step;
@@ -127,6 +175,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
                    fmt::format("interrupted at step {}", model.steps()));
       const dda::StepReport r = model.step();
       last_step = r;
+      if (m.analysis == dda::Analysis::static_) held_step.update(model.steps(), system);
       fracture_state.reset();  // no longer the blocks' state: measured again at an output step
       const long long step = model.steps();
       std::vector<std::string> row{CsvTable::cell(step), CsvTable::cell(r.time), CsvTable::cell(r.time_step),

@@ -1,6 +1,7 @@
 #include "run/no_equilibrium.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -97,31 +98,61 @@ std::string describe_driving_load(const scenario::Scenario& s) {
   return text;
 }
 
+output::LastHeldSummary summarise_held_state(const HeldState& held) {
+  output::LastHeldSummary summary{held.name, held.step, std::nullopt, held.broken_bonds};
+  if (held.fractures_known) summary.open_fractures = held.open_fractures;
+  return summary;
+}
+
+void take_open_fractures(const fractures::FractureState& state, HeldState& held) {
+  held.open_fractures.clear();
+  held.fractures_known = !state.fractures.empty();
+  for (const fractures::FractureResult& r : state.fractures)
+    if (r.open) held.open_fractures.push_back(r.id);
+}
+
+namespace {
+
+// "fractures 2, 5 were open and 14 bonds had broken", what the last state that held knew of.
+std::string describe_held_fractures(const HeldState& held) {
+  std::vector<std::string> parts;
+  if (held.fractures_known) {
+    std::vector<std::string> ids;
+    for (int f : held.open_fractures) ids.push_back(std::to_string(f));
+    parts.push_back(ids.empty() ? "no fracture was open"
+                                : fmt::format("fracture{} {} {} open", ids.size() == 1 ? "" : "s",
+                                              output::list_items(ids, nullptr, ""), ids.size() == 1 ? "was" : "were"));
+  }
+  if (held.broken_bonds) {
+    const int n = *held.broken_bonds;
+    const int later = held.broken_bonds_later;
+    std::string bonds;
+    if (n == 0)
+      bonds = later == 0 ? "no bond had broken"
+                         : fmt::format("no bond had broken ({} broke after it: fractures.csv's bond rows)", later);
+    else
+      bonds = fmt::format("{} bond{} had broken (fractures.csv's bond rows to then{})", n, n == 1 ? "" : "s",
+                          later == 0 ? "" : fmt::format("; {} more after it", later));
+    parts.push_back(bonds);
+  }
+  if (parts.empty()) return "";
+  return fmt::format("; in the last state that held ({}) {}", held.name, fmt::join(parts, " and "));
+}
+
+}  // namespace
+
 std::string describe_no_equilibrium(const scenario::Scenario& s, std::span<const EscapedBlock> blocks,
-                                    const std::string& held, std::span<const int> open_fractures,
-                                    bool fractures_known, const output::RunFolder& folder) {
+                                    const HeldState& held, const std::string& kept, const output::RunFolder& folder) {
   std::vector<std::string> named;
   for (const EscapedBlock& b : blocks)
     named.push_back(fmt::format("block {} at ({:.4g}, {:.4g}) (moved {:.3g} m, size {:.3g} m)", b.escape.block,
                                 b.centroid.x, b.centroid.y, b.escape.distance, b.escape.size));
-  std::string fractures;
-  if (fractures_known) {
-    if (open_fractures.empty()) {
-      fractures = "; in the last state that held (" + held + ") no fracture was open";
-    } else {
-      std::vector<std::string> ids;
-      for (int f : open_fractures) ids.push_back(std::to_string(f));
-      fractures = fmt::format("; in the last state that held ({}) fracture{} {} {} open", held,
-                              ids.size() == 1 ? "" : "s", output::list_items(ids, nullptr, ""),
-                              ids.size() == 1 ? "was" : "were");
-    }
-  }
   return fmt::format(
       "no mechanical equilibrium under {}: {} block(s) moved farther than their own size (the square root of their "
       "area) and the load still moves them: {}{}; the load exceeds what the blocks' weight, their contacts and the "
       "supports can hold (summary.json, history.csv and the figures are of {})",
-      describe_driving_load(s), blocks.size(), output::list_items(named, &folder, "escaping_blocks.txt"), fractures,
-      held);
+      describe_driving_load(s), blocks.size(), output::list_items(named, &folder, "escaping_blocks.txt"),
+      describe_held_fractures(held), kept);
 }
 
 }  // namespace hydrodda::run

@@ -2,17 +2,21 @@
 // The breach named as such: a load under which no mechanical equilibrium exists (a layer lifts
 // off its base, blocks are thrown) ends a run with RunStatus::no_equilibrium ("no equilibrium"
 // in summary.json, exit 1), whose message names the load that drives it (the scenario's keys
-// and values), the blocks that escape (ids and centroids) and the fractures open at the last
-// state that held; summary.json, history.csv and the figures are of that state.
+// and values), the blocks that escape (ids and centroids), and the fractures open and the bonds
+// broken at the last state that held (summary.json's `last_held`); summary.json, history.csv
+// and the figures are of the last state that finished.
 
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "coupling/pass_report.hpp"
 #include "dda/system.hpp"
+#include "fractures/fracture_results.hpp"
 #include "geometry/polygon.hpp"
 #include "output/run_folder.hpp"
+#include "output/summary.hpp"
 #include "scenario/scenario.hpp"
 
 namespace hydrodda::run {
@@ -38,12 +42,32 @@ std::vector<EscapedBlock> locate_escaping_blocks(std::span<const coupling::Escap
 // "and"), then mechanics.traction and mechanics.load entries. "gravity alone" without any.
 std::string describe_driving_load(const scenario::Scenario& s);
 
+// The last state that held: the last DDA step (or coupling iteration) after which no block was
+// farther than its own size, and what it held of the fractures: those open then (measured
+// over the scenario's traces; none to measure: `fractures_known` false) and, on a model with
+// bonds, how many had broken by then (the cracks broken from the start not counted).
+struct HeldState {
+  std::string name = "the blocks as built";  // "DDA step 28", "coupling iteration 3"
+  long long step = 0;                         // the step or pass; 0: the blocks as built
+  bool fractures_known = false;
+  std::vector<int> open_fractures;
+  std::optional<int> broken_bonds;            // a model with bonds
+  int broken_bonds_later = 0;                 // broken after it, by the state the run kept
+};
+
+// summary.json's `last_held`, as the message tells it.
+output::LastHeldSummary summarise_held_state(const HeldState& held);
+
+// The ids of the fractures open (over at least 9/10 of their length) in `state`; none measured
+// (a scenario without traces) is not known.
+void take_open_fractures(const fractures::FractureState& state, HeldState& held);
+
 // "no mechanical equilibrium under <load>: 2 block(s) moved farther than their own size ...:
-// block 3 at (1.5, 2.4) (moved 1.2 m, size 1 m), ...; the last state that held (<held>) has
-// fractures 2, 5 open; ...". `open_fractures`: ids open then (none known: `fractures_known`
-// false). Long lists name five and go whole to escaping_blocks.txt in `folder`.
+// block 3 at (1.5, 2.4) (moved 1.2 m, size 1 m), ...; in the last state that held (<held>)
+// fractures 2, 5 were open and 14 bonds had broken, 3 more after it; ... (summary.json, history.csv and the
+// figures are of <kept>)". `kept`: the state the run folder holds, the last that finished.
+// Long lists name five and go whole to escaping_blocks.txt in `folder`.
 std::string describe_no_equilibrium(const scenario::Scenario& s, std::span<const EscapedBlock> blocks,
-                                    const std::string& held, std::span<const int> open_fractures,
-                                    bool fractures_known, const output::RunFolder& folder);
+                                    const HeldState& held, const std::string& kept, const output::RunFolder& folder);
 
 }  // namespace hydrodda::run

@@ -52,6 +52,7 @@ struct RunResult {
   std::string contacts;                           // the last pass's contacts_NNNN.vtu
   std::string blocks;                             // the last pass's blocks_NNNN.vtu
   std::string fluid;                              // the last pass's fluid_NNNN.vtu
+  std::vector<std::vector<std::string>> fractures;  // fractures.csv, header first (none: empty)
 };
 
 // The normal force each interface of a block column carries, from a contacts_NNNN.vtu: the
@@ -88,6 +89,7 @@ inline RunResult run_and_read(const fs::path& scenario, const std::string& name,
   RunResult r;
   if (std::ifstream in(out / "summary.json"); in) r.summary = nlohmann::json::parse(in);
   r.history = read_csv(out / "history.csv");
+  if (fs::exists(out / "fractures.csv")) r.fractures = read_csv(out / "fractures.csv");
   if (r.summary.contains("iterations")) {
     char number[16];
     std::snprintf(number, sizeof number, "_%04d.vtu", r.summary["iterations"].get<int>());

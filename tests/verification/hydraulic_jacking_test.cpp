@@ -27,6 +27,31 @@ using namespace hydrodda::testing::coupled;
 
 namespace {
 
+// A run without equilibrium names the last pass that held (the last after which no block was
+// beyond its size; before the first, the blocks as built) and the fractures open then, as
+// summary.json's `last_held` and fractures.csv's rows of that pass have them (exact).
+void expect_last_held_told(const RunResult& r, const std::string& message) {
+  ASSERT_TRUE(r.summary.contains("last_held")) << message;
+  const auto& held = r.summary["last_held"];
+  const int pass = held["step"];
+  EXPECT_LT(pass, r.summary["iterations"].get<int>()) << "the pass that threw the block did not hold";
+  EXPECT_EQ(held["state"], pass == 0 ? std::string("the blocks as built") : "coupling iteration " + std::to_string(pass));
+  ASSERT_TRUE(held.contains("open_fractures")) << "the jacked block's fracture is measured";
+  std::vector<int> open_ids = held["open_fractures"];
+  std::string told = "; in the last state that held (" + held["state"].get<std::string>() + ") ";
+  if (open_ids.empty()) told += "no fracture was open";
+  for (std::size_t i = 0; i < open_ids.size(); ++i)
+    told += (i == 0 ? (open_ids.size() == 1 ? "fracture " : "fractures ") : ", ") + std::to_string(open_ids[i]);
+  EXPECT_NE(message.find(told), std::string::npos) << told << " in " << message;
+  if (pass == 0 || r.fractures.empty()) return;
+  const int step = column_of(r.fractures[0], "step"), id = column_of(r.fractures[0], "fracture");
+  const int open = column_of(r.fractures[0], "open");
+  std::vector<int> rows_open;
+  for (std::size_t i = 1; i < r.fractures.size(); ++i)
+    if (std::stoi(r.fractures[i][step]) == pass && r.fractures[i][open] == "1") rows_open.push_back(std::stoi(r.fractures[i][id]));
+  EXPECT_EQ(open_ids, rows_open) << "fractures.csv's rows of coupling iteration " << pass;
+}
+
 TEST(CoupledVerification, HydraulicJackingStartsAtTheForceBalance) {
   // The fracture at p = rho_w g H (overpressure, h_ref = 0 on the top) lifts the upper block
   // with rho_w g H L per metre against its weight rho_r g h L: it lifts when
@@ -35,7 +60,8 @@ TEST(CoupledVerification, HydraulicJackingStartsAtTheForceBalance) {
   // Closed (H = 0.90 and 0.96 H*): the block only closes the gap and settles elastically, its
   // vertical displacement under 1e-4 m, and the loop converges. Open (1.04 and 1.10 H*): no
   // equilibrium; the passes, stepping on towards rest, throw the block up by more than its own
-  // size within the file's 5, and the run ends saying so and naming it. (The threshold itself,
+  // size within the file's 5, and the run ends saying so, naming it and the fractures open in
+  // the last pass that held (at 1.04 H*, the third). (The threshold itself,
   // within 0.5% of H* on every mesh: the test below.)
   const fs::path file = kVerification / "coupled_hydraulic_jacking.toml";
   const std::string text = read_text(file);
@@ -62,6 +88,7 @@ TEST(CoupledVerification, HydraulicJackingStartsAtTheForceBalance) {
       std::snprintf(load, sizeof load, "head = %.4g m", ratio * h_star);
       EXPECT_NE(message.find(load), std::string::npos) << message;
       EXPECT_NE(message.find("block 1 at ("), std::string::npos) << message;
+      expect_last_held_told(r, message);
     }
   }
 }
