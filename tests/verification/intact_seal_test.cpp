@@ -7,7 +7,7 @@
 // the effective horizontal stress across it, σ'h(z) = K0 (ρ_r − ρ_w) g z, at its middle
 // (z = 1006.5 m): 0.5 × 1400 × 9.81 × 1006.5 = 6.912 MPa, an overpressure head of 704.6 m.
 // - 54.6 m of head below it (650 m, 0.54 MPa under σ'h) the flaw stays shut: its faces move
-//   apart by less than the penetration tolerance (2e-7 m; measured 5.1e-8 m);
+//   apart by less than the penetration tolerance (2e-7 m; measured −7.3e-8 m);
 // - 45.4 m above it (750 m, 0.45 MPa over σ'h) it opens: by more than 0.1 mm at its middle
 //   (measured 0.18 mm: the scale of an opening under a net pressure Δp over a length a,
 //   Δp a (1 − ν²)/E = 0.13 mm, where the shut flaw's is under 2e-7 m);
