@@ -4,7 +4,7 @@
 # 1,000 blocks over about 2 x 10^5 triangles, 3 passes of 20 DDA steps) with the real program,
 # and prints its size, each pass's seconds of porosity, flow (with whether it factored afresh or
 # ran CG on the kept factor) and mechanics, the seconds of each phase from summary.json, and
-# the run's peak memory (/usr/bin/time -v). The issue-29 seal, 10,100 blocks over about 10^6
+# the run's peak memory (/usr/bin/time -v). The scale benchmark's seal (docs/performance.md), 10,100 blocks over about 10^6
 # triangles, 10 passes:
 #   benchmarks/run_seal.sh build --columns 100 --beds 99 --mesh-size 0.07 --tilt 1 --joint-sets --passes 10
 set -euo pipefail
