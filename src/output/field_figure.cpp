@@ -278,25 +278,27 @@ ArrowKey draw_flux_arrows(cairo_t* cr, const Frame& fr, const geometry::Box& box
   return key;
 }
 
-// Title (shrunk to the page when long), then the quantity, or a warning in red.
-void draw_titles(cairo_t* cr, double width, const FieldFigure& f) {
-  cairo_set_font_size(cr, 14);
-  const double title_width = text_width(cr, f.title);
-  if (title_width > width - 20) cairo_set_font_size(cr, 14 * (width - 20) / title_width);
-  draw_text(cr, f.title, 0.5 * width, 8, 0.5, 0.0);
+// One line centred at height y in a font of `size`, shrunk to the page when it is longer (a
+// run's status in a subtitle may be long).
+void draw_line_within(cairo_t* cr, const std::string& line, double width, double size, double y) {
+  cairo_set_font_size(cr, size);
+  const double line_width = text_width(cr, line);
+  if (line_width > width - 20) cairo_set_font_size(cr, size * (width - 20) / line_width);
+  draw_text(cr, line, 0.5 * width, y, 0.5, 0.0);
   cairo_set_font_size(cr, 11);
+}
+
+// Title, then the quantity, or a warning in red: each shrunk to the page when long.
+void draw_titles(cairo_t* cr, double width, const FieldFigure& f) {
+  draw_line_within(cr, f.title, width, 14, 8);
   if (!f.warning.empty()) {
     cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
     cairo_set_source_rgb(cr, 0.8, 0.0, 0.0);
-    const std::string line = f.subtitle.empty() ? f.warning : f.subtitle + ": " + f.warning;
-    const double line_width = text_width(cr, line);  // a run's status may be long: shrunk to the page
-    if (line_width > width - 20) cairo_set_font_size(cr, 11 * (width - 20) / line_width);
-    draw_text(cr, line, 0.5 * width, 28, 0.5, 0.0);
-    cairo_set_font_size(cr, 11);
+    draw_line_within(cr, f.subtitle.empty() ? f.warning : f.subtitle + ": " + f.warning, width, 11, 28);
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   } else if (!f.subtitle.empty()) {
-    draw_text(cr, f.subtitle, 0.5 * width, 28, 0.5, 0.0);
+    draw_line_within(cr, f.subtitle, width, 11, 28);
   }
 }
 
