@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <set>
 
 namespace hydrodda::coupling {
 
@@ -60,8 +61,10 @@ Point FloatSecant::shift(const std::vector<int>& group, Point start, Point end, 
 }
 
 void FloatSecant::keep_only(const std::vector<std::vector<int>>& free_now) {
-  for (auto it = last_.begin(); it != last_.end();)
-    it = std::find(free_now.begin(), free_now.end(), it->first) == free_now.end() ? last_.erase(it) : std::next(it);
+  // A set, not a scan of the list per remembered group: a seal's free blocks may be thousands
+  // of groups.
+  const std::set<std::vector<int>> free(free_now.begin(), free_now.end());
+  std::erase_if(last_, [&](const auto& entry) { return !free.contains(entry.first); });
 }
 
 }  // namespace hydrodda::coupling
