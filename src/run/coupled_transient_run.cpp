@@ -23,6 +23,7 @@
 #include "run/coupled_transient_fractures.hpp"
 #include "run/coupled_transient_stepper.hpp"
 #include "run/figures.hpp"
+#include "run/no_equilibrium.hpp"
 #include "run/paraview_output.hpp"
 #include "run/runs.hpp"
 #include "run/transient_flow.hpp"
@@ -100,6 +101,7 @@ class CoupledTransientRecorder {
     }
     fractures_.resume(record_.steps, record_.output_times, std::move(counts));
     if (bonds_) bonds_->continue_in_time(model_.mechanics(), broken_per_step(), record_.times, record_.output_times);
+    hold(record_.steps, record_.time);  // the run went on from it: it held
   }
   void record(const StepRecord& r);
   void write_fields() {
@@ -127,12 +129,16 @@ class CoupledTransientRecorder {
   }
   void draw(const std::string& status) const;
   const std::optional<fractures::FractureState>& fracture_state() const { return fractures_.state(); }
+  // The last state that held: the last time step after which no block was farther than its own
+  // size (step 0: the blocks as built), the fractures open and the bonds broken by then.
+  const HeldState& held_state() const { return held_; }
 
  private:
   void write_tables() const;
   std::vector<std::string> history_columns() const;
   // history.csv's broken_bonds of each step recorded so far (the row of t = 0 first).
   std::vector<int> broken_per_step() const;
+  void hold(int step, double time);
 
   const RunContext& context_;
   const CoupledModel& model_;
@@ -141,7 +147,16 @@ class CoupledTransientRecorder {
   FracturesInTime fractures_;
   std::optional<BondOutput> bonds_;  // a model with bonds: its breaks, by the time step they broke in
   output::CoupledTransientCheckpoint record_;
+  HeldState held_;
 };
+
+void CoupledTransientRecorder::hold(int step, double time) {
+  held_ = HeldState{};
+  held_.step = step;
+  if (step > 0) held_.name = fmt::format("time step {}, t = {:g} s", step, time);
+  if (bonds_) held_.broken_bonds = static_cast<int>(model_.mechanics().bond_breaks().size());
+  if (const auto& state = fractures_.state()) take_open_fractures(*state, held_);
+}
 
 std::vector<int> CoupledTransientRecorder::broken_per_step() const {
   std::vector<int> counts;
@@ -174,6 +189,7 @@ void CoupledTransientRecorder::record(const StepRecord& r) {
   // as a coupled run's at the pass); only a step that converged gets here.
   const int broken = bonds_ ? bonds_->add_breaks(r.step, model_.mechanics(), fractures_.output(), r.time) : 0;
   fractures_.record(r.step, r.time);
+  if (find_escaping_blocks(model_.mechanics()).empty()) hold(r.step, r.time);
   if (fractures_.measured()) {
     const FractureCounts& c = fractures_.counts().back();
     for (std::string& cell : fracture_count_cells(c)) row.push_back(std::move(cell));
@@ -295,6 +311,37 @@ void report_step(const RunContext& context, const StepRecord& r) {
   context.report(report);
 }
 
+// A step cut to the floor whose last try threw blocks farther than their own size in its first
+// iteration: no equilibrium under the loads at its end (docs/output.md, "A run that found no
+// equilibrium"). The run folder
+// holds the last step that converged (`summary`'s); the message names the step, its load then,
+// the blocks where its last try left them and the last state that held.
+RunFailure end_without_equilibrium(const RunContext& context, const CoupledModel& model,
+                                   const CoupledTransientStepper& stepper, const CoupledTransientRecorder& recorder,
+                                   output::RunSummary summary) {
+  const StepFailure& failed = stepper.failed_step();
+  HeldState held = recorder.held_state();
+  if (held.broken_bonds)
+    held.broken_bonds_later = static_cast<int>(model.mechanics().bond_breaks().size()) - *held.broken_bonds;
+  const std::string kept =
+      stepper.steps() > 0 ? fmt::format("time step {}, t = {:g} s", stepper.steps(), stepper.time()) : "t = 0";
+  const double end = failed.time + failed.length;
+  std::string message =
+      fmt::format("time step {} from t = {:g} s to {:g} s ({} cut(s); half of it would be under the floor of {:g} s): ",
+                  failed.step, failed.time, end, failed.cuts, make_step_control(context.scenario).floor) +
+      describe_no_equilibrium(context.scenario, failed.escaped, held,
+                              fmt::format("{}; the blocks named are where the last try of time step {} left them", kept,
+                                          failed.step),
+                              context.folder, end);
+  summary.last_held = summarise_held_state(held);
+  try {
+    recorder.draw(describe_status_for_figures(fmt::format("no equilibrium after t = {:g} s", stepper.time()), message));
+  } catch (const std::exception& e) {
+    spdlog::warn("the figures of the run without equilibrium could not be drawn: {}", e.what());
+  }
+  return RunFailure(RunStatus::no_equilibrium, std::move(message), std::move(summary));
+}
+
 // The model of a run, or of a run continued from its checkpoint at the step it saved.
 std::unique_ptr<CoupledModel> build_model(const RunContext& context) {
   auto model = std::make_unique<CoupledModel>(context.scenario, context.mesh_cache);
@@ -367,6 +414,11 @@ output::RunSummary run_coupled_transient(const RunContext& context) {
   if (const auto& state = recorder.fracture_state())
     summary.fractures = summarise_fractures(*state, fracture_type_names(s));
   summary.converged = !stepper.failed();
+  if (stepper.failed() && !stepper.failed_step().escaped.empty()) {
+    recorder.write_fields();
+    recorder.save_checkpoint(stepper, true);
+    throw end_without_equilibrium(context, *model, stepper, recorder, std::move(summary));
+  }
   if (stepper.failed()) {
     summary.message = stepper.failure();
     spdlog::warn("{}", stepper.failure());

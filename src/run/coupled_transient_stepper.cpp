@@ -30,36 +30,67 @@ class StepObserver final : public coupling::PassObserver {
   const std::function<bool()>& stop_requested_;
 };
 
-// How one attempt at a step ended: converged, or why not.
+// How one attempt at a step ended: converged, or why not; the blocks it threw farther than
+// their own size, where it left them, and in which of its iterations (1: the first).
 struct Attempt {
   bool converged = false;
   bool interrupted = false;
-  std::string why;
+  std::string why{};
+  std::vector<EscapedBlock> escaped{};
+  int escaped_in = 0;
 };
+
+// Blocks thrown in iteration `iteration` of a try. Only the first iteration's heads are the
+// step's loads on the blocks as the last step left them; a later one's carry the blocks' own
+// change of volume fed back (a gap the first iteration closed, its water squeezed undrained),
+// which can throw blocks that a converged step holds: the jacked block of jacking_in_time.toml
+// at 0.96 H* on steps of 1 s is pulled down 5e-5 m, closing its gap, in iteration 1 and thrown
+// up 4.4 m in iteration 2 (docs/studies/2026-11-30-escape-in-time.md).
+Attempt escaped_attempt(std::vector<EscapedBlock> escaped, int iteration, const std::string& then) {
+  std::string why = iteration == 1 ? "blocks escaped beyond their own size in its first iteration"
+                                   : fmt::format("blocks escaped beyond their own size in its iteration {}, after the "
+                                                 "first held them (the heads of a later iteration carry the blocks' "
+                                                 "own change of volume fed back)",
+                                                 iteration);
+  if (!then.empty()) why += fmt::format(" (and then: {})", then);
+  return {.why = std::move(why), .escaped = std::move(escaped), .escaped_in = iteration};
+}
 
 Attempt try_step(CoupledModel& model, StepObserver& observer, double time, double length) {
   const scenario::Scenario& s = model.scenario();
   model.begin_time_step(time, length);
+  const int before = model.iterations();
   coupling::LoopResult result;
   try {
-    result = model.run({model.iterations() + s.coupling.max_iterations, std::nullopt}, observer);
+    result = model.run({before + s.coupling.max_iterations, std::nullopt}, observer);
   } catch (const coupling::PassInterrupted&) {
-    return {false, true, ""};
+    return {.interrupted = true};
   } catch (const std::exception& e) {
+    // A DDA step or flow solve that fails while blocks fly off is their escape, as in a steady
+    // run (the step cut 40 times as they fly, the flow of a layer lifted off its base).
+    std::vector<EscapedBlock> escaped =
+        locate_escaping_blocks(model.loop().blocks_beyond_their_size(), model.block_polygons());
+    if (escaped.empty()) {
+      model.abandon_pass();
+      return {.why = e.what()};
+    }
+    Attempt attempt = escaped_attempt(std::move(escaped), model.iterations() + 1 - before, e.what());
     model.abandon_pass();
-    return {false, false, e.what()};
+    return attempt;
   }
   switch (result.end) {
-    case coupling::LoopEnd::converged: return {true, false, ""};
-    case coupling::LoopEnd::stop_requested: return {false, true, ""};
-    case coupling::LoopEnd::diverging: return {false, false, "its iterations diverged"};
-    case coupling::LoopEnd::escaping: return {false, false, "blocks escaped beyond their own size"};
+    case coupling::LoopEnd::converged: return {.converged = true};
+    case coupling::LoopEnd::stop_requested: return {.interrupted = true};
+    case coupling::LoopEnd::diverging: return {.why = "its iterations diverged"};
+    case coupling::LoopEnd::escaping:
+      return escaped_attempt(locate_escaping_blocks(result.last_pass->escaping, model.block_polygons()),
+                             result.last_pass->iteration - before, "");
     default: {
       const coupling::PassReport& r = observer.last;
-      return {false, false,
-              fmt::format("its iterations did not converge in {} (coupling.max_iterations; head change {:.3e}, "
-                          "displacement change {:.3e}, tolerance {:g})",
-                          s.coupling.max_iterations, r.head_change, r.displacement_change, s.coupling.tolerance)};
+      return {.why = fmt::format("its iterations did not converge in {} (coupling.max_iterations; head change {:.3e}, "
+                                 "displacement change {:.3e}, tolerance {:g})",
+                                 s.coupling.max_iterations, r.head_change, r.displacement_change,
+                                 s.coupling.tolerance)};
     }
   }
 }
@@ -106,6 +137,10 @@ CoupledTransientStepper::Outcome CoupledTransientStepper::step(const std::functi
   }
   if (!attempt.converged) {
     failed_ = true;
+    // Blocks the step's own load throws, in its first iteration, have no equilibrium under it;
+    // thrown later, by heads the iterations fed back, they end the run not converged.
+    if (attempt.escaped_in != 1) attempt.escaped.clear();
+    failed_step_ = {position_.steps + 1, time, length, cuts, attempt.why, std::move(attempt.escaped)};
     failure_ = fmt::format("not converged at t = {:g} s: the step from there failed at {:g} s after {} cut(s), and "
                            "half of it would be under the floor of {:g} s (flow.transient.time_step / 2^{}); the "
                            "last try: {}",

@@ -11,6 +11,7 @@
 #include "coupling/pass_report.hpp"
 #include "run/coupled_model.hpp"
 #include "run/coupled_transient.hpp"
+#include "run/no_equilibrium.hpp"
 
 namespace hydrodda::run {
 
@@ -31,6 +32,19 @@ struct StepRecord {
   double time = 0.0, length = 0.0;
   int passes = 0, cuts = 0;
   coupling::PassReport last;
+};
+
+// A step that failed at the floor: the time step it would have been, where it started, its last
+// try's length, the cuts before it and why that try failed; `escaped`, the blocks that try's
+// first iteration left farther than their own size (the step's loads have no equilibrium for
+// them), farthest first, where it left them; none when it failed otherwise, or threw them only
+// in a later iteration (coupled_transient_stepper.cpp).
+struct StepFailure {
+  int step = 0;
+  double time = 0.0, length = 0.0;
+  int cuts = 0;
+  std::string why;
+  std::vector<EscapedBlock> escaped;
 };
 
 class CoupledTransientStepper {
@@ -55,6 +69,8 @@ class CoupledTransientStepper {
   bool finished() const { return failed_ || position_.time >= end_time_; }
   bool failed() const { return failed_; }
   const std::string& failure() const { return failure_; }
+  // What failed, once failed(): the step, and the blocks it threw where they escaped.
+  const StepFailure& failed_step() const { return failed_step_; }
   const StepPosition& position() const { return position_; }
   double time() const { return position_.time; }
   int steps() const { return position_.steps; }
@@ -76,6 +92,7 @@ class CoupledTransientStepper {
   CoupledState saved_;
   bool failed_ = false;
   std::string failure_;
+  StepFailure failed_step_;
 };
 
 // summary.json's content for a coupled transient model at `time` after `steps` steps: the

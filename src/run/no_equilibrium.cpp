@@ -36,43 +36,46 @@ std::vector<EscapedBlock> locate_escaping_blocks(std::span<const coupling::Escap
 
 namespace {
 
-// A load's value: a constant as it is, a table by the highest value it reaches.
-std::string describe_table(const numerics::TimeTable& table, std::size_t column = 0) {
-  return table.is_constant() ? fmt::format("{:.4g}", table.value(0.0, column))
-                             : fmt::format("up to {:.4g} (a table)", table.highest(column));
+// A load's value: a constant as it is, a table by the highest value it reaches, or by its value
+// at `time` where given.
+std::string describe_table(const numerics::TimeTable& table, std::optional<double> time, std::size_t column = 0) {
+  if (table.is_constant()) return fmt::format("{:.4g}", table.value(0.0, column));
+  if (time) return fmt::format("{:.4g}", table.value(*time, column));
+  return fmt::format("up to {:.4g} (a table)", table.highest(column));
 }
 
 // A traction's value along its boundary: one value, or "a to b" where it varies.
-std::string describe_along(const numerics::TimeTable& from, const numerics::TimeTable& to) {
-  const std::string a = describe_table(from), b = describe_table(to);
+std::string describe_along(const numerics::TimeTable& from, const numerics::TimeTable& to, std::optional<double> time) {
+  const std::string a = describe_table(from, time), b = describe_table(to, time);
   return a == b ? a : a + " to " + b;
 }
 
 
 // A flow boundary's fixed value as the scenario writes it; a table by the highest value it reaches.
-std::string describe_boundary(const scenario::FlowBoundaryCondition& b) {
-  const std::string value = describe_table(b.value);
+std::string describe_boundary(const scenario::FlowBoundaryCondition& b, std::optional<double> time) {
+  const std::string value = describe_table(b.value, time);
   return b.kind == hydro::BoundaryKind::head ? fmt::format("\"{}\" head = {} m", b.name, value)
                                              : fmt::format("\"{}\" pressure = {} Pa", b.name, value);
 }
 
 // The fluid pressure's drive: the head and pressure boundaries, the highest pressure head
-// (p/ρg, or h) first, the one that lifts, as one item.
-std::vector<std::string> describe_flow_loads(const scenario::Scenario& s) {
+// (p/ρg, or h; a table's highest, or its value at `time`) first, the one that lifts, as one item.
+std::vector<std::string> describe_flow_loads(const scenario::Scenario& s, std::optional<double> time) {
   std::vector<const scenario::FlowBoundaryCondition*> fixed;
   if (!s.flow) return {};
   for (const scenario::FlowBoundaryCondition& b : s.flow->boundaries)
     if (b.kind != hydro::BoundaryKind::flux) fixed.push_back(&b);
   const double rho_g = s.flow->fluid_density * 9.81;
-  const auto height = [rho_g](const scenario::FlowBoundaryCondition* b) {
-    return b->kind == hydro::BoundaryKind::head ? b->value.highest() : b->value.highest() / rho_g;
+  const auto height = [rho_g, time](const scenario::FlowBoundaryCondition* b) {
+    const double value = time ? b->value.value(*time) : b->value.highest();
+    return b->kind == hydro::BoundaryKind::head ? value : value / rho_g;
   };
   std::stable_sort(fixed.begin(), fixed.end(), [&](auto* a, auto* b) { return height(a) > height(b); });
   // The highest (all of them where several share it) drive; the rest are what they drive against.
   std::string driving, against;
   for (const scenario::FlowBoundaryCondition* b : fixed) {
     std::string& text = height(b) == height(fixed.front()) ? driving : against;
-    text += (text.empty() ? "" : " and ") + describe_boundary(*b);
+    text += (text.empty() ? "" : " and ") + describe_boundary(*b, time);
   }
   if (driving.empty()) return {};
   return {fmt::format("flow.boundary {}{}", driving, against.empty() ? "" : ", against " + against)};
@@ -80,15 +83,16 @@ std::vector<std::string> describe_flow_loads(const scenario::Scenario& s) {
 
 }  // namespace
 
-std::string describe_driving_load(const scenario::Scenario& s) {
-  std::vector<std::string> loads = describe_flow_loads(s);
+std::string describe_driving_load(const scenario::Scenario& s, std::optional<double> time) {
+  std::vector<std::string> loads = describe_flow_loads(s, time);
   if (s.mechanics) {
     for (const scenario::Traction& t : s.mechanics->tractions)
       loads.push_back(fmt::format("mechanics.traction \"{}\" normal = {} Pa, shear = {} Pa", t.boundary,
-                                  describe_along(t.normal, t.normal_end), describe_along(t.shear, t.shear_end)));
+                                  describe_along(t.normal, t.normal_end, time),
+                                  describe_along(t.shear, t.shear_end, time)));
     for (const scenario::PointLoad& l : s.mechanics->loads)
       loads.push_back(fmt::format("mechanics.load at ({:.4g}, {:.4g}) force = [{}, {}] N/m", l.point.x, l.point.y,
-                                  describe_table(l.force, 0), describe_table(l.force, 1)));
+                                  describe_table(l.force, time, 0), describe_table(l.force, time, 1)));
   }
   if (loads.empty()) return "gravity alone";
   std::string text;
@@ -142,16 +146,18 @@ std::string describe_held_fractures(const HeldState& held) {
 }  // namespace
 
 std::string describe_no_equilibrium(const scenario::Scenario& s, std::span<const EscapedBlock> blocks,
-                                    const HeldState& held, const std::string& kept, const output::RunFolder& folder) {
+                                    const HeldState& held, const std::string& kept, const output::RunFolder& folder,
+                                    std::optional<double> load_time) {
   std::vector<std::string> named;
   for (const EscapedBlock& b : blocks)
     named.push_back(fmt::format("block {} at ({:.4g}, {:.4g}) (moved {:.3g} m, size {:.3g} m)", b.escape.block,
                                 b.centroid.x, b.centroid.y, b.escape.distance, b.escape.size));
   return fmt::format(
-      "no mechanical equilibrium under {}: {} block(s) moved farther than their own size (the square root of their "
+      "no mechanical equilibrium under {}{}: {} block(s) moved farther than their own size (the square root of their "
       "area) and the load still moves them: {}{}; the load exceeds what the blocks' weight, their contacts and the "
       "supports can hold (summary.json, history.csv and the figures are of {})",
-      describe_driving_load(s), blocks.size(), output::list_items(named, &folder, "escaping_blocks.txt"),
+      describe_driving_load(s, load_time), load_time ? fmt::format(" (the loads at t = {:g} s)", *load_time) : "",
+      blocks.size(), output::list_items(named, &folder, "escaping_blocks.txt"),
       describe_held_fractures(held), kept);
 }
 

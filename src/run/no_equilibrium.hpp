@@ -39,8 +39,10 @@ std::vector<EscapedBlock> locate_escaping_blocks(std::span<const coupling::Escap
 // The loads a scenario drives its blocks with, as its keys spell them: the flow boundaries
 // that fix a head or pressure, the highest first ('flow.boundary "bottom" pressure =
 // 2.16e+07 Pa, against "top" pressure = 6e+06 Pa'; several at the highest value joined by
-// "and"), then mechanics.traction and mechanics.load entries. "gravity alone" without any.
-std::string describe_driving_load(const scenario::Scenario& s);
+// "and"), then mechanics.traction and mechanics.load entries. "gravity alone" without any. A
+// table is named by the highest value it reaches, or, given `time` (a run in time), by its value
+// then, the highest then first.
+std::string describe_driving_load(const scenario::Scenario& s, std::optional<double> time = std::nullopt);
 
 // The last state that held: the last DDA step (or coupling iteration) after which no block was
 // farther than its own size, and what it held of the fractures: those open then (measured
@@ -66,8 +68,10 @@ void take_open_fractures(const fractures::FractureState& state, HeldState& held)
 // block 3 at (1.5, 2.4) (moved 1.2 m, size 1 m), ...; in the last state that held (<held>)
 // fractures 2, 5 were open and 14 bonds had broken, 3 more after it; ... (summary.json, history.csv and the
 // figures are of <kept>)". `kept`: the state the run folder holds, the last that finished.
-// Long lists name five and go whole to escaping_blocks.txt in `folder`.
+// Long lists name five and go whole to escaping_blocks.txt in `folder`. `load_time`: a run in
+// time names its loads' values then, "under <load> (the loads at t = 5 s)".
 std::string describe_no_equilibrium(const scenario::Scenario& s, std::span<const EscapedBlock> blocks,
-                                    const HeldState& held, const std::string& kept, const output::RunFolder& folder);
+                                    const HeldState& held, const std::string& kept, const output::RunFolder& folder,
+                                    std::optional<double> load_time = std::nullopt);
 
 }  // namespace hydrodda::run

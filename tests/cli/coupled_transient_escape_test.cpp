@@ -1,0 +1,86 @@
+// A coupled transient run whose blocks escape ends as a steady one does (docs/output.md, "A run
+// that found no equilibrium"): status "no equilibrium", exit code 1, its message naming the time
+// step, its load then, the escaping block where the step's last try left it and the last state
+// that held (a time step), and summary.json's `last_held` saying the same. On
+// tests/cli/scenarios/jacking_in_time.toml: the jacked block of breach_hydraulic_jacking.toml
+// whose mouths' head rises to 0.96 H* over four steps of 1e5 s and then jumps to 1.1 H*
+// (H* = ρ_r h / ρ_w = 2.5 m, the block's weight against the fracture's lift: Terzaghi's heave).
+// Exact identities between the message, summary.json, history.csv and fractures.csv (no
+// tolerance).
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "bond_record.hpp"
+#include "result_files.hpp"
+#include "run_program.hpp"
+
+namespace fs = std::filesystem;
+using hydrodda::testing::column_of;
+using hydrodda::testing::read_csv;
+using hydrodda::testing::run_program;
+
+namespace {
+
+const fs::path kJacking = fs::path(HYDRODDA_SOURCE_DIR) / "tests/cli/scenarios/jacking_in_time.toml";
+
+// fractures.csv's fractures open at time step `step`, ascending ids, as `last_held` lists them.
+std::vector<int> open_at_step(const fs::path& folder, int step) {
+  const auto rows = read_csv(folder / "fractures.csv");
+  const std::size_t at = column_of(rows[0], "step"), id = column_of(rows[0], "fracture");
+  const std::size_t open = column_of(rows[0], "open");
+  std::vector<int> ids;
+  for (std::size_t r = 1; r < rows.size(); ++r)
+    if (std::stoi(rows[r][at]) == step && rows[r][open] == "1") ids.push_back(std::stoi(rows[r][id]));
+  return ids;
+}
+
+TEST(CoupledTransientEscape, AStepThatThrowsTheJackedBlockEndsWithNoEquilibriumNamingTheLastStepThatHeld) {
+  const auto out = hydrodda::testing::fresh_dir("hydrodda-transient-escape");
+  const auto result = run_program("-q run " + kJacking.string() + " -o " + out.path.string() + " --threads 1");
+  ASSERT_EQ(result.exit_code, 1) << result.output;
+  const auto summary = nlohmann::json::parse(std::ifstream(out.path / "summary.json"));
+  EXPECT_EQ(summary["status"], "no equilibrium");
+  EXPECT_EQ(summary["converged"], false);
+  // The folder holds the last step that converged, t = 4e5 s at 0.96 H*: steps 1-4 of 1e5 s.
+  EXPECT_EQ(summary["iterations"], 4);
+  EXPECT_EQ(summary["time"], 4.0e5);
+  const auto history = read_csv(out.path / "history.csv");
+  ASSERT_EQ(history.size(), 6u) << "t = 0 and four steps";
+  EXPECT_EQ(history.back()[column_of(history[0], "step")], "4");
+
+  ASSERT_TRUE(summary.contains("last_held")) << summary.dump();
+  const auto& held = summary["last_held"];
+  EXPECT_EQ(held["step"], 4);
+  EXPECT_EQ(held["state"], "time step 4, t = 400000 s");
+  ASSERT_TRUE(held.contains("open_fractures")) << "the jacked block's fracture is measured";
+  const std::vector<int> open = held["open_fractures"];
+  EXPECT_EQ(open, open_at_step(out.path, 4)) << "fractures.csv's rows of time step 4";
+
+  // The fifth step lands on the table's row at 4.0005e5 s, 50 s on, under the floor of
+  // 1e5/1024 s: no cut; the message names the heads then.
+  const std::string message = summary["message"];
+  EXPECT_EQ(message.rfind("time step 5 from t = 400000 s to 400050 s (0 cut(s); half of it would be under the floor "
+                          "of 97.6562 s): no mechanical equilibrium under flow.boundary \"mouth_left\" head = 2.75 m "
+                          "and \"mouth_right\" head = 2.75 m, against \"top\" head = 0 m (the loads at t = 400050 "
+                          "s): 1 block(s) moved farther than their own size",
+                          0),
+            0u)
+      << message;
+  EXPECT_NE(message.find("block 1 at ("), std::string::npos) << "the upper block: " << message;
+  const std::string told = open.empty() ? "no fracture was open" : "fracture 0 was open";
+  EXPECT_NE(message.find("; in the last state that held (time step 4, t = 400000 s) " + told + "; the load exceeds"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("(summary.json, history.csv and the figures are of time step 4, t = 400000 s; the blocks named "
+                         "are where the last try of time step 5 left them)"),
+            std::string::npos)
+      << message;
+}
+
+}  // namespace
