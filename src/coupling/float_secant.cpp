@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numeric>
 #include <set>
+#include <stdexcept>
 
 namespace hydrodda::coupling {
 
@@ -65,6 +67,23 @@ void FloatSecant::keep_only(const std::vector<std::vector<int>>& free_now) {
   // of groups.
   const std::set<std::vector<int>> free(free_now.begin(), free_now.end());
   std::erase_if(last_, [&](const auto& entry) { return !free.contains(entry.first); });
+}
+
+std::vector<FloatSecant::Remembered> FloatSecant::remembered() const {
+  std::vector<Remembered> memory;
+  for (const auto& [group, m] : last_) memory.push_back({group, m.start, m.rate});
+  return memory;
+}
+
+void FloatSecant::restore(const std::vector<Remembered>& memory, int block_count) {
+  std::map<std::vector<int>, Memory> last;
+  for (const Remembered& r : memory) {
+    const bool ascending = std::adjacent_find(r.group.begin(), r.group.end(), std::greater_equal<>()) == r.group.end();
+    const bool known = !r.group.empty() && r.group.front() >= 0 && r.group.back() < block_count;
+    if (!ascending || !known || !last.emplace(r.group, Memory{r.start, r.rate}).second)
+      throw std::invalid_argument("float secant: a remembered group that is not a list of this system's blocks");
+  }
+  last_ = std::move(last);
 }
 
 }  // namespace hydrodda::coupling

@@ -67,6 +67,19 @@ class FloatSecant {
   void keep_only(const std::vector<std::vector<int>>& free_now);
   void forget() { last_.clear(); }
 
+  // What it remembers of a group free in the last pass: where the pass started it and its rate
+  // a_k, which the next pass pairs with. A checkpoint keeps it, so that a resumed run's next
+  // pass takes the secant the run never stopped would.
+  struct Remembered {
+    std::vector<int> group;  // its blocks, ascending
+    Point start;
+    Point rate;
+  };
+  std::vector<Remembered> remembered() const;
+  // Takes up what remembered() gave. Throws std::invalid_argument for a group that is empty,
+  // not ascending, given twice, or names a block outside [0, block_count).
+  void restore(const std::vector<Remembered>& memory, int block_count);
+
  private:
   struct Memory {
     Point start;

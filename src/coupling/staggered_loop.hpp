@@ -140,6 +140,8 @@ struct LoopState {
   PorosityField porosity;
   std::vector<double> permeability;
   std::vector<hydro::PermeabilityTensor> permeability_tensors;  // with joints; else empty
+  // The float secant's memory of the groups free in the last pass (float_secant.hpp).
+  std::vector<FloatSecant::Remembered> float_groups;
 };
 
 class StaggeredLoop final : public PassRunner {
@@ -296,8 +298,7 @@ class StaggeredLoop final : public PassRunner {
   double pseudo_time_step_ = 0.0;     // Δτ of the next pass's step (pass_storage.hpp)
   double last_steady_change_ = 0.0;   // the last pass's steady head change, for SER
   // Groups that meet nothing, moved between settling passes to where their net load vanishes
-  // (float_secant.hpp); Σ Δt² over the pass's DDA steps. Not in a checkpoint: a resumed run
-  // starts its secant again (one plain pass).
+  // (float_secant.hpp); Σ Δt² over the pass's DDA steps. The secant's memory is in LoopState.
   FloatSecant float_secant_;
   double pass_squared_steps_ = 0.0;
   // The start of the time step under way (coupled transient runs): Δt, the heads h^n and the

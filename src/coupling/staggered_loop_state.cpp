@@ -10,7 +10,7 @@ LoopState StaggeredLoop::export_state() const {
   LoopState state{completed_,       solution_,   previous_heads_, heads_two_back_, previous_displacements_, growth_,
                   previous_update_, relaxation_, {},              {},              darcy_.kept_factor(),
                   darcy_.kept_factor_in_single_precision(), porosity_, permeability_,
-                  permeability_tensors_};
+                  permeability_tensors_,                   float_secant_.remembered()};
   for (const numerics::AndersonAccelerator::Pass& pass : anderson_.history()) {
     state.anderson_residuals.emplace_back(pass.residual.begin(), pass.residual.end());
     state.anderson_images.emplace_back(pass.image.begin(), pass.image.end());
@@ -46,6 +46,7 @@ void StaggeredLoop::import_state(LoopState state, const dda::SystemState& mechan
     throw std::invalid_argument("coupling state: sizes do not fit the mesh and the blocks");
   // The flow solver's kept factor, made again from its permeability: the next pass's solve
   // then starts from the very factor it had.
+  float_secant_.restore(state.float_groups, mechanics_.block_count());
   darcy_.restore_kept_factor(std::move(state.kept_factor_permeability), state.kept_factor_single_precision);
   iteration_ = completed_ = state.iterations;
   solution_ = std::move(state.flow);

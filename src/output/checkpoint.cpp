@@ -24,9 +24,10 @@ constexpr std::string_view kMagic = "hydrodda checkpoint\n";
 // of the last pass; 14: history rows end in each pass's changes (contacts, joint crossings,
 // fluid load, open–close iterations, step cuts); 15: whether the tension cutoff released each
 // open contact; 16: the bonds broken so far (a resumed run had its sub-blocks bonded whole
-// again); 17: the bonds softening, with their faces' peak openings. Only the current format is
-// read: a run stopped by an older hydrodda is run again.
-constexpr std::int64_t kVersion = 17;
+// again); 17: the bonds softening, with their faces' peak openings; 18: the float secant's memory
+// of the groups free in the last pass. Only the current format is read: a run stopped by an
+// older hydrodda is run again.
+constexpr std::int64_t kVersion = 18;
 // The last 8 bytes: the CRC-32 of every byte before them (zlib's, as a 64-bit word). A CRC
 // detects every error burst of up to 32 bits, so a flipped bit is refused, not resumed from;
 // zlib computes it four times as fast as a byte-at-a-time hash on a checkpoint of tens of MB.
@@ -416,6 +417,16 @@ void write_loop_state(Writer& w, const coupling::LoopState& coupling) {
   w.put(coupling.porosity.porosity);
   w.put(coupling.permeability);
   w.put(coupling.permeability_tensors);
+  std::vector<std::vector<int>> groups;
+  std::vector<Point> starts, rates;
+  for (const coupling::FloatSecant::Remembered& g : coupling.float_groups) {
+    groups.push_back(g.group);
+    starts.push_back(g.start);
+    rates.push_back(g.rate);
+  }
+  w.put(groups);
+  w.put(starts);
+  w.put(rates);
 }
 
 void read_loop_state(Reader& r, coupling::LoopState& s) {
@@ -451,6 +462,13 @@ void read_loop_state(Reader& r, coupling::LoopState& s) {
   r.get(s.porosity.porosity);
   r.get(s.permeability);
   r.get(s.permeability_tensors);
+  std::vector<std::vector<int>> groups;
+  std::vector<Point> starts, rates;
+  r.get(groups);
+  r.get(starts);
+  r.get(rates);
+  if (starts.size() != groups.size() || rates.size() != groups.size()) r.fail();
+  for (std::size_t g = 0; g < groups.size(); ++g) s.float_groups.push_back({std::move(groups[g]), starts[g], rates[g]});
 }
 
 }  // namespace
@@ -616,8 +634,9 @@ namespace {
 
 constexpr std::string_view kCoupledTransientMagic = "hydrodda coupled transient checkpoint\n";
 // 2: the DDA state's bonds broken so far (as the coupled checkpoint's format 16); 3: the bonds
-// softening (as its format 17).
-constexpr std::int64_t kCoupledTransientVersion = 3;
+// softening (as its format 17); 4: the coupling loop's float secant memory (as its format 18;
+// always empty in time, the secant being for steady runs).
+constexpr std::int64_t kCoupledTransientVersion = 4;
 
 // The fields after the header and before the engines' states, in one order for both ways.
 template <class Io, class Checkpoint>

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <unistd.h>
 
 #include "output/checkpoint.hpp"
 #include "run_folder_compare.hpp"
@@ -78,6 +79,37 @@ TEST(Resume, StoppedAndResumedRunMatchesAnUninterruptedOneBitForBit) {
   const auto again = run_program("run --resume " + f.parts.string());
   EXPECT_EQ(again.exit_code, 2) << again.output;
   EXPECT_NE(again.output.find("already converged"), std::string::npos) << again.output;
+}
+
+// The column lifted past the critical gradient (coupled_upward_seepage_column.toml at 1.02 i_c,
+// head 10 + 10.5 × 1.5 × 1.02 m at its base) on a 0.05 m mesh, the coarsest on which it floats
+// (docs/studies/2026-11-29-floating-column.md: converged in 18 passes). The float secant pairs
+// each pass with the last (coupling/float_secant.hpp): the checkpoint keeps its memory, so a run
+// stopped after pass 5 or 8, mid-float, and resumed moves its groups as the whole run does, and
+// ends bit for bit as it (without that memory the resumed run ended after 19 passes, 7e-5 m
+// lower).
+TEST(Resume, AFloatingColumnStoppedMidFloatResumesBitForBit) {
+  const fs::path column = hydrodda::testing::edited_scenario(
+      fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/verification/coupled_upward_seepage_column.toml",
+      "hydrodda-resume-floating-column-" + std::to_string(::getpid()),
+      {{"head = 19.45", "head = 26.065"}, {"size = 0.25", "size = 0.05"}, {"fracture_size = 0.1", "fracture_size = 0.05"}});
+  for (int stop_after : {5, 8}) {
+    Folders f("floating-column-" + std::to_string(stop_after));
+    const auto whole = run_program("-q run " + column.string() + " -o " + f.whole.string() + " --threads 1");
+    ASSERT_EQ(whole.exit_code, 0) << whole.output;
+    const nlohmann::json summary = read_summary_without_timings(f.whole);
+    ASSERT_EQ(summary["converged"], true) << "the column floats on this mesh";
+    ASSERT_GT(summary["iterations"].get<int>(), stop_after + 1) << "stopped mid-float";
+    const auto first = run_program("-q run " + column.string() + " -o " + f.parts.string() + " --threads 1 --stop-after " +
+                                   std::to_string(stop_after));
+    ASSERT_EQ(first.exit_code, 0) << first.output;
+    const auto second = run_program("run --resume " + f.parts.string() + " --threads 1");
+    ASSERT_EQ(second.exit_code, 0) << second.output;
+    EXPECT_NE(second.output.find("group(s) of blocks meeting nothing moved on"), std::string::npos)
+        << "the resumed passes move the column by the secant: " << second.output;
+    expect_same_results(f.whole, f.parts);
+  }
+  fs::remove(column);
 }
 
 // Anderson's mixing reads the passes before it: the checkpoint keeps them, so a run stopped

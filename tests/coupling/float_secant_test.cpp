@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 #include "coupling/float_secant.hpp"
@@ -120,6 +121,29 @@ TEST(FloatSecant, OnlyTheSameGroupInTheNextPassIsPaired) {
 
 // The groups: blocks meeting nothing (landing steps infinite), joined by any contact among
 // them; a contact with a block that lands or rests joins nothing.
+// What a checkpoint keeps of the secant (remembered) and a resumed run takes up (restore): a
+// secant restored from it gives the next pass the shift the one that went on gives, bit for
+// bit; a group that names no block of the system is refused.
+TEST(FloatSecant, ASecantRestoredFromWhatItRememberedShiftsAsTheOneThatWentOn) {
+  const LinearFloat body;
+  FloatSecant secant;
+  const std::vector<int> group{1, 2, 3};
+  const double x0 = 0.0, x1 = body.end_of_pass(x0), x2 = body.end_of_pass(x1);
+  secant.shift(group, {0, x0}, {0, x1}, x1 - x0, body.squared_steps, 1.0);
+  FloatSecant restored;
+  restored.restore(secant.remembered(), 4);
+  const Point went_on = secant.shift(group, {0, x1}, {0, x2}, x2 - x1, body.squared_steps, 1.0);
+  const Point resumed = restored.shift(group, {0, x1}, {0, x2}, x2 - x1, body.squared_steps, 1.0);
+  ASSERT_NE(went_on.y, 0.0) << "the second pass is paired with the first";
+  EXPECT_EQ(resumed.x, went_on.x);
+  EXPECT_EQ(resumed.y, went_on.y);
+  EXPECT_EQ(FloatSecant{}.shift(group, {0, x1}, {0, x2}, x2 - x1, body.squared_steps, 1.0).y, 0.0)
+      << "a secant that forgot gives none";
+  EXPECT_THROW(restored.restore({{{1, 4}, {0, 0}, {0, 0}}}, 4), std::invalid_argument) << "block 4 of 4";
+  EXPECT_THROW(restored.restore({{{2, 1}, {0, 0}, {0, 0}}}, 4), std::invalid_argument) << "not ascending";
+  EXPECT_THROW(restored.restore({{{}, {0, 0}, {0, 0}}}, 4), std::invalid_argument) << "empty";
+}
+
 TEST(FloatSecant, FreeBlocksJoinedByAnyContactAreOneGroup) {
   const std::vector<double> landing{0.0, kInf, kInf, kInf, 12.0, kInf};
   std::vector<dda::ContactInfo> contacts(4);

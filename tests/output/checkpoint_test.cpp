@@ -73,6 +73,7 @@ RunCheckpoint make_checkpoint() {
   c.coupling.porosity.porosity = {0.1, 0.35};
   c.coupling.permeability = {1e-15, 3.7e-9};
   c.coupling.permeability_tensors = {{1e-15, 0.0, 1e-15}, {3.7e-9, -1.2e-10, 2.5e-11}};
+  c.coupling.float_groups = {{{0, 1}, {0.0, 0.125}, {-1e-300, 2.5e-3}}, {{1}, {-0.0, 1e-3}, {0.0, -7.5}}};
   return c;
 }
 
@@ -139,6 +140,15 @@ TEST(Checkpoint, DecodesToTheSameValuesBitForBit) {
   EXPECT_EQ(d.coupling.porosity.porosity, c.coupling.porosity.porosity);
   EXPECT_EQ(d.coupling.permeability, c.coupling.permeability);
   EXPECT_EQ(d.coupling.permeability_tensors, c.coupling.permeability_tensors);
+  ASSERT_EQ(d.coupling.float_groups.size(), 2u);
+  for (std::size_t g = 0; g < 2; ++g) {
+    const auto &got = d.coupling.float_groups[g], &put = c.coupling.float_groups[g];
+    EXPECT_EQ(got.group, put.group);
+    for (const auto& [a, b] : {std::pair{got.start, put.start}, std::pair{got.rate, put.rate}}) {
+      EXPECT_TRUE(same_bits(a.x, b.x)) << g;  // -0.0, denormals
+      EXPECT_TRUE(same_bits(a.y, b.y)) << g;
+    }
+  }
 }
 
 TEST(Checkpoint, ACutOrDamagedFileIsRefused) {
