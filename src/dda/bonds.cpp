@@ -12,6 +12,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "dda/system.hpp"
 
@@ -171,6 +172,63 @@ void System::drop_corner_contacts_within_intact_rock(ContactCandidates& candidat
            is_corner_within_intact_rock(c.key.block_j, static_cast<int>(at_start ? start : end));
   };
   candidates.erase(std::remove_if(candidates.begin(), candidates.end(), tip_to_tip_within_intact_rock), candidates.end());
+}
+
+// An intact bonded face is carried by one vertex–edge contact at each end (Shi 1988, §4.3); where
+// its two corners there coincide, find_pair_contacts keeps one. Where they have parted along the
+// face by more than the corner tie, the corner past the other's edge end was kept too while
+// within the tie of the line of that block's next edge: a second locked contact, which pulled
+// the corners back within the tie, where they were one corner again (a crack's opening tip: a
+// two-step cycle that never came to rest). So that corner has no contact with the face where
+// the other corner lies within its own face (a choice that changes only as the ends slide past
+// each other, not on the tie); a broken face keeps both.
+//
+// Pseudocode:
+//   for each candidate c = (corner v of X, edge e of Y) across an intact bond:
+//     k = X's edge of the bond; skip unless v is an end of it
+//     u = Y's corner at that end (the faces run opposite ways: X[k] ↔ Y[e + 1], X[k + 1] ↔ Y[e])
+//     drop c if v projects past the ends of Y's edge e, the candidates hold (u, X's edge k),
+//     and u projects within X's edge k
+void System::drop_second_contacts_at_intact_face_ends(ContactCandidates& candidates) const {
+  if (bond_sides_.empty()) return;
+  const auto point = [&](int block, std::size_t vertex) {
+    const Polygon& p = blocks_[static_cast<std::size_t>(block)].polygon;
+    return p[vertex % p.size()];
+  };
+  // Whether `p` projects within edge `edge` of `block` (its ends included).
+  const auto within_edge = [&](Point p, int block, int edge) {
+    const Point a = point(block, static_cast<std::size_t>(edge));
+    const Point b = point(block, static_cast<std::size_t>(edge) + 1);
+    const double t = dot(p - a, b - a) / dot(b - a, b - a);
+    return t >= 0.0 && t <= 1.0;
+  };
+  const auto has_candidate = [&](const ContactKey& key) {  // the candidates are in key order
+    const auto at = std::lower_bound(candidates.begin(), candidates.end(), key,
+                                     [](const ContactCandidate& c, const ContactKey& k) { return c.key < k; });
+    return at != candidates.end() && at->key == key;
+  };
+  const auto second_at_the_end = [&](const ContactCandidate& c) {
+    const int bond = bond_across(c.key);
+    if (bond < 0 || bond_broken_[static_cast<std::size_t>(bond)] != 0) return false;
+    const std::array<BondSide, 2>& sides = bond_sides_[static_cast<std::size_t>(bond)];
+    const int own_edge = sides[0].block == c.key.block_i ? sides[0].edge : sides[1].edge;
+    const std::size_t n_own = blocks_[static_cast<std::size_t>(c.key.block_i)].polygon.size();
+    const std::size_t n_other = blocks_[static_cast<std::size_t>(c.key.block_j)].polygon.size();
+    const auto k = static_cast<std::size_t>(own_edge);
+    const auto v = static_cast<std::size_t>(c.key.vertex);
+    if (v != k && v != (k + 1) % n_own) return false;  // not a corner of the bonded face
+    const auto e = static_cast<std::size_t>(c.key.edge);
+    const int other_corner = static_cast<int>(v == k ? (e + 1) % n_other : e);
+    const ContactKey other{c.key.block_j, other_corner, c.key.block_i, own_edge};
+    return !within_edge(point(c.key.block_i, v), c.key.block_j, c.key.edge) && has_candidate(other) &&
+           within_edge(point(c.key.block_j, static_cast<std::size_t>(other_corner)), c.key.block_i, own_edge);
+  };
+  std::vector<char> drop(candidates.size(), 0);
+  for (std::size_t i = 0; i < candidates.size(); ++i) drop[i] = second_at_the_end(candidates[i]) ? 1 : 0;
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    if (drop[i] == 0) candidates[kept++] = candidates[i];
+  candidates.resize(kept);
 }
 
 int System::bond_joint_type(int bond) const {

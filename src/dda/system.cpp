@@ -217,6 +217,7 @@ void System::detect_contacts() {
   ContactCandidates& candidates = buffers.candidates;
   contact_search_.find(buffers.polygons, buffers.fixed, candidates);
   drop_corner_contacts_within_intact_rock(candidates);
+  drop_second_contacts_at_intact_face_ends(candidates);
   resize_for_overwrite(active_, candidates.size());
   // The linearisation in chunks of contacts, over the threads: each contact writes only its own.
   numerics::for_each_chunk(many_contacts_to_linearise(), candidates.size(), kContactChunk,

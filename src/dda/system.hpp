@@ -303,6 +303,9 @@ class System {
   // are inside intact rock (tip to tip at a node of the tessellation).
   bool is_corner_within_intact_rock(int block, int vertex) const;
   void drop_corner_contacts_within_intact_rock(ContactCandidates& candidates) const;
+  // bonds.cpp: drops, at an end of an intact bonded face whose two corners have parted along it,
+  // the contact of the corner past the other's edge where the other's lies within its own.
+  void drop_second_contacts_at_intact_face_ends(ContactCandidates& candidates) const;
   // A contact that touches at the start takes the initial stress's force across its faces: its
   // multiplier the normal force, its shear reference moved so that its spring holds the shear.
   void preload_contact(ActiveContact& c) const;
