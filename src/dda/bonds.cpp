@@ -135,15 +135,21 @@ std::array<Point, 2> System::bond_face(int bond) const {
   return {p[static_cast<std::size_t>(side.edge)], p[(static_cast<std::size_t>(side.edge) + 1) % p.size()]};
 }
 
-// A corner inside intact rock: both faces at vertex v of `block` are intact bonds.
-bool System::is_corner_within_intact_rock(int block, int vertex) const {
+// A corner of intact rock: of the two faces at vertex v of `block`, each an intact bond or a
+// face of no bond (the edge of the tessellated rock: a joint, a trace, the domain's boundary),
+// and one at least an intact bond. A broken or softening face makes it a crack's corner.
+bool System::is_corner_of_intact_rock(int block, int vertex) const {
   const std::vector<int>& bonds = edge_bonds_[static_cast<std::size_t>(block)];
   if (bonds.empty()) return false;
   const std::size_t n = bonds.size();
   const std::size_t v = static_cast<std::size_t>(vertex);
-  for (const int bond : {bonds[v], bonds[(v + n - 1) % n]})
-    if (bond < 0 || bond_broken_[static_cast<std::size_t>(bond)] != 0) return false;
-  return true;
+  bool bonded = false;
+  for (const int bond : {bonds[v], bonds[(v + n - 1) % n]}) {
+    if (bond < 0) continue;
+    if (bond_broken_[static_cast<std::size_t>(bond)] != 0) return false;
+    bonded = true;
+  }
+  return bonded;
 }
 
 // Where several sub-blocks of intact rock meet at a node, each one's corner there lies on the
@@ -154,9 +160,12 @@ bool System::is_corner_within_intact_rock(int block, int vertex) const {
 // edge it is taken against flips with that (the entrance edge, or none past the corner), and
 // each flip moves the sub-block by as much, from step to step without end (the seal through
 // intact rock, 1 m triangles at 1,100 m over hydrostatic: a 2e-7 m two-step cycle, at rest never).
-// So where two corners at a node are both inside intact rock (each one's two faces intact
-// bonds), the one has no contact with the other's faces' ends; a broken face at either gives
-// the contact back (a crack through the node, its corners joints' again).
+// So where two corners at a node are both of intact rock (each one's faces intact bonds, or
+// one of them on the rock's edge: a node on a joint that bounds the tessellated rock, whose
+// sub-blocks fan out below the joint, bonded to each other), the one has no contact with the
+// other's bonded faces' ends; a broken face at either gives the contact back (a crack through
+// the node, its corners joints' again). On the rock's edge: a node welded just below a bedding
+// joint whose corners' contacts never settled (docs/studies/2026-11-30-bonds-at-scale.md).
 void System::drop_corner_contacts_within_intact_rock(ContactCandidates& candidates) const {
   if (bond_sides_.empty()) return;
   const double tie = 1e-3 * contact_distance_;  // contact_detection.cpp's corner tie
@@ -168,8 +177,8 @@ void System::drop_corner_contacts_within_intact_rock(ContactCandidates& candidat
     const std::size_t end = (start + 1) % edge_block.size();
     const bool at_start = geometry::distance(p, edge_block[start]) <= tie;
     if (!at_start && geometry::distance(p, edge_block[end]) > tie) return false;
-    return is_corner_within_intact_rock(c.key.block_i, c.key.vertex) &&
-           is_corner_within_intact_rock(c.key.block_j, static_cast<int>(at_start ? start : end));
+    return is_corner_of_intact_rock(c.key.block_i, c.key.vertex) &&
+           is_corner_of_intact_rock(c.key.block_j, static_cast<int>(at_start ? start : end));
   };
   candidates.erase(std::remove_if(candidates.begin(), candidates.end(), tip_to_tip_within_intact_rock), candidates.end());
 }

@@ -299,9 +299,10 @@ class System {
   bool many_closed_contacts() const { return closed_.size() >= 5000; }  // loops over closed_
   void check_tractions(std::span<const EdgeTraction> tractions) const;
   void detect_contacts();
-  // bonds.cpp: drops a corner's contacts with the ends of other sub-blocks' faces where both
-  // are inside intact rock (tip to tip at a node of the tessellation).
-  bool is_corner_within_intact_rock(int block, int vertex) const;
+  // bonds.cpp: drops a corner's contacts with the ends of other sub-blocks' bonded faces where
+  // both corners are of intact rock, inside it or on its edge (tip to tip at a node of the
+  // tessellation).
+  bool is_corner_of_intact_rock(int block, int vertex) const;
   void drop_corner_contacts_within_intact_rock(ContactCandidates& candidates) const;
   // bonds.cpp: drops, at an end of an intact bonded face whose two corners have parted along it,
   // the contact of the corner past the other's edge where the other's lies within its own.

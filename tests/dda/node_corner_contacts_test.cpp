@@ -2,7 +2,8 @@
 // bonded triangles meet at a point, each one's corner there lies on the ends of the others'
 // faces. A corner whose two faces are intact bonds reaches a third sub-block only through its
 // bonded neighbours, so where both corners are inside intact rock neither touches the other's
-// faces' ends; once a face at either corner is broken, their contact comes back.
+// faces' ends; so too where a corner has one face on the rock's edge (a joint through the node,
+// no bond) and the other bonded; once a face at either corner is broken, their contact comes back.
 // Exact: the contacts are counted, no tolerance.
 
 #include <gtest/gtest.h>
@@ -64,6 +65,28 @@ TEST(NodeCornerContacts, ACornerOfIntactRockHasNoContactWithTheThirdSubBlocksAtI
   int face_contacts = 0;
   for (const ContactInfo& c : system.contacts()) face_contacts += system.bond_of_contact(c.key) >= 0 ? 1 : 0;
   EXPECT_GE(face_contacts, 2 * kTriangles);
+}
+
+TEST(NodeCornerContacts, ACornerOnTheRocksEdgeHasNoContactWithTheThirdSubBlocksAtItsNode) {
+  // Spoke 0 a joint, not a bond: the node lies on the edge of the tessellated rock (as where a
+  // bedding joint bounds it), triangles 0 and 5 each with one face on the joint. The old rule,
+  // both faces intact bonds, gave their corners the contacts a broken face gives (the test
+  // below); their bonded neighbours close them as they close the others. The rule is about
+  // bonded faces' ends: a corner at the joint face's end is a joint's contact, left as it is.
+  ModelDefinition m = make_node({});
+  for (BlockDefinition& b : m.blocks)
+    for (int& bond : b.edge_bonds) bond = bond == 0 ? -1 : (bond > 0 ? bond - 1 : bond);
+  m.blocks.front().edge_joints[0] = 0;
+  m.blocks.back().edge_joints[2] = 0;
+  System system(m);
+  system.step();
+  int at_bonded_face_ends = 0;
+  for (const ContactInfo& c : system.contacts()) {
+    const int apart = (c.key.block_j - c.key.block_i + kTriangles) % kTriangles;
+    if (c.key.vertex == 0 && apart != 1 && apart != kTriangles - 1 && system.bond_of_contact(c.key) >= 0)
+      ++at_bonded_face_ends;
+  }
+  EXPECT_EQ(at_bonded_face_ends, 0);
 }
 
 TEST(NodeCornerContacts, ABrokenFaceAtTheCornerGivesItsTipToTipContactsBack) {
