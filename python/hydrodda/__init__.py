@@ -49,8 +49,9 @@ __all__ = [
 
 
 class RunResult:
-    """What a run did: status ('finished', 'stopped', 'interrupted' or 'failed'), converged,
-    iterations, message, summary (summary.json as a dict) and folder; history reads the run
+    """What a run did: status ('finished', 'stopped', 'interrupted', 'no equilibrium' or 'failed'),
+    converged, iterations, message, summary (summary.json as a dict; its last_held after 'no
+    equilibrium') and folder; history reads the run
     folder's history.csv into a dict of NumPy arrays, one per column.
 
     The model's fields as the run ended, from memory (no file is read), as dicts of NumPy

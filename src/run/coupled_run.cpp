@@ -136,7 +136,7 @@ RunFailure no_equilibrium_round(const Round& round, const std::vector<coupling::
     held.broken_bonds_later = static_cast<int>(round.model.mechanics().bond_breaks().size()) - *held.broken_bonds;
   std::string message = describe_no_equilibrium(
       round.context.scenario, locate_escaping_blocks(escaping, round.model.block_polygons()), held,
-      kept > 0 ? fmt::format("coupling iteration {}", kept) : "the blocks as built", round.context.folder);
+      kept > 0 ? fmt::format("coupling iteration {}", kept) : "the blocks as built", &round.context.folder);
   output::RunSummary summary = round.recorder.summary();
   summary.last_held = summarise_held_state(held);
   try {

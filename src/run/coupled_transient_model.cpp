@@ -2,6 +2,10 @@
 
 #include <stdexcept>
 
+#include "run/model_building.hpp"
+#include "run/no_equilibrium_in_time.hpp"
+#include "run/scenario_fractures.hpp"
+
 namespace hydrodda::run {
 
 namespace {
@@ -21,6 +25,9 @@ CoupledTransientModel::CoupledTransientModel(const scenario::Scenario& scenario)
   sites_ = locate_probes(model_->scenario(), model_->mesh());
   if (model_->mechanics().bond_count() > 0)
     trace_count_ = static_cast<int>(fracture_type_names(model_->scenario()).size());
+  meter_ = make_fracture_meter(model_->scenario());
+  if (meter_) joint_laws_ = make_joint_aperture_laws(model_->scenario(), meter_->layout().traces);
+  hold_if_held();
 }
 
 CoupledTransientStepper::Outcome CoupledTransientModel::step(const std::function<bool()>& stop_requested) {
@@ -30,7 +37,10 @@ CoupledTransientStepper::Outcome CoupledTransientModel::step(const std::function
     ~Unset() { model.set_stop_request({}); }
   } unset{*model_};
   const CoupledTransientStepper::Outcome outcome = stepper_->step(stop_requested);
-  if (outcome == CoupledTransientStepper::Outcome::stepped) record_breaks();
+  if (outcome == CoupledTransientStepper::Outcome::stepped) {
+    record_breaks();
+    hold_if_held();
+  }
   return outcome;
 }
 
@@ -41,6 +51,15 @@ void CoupledTransientModel::record_breaks() {
   const std::vector<dda::BondBreak>& breaks = system.bond_breaks();
   for (std::size_t k = broken_bonds_.size(); k < breaks.size(); ++k)
     broken_bonds_.push_back({steps(), broken_bond_row(model_->scenario(), system, breaks[k], trace_count_, time())});
+}
+
+void CoupledTransientModel::hold_if_held() {
+  const dda::System& system = model_->mechanics();
+  if (!find_escaping_blocks(system).empty()) return;
+  std::optional<fractures::FractureState> state;
+  if (meter_)
+    state = meter_->measure(model_->block_polygons(), system.penetration_tolerance(), system.contacts(), joint_laws_);
+  held_ = hold_time_step(steps(), time(), system, state ? &*state : nullptr);
 }
 
 std::vector<ProbeReading> CoupledTransientModel::read_probes() const {
@@ -54,7 +73,14 @@ std::vector<ProbeReading> CoupledTransientModel::read_probes() const {
 output::RunSummary CoupledTransientModel::summary() const {
   output::RunSummary summary = summarise_coupled_transient(*model_, time(), steps());
   summary.converged = finished() && !failed();
-  if (failed()) summary.message = failure();
+  if (failed_without_equilibrium(*stepper_)) {
+    summary.status = "no equilibrium";
+    summary.message =
+        describe_time_step_without_equilibrium(model_->scenario(), *stepper_, held_, model_->mechanics(), nullptr);
+    summary.last_held = summarise_held_state(held_);
+  } else if (failed()) {
+    summary.message = failure();
+  }
   return summary;
 }
 

@@ -5,12 +5,16 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
+#include "coupling/joint_aperture_laws.hpp"
+#include "fractures/fracture_results.hpp"
 #include "output/summary.hpp"
 #include "run/bond_output.hpp"
 #include "run/coupled_model.hpp"
 #include "run/coupled_transient_stepper.hpp"
+#include "run/no_equilibrium.hpp"
 #include "run/transient_flow.hpp"
 #include "run/transient_model.hpp"
 
@@ -49,17 +53,24 @@ class CoupledTransientModel {
   std::vector<ProbeReading> read_probes() const;
   // summary.json's content for the state now (no timings, no fractures): time, the steps as
   // `iterations`, the rate of storage; `converged` when end_time is reached without a failure,
-  // else false with the failure as `message`.
+  // else false with the failure as `message`; a step that threw blocks in its first iteration,
+  // status "no equilibrium", the run's message and `last_held` (no_equilibrium_in_time.hpp).
   output::RunSummary summary() const;
 
  private:
   void record_breaks();
+  // The blocks as built, or the step just taken, as the last state that held, where no block is
+  // farther than its own size (the run's record, its fractures measured alike).
+  void hold_if_held();
 
   std::unique_ptr<CoupledModel> model_;
   std::unique_ptr<CoupledTransientStepper> stepper_;
   std::vector<ProbeSite> sites_;
   int trace_count_ = 0;  // the fractures the traces number: the broken bonds' ids follow theirs
   std::vector<SteppedBondBreak> broken_bonds_;
+  std::optional<fractures::FractureMeter> meter_;  // a scenario with a [geometry] domain
+  coupling::JointApertureLaws joint_laws_;
+  HeldState held_;
 };
 
 }  // namespace hydrodda::run

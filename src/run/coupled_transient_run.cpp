@@ -24,6 +24,7 @@
 #include "run/coupled_transient_stepper.hpp"
 #include "run/figures.hpp"
 #include "run/no_equilibrium.hpp"
+#include "run/no_equilibrium_in_time.hpp"
 #include "run/paraview_output.hpp"
 #include "run/runs.hpp"
 #include "run/transient_flow.hpp"
@@ -151,11 +152,8 @@ class CoupledTransientRecorder {
 };
 
 void CoupledTransientRecorder::hold(int step, double time) {
-  held_ = HeldState{};
-  held_.step = step;
-  if (step > 0) held_.name = fmt::format("time step {}, t = {:g} s", step, time);
-  if (bonds_) held_.broken_bonds = static_cast<int>(model_.mechanics().bond_breaks().size());
-  if (const auto& state = fractures_.state()) take_open_fractures(*state, held_);
+  const auto& state = fractures_.state();
+  held_ = hold_time_step(step, time, model_.mechanics(), state ? &*state : nullptr);
 }
 
 std::vector<int> CoupledTransientRecorder::broken_per_step() const {
@@ -319,21 +317,9 @@ void report_step(const RunContext& context, const StepRecord& r) {
 RunFailure end_without_equilibrium(const RunContext& context, const CoupledModel& model,
                                    const CoupledTransientStepper& stepper, const CoupledTransientRecorder& recorder,
                                    output::RunSummary summary) {
-  const StepFailure& failed = stepper.failed_step();
-  HeldState held = recorder.held_state();
-  if (held.broken_bonds)
-    held.broken_bonds_later = static_cast<int>(model.mechanics().bond_breaks().size()) - *held.broken_bonds;
-  const std::string kept =
-      stepper.steps() > 0 ? fmt::format("time step {}, t = {:g} s", stepper.steps(), stepper.time()) : "t = 0";
-  const double end = failed.time + failed.length;
-  std::string message =
-      fmt::format("time step {} from t = {:g} s to {:g} s ({} cut(s); half of it would be under the floor of {:g} s): ",
-                  failed.step, failed.time, end, failed.cuts, make_step_control(context.scenario).floor) +
-      describe_no_equilibrium(context.scenario, failed.escaped, held,
-                              fmt::format("{}; the blocks named are where the last try of time step {} left them", kept,
-                                          failed.step),
-                              context.folder, end);
-  summary.last_held = summarise_held_state(held);
+  std::string message = describe_time_step_without_equilibrium(context.scenario, stepper, recorder.held_state(),
+                                                              model.mechanics(), &context.folder);
+  summary.last_held = summarise_held_state(recorder.held_state());
   try {
     recorder.draw(describe_status_for_figures(fmt::format("no equilibrium after t = {:g} s", stepper.time()), message));
   } catch (const std::exception& e) {
@@ -414,7 +400,7 @@ output::RunSummary run_coupled_transient(const RunContext& context) {
   if (const auto& state = recorder.fracture_state())
     summary.fractures = summarise_fractures(*state, fracture_type_names(s));
   summary.converged = !stepper.failed();
-  if (stepper.failed() && !stepper.failed_step().escaped.empty()) {
+  if (failed_without_equilibrium(stepper)) {
     recorder.write_fields();
     recorder.save_checkpoint(stepper, true);
     throw end_without_equilibrium(context, *model, stepper, recorder, std::move(summary));

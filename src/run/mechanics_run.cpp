@@ -158,7 +158,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
     std::vector<geometry::Polygon> polygons;
     for (int b = 0; b < system.block_count(); ++b) polygons.push_back(system.polygon(b));
     const std::string message = describe_no_equilibrium(s, locate_escaping_blocks(escaping, polygons), held,
-                                                        fmt::format("DDA step {}", model.steps()), context.folder);
+                                                        fmt::format("DDA step {}", model.steps()), &context.folder);
     return stop(RunStatus::no_equilibrium, message,
                 describe_status_for_figures(fmt::format("no equilibrium at step {}", model.steps()), message),
                 summarise_held_state(held));

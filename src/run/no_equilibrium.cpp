@@ -146,7 +146,7 @@ std::string describe_held_fractures(const HeldState& held) {
 }  // namespace
 
 std::string describe_no_equilibrium(const scenario::Scenario& s, std::span<const EscapedBlock> blocks,
-                                    const HeldState& held, const std::string& kept, const output::RunFolder& folder,
+                                    const HeldState& held, const std::string& kept, const output::RunFolder* folder,
                                     std::optional<double> load_time) {
   std::vector<std::string> named;
   for (const EscapedBlock& b : blocks)
@@ -157,7 +157,7 @@ std::string describe_no_equilibrium(const scenario::Scenario& s, std::span<const
       "area) and the load still moves them: {}{}; the load exceeds what the blocks' weight, their contacts and the "
       "supports can hold (summary.json, history.csv and the figures are of {})",
       describe_driving_load(s, load_time), load_time ? fmt::format(" (the loads at t = {:g} s)", *load_time) : "",
-      blocks.size(), output::list_items(named, &folder, "escaping_blocks.txt"),
+      blocks.size(), output::list_items(named, folder, "escaping_blocks.txt"),
       describe_held_fractures(held), kept);
 }
 

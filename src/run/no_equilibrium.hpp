@@ -68,10 +68,11 @@ void take_open_fractures(const fractures::FractureState& state, HeldState& held)
 // block 3 at (1.5, 2.4) (moved 1.2 m, size 1 m), ...; in the last state that held (<held>)
 // fractures 2, 5 were open and 14 bonds had broken, 3 more after it; ... (summary.json, history.csv and the
 // figures are of <kept>)". `kept`: the state the run folder holds, the last that finished.
-// Long lists name five and go whole to escaping_blocks.txt in `folder`. `load_time`: a run in
-// time names its loads' values then, "under <load> (the loads at t = 5 s)".
+// Long lists name five and go whole to escaping_blocks.txt in `folder` (none: a model stepped
+// by hand, which writes no file; the line says how many more). `load_time`: a run in time names
+// its loads' values then, "under <load> (the loads at t = 5 s)".
 std::string describe_no_equilibrium(const scenario::Scenario& s, std::span<const EscapedBlock> blocks,
-                                    const HeldState& held, const std::string& kept, const output::RunFolder& folder,
+                                    const HeldState& held, const std::string& kept, const output::RunFolder* folder,
                                     std::optional<double> load_time = std::nullopt);
 
 }  // namespace hydrodda::run

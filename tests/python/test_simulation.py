@@ -427,6 +427,36 @@ def test_a_coupled_transient_simulation_records_the_bonds_each_step_broke_as_the
         hydrodda.Simulation(hydrodda.Scenario.load(VERIFICATION / "free_fall.toml"), threads=1).broken_bonds
 
 
+def test_a_coupled_transient_step_that_throws_the_block_ends_with_no_equilibrium_as_the_program_says(in_tmp):
+    """The jacked block whose mouths' head jumps to 1.1 H* in its fifth step
+    (tests/cli/scenarios/jacking_in_time.toml; H* = rho_r h / rho_w = 2.5 m, Terzaghi's heave):
+    the program ends with status "no equilibrium" (exit 1), the last state that held time step 4
+    at t = 4e5 s. hydrodda.run returns that status, message and last_held, and a Simulation
+    stepped to the end says them in its summary, never "not converged": the same steps on the
+    same blocks, an exact identity with summary.json (no tolerance)."""
+    scenario = hydrodda.Scenario.load(SOURCE_DIR / "tests/cli/scenarios/jacking_in_time.toml")
+    code, _, err = run_program("run", scenario.file, "-o", "prog", "--threads", "1", cwd=in_tmp)
+    assert code == 1, err
+    program = json.loads((in_tmp / "prog" / "summary.json").read_text())
+    assert (program["status"], program["iterations"]) == ("no equilibrium", 4)
+    assert program["last_held"]["state"] == "time step 4, t = 400000 s"
+    assert program["message"].startswith("time step 5 from t = 400000 s to 400050 s")
+
+    result = hydrodda.run(scenario, "run", threads=1)
+    assert (result.status, result.converged, result.iterations) == ("no equilibrium", False, 4)
+    assert result.message == program["message"]
+    for key in ("status", "converged", "message", "time", "iterations", "last_held"):
+        assert result.summary[key] == program[key], key
+
+    sim = hydrodda.Simulation(scenario, threads=1)
+    assert sim.step(10) == 4  # the fifth step fails at the floor: no more are taken
+    assert (sim.finished, sim.time) == (True, 4.0e5)
+    assert sim.step() == 0
+    summary = sim.summary
+    for key in ("status", "converged", "message", "time", "iterations", "last_held"):
+        assert summary.get(key) == program[key], key
+
+
 def test_a_static_model_cut_short_of_rest_says_it_did_not_converge_as_its_run_does(in_tmp):
     """A static mechanics model whose steps end with its blocks still moving (the pushed block at
     a time step of 1e-4 s, two steps) is not converged, and says why as summary.json does."""

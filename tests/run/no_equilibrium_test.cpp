@@ -61,7 +61,7 @@ TEST(NoEquilibrium, TheMessageNamesTheLoadTheBlocksAndTheOpenFractures) {
   held.step = 1;
   held.fractures_known = true;
   held.open_fractures = {3, 7};
-  EXPECT_EQ(run::describe_no_equilibrium(seal_under_pressure(), blocks, held, "coupling iteration 2", folder),
+  EXPECT_EQ(run::describe_no_equilibrium(seal_under_pressure(), blocks, held, "coupling iteration 2", &folder),
             "no mechanical equilibrium under flow.boundary \"bottom\" pressure = 1.1e+07 Pa, against \"top\" pressure = "
             "6e+06 Pa: 2 block(s) moved farther than their own size (the square root of their area) and the load still "
             "moves them: block 13 at (8.52, 13.4) (moved 11.4 m, size 1 m), block 2 at (4.5, 12.9) (moved 10.8 m, "
@@ -70,23 +70,23 @@ TEST(NoEquilibrium, TheMessageNamesTheLoadTheBlocksAndTheOpenFractures) {
             "figures are of coupling iteration 2)");
   held = run::HeldState{};
   held.fractures_known = true;
-  const std::string none = run::describe_no_equilibrium(seal_under_pressure(), blocks, held, "DDA step 300", folder);
+  const std::string none = run::describe_no_equilibrium(seal_under_pressure(), blocks, held, "DDA step 300", &folder);
   EXPECT_NE(none.find("; in the last state that held (the blocks as built) no fracture was open;"), std::string::npos)
       << none;
   held.fractures_known = false;
-  const std::string unknown = run::describe_no_equilibrium(seal_under_pressure(), blocks, held, "DDA step 300", folder);
+  const std::string unknown = run::describe_no_equilibrium(seal_under_pressure(), blocks, held, "DDA step 300", &folder);
   EXPECT_EQ(unknown.find("fracture"), std::string::npos) << unknown;
   EXPECT_EQ(unknown.find("held"), std::string::npos) << unknown;
   // A model with bonds: how many had broken by then, with or without traces to measure.
   held.name = "DDA step 28";
   held.broken_bonds = 1;
-  const std::string one = run::describe_no_equilibrium(seal_under_pressure(), blocks, held, "DDA step 29", folder);
+  const std::string one = run::describe_no_equilibrium(seal_under_pressure(), blocks, held, "DDA step 29", &folder);
   EXPECT_NE(one.find("; in the last state that held (DDA step 28) 1 bond had broken (fractures.csv's bond rows to "
                      "then); the load"),
             std::string::npos)
       << one;
   held.broken_bonds_later = 3;
-  const std::string later = run::describe_no_equilibrium(seal_under_pressure(), blocks, held, "DDA step 29", folder);
+  const std::string later = run::describe_no_equilibrium(seal_under_pressure(), blocks, held, "DDA step 29", &folder);
   EXPECT_NE(later.find("(DDA step 28) 1 bond had broken (fractures.csv's bond rows to then; 3 more after it); the"),
             std::string::npos)
       << later;
@@ -94,7 +94,7 @@ TEST(NoEquilibrium, TheMessageNamesTheLoadTheBlocksAndTheOpenFractures) {
   held.open_fractures = {4};
   held.broken_bonds = 0;
   held.broken_bonds_later = 0;
-  const std::string both = run::describe_no_equilibrium(seal_under_pressure(), blocks, held, "DDA step 29", folder);
+  const std::string both = run::describe_no_equilibrium(seal_under_pressure(), blocks, held, "DDA step 29", &folder);
   EXPECT_NE(both.find("; in the last state that held (DDA step 28) fracture 4 was open and no bond had broken; the load"),
             std::string::npos)
       << both;
