@@ -166,21 +166,85 @@ bool System::is_corner_of_intact_rock(int block, int vertex) const {
 // other's bonded faces' ends; a broken face at either gives the contact back (a crack through
 // the node, its corners joints' again). On the rock's edge: a node welded just below a bedding
 // joint whose corners' contacts never settled (docs/studies/2026-11-30-bonds-at-scale.md).
+// At a node where a crack ends, a corner keeps its contacts with the broken faces and with its
+// two neighbours' faces, but not with the intact faces past them that it reaches about the
+// node through intact faces (bonded_about_node): its neighbours stand between. It
+// may have slid along such a face's end by more than the tie, so the end is looked for within
+// the contact distance (the resolved seal's first breaks: a corner 8e-7 m into the end of an
+// intact face two sub-blocks away across the node, contact forces that never settled). Along a
+// crack through the node, the corners across it keep theirs; at a crack's tip, those beside it
+// keep their neighbours' faces, which may break next (without them a running crack of softening
+// bonds failed a step: docs/studies/2026-11-30-intact-seal-tip.md).
 void System::drop_corner_contacts_within_intact_rock(ContactCandidates& candidates) const {
   if (bond_sides_.empty()) return;
   const double tie = 1e-3 * contact_distance_;  // contact_detection.cpp's corner tie
+  // Whether the intact face `bond` of the candidate is past the corner's neighbours at its node
+  // (neither of its two sub-blocks one of them) and reached through them to `corner` of it.
+  const auto shielded_by_neighbours = [&](const ContactCandidate& c, int bond, int corner) {
+    const std::array<BondSide, 2>& sides = bond_sides_[static_cast<std::size_t>(bond)];
+    const int other = sides[0].block == c.key.block_j ? sides[1].block : sides[0].block;
+    const std::vector<int>& own = edge_bonds_[static_cast<std::size_t>(c.key.block_i)];
+    const std::size_t n = own.size(), v = static_cast<std::size_t>(c.key.vertex);
+    for (const int face : {own[v], own[(v + n - 1) % n]}) {
+      if (face < 0) continue;
+      for (const BondSide& side : bond_sides_[static_cast<std::size_t>(face)])
+        if (side.block != c.key.block_i && (side.block == c.key.block_j || side.block == other)) return false;
+    }
+    const std::vector<NodeCorner> about = bonded_about_node(c.key.block_i, c.key.vertex);
+    return std::find(about.begin(), about.end(), NodeCorner{c.key.block_j, corner}) != about.end();
+  };
   const auto tip_to_tip_within_intact_rock = [&](const ContactCandidate& c) {
-    if (bond_of(c.key) < 0 || bond_across(c.key) >= 0) return false;  // no bond, or the face's own
+    const int bond = bond_of(c.key);
+    if (bond < 0 || bond_across(c.key) >= 0) return false;  // no bond, or the face's own
     const Polygon& edge_block = blocks_[static_cast<std::size_t>(c.key.block_j)].polygon;
     const Point p = blocks_[static_cast<std::size_t>(c.key.block_i)].polygon[static_cast<std::size_t>(c.key.vertex)];
     const auto start = static_cast<std::size_t>(c.key.edge);
     const std::size_t end = (start + 1) % edge_block.size();
-    const bool at_start = geometry::distance(p, edge_block[start]) <= tie;
-    if (!at_start && geometry::distance(p, edge_block[end]) > tie) return false;
-    return is_corner_of_intact_rock(c.key.block_i, c.key.vertex) &&
-           is_corner_of_intact_rock(c.key.block_j, static_cast<int>(at_start ? start : end));
+    const double to_start = geometry::distance(p, edge_block[start]);
+    const double to_end = geometry::distance(p, edge_block[end]);
+    const int corner = static_cast<int>(to_start <= to_end ? start : end);
+    const double to_corner = std::min(to_start, to_end);
+    if (to_corner <= tie && is_corner_of_intact_rock(c.key.block_i, c.key.vertex) &&
+        is_corner_of_intact_rock(c.key.block_j, corner))
+      return true;
+    return to_corner <= contact_distance_ && bond_broken_[static_cast<std::size_t>(bond)] == 0 &&
+           shielded_by_neighbours(c, bond, corner);
   };
   candidates.erase(std::remove_if(candidates.begin(), candidates.end(), tip_to_tip_within_intact_rock), candidates.end());
+}
+
+// The sub-blocks about the node at corner `vertex` of `block` that it reaches through intact
+// bonded faces without crossing a broken one or a face of no bond, each with its corner there
+// (the start left out). At a crack's tip they stand between the corners beside the crack and
+// the intact faces' ends across the node; along a crack through the node, those of the far side
+// are not among them.
+//
+// Pseudocode (a face's two sides run opposite ways: X[k] ↔ Y[e + 1], X[k + 1] ↔ Y[e]):
+//   for each way about the node:
+//     (B, w) = (block, vertex)
+//     repeat: the face of B at w that way (edge w forward, edge w − 1 back) an intact bond
+//             to (C, e), else stop; (B, w) = (C, e + 1) forward, (C, e) back; stop back at the start
+std::vector<System::NodeCorner> System::bonded_about_node(int block, int vertex) const {
+  std::vector<NodeCorner> reached;
+  for (const bool forward : {true, false}) {
+    NodeCorner at{block, vertex};
+    for (std::size_t guard = 0; guard < 64; ++guard) {  // a node of a tessellation has a handful
+      const std::vector<int>& bonds = edge_bonds_[static_cast<std::size_t>(at.block)];
+      if (bonds.empty()) break;
+      const std::size_t n = bonds.size();
+      const auto w = static_cast<std::size_t>(at.vertex);
+      const int bond = bonds[forward ? w : (w + n - 1) % n];
+      if (bond < 0 || bond_broken_[static_cast<std::size_t>(bond)] != 0) break;
+      const std::array<BondSide, 2>& sides = bond_sides_[static_cast<std::size_t>(bond)];
+      const BondSide& next = sides[0].block == at.block ? sides[1] : sides[0];
+      if (next.block == block) return reached;  // round the node: every face at it intact
+      const std::size_t n_next = blocks_[static_cast<std::size_t>(next.block)].polygon.size();
+      at = {next.block, static_cast<int>(forward ? (static_cast<std::size_t>(next.edge) + 1) % n_next
+                                                 : static_cast<std::size_t>(next.edge))};
+      reached.push_back(at);
+    }
+  }
+  return reached;
 }
 
 // An intact bonded face is carried by one vertex–edge contact at each end (Shi 1988, §4.3); where

@@ -303,6 +303,14 @@ class System {
   // both corners are of intact rock, inside it or on its edge (tip to tip at a node of the
   // tessellation).
   bool is_corner_of_intact_rock(int block, int vertex) const;
+  // A sub-block's corner at a node of the tessellation.
+  struct NodeCorner {
+    int block = -1;
+    int vertex = -1;
+    bool operator==(const NodeCorner&) const = default;
+  };
+  // bonds.cpp: the corners about a corner's node that it reaches through intact bonded faces.
+  std::vector<NodeCorner> bonded_about_node(int block, int vertex) const;
   void drop_corner_contacts_within_intact_rock(ContactCandidates& candidates) const;
   // bonds.cpp: drops, at an end of an intact bonded face whose two corners have parted along it,
   // the contact of the corner past the other's edge where the other's lies within its own.

@@ -3,7 +3,10 @@
 // faces. A corner whose two faces are intact bonds reaches a third sub-block only through its
 // bonded neighbours, so where both corners are inside intact rock neither touches the other's
 // faces' ends; so too where a corner has one face on the rock's edge (a joint through the node,
-// no bond) and the other bonded; once a face at either corner is broken, their contact comes back.
+// no bond) and the other bonded. Once a face at either corner is broken, the contacts with the
+// broken faces come back; at a crack's tip, those with the ends of intact faces past the
+// corner's neighbours, which it reaches about the node through them, do not, while along a
+// crack through the node the corners across it touch the far side's faces.
 // Exact: the contacts are counted, no tolerance.
 
 #include <gtest/gtest.h>
@@ -90,9 +93,9 @@ TEST(NodeCornerContacts, ACornerOnTheRocksEdgeHasNoContactWithTheThirdSubBlocksA
 }
 
 TEST(NodeCornerContacts, ABrokenFaceAtTheCornerGivesItsTipToTipContactsBack) {
-  // Spoke 0 broken: triangles 0 and 5 have a broken face at the centre, so their corners
-  // there touch the other triangles' corners again; those of triangles 1-4, all faces intact,
-  // still touch none of each other's.
+  // Spoke 0 broken: triangles 0 and 5 have a broken face at the centre, so the others'
+  // corners there touch it again; those of triangles 1-4, all faces intact, still touch none
+  // of each other's.
   System system(make_node({0}));
   system.step();
   int with_a_broken_corner = 0, between_intact_corners = 0;
@@ -104,6 +107,55 @@ TEST(NodeCornerContacts, ABrokenFaceAtTheCornerGivesItsTipToTipContactsBack) {
   }
   EXPECT_GT(with_a_broken_corner, 0);
   EXPECT_EQ(between_intact_corners, 0);
+}
+
+// Whether spoke `bond` (between triangles bond − 1 and bond) is a face of neither of the
+// neighbours of triangle `block` about the node (block ± 1) nor of the triangle itself.
+bool past_the_neighbours(int block, int bond) {
+  const auto near = [block](int t) { return (t - block + kTriangles + 1) % kTriangles <= 2; };
+  return !near((bond + kTriangles - 1) % kTriangles) && !near(bond);
+}
+
+// At a crack's tip (spoke 0 broken: triangles 0 and 5 beside the crack), a corner beside it
+// reaches the faces past its neighbours about the node through those neighbours, which stand
+// between: no contact with those faces' ends, only with the broken face and its neighbours'
+// faces. (At the resolved seal's new breaks, (5.77, 5.25) at 1,200 m over hydrostatic, such a
+// corner sat 8e-7 m into the end of an intact face two sub-blocks away across the node: the
+// contact forces never settled and the step was cut to nothing.)
+TEST(NodeCornerContacts, AtACracksTipTheCornersBesideItDoNotTouchTheIntactFacesPastTheirNeighbours) {
+  System system(make_node({0}));
+  system.step();
+  int past_neighbours = 0, on_broken_faces = 0;
+  for (const ContactInfo& c : system.contacts()) {
+    const int apart = (c.key.block_j - c.key.block_i + kTriangles) % kTriangles;
+    if (c.key.vertex != 0 || apart == 1 || apart == kTriangles - 1) continue;
+    const int bond = system.bond_of_contact(c.key);
+    ASSERT_GE(bond, 0) << "a corner at the node against a spoke";
+    if (system.is_bond_broken(bond))
+      ++on_broken_faces;
+    else if (past_the_neighbours(c.key.block_i, bond))
+      ++past_neighbours;
+  }
+  EXPECT_EQ(past_neighbours, 0);
+  EXPECT_GT(on_broken_faces, 0);
+}
+
+// A crack through the node (spokes 0 and 3 broken): triangles 0-2 on one side, 3-5 on the
+// other. A corner reaches only its own side through intact faces; across the crack the corners
+// face the far side's faces, intact ones included, as a joint's do.
+TEST(NodeCornerContacts, AlongACrackThroughTheNodeTheCornersAcrossItKeepTheirContacts) {
+  System system(make_node({0, 3}));
+  system.step();
+  const auto side = [](int block) { return block < 3 ? 0 : 1; };
+  int across_on_intact_faces = 0;
+  for (const ContactInfo& c : system.contacts()) {
+    const int apart = (c.key.block_j - c.key.block_i + kTriangles) % kTriangles;
+    if (c.key.vertex != 0 || apart == 1 || apart == kTriangles - 1) continue;
+    const int bond = system.bond_of_contact(c.key);
+    ASSERT_GE(bond, 0) << "a corner at the node against a spoke";
+    if (!system.is_bond_broken(bond) && side(c.key.block_i) != side(c.key.block_j)) ++across_on_intact_faces;
+  }
+  EXPECT_GT(across_on_intact_faces, 0);
 }
 
 }  // namespace
