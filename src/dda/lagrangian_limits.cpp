@@ -38,6 +38,8 @@ char System::open_contacts_standing_off() {
     ContactRecord& r = c.record;
     // An intact bond's contacts stay locked: its face breaks as a whole (update_state).
     if (is_intact_bond(c.key) || r.penetration >= -penetration_tolerance_) continue;
+    note_state_change(c, open_close_pass_, r.state, c.pass_penetration);
+    c.pass_penetration = r.penetration;
     r.state = ContactState::open;
     r.multiplier = 0.0;
     r.normal_force = 0.0;

@@ -231,6 +231,8 @@ void System::detect_contacts() {
       ActiveContact& a = active_[i];
       a.key = c.key;
       a.changed_in_step = false;
+      a.changed_pass = -1;
+      a.pass_penetration = c.penetration;
       while (record != records_.end() && record->first < c.key) ++record;
       if (record != records_.end() && record->first == c.key) {
         a.record = record->second;
@@ -710,11 +712,13 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
   // the crack's running, which breaks a bond after a few of them (softening_bonds.cpp).
   int passes_settling_cohesion = 0;
   Eigen::VectorXd f_pass;  // f_base and the softening bonds' cohesive loads
+  open_close_pass_ = -1;
   for (int oc = 0; oc < pass_cap + passes_breaking_bonds + passes_settling_cohesion &&
                    passes_without_progress < settings_.max_open_close_iterations;
        ++oc) {
     if (interrupt_check_ && interrupt_check_()) return Unsettled::interrupted;
     report.open_close_iterations = oc + 1;
+    open_close_pass_ = oc;
     // Softening bonds' cohesive tractions, from the opening of the last pass (the step's start
     // in the first): loads on their faces (softening_bonds.cpp).
     if (!softening_.empty()) {
@@ -834,7 +838,12 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
       char seen = 0;  // char, not bool: vector<bool>'s elements share bytes between threads
       for (std::size_t i = begin; i < end; ++i) {
         ActiveContact& c = active_[i];
-        if (!update_state(c, d, band, tension_allowance)) continue;
+        const ContactState from = c.record.state;
+        const double penetration_from = c.pass_penetration;
+        const bool changed = update_state(c, d, band, tension_allowance);
+        c.pass_penetration = c.record.penetration;
+        if (!changed) continue;
+        note_state_change(c, oc, from, penetration_from);
         seen |= c.changed_in_step ? 3 : 1;
         c.changed_in_step = true;
       }
@@ -871,6 +880,7 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
     // first solve, measured against this one, can show the loads still settled.
     before_friction_update = d;
   }
+  unsettled_states_ = describe_unsettled_states(open_close_pass_);
   return Unsettled::contact_states;
 }
 
@@ -948,7 +958,7 @@ StepReport System::step() {
         settled ? "block " + std::to_string(largest_block) + " still moved " + format_number(largest) +
                       " m in a step, more than the allowed " + format_number(allowed_displacement_) + " m"
         : unsettled == Unsettled::contact_states
-            ? std::string("the open-close iteration did not settle the contact states")
+            ? "the open-close iteration did not settle the contact states: " + unsettled_states_
             : "the contact forces (Lagrange multipliers and friction) did not settle in " +
                   std::to_string(lagrangian_limit_) + (lagrangian_limit_ == 1 ? " pass: " : " passes: ") +
                   unsettled_forces_;

@@ -280,6 +280,14 @@ class System {
     int dof_i = -1, dof_j = -1;
     // Changed state in one of this step's open–close passes.
     bool changed_in_step = false;
+    // Its penetration as the last pass measured it (the try's start before the first), and of
+    // its last change of state (unsettled_states.cpp): the pass (−1: none in this try), the
+    // state and the penetration before it, and whether it had changed already in the step.
+    double pass_penetration = 0.0;
+    int changed_pass = -1;
+    bool changed_back = false;
+    ContactState state_before = ContactState::open;
+    double penetration_before = 0.0;
     Vector6 en_i = Vector6::Zero(), en_j = Vector6::Zero();
     // Made when the contact is closed at the step's start or closes in a pass
     // (linearise_closed_contact), and read only while it is closed: an open contact's are
@@ -526,6 +534,14 @@ class System {
   // What the last step whose contact forces did not settle left unsettled, for its error.
   std::string unsettled_forces_;
   std::string describe_unsettled_forces(bool penetration_ok, double friction_change, double force_scale) const;
+  // A contact's change of state in open–close pass `pass` (unsettled_states.cpp): noted before
+  // changed_in_step is set, so that a change back is told from a first change.
+  static void note_state_change(ActiveContact& c, int pass, ContactState from, double penetration_from);
+  // What the last step whose contact states did not settle left unsettled, for its error: the
+  // contacts that changed state in its last pass `last_pass` (−1: it ran none).
+  std::string unsettled_states_;
+  std::string describe_unsettled_states(int last_pass) const;
+  int open_close_pass_ = -1;  // the pass under way in solve_step
 };
 
 }  // namespace hydrodda::dda

@@ -107,5 +107,53 @@ TEST(LagrangianLimits, ADeeperOverlapThatNoPassCanMoveStillFailsTheStep) {
   }
 }
 
+// A step whose contact states never settle names the contacts that changed state in its last
+// pass. A block resting on the base, its corner 1's contact sliding in +x along the base's
+// top edge, its spring's shear 2e-7 m the other way (its reference point moved 2e-7 m along
+// the edge), carrying 1e5 N/m of normal force, at a 1e-10 s step: the first pass locks it (a
+// clear reversal: past the hysteresis band of 1e-7 m, ten times the usual as every pass of a
+// try allowed one pass without progress counts as chattering), the second slides it the other
+// way (p × 2e-7 m = 1e5 N/m of shear against 5.8e4 N/m of strength): a second change, which
+// with max_open_close_iterations = 1 ends the try, at any time step, as nothing moves. The error
+// names corner 1, its two states in the last pass and its penetrations (without this: no
+// contact at all).
+TEST(LagrangianLimits, AStepWhoseContactStatesNeverSettleNamesTheContactsThatChanged) {
+  ModelDefinition m;
+  m.materials = {Material{2500.0, 1.0e10, 0.25}};
+  m.blocks.push_back({make_rectangle(-1, -1, 4, 0), 0, true});
+  m.blocks.push_back({make_rectangle(1, 0, 2, 1), 0, false});
+  m.joint = {30.0, 0.0, 0.0};
+  m.settings.analysis = Analysis::static_;
+  m.settings.time_step = 1e-2;
+  m.settings.penetration_tolerance = kTolerance;
+  m.settings.max_open_close_iterations = 1;
+  System system(std::move(m));
+  SystemState state = system.export_state();
+  state.time_step = 1e-10;
+  state.contacts.clear();
+  ContactRecord locked;
+  locked.state = ContactState::locked;
+  locked.multiplier = locked.normal_force = 1e5;
+  locked.reference_ratio = 0.6;  // corner 0's place along edge 2, (4, 0) to (−1, 0)
+  state.contacts.push_back({ContactKey{1, 0, 0, 2}, locked});
+  ContactRecord sliding = locked;
+  sliding.state = ContactState::sliding;
+  sliding.slide_sign = 1;
+  sliding.reference_ratio = 0.4 + 2e-7 / 5.0;  // its shear (p1 − p0)·t = −2e-7 m, t = (−1, 0)
+  state.contacts.push_back({ContactKey{1, 1, 0, 2}, sliding});
+  system.import_state(state);
+  try {
+    system.step();
+    ADD_FAILURE() << "the step should have failed";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("time step fell below any use"), std::string::npos) << what;
+    EXPECT_NE(what.find("the open-close iteration did not settle the contact states: 1 contact changed state in its "
+                        "last pass (pass 2), 1 of them changing back or on: vertex 1 of block 1 against edge 2 of "
+                        "block 0 at (2, 0), locked to sliding, penetration "),
+              std::string::npos) << what;
+  }
+}
+
 }  // namespace
 }  // namespace hydrodda::dda
