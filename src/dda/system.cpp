@@ -727,6 +727,8 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
     }
     const Eigen::VectorXd& f_loads = softening_.empty() ? f_base : f_pass;
     factor_with_contacts();
+    pass_start_multipliers_.resize(closed_.size());
+    for (std::size_t k = 0; k < closed_.size(); ++k) pass_start_multipliers_[k] = active_[closed_[k]].record.multiplier;
     // The sliding contacts' normal forces: those the friction loads were made with (x) and
     // those the solution gives (G(x)).
     std::vector<ActiveContact*> sliding;
@@ -789,12 +791,15 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
       }
       // Forces that have not settled are no solution to accept: the step is cut and retried.
       if (al + 1 == lagrangian_limit_) {
+        // Passes that no longer move the blocks changed only multipliers: those of the contacts
+        // already within the tolerance are taken back (lagrangian_limits.cpp).
+        const bool stalled = !penetration_ok && last_pass.size() == d.size() &&
+                             largest_vertex_motion(d - last_pass) <= settled_motion;
+        if (stalled) extent = undo_stalled_updates_within_tolerance(d);
         // Unless a closed contact stands off its edge: it opens (lagrangian_limits.cpp).
         if (!penetration_ok) opened_standing_off = open_contacts_standing_off();
         if (opened_standing_off) break;
         // Or the passes no longer move the blocks and no overlap grew (lagrangian_limits.cpp).
-        const bool stalled = !penetration_ok && last_pass.size() == d.size() &&
-                             largest_vertex_motion(d - last_pass) <= settled_motion;
         if (stalled && overlaps_held(1.0)) {
           settled_at_once = false;
           force_scale = extent.force_scale;

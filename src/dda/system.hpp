@@ -374,6 +374,10 @@ class System {
   // The multipliers of a try that stalled with its overlaps at the tolerance, for the next
   // try at the step, given to the contacts closed in both.
   void keep_tried_multipliers();
+  // A try whose passes stalled: the closed contacts within the tolerance take back the
+  // multipliers they started the open–close pass with, and every closed contact its force
+  // under the solution d (lagrangian_limits.cpp).
+  ContactForceExtent undo_stalled_updates_within_tolerance(const Eigen::VectorXd& d);
   void start_from_tried_multipliers();
   // After commit_step: the step's unbalanced force into `report` (unbalanced_force.cpp).
   void measure_unbalanced_force(const std::vector<Point>& step_translation, double dt, StepReport& report) const;
@@ -514,6 +518,7 @@ class System {
   // The closed contacts' multipliers at the end of a try of this step that stalled with its
   // overlaps at the tolerance, in key order; empty when the last try did not.
   std::vector<std::pair<ContactKey, double>> tried_multipliers_;
+  std::vector<double> pass_start_multipliers_;  // of closed_, at the open–close pass's start
   int unknown_count_ = 0;
   double time_ = 0.0;
   double dt_ = 0.0;

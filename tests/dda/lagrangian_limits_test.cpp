@@ -107,6 +107,56 @@ TEST(LagrangianLimits, ADeeperOverlapThatNoPassCanMoveStillFailsTheStep) {
   }
 }
 
+// The same block tilted: its corner 0 1e-9 of the tolerance past it, held there as above, and
+// its corner 1 standing 1e-8 m off the base, its contact locked with 2e5 N/m of normal force and
+// a shear of 1e5 N/m (its spring stretched 2e-7 m along the edge), at a 1e-10 s step: the
+// tessellated seal's failed step in small (docs/studies/2026-11-30-a-seal-not-tuned.md). No pass
+// moves the block, and each of a pass's 30 Lagrangian updates λ ← λ + p d lowered corner 1's
+// multiplier by p × 1e-8 m = 5e3 N/m: 1.95e5 N/m at the start (its strength 1.1e5 N/m holds the
+// shear), 4.5e4 after the first pass (2.6e4 N/m of strength: it slid), −1.05e5 after the second
+// (pulling: it opened), a contact within the tolerance let go by updates that moved nothing.
+// Allowed one pass in which a contact changes a second time, every try ended so, whatever its
+// time step, and the step failed. The stalled passes' updates of the contacts within the
+// tolerance are taken back: the step holds at its time step, corner 1 locked with the force it
+// started with (to the 1e-6 of it that the block's motion changes it by), corner 0 held.
+TEST(LagrangianLimits, AStalledTryLeavesTheMultipliersOfContactsWithinTheToleranceAsTheyWere) {
+  const double gap = 1e-8;
+  const double overlap = kTolerance * (1 + 1e-9);
+  const double dt = 1e-10;
+  ModelDefinition m;
+  m.materials = {Material{2500.0, 1.0e10, 0.25}};
+  m.blocks.push_back({make_rectangle(-1, -1, 4, 0), 0, true});
+  m.blocks.push_back({Polygon{{1, -overlap}, {2, gap}, {2, 1 + gap}, {1, 1 - overlap}}, 0, false});
+  m.joint = {30.0, 0.0, 0.0};
+  m.settings.analysis = Analysis::static_;
+  m.settings.time_step = 1e-2;
+  m.settings.penetration_tolerance = kTolerance;
+  m.settings.max_open_close_iterations = 1;
+  System system(std::move(m));
+  SystemState state = system.export_state();
+  state.time_step = dt;
+  state.contacts.clear();
+  ContactRecord held;
+  held.state = ContactState::locked;
+  held.reference_ratio = 0.6;  // corner 0's place along edge 2, (4, 0) to (−1, 0)
+  state.contacts.push_back({ContactKey{1, 0, 0, 2}, held});
+  ContactRecord standing_off = held;
+  standing_off.multiplier = standing_off.normal_force = 2e5;
+  standing_off.reference_ratio = 0.4 + 2e-7 / 5.0;  // corner 1's place, its reference 2e-7 m along
+  state.contacts.push_back({ContactKey{1, 1, 0, 2}, standing_off});
+  system.import_state(state);
+  StepReport report;
+  ASSERT_NO_THROW(report = system.step());
+  EXPECT_EQ(report.retries, 0);
+  EXPECT_EQ(report.time_step, dt);
+  EXPECT_EQ(report.contacts, 2);
+  const double start_force = 2e5 - 5e11 * gap;
+  for (const ContactInfo& c : system.contacts()) {
+    EXPECT_EQ(c.state, ContactState::locked) << "vertex " << c.key.vertex;
+    if (c.key.vertex == 1) EXPECT_NEAR(c.normal_force, start_force, 1e-6 * start_force);
+  }
+}
+
 // A step whose contact states never settle names the contacts that changed state in its last
 // pass. A block resting on the base, its corner 1's contact sliding in +x along the base's
 // top edge, its spring's shear 2e-7 m the other way (its reference point moved 2e-7 m along
