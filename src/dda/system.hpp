@@ -271,7 +271,7 @@ class System {
     Point initial;
   };
   // Linearised contact (Shi 1988 §4): penetration d = d0 + en·D, shear s = s0 + es·D.
-  // What every candidate's pass reads comes first (192 of its 304 bytes): most candidates of a
+  // What every candidate's pass reads comes first (208 of its 368 bytes): most candidates of a
   // large model stay open, and a step walks all of them several times.
   struct ActiveContact {
     ContactKey key;
@@ -280,14 +280,8 @@ class System {
     int dof_i = -1, dof_j = -1;
     // Changed state in one of this step's open–close passes.
     bool changed_in_step = false;
-    // Its penetration as the last pass measured it (the try's start before the first), and of
-    // its last change of state (unsettled_states.cpp): the pass (−1: none in this try), the
-    // state and the penetration before it, and whether it had changed already in the step.
+    // Its penetration as the last pass measured it (the try's start before the first).
     double pass_penetration = 0.0;
-    int changed_pass = -1;
-    bool changed_back = false;
-    ContactState state_before = ContactState::open;
-    double penetration_before = 0.0;
     Vector6 en_i = Vector6::Zero(), en_j = Vector6::Zero();
     // Made when the contact is closed at the step's start or closes in a pass
     // (linearise_closed_contact), and read only while it is closed: an open contact's are
@@ -296,6 +290,13 @@ class System {
     double length = 0.0;  // the face length it carries (tributary_length)
     double stiffness = 0.0;  // its springs' penalty (contact_stiffness)
     Vector6 es_i = Vector6::Zero(), es_j = Vector6::Zero();
+    // Its last change of state, written only as it changes and read only when a step's states
+    // do not settle (unsettled_states.cpp): the pass (−1: none in this try), the state and the
+    // penetration before it, and whether it had changed already in the step.
+    int changed_pass = -1;
+    bool changed_back = false;
+    ContactState state_before = ContactState::open;
+    double penetration_before = 0.0;
   };
   // Whether a loop is long enough to pay for a second thread, which can take some tens of
   // microseconds to wake: one over the blocks (a few hundred nanoseconds each), one that
