@@ -1,5 +1,6 @@
 #include "coupling/fixed_stress_step.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -103,6 +104,68 @@ StepHeads fold_step_heads(std::span<const std::array<int, 3>> triangles, std::sp
     step.heads[i] = heads_at_start[i];
   }
   return step;
+}
+
+namespace {
+
+std::vector<double> gap_shares(std::span<const double> element_areas, std::span<const double> open_area) {
+  if (open_area.size() != element_areas.size())
+    throw std::invalid_argument("gap secant: one open area per element is needed");
+  std::vector<double> share(element_areas.size());
+  for (std::size_t e = 0; e < share.size(); ++e) share[e] = open_area[e] / element_areas[e];
+  return share;
+}
+
+std::vector<double> mean_heads(std::span<const std::array<int, 3>> triangles, std::span<const double> heads) {
+  std::vector<double> mean(triangles.size());
+  for (std::size_t e = 0; e < triangles.size(); ++e) {
+    const std::array<int, 3>& t = triangles[e];
+    mean[e] = (heads[static_cast<std::size_t>(t[0])] + heads[static_cast<std::size_t>(t[1])] +
+               heads[static_cast<std::size_t>(t[2])]) / 3.0;
+  }
+  return mean;
+}
+
+}  // namespace
+
+GapSecant start_gap_secant(std::span<const std::array<int, 3>> triangles, std::span<const double> element_areas,
+                           std::span<const double> open_area, std::span<const double> heads_at_start) {
+  if (triangles.size() != element_areas.size())
+    throw std::invalid_argument("gap secant: one area per element is needed");
+  GapSecant secant{gap_shares(element_areas, open_area), mean_heads(triangles, heads_at_start), {}, {}, 0.0};
+  secant.beta.assign(triangles.size(), 0.0);
+  secant.held_gap.assign(triangles.size(), 0);
+  return secant;
+}
+
+// s = the largest ζgap^{k−2}_e / max(|Δh̄_e|, τ × range of the heads) of the elements whose gap
+// closed shut; the largest of the step, given to every element that holds a gap or held one in
+// the step (header).
+void update_gap_secant(GapSecant& secant, std::span<const std::array<int, 3>> triangles,
+                       std::span<const double> element_areas, std::span<const double> open_area,
+                       std::span<const double> heads, double tolerance) {
+  const std::size_t n = triangles.size();
+  if (element_areas.size() != n || heads.empty() || secant.gap_share.size() != n || secant.beta.size() != n ||
+      secant.held_gap.size() != n)
+    throw std::invalid_argument("gap secant: one area and one secant per element are needed");
+  std::vector<double> share = gap_shares(element_areas, open_area);
+  std::vector<double> mean = mean_heads(triangles, heads);
+  const auto [low, high] = std::minmax_element(heads.begin(), heads.end());
+  const double resolved = tolerance * (*high - *low);
+  // Heads all alike give no scale for a change the loop resolves: no secant is taken then.
+  if (resolved > 0.0)
+    for (std::size_t e = 0; e < n; ++e) {
+      const bool closed_shut = share[e] == 0.0 && secant.gap_share[e] > 0.0;
+      if (!closed_shut) continue;
+      const double head_change = std::max(std::abs(mean[e] - secant.mean_head[e]), resolved);
+      secant.largest = std::max(secant.largest, secant.gap_share[e] / head_change);
+    }
+  for (std::size_t e = 0; e < n; ++e) {
+    if (share[e] > 0.0 || secant.gap_share[e] > 0.0) secant.held_gap[e] = 1;
+    secant.beta[e] = secant.held_gap[e] ? secant.largest : 0.0;
+  }
+  secant.gap_share = std::move(share);
+  secant.mean_head = std::move(mean);
 }
 
 }  // namespace hydrodda::coupling

@@ -19,12 +19,35 @@
 // (porosity.hpp: block b's part of area A_be), its open area A_f and its joint crossings c
 // (length L_c, aperture a_c):
 //   S_e = Σ_b (A_be/A_e) S_b + (A_f/A_e) c_w + Σ_c (L_c/A_e) a_c c_w
-//   β_e = Σ_b (A_be/A_e) α_b²/K_b + Σ_c (L_c/A_e) C_c
+//   β_e = Σ_b (A_be/A_e) α_b²/K_b + Σ_c (L_c/A_e) C_c   (+ β_gap where a gap is or was: below)
 //   ζ_e = Σ_b (A_be/A_e) α_b ε_v,b + A_f/A_e + Σ_c (L_c/A_e) a_c
 // With lumped storage the step is the solver's backward-Euler step (A + Σ_e c_e M_e) h =
 // f + Σ_e c_e M_e h̃ with c_e = (S_e + β_e)/Δt and, per node i (m_i = Σ_{e∋i} A_e/3 c_e),
 //   h̃_i = Σ_{e∋i} (A_e/3)(S_e h^n_i + β_e h^{k−1}_i − (ζ^{k−1}_e − ζ^n_e)) / (Δt m_i):
 // exactly the equation above, node by node (fold_step_heads).
+//
+// The open gaps between blocks have a stabilisation of their own, β_gap (GapSecant below). A
+// gap's volume answers its pressure through the blocks' rigid motion, which no modulus bounds (a
+// block on a film of water at fixed total stress is held by nothing), so the materials' β
+// misses it: a gap that one iteration's mechanics closes shut loses its water at once, and
+// without β_gap the next iteration's flow takes that water undrained (the source
+// −(ζ^{k−1} − ζ^n)/Δt against the storage alone) and its pressure throws the blocks. The split is
+// stable for β at least the compliance at fixed stress, and one larger only slows it
+// (Castelletto, White & Tchelepi 2015, IJNAMG 39, "Accuracy and convergence properties of the
+// fixed-stress iterative solution of two-way coupled poromechanics"; Girault, Kumar & Wheeler
+// 2016, Comput. Geosci. 20, the same for a fracture's storage). β_gap is the compliance the
+// iterations measured where a gap closed shut, the secant of its lost volume over its head:
+//   s^k = max over e with ζgap^{k−1}_e = 0 < ζgap^{k−2}_e of
+//         ζgap^{k−2}_e / max(|h̄^{k−1}_e − h̄^{k−2}_e|, τ (max h^{k−1} − min h^{k−1}))
+//   β_gap^k = max(β_gap^{k−1}, s^k),   β_gap^1 = 0,   ζgap^0, h̄^0 those of the step's start,
+// ζgap_e = A_f/A_e the gaps' share of element e, h̄_e its mean head, τ coupling.tolerance. A head
+// change under what the loop resolves is no change: a gap shut while its head did not move has
+// the compliance of its volume over the smallest head change the loop sees. The largest secant
+// of the step is kept (the shut gap has no volume left to measure it by), and it is given to
+// every element that holds a gap or held one in the step: a block's rigid motion moves every gap
+// along it together, whatever the head at one element. Gaps that only open or narrow give no
+// secant (a crack opening under its pressure is held by the rock's stiffness). β_e += β_gap
+// there, on both sides: it cancels at convergence.
 
 #include <array>
 #include <span>
@@ -73,5 +96,27 @@ struct StepHeads {
 StepHeads fold_step_heads(std::span<const std::array<int, 3>> triangles, std::span<const double> element_areas,
                           const SkeletonVolumes& now, std::span<const double> zeta_at_start, double time_step,
                           std::span<const double> heads_at_start, std::span<const double> heads_last_iterate);
+
+// The open gaps' secant within one time step: what the last iterate left, and β_gap so far.
+struct GapSecant {
+  std::vector<double> gap_share;  // ζgap_e = A_f/A_e of the last iterate's blocks
+  std::vector<double> mean_head;  // h̄_e of the heads the last iterate's blocks were loaded with (m)
+  std::vector<double> beta;       // ρ_w g β_gap,e (1/m): `largest` where a gap is or was, else 0
+  std::vector<char> held_gap;     // the element held a gap at some iterate of the step
+  double largest = 0.0;           // the largest secant of the step so far (1/m)
+};
+
+// The secant at a step's start: the gaps and heads of the step's start, β_gap = 0. Throws
+// std::invalid_argument when the sizes do not fit.
+GapSecant start_gap_secant(std::span<const std::array<int, 3>> triangles, std::span<const double> element_areas,
+                           std::span<const double> open_area, std::span<const double> heads_at_start);
+
+// Iteration k's update from the gaps (`open_area`, m²) and heads of iterate k − 1, with the
+// loop's `tolerance` τ as above; the gaps and heads become the secant's last. Heads all alike
+// give no scale for what the loop resolves: no secant is taken from them. Throws
+// std::invalid_argument when the sizes do not fit.
+void update_gap_secant(GapSecant& secant, std::span<const std::array<int, 3>> triangles,
+                       std::span<const double> element_areas, std::span<const double> open_area,
+                       std::span<const double> heads, double tolerance);
 
 }  // namespace hydrodda::coupling

@@ -237,7 +237,10 @@ PassReport StaggeredLoop::run_pass() {
   pass_start_->kept_factor_single_precision = darcy_.kept_factor_in_single_precision();
   pass_start_->pseudo_time_step = pseudo_time_step_;
   pass_start_->last_steady_change = last_steady_change_;
-  if (time_level_) pass_start_->step_passes = time_level_->passes++;
+  if (time_level_) {
+    pass_start_->step_passes = time_level_->passes++;
+    pass_start_->step_gaps = time_level_->gaps;
+  }
 
   // Porosity and permeability from the blocks as they are now: recomputed every pass.
   auto start = Clock::now();
@@ -504,6 +507,7 @@ void StaggeredLoop::abandon_pass() {
   pseudo_time_step_ = start.pseudo_time_step;
   last_steady_change_ = start.last_steady_change;
   if (time_level_) time_level_->passes = start.step_passes;
+  if (time_level_ && start.step_gaps) time_level_->gaps = std::move(*start.step_gaps);
   if (start.flow_solved) {  // else the heads and the relaxation are still the last pass's
     solution_ = std::move(start.solution);
     previous_update_ = std::move(start.previous_update);

@@ -262,6 +262,7 @@ class StaggeredLoop final : public PassRunner {
     bool kept_factor_single_precision = false;
     double pseudo_time_step = 0.0, last_steady_change = 0.0;
     int step_passes = 0;
+    std::optional<GapSecant> step_gaps;  // the step's gap secant before this pass
   };
   std::optional<PassStart> pass_start_;
 
@@ -308,6 +309,7 @@ class StaggeredLoop final : public PassRunner {
     std::vector<double> heads;
     std::vector<double> zeta;
     int passes = 0;
+    GapSecant gaps;  // the open gaps' own β (fixed_stress_step.hpp)
   };
   std::optional<TimeLevel> time_level_;
   // The DDA system after the last finished pass (as built before the first): what an

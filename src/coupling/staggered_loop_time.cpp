@@ -61,18 +61,23 @@ void StaggeredLoop::begin_time_step(double time_step) {
   const SkeletonVolumes start =
       compute_skeleton_volumes(*settings_.fixed_stress, porosity_mapper_.element_areas(), pieces,
                                block_volumetric_strains(), field.fracture_area, joints_ ? &*joints_ : nullptr, apertures);
-  time_level_ = TimeLevel{time_step, solution_.head, start.zeta, 0};
+  GapSecant gaps =
+      start_gap_secant(mesh_.triangles, porosity_mapper_.element_areas(), field.fracture_area, solution_.head);
+  time_level_ = TimeLevel{time_step, solution_.head, start.zeta, 0, std::move(gaps)};
 }
 
 // Iteration k's flow: (S + β)(h^k − h^n)/Δt − ∇·(K∇h^k) = −(ζ^{k−1} − ζ^n)/Δt + β(h^{k−1} − h^n)/Δt,
 // ζ^{k−1} of the blocks this pass clipped (as the last mechanics left them), h^{k−1} the heads
 // the last mechanics felt.
 hydro::FlowSolution StaggeredLoop::step_in_time(hydro::PermeabilityView permeability) {
-  const TimeLevel& level = *time_level_;
+  TimeLevel& level = *time_level_;
   const std::span<const double> areas = porosity_mapper_.element_areas();
-  const SkeletonVolumes now =
+  SkeletonVolumes now =
       compute_skeleton_volumes(*settings_.fixed_stress, areas, pieces_, block_volumetric_strains(),
                                porosity_.fracture_area, joints_ ? &*joints_ : nullptr, joint_apertures_);
+  // The open gaps' own β, from their change since the last iterate against its heads.
+  update_gap_secant(level.gaps, mesh_.triangles, areas, porosity_.fracture_area, solution_.head, settings_.tolerance);
+  for (std::size_t e = 0; e < now.stabilisation.size(); ++e) now.stabilisation[e] += level.gaps.beta[e];
   const StepHeads step =
       fold_step_heads(mesh_.triangles, areas, now, level.zeta, level.time_step, level.heads, solution_.head);
   return darcy_.solve_step(permeability, step.storage_over_step, hydro::MassMatrix::lumped, step.heads);

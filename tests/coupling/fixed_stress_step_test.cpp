@@ -79,6 +79,51 @@ TEST(FixedStressStep, FoldedHeadsHoldTheStepsStorageStabilisationAndSkeletonChan
   for (std::size_t i = 0; i < h_n.size(); ++i) EXPECT_NEAR(still.heads[i], h_n[i], 1e-14 * h_n[i]) << i;
 }
 
+// The open gaps' secant (fixed_stress_step.hpp): on three triangles, s = the largest
+// ζgap^{k−2}_e / max(|Δh̄_e|, τ (max h − min h)) of the elements whose gap closed shut, kept at its
+// largest over the step's iterates and given to every element that holds or held a gap; gaps
+// that only narrow or open give none. Hand-computed, to round-off.
+TEST(FixedStressStep, TheGapsSecantIsTheLargestOfTheGapsClosedShutGivenWhereAGapIsOrWas) {
+  const std::vector<std::array<int, 3>> triangles{{0, 1, 2}, {1, 3, 2}, {2, 3, 4}};
+  const std::vector<double> areas{0.5, 1.0, 2.0};
+  const double tau = 1.0e-4;
+  // The step's start: a gap in elements 0 and 1, none in 2; heads 0 to 10 m.
+  const std::vector<double> h_n{0.0, 1.0, 2.0, 3.0, 10.0};
+  GapSecant gaps = start_gap_secant(triangles, areas, std::vector<double>{0.01, 0.02, 0.0}, h_n);
+  // Iterate 1 as the start (the step's first iteration): no change, no β.
+  update_gap_secant(gaps, triangles, areas, std::vector<double>{0.01, 0.02, 0.0}, h_n, tau);
+  for (double b : gaps.beta) EXPECT_EQ(b, 0.0);
+  // Iterate 2: element 1's gap halves as its mean head rises 0.5 m, element 2's opens: neither
+  // closed shut, no secant; element 2 now holds a gap.
+  const std::vector<double> h_2{0.0, 1.0, 2.0, 4.5, 10.0};
+  update_gap_secant(gaps, triangles, areas, std::vector<double>{0.01, 0.01, 0.002}, h_2, tau);
+  EXPECT_EQ(gaps.largest, 0.0);
+  for (double b : gaps.beta) EXPECT_EQ(b, 0.0);
+  // Iterate 3: element 0's gap closes shut with its nodes' heads unchanged (the floor
+  // τ × 10 m = 1e-3 m), element 1's shuts as its mean head rises 0.5 m (node 3 by 1.5 m).
+  const std::vector<double> h_3{0.0, 1.0, 2.0, 6.0, 10.0};
+  update_gap_secant(gaps, triangles, areas, std::vector<double>{0.0, 0.0, 0.002}, h_3, tau);
+  const double element_0 = (0.01 / 0.5) / 1.0e-3;  // 20 per m
+  const double element_1 = (0.01 / 1.0) / 0.5;     // 0.02 per m
+  EXPECT_NEAR(gaps.largest, std::max(element_0, element_1), 1e-12 * element_0);
+  for (std::size_t e = 0; e < 3; ++e) EXPECT_NEAR(gaps.beta[e], element_0, 1e-12 * element_0) << e;
+  // Iterate 4: element 2's gap shuts too, over a head change of 4.5 m at its nodes (mean 1.5 m):
+  // a smaller secant, and the step's largest is kept on all three, the shut ones included.
+  const std::vector<double> h_4{0.0, 1.0, 2.0, 10.5, 10.0};
+  update_gap_secant(gaps, triangles, areas, std::vector<double>{0.0, 0.0, 0.0}, h_4, tau);
+  for (std::size_t e = 0; e < 3; ++e) EXPECT_NEAR(gaps.beta[e], element_0, 1e-12 * element_0) << e;
+  // Heads all alike give no scale: a gap shut under them gives no secant.
+  GapSecant flat = start_gap_secant(triangles, areas, std::vector<double>{0.01, 0.0, 0.0}, h_n);
+  update_gap_secant(flat, triangles, areas, std::vector<double>{0.0, 0.0, 0.0}, std::vector<double>(5, 2.0), tau);
+  EXPECT_EQ(flat.largest, 0.0);
+  // A mesh with no gap in the step has no β.
+  GapSecant none = start_gap_secant(triangles, areas, std::vector<double>(3, 0.0), h_n);
+  update_gap_secant(none, triangles, areas, std::vector<double>(3, 0.0), h_2, tau);
+  for (double b : none.beta) EXPECT_EQ(b, 0.0);
+  EXPECT_THROW(update_gap_secant(gaps, triangles, areas, std::vector<double>{0.0, 0.0}, h_2, tau),
+               std::invalid_argument);
+}
+
 // A node that no storing element touches cannot take the skeleton's change: refused, rather
 // than the change silently lost.
 TEST(FixedStressStep, RefusesASkeletonChangeWhereNothingStores) {
