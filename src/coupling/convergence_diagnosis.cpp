@@ -113,9 +113,11 @@ std::string chattering_joints(const LoopAsRun& loop) {
   return "the joints open and shut from pass to pass (a median of " + std::to_string(loop.crossings_switched) +
          " of their crossings with fluid elements switched between open and closed, and " +
          std::to_string(loop.contacts_changed) +
-         " contacts changed state, a pass): no relaxation or acceleration of the heads settles such a loop "
-         "(docs/studies/2026-11-29-loop-convergence.md), and its answer holds only to how far it moved over "
-         "these passes";
+         " contacts changed state, a pass): a relaxation or acceleration of the heads seldom settles such a loop "
+         "(none did on the faulted seal of docs/studies/2026-11-29-loop-convergence.md; Aitken's did on the "
+         "untuned seal of docs/studies/2026-11-30-untuned-seal-fixed-point.md from a fresh start at 0.86 and 0.93 "
+         "of its lift-off, not at 0.97 nor along its loading path), and its answer holds only to how far it moved "
+         "over these passes";
 }
 
 std::string unsettled_advice(const LoopAsRun& loop) {
@@ -128,6 +130,55 @@ std::string unsettled_advice(const LoopAsRun& loop) {
          ", or more mechanics.steps per pass; a "
          "joint that jacks open and shut from pass to pass (history.csv's largest_opening) may have no steady "
          "state under this load";
+}
+
+// Whether the loop's rises come from joint crossings at their opening threshold (the
+// at-threshold rule of convergence_diagnosis.hpp) over the fitted passes first..n − 1 of the
+// failed norm c: no contact changed state in them, a crossing switched in some, every rise
+// c_k > c_{k−1} follows a pass k − 1 that switched one, and the norm's least over the second
+// half is at most its largest over the first (not growing). The cycles this reads are those of
+// the untuned seal near its breach (docs/studies/2026-11-30-untuned-seal-fixed-point.md).
+struct Threshold {
+  bool holds = false;
+  int fewest = 0, most = 0;  // crossings switched a pass, over the fitted passes
+};
+Threshold crossings_at_threshold(const std::vector<double>& c, std::size_t first, const LoopAsRun& loop) {
+  const std::vector<int>& crossings = loop.crossings_by_pass;
+  const std::vector<int>& contacts = loop.contacts_by_pass;
+  if (crossings.size() != c.size() || contacts.size() != c.size() || c.size() - first < 4) return {};
+  Threshold t{false, crossings[first], crossings[first]};
+  for (std::size_t k = first; k < c.size(); ++k) {
+    if (contacts[k] > 0) return {};
+    t.fewest = std::min(t.fewest, crossings[k]);
+    t.most = std::max(t.most, crossings[k]);
+    if (k > first && c[k] > c[k - 1] && crossings[k - 1] == 0) return {};
+  }
+  const std::size_t middle = first + (c.size() - first) / 2;
+  const double early_high = *std::max_element(c.begin() + static_cast<std::ptrdiff_t>(first),
+                                              c.begin() + static_cast<std::ptrdiff_t>(middle));
+  const double late_low = *std::min_element(c.begin() + static_cast<std::ptrdiff_t>(middle), c.end());
+  t.holds = t.most > 0 && late_low <= early_high;
+  return t;
+}
+
+// What a loop kicked back by crossings at their threshold is worth, and what may still help.
+std::string describe_threshold(const Threshold& t, const std::vector<double>& last, const std::string& norms,
+                               const std::string& name, const LoopAsRun& loop) {
+  const auto [low, high] = std::minmax_element(last.begin(), last.end());
+  return norms + " stayed above the tolerance: the " + name + " change (between " + format_number(*low) + " and " +
+         format_number(*high) + " over the last " + std::to_string(last.size()) +
+         " passes) rose only after passes in which joint crossings with fluid elements switched between open and "
+         "closed (" + std::to_string(t.fewest) + " to " + std::to_string(t.most) +
+         " a pass), while no contact changed state: crossings at their opening threshold, which the heads shut "
+         "while they are open and open while they are shut, their hydraulic aperture jumping there, so that no "
+         "state of theirs is a fixed point of the loop at this tolerance; a smaller relaxation does not remove the "
+         "jump" +
+         (loop.acceleration == "none"
+              ? std::string(", coupling.acceleration = \"aitken\" may land on a state where none sits at its "
+                            "threshold, or may not")
+              : std::string()) +
+         " (docs/studies/2026-11-30-untuned-seal-fixed-point.md), and the answer holds only to how far it moved over "
+         "these passes";
 }
 
 // A loop that swings, jumps or drifts after the whole fluid load went on at once: its first pass
@@ -243,6 +294,10 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
   else if (d.rate < 0.95 && falls_as_a_power(last, first_pass)) d.behaviour = NonConvergence::drifting;
   else if (d.rate < 0.95) d.behaviour = NonConvergence::still_converging;
   else d.behaviour = NonConvergence::drifting;
+  const Threshold threshold = crossings_at_threshold(all, first_index, loop);
+  const bool unsettled = d.behaviour == NonConvergence::oscillating || d.behaviour == NonConvergence::erratic ||
+                         d.behaviour == NonConvergence::diverging || d.behaviour == NonConvergence::drifting;
+  if (unsettled && threshold.holds) d.behaviour = NonConvergence::at_threshold;
 
   const bool accelerated = loop.acceleration != "none";
   std::string norms = d.head_failed && d.displacement_failed ? "the head and displacement changes"
@@ -298,6 +353,9 @@ ConvergenceDiagnosis diagnose_non_convergence(const std::vector<double>& head_ch
                (accelerated ? std::string() : std::string(", or try coupling.acceleration = \"anderson\""));
       break;
     }
+    case NonConvergence::at_threshold:
+      d.text = describe_threshold(threshold, last, norms, name, loop) + ramp_advice(loop);
+      break;
     case NonConvergence::drifting:
       d.text = norms + " stayed above the tolerance: the " + name + " change drifts (" +
                (d.rate < 0.95 ? "at " + level + ", falling only as a power of the passes, not geometrically"

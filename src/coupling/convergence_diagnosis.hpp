@@ -17,6 +17,7 @@ enum class NonConvergence {
   too_few_passes,    // fewer than four passes: too few to tell
   never_at_rest,     // the blocks came to rest in none of the last passes (settling passes)
   not_counted,       // both norms under the tolerance at the last pass, which could not count
+  at_threshold,      // settling between passes, kicked back each time joint crossings switch
 };
 
 struct ConvergenceDiagnosis {
@@ -47,6 +48,14 @@ struct ConvergenceDiagnosis {
 //   fitted trend (its rate then predicts nothing); drifting when r < 0.95 but log c lies nearer a line in log k than in
 //   k with a slope above −2 (it falls only as a power of the pass k); still converging when
 //   r < 0.95 otherwise; drifting otherwise.
+// at threshold, in place of oscillating, erratic, diverging or drifting, when the passes' joint
+// crossings and contact changes are known and, over the fitted passes, no contact changed state,
+// some joint crossing switched between open and closed, every rise of the norm came in the pass
+// after one that switched a crossing (the flow of pass k sees the blocks pass k − 1 left), and
+// the norm did not grow through them (its least over their second half is at most its largest
+// over the first): the loop settles while the crossings stand still and is kicked back when one
+// switches. The hydraulic aperture jumps at a crossing's opening threshold, so a crossing that
+// the heads open while it is shut and shut while it is open has no state that is a fixed point.
 // never at rest as above (kPassesNotAtRest);
 // `loop` is the loop as run: the advice names an acceleration only to a loop that had none,
 // settling passes only to a loop whose passes did not settle, a relaxation below the one it had,
@@ -66,6 +75,10 @@ struct LoopAsRun {
   bool sudden_load = false;
   // history.csv's largest_opening (m), one a pass; empty when not known.
   std::vector<double> largest_opening;
+  // history.csv's joint_crossings_switched and contact_state_changes, one a pass (empty when
+  // not known, or without joint apertures): the at-threshold rule reads them pass by pass.
+  std::vector<int> crossings_by_pass;
+  std::vector<int> contacts_by_pass;
 };
 // A loop that oscillates or jumps while a median of at least this many joint crossings switch
 // between open and closed every pass is told that its joints chatter rather than sent to a

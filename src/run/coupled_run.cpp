@@ -320,10 +320,15 @@ std::string describe_non_convergence(const Round& round) {
   const std::size_t opening_column = column("largest_opening");
   std::vector<double> two_passes;  // history.csv's head_change_two_passes
   std::vector<double> largest_opening;
+  std::vector<int> crossings, contacts;  // history.csv's joint_crossings_switched, contact_state_changes
+  const std::size_t crossings_column = column("joint_crossings_switched");
+  const std::size_t contacts_column = column("contact_state_changes");
   int passes_not_at_rest = 0;      // the last passes in a row whose at_rest is 0
   for (const std::vector<std::string>& row : recorder.history_rows()) {
     two_passes.push_back(std::stod(row.at(two_passes_column)));
     largest_opening.push_back(std::stod(row.at(opening_column)));
+    crossings.push_back(std::stoi(row.at(crossings_column)));
+    contacts.push_back(std::stoi(row.at(contacts_column)));
     passes_not_at_rest = row.at(at_rest_column) == "0" ? passes_not_at_rest + 1 : 0;
   }
   const coupling::ConvergenceDiagnosis why =
@@ -336,7 +341,9 @@ std::string describe_non_convergence(const Round& round) {
                                           .crossings_switched = median_of_last("joint_crossings_switched"),
                                           .contacts_changed = median_of_last("contact_state_changes"),
                                           .sudden_load = s.coupling.ramp_passes == 1 && round.model.load_step() == 1,
-                                          .largest_opening = std::move(largest_opening)});
+                                          .largest_opening = std::move(largest_opening),
+                                          .crossings_by_pass = std::move(crossings),
+                                          .contacts_by_pass = std::move(contacts)});
   std::string message = fmt::format("the coupling loop did not converge in {} iterations (tolerance {:g}): {}",
                                     s.coupling.max_iterations, s.coupling.tolerance, why.text);
   const bool never_at_rest = why.behaviour == coupling::NonConvergence::never_at_rest;
