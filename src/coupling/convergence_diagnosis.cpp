@@ -170,9 +170,8 @@ std::string describe_threshold(const Threshold& t, const std::vector<double>& la
          " passes) rose only after passes in which joint crossings with fluid elements switched between open and "
          "closed (" + std::to_string(t.fewest) + " to " + std::to_string(t.most) +
          " a pass), while no contact changed state: crossings at their opening threshold, which the heads shut "
-         "while they are open and open while they are shut, their hydraulic aperture jumping there, so that no "
-         "state of theirs is a fixed point of the loop at this tolerance; a smaller relaxation does not remove the "
-         "jump" +
+         "while they are open and open while they are shut, their hydraulic aperture jumping there, so that the "
+         "loop may have no fixed point at this tolerance; a smaller relaxation does not remove the jump" +
          (loop.acceleration == "none"
               ? std::string(", coupling.acceleration = \"aitken\" may land on a state where none sits at its "
                             "threshold, or may not")

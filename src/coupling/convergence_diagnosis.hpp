@@ -55,7 +55,7 @@ struct ConvergenceDiagnosis {
 // the norm did not grow through them (its least over their second half is at most its largest
 // over the first): the loop settles while the crossings stand still and is kicked back when one
 // switches. The hydraulic aperture jumps at a crossing's opening threshold, so a crossing that
-// the heads open while it is shut and shut while it is open has no state that is a fixed point.
+// the heads open while it is shut and shut while it is open may leave the loop no fixed point.
 // never at rest as above (kPassesNotAtRest);
 // `loop` is the loop as run: the advice names an acceleration only to a loop that had none,
 // settling passes only to a loop whose passes did not settle, a relaxation below the one it had,
