@@ -182,6 +182,9 @@ class StaggeredLoop final : public PassRunner {
   // with the last step's end. Throws std::logic_error without fixed_stress.
   void start_in_time(std::optional<hydro::FlowSolution> initial);
   void begin_time_step(double time_step);
+  // The passes after it steady ones again, from the state now: what a time step that failed
+  // asks of its loads (run/no_equilibrium_in_time.hpp). begin_time_step() takes up time again.
+  void leave_time_step() { time_level_.reset(); }
   double flow_reference_head() const { return darcy_.reference_head(); }
 
   // New values of the flow boundary conditions (DarcySolver::set_boundary_values), taken from

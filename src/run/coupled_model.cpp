@@ -169,6 +169,12 @@ void CoupledModel::begin_time_step(double time, double time_step) {
   loop_->begin_time_step(time_step);
 }
 
+void CoupledModel::begin_steady_at(double time) {
+  loop_->set_flow_boundary_values(build_flow_problem(*scenario_.flow, time).boundaries);
+  system_->hold_load_time(time);
+  loop_->leave_time_step();
+}
+
 void CoupledModel::set_tractions(std::vector<scenario::Traction> tractions) {
   scenario::Scenario changed = scenario_;
   changed.mechanics->tractions = std::move(tractions);

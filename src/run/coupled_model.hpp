@@ -84,6 +84,9 @@ class CoupledModel {
   bool transient() const { return scenario_.flow && scenario_.flow->transient; }
   void start_in_time();
   void begin_time_step(double time, double time_step);
+  // Steady passes from the state now under the boundary values and loads of `time` (a time
+  // step that failed, asking whether its loads have an equilibrium at all).
+  void begin_steady_at(double time);
 
   // The state after the last finished pass (as built before the first), and its restoration
   // into a model built from the same scenario (continuing a run); throws std::invalid_argument

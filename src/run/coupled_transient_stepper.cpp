@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "coupling/staggered_loop.hpp"
+#include "run/no_equilibrium_in_time.hpp"
 
 namespace hydrodda::run {
 
@@ -137,10 +138,19 @@ CoupledTransientStepper::Outcome CoupledTransientStepper::step(const std::functi
   }
   if (!attempt.converged) {
     failed_ = true;
-    // Blocks the step's own load throws, in its first iteration, have no equilibrium under it;
-    // thrown later, by heads the iterations fed back, they end the run not converged.
-    if (attempt.escaped_in != 1) attempt.escaped.clear();
-    failed_step_ = {position_.steps + 1, time, length, cuts, attempt.why, std::move(attempt.escaped)};
+    // Blocks the step's own load throws, in its first iteration, have no equilibrium under it.
+    // Thrown later, by heads the iterations fed back, they may be the iterations' doing: the
+    // load is asked by the steady loop's own criterion, from the last step's end.
+    int steady_pass = 0;
+    if (attempt.escaped_in > 1) {
+      SteadyCheck check = check_steady_equilibrium(model_, time + length);
+      model_.import_state(saved_);
+      attempt.escaped = std::move(check.escaped);
+      steady_pass = check.pass;
+      if (attempt.escaped.empty()) attempt.why += "; " + check.ended;
+    }
+    failed_step_ = {position_.steps + 1, time, length, cuts, attempt.why, std::move(attempt.escaped),
+                    attempt.escaped_in, steady_pass};
     failure_ = fmt::format("not converged at t = {:g} s: the step from there failed at {:g} s after {} cut(s), and "
                            "half of it would be under the floor of {:g} s (flow.transient.time_step / 2^{}); the "
                            "last try: {}",

@@ -35,16 +35,20 @@ struct StepRecord {
 };
 
 // A step that failed at the floor: the time step it would have been, where it started, its last
-// try's length, the cuts before it and why that try failed; `escaped`, the blocks that try's
-// first iteration left farther than their own size (the step's loads have no equilibrium for
-// them), farthest first, where it left them; none when it failed otherwise, or threw them only
-// in a later iteration (coupled_transient_stepper.cpp).
+// try's length, the cuts before it and why that try failed; `escaped`, the blocks the step's
+// loads have no equilibrium for, farthest first: those the try's first iteration left farther
+// than their own size, where it left them, or, thrown in a later iteration (`escaped_in`), those
+// the steady passes from the last step's end under the step's end loads threw, where their pass
+// `steady_pass` left them (check_steady_equilibrium); none when it failed otherwise, or when
+// those steady passes threw none (coupled_transient_stepper.cpp).
 struct StepFailure {
   int step = 0;
   double time = 0.0, length = 0.0;
   int cuts = 0;
   std::string why;
   std::vector<EscapedBlock> escaped;
+  int escaped_in = 0;
+  int steady_pass = 0;
 };
 
 class CoupledTransientStepper {

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <exception>
+
 #include "run/coupled_transient.hpp"
 
 namespace hydrodda::run {
@@ -15,8 +17,60 @@ HeldState hold_time_step(int step, double time, const dda::System& system, const
   return held;
 }
 
+namespace {
+
+// The steady check's passes are no run's: nothing records them.
+class QuietObserver final : public coupling::PassObserver {
+ public:
+  void after_pass(const coupling::PassReport&) override {}
+};
+
+// Where the blocks a failed step names were left, and by what.
+std::string where_named(const StepFailure& failed) {
+  if (failed.steady_pass == 0) return fmt::format("the last try of time step {} left them", failed.step);
+  return fmt::format("steady passes from that state under these loads left them in their pass {} (the last try of "
+                     "time step {} threw blocks in its iteration {}, after the first held them)",
+                     failed.steady_pass, failed.step, failed.escaped_in);
+}
+
+}  // namespace
+
 bool failed_without_equilibrium(const CoupledTransientStepper& stepper) {
   return stepper.failed() && !stepper.failed_step().escaped.empty();
+}
+
+SteadyCheck check_steady_equilibrium(CoupledModel& model, double time) {
+  const int most = model.scenario().coupling.max_iterations;
+  const std::string asked = fmt::format("steady passes from the last step's end under the loads at t = {:g} s", time);
+  model.begin_steady_at(time);
+  const int before = model.iterations();
+  QuietObserver observer;
+  coupling::LoopResult result;
+  try {
+    result = model.run({before + most, std::nullopt}, observer);
+  } catch (const coupling::PassInterrupted&) {
+    return {.ended = fmt::format("{} were interrupted", asked)};
+  } catch (const std::exception& e) {
+    // A DDA step or flow solve that fails while blocks fly off is their escape, as in a steady run.
+    std::vector<EscapedBlock> escaped =
+        locate_escaping_blocks(model.loop().blocks_beyond_their_size(), model.block_polygons());
+    const int pass = model.iterations() + 1 - before;
+    model.abandon_pass();
+    if (escaped.empty()) return {.ended = fmt::format("{} failed in their pass {} ({})", asked, pass, e.what())};
+    return {.escaped = std::move(escaped), .pass = pass};
+  }
+  const int passes = model.iterations() - before;
+  switch (result.end) {
+    case coupling::LoopEnd::escaping:
+      return {.escaped = locate_escaping_blocks(result.last_pass->escaping, model.block_polygons()),
+              .pass = result.last_pass->iteration - before};
+    case coupling::LoopEnd::converged:
+      return {.ended = fmt::format("{} held the blocks (converged in {} passes)", asked, passes)};
+    case coupling::LoopEnd::diverging:
+      return {.ended = fmt::format("{} diverged in {} passes, no block thrown", asked, passes)};
+    default:
+      return {.ended = fmt::format("{} threw no block in {} (coupling.max_iterations), nor converged", asked, most)};
+  }
 }
 
 std::string describe_time_step_without_equilibrium(const scenario::Scenario& s, const CoupledTransientStepper& stepper,
@@ -33,7 +87,7 @@ std::string describe_time_step_without_equilibrium(const scenario::Scenario& s, 
                      failed.step, failed.time, end, failed.cuts, make_step_control(s).floor) +
          describe_no_equilibrium(
              s, failed.escaped, held,
-             fmt::format("{}; the blocks named are where the last try of time step {} left them", kept, failed.step),
+             fmt::format("{}; the blocks named are where {}", kept, where_named(failed)),
              folder, end);
 }
 

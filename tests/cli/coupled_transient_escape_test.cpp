@@ -8,8 +8,12 @@
 // Exact identities between the message, summary.json, history.csv and fractures.csv (no
 // tolerance). And the same block held at 0.96 H* from a first step of 100 s
 // (tests/cli/scenarios/jacking_held_in_time.toml), which the open gaps' own stabilisation holds
-// (coupling/fixed_stress_step.hpp): against the steady run of the same file.
+// (coupling/fixed_stress_step.hpp): against the steady run of the same file. And the head rising
+// slowly through H* (tests/cli/scenarios/jacking_ramp_in_time.toml), whose last step throws the
+// block only in its second iteration: steady passes from the last step that held name the
+// breach; at H* itself on steps of 10 s they hold the block the iterations threw.
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -31,6 +35,7 @@ namespace {
 
 const fs::path kJacking = fs::path(HYDRODDA_SOURCE_DIR) / "tests/cli/scenarios/jacking_in_time.toml";
 const fs::path kHeld = fs::path(HYDRODDA_SOURCE_DIR) / "tests/cli/scenarios/jacking_held_in_time.toml";
+const fs::path kRamp = fs::path(HYDRODDA_SOURCE_DIR) / "tests/cli/scenarios/jacking_ramp_in_time.toml";
 
 // measure.csv's `uy` of the point "lift" (the upper block's centre), a value a row.
 std::vector<double> lifts(const fs::path& folder) {
@@ -127,6 +132,92 @@ TEST(CoupledTransientEscape, TheJackedBlockAtNinetySixHundredthsOfTheJackingHead
   const double held = lifts(steady.path).back();
   EXPECT_LT(held, -5.0e-5) << "the steady block rests on its base, the gap closed";
   EXPECT_NEAR(uy.back(), held, 1.0e-6 * 5.0e-5);
+}
+
+// The mouths' head H(t) = 2 m + 1e-6 m/s t of jacking_ramp_in_time.toml: through H* = ρ_r h/ρ_w
+// = 2.5 m (Terzaghi's heave: the block's weight against ρ_w g H L) at 5e5 s. Its last step, cut
+// to the floor (97.7 s), throws the block in its second iteration; steady passes from the last
+// step that held, under the loads of that step's end, throw it too (the steady run's "no
+// equilibrium"), so the run ends with no equilibrium. The last step that held and the failed
+// step's end bracket the threshold within 1e-3 of H*: the discrete steady threshold, bisected,
+// lies between 1.0006 and 1.0009 H* (docs/coupling.md, "Hydraulic jacking"); measured 1.00086
+// and 1.00090 H*.
+TEST(CoupledTransientEscape, AHeadRisingSlowlyThroughTheJackingHeadEndsWithNoEquilibriumAtIt) {
+  const auto out = hydrodda::testing::fresh_dir("hydrodda-transient-ramp");
+  const auto result = run_program("-q run " + kRamp.string() + " -o " + out.path.string() + " --threads 1");
+  ASSERT_EQ(result.exit_code, 1) << result.output;
+  const auto summary = nlohmann::json::parse(std::ifstream(out.path / "summary.json"));
+  EXPECT_EQ(summary["status"], "no equilibrium");
+  EXPECT_EQ(summary["converged"], false);
+  const int steps = summary["iterations"];
+  const double held_time = summary["time"];
+  const auto history = read_csv(out.path / "history.csv");
+  ASSERT_EQ(history.size(), static_cast<std::size_t>(steps) + 2) << "t = 0 and a row a step";
+  EXPECT_EQ(std::stoi(history.back()[column_of(history[0], "step")]), steps);
+  ASSERT_TRUE(summary.contains("last_held")) << summary.dump();
+  EXPECT_EQ(summary["last_held"]["step"], steps);
+  EXPECT_EQ(summary["last_held"]["state"], fmt::format("time step {}, t = {:g} s", steps, held_time));
+
+  const std::string message = summary["message"];
+  const std::string from = fmt::format("time step {} from t = {:g} s to ", steps + 1, held_time);
+  ASSERT_EQ(message.rfind(from, 0), 0u) << message;
+  const double end_time = std::stod(message.substr(from.size()));
+  const double head_star = 2500.0 * 1.0 / 1000.0;
+  const double held_head = 2.0 + 1.0e-6 * held_time, end_head = 2.0 + 1.0e-6 * end_time;
+  EXPECT_LT(held_head, end_head);
+  EXPECT_GT(held_head, (1.0 - 1.0e-3) * head_star) << "the last step that held, H = " << held_head;
+  EXPECT_LT(end_head, (1.0 + 1.0e-3) * head_star) << "the failed step's end, H = " << end_head;
+  EXPECT_NE(message.find("1 block(s) moved farther than their own size"), std::string::npos) << message;
+  EXPECT_NE(message.find("block 1 at ("), std::string::npos) << "the upper block: " << message;
+  EXPECT_NE(message.find("the blocks named are where steady passes from that state under these loads left them in "
+                         "their pass "),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find(fmt::format("(the last try of time step {} threw blocks in its iteration 2, after the first "
+                                     "held them)",
+                                     steps + 1)),
+            std::string::npos)
+      << message;
+
+  // Steady passes bounded by coupling.max_iterations, as a steady run's are: five neither throw
+  // the block nor bring it to rest, and the run names no breach (exit 0, not converged).
+  const fs::path five = hydrodda::testing::edited_scenario(kRamp, "jacking_ramp_five",
+                                                           {{"max_iterations = 10", "max_iterations = 5"}});
+  const auto short_out = hydrodda::testing::fresh_dir("hydrodda-transient-ramp-five");
+  const auto short_run = run_program("-q run " + five.string() + " -o " + short_out.path.string() + " --threads 1");
+  ASSERT_EQ(short_run.exit_code, 0) << short_run.output;
+  const auto not_converged = nlohmann::json::parse(std::ifstream(short_out.path / "summary.json"));
+  EXPECT_EQ(not_converged["status"], "ok");
+  EXPECT_EQ(not_converged["converged"], false);
+  EXPECT_FALSE(not_converged.contains("last_held"));
+  const std::string said = not_converged["message"];
+  EXPECT_NE(said.find("threw no block in 5 (coupling.max_iterations), nor converged"), std::string::npos) << said;
+}
+
+// The jacked block at H* itself (2.5 m, under the steady threshold of 1.0006-1.0009 H*) on steps
+// of 10 s with 40 iterations: a step's iterations throw the block in a later iteration, every cut
+// to the floor, but steady passes from the blocks as built under that head hold it, so the run
+// names no breach: not converged, exit 0, saying that the steady passes held the blocks.
+TEST(CoupledTransientEscape, AtTheJackingHeadItselfTheStepsThrownInALaterIterationNameNoBreach) {
+  const fs::path at_head_star = hydrodda::testing::edited_scenario(
+      kJacking, "jacking_at_head_star",
+      {{"head = [[0.0, 2.0], [4.0e5, 2.4], [4.0005e5, 2.75], [6.0e5, 2.75]]", "head = 2.5"},
+       {"head = [[0.0, 2.0], [4.0e5, 2.4], [4.0005e5, 2.75], [6.0e5, 2.75]]", "head = 2.5"},
+       {"end_time = 6.0e5\ntime_step = 1.0e5\nmax_time_step = 1.0e5", "end_time = 60.0\ntime_step = 10.0\nmax_time_step = 10.0"},
+       {"max_iterations = 5", "max_iterations = 40"}});
+  const auto out = hydrodda::testing::fresh_dir("hydrodda-transient-at-head-star");
+  const auto result = run_program("-q run " + at_head_star.string() + " -o " + out.path.string() + " --threads 1");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const auto summary = nlohmann::json::parse(std::ifstream(out.path / "summary.json"));
+  EXPECT_EQ(summary["status"], "ok");
+  EXPECT_EQ(summary["converged"], false);
+  EXPECT_FALSE(summary.contains("last_held"));
+  const std::string message = summary["message"];
+  EXPECT_NE(message.find("blocks escaped beyond their own size in its iteration "), std::string::npos) << message;
+  EXPECT_EQ(message.find("in its first iteration"), std::string::npos) << message;
+  EXPECT_NE(message.find("steady passes from the last step's end under the loads at t = "), std::string::npos)
+      << message;
+  EXPECT_NE(message.find("held the blocks (converged in "), std::string::npos) << message;
 }
 
 }  // namespace

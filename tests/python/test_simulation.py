@@ -457,6 +457,35 @@ def test_a_coupled_transient_step_that_throws_the_block_ends_with_no_equilibrium
         assert summary.get(key) == program[key], key
 
 
+def test_a_head_rising_through_the_jacking_head_ends_with_no_equilibrium_as_the_program_says(in_tmp):
+    """The jacked block whose mouths' head rises slowly through H* = 2.5 m
+    (tests/cli/scenarios/jacking_ramp_in_time.toml): the last step, at the floor, throws the block
+    in its second iteration, steady passes from the last step that held throw it too, and the
+    program ends with status "no equilibrium" (exit 1). hydrodda.run returns what summary.json
+    says, and a Simulation stepped to the end says it in its summary: the same steps on the same
+    blocks, an exact identity (no tolerance)."""
+    scenario = hydrodda.Scenario.load(SOURCE_DIR / "tests/cli/scenarios/jacking_ramp_in_time.toml")
+    code, _, err = run_program("run", scenario.file, "-o", "prog", "--threads", "1", cwd=in_tmp)
+    assert code == 1, err
+    program = json.loads((in_tmp / "prog" / "summary.json").read_text())
+    steps = program["iterations"]
+    assert program["status"] == "no equilibrium"
+    assert program["last_held"]["step"] == steps
+    assert "in its iteration 2, after the first held them" in program["message"]
+
+    result = hydrodda.run(scenario, "run", threads=1)
+    assert (result.status, result.converged, result.iterations) == ("no equilibrium", False, steps)
+    for key in ("status", "converged", "message", "time", "iterations", "last_held"):
+        assert result.summary[key] == program[key], key
+
+    sim = hydrodda.Simulation(scenario, threads=1)
+    assert sim.step(100) == steps  # the next step fails at the floor: no more are taken
+    assert (sim.finished, sim.time) == (True, program["time"])
+    summary = sim.summary
+    for key in ("status", "converged", "message", "time", "iterations", "last_held"):
+        assert summary.get(key) == program[key], key
+
+
 def test_a_static_model_cut_short_of_rest_says_it_did_not_converge_as_its_run_does(in_tmp):
     """A static mechanics model whose steps end with its blocks still moving (the pushed block at
     a time step of 1e-4 s, two steps) is not converged, and says why as summary.json does."""
