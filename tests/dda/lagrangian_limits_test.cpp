@@ -15,20 +15,26 @@ using testing::make_rectangle;
 
 constexpr double kTolerance = 1e-6;
 
+// A 1 m block `upper` (ρ 2500, E 10 GPa: the default penalty 5e11 N/m) over a fixed base whose
+// top is edge 2, (4, 0) to (−1, 0), under gravity, with Coulomb friction of 30° and no cohesion.
+ModelDefinition block_over_base(Polygon upper) {
+  ModelDefinition m;
+  m.materials = {Material{2500.0, 1.0e10, 0.25}};
+  m.blocks.push_back({make_rectangle(-1, -1, 4, 0), 0, true});
+  m.blocks.push_back({std::move(upper), 0, false});
+  m.joint = {30.0, 0.0, 0.0};
+  m.settings.analysis = Analysis::static_;
+  m.settings.time_step = 1e-2;
+  m.settings.penetration_tolerance = kTolerance;
+  return m;
+}
+
 // A 1 m block (ρ 2500, E 10 GPa: the default penalty 5e11 N/m) with its base `lift` m over a
 // fixed base (lift < 0: overlapping it), under gravity; its base corners' contacts with the
 // base's top (edge 2, (4, 0) to (−1, 0)) closed, each pushing with `multiplier` N/m, and the
 // step the next one starts from `time_step` s.
 System make_block_on_closed_contacts(double lift, double multiplier, double time_step) {
-  ModelDefinition m;
-  m.materials = {Material{2500.0, 1.0e10, 0.25}};
-  m.blocks.push_back({make_rectangle(-1, -1, 4, 0), 0, true});
-  m.blocks.push_back({make_rectangle(1, lift, 2, 1 + lift), 0, false});
-  m.joint = {30.0, 0.0, 0.0};
-  m.settings.analysis = Analysis::static_;
-  m.settings.time_step = 1e-2;
-  m.settings.penetration_tolerance = kTolerance;
-  System system(std::move(m));
+  System system(block_over_base(make_rectangle(1, lift, 2, 1 + lift)));
   SystemState state = system.export_state();
   state.time_step = time_step;
   state.contacts.clear();
@@ -123,14 +129,8 @@ TEST(LagrangianLimits, AStalledTryLeavesTheMultipliersOfContactsWithinTheToleran
   const double gap = 1e-8;
   const double overlap = kTolerance * (1 + 1e-9);
   const double dt = 1e-10;
-  ModelDefinition m;
-  m.materials = {Material{2500.0, 1.0e10, 0.25}};
-  m.blocks.push_back({make_rectangle(-1, -1, 4, 0), 0, true});
-  m.blocks.push_back({Polygon{{1, -overlap}, {2, gap}, {2, 1 + gap}, {1, 1 - overlap}}, 0, false});
-  m.joint = {30.0, 0.0, 0.0};
-  m.settings.analysis = Analysis::static_;
-  m.settings.time_step = 1e-2;
-  m.settings.penetration_tolerance = kTolerance;
+  ModelDefinition m =
+      block_over_base(Polygon{{1, -overlap}, {2, gap}, {2, 1 + gap}, {1, 1 - overlap}});
   m.settings.max_open_close_iterations = 1;
   System system(std::move(m));
   SystemState state = system.export_state();
@@ -168,14 +168,7 @@ TEST(LagrangianLimits, AStalledTryLeavesTheMultipliersOfContactsWithinTheToleran
 // names corner 1, its two states in the last pass and its penetrations (without this: no
 // contact at all).
 TEST(LagrangianLimits, AStepWhoseContactStatesNeverSettleNamesTheContactsThatChanged) {
-  ModelDefinition m;
-  m.materials = {Material{2500.0, 1.0e10, 0.25}};
-  m.blocks.push_back({make_rectangle(-1, -1, 4, 0), 0, true});
-  m.blocks.push_back({make_rectangle(1, 0, 2, 1), 0, false});
-  m.joint = {30.0, 0.0, 0.0};
-  m.settings.analysis = Analysis::static_;
-  m.settings.time_step = 1e-2;
-  m.settings.penetration_tolerance = kTolerance;
+  ModelDefinition m = block_over_base(make_rectangle(1, 0, 2, 1));
   m.settings.max_open_close_iterations = 1;
   System system(std::move(m));
   SystemState state = system.export_state();
