@@ -185,6 +185,8 @@ class StaggeredLoop final : public PassRunner {
   // The passes after it steady ones again, from the state now: what a time step that failed
   // asks of its loads (run/no_equilibrium_in_time.hpp). begin_time_step() takes up time again.
   void leave_time_step() { time_level_.reset(); }
+  // Whether the passes are a time step's iterations (begin_time_step) or steady ones.
+  bool in_time_step() const { return time_level_.has_value(); }
   double flow_reference_head() const { return darcy_.reference_head(); }
 
   // New values of the flow boundary conditions (DarcySolver::set_boundary_values), taken from

@@ -132,23 +132,25 @@ CoupledTransientStepper::Outcome CoupledTransientStepper::step(const std::functi
     length /= 2.0;
     ++cuts;
   }
+  // Blocks the step's own load throws, in its first iteration, have no equilibrium under it.
+  // Thrown later, by heads the iterations fed back, they may be the iterations' doing: the load
+  // is asked by the steady loop's own criterion, from the last step's end.
+  int steady_pass = 0;
+  if (!attempt.converged && !attempt.interrupted && attempt.escaped_in > 1) {
+    StepObserver check_observer(stop_requested);
+    SteadyCheck check = check_steady_equilibrium(model_, time + length, check_observer);
+    model_.import_state(saved_);
+    attempt.interrupted = check.interrupted;
+    attempt.escaped = std::move(check.escaped);
+    steady_pass = check.pass;
+    if (attempt.escaped.empty()) attempt.why += "; " + check.ended;
+  }
   if (attempt.interrupted) {
     model_.import_state(saved_);
     return Outcome::interrupted;
   }
   if (!attempt.converged) {
     failed_ = true;
-    // Blocks the step's own load throws, in its first iteration, have no equilibrium under it.
-    // Thrown later, by heads the iterations fed back, they may be the iterations' doing: the
-    // load is asked by the steady loop's own criterion, from the last step's end.
-    int steady_pass = 0;
-    if (attempt.escaped_in > 1) {
-      SteadyCheck check = check_steady_equilibrium(model_, time + length);
-      model_.import_state(saved_);
-      attempt.escaped = std::move(check.escaped);
-      steady_pass = check.pass;
-      if (attempt.escaped.empty()) attempt.why += "; " + check.ended;
-    }
     failed_step_ = {position_.steps + 1, time, length, cuts, attempt.why, std::move(attempt.escaped),
                     attempt.escaped_in, steady_pass};
     failure_ = fmt::format("not converged at t = {:g} s: the step from there failed at {:g} s after {} cut(s), and "

@@ -19,12 +19,6 @@ HeldState hold_time_step(int step, double time, const dda::System& system, const
 
 namespace {
 
-// The steady check's passes are no run's: nothing records them.
-class QuietObserver final : public coupling::PassObserver {
- public:
-  void after_pass(const coupling::PassReport&) override {}
-};
-
 // Where the blocks a failed step names were left, and by what.
 std::string where_named(const StepFailure& failed) {
   if (failed.steady_pass == 0) return fmt::format("the last try of time step {} left them", failed.step);
@@ -39,17 +33,16 @@ bool failed_without_equilibrium(const CoupledTransientStepper& stepper) {
   return stepper.failed() && !stepper.failed_step().escaped.empty();
 }
 
-SteadyCheck check_steady_equilibrium(CoupledModel& model, double time) {
+SteadyCheck check_steady_equilibrium(CoupledModel& model, double time, coupling::PassObserver& observer) {
   const int most = model.scenario().coupling.max_iterations;
   const std::string asked = fmt::format("steady passes from the last step's end under the loads at t = {:g} s", time);
   model.begin_steady_at(time);
   const int before = model.iterations();
-  QuietObserver observer;
   coupling::LoopResult result;
   try {
     result = model.run({before + most, std::nullopt}, observer);
   } catch (const coupling::PassInterrupted&) {
-    return {.ended = fmt::format("{} were interrupted", asked)};
+    return {.interrupted = true};
   } catch (const std::exception& e) {
     // A DDA step or flow solve that fails while blocks fly off is their escape, as in a steady run.
     std::vector<EscapedBlock> escaped =
@@ -64,6 +57,7 @@ SteadyCheck check_steady_equilibrium(CoupledModel& model, double time) {
     case coupling::LoopEnd::escaping:
       return {.escaped = locate_escaping_blocks(result.last_pass->escaping, model.block_polygons()),
               .pass = result.last_pass->iteration - before};
+    case coupling::LoopEnd::stop_requested: return {.interrupted = true};
     case coupling::LoopEnd::converged:
       return {.ended = fmt::format("{} held the blocks (converged in {} passes)", asked, passes)};
     case coupling::LoopEnd::diverging:

@@ -32,14 +32,16 @@ bool failed_without_equilibrium(const CoupledTransientStepper& stepper);
 // criterion (a steady run's "no equilibrium"): up to coupling.max_iterations steady passes from
 // that state under them. `escaped`: the blocks one of them threw farther than their own size,
 // farthest first, where pass `pass` (1: the first) left them; none, and `ended` how the passes
-// ended, when they threw none. The model is left where the passes took it, out of its time
-// step: import the state wanted after.
+// ended, when they threw none; `interrupted` when the stop request (`observer`'s, or the
+// model's before a DDA step) ended them first, which answers nothing. The model is left where
+// the passes took it, out of its time step: import the state wanted after.
 struct SteadyCheck {
   std::vector<EscapedBlock> escaped{};
   int pass = 0;
   std::string ended{};
+  bool interrupted = false;
 };
-SteadyCheck check_steady_equilibrium(CoupledModel& model, double time);
+SteadyCheck check_steady_equilibrium(CoupledModel& model, double time, coupling::PassObserver& observer);
 
 // The message of that end: the step, its loads at its end, the blocks where its last try left
 // them, `held` (with the bonds `system`, at the stepper's last step, broke after it) and that
