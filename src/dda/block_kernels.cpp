@@ -57,32 +57,23 @@ Matrix6 compute_elastic_stiffness(const Moments& m, const Eigen::Matrix3d& elast
 }
 
 Matrix6 compute_mass_matrix(const Moments& m, double density) {
-  // Column k of T as (a + bX + cY) per component; ∫X = ∫Y = 0 about the centroid, so
-  // ∫(a1 + b1X + c1Y)(a2 + b2X + c2Y) = a1a2 A + b1b2 Sxx + c1c2 Syy + (b1c2 + c1b2) Sxy.
-  struct Linear {
-    double a, b, c;
-  };
-  static constexpr std::array<std::array<Linear, 2>, 6> kColumns{{
-      {{{1, 0, 0}, {0, 0, 0}}},
-      {{{0, 0, 0}, {1, 0, 0}}},
-      {{{0, 0, -1}, {0, 1, 0}}},
-      {{{0, 1, 0}, {0, 0, 0}}},
-      {{{0, 0, 0}, {0, 0, 1}}},
-      {{{0, 0, 0.5}, {0, 0.5, 0}}},
-  }};
-  Matrix6 mass;
-  for (int i = 0; i < 6; ++i) {
-    for (int j = 0; j < 6; ++j) {
-      double s = 0.0;
-      for (int comp = 0; comp < 2; ++comp) {
-        const Linear p = kColumns[i][comp];
-        const Linear q = kColumns[j][comp];
-        s += p.a * q.a * m.area + p.b * q.b * m.sxx + p.c * q.c * m.syy +
-             (p.b * q.c + p.c * q.b) * m.sxy;
-      }
-      mass(i, j) = density * s;
-    }
-  }
+  // M = ρ ∫ Tᵀ T dA about the centroid (∫X = ∫Y = 0), with T's columns
+  //   u0: (1, 0)   v0: (0, 1)   r0: (−Y, X)   εx: (X, 0)   εy: (0, Y)   γxy: (Y/2, X/2),
+  // so that each entry is ∫ of the products of two columns: A for the translations,
+  // Sxx = ∫X², Syy = ∫Y², Sxy = ∫XY for the rest (Shi 1988), written out: every step
+  // assembles it for every block.
+  const double a = m.area, sxx = m.sxx, syy = m.syy, sxy = m.sxy;
+  Matrix6 mass = Matrix6::Zero();
+  mass(0, 0) = mass(1, 1) = density * a;
+  mass(2, 2) = density * (syy + sxx);                          // ∫(Y² + X²)
+  mass(2, 3) = mass(3, 2) = density * -sxy;                    // ∫(−Y)(X)
+  mass(2, 4) = mass(4, 2) = density * sxy;                     // ∫(X)(Y)
+  mass(2, 5) = mass(5, 2) = density * (-0.5 * syy + 0.5 * sxx);  // ∫(−Y)(Y/2) + (X)(X/2)
+  mass(3, 3) = density * sxx;
+  mass(3, 5) = mass(5, 3) = density * (0.5 * sxy);             // ∫(X)(Y/2)
+  mass(4, 4) = density * syy;
+  mass(4, 5) = mass(5, 4) = density * (0.5 * sxy);             // ∫(Y)(X/2)
+  mass(5, 5) = density * (0.25 * syy + 0.25 * sxx);            // ∫(Y/2)² + (X/2)²
   return mass;
 }
 
