@@ -65,6 +65,60 @@ void subtract_products_portable(const Matrix6& l, const Matrix6* values, const i
 }
 #endif
 
+#if defined(__x86_64__)
+// The two 6×6 products of a column's elimination (eliminate_columns), with AVX2 where the CPU
+// has it. Each entry is summed as Eigen's coefficient-based product (the portable form) sums
+// it: Σ_k a(r, k) b(k, c), k ascending, a product and then an addition each (no fused
+// multiply–add), so that both forms give the same entries to the bit.
+//
+// x b for b = mᵀ: column c is Σ_k x(:, k) m(c, k).
+[[gnu::target("avx2")]] void multiply_by_transpose_avx2(const Matrix6& x, const Matrix6& m, Matrix6& out) {
+  const double* xs = x.data();
+  for (int c = 0; c < 6; ++c) {
+    __m256d head = _mm256_mul_pd(_mm256_loadu_pd(xs), _mm256_set1_pd(m(c, 0)));
+    __m128d tail = _mm_mul_pd(_mm_loadu_pd(xs + 4), _mm_set1_pd(m(c, 0)));
+    for (int k = 1; k < 6; ++k) {
+      head = _mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(xs + 6 * k), _mm256_set1_pd(m(c, k))), head);
+      tail = _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(xs + 6 * k + 4), _mm_set1_pd(m(c, k))), tail);
+    }
+    _mm256_storeu_pd(out.data() + 6 * c, head);
+    _mm_storeu_pd(out.data() + 6 * c + 4, tail);
+  }
+}
+
+// Rows r … r + 3 of column c of d −= l lᵀ: Σ_k l(r, k) l(c, k).
+[[gnu::target("avx2")]] inline void subtract_gram_four_avx2(const Matrix6& l, int c, int r, Matrix6& d) {
+  const double* ls = l.data();
+  __m256d sum = _mm256_mul_pd(_mm256_loadu_pd(ls + r), _mm256_set1_pd(l(c, 0)));
+  for (int k = 1; k < 6; ++k)
+    sum = _mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(ls + 6 * k + r), _mm256_set1_pd(l(c, k))), sum);
+  double* target = d.data() + 6 * c + r;
+  _mm256_storeu_pd(target, _mm256_sub_pd(_mm256_loadu_pd(target), sum));
+}
+
+// Rows r, r + 1 of column c of the same.
+[[gnu::target("avx2")]] inline void subtract_gram_two_avx2(const Matrix6& l, int c, int r, Matrix6& d) {
+  const double* ls = l.data();
+  __m128d sum = _mm_mul_pd(_mm_loadu_pd(ls + r), _mm_set1_pd(l(c, 0)));
+  for (int k = 1; k < 6; ++k) sum = _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(ls + 6 * k + r), _mm_set1_pd(l(c, k))), sum);
+  double* target = d.data() + 6 * c + r;
+  _mm_storeu_pd(target, _mm_sub_pd(_mm_loadu_pd(target), sum));
+}
+
+// d −= l lᵀ on d's lower triangle (and a few entries above it, in whole registers): the pivot
+// block goes only to Eigen's LLT, which reads no other.
+[[gnu::target("avx2")]] void subtract_gram_lower_avx2(const Matrix6& l, Matrix6& d) {
+  subtract_gram_four_avx2(l, 0, 0, d);
+  subtract_gram_two_avx2(l, 0, 4, d);
+  subtract_gram_four_avx2(l, 1, 0, d);
+  subtract_gram_two_avx2(l, 1, 4, d);
+  subtract_gram_four_avx2(l, 2, 2, d);
+  subtract_gram_four_avx2(l, 3, 2, d);
+  subtract_gram_two_avx2(l, 4, 4, d);
+  subtract_gram_two_avx2(l, 5, 4, d);
+}
+#endif
+
 bool cpu_has_avx2_fma() {
 #if defined(__x86_64__)
   return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
@@ -81,6 +135,26 @@ void subtract_products(const Matrix6& l, const Matrix6* values, const int* rows,
   if (vectorised) return subtract_products_avx2(l, values, rows, count, x);
 #endif
   subtract_products_portable(l, values, rows, count, x);
+}
+
+// L(k, i) = X_i L(i, i)⁻ᵀ.
+Matrix6 multiply_by_transpose(const Matrix6& x, const Matrix6& m) {
+#if defined(__x86_64__)
+  if (vectorised) {
+    Matrix6 out;
+    multiply_by_transpose_avx2(x, m, out);
+    return out;
+  }
+#endif
+  return x * m.transpose();
+}
+
+// The pivot's d −= L(k, i) L(k, i)ᵀ, on its lower triangle at least.
+void subtract_gram_lower(const Matrix6& l, Matrix6& d) {
+#if defined(__x86_64__)
+  if (vectorised) return subtract_gram_lower_avx2(l, d);
+#endif
+  d.noalias() -= l * l.transpose();
 }
 
 }  // namespace
@@ -320,11 +394,11 @@ Matrix6 BlockCholesky::Elimination::diagonal(int k) const {
 void BlockCholesky::Elimination::eliminate_columns(int k, const Reach& r, int top, Matrix6Array& x, Matrix6& d) {
   for (int s = top; s < n_; ++s) {
     const int i = r.stack[s];
-    const Matrix6 lki = x[i] * l_.inverse_diagonal_[i].transpose();
+    const Matrix6 lki = multiply_by_transpose(x[i], l_.inverse_diagonal_[i]);
     x[i].setZero();
     const int first = l_.column_start_[i];
     subtract_products(lki, l_.value_.data() + first, l_.row_.data() + first, filled_[i] - first, x.data());
-    d.noalias() -= lki * lki.transpose();
+    subtract_gram_lower(lki, d);
     l_.row_[filled_[i]] = k;
     l_.value_[filled_[i]++] = lki;
   }
