@@ -532,14 +532,22 @@ Vector6 System::block_unknowns(const Eigen::VectorXd& d, int dof) const {
   return dof < 0 ? Vector6::Zero() : Vector6(d.segment<6>(6 * dof));
 }
 
+namespace {
+
+// e · D for a block's unknowns D in d (zero for a block without unknowns), read in place: every
+// open–close pass takes it twice or thrice for every contact. The same sum as with D copied out.
+double dot_with_block(const Vector6& e, const Eigen::VectorXd& d, int dof) {
+  return dof < 0 ? e.dot(Vector6::Zero()) : e.dot(d.segment<6>(6 * dof));
+}
+
+}  // namespace
+
 double System::compute_penetration(const ActiveContact& c, const Eigen::VectorXd& d) const {
-  return c.penetration0 + c.en_i.dot(block_unknowns(d, c.dof_i)) +
-         c.en_j.dot(block_unknowns(d, c.dof_j));
+  return c.penetration0 + dot_with_block(c.en_i, d, c.dof_i) + dot_with_block(c.en_j, d, c.dof_j);
 }
 
 double System::compute_shear(const ActiveContact& c, const Eigen::VectorXd& d) const {
-  return c.shear0 + c.es_i.dot(block_unknowns(d, c.dof_i)) +
-         c.es_j.dot(block_unknowns(d, c.dof_j));
+  return c.shear0 + dot_with_block(c.es_i, d, c.dof_i) + dot_with_block(c.es_j, d, c.dof_j);
 }
 
 double System::compute_normal_force(const ActiveContact& c, double penetration) const {
