@@ -97,13 +97,28 @@ LabelledPolygon make_voronoi_cell(std::span<const Point> polygon, std::span<cons
   }
 }
 
-// Union–find over every cell vertex: those within `tolerance` of each other share the first
-// one's position (in cell and vertex order). Then each cell drops the edges that joined two
-// vertices of one group, keeping the labels of the edges that remain.
+// How firmly a cell's vertex is tied to the tessellated polygon: 2 at one of its corners (both
+// edges at the vertex on its edges), 1 on one of its edges, 0 inside.
+int count_polygon_edges_at(const LabelledPolygon& cell, std::size_t k) {
+  const int before = cell[(k + cell.size() - 1) % cell.size()].source;
+  return (before < 0 ? 1 : 0) + (cell[k].source < 0 ? 1 : 0);
+}
+
+// Union–find over every cell vertex: those within `tolerance` of each other share one
+// position, that of the member most tied to the polygon (count_polygon_edges_at), the first
+// of those (in cell and vertex order). Then each cell drops the edges that joined two
+// vertices of one group, keeping the labels of the edges that remain. A polygon's corner
+// welded to a bisector's crossing of an edge beside it would move off the other edge, and
+// the sub-blocks would no longer fill the polygon: their faces there would stand up to
+// `tolerance` off the neighbouring block's, and carry nothing of the stress across them.
 void weld_vertices(std::vector<LabelledPolygon>& cells, double tolerance) {
   std::vector<Point> points;
+  std::vector<int> ties;  // count_polygon_edges_at of each
   for (const LabelledPolygon& c : cells)
-    for (const LabelledVertex& v : c) points.push_back(v.point);
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      points.push_back(c[k].point);
+      ties.push_back(count_polygon_edges_at(c, k));
+    }
   std::vector<int> parent(points.size());
   std::iota(parent.begin(), parent.end(), 0);
   const auto root = [&](int i) {
@@ -129,12 +144,17 @@ void weld_vertices(std::vector<LabelledPolygon>& cells, double tolerance) {
       }
     buckets[{kx, ky}].push_back(static_cast<int>(i));
   }
+  std::vector<int> kept_point(points.size(), -1);  // by group root: the member whose position it takes
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    int& kept = kept_point[static_cast<std::size_t>(root(static_cast<int>(i)))];
+    if (kept < 0 || ties[i] > ties[static_cast<std::size_t>(kept)]) kept = static_cast<int>(i);
+  }
   std::size_t next = 0;
   for (LabelledPolygon& c : cells) {
     std::vector<int> group;
     for (LabelledVertex& v : c) {
       group.push_back(root(static_cast<int>(next++)));
-      v.point = points[static_cast<std::size_t>(group.back())];
+      v.point = points[static_cast<std::size_t>(kept_point[static_cast<std::size_t>(group.back())])];
     }
     LabelledPolygon kept;
     for (std::size_t k = 0; k < c.size(); ++k)

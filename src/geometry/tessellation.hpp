@@ -57,7 +57,8 @@ struct Tessellation {
 // neighbours tried are those within 3 `size` (a jittered grid's cell lies within 2√2 size of
 // its seed), more when a cell reaches farther: a bisector cuts a cell only if its seed lies
 // within twice the cell's radius. Then vertices closer than 1e-2 size are welded (a face
-// that short is dropped from both its sub-blocks). Throws std::invalid_argument for a
+// that short is dropped from both its sub-blocks), onto the polygon's corner or edge where one
+// of them lies there, so that the cells fill the polygon exactly. Throws std::invalid_argument for a
 // polygon that is not convex, or seeds that leave a cell degenerate.
 //   for each seed s: cell = polygon
 //     for each other seed t within r, nearest first: cell ∩= {x : |x − s| <= |x − t|}

@@ -10,6 +10,7 @@
 #include "dda/system.hpp"
 #include "geometry/block_network.hpp"
 #include "geometry/joint_sets.hpp"
+#include "geometry/tessellation.hpp"
 #include "test_models.hpp"
 
 namespace hydrodda::dda {
@@ -187,6 +188,58 @@ TEST(InitialStress, JointedModelInItsInSituStressStartsInEquilibrium) {
   m.settings.time_step = 1e-2;
   System system(std::move(m));
   for (int step = 0; step < 20; ++step) system.step();
+  double largest = 0.0;
+  for (int b = 0; b < system.block_count(); ++b) largest = std::max(largest, geometry::norm(system.displacement(b)));
+  EXPECT_LE(largest, 1e-8 * height);
+}
+
+// A block of two bonded Voronoi sub-blocks (x 0–2 m) beside a plain block across a vertical
+// joint (x = 2 m), 3 m high, on rollers left, right and bottom, under 20 MPa of overburden,
+// starting in the in-situ stress of the jointed model above. The sub-blocks' bisector,
+// y = 1.997 − x, crosses the base 3e-3 m from the block's corner (2, 0) on the joint, within
+// the welding of 1e-2 size (geometry/tessellation.hpp): the corner stays where it is, so the
+// sub-block's face along the joint touches the plain block all along and its contacts carry
+// the field's force from the first step. Nothing moves by more than 1e-8 of the height in the
+// first step (the F²/p of the contacts' shear, as above; measured 2.6e-9 m = 8.5e-10 H).
+// Welded onto the crossing, the corner stood 3e-3 m off the joint at the base, the face's
+// lower end carried nothing, and the first step moved the blocks by 1.5e-5 m.
+TEST(InitialStress, TessellatedBlockBesideAJointStartsInEquilibrium) {
+  const double width = 4.0, height = 3.0, size = 1.0;
+  const Point middle{0.9985, 0.9985};  // on the bisector
+  const Point across{0.3, 0.3};        // along its normal
+  const geometry::Tessellation parts = geometry::tessellate_convex(
+      make_rectangle(0, 0, 2, height), std::vector<Point>{middle - across, middle + across}, size,
+      geometry::TessellationKind::voronoi);
+  ASSERT_EQ(parts.cells.size(), 2u);
+  ModelDefinition m;
+  m.materials = {Material{kDensity, 1.0e10, 0.25}};
+  m.joint = {40.0, 0.0, 0.0};
+  m.joint_types = {Joint{40.0, 1.0e9, 1.0e9}};  // the bond's, strong enough never to break
+  for (std::size_t c = 0; c < parts.cells.size(); ++c) {
+    BlockDefinition sub{parts.cells[c], 0, false};
+    for (int source : parts.edge_sources[c]) {
+      sub.edge_bonds.push_back(source >= 0 ? 0 : -1);
+      sub.edge_joints.push_back(source >= 0 ? 1 : 0);
+    }
+    m.blocks.push_back(std::move(sub));
+  }
+  BlockDefinition plain{make_rectangle(2, 0, width, height), 0, false};
+  plain.edge_bonds.assign(4, -1);  // as a scenario's untessellated blocks have
+  m.blocks.push_back(std::move(plain));
+  StressField field;
+  field.at_reference = {-1.0e7, -2.0e7, 0.0};
+  field.reference_y = height;
+  field.gradient = {0.5 * kDensity * kG, kDensity * kG, 0.0};
+  for (auto [a, b] : {std::pair{Point{0, 0}, Point{0, height}}, std::pair{Point{width, 0}, Point{width, height}},
+                      std::pair{Point{0, 0}, Point{width, 0}}}) {
+    auto rollers = make_rollers_on_segment(m.blocks, a, b, 1e-9, field);
+    m.rollers.insert(m.rollers.end(), rollers.begin(), rollers.end());
+  }
+  m.tractions = make_tractions_on_segment(m.blocks, {0, height}, {width, height}, 1e-9, -2.0e7, -2.0e7, 0.0, 0.0);
+  m.initial_stress = field;
+  m.settings.time_step = 1e-2;
+  System system(std::move(m));
+  system.step();
   double largest = 0.0;
   for (int b = 0; b < system.block_count(); ++b) largest = std::max(largest, geometry::norm(system.displacement(b)));
   EXPECT_LE(largest, 1e-8 * height);

@@ -89,6 +89,23 @@ TEST(Tessellation, AConvexPolygonOfAnyShapeIsPartitioned) {
   }
 }
 
+// Two seeds whose bisector, y = x − 3e-3 (at 45°), crosses the square's bottom 3e-3 m from its
+// corner (0, 0), within the welding's 1e-2 size = 5e-3 m of it, the crossing coming first in
+// the cells' order: the corner stays where it is and the crossing goes onto it, so that the
+// cells still fill the square (its corners on their edges to 1e-9 m, the areas summing to it
+// to 1e-12). Welded the other way, the upper cell's left edge ran from (3e-3, 0) and the cells
+// missed a sliver of 4.5e-3 m² of the square.
+TEST(Tessellation, AWeldNearAPolygonsCornerKeepsTheCorner) {
+  const Point middle{1.5015, 1.4985};  // on the bisector
+  const Point across{0.3, -0.3};       // along its normal
+  const std::vector<Point> seeds{middle + across, middle - across};
+  const Tessellation t = tessellate_convex(kSquare, seeds, kSize, TessellationKind::voronoi);
+  ASSERT_EQ(t.cells.size(), 2u);
+  expect_partition(kSquare, t);
+  for (const Polygon& cell : t.cells)
+    for (Point v : cell) EXPECT_TRUE(v.y > 0.0 || v.x == 0.0 || v.x == 4.0) << "a vertex at (" << v.x << ", " << v.y << ")";
+}
+
 TEST(Tessellation, TheSameSeedGivesTheSameSubBlocks) {
   const Tessellation a = tessellate(kSquare, TessellationKind::voronoi, 11);
   const Tessellation b = tessellate(kSquare, TessellationKind::voronoi, 11);
