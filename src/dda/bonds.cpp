@@ -175,9 +175,23 @@ bool System::is_corner_of_intact_rock(int block, int vertex) const {
 // crack through the node, the corners across it keep theirs; at a crack's tip, those beside it
 // keep their neighbours' faces, which may break next (without them a running crack of softening
 // bonds failed a step: docs/studies/2026-11-30-intact-seal-tip.md).
+// A corner beside a crack (one face at the node broken or softening, the other intact) has no
+// contact either with a broken face's end of a sub-block it reaches about the node through
+// intact faces (the face's own two corners excepted): it moves with the crack's opening, the
+// face's end does not, and the intact rock between holds the two together, so their corners'
+// overlap is one that no force on the contact removes (the resolved seal's step that never
+// settled, and did not at the full penalty either). A corner of intact rock keeps such
+// contacts: they settle, and without them the verification cases' running cracks took other
+// paths (the same study).
 void System::drop_corner_contacts_within_intact_rock(ContactCandidates& candidates) const {
   if (bond_sides_.empty()) return;
   const double tie = 1e-3 * contact_distance_;  // contact_detection.cpp's corner tie
+  // Whether `corner` of the candidate's edge block is reached about the node from its corner
+  // through intact faces.
+  const auto reached_about_node = [&](const ContactCandidate& c, int corner) {
+    const std::vector<NodeCorner> about = bonded_about_node(c.key.block_i, c.key.vertex);
+    return std::find(about.begin(), about.end(), NodeCorner{c.key.block_j, corner}) != about.end();
+  };
   // Whether the intact face `bond` of the candidate is past the corner's neighbours at its node
   // (neither of its two sub-blocks one of them) and reached through them to `corner` of it.
   const auto shielded_by_neighbours = [&](const ContactCandidate& c, int bond, int corner) {
@@ -190,8 +204,7 @@ void System::drop_corner_contacts_within_intact_rock(ContactCandidates& candidat
       for (const BondSide& side : bond_sides_[static_cast<std::size_t>(face)])
         if (side.block != c.key.block_i && (side.block == c.key.block_j || side.block == other)) return false;
     }
-    const std::vector<NodeCorner> about = bonded_about_node(c.key.block_i, c.key.vertex);
-    return std::find(about.begin(), about.end(), NodeCorner{c.key.block_j, corner}) != about.end();
+    return reached_about_node(c, corner);
   };
   const auto tip_to_tip_within_intact_rock = [&](const ContactCandidate& c) {
     const int bond = bond_of(c.key);
@@ -207,8 +220,9 @@ void System::drop_corner_contacts_within_intact_rock(ContactCandidates& candidat
     if (to_corner <= tie && is_corner_of_intact_rock(c.key.block_i, c.key.vertex) &&
         is_corner_of_intact_rock(c.key.block_j, corner))
       return true;
-    return to_corner <= contact_distance_ && bond_broken_[static_cast<std::size_t>(bond)] == 0 &&
-           shielded_by_neighbours(c, bond, corner);
+    if (to_corner > contact_distance_) return false;
+    if (bond_broken_[static_cast<std::size_t>(bond)] == 0) return shielded_by_neighbours(c, bond, corner);
+    return !is_corner_of_intact_rock(c.key.block_i, c.key.vertex) && reached_about_node(c, corner);
   };
   candidates.erase(std::remove_if(candidates.begin(), candidates.end(), tip_to_tip_within_intact_rock), candidates.end());
 }

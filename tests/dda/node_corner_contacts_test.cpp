@@ -158,5 +158,35 @@ TEST(NodeCornerContacts, AlongACrackThroughTheNodeTheCornersAcrossItKeepTheirCon
   EXPECT_GT(across_on_intact_faces, 0);
 }
 
+// A crack through the node on spokes 0 and 4: triangles 0-3 on one side, 4 and 5 on the other,
+// the corners parted as a crack's opening parts them: triangle 3's corner (beside the crack, its
+// face on spoke 4 broken) moved 2 ties along triangle 0's face on the crack (spoke 0, across the
+// node from it) and 0.75 tie past that face's line, into triangle 0's corner, as the resolved
+// seal's corner stood at 1,200 m over hydrostatic (a corner 7.5e-7 m past the end of a broken
+// face two sub-blocks away on its side of a crack, a contact of no tributary length whose forces
+// never settled). Triangles 1 and 2, bonded to both, stand between: the broken face's end is
+// the far side's to touch (triangle 5's), and triangle 3's corner has no contact with it.
+TEST(NodeCornerContacts, AlongACrackThroughTheNodeACornerBesideItDoesNotTouchABrokenFaceOnItsOwnSide) {
+  ModelDefinition m = make_node({0, 4});
+  m.settings.contact_distance = 1.0e-3;
+  const double tie = 1.0e-3 * m.settings.contact_distance;  // contact_detection.cpp's corner tie
+  const Point centre = m.blocks[0].polygon[0];
+  const Point along = m.blocks[0].polygon[1] - centre;  // triangle 0's face on spoke 0
+  const Point t = along / std::hypot(along.x, along.y);
+  const Point inward{-t.y, t.x};  // into triangle 0 (counter-clockwise)
+  m.blocks[3].polygon[0] = centre + 2.0 * tie * t + 0.75 * tie * inward;
+  System system(m);
+  system.step();
+  int from_its_own_side = 0, from_the_far_side = 0;
+  for (const ContactInfo& c : system.contacts()) {
+    if (system.bond_of_contact(c.key) != 0 || (c.key.block_i != 0 && c.key.block_j != 0)) continue;
+    const int other = c.key.block_i == 0 ? c.key.block_j : c.key.block_i;
+    if (other == 3) ++from_its_own_side;
+    if (other == kTriangles - 1) ++from_the_far_side;
+  }
+  EXPECT_EQ(from_its_own_side, 0);
+  EXPECT_GT(from_the_far_side, 0);
+}
+
 }  // namespace
 }  // namespace hydrodda::dda
