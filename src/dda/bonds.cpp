@@ -199,11 +199,13 @@ void System::drop_corner_contacts_within_intact_rock(ContactCandidates& candidat
     const int other = sides[0].block == c.key.block_j ? sides[1].block : sides[0].block;
     const std::vector<int>& own = edge_bonds_[static_cast<std::size_t>(c.key.block_i)];
     const std::size_t n = own.size(), v = static_cast<std::size_t>(c.key.vertex);
-    for (const int face : {own[v], own[(v + n - 1) % n]}) {
-      if (face < 0) continue;
-      for (const BondSide& side : bond_sides_[static_cast<std::size_t>(face)])
-        if (side.block != c.key.block_i && (side.block == c.key.block_j || side.block == other)) return false;
-    }
+    // A block built without bonds (edge_bonds empty) has faces of no bond at the corner.
+    if (n > 0)
+      for (const int face : {own[v], own[(v + n - 1) % n]}) {
+        if (face < 0) continue;
+        for (const BondSide& side : bond_sides_[static_cast<std::size_t>(face)])
+          if (side.block != c.key.block_i && (side.block == c.key.block_j || side.block == other)) return false;
+      }
     return reached_about_node(c, corner);
   };
   const auto tip_to_tip_within_intact_rock = [&](const ContactCandidate& c) {

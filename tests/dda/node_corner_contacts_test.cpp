@@ -188,5 +188,31 @@ TEST(NodeCornerContacts, AlongACrackThroughTheNodeACornerBesideItDoesNotTouchABr
   EXPECT_GT(from_the_far_side, 0);
 }
 
+// A block built without bonds of its own (its edge_bonds left empty, as a model built in code
+// may leave it) at a node of bonded sub-blocks: the rule reads its faces at the corner as faces
+// of no bond, as it reads a scenario's blocks, whose edge_bonds hold −1. Triangle 0 is such a
+// block, spokes 0 and 1 joints; the others are bonded along spokes 2–5 (renumbered 0–3). The
+// two models step to the same contacts (exact identity).
+TEST(NodeCornerContacts, ABlockWithoutBondsAtANodeOfBondedSubBlocksIsReadAsFacesOfNoBond) {
+  const auto model = [](std::vector<int> plain_bonds) {
+    ModelDefinition m = make_node({});
+    for (BlockDefinition& b : m.blocks)
+      for (int& bond : b.edge_bonds) bond = bond <= 1 ? -1 : bond - 2;
+    m.blocks.front().edge_bonds = std::move(plain_bonds);
+    return m;
+  };
+  System empty(model({})), filled(model({-1, -1, -1}));
+  empty.step();
+  filled.step();
+  ASSERT_EQ(empty.contacts().size(), filled.contacts().size());
+  for (std::size_t i = 0; i < empty.contacts().size(); ++i) {
+    EXPECT_EQ(empty.contacts()[i].key, filled.contacts()[i].key) << i;
+    EXPECT_EQ(empty.contacts()[i].state, filled.contacts()[i].state) << i;
+  }
+  int from_the_plain_corner = 0;
+  for (const ContactInfo& c : empty.contacts()) from_the_plain_corner += c.key.block_i == 0 && c.key.vertex == 0 ? 1 : 0;
+  EXPECT_GT(from_the_plain_corner, 0);
+}
+
 }  // namespace
 }  // namespace hydrodda::dda
