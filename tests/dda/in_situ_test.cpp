@@ -143,6 +143,29 @@ TEST(InitialStress, ColumnInItsInSituStressStartsInEquilibrium) {
   }
 }
 
+// The jointed models' in-situ field (σxx −10 MPa, σyy −20 MPa at the top, K0 = 0.5 down): the
+// model of width × height on rollers left, right and bottom, its top under the field's σyy.
+void place_in_jointed_models_field(ModelDefinition& m, double width, double height) {
+  StressField field;
+  field.at_reference = {-1.0e7, -2.0e7, 0.0};
+  field.reference_y = height;
+  field.gradient = {0.5 * kDensity * kG, kDensity * kG, 0.0};
+  for (auto [a, b] : {std::pair{Point{0, 0}, Point{0, height}}, std::pair{Point{width, 0}, Point{width, height}},
+                      std::pair{Point{0, 0}, Point{width, 0}}}) {
+    auto rollers = make_rollers_on_segment(m.blocks, a, b, 1e-9, field);
+    m.rollers.insert(m.rollers.end(), rollers.begin(), rollers.end());
+  }
+  m.tractions = make_tractions_on_segment(m.blocks, {0, height}, {width, height}, 1e-9, -2.0e7, -2.0e7, 0.0, 0.0);
+  m.initial_stress = field;
+  m.settings.time_step = 1e-2;
+}
+
+double largest_displacement(const System& system) {
+  double largest = 0.0;
+  for (int b = 0; b < system.block_count(); ++b) largest = std::max(largest, geometry::norm(system.displacement(b)));
+  return largest;
+}
+
 // Blocks cut by two joint sets (inclined, non-persistent, spread) at 800 m depth under 20 MPa
 // of overburden (a traction on the top), on rollers left, right and bottom, starting in the
 // in-situ stress σyy = −20 MPa − ρ g (H − y), σxx = 10 MPa + K0 ρ g (H − y), K0 = 0.5, with
@@ -170,27 +193,14 @@ TEST(InitialStress, JointedModelInItsInSituStressStartsInEquilibrium) {
   }
   const geometry::BlockNetwork net = geometry::build_block_network({domain, traces, {}, 0.0, 0.0});
   ASSERT_GT(net.blocks.size(), 20u);
-  StressField field;
-  field.at_reference = {-1.0e7, -2.0e7, 0.0};
-  field.reference_y = height;
-  field.gradient = {0.5 * kDensity * kG, kDensity * kG, 0.0};
   ModelDefinition m;
   m.materials = {Material{kDensity, 1.0e10, 0.25}};
   m.joint = {40.0, 0.0, 0.0};
   for (const geometry::Polygon& p : net.blocks) m.blocks.push_back({p, 0, false});
-  for (auto [a, b] : {std::pair{Point{0, 0}, Point{0, height}}, std::pair{Point{width, 0}, Point{width, height}},
-                      std::pair{Point{0, 0}, Point{width, 0}}}) {
-    auto rollers = make_rollers_on_segment(m.blocks, a, b, 1e-9, field);
-    m.rollers.insert(m.rollers.end(), rollers.begin(), rollers.end());
-  }
-  m.tractions = make_tractions_on_segment(m.blocks, {0, height}, {width, height}, 1e-9, -2.0e7, -2.0e7, 0.0, 0.0);
-  m.initial_stress = field;
-  m.settings.time_step = 1e-2;
+  place_in_jointed_models_field(m, width, height);
   System system(std::move(m));
   for (int step = 0; step < 20; ++step) system.step();
-  double largest = 0.0;
-  for (int b = 0; b < system.block_count(); ++b) largest = std::max(largest, geometry::norm(system.displacement(b)));
-  EXPECT_LE(largest, 1e-8 * height);
+  EXPECT_LE(largest_displacement(system), 1e-8 * height);
 }
 
 // A block of two bonded Voronoi sub-blocks (x 0–2 m) beside a plain block across a vertical
@@ -226,23 +236,10 @@ TEST(InitialStress, TessellatedBlockBesideAJointStartsInEquilibrium) {
   BlockDefinition plain{make_rectangle(2, 0, width, height), 0, false};
   plain.edge_bonds.assign(4, -1);  // as a scenario's untessellated blocks have
   m.blocks.push_back(std::move(plain));
-  StressField field;
-  field.at_reference = {-1.0e7, -2.0e7, 0.0};
-  field.reference_y = height;
-  field.gradient = {0.5 * kDensity * kG, kDensity * kG, 0.0};
-  for (auto [a, b] : {std::pair{Point{0, 0}, Point{0, height}}, std::pair{Point{width, 0}, Point{width, height}},
-                      std::pair{Point{0, 0}, Point{width, 0}}}) {
-    auto rollers = make_rollers_on_segment(m.blocks, a, b, 1e-9, field);
-    m.rollers.insert(m.rollers.end(), rollers.begin(), rollers.end());
-  }
-  m.tractions = make_tractions_on_segment(m.blocks, {0, height}, {width, height}, 1e-9, -2.0e7, -2.0e7, 0.0, 0.0);
-  m.initial_stress = field;
-  m.settings.time_step = 1e-2;
+  place_in_jointed_models_field(m, width, height);
   System system(std::move(m));
   system.step();
-  double largest = 0.0;
-  for (int b = 0; b < system.block_count(); ++b) largest = std::max(largest, geometry::norm(system.displacement(b)));
-  EXPECT_LE(largest, 1e-8 * height);
+  EXPECT_LE(largest_displacement(system), 1e-8 * height);
 }
 
 }  // namespace
