@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -10,6 +9,7 @@
 
 #include "dda/array_growth.hpp"
 #include "dda/initial_stress.hpp"
+#include "dda/number_text.hpp"
 #include "numerics/parallel.hpp"
 #include "numerics/anderson.hpp"
 
@@ -27,12 +27,6 @@ void add_segment(Eigen::VectorXd& f, int dof, const Vector6& v) {
 }
 
 bool is_closed(ContactState s) { return s != ContactState::open; }
-
-std::string format_number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", v);
-  return text;
-}
 
 }  // namespace
 

@@ -6,10 +6,10 @@
 // pass before and in the last (> 0 overlapping its edge, < 0 a gap).
 
 #include <algorithm>
-#include <cstdio>
 #include <string>
 #include <vector>
 
+#include "dda/number_text.hpp"
 #include "dda/system.hpp"
 
 namespace hydrodda::dda {
@@ -17,12 +17,6 @@ namespace hydrodda::dda {
 namespace {
 
 constexpr std::size_t kContactsNamed = 3;
-
-std::string format_number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", v);
-  return text;
-}
 
 const char* state_name(ContactState s) {
   switch (s) {
