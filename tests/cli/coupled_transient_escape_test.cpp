@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,11 +58,31 @@ std::vector<int> open_at_step(const fs::path& folder, int step) {
   return ids;
 }
 
+// Runs `scenario` into `out` on one thread and reads its summary.json; none, and a test
+// failure showing the output, when the program's exit code is not `exit_code`.
+std::optional<nlohmann::json> run_and_read_summary(const fs::path& scenario, const fs::path& out, int exit_code) {
+  const auto result = run_program("-q run " + scenario.string() + " -o " + out.string() + " --threads 1");
+  if (result.exit_code != exit_code) {
+    ADD_FAILURE() << "exit code " << result.exit_code << ", expected " << exit_code << ": " << result.output;
+    return std::nullopt;
+  }
+  return nlohmann::json::parse(std::ifstream(out / "summary.json"));
+}
+
+// A run that ended not converged and named no breach (exit 0, status "ok", no `last_held`):
+// its message.
+std::string expect_not_converged_naming_no_breach(const nlohmann::json& summary) {
+  EXPECT_EQ(summary["status"], "ok");
+  EXPECT_EQ(summary["converged"], false);
+  EXPECT_FALSE(summary.contains("last_held"));
+  return summary["message"];
+}
+
 TEST(CoupledTransientEscape, AStepThatThrowsTheJackedBlockEndsWithNoEquilibriumNamingTheLastStepThatHeld) {
   const auto out = hydrodda::testing::fresh_dir("hydrodda-transient-escape");
-  const auto result = run_program("-q run " + kJacking.string() + " -o " + out.path.string() + " --threads 1");
-  ASSERT_EQ(result.exit_code, 1) << result.output;
-  const auto summary = nlohmann::json::parse(std::ifstream(out.path / "summary.json"));
+  const auto read = run_and_read_summary(kJacking, out.path, 1);
+  ASSERT_TRUE(read.has_value());
+  const nlohmann::json& summary = *read;
   EXPECT_EQ(summary["status"], "no equilibrium");
   EXPECT_EQ(summary["converged"], false);
   // The folder holds the last step that converged, t = 4e5 s at 0.96 H*: steps 1-4 of 1e5 s.
@@ -108,9 +129,9 @@ TEST(CoupledTransientEscape, AStepThatThrowsTheJackedBlockEndsWithNoEquilibriumN
 // the gap's 5e-5 m (5e-11 m; measured 1.7e-13 m: the steady answer is reached to round-off).
 TEST(CoupledTransientEscape, TheJackedBlockAtNinetySixHundredthsOfTheJackingHeadIsHeldOnStepsOf100s) {
   const auto out = hydrodda::testing::fresh_dir("hydrodda-transient-held");
-  const auto result = run_program("-q run " + kHeld.string() + " -o " + out.path.string() + " --threads 1");
-  ASSERT_EQ(result.exit_code, 0) << result.output;
-  const auto summary = nlohmann::json::parse(std::ifstream(out.path / "summary.json"));
+  const auto read = run_and_read_summary(kHeld, out.path, 0);
+  ASSERT_TRUE(read.has_value());
+  const nlohmann::json& summary = *read;
   EXPECT_EQ(summary["status"], "ok");
   ASSERT_EQ(summary["converged"], true) << summary.dump();
   EXPECT_EQ(summary["time"], 2.0e4);
@@ -144,9 +165,9 @@ TEST(CoupledTransientEscape, TheJackedBlockAtNinetySixHundredthsOfTheJackingHead
 // and 1.00090 H*.
 TEST(CoupledTransientEscape, AHeadRisingSlowlyThroughTheJackingHeadEndsWithNoEquilibriumAtIt) {
   const auto out = hydrodda::testing::fresh_dir("hydrodda-transient-ramp");
-  const auto result = run_program("-q run " + kRamp.string() + " -o " + out.path.string() + " --threads 1");
-  ASSERT_EQ(result.exit_code, 1) << result.output;
-  const auto summary = nlohmann::json::parse(std::ifstream(out.path / "summary.json"));
+  const auto read = run_and_read_summary(kRamp, out.path, 1);
+  ASSERT_TRUE(read.has_value());
+  const nlohmann::json& summary = *read;
   EXPECT_EQ(summary["status"], "no equilibrium");
   EXPECT_EQ(summary["converged"], false);
   const int steps = summary["iterations"];
@@ -184,13 +205,10 @@ TEST(CoupledTransientEscape, AHeadRisingSlowlyThroughTheJackingHeadEndsWithNoEqu
   const fs::path five = hydrodda::testing::edited_scenario(kRamp, "jacking_ramp_five",
                                                            {{"max_iterations = 10", "max_iterations = 5"}});
   const auto short_out = hydrodda::testing::fresh_dir("hydrodda-transient-ramp-five");
-  const auto short_run = run_program("-q run " + five.string() + " -o " + short_out.path.string() + " --threads 1");
-  ASSERT_EQ(short_run.exit_code, 0) << short_run.output;
-  const auto not_converged = nlohmann::json::parse(std::ifstream(short_out.path / "summary.json"));
-  EXPECT_EQ(not_converged["status"], "ok");
-  EXPECT_EQ(not_converged["converged"], false);
-  EXPECT_FALSE(not_converged.contains("last_held"));
-  const std::string said = not_converged["message"];
+  const auto read_five = run_and_read_summary(five, short_out.path, 0);
+  ASSERT_TRUE(read_five.has_value());
+  const nlohmann::json& not_converged = *read_five;
+  const std::string said = expect_not_converged_naming_no_breach(not_converged);
   EXPECT_NE(said.find("threw no block in 5 (coupling.max_iterations), nor converged"), std::string::npos) << said;
 }
 
@@ -206,13 +224,10 @@ TEST(CoupledTransientEscape, AtTheJackingHeadItselfTheStepsThrownInALaterIterati
        {"end_time = 6.0e5\ntime_step = 1.0e5\nmax_time_step = 1.0e5", "end_time = 60.0\ntime_step = 10.0\nmax_time_step = 10.0"},
        {"max_iterations = 5", "max_iterations = 40"}});
   const auto out = hydrodda::testing::fresh_dir("hydrodda-transient-at-head-star");
-  const auto result = run_program("-q run " + at_head_star.string() + " -o " + out.path.string() + " --threads 1");
-  ASSERT_EQ(result.exit_code, 0) << result.output;
-  const auto summary = nlohmann::json::parse(std::ifstream(out.path / "summary.json"));
-  EXPECT_EQ(summary["status"], "ok");
-  EXPECT_EQ(summary["converged"], false);
-  EXPECT_FALSE(summary.contains("last_held"));
-  const std::string message = summary["message"];
+  const auto read = run_and_read_summary(at_head_star, out.path, 0);
+  ASSERT_TRUE(read.has_value());
+  const nlohmann::json& summary = *read;
+  const std::string message = expect_not_converged_naming_no_breach(summary);
   EXPECT_NE(message.find("blocks escaped beyond their own size in its iteration "), std::string::npos) << message;
   EXPECT_EQ(message.find("in its first iteration"), std::string::npos) << message;
   EXPECT_NE(message.find("steady passes from the last step's end under the loads at t = "), std::string::npos)
