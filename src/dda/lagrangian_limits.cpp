@@ -25,6 +25,19 @@
 //    An overlap deeper than twice the tolerance is no contact at the tolerance, and a step
 //    that cannot push it out is cut and fails as before.
 //
+// Passes that contract slowly: while the contact states stand, λ ← λ + p d is an affine map
+// of the multipliers, contracting by K/(K + p) a pass, K the stiffness holding a contact's
+// vertex. Where K ≫ p (a sub-block's corner held by the locked contacts of the bonded cells
+// about it, K ≈ 33 p: docs/studies/2026-11-30-strip-seal-lagrangian.md) it needs some 90; Anderson's mixing of the last five (Walker & Ni 2011, alg. AA) solves an
+// affine map in a few. They mix only where the step would otherwise be cut: after a try and a
+// try at twice the passes whose forces did not settle, the step is tried once more at the same
+// length with them mixed from its pass kPlainLagrangianPasses on, and so are the tries of the
+// cuts after it; a step that settled without them is untouched (update_multipliers). Only where
+// the blocks about the overlaps hold them, not their inertia: where 2M/Δt² of a block at an
+// overlap past the tolerance outweighs p, the exact solution of the step pushes it out by a
+// force of its inertia, which a static step's shortness makes arbitrary (a block 3 µm into the
+// base at 1e-10 s: 1e18 N/m), and the step is cut and fails as above.
+//
 // Passes that stalled moved nothing but the multipliers: λ ← λ + p d on every closed contact,
 // while the one past the tolerance kept them going. A contact already within the tolerance,
 // standing off its edge by d < 0, lost p |d| a pass, 30 a try: the tessellated seal's joints
@@ -56,6 +69,36 @@ char System::open_contacts_standing_off() {
     c.changed_in_step = true;
   }
   return seen;
+}
+
+bool System::overlaps_held_by_the_blocks_around() const {
+  bool any = false;
+  for (int i : closed_) {
+    const ActiveContact& c = active_[i];
+    if (!(c.record.penetration > penetration_tolerance_)) continue;
+    any = true;
+    for (int b : {c.key.block_i, c.key.block_j}) {
+      const Block& block = blocks_[static_cast<std::size_t>(b)];
+      const double inertia = 2.0 * materials_[block.material].density * block.moments.area / (dt_ * dt_);
+      if (block.dof >= 0 && inertia > penalty_) return false;
+    }
+  }
+  return any;
+}
+
+void System::update_multipliers(int pass, numerics::AndersonAccelerator& mixing) {
+  if (!mixing_multipliers_ || pass + 1 < kPlainLagrangianPasses) {
+    for (int i : closed_) active_[i].record.multiplier = active_[i].record.normal_force;
+    return;
+  }
+  Eigen::VectorXd multipliers(closed_.size()), forces(closed_.size());
+  for (std::size_t k = 0; k < closed_.size(); ++k) {
+    multipliers[static_cast<Eigen::Index>(k)] = active_[closed_[k]].record.multiplier;
+    forces[static_cast<Eigen::Index>(k)] = active_[closed_[k]].record.normal_force;
+  }
+  const Eigen::VectorXd mixed = mixing.next(multipliers, forces);
+  for (std::size_t k = 0; k < closed_.size(); ++k)
+    active_[closed_[k]].record.multiplier = mixed[static_cast<Eigen::Index>(k)];
 }
 
 bool System::overlaps_held(double growth) const {

@@ -739,6 +739,7 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
     Eigen::VectorXd used(sliding.size());
     Eigen::VectorXd image(sliding.size());
     numerics::AndersonAccelerator friction_mixing;
+    numerics::AndersonAccelerator multiplier_mixing;
     char opened_standing_off = 0;  // as a pass's changes of state below
     Eigen::VectorXd last_pass;     // the solution of the try's last pass but one
     for (int al = 0; al < lagrangian_limit_; ++al) {
@@ -813,10 +814,11 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
         return Unsettled::contact_forces;
       }
       if (!penetration_ok) {
-        for (int i : closed_) active_[i].record.multiplier = active_[i].record.normal_force;
+        update_multipliers(al, multiplier_mixing);
         friction_mixing.reset();  // a new map: its history no longer applies
         before_friction_update.resize(0);
       } else {
+        multiplier_mixing.reset();
         before_friction_update = d;
         const Eigen::VectorXd mixed = friction_mixing.next(used, image);
         for (std::size_t k = 0; k < sliding.size(); ++k) sliding[k]->record.normal_force = mixed[k];
@@ -923,6 +925,7 @@ StepReport System::step() {
   StepReport report;
   dt_ = std::min(settings_.time_step, dt_);
   lagrangian_limit_ = settings_.max_lagrangian_iterations;
+  mixing_multipliers_ = false;
   const double first_time_step = dt_;
   std::string first_failure;
   tried_multipliers_.clear();
@@ -987,6 +990,11 @@ StepReport System::step() {
     // inertia M/Δt² then holds them where they stand, and every cut leaves the overlap as it was.
     if (unsettled == Unsettled::contact_forces && lagrangian_limit_ == settings_.max_lagrangian_iterations) {
       lagrangian_limit_ *= 2;
+      continue;
+    }
+    // And then once more with the multipliers mixed (lagrangian_limits.cpp), still uncut.
+    if (unsettled == Unsettled::contact_forces && !mixing_multipliers_ && overlaps_held_by_the_blocks_around()) {
+      mixing_multipliers_ = true;
       continue;
     }
     dt_ *= settled ? std::max(0.1, 0.9 * allowed_displacement_ / largest) : 0.3;

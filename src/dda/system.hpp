@@ -368,6 +368,13 @@ class System {
   // contacts standing off their edges by more than the penetration tolerance open; bit 1 of
   // the result: some opened, bit 2: one of them had changed state already in this step.
   char open_contacts_standing_off();
+  // λ ← λ + p d on every closed contact (their normal forces); once mixing_multipliers_, from
+  // the pass kPlainLagrangianPasses on, mixed with the passes before by Anderson's rule.
+  void update_multipliers(int pass, numerics::AndersonAccelerator& mixing);
+  static constexpr int kPlainLagrangianPasses = 10;
+  // Some closed contact overlaps past the tolerance, and none of them is held by its blocks'
+  // inertia: 2M/Δt² ≤ p for each movable block of each.
+  bool overlaps_held_by_the_blocks_around() const;
   // Whether no closed contact overlaps its edge by more than a step whose passes no longer move
   // the blocks may hold: the tolerance × `growth` and 1e-6 of the tolerance more, or the
   // overlap it started with, up to twice the tolerance.
@@ -532,6 +539,7 @@ class System {
   double penetration_tolerance_ = 0.0;
   // The augmented Lagrangian's passes allowed in this attempt at a step: max_lagrangian_iterations,
   // twice that once its forces failed to settle (System::step).
+  bool mixing_multipliers_ = false;  // this step's tries mix their multipliers (lagrangian_limits.cpp)
   int lagrangian_limit_ = 0;
   std::function<bool()> interrupt_check_;  // set_interrupt_check
   // Undoes what the step under way changed (its bonds broken, its cuts of the time step, which

@@ -19,6 +19,8 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "coupled_runs.hpp"
 
@@ -65,6 +67,42 @@ TEST(IntactSeal, ItsFlawOpensAsTheReservoirPassesTheHorizontalStressAndTheSealSt
   EXPECT_LT(flaw_opening(below), 2.0e-7);
   EXPECT_GT(flaw_opening(above), 1.0e-4);
   EXPECT_NEAR(seal_conductivity(above) / seal_conductivity(below), 1.0, 1.0e-3);
+}
+
+
+// The tutorial's strip model (docs/tutorial_intact_seal.md, section 5: triangles of 0.25 m in a
+// strip about the flaw, T = 1 MPa, c = 3.2 MPa) from the in-situ state at 1,300 m of head, one
+// pass. A corner of a sub-block by the flaw's tip starts a DDA step 1.07 µm into a face, 14
+// times the penetration tolerance, held by the locked contacts of the bonded cells about it:
+// each Lagrangian pass took 2–4% off its overlap, the step's tries ran out of passes and every
+// cut failed alike, and the run stopped in its first pass on "the time step fell below any use"
+// (docs/studies/2026-11-30-strip-seal-lagrangian.md). With the multipliers mixed before a cut
+// (docs/dda.md) the pass runs through, bonds breaking about the tip.
+TEST(IntactSeal, TheStripModelsFirstPassAt1300MRunsThroughAsBondsBreakAboutTheTip) {
+  std::string text = read_text(kSeal);
+  int count = 0;
+  const std::string strip = "[[geometry.tessellate]]\nkind = \"triangles\"\nsize = 0.25\n"
+                            "region = [[5.0, 2.0], [7.0, 2.0], [7.0, 7.0], [5.0, 7.0]]\njoint = \"mudstone\"\n"
+                            "seed = 5\ncracks = [[[6.0, 2.0], [6.0, 5.0]]]\n\n";
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"cracks = [[[6.0, 2.0], [6.0, 5.0]]]   # a flaw from the reservoir, 3 m up into the seal\n", ""},
+           {"[[geometry.tessellate]]               # the intact lower seal: bonded triangles", strip + "[[geometry.tessellate]]"},
+           {"tensile_strength = 2.0e6", "tensile_strength = 1.0e6"},
+           {"cohesion = 6.0e6", "cohesion = 3.2e6"},
+           {"head = 500.0 ", "head = 1300.0 "},
+           {"max_iterations = 30", "max_iterations = 1"}}) {
+    text = replace_all(text, from, to, count);
+    EXPECT_EQ(count, 1) << from;
+  }
+  const RunResult r = run_text_and_read(text, "intact-seal-strip-1300");
+  ASSERT_TRUE(r.summary.contains("iterations")) << r.summary.dump();
+  EXPECT_EQ(r.summary["iterations"], 1);
+  EXPECT_EQ(r.summary["status"], "ok");
+  const std::string message = r.summary["message"];
+  EXPECT_EQ(message.find("time step fell below"), std::string::npos) << message;
+  const int broken = column_of(r.history.front(), "broken_bonds");
+  ASSERT_GE(broken, 0);
+  EXPECT_GT(std::stoi(r.history.at(1).at(static_cast<std::size_t>(broken))), 0);
 }
 
 }  // namespace
