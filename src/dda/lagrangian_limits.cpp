@@ -28,8 +28,9 @@
 // Passes that contract slowly: while the contact states stand, λ ← λ + p d is an affine map
 // of the multipliers, contracting by K/(K + p) a pass, K the stiffness holding a contact's
 // vertex. Where K ≫ p (a sub-block's corner held by the locked contacts of the bonded cells
-// about it, K ≈ 33 p: docs/studies/2026-11-30-strip-seal-lagrangian.md) it needs some 90; Anderson's mixing of the last five (Walker & Ni 2011, alg. AA) solves an
-// affine map in a few. They mix only where the step would otherwise be cut: after a try and a
+// about it, K ≈ 33 p: docs/studies/2026-11-30-strip-seal-lagrangian.md) it needs some 90
+// passes; Anderson's mixing of the last five (Walker & Ni 2011, alg. AA) solves an affine map
+// in a few. They mix only where the step would otherwise be cut: after a try and a
 // try at twice the passes whose forces did not settle, the step is tried once more at the same
 // length with them mixed from its pass kPlainLagrangianPasses on, and so are the tries of the
 // cuts after it; a step that settled without them is untouched (update_multipliers). Only where
