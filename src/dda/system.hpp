@@ -539,8 +539,8 @@ class System {
   double penetration_tolerance_ = 0.0;
   // The augmented Lagrangian's passes allowed in this attempt at a step: max_lagrangian_iterations,
   // twice that once its forces failed to settle (System::step).
-  bool mixing_multipliers_ = false;  // this step's tries mix their multipliers (lagrangian_limits.cpp)
   int lagrangian_limit_ = 0;
+  bool mixing_multipliers_ = false;  // this step's tries mix their multipliers (lagrangian_limits.cpp)
   std::function<bool()> interrupt_check_;  // set_interrupt_check
   // Undoes what the step under way changed (its bonds broken, its cuts of the time step, which
   // began at `first_time_step`) and throws StepInterrupted.

@@ -69,7 +69,6 @@ TEST(IntactSeal, ItsFlawOpensAsTheReservoirPassesTheHorizontalStressAndTheSealSt
   EXPECT_NEAR(seal_conductivity(above) / seal_conductivity(below), 1.0, 1.0e-3);
 }
 
-
 // The tutorial's strip model (docs/tutorial_intact_seal.md, section 5: triangles of 0.25 m in a
 // strip about the flaw, T = 1 MPa, c = 3.2 MPa) from the in-situ state at 1,300 m of head, one
 // pass. A corner of a sub-block by the flaw's tip starts a DDA step 1.07 µm into a face, 14
