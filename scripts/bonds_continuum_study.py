@@ -8,9 +8,10 @@ against the elastic continuum at three sizes and more, triangles and Voronoi cel
   line from a to W against the far edges' load (an equilibrium check); sigma_yy of the sub-block
   at the hole's edge against 3 sigma. The two inner tables' sizes are h and 2 h.
 - scenarios/verification/bonded_cantilever.toml: the tip's deflection against Timoshenko's beam,
-  P L^3 / (3 E I) + P L / (kappa G A), kappa = 5/6.
+  P L^3 / (3 E I) + P L / (kappa G A), kappa = 5/6; and the same beam cut by three slanted
+  seams of the clamp's joint (each piece tessellated on its own), the plate's glued sectors' share.
 
-    scripts/bonds_continuum_study.py build/bin/hydrodda [--only plate|cantilever]
+    scripts/bonds_continuum_study.py build/bin/hydrodda [--only plate|cantilever|seams]
 """
 import argparse
 import glob
@@ -88,11 +89,23 @@ def plate_table(program, tmp):
                   + ("" if summary.get("converged") else " (not at rest)"), flush=True)
 
 
-def cantilever_table(program, tmp):
+def with_seams(text):
+    """The beam cut by three slanted traces of the clamp's joint, each side tessellated on its
+    own: seams glued as the plate's sectors are."""
+    seams = "".join(f'[[geometry.fracture]]\ntrace = [[{x}, -0.5], [{x + 0.3}, 0.5]]\njoint = "clamp"\n\n'
+                    for x in (2.0, 4.0, 6.0))
+    return text.replace("[[geometry.tessellate]]", seams + "[[geometry.tessellate]]", 1)
+
+
+def cantilever_table(program, tmp, seams=False):
+    if seams:
+        print("The cantilever cut by three glued seams:")
     print("| kind | h | sub-blocks | tip deflection / Timoshenko's | s |")
     print("| --- | --- | --- | --- | --- |")
     shipped = (VERIFICATION / "bonded_cantilever.toml").read_text()
-    for kind in ("triangles", "voronoi"):
+    if seams:
+        shipped = with_seams(shipped)
+    for kind in ("triangles",) if seams else ("triangles", "voronoi"):
         for h in (0.5, 0.25, 0.125, 0.0625):
             text = re.sub(r"^size = 0\.125\n", f"size = {h}\n", with_kind(shipped, kind), count=1, flags=re.M)
             out, seconds = run(program, text, tmp)
@@ -105,13 +118,15 @@ def cantilever_table(program, tmp):
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("program")
-    parser.add_argument("--only", choices=["plate", "cantilever"])
+    parser.add_argument("--only", choices=["plate", "cantilever", "seams"])
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
-        if args.only != "cantilever":
+        if args.only in (None, "plate"):
             plate_table(args.program, pathlib.Path(tmp))
-        if args.only != "plate":
+        if args.only in (None, "cantilever"):
             cantilever_table(args.program, pathlib.Path(tmp))
+        if args.only in (None, "seams"):
+            cantilever_table(args.program, pathlib.Path(tmp), seams=True)
 
 
 if __name__ == "__main__":
