@@ -1,5 +1,5 @@
 #pragma once
-// Intact rock as sub-blocks: a convex polygon (a block cut from the domain) tessellated into
+// Intact rock as sub-blocks: a polygon (a block cut from the domain) tessellated into
 // Voronoi cells of seeded points, or into triangles (each Voronoi cell fanned from its
 // centroid), every face between two sub-blocks named by both, so that each is a bond.
 
@@ -51,19 +51,40 @@ struct Tessellation {
   std::vector<std::vector<int>> edge_sources;
 };
 
-// The Voronoi cells of `seeds` (inside `polygon`) clipped to the convex `polygon`, or those
-// cells fanned into triangles. Each cell is the polygon clipped by the half-planes nearer its
-// seed than another's (Sutherland–Hodgman, each edge carrying where it came from); the
-// neighbours tried are those within 3 `size` (a jittered grid's cell lies within 2√2 size of
-// its seed), more when a cell reaches farther: a bisector cuts a cell only if its seed lies
-// within twice the cell's radius. Then vertices closer than 1e-2 size are welded (a face
-// that short is dropped from both its sub-blocks), onto the polygon's corner or edge where one
-// of them lies there, so that the cells fill the polygon exactly. Throws std::invalid_argument for a
-// polygon that is not convex, or seeds that leave a cell degenerate.
+// The Voronoi cells of `seeds` (inside `polygon`) clipped to the simple counter-clockwise
+// `polygon`, or those cells fanned into triangles.
+//
+// A convex polygon: each cell is the polygon clipped by the half-planes nearer its seed than
+// another's (Sutherland–Hodgman, each edge carrying where it came from); the neighbours tried
+// are those within 3 `size` (a jittered grid's cell lies within 2√2 size of its seed), more
+// when a cell reaches farther: a bisector cuts a cell only if its seed lies within twice the
+// cell's radius. Then vertices closer than 1e-2 size are welded (a face that short is dropped
+// from both its sub-blocks), onto the polygon's corner or edge where one of them lies there,
+// so that the cells fill the polygon exactly.
 //   for each seed s: cell = polygon
 //     for each other seed t within r, nearest first: cell ∩= {x : |x − s| <= |x − t|}
 //     if 2 max|v − s| > r: r = 2 max|v − s|, again
-Tessellation tessellate_convex(std::span<const Point> polygon, std::span<const Point> seeds, double size,
-                               TessellationKind kind);
+//
+// A polygon that is not convex: cut into convex pieces along diagonals (convex_pieces: Hertel
+// & Mehlhorn 1983); every seed's cell clipped to every piece as above (a seed in one piece may
+// own part of another), the edges on a seam labelled by the same seed's fragment across; the
+// vertices welded as above (the polygon's corners kept); then a seed's fragments on two sides
+// of a seam merged into one sub-block where their union is convex and meets each neighbour
+// along one straight face (a cell is split only where it holds a reflex corner), the others
+// left as sub-blocks bonded along the seam:
+//   pieces = convex_pieces(polygon)
+//   for each seed s, piece P: fragment(s, P) = the cell of s clipped to P, if not empty
+//   weld; for each seam between fragment(s, P) and fragment(s, Q):
+//     if fragment(s, P) ∪ fragment(s, Q) is convex with one face per neighbour: merge them
+//   weld; a vertex that joined two outline edges goes onto their corner; a sub-block welded
+//     to two vertices goes, its neighbours facing each other
+//   drop the vertex between two edges facing one neighbour (from both)
+// Two sub-blocks may then meet along two faces (each named on both sides), and a sub-block
+// is convex up to the welding (a vertex up to 1e-2 size inside the line of its neighbours).
+//
+// Either way every face between two sub-blocks is named by both, every face on the outline
+// by its edge. Throws std::invalid_argument for a polygon that is not counter-clockwise or
+// not simple, or seeds that leave a sub-block degenerate.
+Tessellation tessellate(std::span<const Point> polygon, std::span<const Point> seeds, double size, TessellationKind kind);
 
 }  // namespace hydrodda::geometry

@@ -118,6 +118,20 @@ std::pair<std::vector<Point>, double> gather_seeds(const std::vector<scenario::T
   return {std::move(seeds), smallest};
 }
 
+// The edge of sub-block p's neighbour across edge e that faces it there: the one with the same
+// ends, run the other way (two sub-blocks beside a reflex corner may meet along two faces).
+std::size_t face_back(const geometry::Tessellation& parts, std::size_t p, std::size_t e) {
+  const auto other = static_cast<std::size_t>(parts.edge_sources[p][e]);
+  const Polygon& cell = parts.cells[p];
+  const Polygon& across = parts.cells[other];
+  for (std::size_t f = 0; f < across.size(); ++f)
+    if (parts.edge_sources[other][f] == static_cast<int>(p) && across[f] == cell[(e + 1) % cell.size()] &&
+        across[(f + 1) % across.size()] == cell[e])
+      return f;
+  const std::vector<int>& back = parts.edge_sources[other];
+  return static_cast<std::size_t>(std::find(back.begin(), back.end(), static_cast<int>(p)) - back.begin());
+}
+
 }  // namespace
 
 std::vector<int> find_crack_bonds(const scenario::Scenario& s, const std::vector<dda::BlockDefinition>& blocks) {
@@ -165,12 +179,10 @@ void tessellate_blocks(const scenario::Scenario& s, ModelGeometry& model) {
     const scenario::TessellationDefinition& t = g.tessellations[k];
     geometry::Tessellation parts;
     try {
-      parts = geometry::tessellate_convex(block, seeds, size, t.kind);
+      parts = geometry::tessellate(block, seeds, size, t.kind);
     } catch (const std::invalid_argument& e) {
       throw scenario::ScenarioError({{s.file.string(), t.line, "geometry.tessellate",
-                                      fmt::format("block {} (centroid ({:g}, {:g})): {}; sub-blocks are made of convex "
-                                                  "blocks only (not yet of others)",
-                                                  b, c.x, c.y, e.what())}});
+                                      fmt::format("block {} (centroid ({:g}, {:g})): {}", b, c.x, c.y, e.what())}});
     }
     ++tessellated;
     const int type = std::max(0, s.joint_type_index(t.joint.name));
@@ -181,8 +193,7 @@ void tessellate_blocks(const scenario::Scenario& s, ModelGeometry& model) {
       for (std::size_t e = 0; e < parts.cells[p].size(); ++e) {
         const int other = parts.edge_sources[p][e];
         if (other <= static_cast<int>(p)) continue;
-        const std::vector<int>& back = parts.edge_sources[static_cast<std::size_t>(other)];
-        const auto f = static_cast<std::size_t>(std::find(back.begin(), back.end(), static_cast<int>(p)) - back.begin());
+        const std::size_t f = face_back(parts, p, e);
         ids[p][e] = ids[static_cast<std::size_t>(other)][f] = static_cast<int>(bond_types.size());
         bond_types.push_back(type);
       }

@@ -217,7 +217,7 @@ TEST(InitialStress, TessellatedBlockBesideAJointStartsInEquilibrium) {
   const double width = 4.0, height = 3.0, size = 1.0;
   const Point middle{0.9985, 0.9985};  // on the bisector
   const Point across{0.3, 0.3};        // along its normal
-  const geometry::Tessellation parts = geometry::tessellate_convex(
+  const geometry::Tessellation parts = geometry::tessellate(
       make_rectangle(0, 0, 2, height), std::vector<Point>{middle - across, middle + across}, size,
       geometry::TessellationKind::voronoi);
   ASSERT_EQ(parts.cells.size(), 2u);
