@@ -45,7 +45,8 @@ bool lies_on_crack(Point a, Point b, const Segment2& crack, double tolerance);
 
 // A tessellated polygon: sub-block polygons (counter-clockwise) and, per sub-block and edge
 // (vertex k → k + 1), where the edge lies: >= 0, the sub-block on its other side (a bond);
-// < 0, on edge −1 − value of the tessellated polygon.
+// < 0, on edge −1 − value of the tessellated polygon. Two sub-blocks beside a reflex corner
+// may share two faces: the one facing an edge is that with the same ends, run the other way.
 struct Tessellation {
   std::vector<Polygon> cells;
   std::vector<std::vector<int>> edge_sources;
