@@ -113,10 +113,10 @@ HEADER = '''title = "Verification: a plate with a hole under tension (Kirsch), b
 # 3 sigma at the hole's edge, and the ligament from x = a to 2 a carries 1.6875 sigma a.
 # The sub-blocks are bonded triangles (constant-strain triangles, which converge to the elastic
 # continuum; docs/dda.md, "Bonds"), a/10 within 2.5 a of the hole, a/5 within 4 a, then a/2; no
-# bond breaks. A tessellation cuts convex blocks only, so the plate is cut into 16 convex
-# sectors by rays from the hole's centre through the arc's corners, each tessellated on its
-# own, their faces held together by a joint as strong as the bonds (`glue`: its contacts stay
-# locked, and the sectors' sub-blocks need not meet corner to corner).
+# bond breaks. The plate is cut into 16 convex sectors by rays from the hole's centre through
+# the arc's corners, each tessellated on its own, their faces held together by a joint as
+# strong as the bonds (`glue`: its contacts stay locked, and the sectors' sub-blocks need not
+# meet corner to corner); the plate as one block that is not convex would tessellate too.
 # tests/verification/bonded_continuum_verification_test.cpp runs it at h = a/2.5, a/5 and a/10
 # (this file): the ligament's force, the sub-blocks' sigma_yy times their faces' lengths on
 # y = 0, is 0.644, 0.930, 0.962 of Kirsch's, the error falling at each halving, the finest
