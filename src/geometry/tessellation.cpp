@@ -424,21 +424,26 @@ LabelledPolygon join_across(const LabelledPolygon& a, const LabelledPolygon& b, 
 std::vector<LabelledPolygon> merge_convex_unions(Fragments fragments, double size) {
   std::vector<LabelledPolygon>& cells = fragments.cells;
   FragmentGroups groups(cells.size());
-  for (std::size_t f = 0; f < cells.size(); ++f) {
-    const LabelledPolygon seams = cells[f];
-    for (const LabelledVertex& v : seams) {
-      if (v.source <= static_cast<int>(f) || fragments.seed_of[static_cast<std::size_t>(v.source)] != fragments.seed_of[f])
-        continue;
-      const int a = groups.root(static_cast<int>(f)), b = groups.root(v.source);
-      if (a == b) continue;
-      const LabelledPolygon joined = with_roots(join_across(with_roots(cells[static_cast<std::size_t>(a)], groups),
-                                                            with_roots(cells[static_cast<std::size_t>(b)], groups), a, b,
-                                                            1e-9 * size),
-                                                groups);
-      if (joined.empty() || !is_convex_with_one_face_each(joined)) continue;
-      cells[static_cast<std::size_t>(a)] = joined;
-      cells[static_cast<std::size_t>(b)].clear();
-      groups.join(b, a);
+  // Until no merge is left: a pair that could not merge may once one of them has grown.
+  for (bool merged = true; merged;) {
+    merged = false;
+    for (std::size_t a = 0; a < cells.size(); ++a) {
+      for (std::size_t k = 0; k < cells[a].size(); ++k) {
+        const int across = cells[a][k].source;
+        if (across < 0 || fragments.seed_of[static_cast<std::size_t>(across)] != fragments.seed_of[a]) continue;
+        const int b = groups.root(across);
+        if (b == static_cast<int>(a)) continue;
+        const LabelledPolygon joined =
+            with_roots(join_across(with_roots(cells[a], groups), with_roots(cells[static_cast<std::size_t>(b)], groups),
+                                   static_cast<int>(a), b, 1e-9 * size),
+                       groups);
+        if (joined.empty() || !is_convex_with_one_face_each(joined)) continue;
+        cells[a] = joined;
+        cells[static_cast<std::size_t>(b)].clear();
+        groups.join(b, static_cast<int>(a));
+        merged = true;
+        k = 0;  // the grown cell's faces from the start
+      }
     }
   }
   for (LabelledPolygon& c : cells) c = with_roots(c, groups);

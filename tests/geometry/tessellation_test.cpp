@@ -235,10 +235,13 @@ TEST(Tessellation, NonConvexPolygonsArePartitionedIntoConvexSubBlocks) {
 // Voronoi cells of a non-convex polygon: each seed lies in one sub-block, and a sub-block that
 // holds no seed is a part of its seed's cell (the seed nearest its centroid) cut off either at
 // a reflex corner (the corner is one of its vertices) or by the outside of the polygon (the
-// segment from the seed to it leaves the polygon: a cell reaching across the notch).
+// segment from the seed to it leaves the polygon: a cell reaching across the notch); in the L,
+// the notch and the quarter plate (its 15 reflex corners along the arc).
 TEST(Tessellation, AVoronoiCellIsSplitOnlyAtAReflexCornerOrByTheOutside) {
-  const std::vector<std::pair<Polygon, Point>> cases{{kL, {2.0, 1.5}}, {kNotch, {2.0, 1.0}}};
-  for (const auto& [polygon, reflex] : cases)
+  const Polygon plate = quarter_plate_with_hole();
+  const std::vector<std::pair<Polygon, std::vector<Point>>> cases{
+      {kL, {{2.0, 1.5}}}, {kNotch, {{2.0, 1.0}}}, {plate, std::vector<Point>(plate.begin() + 4, plate.end() - 1)}};
+  for (const auto& [polygon, reflexes] : cases)
     for (std::uint64_t seed : {1u, 2u, 3u, 7u}) {
       const std::vector<Point> seeds = select_seeds(polygon, generate_seeds(bounding_box(polygon), kSize, seed), 0.2 * kSize);
       const Tessellation t = tessellate(polygon, seeds, kSize, TessellationKind::voronoi);
@@ -252,7 +255,9 @@ TEST(Tessellation, AVoronoiCellIsSplitOnlyAtAReflexCornerOrByTheOutside) {
         const Point owner = *std::min_element(seeds.begin(), seeds.end(), [&](Point a, Point b) {
           return distance(a, middle) < distance(b, middle);
         });
-        const bool at_corner = std::find(cell.begin(), cell.end(), reflex) != cell.end();
+        const bool at_corner = std::any_of(reflexes.begin(), reflexes.end(), [&](Point reflex) {
+          return std::find(cell.begin(), cell.end(), reflex) != cell.end();
+        });
         const auto inside = clip_segment_to_polygon(owner, middle, polygon);
         const bool across_outside = inside.size() != 1 || inside[0].first > 1e-12 || inside[0].second < 1.0 - 1e-12;
         EXPECT_TRUE(at_corner || across_outside)
