@@ -68,14 +68,14 @@ struct Tessellation {
 //
 // A polygon that is not convex: cut into convex pieces along diagonals (convex_pieces: Hertel
 // & Mehlhorn 1983); every seed's cell clipped to every piece as above (a seed in one piece may
-// own part of another), the edges on a seam labelled by the same seed's fragment across; the
-// vertices welded as above (the polygon's corners kept); then a seed's fragments on two sides
-// of a seam merged into one sub-block where their union is convex and meets each neighbour
-// along one straight face (a cell is split only where it holds a reflex corner), the others
-// left as sub-blocks bonded along the seam:
+// own part of another), the edges on a seam labelled by the same seed's fragment across; a
+// seed's fragments on two sides of a seam merged into one sub-block where their union is
+// convex and meets each neighbour along one straight face (a cell is split only where it holds
+// a reflex corner), the others left as sub-blocks bonded along the seam; then the vertices
+// welded as above (the polygon's corners kept):
 //   pieces = convex_pieces(polygon)
 //   for each seed s, piece P: fragment(s, P) = the cell of s clipped to P, if not empty
-//   weld; for each seam between fragment(s, P) and fragment(s, Q):
+//   until no merge is left, for each seam between fragment(s, P) and fragment(s, Q):
 //     if fragment(s, P) ∪ fragment(s, Q) is convex with one face per neighbour: merge them
 //   weld; a vertex that joined two outline edges goes onto their corner; a sub-block welded
 //     to two vertices goes, its neighbours facing each other
