@@ -10,12 +10,6 @@ namespace hydrodda::geometry {
 
 namespace {
 
-// Whether the turn a → b → c is not against the counter-clockwise orientation, a straight one
-// within 1e-12 of its edges' lengths included.
-bool turns_left_or_straight(Point a, Point b, Point c) {
-  return orient(a, b, c) >= -1e-12 * distance(a, b) * distance(b, c);
-}
-
 bool is_convex(std::span<const Point> polygon, const std::vector<int>& piece) {
   const std::size_t n = piece.size();
   for (std::size_t k = 0; k < n; ++k)

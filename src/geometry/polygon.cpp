@@ -20,6 +20,10 @@ double signed_area(std::span<const Point> polygon) {
 
 double area(std::span<const Point> polygon) { return std::abs(signed_area(polygon)); }
 
+bool turns_left_or_straight(Point a, Point b, Point c) {
+  return orient(a, b, c) >= -1e-12 * distance(a, b) * distance(b, c);
+}
+
 Point centroid(std::span<const Point> polygon) {
   const std::size_t n = polygon.size();
   if (n == 0) return {};

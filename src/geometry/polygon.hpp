@@ -24,6 +24,9 @@ double area(std::span<const Point> polygon);
 // Area centroid: c = 1/(6A) Σ (p_i + p_{i+1}) (x_i y_{i+1} − x_{i+1} y_i).
 Point centroid(std::span<const Point> polygon);
 Box bounding_box(std::span<const Point> polygon);
+// Whether the turn a → b → c is not against the counter-clockwise orientation, a straight one
+// (within 1e-12 of its edges' lengths) included.
+bool turns_left_or_straight(Point a, Point b, Point c);
 // The polygon's width across its edges: the smallest, over its edges, of its extent along the
 // edge's normal (max − min of the vertices' distances from the edge's line). For a convex
 // polygon the width between the closest pair of parallel supporting lines (one of them always

@@ -366,12 +366,6 @@ LabelledPolygon with_roots(LabelledPolygon cell, FragmentGroups& groups) {
   return cell;
 }
 
-// Whether the turn a → b → c is not against the counter-clockwise orientation (a straight one
-// within 1e-12 of its edges' lengths included).
-bool turns_left_or_straight(Point a, Point b, Point c) {
-  return orient(a, b, c) >= -1e-12 * distance(a, b) * distance(b, c);
-}
-
 bool turns_straight(Point a, Point b, Point c) {
   return std::abs(orient(a, b, c)) <= 1e-12 * distance(a, b) * distance(b, c);
 }
