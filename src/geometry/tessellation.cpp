@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -596,6 +597,39 @@ bool lies_on_crack(Point a, Point b, const Segment2& crack, double tolerance) {
   if (off_line(a) > tolerance || off_line(b) > tolerance) return false;
   const double along = dot(0.5 * (a + b) - crack.from, t);
   return along > 0.0 && along < length;
+}
+
+std::vector<ReflexCornerSeeds> make_reflex_corner_seeds(std::span<const Point> polygon, double size, double margin) {
+  const std::size_t n = polygon.size();
+  std::vector<ReflexCornerSeeds> out;
+  const auto clear_of_outline = [&](Point s) {
+    if (!contains(polygon, s)) return false;
+    for (std::size_t k = 0; k < n; ++k)
+      if (distance_to_segment(s, polygon[k], polygon[(k + 1) % n]) < margin) return false;
+    return true;
+  };
+  const auto clear_of_earlier = [&](Point s) {
+    for (const ReflexCornerSeeds& c : out)
+      for (Point t : c.seeds)
+        if (distance(s, t) < 0.5 * size) return false;
+    return true;
+  };
+  for (std::size_t k = 0; k < n; ++k) {
+    const Point before = polygon[(k + n - 1) % n], at = polygon[k], after = polygon[(k + 1) % n];
+    if (turns_left_or_straight(before, at, after)) continue;
+    const Point in = (at - before) / distance(at, before), out_edge = (after - at) / distance(after, at);
+    // α: from the outgoing edge counter-clockwise to the incoming one, run back (in (π, 2π)).
+    double alpha = std::atan2(cross(out_edge, -1.0 * in), dot(out_edge, -1.0 * in));
+    if (alpha < 0) alpha += 2.0 * std::numbers::pi;
+    const auto at_angle = [&](double angle) {
+      const double c = std::cos(angle), s = std::sin(angle);
+      return at + (0.5 * size) * Point{c * out_edge.x - s * out_edge.y, s * out_edge.x + c * out_edge.y};
+    };
+    const ReflexCornerSeeds corner{at, {at_angle(0.25 * alpha), at_angle(0.75 * alpha)}};
+    if (std::all_of(corner.seeds.begin(), corner.seeds.end(), [&](Point s) { return clear_of_outline(s) && clear_of_earlier(s); }))
+      out.push_back(corner);
+  }
+  return out;
 }
 
 std::vector<Point> select_seeds(std::span<const Point> polygon, std::span<const Point> seeds, double margin) {

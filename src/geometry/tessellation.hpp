@@ -3,6 +3,7 @@
 // Voronoi cells of seeded points, or into triangles (each Voronoi cell fanned from its
 // centroid), every face between two sub-blocks named by both, so that each is a bond.
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -42,6 +43,24 @@ bool lies_near_crack(Point p, const Segment2& crack, double spacing);
 // Whether segment a–b lies on `crack` (both ends within `tolerance` of its line, its middle
 // between the crack's ends).
 bool lies_on_crack(Point a, Point b, const Segment2& crack, double tolerance);
+
+// Two seeds that make a reflex corner of a polygon a node of their two cells: mirrored across
+// the bisector of the corner's angle α (> 180°), each `size`/2 from the corner, at α/4 from
+// the edge beside it. The corner is then equidistant from both, and so lies on their face
+// (which runs along the bisector) where no other seed is as near it (a caller leaves out the
+// seeds within `size` of it): each cell meets the corner with a convex angle α/2, and none wraps
+// round it. A Voronoi cell that held the corner would be split there into convex parts, one of
+// them as small as the cell's reach past the corner's lines.
+struct ReflexCornerSeeds {
+  Point corner;
+  std::array<Point, 2> seeds;
+};
+
+// The seeds of each reflex corner of the simple counter-clockwise `polygon` (turning right by
+// more than 1e-12 of its edges' lengths), in the order of its vertices; a corner whose seeds
+// would lie outside the polygon, within `margin` of its outline or within `size`/2 of an
+// earlier corner's seeds is left out (a narrow notch: its cells are split as before).
+std::vector<ReflexCornerSeeds> make_reflex_corner_seeds(std::span<const Point> polygon, double size, double margin);
 
 // A tessellated polygon: sub-block polygons (counter-clockwise) and, per sub-block and edge
 // (vertex k → k + 1), where the edge lies: >= 0, the sub-block on its other side (a bond);

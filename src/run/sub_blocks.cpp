@@ -92,22 +92,36 @@ std::vector<Crack> make_cracks(const std::vector<scenario::TessellationDefinitio
 
 // The seeds of one block: of each table's jittered grid, those in the block (clear of its edges
 // by 0.2 of the table's size) where that table is the first whose region holds them and no
-// crack is near; then every crack's pairs in the block. And the smallest size among them.
+// crack is near, and not within the table's size of a reflex corner of the block, whose pair
+// of seeds takes their place (geometry::make_reflex_corner_seeds: the corner a node of two
+// cells, none wrapping round it to be split there into a sliver); then every crack's pairs in
+// the block. And the smallest size among them.
 std::pair<std::vector<Point>, double> gather_seeds(const std::vector<scenario::TessellationDefinition>& tables,
                                                    const std::vector<SeedField>& fields, const std::vector<Crack>& cracks,
                                                    const Polygon& block) {
   std::vector<Point> seeds;
   double smallest = 0.0;
   const auto take_size = [&](double size) { smallest = smallest > 0.0 ? std::min(smallest, size) : size; };
+  const auto near_crack = [&](Point p) {
+    return std::any_of(cracks.begin(), cracks.end(),
+                       [&](const Crack& c) { return geometry::lies_near_crack(p, c.segment, c.seeds.spacing); });
+  };
   for (std::size_t k = 0; k < tables.size(); ++k) {
     const std::size_t before = seeds.size();
-    for (Point p : geometry::select_seeds(block, fields[k].near(geometry::bounding_box(block)), 0.2 * tables[k].size)) {
-      if (first_table_holding(tables, p) != static_cast<int>(k)) continue;
-      if (std::any_of(cracks.begin(), cracks.end(),
-                      [&](const Crack& c) { return geometry::lies_near_crack(p, c.segment, c.seeds.spacing); }))
+    const double size = tables[k].size;
+    std::vector<geometry::ReflexCornerSeeds> corners;
+    for (const geometry::ReflexCornerSeeds& c : geometry::make_reflex_corner_seeds(block, size, 0.2 * size))
+      if (std::all_of(c.seeds.begin(), c.seeds.end(),
+                      [&](Point p) { return first_table_holding(tables, p) == static_cast<int>(k) && !near_crack(p); }))
+        corners.push_back(c);
+    for (Point p : geometry::select_seeds(block, fields[k].near(geometry::bounding_box(block)), 0.2 * size)) {
+      if (first_table_holding(tables, p) != static_cast<int>(k) || near_crack(p)) continue;
+      if (std::any_of(corners.begin(), corners.end(),
+                      [&](const geometry::ReflexCornerSeeds& c) { return geometry::distance(p, c.corner) < size; }))
         continue;
       seeds.push_back(p);
     }
+    for (const geometry::ReflexCornerSeeds& c : corners) seeds.insert(seeds.end(), c.seeds.begin(), c.seeds.end());
     if (seeds.size() > before) take_size(tables[k].size);
   }
   for (const Crack& c : cracks) {

@@ -324,5 +324,51 @@ TEST(Tessellation, ACracksSeedsMakeFacesAlongItEndingAtItsEnds) {
   }
 }
 
+// A reflex corner's seeds (make_reflex_corner_seeds), on the L's corner (2, 1.5): its angle
+// α = 270° runs from the outgoing edge (direction 90°) round to the incoming one run back (0°),
+// so the seeds lie size/2 from the corner at 90° + α/4 = 157.5° and 90° + 3α/4 = 292.5°, mirror
+// images across the bisector at 225° (to 1e-12 m: one rotation).
+TEST(Tessellation, AReflexCornersSeedsAreMirroredAcrossItsBisector) {
+  const std::vector<ReflexCornerSeeds> corners = make_reflex_corner_seeds(kL, kSize, 0.2 * kSize);
+  ASSERT_EQ(corners.size(), 1u);
+  EXPECT_EQ(corners[0].corner, (Point{2.0, 1.5}));
+  const double degree = std::numbers::pi / 180.0;
+  for (int k = 0; k < 2; ++k) {
+    const double angle = (k == 0 ? 157.5 : 292.5) * degree;
+    EXPECT_NEAR(corners[0].seeds[k].x, 2.0 + 0.25 * std::cos(angle), 1e-12);
+    EXPECT_NEAR(corners[0].seeds[k].y, 1.5 + 0.25 * std::sin(angle), 1e-12);
+  }
+  EXPECT_TRUE(make_reflex_corner_seeds(kSquare, kSize, 0.2 * kSize).empty());
+}
+
+// The grid's seeds within size of a reflex corner replaced by its two seeds: the corner is a
+// vertex of exactly two Voronoi sub-blocks, the cells of those seeds, and no cell is split at
+// it: in the L every sub-block holds a seed (one per seed); in the V notch, whose cells may
+// reach across the notch, the corner's two sub-blocks hold its seeds. Before, the cell holding
+// the corner wrapped round it and was split there into convex parts, one as small as its reach
+// past the corner's lines.
+TEST(Tessellation, AReflexCornersSeedsMakeItANodeOfTwoCells) {
+  for (const Polygon& polygon : {kL, kNotch})
+    for (std::uint64_t seed : {1u, 2u, 3u, 7u}) {
+      SCOPED_TRACE("polygon of " + std::to_string(polygon.size()) + " corners, seed " + std::to_string(seed));
+      const std::vector<ReflexCornerSeeds> corners = make_reflex_corner_seeds(polygon, kSize, 0.2 * kSize);
+      ASSERT_EQ(corners.size(), 1u);
+      std::vector<Point> seeds;
+      for (Point s : select_seeds(polygon, generate_seeds(bounding_box(polygon), kSize, seed), 0.2 * kSize))
+        if (distance(s, corners[0].corner) >= kSize) seeds.push_back(s);
+      seeds.insert(seeds.end(), corners[0].seeds.begin(), corners[0].seeds.end());
+      const Tessellation t = tessellate(polygon, seeds, kSize, TessellationKind::voronoi);
+      expect_partition(polygon, t);
+      expect_convex(t, kSize);
+      if (polygon == kL) EXPECT_EQ(t.cells.size(), seeds.size());
+      std::vector<std::size_t> at_corner;
+      for (std::size_t c = 0; c < t.cells.size(); ++c)
+        if (std::find(t.cells[c].begin(), t.cells[c].end(), corners[0].corner) != t.cells[c].end()) at_corner.push_back(c);
+      ASSERT_EQ(at_corner.size(), 2u);
+      for (Point s : corners[0].seeds)
+        EXPECT_TRUE(contains(t.cells[at_corner[0]], s) || contains(t.cells[at_corner[1]], s));
+    }
+}
+
 }  // namespace
 }  // namespace hydrodda::geometry
