@@ -105,6 +105,7 @@ struct PrescribedDisplacement {
   Point point;
   Point value;
   double ramp_time = 1.0;
+  int entry = 0;  // the definition it came from (a boundary gives a point per vertex on it)
 };
 
 // Traction on edge `edge` (from vertex edge to edge+1) varying linearly from its first to its

@@ -191,7 +191,9 @@ std::vector<System::PrescribedProgress> System::prescribed_progress() const {
     const Block& b = blocks_[tp.block];
     const double stress = b.stress.cwiseAbs().maxCoeff();
     const double elastic_scale = stress * std::sqrt(b.moments.area) / materials_[b.material].young;
-    out.push_back({tp.initial, ramp * displacements_[i].value, tp.position - tp.initial, elastic_scale});
+    const Point target = ramp * displacements_[i].value;
+    const Point reaction = fixed_stiffness_ * (tp.initial + target - tp.position);
+    out.push_back({tp.initial, target, tp.position - tp.initial, elastic_scale, reaction, displacements_[i].entry});
   }
   return out;
 }

@@ -222,6 +222,9 @@ class System {
     // The springs that impose it (10 × the penalty, 500 E per metre) yield some 500 times less
     // than the block under the same load.
     double elastic_scale = 0.0;
+    // The force its springs exert on the block (N/m): the support's reaction on the rock.
+    Point reaction;
+    int entry = 0;  // PrescribedDisplacement::entry
   };
   std::vector<PrescribedProgress> prescribed_progress() const;
   double penalty() const { return penalty_; }

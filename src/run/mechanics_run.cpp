@@ -13,6 +13,7 @@
 #include "run/mechanics_model.hpp"
 #include "run/mechanics_rest.hpp"
 #include "run/paraview_output.hpp"
+#include "run/reactions.hpp"
 #include "run/run_summary.hpp"
 #include "run/runs.hpp"
 #include "run/scenario_fractures.hpp"
@@ -84,10 +85,13 @@ output::RunSummary run_mechanics(const RunContext& context) {
   // A step on a large model may take minutes: it is left between its passes when asked to stop.
   model.set_interrupt_check([&context] { return context.stop_requested(); });
 
-  // A model with bonds adds the bonds broken in each step, and in all (added last).
+  // Each prescribed displacement's reaction, then, in a model with bonds, the bonds broken in
+  // each step and in all (added last).
   const bool bonded = system.bond_count() > 0;
   std::vector<std::string> history_columns{"step", "time", "time_step", "open_close_iterations", "contacts",
                                            "max_displacement", "max_penetration"};
+  const std::vector<std::string> reactions = reaction_columns(m.displacements);
+  history_columns.insert(history_columns.end(), reactions.begin(), reactions.end());
   if (bonded) history_columns.insert(history_columns.end(), {"broken_bonds", "broken_bonds_total"});
   CsvTable history(history_columns);
   CsvTable measure({"step", "time", "name", "x", "y", "ux", "uy"});
@@ -182,6 +186,10 @@ output::RunSummary run_mechanics(const RunContext& context) {
                                    CsvTable::cell(static_cast<long long>(r.open_close_iterations)),
                                    CsvTable::cell(static_cast<long long>(r.contacts)), CsvTable::cell(r.max_displacement),
                                    CsvTable::cell(r.max_penetration)};
+      for (const Point reaction : sum_reactions(system, m.displacements.size())) {
+        row.push_back(CsvTable::cell(reaction.x));
+        row.push_back(CsvTable::cell(reaction.y));
+      }
       if (bonds) {
         const int broken = bonds->add_breaks(step, system, fractures);
         row.push_back(CsvTable::cell(static_cast<long long>(broken)));

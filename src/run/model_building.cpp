@@ -504,11 +504,13 @@ dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::B
     if (block < 0) errors.push_back({file, l.line, "mechanics.load.point", fmt::format("{} lies in no block", point_text(l.point))});
     else model.point_loads.push_back({block, l.point, l.force});
   }
-  for (const scenario::PrescribedDisplacement& d : m.displacements) {
+  for (std::size_t entry = 0; entry < m.displacements.size(); ++entry) {
+    const scenario::PrescribedDisplacement& d = m.displacements[entry];
+    const int e = static_cast<int>(entry);
     if (d.point) {
       const int block = find_block(blocks, *d.point, tolerance);
       if (block < 0) errors.push_back({file, d.line, "mechanics.displacement.point", fmt::format("{} lies in no block", point_text(*d.point))});
-      else model.displacements.push_back({block, *d.point, d.value, d.ramp_time.value_or(run_duration)});
+      else model.displacements.push_back({block, *d.point, d.value, d.ramp_time.value_or(run_duration), e});
       continue;
     }
     const scenario::BoundarySegment* boundary = s.find_boundary(d.boundary);
@@ -516,7 +518,8 @@ dda::ModelDefinition build_mechanics_model(const Scenario& s, std::vector<dda::B
     if (vertices.empty())
       errors.push_back({file, d.line, "mechanics.displacement.boundary", fmt::format("no block vertex lies on boundary \"{}\"", d.boundary)});
     for (const dda::VertexRef& v : vertices)
-      model.displacements.push_back({v.block, blocks[v.block].polygon[v.vertex], d.value, d.ramp_time.value_or(run_duration)});
+      model.displacements.push_back(
+          {v.block, blocks[v.block].polygon[v.vertex], d.value, d.ramp_time.value_or(run_duration), e});
   }
   model.tractions = edge_tractions(s, blocks, errors);
   if (m.initial_stress) {
