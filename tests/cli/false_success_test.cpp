@@ -15,6 +15,7 @@
 
 namespace fs = std::filesystem;
 using hydrodda::testing::run_program;
+using hydrodda::testing::scratch_folder;
 
 namespace {
 
@@ -25,15 +26,6 @@ std::string read_text(const fs::path& file) {
   std::stringstream text;
   text << in.rdbuf();
   return text.str();
-}
-
-// A scratch folder of this test (named after it and the process, for ctest -j).
-fs::path scratch() {
-  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::temp_directory_path() / ("hydrodda-" + std::string(test->name()) + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
 }
 
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
@@ -77,7 +69,7 @@ figures = []
 // the displacement (~5e11 N/m), so the lid stays where it was: the run fails and says so. With
 // Δt = 1e-3 s the lid follows to its springs' error, far under 1% of the 1 mm.
 TEST(FalseSuccess, APrescribedDisplacementNeverReachedFailsTheRun) {
-  const fs::path dir = scratch();
+  const fs::path dir = scratch_folder();
   std::ofstream(dir / "tiny_step.toml") << pushed_block("1e-20");
   const auto tiny = run_program("run " + (dir / "tiny_step.toml").string() + " -o " + (dir / "tiny").string());
   EXPECT_EQ(tiny.exit_code, 1) << tiny.output;
@@ -97,7 +89,7 @@ TEST(FalseSuccess, APrescribedDisplacementNeverReachedFailsTheRun) {
 // relaxed heads that looked converged at once. Judged on the unrelaxed heads, the loop runs
 // to max_iterations and says it did not converge.
 TEST(FalseSuccess, FrozenHeadsAreNotConvergence) {
-  const fs::path dir = scratch();
+  const fs::path dir = scratch_folder();
   std::string text = read_text(kSource / "scenarios/paper/six_block_lr_rl.toml");
   text = replaced(text, "relaxation = 1.0", "relaxation = 1e-300");
   text = replaced(text, "max_iterations = 50", "max_iterations = 4");
@@ -115,7 +107,7 @@ TEST(FalseSuccess, FrozenHeadsAreNotConvergence) {
 // principal values (from its squares) overflow to infinity (null in summary.json); the run
 // fails, exit 1, naming the values by their summary.json paths.
 TEST(FalseSuccess, AnOverflowedResultFailsTheRunNamingIt) {
-  const fs::path dir = scratch();
+  const fs::path dir = scratch_folder();
   const std::string text = replaced(read_text(kSource / "scenarios/verification/flow_linear_head.toml"),
                                     "viscosity = 1.0e-3", "viscosity = 1.0e-300");
   std::ofstream(dir / "overflow.toml") << text;
@@ -137,7 +129,7 @@ TEST(FalseSuccess, AnOverflowedResultFailsTheRunNamingIt) {
 // support somewhere" let it creep and report success; each group of touching blocks must hold
 // a support. The same block resting on the base is held.
 TEST(FalseSuccess, AFloatingBlockInAStaticAnalysisIsRefused) {
-  const fs::path dir = scratch();
+  const fs::path dir = scratch_folder();
   const std::string resting = R"(title = "A block under a point load on a fixed base"
 [geometry]
 [[geometry.block]]

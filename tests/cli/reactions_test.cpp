@@ -1,7 +1,6 @@
 // A prescribed displacement's reaction in history.csv: what a load frame reads.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -16,16 +15,9 @@
 
 namespace fs = std::filesystem;
 using hydrodda::testing::run_program;
+using hydrodda::testing::scratch_folder;
 
 namespace {
-
-fs::path scratch() {
-  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::temp_directory_path() / ("hydrodda-" + std::string(test->name()) + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 // history.csv's last row, by column name.
 std::map<std::string, double> last_row(const fs::path& file) {
@@ -77,7 +69,7 @@ figures = []
 )";
 
 TEST(Reactions, APushedBlocksReactionBalancesItsStressAndMatchesItsStiffness) {
-  const fs::path dir = scratch();
+  const fs::path dir = scratch_folder();
   std::ofstream(dir / "pushed.toml") << kPushedBlock;
   const auto result = run_program("run " + (dir / "pushed.toml").string() + " -o " + (dir / "out").string());
   ASSERT_EQ(result.exit_code, 0) << result.output;
@@ -97,7 +89,7 @@ TEST(Reactions, APushedBlocksReactionBalancesItsStressAndMatchesItsStiffness) {
 }
 
 TEST(Reactions, EachDefinitionHasItsOwnColumnsAndARunWithoutNoneIsWritten) {
-  const fs::path dir = scratch();
+  const fs::path dir = scratch_folder();
   std::string two = kPushedBlock;
   // Two more tables asking the same motion as the first: the top's middle, and the lid again.
   two += "[[mechanics.displacement]]\npoint = [1.0, 1.0]\nvalue = [0.0, -1.0e-3]\nramp_time = 10.0\n"

@@ -35,6 +35,16 @@ inline ProgramResult run_command(const std::string& shell_command) {
   return result;
 }
 
+// A scratch folder of the running test, named after it and the process (for ctest -j), empty.
+inline std::filesystem::path scratch_folder() {
+  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("hydrodda-" + std::string(test->name()) + "-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
 inline ProgramResult run_program(const std::string& arguments) {
   return run_command(std::string(HYDRODDA_BINARY) + " " + arguments);
 }
