@@ -7,7 +7,6 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -21,15 +20,9 @@ namespace {
 
 // history.csv's last row, by column name.
 std::map<std::string, double> last_row(const fs::path& file) {
-  std::ifstream in(file);
-  std::string header, line, last;
-  std::getline(in, header);
-  while (std::getline(in, line))
-    if (!line.empty()) last = line;
+  const auto table = hydrodda::testing::read_csv(file);
   std::map<std::string, double> row;
-  std::stringstream names(header), values(last);
-  std::string name, value;
-  while (std::getline(names, name, ',') && std::getline(values, value, ',')) row[name] = std::stod(value);
+  for (std::size_t c = 0; c < table.front().size(); ++c) row[table.front()[c]] = std::stod(table.back().at(c));
   return row;
 }
 
