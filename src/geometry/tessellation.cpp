@@ -550,6 +550,15 @@ Tessellation tessellate_in_convex_pieces(std::span<const Point> polygon, std::sp
   return to_tessellation(cells, kind);
 }
 
+// Whether s lies inside the polygon and at least `margin` from its outline.
+bool lies_clear_inside(std::span<const Point> polygon, Point s, double margin) {
+  if (!contains(polygon, s)) return false;
+  const std::size_t n = polygon.size();
+  for (std::size_t k = 0; k < n; ++k)
+    if (distance_to_segment(s, polygon[k], polygon[(k + 1) % n]) < margin) return false;
+  return true;
+}
+
 }  // namespace
 
 std::vector<Point> generate_seeds(const Box& box, double size, std::uint64_t seed) {
@@ -602,12 +611,6 @@ bool lies_on_crack(Point a, Point b, const Segment2& crack, double tolerance) {
 std::vector<ReflexCornerSeeds> make_reflex_corner_seeds(std::span<const Point> polygon, double size, double margin) {
   const std::size_t n = polygon.size();
   std::vector<ReflexCornerSeeds> out;
-  const auto clear_of_outline = [&](Point s) {
-    if (!contains(polygon, s)) return false;
-    for (std::size_t k = 0; k < n; ++k)
-      if (distance_to_segment(s, polygon[k], polygon[(k + 1) % n]) < margin) return false;
-    return true;
-  };
   const auto clear_of_earlier = [&](Point s) {
     for (const ReflexCornerSeeds& c : out)
       for (Point t : c.seeds)
@@ -626,7 +629,7 @@ std::vector<ReflexCornerSeeds> make_reflex_corner_seeds(std::span<const Point> p
       return at + (0.5 * size) * Point{c * out_edge.x - s * out_edge.y, s * out_edge.x + c * out_edge.y};
     };
     const ReflexCornerSeeds corner{at, {at_angle(0.25 * alpha), at_angle(0.75 * alpha)}};
-    if (std::all_of(corner.seeds.begin(), corner.seeds.end(), [&](Point s) { return clear_of_outline(s) && clear_of_earlier(s); }))
+    if (std::all_of(corner.seeds.begin(), corner.seeds.end(), [&](Point s) { return lies_clear_inside(polygon, s, margin) && clear_of_earlier(s); }))
       out.push_back(corner);
   }
   return out;
@@ -634,13 +637,8 @@ std::vector<ReflexCornerSeeds> make_reflex_corner_seeds(std::span<const Point> p
 
 std::vector<Point> select_seeds(std::span<const Point> polygon, std::span<const Point> seeds, double margin) {
   std::vector<Point> out;
-  const std::size_t n = polygon.size();
-  for (Point s : seeds) {
-    if (!contains(polygon, s)) continue;
-    bool clear = true;
-    for (std::size_t k = 0; k < n && clear; ++k) clear = distance_to_segment(s, polygon[k], polygon[(k + 1) % n]) >= margin;
-    if (clear) out.push_back(s);
-  }
+  for (Point s : seeds)
+    if (lies_clear_inside(polygon, s, margin)) out.push_back(s);
   return out;
 }
 
