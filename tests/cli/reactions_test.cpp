@@ -81,15 +81,16 @@ TEST(Reactions, APushedBlocksReactionBalancesItsStressAndMatchesItsStiffness) {
   EXPECT_NEAR(row.at("reaction_y_lid"), expected, 0.01 * std::abs(expected));
 }
 
-TEST(Reactions, EachDefinitionHasItsOwnColumnsAndARunWithoutNoneIsWritten) {
+TEST(Reactions, EachDefinitionHasItsOwnColumnsAndARunWithoutAnyHasNone) {
   const fs::path dir = scratch_folder();
   std::string two = kPushedBlock;
   // Two more tables asking the same motion as the first: the top's middle, and the lid again.
   two += "[[mechanics.displacement]]\npoint = [1.0, 1.0]\nvalue = [0.0, -1.0e-3]\nramp_time = 10.0\n"
          "[[mechanics.displacement]]\nboundary = \"lid\"\nvalue = [0.0, -1.0e-3]\nramp_time = 10.0\n";
   // The last two tables are appended after [output]: give them back to [mechanics].
-  two.replace(two.find("[output]\nfigures = []\n"), 22, "");
-  two += "[output]\nfigures = []\n";
+  const std::string output_table = "[output]\nfigures = []\n";
+  two.replace(two.find(output_table), output_table.size(), "");
+  two += output_table;
   std::ofstream(dir / "two.toml") << two;
   const auto result = run_program("run " + (dir / "two.toml").string() + " -o " + (dir / "out").string());
   ASSERT_EQ(result.exit_code, 0) << result.output;

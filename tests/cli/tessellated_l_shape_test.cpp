@@ -20,6 +20,7 @@
 namespace fs = std::filesystem;
 using hydrodda::testing::edited_scenario;
 using hydrodda::testing::run_program;
+using hydrodda::testing::scratch_folder;
 
 namespace {
 
@@ -52,8 +53,7 @@ boundary = "bottom"
 TEST(TessellatedLShape, ChecksAndHoldsItsWeightOnBondedSubBlocks) {
   for (const std::string kind : {"voronoi", "triangles"}) {
     SCOPED_TRACE(kind);
-    const fs::path folder = fs::temp_directory_path() / ("hydrodda-l-shape-" + kind + "-" + std::to_string(::getpid()));
-    fs::remove_all(folder);
+    const fs::path folder = scratch_folder() / kind;
     fs::create_directories(folder);
     std::ofstream(folder / "l.toml") << l_shape(kind);
     const auto checked = run_program("check " + (folder / "l.toml").string());
@@ -138,8 +138,7 @@ gradient = [6867.0, 13734.0, 0.0]
 TEST(TessellatedNotch, ComesToRestInItsInSituStressOnBondedSubBlocks) {
   for (const std::string kind : {"voronoi", "triangles"}) {
     SCOPED_TRACE(kind);
-    const fs::path folder = fs::temp_directory_path() / ("hydrodda-notch-" + kind + "-" + std::to_string(::getpid()));
-    fs::remove_all(folder);
+    const fs::path folder = scratch_folder() / kind;
     fs::create_directories(folder);
     std::ofstream(folder / "notch.toml") << notched_block(kind);
     const auto ran = run_program("-q run " + (folder / "notch.toml").string() + " -o " + (folder / "out").string() + " --threads 1");
