@@ -6,7 +6,8 @@
 // (softening_bonds.cpp). A
 // broken bond is a joint of its type with friction only (System::joint_of). Breaks made in an attempt at a step
 // that is then cut are undone with it, so that a bond breaks under the load of the step that
-// is kept (docs/dda.md, "Bonds").
+// is kept (docs/dda.md, "Bonds"); where no step can be kept without them, a run breaks those
+// of the last try at the state held (break_bonds_of_last_cut_try).
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -127,6 +128,19 @@ void System::record_pending_bond_breaks() {
   }
   pending_breaks_.clear();
   if (!softening_.empty()) commit_softening();
+}
+
+int System::break_bonds_of_last_cut_try() {
+  for (const auto& [bond, mode] : last_cut_try_breaks_) {
+    char& state = bond_broken_[static_cast<std::size_t>(bond)];
+    if (state == 1) continue;
+    state = 1;
+    pending_breaks_.emplace_back(bond, mode);
+  }
+  last_cut_try_breaks_.clear();
+  const int count = static_cast<int>(pending_breaks_.size());
+  record_pending_bond_breaks();
+  return count;
 }
 
 std::array<Point, 2> System::bond_face(int bond) const {

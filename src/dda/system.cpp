@@ -758,6 +758,15 @@ System::Unsettled System::solve_step(double dt, Eigen::VectorXd& d, StepReport& 
         return Unsettled::contact_forces;
       }
       d = solver_->solve(rhs);
+      // A solve that moves a vertex farther than half the model's height (Shi's w0, of which a
+      // kept step may move one max_displacement_ratio) has thrown blocks: a sub-block freed of
+      // its bonds, held along its slip by its inertia alone, flung by its contact's friction.
+      // No step that far can be kept, and the multipliers and frictions learnt from it would
+      // carry it into every later solve of the try: the try ends, and the step is cut.
+      if (const double motion = largest_vertex_motion(d); motion > model_size_) {
+        thrown_motion_ = motion;
+        return Unsettled::thrown;
+      }
       ContactForceExtent extent = update_contact_forces(d);
       for (std::size_t k = 0; k < sliding.size(); ++k) image[k] = sliding[k]->record.normal_force;
       const double friction_change = sliding.empty() ? 0.0 : (image - used).lpNorm<Eigen::Infinity>();
@@ -932,6 +941,8 @@ StepReport System::step() {
   std::string first_failure;
   tried_multipliers_.clear();
   for (;;) {
+    report.most_breaks_in_a_cut_try = std::max(report.most_breaks_in_a_cut_try, static_cast<int>(pending_breaks_.size()));
+    if (!pending_breaks_.empty()) last_cut_try_breaks_ = pending_breaks_;
     undo_pending_bond_breaks();  // a retried step breaks its bonds anew
     detect_contacts();
     start_from_tried_multipliers();  // those of a try stalled at the tolerance (lagrangian_limits.cpp)
@@ -969,6 +980,9 @@ StepReport System::step() {
     const std::string why =
         settled ? "block " + std::to_string(largest_block) + " still moved " + format_number(largest) +
                       " m in a step, more than the allowed " + format_number(allowed_displacement_) + " m"
+        : unsettled == Unsettled::thrown
+            ? "a solve of its open-close passes threw blocks, moving a vertex by " + format_number(thrown_motion_) +
+                  " m, farther than half the model's height (" + format_number(model_size_) + " m)"
         : unsettled == Unsettled::contact_states
             ? "the open-close iteration did not settle the contact states: " + unsettled_states_
             : "the contact forces (Lagrange multipliers and friction) did not settle in " +
@@ -1073,11 +1087,12 @@ StepReport System::run_steps(int count) {
   return last;
 }
 
-StepReport System::run_until(double end_time) {
+StepReport System::run_until(double end_time, const std::function<bool(const StepReport&)>& after_each) {
   StepReport last;
   while (time_ < end_time - 1e-12 * std::max(1.0, end_time)) {
     dt_ = std::min(dt_, end_time - time_);
     last = step();
+    if (after_each && after_each(last)) break;
   }
   return last;
 }

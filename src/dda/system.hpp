@@ -40,6 +40,7 @@ struct StepReport {
   int open_close_iterations = 0;
   int lagrangian_iterations = 0;
   int retries = 0;            // step cuts before this step settled
+  int most_breaks_in_a_cut_try = 0;  // the most bonds one try broke before it was cut (mended then)
   int contacts = 0;           // closed contacts at the end of the step
   double max_displacement = 0.0;  // largest vertex displacement in the step
   double max_penetration = 0.0;   // deepest closed contact at the end of the step
@@ -135,8 +136,9 @@ class System {
   void set_interrupt_check(std::function<bool()> check) { interrupt_check_ = std::move(check); }
   // `count` steps; the last report.
   StepReport run_steps(int count);
-  // Steps until `end_time`, the last step shortened to land on it.
-  StepReport run_until(double end_time);
+  // Steps until `end_time`, the last step shortened to land on it. `after_each`, when given, is
+  // handed each step's report; its true ends the run there, short of end_time.
+  StepReport run_until(double end_time, const std::function<bool(const StepReport&)>& after_each = {});
   // Lets go of the contact list each step rebuilds (some 300 bytes a candidate: about 110 MB
   // at 10^4 blocks), kept from step to step to spare its page faults. A coupled run calls it
   // between passes, while the flow model factors and the fields are written; the next step
@@ -245,6 +247,10 @@ class System {
   // The cohesive traction (Pa) a softening bond's face carries at its ends at `opening`.
   std::array<double, 2> bond_cohesive_traction(int bond, std::array<double, 2> opening) const;
   const std::vector<BondBreak>& bond_breaks() const { return bond_breaks_; }
+  // Breaks, at the state now held, the bonds that the last cut try to break any broke, and
+  // returns how many of them were still intact: a static run's way past a load it can no
+  // longer raise (run/load_stall.hpp).
+  int break_bonds_of_last_cut_try();
   std::array<Point, 2> bond_face(int bond) const;
   int bond_joint_type(int bond) const;  // 0: `joint`, i: joint_types[i − 1]
   // The bond whose face a contact's vertex touches (its edge a bonded face), or −1.
@@ -334,7 +340,8 @@ class System {
   void linearise_closed_contact(ActiveContact& c) const;
   // Why a step's solve did not settle, if it did not.
   // interrupted: interrupt_check_ said stop before a pass (the step is to be abandoned).
-  enum class Unsettled { no, contact_states, contact_forces, interrupted };
+  // thrown: a solve moved a vertex farther than half the model's height (solve_step).
+  enum class Unsettled { no, contact_states, contact_forces, thrown, interrupted };
   Unsettled solve_step(double dt, Eigen::VectorXd& d, StepReport& report);
   void assemble_blocks(double dt, Matrix6Array& k_base, Eigen::VectorXd& f_base) const;
   void factor_with_contacts();
@@ -460,6 +467,7 @@ class System {
   std::vector<int> broken_at_start_;                  // ModelDefinition::broken_bonds
   std::vector<JointStrength> broken_joints_;          // by type: tan φ only
   std::vector<std::pair<int, BondFailure>> pending_breaks_;  // broken in the step under way
+  std::vector<std::pair<int, BondFailure>> last_cut_try_breaks_;  // break_bonds_of_last_cut_try's
   std::vector<BondBreak> bond_breaks_;
   double bond_reference_length_ = 1.0;  // m, l̄: half the bonds' mean face length
   // dda/softening_bonds.cpp: the bonds softening, with their ends' peak openings; those that
@@ -550,6 +558,7 @@ class System {
   [[noreturn]] void abandon_interrupted_step(double first_time_step, const StepReport& report);
   // What the last step whose contact forces did not settle left unsettled, for its error.
   std::string unsettled_forces_;
+  double thrown_motion_ = 0.0;  // how far the solve that threw blocks moved a vertex (m)
   std::string describe_unsettled_forces(bool penetration_ok, double friction_change, double force_scale) const;
   // A contact's change of state in open–close pass `pass` (unsettled_states.cpp): noted before
   // changed_in_step is set, so that a change back is told from a first change.

@@ -106,6 +106,7 @@ void System::import_state(const SystemState& s) {
   for (std::size_t i = 0; i < rollers_.size(); ++i) rollers_[i].relief = s.roller_reliefs[i];
   bond_breaks_ = s.bond_breaks;
   pending_breaks_.clear();
+  last_cut_try_breaks_.clear();
   bond_broken_.assign(bond_sides_.size(), 0);
   for (int bond : broken_at_start_) bond_broken_[static_cast<std::size_t>(bond)] = 1;
   for (const BondBreak& b : bond_breaks_) bond_broken_[static_cast<std::size_t>(b.bond)] = 1;

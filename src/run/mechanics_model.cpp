@@ -23,10 +23,15 @@ bool MechanicsModel::finished() const {
   return m.steps ? steps_ >= *m.steps : system_.time() >= end_time_ * (1.0 - 1e-12);
 }
 
-dda::StepReport MechanicsModel::step() {
+dda::StepReport MechanicsModel::step(const std::function<bool(const dda::StepReport&)>& after_each) {
   const scenario::MechanicsDefinition& m = *scenario_.mechanics;
-  const dda::StepReport r =
-      m.steps ? system_.step() : system_.run_until(std::min(end_time_, system_.time() + m.time_step));
+  dda::StepReport r;
+  if (m.steps) {
+    r = system_.step();
+    if (after_each) after_each(r);
+  } else {
+    r = system_.run_until(std::min(end_time_, system_.time() + m.time_step), after_each);
+  }
   ++steps_;
   return r;
 }

@@ -22,7 +22,8 @@ class MechanicsModel {
   bool finished() const;
   // One DDA step: of the current step size under `steps`; under `end_time`, one that does not
   // pass it (time-step control may shorten steps, so such a run takes as many as it needs).
-  dda::StepReport step();
+  // `after_each`, when given, is handed each DDA step's report; its true ends the step there.
+  dda::StepReport step(const std::function<bool(const dda::StepReport&)>& after_each = {});
   long long steps() const { return steps_; }
   // New [[mechanics.traction]] loads from the next step on, placed on the blocks as built; throws
   // scenario::ScenarioError for a boundary on which no block edge lies.
@@ -30,6 +31,8 @@ class MechanicsModel {
 
   const scenario::Scenario& scenario() const { return scenario_; }
   const dda::System& system() const { return system_; }
+  // At a stall (load_stall.hpp): dda::System::break_bonds_of_last_cut_try.
+  int break_bonds_of_last_cut_try() { return system_.break_bonds_of_last_cut_try(); }
   // Asked within each step, between its open–close passes (dda::System::set_interrupt_check):
   // true abandons the step and step() throws dda::StepInterrupted.
   void set_interrupt_check(std::function<bool()> check) { system_.set_interrupt_check(std::move(check)); }

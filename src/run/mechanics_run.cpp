@@ -8,6 +8,7 @@
 #include "run/bond_output.hpp"
 #include "run/figures.hpp"
 #include "run/fracture_output.hpp"
+#include "run/load_stall.hpp"
 #include "run/model_building.hpp"
 #include "run/no_equilibrium.hpp"
 #include "run/mechanics_model.hpp"
@@ -171,13 +172,40 @@ output::RunSummary run_mechanics(const RunContext& context) {
   dda::StepReport last_step;
   write_step(0, 0.0);
   long long last_written = 0;
+  LoadStallWatch stall_watch(m);
+  StallBreaks stall_breaks;
+  // A static run that cannot raise its load further (load_stall.hpp): ended at the last load it
+  // held, with no equilibrium.
+  const auto load_stalled = [&](long long step, double time) {
+    if (last_written != step) write_step(step, time);
+    const std::string message = describe_load_stall(s, stall_watch.stall(), time,
+                                                    describe_reactions(m.displacements, system), stall_breaks);
+    return stop(RunStatus::no_equilibrium, message,
+                describe_status_for_figures(fmt::format("load stalled at t = {:g} s", time), message),
+                summarise_held_state(held_step.state(joint_laws)));
+  };
+  // Or past it, where the stall's tries broke bonds still whole: they break at the state held.
+  const auto break_at_stall = [&](double time) {
+    const int broke = model.break_bonds_of_last_cut_try();
+    if (broke == 0) return false;
+    if (stall_breaks.bonds == 0) stall_breaks.first = time;
+    stall_breaks.bonds += broke;
+    stall_watch.restart();
+    spdlog::info("t = {:g} s: the load stalled, and the {} its last breaking try broke {} at the state held", time,
+                 broke == 1 ? "bond" : fmt::format("{} bonds", broke), broke == 1 ? "breaks" : "break");
+    return true;
+  };
   try {
     while (!model.finished()) {
       if (context.stop_requested())
         throw stop(RunStatus::interrupted,
                    fmt::format("interrupted at step {} (t = {:g} s)", model.steps(), system.time()),
                    fmt::format("interrupted at step {}", model.steps()));
-      const dda::StepReport r = model.step();
+      bool stalled = false;  // and no bond left to break: the run ends
+      const dda::StepReport r = model.step([&](const dda::StepReport& each) {
+        stalled = static_analysis && stall_watch.update(each) && !break_at_stall(each.time);
+        return stalled;
+      });
       last_step = r;
       if (m.analysis == dda::Analysis::static_) held_step.update(model.steps(), system);
       fracture_state.reset();  // no longer the blocks' state: measured again at an output step
@@ -208,6 +236,7 @@ output::RunSummary run_mechanics(const RunContext& context) {
         write_step(step, r.time);
         last_written = step;
       }
+      if (stalled) throw load_stalled(step, r.time);
       ProgressReport report;
       report.kind = ProgressReport::Kind::mechanics_step;
       report.count = step;

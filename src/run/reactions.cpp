@@ -1,5 +1,7 @@
 #include "run/reactions.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <string>
 
@@ -35,6 +37,16 @@ std::vector<geometry::Point> sum_reactions(const dda::System& system, std::size_
   for (const dda::System::PrescribedProgress& p : system.prescribed_progress())
     sums.at(static_cast<std::size_t>(p.entry)) += p.reaction;
   return sums;
+}
+
+std::string describe_reactions(const std::vector<scenario::PrescribedDisplacement>& displacements,
+                               const dda::System& system) {
+  const std::vector<std::string> names = reaction_names(displacements);
+  const std::vector<geometry::Point> sums = sum_reactions(system, displacements.size());
+  std::string text;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    text += fmt::format("{}{} ({:.4g}, {:.4g}) N/m", i == 0 ? "" : ", ", names[i], sums[i].x, sums[i].y);
+  return text;
 }
 
 }  // namespace hydrodda::run

@@ -25,4 +25,9 @@ std::vector<std::string> reaction_columns(const std::vector<scenario::Prescribed
 // of the definitions: `definitions` of them.
 std::vector<geometry::Point> sum_reactions(const dda::System& system, std::size_t definitions);
 
+// "top (0, -1.66e+06) N/m, point_2 (...) N/m": each definition's reaction now, by its name; ""
+// without any.
+std::string describe_reactions(const std::vector<scenario::PrescribedDisplacement>& displacements,
+                               const dda::System& system);
+
 }  // namespace hydrodda::run

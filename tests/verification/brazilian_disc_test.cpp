@@ -12,8 +12,16 @@
 // at σt within 10% of T (the load rises 0.13% a step; measured 1.052 T: the faces nearest the
 // diameter are not quite square to σx), none before; every bond broken by 1.15 T (18 MPa) is
 // a tension break within D/10 of that diameter (measured 3).
-// Not verified: the disc's peak load. The breaks stay scattered along the diameter as the load
-// rises, and the disc does not split at the first one (docs/dda.md, "Bonds").
+// The peak load, at D/40 (triangles of 0.025 m, 7,252 sub-blocks): the largest load the disc
+// holds is where the run can no longer raise it, the load past which its steps stall and its
+// bonds break at the state held (run/load_stall.hpp) until the disc is split and no try breaks a
+// bond still whole. Tolerance: σt = 2 P_peak / (π D t) within 10% of T (measured 1.0429 T at
+// t = 319.185 s; the continuum splits at T/0.987 = 1.013 T); every bond broken from 0.9 T on a
+// tension break within D/8 of the loaded diameter, and the crack along it over its middle 60%
+// at least: breaks beyond 0.3 D either side of the centre (measured 297 breaks within 0.107 m,
+// y from −0.435 to 0.420 m; from −0.377 to 0.399 m with the load's table written as here, the
+// same line in four rows rather than three: where the crack stops hangs on the steps' last bits). At D/20 the breaks stay scattered along the diameter and cascade only at 1.31 T
+// (docs/dda.md, "Bonds").
 
 #include <gtest/gtest.h>
 
@@ -79,16 +87,61 @@ TEST(BrazilianDisc, TheFirstBondBreaksOnTheLoadedDiameterWhenTheBrazilianTension
   fs::remove_all(out);
 }
 
+TEST(BrazilianDisc, AtD40ThePeakLoadGivesTheTensileStrengthAndTheCrackRunsAlongTheLoadedDiameter) {
+  const fs::path scenario = edited_scenario(
+      fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/verification/brazilian_disc.toml",
+      "brazilian-peak-" + std::to_string(::getpid()),
+      {{"size = 0.05", "size = 0.025"},
+       {"end_time = 400.0", "end_time = 1000.0"},
+       {"[400.0, -1.8e7]]", "[400.0, -1.8e7], [1000.0, -3.0e7]]"}});
+  const fs::path out = fs::temp_directory_path() / ("hydrodda-brazilian-peak-" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  const auto result = run_program("-q run " + scenario.string() + " -o " + out.string() + " --threads 1");
+  EXPECT_EQ(result.exit_code, 1) << result.output;
+  const auto summary = nlohmann::json::parse(std::ifstream(out / "summary.json"));
+  EXPECT_EQ(summary["status"], "no equilibrium") << summary.dump();
+  const std::string message = summary["message"];
+  EXPECT_NE(message.find("the load could not be raised past t = "), std::string::npos) << message;
+  EXPECT_NE(message.find("is the largest load it held (its peak)"), std::string::npos) << message;
+  const auto history = read_csv(out / "history.csv");
+  const double peak = std::stod(history.back()[column_of(history.front(), "time")]);
+  EXPECT_NEAR(brazilian_strength(peak) / kStrength, 1.0, 0.10) << "peak at t = " << peak;
+  const int broken = std::stoi(history.back()[column_of(history.front(), "broken_bonds_total")]);
+  EXPECT_EQ(summary["last_held"]["broken_bonds"], broken);
+  const auto fractures = read_csv(out / "fractures.csv");
+  const std::vector<std::string>& header = fractures.front();
+  double lowest = kDiameter;
+  double highest = -kDiameter;
+  for (std::size_t r = 1; r < fractures.size(); ++r) {
+    const std::vector<std::string>& row = fractures[r];
+    if (brazilian_strength(std::stod(row[column_of(header, "time")])) < 0.9 * kStrength) continue;
+    EXPECT_EQ(row[column_of(header, "mode")], "tension") << "row " << r;
+    const double mid_x = 0.5 * (std::stod(row[column_of(header, "x1")]) + std::stod(row[column_of(header, "x2")]));
+    const double mid_y = 0.5 * (std::stod(row[column_of(header, "y1")]) + std::stod(row[column_of(header, "y2")]));
+    EXPECT_LT(std::abs(mid_x), kDiameter / 8.0) << "row " << r;
+    lowest = std::min(lowest, mid_y);
+    highest = std::max(highest, mid_y);
+  }
+  EXPECT_LT(lowest, -0.3 * kDiameter) << "the crack did not run down the diameter";
+  EXPECT_GT(highest, 0.3 * kDiameter) << "the crack did not run up the diameter";
+  fs::remove_all(out);
+  fs::remove(scenario);
+}
+
 // Past the disc's peak, a cascade of breaks: at D/10 the loaded disc broke 35 bonds by 725 s
 // (1.56 T), and in the step after, an open-close pass that opened contacts of a sub-block freed
 // of its bonds moved it 28 m at its inertia (2M/Δt², the only stiffness left to it); the
 // Lagrangian passes then grew the closed contacts' multipliers without bound (λ ← λ + p d,
 // 10^4 times a pass) until they overflowed, and the solver, handed loads that were not finite,
 // ended the run "numerically singular". The matrix was not singular: such a try is now cut and
-// retried at a shorter step, as any try whose forces do not settle (dda::System::step). The
-// disc steps on past 725 s and breaks more bonds (40 by 800 s); the run ends at its end time
-// (exit 0), not failed.
-TEST(BrazilianDisc, ACascadeOfBreaksPastThePeakCutsTheStepInsteadOfFailingTheRun) {
+// retried at a shorter step, as any try whose forces do not settle (dda::System::step), and a
+// solve that throws a vertex past half the model's height ends its try. Where the steps then
+// stall, the bonds their tries broke break at the state held (run/load_stall.hpp; first at
+// 612.8 s, where one bond at its strength held the steps short), and where the tries break no
+// bond still whole, the run ends at its peak: "no equilibrium" (exit 1), never a numerical
+// failure (measured: t = 720.73 s, 2P/(πDt) = 1.555 T, 37 bonds broken, the cascade the D/10
+// row of docs/dda.md's table of sizes gives at 1.56 T).
+TEST(BrazilianDisc, ACascadeOfBreaksPastThePeakEndsTheRunAtItsPeakInsteadOfFailingIt) {
   const fs::path scenario = edited_scenario(
       fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/verification/brazilian_disc.toml",
       "brazilian-cascade-" + std::to_string(::getpid()),
@@ -98,13 +151,17 @@ TEST(BrazilianDisc, ACascadeOfBreaksPastThePeakCutsTheStepInsteadOfFailingTheRun
   const fs::path out = fs::temp_directory_path() / ("hydrodda-brazilian-cascade-" + std::to_string(::getpid()));
   fs::remove_all(out);
   const auto result = run_program("-q run " + scenario.string() + " -o " + out.string() + " --threads 1");
-  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_EQ(result.exit_code, 1) << result.output;
   const auto summary = nlohmann::json::parse(std::ifstream(out / "summary.json"));
-  EXPECT_EQ(summary["status"], "ok") << summary.dump();
-  EXPECT_EQ(summary["iterations"], 810);
+  EXPECT_EQ(summary["status"], "no equilibrium") << summary["message"];
+  const std::string message = summary["message"];
+  EXPECT_NE(message.find("the load could not be raised past t = "), std::string::npos) << message;
+  EXPECT_EQ(message.find("singular"), std::string::npos) << message;
   const auto history = read_csv(out / "history.csv");
+  const double peak = std::stod(history.back()[column_of(history.front(), "time")]);
+  EXPECT_GT(brazilian_strength(peak) / kStrength, 1.5) << "the cascade at 1.56 T, t = " << peak;
   const std::size_t total = column_of(history.front(), "broken_bonds_total");
-  EXPECT_GT(std::stoi(history.back()[total]), 35) << "the cascade past 725 s";
+  EXPECT_GT(std::stoi(history.back()[total]), 30) << "the cascade by 725 s";
   fs::remove_all(out);
   fs::remove(scenario);
 }
