@@ -12,7 +12,7 @@ so that a step's CPU is the difference over the 19 steps after the first (the mo
 building, the first step's factorisation and the output left out).
 
 The cases (benchmarks/bonds/):
-  bonded_slab_10k    the 10 m slab in ~10^4 bonded Voronoi sub-blocks, 20 static steps
+  bonded_slab_10k    the 10 m slab in ~10^4 sub-blocks, Voronoi cells zoned, 20 static steps
   triangle_slab_10k  the same slab in ~10^4 bonded triangles, 20 static steps
   grid_slab_10k      the same slab cut into 100 x 100 ordinary blocks by two joint sets
   wall_100x100       the brick wall of shared/peers/brickwall.py 100 100 (10,001 blocks,

@@ -20,15 +20,20 @@
 namespace hydrodda::dda {
 
 void System::setup_bonds(const std::vector<BlockDefinition>& blocks, const std::vector<int>& broken_at_start) {
+  // Bonds keep their ids; zone face k (−2 − k in edge_bonds) takes the id after them all + k.
+  int breakable = 0;
+  for (const BlockDefinition& block : blocks)
+    for (int id : block.edge_bonds) breakable = std::max(breakable, id + 1);
   std::vector<std::array<BondSide, 2>> sides;
   std::vector<int> seen;  // per bond, the sides found
   edge_bonds_.assign(blocks.size(), {});
   for (std::size_t b = 0; b < blocks.size(); ++b) {
-    const std::vector<int>& bonds = blocks[b].edge_bonds;
+    std::vector<int> bonds = blocks[b].edge_bonds;
     if (bonds.empty()) continue;
     const std::string name = "DDA: block " + std::to_string(b) + ": ";
     if (bonds.size() != blocks[b].polygon.size()) throw std::invalid_argument(name + "edge_bonds needs one entry per edge");
     for (std::size_t e = 0; e < bonds.size(); ++e) {
+      if (bonds[e] <= -2) bonds[e] = breakable + (-2 - bonds[e]);
       const int id = bonds[e];
       if (id < 0) continue;
       if (static_cast<std::size_t>(id) >= sides.size()) {
@@ -41,7 +46,7 @@ void System::setup_bonds(const std::vector<BlockDefinition>& blocks, const std::
         throw std::invalid_argument(name + "bond " + std::to_string(id) + " on two edges of one block");
       sides[static_cast<std::size_t>(id)][static_cast<std::size_t>(count++)] = {static_cast<int>(b), static_cast<int>(e)};
     }
-    edge_bonds_[b] = bonds;
+    edge_bonds_[b] = std::move(bonds);
   }
   for (std::size_t id = 0; id < seen.size(); ++id)
     if (seen[id] != 2)
@@ -49,10 +54,11 @@ void System::setup_bonds(const std::vector<BlockDefinition>& blocks, const std::
                                   " edges, not on the two faces it joins");
   bond_sides_ = std::move(sides);
   bond_broken_.assign(bond_sides_.size(), 0);
+  breakable_bonds_ = breakable;
   for (int bond : broken_at_start) {
-    if (bond < 0 || static_cast<std::size_t>(bond) >= bond_sides_.size())
+    if (bond < 0 || bond >= breakable_bonds_)
       throw std::invalid_argument("DDA: broken_bonds names bond " + std::to_string(bond) + ", and there are " +
-                                  std::to_string(bond_sides_.size()));
+                                  std::to_string(breakable_bonds_) + " that may break");
     bond_broken_[static_cast<std::size_t>(bond)] = 1;
   }
   broken_at_start_ = broken_at_start;
@@ -85,7 +91,7 @@ bool System::break_overloaded_bonds(const Eigen::VectorXd& d) {
     return Vector3(b.stress + elasticity_[static_cast<std::size_t>(b.material)] * d.segment<3>(6 * b.dof + 3));
   };
   bool any = false;
-  for (std::size_t bond = 0; bond < bond_sides_.size(); ++bond) {
+  for (std::size_t bond = 0; bond < static_cast<std::size_t>(breakable_bonds_); ++bond) {
     if (bond_broken_[bond] != 0) continue;
     const std::optional<Vector3> a = stress_at_end(bond_sides_[bond][0].block);
     const std::optional<Vector3> b = stress_at_end(bond_sides_[bond][1].block);

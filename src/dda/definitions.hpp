@@ -43,7 +43,9 @@ struct BlockDefinition {
   // Per edge: the bond (intact rock) it shares with an edge of a neighbouring sub-block, the
   // same id on both sides, or −1; empty: no bonded edge. A bonded face carries tension up to
   // its joint type's tensile_strength and shear up to c + σn tan φ; once it fails it is a
-  // joint of that type with neither tension nor cohesion (docs/dda.md, "Bonds").
+  // joint of that type with neither tension nor cohesion (docs/dda.md, "Bonds"). −2 − k: zone
+  // face k, a face within a Voronoi cell zoned into triangles (UDEC's deformable Voronoi
+  // blocks), locked as a bond's face and never broken; not among System::bond_count().
   std::vector<int> edge_bonds{};
 };
 

@@ -236,7 +236,7 @@ class System {
 
   // Bonds (BlockDefinition::edge_bonds; dda/bonds.cpp): how many, which broke and when, and a
   // bond's face as it is now (the first block's edge that carries it).
-  int bond_count() const { return static_cast<int>(bond_sides_.size()); }
+  int bond_count() const { return breakable_bonds_; }  // zone faces (BlockDefinition::edge_bonds) not among them
   bool is_bond_broken(int bond) const { return bond_broken_[static_cast<std::size_t>(bond)] == 1; }
   // A bond of a type with a fracture energy, past its strength and not yet broken: its faces
   // held by a cohesive traction (dda/softening_bonds.cpp); its contacts a joint's.
@@ -464,6 +464,7 @@ class System {
   std::vector<std::array<BondSide, 2>> bond_sides_;  // by bond id
   std::vector<std::vector<int>> edge_bonds_;          // per block, per edge: the bond; empty: none
   std::vector<char> bond_broken_;                     // by bond id: 0 intact, 1 broken, 2 softening
+  int breakable_bonds_ = 0;                           // the ids below it; from it on, the zone faces
   std::vector<int> broken_at_start_;                  // ModelDefinition::broken_bonds
   std::vector<JointStrength> broken_joints_;          // by type: tan φ only
   std::vector<std::pair<int, BondFailure>> pending_breaks_;  // broken in the step under way

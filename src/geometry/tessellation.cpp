@@ -236,6 +236,7 @@ Tessellation fan_into_triangles(const std::vector<LabelledPolygon>& cells) {
     for (int k = 0; k < n; ++k) {
       const int source = cell[static_cast<std::size_t>(k)].source;
       out.cells.push_back({points[static_cast<std::size_t>(k)], points[static_cast<std::size_t>((k + 1) % n)], middle});
+      out.cell_of.push_back(static_cast<int>(c));
       out.edge_sources.push_back({source < 0 ? source
                                              : facing(source, static_cast<int>(c), points[static_cast<std::size_t>(k)],
                                                       points[static_cast<std::size_t>((k + 1) % n)]),
@@ -265,6 +266,7 @@ Tessellation to_tessellation(const std::vector<LabelledPolygon>& cells, Tessella
     }
     out.cells.push_back(std::move(p));
     out.edge_sources.push_back(std::move(sources));
+    out.cell_of.push_back(static_cast<int>(out.cell_of.size()));
   }
   return out;
 }

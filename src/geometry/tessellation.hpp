@@ -66,9 +66,11 @@ std::vector<ReflexCornerSeeds> make_reflex_corner_seeds(std::span<const Point> p
 // (vertex k → k + 1), where the edge lies: >= 0, the sub-block on its other side (a bond);
 // < 0, on edge −1 − value of the tessellated polygon. Two sub-blocks beside a reflex corner
 // may share two faces: the one facing an edge is that with the same ends, run the other way.
+// `cell_of`: per sub-block, the Voronoi cell it is, or (triangles) the one it was fanned from.
 struct Tessellation {
   std::vector<Polygon> cells;
   std::vector<std::vector<int>> edge_sources;
+  std::vector<int> cell_of;
 };
 
 // The Voronoi cells of `seeds` (inside `polygon`) clipped to the simple counter-clockwise

@@ -46,10 +46,11 @@ std::string describe_load_stall(const scenario::Scenario& s, const LoadStallWatc
   return fmt::format(
       "the load could not be raised past t = {:g} s ({}{}): its last {} steps, {} of them kept only after cuts, were "
       "short (to {:.3g} s at the shortest) and together advanced the time from {:g} s by {:.3g} s, against "
-      "mechanics.time_step = {:g} s; their cut tries broke up to {} bonds in a try, none of them still whole{}: the "
+      "mechanics.time_step = {:g} s; their cut tries broke up to {} in a try, none of them still whole{}: the "
       "rock holds no more load, and t = {:g} s is the largest load it held (its peak)",
       t, describe_driving_load(s, t), reactions.empty() ? "" : "; reactions " + reactions, kStalledSteps, stall.cut,
-      stall.shortest, stall.from, stall.advanced, s.mechanics->time_step, stall.most_breaks, before, t);
+      stall.shortest, stall.from, stall.advanced, s.mechanics->time_step,
+      stall.most_breaks == 1 ? std::string("1 bond") : fmt::format("{} bonds", stall.most_breaks), before, t);
 }
 
 }  // namespace hydrodda::run

@@ -176,6 +176,7 @@ void tessellate_blocks(const scenario::Scenario& s, ModelGeometry& model) {
   std::vector<Polygon> blocks;
   std::vector<std::vector<int>> edge_fractures, edge_bonds;
   std::vector<int> bond_types;
+  int zone_faces = 0;
   int tessellated = 0;
   for (std::size_t b = 0; b < net.blocks.size(); ++b) {
     const Polygon& block = net.blocks[b];
@@ -193,14 +194,19 @@ void tessellate_blocks(const scenario::Scenario& s, ModelGeometry& model) {
     const scenario::TessellationDefinition& t = g.tessellations[k];
     geometry::Tessellation parts;
     try {
-      parts = geometry::tessellate(block, seeds, size, t.kind);
+      // Voronoi cells are zoned: fanned into triangles as `triangles` are, their faces within a
+      // cell zone faces that hold for good (a uniform-strain polygon bonded along its six or so
+      // faces locks, docs/dda.md, "Bonds").
+      parts = geometry::tessellate(block, seeds, size, geometry::TessellationKind::triangles);
     } catch (const std::invalid_argument& e) {
       throw scenario::ScenarioError({{s.file.string(), t.line, "geometry.tessellate",
                                       fmt::format("block {} (centroid ({:g}, {:g})): {}", b, c.x, c.y, e.what())}});
     }
     ++tessellated;
     const int type = std::max(0, s.joint_type_index(t.joint.name));
-    // Each face between two sub-blocks once: the bond id given by the lower-numbered side.
+    // Each face between two sub-blocks once: the bond id given by the lower-numbered side; a
+    // zone face k is −2 − k (dda::BlockDefinition::edge_bonds).
+    const bool zoned = t.kind == geometry::TessellationKind::voronoi;
     std::vector<std::vector<int>> ids(parts.cells.size());
     for (std::size_t p = 0; p < parts.cells.size(); ++p) ids[p].assign(parts.cells[p].size(), -1);
     for (std::size_t p = 0; p < parts.cells.size(); ++p)
@@ -208,8 +214,10 @@ void tessellate_blocks(const scenario::Scenario& s, ModelGeometry& model) {
         const int other = parts.edge_sources[p][e];
         if (other <= static_cast<int>(p)) continue;
         const std::size_t f = face_back(parts, p, e);
-        ids[p][e] = ids[static_cast<std::size_t>(other)][f] = static_cast<int>(bond_types.size());
-        bond_types.push_back(type);
+        const bool zone = zoned && parts.cell_of[p] == parts.cell_of[static_cast<std::size_t>(other)];
+        ids[p][e] = ids[static_cast<std::size_t>(other)][f] =
+            zone ? -2 - zone_faces++ : static_cast<int>(bond_types.size());
+        if (!zone) bond_types.push_back(type);
       }
     for (std::size_t p = 0; p < parts.cells.size(); ++p) {
       std::vector<int> fractures;
@@ -226,6 +234,7 @@ void tessellate_blocks(const scenario::Scenario& s, ModelGeometry& model) {
   model.bond_types = std::move(bond_types);
   model.summary += fmt::format(", {} of them tessellated into {} sub-blocks with {} bonds", tessellated,
                                net.blocks.size(), model.bond_types.size());
+  if (zone_faces > 0) model.summary += fmt::format(" ({} faces within zoned Voronoi cells besides)", zone_faces);
 }
 
 geometry::BlockNetwork network_with_bond_faces(const ModelGeometry& model) {
@@ -236,7 +245,7 @@ geometry::BlockNetwork network_with_bond_faces(const ModelGeometry& model) {
     const Polygon& block = network.blocks[b];
     for (std::size_t e = 0; e < model.edge_bonds[b].size(); ++e) {
       const int bond = model.edge_bonds[b][e];
-      if (bond < 0) continue;
+      if (bond < 0) continue;  // a zone face (−2 − k) is no flow path
       network.edge_fractures[b][e] = first + bond;
       if (listed[static_cast<std::size_t>(bond)]) continue;
       listed[static_cast<std::size_t>(bond)] = 1;

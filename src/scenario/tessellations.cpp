@@ -12,8 +12,8 @@ namespace hydrodda::scenario {
 double estimate_sub_blocks(const TessellationDefinition& t, const Polygon& domain) {
   const Polygon& region = t.region.empty() ? domain : t.region;
   if (region.size() < 3 || !(t.size > 0.0)) return 0.0;
-  const double cells = geometry::area(region) / (t.size * t.size);
-  return t.kind == geometry::TessellationKind::triangles ? 6.0 * cells : cells;
+  // Some six triangles a cell, of either kind (a Voronoi cell is zoned into its triangles).
+  return 6.0 * geometry::area(region) / (t.size * t.size);
 }
 
 namespace {
@@ -85,8 +85,8 @@ void read_tessellations(ReadContext& ctx, const TableView& g, GeometryDefinition
   }
   if (total > kMaxSubBlocks)
     ctx.error(last_line, "geometry.tessellate.size",
-              fmt::format("the tessellations would make some {:.3g} sub-blocks (each region's area over size², six "
-                          "times that for triangles); at most {:g} fit this machine's memory: make size larger or the "
+              fmt::format("the tessellations would make some {:.3g} sub-blocks (six for each region's area over size²: "
+                          "a Voronoi cell is zoned into triangles as the triangles' kind cuts it); at most {:g} fit this machine's memory: make size larger or the "
                           "region smaller",
                           total, kMaxSubBlocks));
 }

@@ -14,8 +14,8 @@ inline constexpr double kMaxSubBlocks = 100'000;
 // Every [[geometry.tessellate]] table of `geometry_table`, checked, into geometry.tessellations.
 void read_tessellations(ReadContext& context, const TableView& geometry_table, GeometryDefinition& geometry);
 
-// The sub-blocks a tessellation makes, roughly: its region's area over size² (Voronoi cells),
-// six times that for triangles (a Voronoi cell has six faces on average).
+// The sub-blocks a tessellation makes, roughly: six times its region's area over size² (a
+// Voronoi cell has six faces on average, and either kind cuts it into a triangle on each).
 double estimate_sub_blocks(const TessellationDefinition& tessellation, const Polygon& domain);
 
 // Cross-section checks: a domain to cut, the bonds' joint type defined and without a fracture

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 
@@ -83,6 +84,34 @@ TEST(Bonds, ABondedFaceBreaksInShearAtItsCohesionNotBefore) {
 
 // The bonded face holds under 0.9 T L and breaks under 1.1 T L; the break survives export
 // and import into a system built afresh (a checkpoint's round trip).
+// A zone face (edge_bonds −2 − k: a face within a zoned Voronoi cell) is locked as a bond's and
+// never breaks: the face of the direct tension case above, pulled by 1.5 T L for 20 steps, holds
+// the block to its base (its centroid rises by less than its whole stretch, 1.5 T L / E = 15 µm,
+// under E = 10 GPa; on a bond, which breaks, by more than ten times that), and the system has
+// no bond.
+TEST(Bonds, AZoneFaceHoldsPastAnyStrengthAndIsNoBond) {
+  const auto pulled = [](bool zone) {
+    ModelDefinition model = make_bonded_block({30.0, 1.0e9, kStrength});
+    if (zone) {
+      model.blocks[0].edge_bonds = {-1, -1, -2, -1};
+      model.blocks[1].edge_bonds = {-2, -1, -1, -1};
+    }
+    System system(model);
+    EXPECT_EQ(system.bond_count(), zone ? 0 : 1);
+    system.step();
+    load_block(system, {0.0, 1.5 * kStrength}, 2, 3);
+    for (int k = 0; k < 20; ++k) system.step();
+    EXPECT_EQ(system.bond_breaks().size(), zone ? 0u : 1u);
+    return system.displacement(1).y;
+  };
+  const double stretch = 1.5 * kStrength * 1.0 / 1.0e10;  // m
+  const double held = pulled(true);
+  const double freed = pulled(false);
+  EXPECT_GT(held, 0.0);
+  EXPECT_LT(held, stretch) << "held " << held << " m";      // measured 6.4 µm
+  EXPECT_GT(freed, 10.0 * stretch) << "freed " << freed << " m";  // measured 0.6 mm
+}
+
 TEST(Bonds, BrokenBondsCarryThroughExportAndImport) {
   System system(make_bonded_block({30.0, 1.0e9, kStrength}));
   system.step();

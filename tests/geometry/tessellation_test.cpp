@@ -86,6 +86,30 @@ TEST(Tessellation, TrianglesPartitionTheSquareAndShareTheirFaces) {
   expect_partition(kSquare, t);
 }
 
+// Each triangle names the Voronoi cell it was fanned from: one triangle per edge of that cell,
+// its first edge the cell's own, the two spokes to triangles of the same cell; a Voronoi cell
+// names itself.
+TEST(Tessellation, EachTriangleNamesTheCellItWasFannedFrom) {
+  const Tessellation cells = tessellate(kSquare, TessellationKind::voronoi);
+  const Tessellation triangles = tessellate(kSquare, TessellationKind::triangles);
+  ASSERT_EQ(cells.cell_of.size(), cells.cells.size());
+  for (std::size_t c = 0; c < cells.cells.size(); ++c) EXPECT_EQ(cells.cell_of[c], static_cast<int>(c));
+  ASSERT_EQ(triangles.cell_of.size(), triangles.cells.size());
+  std::vector<std::size_t> count(cells.cells.size(), 0);
+  for (std::size_t t = 0; t < triangles.cells.size(); ++t) {
+    const int c = triangles.cell_of[t];
+    ASSERT_GE(c, 0);
+    ASSERT_LT(c, static_cast<int>(cells.cells.size()));
+    ++count[static_cast<std::size_t>(c)];
+    for (std::size_t e : {1u, 2u}) {
+      const int across = triangles.edge_sources[t][e];
+      ASSERT_GE(across, 0) << "triangle " << t << ": a spoke on the outline";
+      EXPECT_EQ(triangles.cell_of[static_cast<std::size_t>(across)], c) << "triangle " << t << ", edge " << e;
+    }
+  }
+  for (std::size_t c = 0; c < cells.cells.size(); ++c) EXPECT_EQ(count[c], cells.cells[c].size()) << "cell " << c;
+}
+
 TEST(Tessellation, AConvexPolygonOfAnyShapeIsPartitioned) {
   const Polygon hexagon{{0.0, 0.0}, {3.0, -1.0}, {5.0, 1.0}, {4.5, 3.0}, {1.0, 3.5}, {-1.0, 2.0}};
   for (std::uint64_t seed : {1u, 2u, 3u, 4u}) {

@@ -165,13 +165,13 @@ TEST(TessellationKeys, TooManySubBlocksAreRefusedNamingTheKeysThatSetThem) {
 [[geometry.tessellate]]
 size = 0.005
 )");
-  // 8 m² / 0.005² = 320,000 cells.
-  EXPECT_TRUE(has_error(errors, "geometry.tessellate.size: the tessellations would make some 3.2e+05 sub-blocks"))
+  // 8 m² / 0.005² = 320,000 cells, zoned into some 1.92 million triangles.
+  EXPECT_TRUE(has_error(errors, "geometry.tessellate.size: the tessellations would make some 1.92e+06 sub-blocks"))
       << dump(errors);
   TessellationDefinition t;
   t.size = 0.5;
   const Polygon domain{{0.0, 0.0}, {4.0, 0.0}, {4.0, 2.0}, {0.0, 2.0}};
-  EXPECT_DOUBLE_EQ(estimate_sub_blocks(t, domain), 32.0);
+  EXPECT_DOUBLE_EQ(estimate_sub_blocks(t, domain), 192.0);  // Voronoi cells, zoned
   t.kind = geometry::TessellationKind::triangles;
   EXPECT_DOUBLE_EQ(estimate_sub_blocks(t, domain), 192.0);
 }
