@@ -85,9 +85,9 @@ void read_tessellations(ReadContext& ctx, const TableView& g, GeometryDefinition
   }
   if (total > kMaxSubBlocks)
     ctx.error(last_line, "geometry.tessellate.size",
-              fmt::format("the tessellations would make some {:.3g} sub-blocks (six for each region's area over size²: "
-                          "a Voronoi cell is zoned into triangles as the triangles' kind cuts it); at most {:g} fit this machine's memory: make size larger or the "
-                          "region smaller",
+              fmt::format("the tessellations would make some {:.3g} sub-blocks (six for each region's area over "
+                          "size²: a Voronoi cell is zoned into triangles as the triangles' kind cuts it); at most "
+                          "{:g} fit this machine's memory: make size larger or the region smaller",
                           total, kMaxSubBlocks));
 }
 
