@@ -340,6 +340,33 @@ void System::drop_second_contacts_at_intact_face_ends(ContactCandidates& candida
   candidates.resize(kept);
 }
 
+// A corner of another block standing on the face of intact rock at a node, where the face of one
+// sub-block meets that of the next across their bond, touches the first sub-block's edge while
+// it stands a hair over that edge and is past the edge's end (the entrance-edge rule,
+// contact_detection.cpp) once it stands a hair beyond the node: contact, then none, then
+// contact, as each state moved it back across (a bed's corner where a steep joint meets the
+// notched seal through intact rock, from 953 m over hydrostatic: 1.5e-7 m a step, never at rest;
+// docs/studies/2026-11-30-notched-seal.md). The node is no corner of the rock: beyond it lies
+// the next sub-block, bonded to the first. So a candidate a hair past a sub-block's corner that
+// is a corner of intact rock (is_corner_of_intact_rock) keeps its contact while it was closed
+// at the last step: a hysteresis in the contact's existence, within the corner tie of the node
+// and the penetration tolerance behind the edge's line (ContactCandidate::kept_if_closed).
+void System::drop_corner_candidates_not_kept(ContactCandidates& candidates) const {
+  const auto not_kept = [&](const ContactCandidate& c) {
+    if (!c.kept_if_closed) return false;
+    const Polygon& edge_block = blocks_[static_cast<std::size_t>(c.key.block_j)].polygon;
+    const Point p = blocks_[static_cast<std::size_t>(c.key.block_i)].polygon[static_cast<std::size_t>(c.key.vertex)];
+    const auto e = static_cast<std::size_t>(c.key.edge);
+    const std::size_t f = (e + 1) % edge_block.size();
+    const int corner = static_cast<int>(geometry::distance(p, edge_block[e]) <= geometry::distance(p, edge_block[f]) ? e : f);
+    if (!is_corner_of_intact_rock(c.key.block_j, corner)) return true;
+    const auto record = std::lower_bound(records_.begin(), records_.end(), c.key,
+                                         [](const auto& r, const ContactKey& key) { return r.first < key; });
+    return record == records_.end() || record->first != c.key || record->second.state == ContactState::open;
+  };
+  candidates.erase(std::remove_if(candidates.begin(), candidates.end(), not_kept), candidates.end());
+}
+
 int System::bond_joint_type(int bond) const {
   const BondSide& side = bond_sides_.at(static_cast<std::size_t>(bond))[0];
   const std::vector<int>& types = edge_joints_[static_cast<std::size_t>(side.block)];

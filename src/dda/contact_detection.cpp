@@ -131,7 +131,7 @@ double compute_tributary_length(Point p, Point before, Point after, Point a, Poi
 // `distance` of the edge as a segment: within it of the line, and past an end within it of
 // that end.
 void test_vertex_edge(std::span<const Point> va, int a, int v, std::span<const Point> eb, int b, int e,
-                      double distance, ContactCandidates& out) {
+                      double distance, double kept_depth, ContactCandidates& out) {
   const int nv = static_cast<int>(va.size());
   const int ne = static_cast<int>(eb.size());
   const Point p = va[v];
@@ -164,7 +164,10 @@ void test_vertex_edge(std::span<const Point> va, int a, int v, std::span<const P
   // Corners that coincide (side-by-side blocks) leave both gaps equal up to the motion of a
   // step; there the edge that carries a face contact wins (by more than round-off), then the
   // lower index, so the choice (and the contact's key and state) does not flip on round-off
-  // from step to step.
+  // from step to step. A vertex past the corner by less than the tie, and behind the edge's
+  // line by no more than `kept_depth`, is a candidate marked kept_if_closed (the caller keeps
+  // it or not by the contact's last state).
+  bool kept_if_closed = false;
   if (t < tie / length || t > 1 - tie / length) {
     const bool at_start = t < 0.5;
     const int other = at_start ? (e + ne - 1) % ne : (e + 1) % ne;
@@ -189,8 +192,12 @@ void test_vertex_edge(std::span<const Point> va, int a, int v, std::span<const P
         const Point into = at_start ? other_a : e0;
         const Point out_of = at_start ? e1 : other_b;
         const bool convex = cross(corner - into, out_of - corner) > 0.0;
-        if (convex && is_past_the_corner(gap, other_gap, share_tie)) return;
-        if (!(convex && is_past_the_corner(other_gap, gap, share_tie)) && other < e) return;
+        if (convex && is_past_the_corner(gap, other_gap, share_tie)) {
+          if (geometry::distance(p, corner) > tie || -gap > kept_depth) return;
+          kept_if_closed = true;
+        } else if (!(convex && is_past_the_corner(other_gap, gap, share_tie)) && other < e) {
+          return;
+        }
       }
     }
     if (t < 0 || t > 1) {
@@ -202,6 +209,7 @@ void test_vertex_edge(std::span<const Point> va, int a, int v, std::span<const P
   c.key = {a, v, b, e};
   c.edge_ratio = std::clamp(t, 0.0, 1.0);
   c.penetration = -gap;
+  c.kept_if_closed = kept_if_closed;
   out.push_back(c);
 }
 
@@ -271,13 +279,13 @@ std::size_t find_vertex_edge_combinations(std::span<const Point> polygon_a, std:
 
 void find_pair_contacts(std::span<const Point> polygon_a, int a, std::span<const Point> polygon_b, int b,
                         double distance, std::span<const VertexEdge> combinations, std::size_t a_on_b,
-                        ContactCandidates& out) {
+                        ContactCandidates& out, double kept_depth) {
   const std::size_t first = out.size();
   for (std::size_t k = 0; k < a_on_b; ++k)
-    test_vertex_edge(polygon_a, a, combinations[k].vertex, polygon_b, b, combinations[k].edge, distance, out);
+    test_vertex_edge(polygon_a, a, combinations[k].vertex, polygon_b, b, combinations[k].edge, distance, kept_depth, out);
   const std::size_t second = out.size();
   for (std::size_t k = a_on_b; k < combinations.size(); ++k)
-    test_vertex_edge(polygon_b, b, combinations[k].vertex, polygon_a, a, combinations[k].edge, distance, out);
+    test_vertex_edge(polygon_b, b, combinations[k].vertex, polygon_a, a, combinations[k].edge, distance, kept_depth, out);
   // A corner of b on a corner of a already in contact is the same contact point seen from the
   // other block: an edge–edge contact is one vertex–edge contact at each end of the overlap
   // (Shi 1988, §4.3). Counted twice it would double the stiffness there and the cohesion and
@@ -286,19 +294,19 @@ void find_pair_contacts(std::span<const Point> polygon_a, int a, std::span<const
   const auto same_corner = [&](const ContactCandidate& from_b) {
     const Point p = polygon_b[from_b.key.vertex];
     for (std::size_t k = first; k < second; ++k)
-      if (geometry::distance(polygon_a[out[k].key.vertex], p) <= tie) return true;
+      if (!out[k].kept_if_closed && geometry::distance(polygon_a[out[k].key.vertex], p) <= tie) return true;
     return false;
   };
   out.erase(std::remove_if(out.begin() + static_cast<std::ptrdiff_t>(second), out.end(), same_corner), out.end());
 }
 
 void find_pair_contacts(std::span<const Point> polygon_a, int a, std::span<const Point> polygon_b, int b,
-                        double distance, ContactCandidates& out) {
+                        double distance, ContactCandidates& out, double kept_depth) {
   thread_local std::vector<VertexEdge> combinations;
   combinations.clear();
   const std::size_t a_on_b =
       find_vertex_edge_combinations(polygon_a, polygon_b, contact_reach(distance), combinations);
-  find_pair_contacts(polygon_a, a, polygon_b, b, distance, combinations, a_on_b, out);
+  find_pair_contacts(polygon_a, a, polygon_b, b, distance, combinations, a_on_b, out, kept_depth);
 }
 
 }  // namespace hydrodda::dda

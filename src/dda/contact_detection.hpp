@@ -5,6 +5,7 @@
 
 #include <array>
 #include <compare>
+#include <limits>
 #include <span>
 #include <utility>
 #include <vector>
@@ -28,6 +29,11 @@ struct ContactCandidate {
   ContactKey key;
   double edge_ratio = 0.0;   // projection of the vertex on the edge, 0 at its first vertex
   double penetration = 0.0;  // > 0 inside block_j, < 0 a gap
+  // A vertex a hair past a corner of block_j (within the corner tie of it, and behind this
+  // edge's line by no more than find_pair_contacts' kept_depth): no contact by the
+  // entrance-edge rule, but one its caller may keep while it stays closed (a hysteresis in the
+  // contact's existence: System::drop_corner_candidates_not_kept).
+  bool kept_if_closed = false;
 };
 
 using ContactCandidates = std::vector<ContactCandidate>;
@@ -81,15 +87,20 @@ std::size_t find_vertex_edge_combinations(std::span<const geometry::Point> polyg
                                           std::span<const geometry::Point> polygon_b, double reach,
                                           std::vector<VertexEdge>& out);
 
+// No candidate marked kept_if_closed (find_pair_contacts' kept_depth).
+inline constexpr double kNoCornerMemory = -std::numeric_limits<double>::infinity();
+
 // Vertex–edge contacts of the pair (a, b), both ways, within `distance`, appended to `out`:
 // among all the pair's combinations, or among those of `combinations` (its first `a_on_b`
 // a's vertices on b's edges, the rest b's on a's). Given every combination within
-// contact_reach(distance), the two find the same contacts.
+// contact_reach(distance), the two find the same contacts. A vertex a hair past a corner, no
+// deeper behind the edge's line than `kept_depth`, is a candidate marked kept_if_closed.
 void find_pair_contacts(std::span<const geometry::Point> polygon_a, int a,
                         std::span<const geometry::Point> polygon_b, int b, double distance,
-                        ContactCandidates& out);
+                        ContactCandidates& out, double kept_depth = kNoCornerMemory);
 void find_pair_contacts(std::span<const geometry::Point> polygon_a, int a,
                         std::span<const geometry::Point> polygon_b, int b, double distance,
-                        std::span<const VertexEdge> combinations, std::size_t a_on_b, ContactCandidates& out);
+                        std::span<const VertexEdge> combinations, std::size_t a_on_b, ContactCandidates& out,
+                        double kept_depth = kNoCornerMemory);
 
 }  // namespace hydrodda::dda

@@ -17,7 +17,8 @@ bool worth_two_threads(std::size_t pairs) { return pairs >= 1000; }
 
 }  // namespace
 
-ContactSearch::ContactSearch(double distance, double skin) : distance_(distance), skin_(skin) {
+ContactSearch::ContactSearch(double distance, double skin, double kept_depth)
+    : distance_(distance), skin_(skin), kept_depth_(kept_depth) {
   if (!(distance >= 0.0) || !(skin >= 0.0))
     throw std::invalid_argument("contact search: the contact distance and the skin must be ≥ 0");
 }
@@ -56,7 +57,7 @@ void ContactSearch::find(std::span<const std::span<const geometry::Point>> polyg
     for (const ListedPair& p : half.pairs) {
       const std::span<const VertexEdge> combinations(half.combinations.data() + p.first, p.last - p.first);
       find_pair_contacts(polygons[p.a], p.a, polygons[p.b], p.b, distance_, combinations, p.middle - p.first,
-                         half.found);
+                         half.found, kept_depth_);
     }
     half.sort_found();
   });

@@ -30,8 +30,8 @@ namespace hydrodda::dda {
 
 class ContactSearch {
  public:
-  // Contacts within `distance`, listed with `skin` (≥ 0) more.
-  ContactSearch(double distance, double skin);
+  // Contacts within `distance`, listed with `skin` (≥ 0) more; `kept_depth` as find_pair_contacts'.
+  ContactSearch(double distance, double skin, double kept_depth = kNoCornerMemory);
 
   // The candidates among `polygons` as they are now, sorted by key, into `out` (its old
   // contents replaced). fixed[i]: polygon i never moves; pairs of two such are left out. The
@@ -69,6 +69,7 @@ class ContactSearch {
 
   double distance_;
   double skin_;
+  double kept_depth_;
   bool listed_ = false;
   double motion_ = 0.0;
   long list_count_ = 0;

@@ -135,8 +135,11 @@ System::System(ModelDefinition def, std::unique_ptr<LinearSolver> solver)
   // A skin of a fifth of the contact distance keeps the lists for many steps of a slow run
   // and adds little to what each step tests (a wall of 1,601 blocks: 19,000 combinations
   // within the contact distance of 9,400 contacts).
+  // Bonded rock keeps a corner's contact at a node of its face while closed, within the
+  // penetration tolerance (drop_corner_candidates_not_kept); other models have no such candidate.
   contact_search_ = ContactSearch(contact_distance_,
-                                  settings_.contact_skin >= 0 ? settings_.contact_skin : 0.2 * contact_distance_);
+                                  settings_.contact_skin >= 0 ? settings_.contact_skin : 0.2 * contact_distance_,
+                                  bond_sides_.empty() ? kNoCornerMemory : penetration_tolerance_);
   for (const Block& b : blocks_) detection_.fixed.push_back(b.dof < 0);
   if (many_blocks()) numerics::start_threads();
 }
@@ -214,6 +217,7 @@ void System::detect_contacts() {
   contact_search_.find(buffers.polygons, buffers.fixed, candidates);
   drop_corner_contacts_within_intact_rock(candidates);
   drop_second_contacts_at_intact_face_ends(candidates);
+  drop_corner_candidates_not_kept(candidates);
   resize_for_overwrite(active_, candidates.size());
   // The linearisation in chunks of contacts, over the threads: each contact writes only its own.
   numerics::for_each_chunk(many_contacts_to_linearise(), candidates.size(), kContactChunk,

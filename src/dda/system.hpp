@@ -333,6 +333,9 @@ class System {
   // bonds.cpp: drops, at an end of an intact bonded face whose two corners have parted along it,
   // the contact of the corner past the other's edge where the other's lies within its own.
   void drop_second_contacts_at_intact_face_ends(ContactCandidates& candidates) const;
+  // bonds.cpp: of the candidates a hair past a corner (ContactCandidate::kept_if_closed), keeps
+  // those at a node of intact rock whose contact was closed at the last step.
+  void drop_corner_candidates_not_kept(ContactCandidates& candidates) const;
   // A contact that touches at the start takes the initial stress's force across its faces: its
   // multiplier the normal force, its shear reference moved so that its spring holds the shear.
   void preload_contact(ActiveContact& c) const;

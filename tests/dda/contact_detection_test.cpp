@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "test_models.hpp"
 
@@ -165,6 +166,43 @@ TEST(ContactDetection, ACornerPastTheDiagonalCornerIsNoPenetration) {
                                       << " of block " << c.key.block_i << " on edge " << c.key.edge << " reads "
                                       << c.penetration << " m deep";
     }
+  }
+}
+
+// A corner standing a hair past another block's corner, on the line of that block's face: the
+// bed's corner where a steep joint meets the notched seal through intact rock stood 1.5e-7 m
+// beyond a node of the rock's face and 8.7e-8 m below its line, and the entrance-edge rule gave
+// it a contact with the face a hair before the node and none a hair past it. Without a depth to
+// keep, no candidate on that face (the rule as it was); with one, a candidate marked
+// kept_if_closed, for the caller to keep by the contact's last state; none past the corner tie
+// (1e-3 of the contact distance, here 1e-5 m) nor deeper behind the line than the depth.
+TEST(ContactDetection, ACornerAHairPastACornerOnItsFaceIsACandidateKeptOnlyIfClosed) {
+  const Polygon rock = make_rectangle(0, -1, 1, 0);  // edge 2 its top face, from (1, 0) to the corner (0, 0)
+  const auto bed = [](double past, double below) {
+    // Counter-clockwise; vertex 1 its corner, its bottom face running left along y = -below.
+    return Polygon{{-2, -below}, {-past, -below}, {0.5, 3}, {-2, 3}};
+  };
+  const auto on_top_face = [&](const Polygon& above, double kept_depth) {
+    ContactCandidates found;
+    // The bed first: a's corners are kept where b's coincide with them (CoincidingCornersCountTheFaceOnce).
+    find_pair_contacts(above, 0, rock, 1, 0.01, found, kept_depth);
+    std::vector<ContactCandidate> on_top;
+    for (const ContactCandidate& c : found)
+      if (c.key.block_i == 0 && c.key.vertex == 1 && c.key.block_j == 1 && c.key.edge == 2) on_top.push_back(c);
+    return on_top;
+  };
+  EXPECT_TRUE(on_top_face(bed(1.5e-7, 8.7e-8), kNoCornerMemory).empty());
+  const auto kept = on_top_face(bed(1.5e-7, 8.7e-8), 1e-7);
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_TRUE(kept[0].kept_if_closed);
+  EXPECT_NEAR(kept[0].penetration, 8.7e-8, 1e-15);
+  EXPECT_TRUE(on_top_face(bed(2e-5, 8.7e-8), 1e-7).empty());   // past the tie: beyond the node
+  EXPECT_TRUE(on_top_face(bed(1.5e-7, 2e-7), 1e-7).empty());   // deeper than the depth kept
+  // A hair before the node, over the face: a contact of its own, whatever the depth.
+  for (double depth : {kNoCornerMemory, 1e-7}) {
+    const auto over = on_top_face(bed(-1.5e-7, 8.7e-8), depth);
+    ASSERT_EQ(over.size(), 1u);
+    EXPECT_FALSE(over[0].kept_if_closed);
   }
 }
 

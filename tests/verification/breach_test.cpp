@@ -167,3 +167,34 @@ TEST(Breach, BracketsTheLiftOffOfTheLayeredFaultedSealWithinThreePercent) {
     }
   fs::remove_all(out);
 }
+
+// The seal through intact rock as shipped (scenarios/examples/seal_through_intact_rock.toml,
+// bonded triangles of 0.5 m, docs/tutorial_intact_seal.md): no bond breaks before it lifts off.
+// Hand estimate of lift-off: the overpressure at the seal's base (y = 2 m) reaches the
+// effective vertical stress there, the buoyant overburden's 13.734 MPa on the top and the
+// buoyant weight of the 8 m above, 1400 × 9.81 × 8 = 0.110 MPa: σ'v = 13.844 MPa, H* = σ'v /
+// (ρ_w g) = 1,411.2 m of overpressure head. The bracket lies within 3% of H*, every step below
+// it held and the first above it threw the seal (measured: [1,400, 1,412.5] m, −0.8% and
+// +0.09%, "no equilibrium" at 1,412.5 m). The program before the hysteresis of a corner at a
+// node of the rock's face (docs/dda.md, "Contacts") came to no rest from 1,375 m.
+TEST(Breach, BracketsTheLiftOffOfTheSealThroughIntactRockWithinThreePercent) {
+  const fs::path seal = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/seal_through_intact_rock.toml";
+  const fs::path out = fresh_dir("hydrodda-breach-intact");
+  constexpr double kLiftOff = 13.734e6 / 9810.0 + 1400.0 * 8.0 / 1000.0;  // m
+  const auto result = run_program("breach " + seal.string() +
+                                  " --vary 'flow.boundary[0].head' --from 1300 --to 1500 --steps 2 --tolerance 0.01"
+                                  " --threads 1 -o " + out.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const nlohmann::json breach = nlohmann::json::parse(std::ifstream(out / "breach.json"));
+  const double held = breach["held"].get<double>(), broken = breach["broken"].get<double>();
+  EXPECT_GE(held, 0.97 * kLiftOff);
+  EXPECT_LE(broken, 1.03 * kLiftOff);
+  EXPECT_EQ(breach["broken_status"].get<std::string>(), "no equilibrium");
+  EXPECT_EQ(breach["unsettled_held"], 0);
+  const auto rows = read_csv(out / "breach.csv");
+  for (std::size_t i = 1; i < rows.size(); ++i)
+    if (std::stod(rows[i][1]) <= held) {
+      EXPECT_EQ(rows[i][3], "held") << rows[i][1];
+    }
+  fs::remove_all(out);
+}
