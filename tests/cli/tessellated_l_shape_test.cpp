@@ -14,6 +14,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "result_files.hpp"
 #include "run_program.hpp"
@@ -157,30 +159,46 @@ TEST(TessellatedNotch, ComesToRestInItsInSituStressOnBondedSubBlocks) {
 }
 
 // The tutorial's intact seal (scenarios/examples/seal_through_intact_rock.toml) with a 1 m x 1 m
-// notch cut into its right side at y = 4-5 m: its coupled loop converges in either kind, every
-// pass at rest (the loop's own test: the head and displacement changes under 1e-4 in a pass whose
-// DDA steps came to rest). Where the cell holding each corner was split there into a part of
-// 0.001-0.005 m², no pass came to rest in Voronoi cells, and the third failed a step in
-// triangles (docs/studies/2026-11-30-notched-seal.md). At most 5 passes: it converges in 2-3.
-TEST(TessellatedNotch, TheTutorialsSealWithANotchConvergesInEitherKind) {
+// notch cut into its right side at y = 4-5 m, at most 5 passes and `edits`, run on one thread:
+// its exit code, summary.json and history.csv (the scenario and run folder then removed).
+struct NotchedSealRun {
+  int exit_code = 0;
+  std::string output;
+  nlohmann::json summary;
+  std::vector<std::vector<std::string>> history;
+};
+
+NotchedSealRun run_notched_seal(const std::string& name, std::vector<std::pair<std::string, std::string>> edits) {
   const fs::path shipped = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/seal_through_intact_rock.toml";
-  const std::pair<std::string, std::string> notch{
-      "domain = [[0.0, 0.0], [12.0, 0.0], [12.0, 10.0], [0.0, 10.0]]",
-      "domain = [[0.0, 0.0], [12.0, 0.0], [12.0, 4.0], [11.0, 4.0], [11.0, 5.0], [12.0, 5.0], [12.0, 10.0], [0.0, 10.0]]"};
-  const std::pair<std::string, std::string> passes{"max_iterations = 30", "max_iterations = 5"};
+  edits.push_back({"domain = [[0.0, 0.0], [12.0, 0.0], [12.0, 10.0], [0.0, 10.0]]",
+                   "domain = [[0.0, 0.0], [12.0, 0.0], [12.0, 4.0], [11.0, 4.0], [11.0, 5.0], [12.0, 5.0], [12.0, 10.0], "
+                   "[0.0, 10.0]]"});
+  edits.push_back({"max_iterations = 30", "max_iterations = 5"});
+  const std::string unique = name + "-" + std::to_string(::getpid());
+  const fs::path scenario = edited_scenario(shipped, unique, edits);
+  const fs::path out = fs::temp_directory_path() / (unique + "-out");
+  fs::remove_all(out);
+  const auto ran = run_program("-q run " + scenario.string() + " -o " + out.string() + " --threads 1");
+  NotchedSealRun run{ran.exit_code, ran.output, nlohmann::json::object(), {}};
+  if (std::ifstream in(out / "summary.json"); in) run.summary = nlohmann::json::parse(in);
+  if (fs::exists(out / "history.csv")) run.history = hydrodda::testing::read_csv(out / "history.csv");
+  fs::remove_all(out);
+  fs::remove(scenario);
+  return run;
+}
+
+// The notched seal converges in either kind, every pass at rest (the loop's own test: the head
+// and displacement changes under 1e-4 in a pass whose DDA steps came to rest). Where the cell
+// holding each corner was split there into a part of 0.001-0.005 m², no pass came to rest in
+// Voronoi cells, and the third failed a step in triangles (docs/studies/2026-11-30-notched-seal.md).
+// At most 5 passes: it converges in 2-3.
+TEST(TessellatedNotch, TheTutorialsSealWithANotchConvergesInEitherKind) {
   for (const std::string kind : {"voronoi", "triangles"}) {
     SCOPED_TRACE(kind);
-    const std::string name = "hydrodda-notched-seal-" + kind + "-" + std::to_string(::getpid());
-    const fs::path scenario = edited_scenario(shipped, name, {notch, passes, {"kind = \"triangles\"", "kind = \"" + kind + "\""}});
-    const fs::path out = fs::temp_directory_path() / (name + "-out");
-    fs::remove_all(out);
-    const auto ran = run_program("-q run " + scenario.string() + " -o " + out.string() + " --threads 1");
-    EXPECT_EQ(ran.exit_code, 0) << ran.output;
-    std::ifstream in(out / "summary.json");
-    const nlohmann::json summary = in ? nlohmann::json::parse(in) : nlohmann::json::object();
-    EXPECT_EQ(summary.value("converged", false), true) << ran.output;
-    fs::remove_all(out);
-    fs::remove(scenario);
+    const NotchedSealRun run = run_notched_seal("hydrodda-notched-seal-" + kind,
+                                                {{"kind = \"triangles\"", "kind = \"" + kind + "\""}});
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+    EXPECT_EQ(run.summary.value("converged", false), true) << run.output;
   }
 }
 
@@ -193,27 +211,12 @@ TEST(TessellatedNotch, TheTutorialsSealWithANotchConvergesInEitherKind) {
 // the loop converges in 3 passes, each at rest, no bond broken (measured K_eff/K_m 2.3776, as at
 // 950 m; docs/studies/2026-11-30-notched-seal.md). At most 5 passes.
 TEST(TessellatedNotch, AboveItsLastRestTheNotchedSealConvergesWhereABedsCornerStandsOnANodeOfTheRock) {
-  const fs::path shipped = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/seal_through_intact_rock.toml";
-  const std::string name = "hydrodda-notched-seal-975-" + std::to_string(::getpid());
-  const fs::path scenario = edited_scenario(
-      shipped, name,
-      {{"domain = [[0.0, 0.0], [12.0, 0.0], [12.0, 10.0], [0.0, 10.0]]",
-        "domain = [[0.0, 0.0], [12.0, 0.0], [12.0, 4.0], [11.0, 4.0], [11.0, 5.0], [12.0, 5.0], [12.0, 10.0], [0.0, 10.0]]"},
-       {"max_iterations = 30", "max_iterations = 5"},
-       {"head = 500.0 ", "head = 975.0 "}});
-  const fs::path out = fs::temp_directory_path() / (name + "-out");
-  fs::remove_all(out);
-  const auto ran = run_program("-q run " + scenario.string() + " -o " + out.string() + " --threads 1");
-  EXPECT_EQ(ran.exit_code, 0) << ran.output;
-  std::ifstream in(out / "summary.json");
-  const nlohmann::json summary = in ? nlohmann::json::parse(in) : nlohmann::json::object();
-  EXPECT_EQ(summary.value("converged", false), true) << ran.output;
-  const auto history = hydrodda::testing::read_csv(out / "history.csv");
-  ASSERT_GE(history.size(), 2u);
-  const std::size_t at_rest = hydrodda::testing::column(history[0], "at_rest");
-  for (std::size_t row = 1; row < history.size(); ++row) EXPECT_EQ(history[row][at_rest], "1") << "pass " << row;
-  fs::remove_all(out);
-  fs::remove(scenario);
+  const NotchedSealRun run = run_notched_seal("hydrodda-notched-seal-975", {{"head = 500.0 ", "head = 975.0 "}});
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_EQ(run.summary.value("converged", false), true) << run.output;
+  ASSERT_GE(run.history.size(), 2u);
+  const std::size_t at_rest = hydrodda::testing::column(run.history[0], "at_rest");
+  for (std::size_t row = 1; row < run.history.size(); ++row) EXPECT_EQ(run.history[row][at_rest], "1") << "pass " << row;
 }
 
 }  // namespace
