@@ -231,14 +231,7 @@ void System::drop_corner_contacts_within_intact_rock(ContactCandidates& candidat
   const auto tip_to_tip_within_intact_rock = [&](const ContactCandidate& c) {
     const int bond = bond_of(c.key);
     if (bond < 0 || bond_across(c.key) >= 0) return false;  // no bond, or the face's own
-    const Polygon& edge_block = blocks_[static_cast<std::size_t>(c.key.block_j)].polygon;
-    const Point p = blocks_[static_cast<std::size_t>(c.key.block_i)].polygon[static_cast<std::size_t>(c.key.vertex)];
-    const auto start = static_cast<std::size_t>(c.key.edge);
-    const std::size_t end = (start + 1) % edge_block.size();
-    const double to_start = geometry::distance(p, edge_block[start]);
-    const double to_end = geometry::distance(p, edge_block[end]);
-    const int corner = static_cast<int>(to_start <= to_end ? start : end);
-    const double to_corner = std::min(to_start, to_end);
+    const auto [corner, to_corner] = edge_end_nearest(c.key);
     if (to_corner <= tie && is_corner_of_intact_rock(c.key.block_i, c.key.vertex) &&
         is_corner_of_intact_rock(c.key.block_j, corner))
       return true;
@@ -247,6 +240,16 @@ void System::drop_corner_contacts_within_intact_rock(ContactCandidates& candidat
     return !is_corner_of_intact_rock(c.key.block_i, c.key.vertex) && reached_about_node(c, corner);
   };
   candidates.erase(std::remove_if(candidates.begin(), candidates.end(), tip_to_tip_within_intact_rock), candidates.end());
+}
+
+System::EdgeEnd System::edge_end_nearest(const ContactKey& key) const {
+  const Polygon& edge_block = blocks_[static_cast<std::size_t>(key.block_j)].polygon;
+  const Point p = blocks_[static_cast<std::size_t>(key.block_i)].polygon[static_cast<std::size_t>(key.vertex)];
+  const auto start = static_cast<std::size_t>(key.edge);
+  const std::size_t end = (start + 1) % edge_block.size();
+  const double to_start = geometry::distance(p, edge_block[start]);
+  const double to_end = geometry::distance(p, edge_block[end]);
+  return to_start <= to_end ? EdgeEnd{static_cast<int>(start), to_start} : EdgeEnd{static_cast<int>(end), to_end};
 }
 
 // The sub-blocks about the node at corner `vertex` of `block` that it reaches through intact
@@ -352,14 +355,10 @@ void System::drop_second_contacts_at_intact_face_ends(ContactCandidates& candida
 // at the last step: a hysteresis in the contact's existence, within the corner tie of the node
 // and the penetration tolerance behind the edge's line (ContactCandidate::kept_if_closed).
 void System::drop_corner_candidates_not_kept(ContactCandidates& candidates) const {
+  if (bond_sides_.empty()) return;
   const auto not_kept = [&](const ContactCandidate& c) {
     if (!c.kept_if_closed) return false;
-    const Polygon& edge_block = blocks_[static_cast<std::size_t>(c.key.block_j)].polygon;
-    const Point p = blocks_[static_cast<std::size_t>(c.key.block_i)].polygon[static_cast<std::size_t>(c.key.vertex)];
-    const auto e = static_cast<std::size_t>(c.key.edge);
-    const std::size_t f = (e + 1) % edge_block.size();
-    const int corner = static_cast<int>(geometry::distance(p, edge_block[e]) <= geometry::distance(p, edge_block[f]) ? e : f);
-    if (!is_corner_of_intact_rock(c.key.block_j, corner)) return true;
+    if (!is_corner_of_intact_rock(c.key.block_j, edge_end_nearest(c.key).corner)) return true;
     const auto record = std::lower_bound(records_.begin(), records_.end(), c.key,
                                          [](const auto& r, const ContactKey& key) { return r.first < key; });
     return record == records_.end() || record->first != c.key || record->second.state == ContactState::open;

@@ -327,6 +327,12 @@ class System {
     int vertex = -1;
     bool operator==(const NodeCorner&) const = default;
   };
+  // The end of a contact's edge nearer its vertex: that corner of the edge's block, and how far.
+  struct EdgeEnd {
+    int corner = -1;
+    double distance = 0.0;
+  };
+  EdgeEnd edge_end_nearest(const ContactKey& key) const;
   // bonds.cpp: the corners about a corner's node that it reaches through intact bonded faces.
   std::vector<NodeCorner> bonded_about_node(int block, int vertex) const;
   void drop_corner_contacts_within_intact_rock(ContactCandidates& candidates) const;
