@@ -321,7 +321,19 @@ PassReport StaggeredLoop::run_pass() {
   report.forces_seconds = seconds_since(start);
 
   const std::vector<Point> start_displacements = block_displacements();
-  step_mechanics(report);
+  if (settings_.ramp_if_moved > 1 && settings_.ramp_passes == 1 && iteration_ == 1) {
+    try {
+      step_mechanics(report);
+    } catch (const PassInterrupted&) {
+      throw;
+    } catch (const std::exception&) {
+      if (ramp_if_the_load_moved(true)) return run_pass_ramped(-1.0);
+      throw;
+    }
+    if (ramp_if_the_load_moved(false)) return run_pass_ramped(moved_at_once_);
+  } else {
+    step_mechanics(report);
+  }
   move_free_groups(report, start_displacements);
   report.contact_state_changes = count_contact_state_changes(contacts_before, mechanics_.contacts());
   if (joints_)
@@ -329,6 +341,35 @@ PassReport StaggeredLoop::run_pass() {
         count_switched(joint_apertures_, compute_joint_apertures(current_blocks()), joints_->zero_stress_apertures());
   measure_convergence(report, unrelaxed_head_change);
   finish_pass(report);
+  return report;
+}
+
+// The first pass of a model that starts in an in-situ stress, its load put on at once: where
+// the blocks stood in equilibrium with the whole load (an in-situ stress balancing the steady
+// seepage) they stay put and the run goes on as it is. Where they moved by more than the
+// tolerance's share of the allowed step displacement (as a converged pass may not), or the pass
+// failed, the in-situ stress stood with still water, and the whole load at once throws the
+// blocks past the state a slow rise leaves them in, where friction then keeps them (docs/
+// coupling.md, "Relaxation, acceleration and the load ramp"): the pass is undone and the load
+// ramped over settings_.ramp_if_moved passes. True: the caller runs the pass again.
+bool StaggeredLoop::ramp_if_the_load_moved(bool pass_failed) {
+  double largest = 0.0;
+  for (int b = 0; b < mechanics_.block_count(); ++b) {
+    const Point u = mechanics_.displacement(b);
+    largest = std::max(largest, std::hypot(u.x, u.y));
+  }
+  const int ramp = std::exchange(settings_.ramp_if_moved, 0);  // chosen once
+  if (!pass_failed && largest <= settings_.tolerance * mechanics_.allowed_step_displacement()) return false;
+  moved_at_once_ = largest;
+  abandon_pass();
+  settings_.ramp_passes = ramp;
+  return true;
+}
+
+// The first pass again, ramped, its report saying why (PassReport::moved_at_once).
+PassReport StaggeredLoop::run_pass_ramped(double moved_at_once) {
+  PassReport report = run_pass();
+  report.moved_at_once = moved_at_once;
   return report;
 }
 

@@ -48,6 +48,11 @@ struct LoopSettings {
   // from none (whole) or from still water's (overpressure; load_ramp.hpp); no pass before the
   // first at full load counts as converged.
   int ramp_passes = 1;
+  // > 1: the first pass puts the load on at once (ramp_passes = 1), and if it moves the blocks
+  // from where they started by more than the tolerance's share of the allowed step displacement
+  // (they stood in no equilibrium with it: an in-situ stress under still water), the pass is run
+  // again with the load ramped over this many passes (StaggeredLoop::ramp_if_the_load_moved).
+  int ramp_if_moved = 0;
   RampedLoad ramped_load = RampedLoad::whole;
   int steps_per_pass = 100;       // DDA steps run in each pass
   // Then up to this many more, until the blocks are at rest (dda::System::is_at_rest);
@@ -142,6 +147,9 @@ struct LoopState {
   std::vector<hydro::PermeabilityTensor> permeability_tensors;  // with joints; else empty
   // The float secant's memory of the groups free in the last pass (float_secant.hpp).
   std::vector<FloatSecant::Remembered> float_groups;
+  // The passes the load rises over, as the first pass chose where the settings left it to it
+  // (LoopSettings::ramp_if_moved); read back only after a pass.
+  int ramp_passes = 1;
 };
 
 class StaggeredLoop final : public PassRunner {
@@ -172,6 +180,9 @@ class StaggeredLoop final : public PassRunner {
   // With it, the DDA system's after the last finished pass (as built before the first).
   LoopState export_state() const;
   const dda::SystemState& mechanics_state() const { return last_mechanics_; }
+  // The passes the fluid load rises over: the settings', or as the first pass chose
+  // (LoopSettings::ramp_if_moved).
+  int ramp_passes() const { return settings_.ramp_passes; }
   void import_state(LoopState state, const dda::SystemState& mechanics);
 
   // A coupled transient run (LoopSettings::fixed_stress): start_in_time() takes the heads at
@@ -243,6 +254,8 @@ class StaggeredLoop final : public PassRunner {
   std::vector<std::vector<Point>> fluid_forces(const std::vector<geometry::Polygon>& blocks,
                                                std::span<const double> pressure) const;
   void step_mechanics(PassReport& report);
+  bool ramp_if_the_load_moved(bool pass_failed);
+  PassReport run_pass_ramped(double moved_at_once);
   void move_free_groups(PassReport& report, const std::vector<Point>& start_displacements);
   void measure_convergence(PassReport& report, double unrelaxed_head_change);
   void finish_pass(const PassReport& report);
@@ -274,6 +287,7 @@ class StaggeredLoop final : public PassRunner {
   const mesh::TriangleMesh& mesh_;
   dda::System& mechanics_;
   LoopSettings settings_;
+  double moved_at_once_ = 0.0;  // how far the first pass at once moved the blocks (ramp_if_the_load_moved)
   hydro::DarcySolver darcy_;
   std::shared_ptr<const ElementIndex> elements_;  // shared by the next three
   PorosityMapper porosity_mapper_;

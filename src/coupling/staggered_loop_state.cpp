@@ -11,6 +11,7 @@ LoopState StaggeredLoop::export_state() const {
                   previous_update_, relaxation_, {},              {},              darcy_.kept_factor(),
                   darcy_.kept_factor_in_single_precision(), porosity_, permeability_,
                   permeability_tensors_,                   float_secant_.remembered()};
+  state.ramp_passes = settings_.ramp_passes;
   for (const numerics::AndersonAccelerator::Pass& pass : anderson_.history()) {
     state.anderson_residuals.emplace_back(pass.residual.begin(), pass.residual.end());
     state.anderson_images.emplace_back(pass.image.begin(), pass.image.end());
@@ -48,6 +49,11 @@ void StaggeredLoop::import_state(LoopState state, const dda::SystemState& mechan
   // then starts from the very factor it had.
   float_secant_.restore(state.float_groups, mechanics_.block_count());
   darcy_.restore_kept_factor(std::move(state.kept_factor_permeability), state.kept_factor_single_precision);
+  if (state.ramp_passes < 1) throw std::invalid_argument("coupling state: a ramp of fewer than one pass");
+  if (state.iterations > 0) {  // the first pass has chosen the ramp
+    settings_.ramp_passes = state.ramp_passes;
+    settings_.ramp_if_moved = 0;
+  }
   iteration_ = completed_ = state.iterations;
   solution_ = std::move(state.flow);
   previous_heads_ = std::move(state.previous_heads);

@@ -27,7 +27,7 @@ constexpr std::string_view kMagic = "hydrodda checkpoint\n";
 // again); 17: the bonds softening, with their faces' peak openings; 18: the float secant's memory
 // of the groups free in the last pass. Only the current format is read: a run stopped by an
 // older hydrodda is run again.
-constexpr std::int64_t kVersion = 18;
+constexpr std::int64_t kVersion = 19;
 // The last 8 bytes: the CRC-32 of every byte before them (zlib's, as a 64-bit word). A CRC
 // detects every error burst of up to 32 bits, so a flipped bit is refused, not resumed from;
 // zlib computes it four times as fast as a byte-at-a-time hash on a checkpoint of tens of MB.
@@ -427,6 +427,7 @@ void write_loop_state(Writer& w, const coupling::LoopState& coupling) {
   w.put(groups);
   w.put(starts);
   w.put(rates);
+  w.put(static_cast<std::int64_t>(coupling.ramp_passes));
 }
 
 void read_loop_state(Reader& r, coupling::LoopState& s) {
@@ -469,6 +470,10 @@ void read_loop_state(Reader& r, coupling::LoopState& s) {
   r.get(rates);
   if (starts.size() != groups.size() || rates.size() != groups.size()) r.fail();
   for (std::size_t g = 0; g < groups.size(); ++g) s.float_groups.push_back({std::move(groups[g]), starts[g], rates[g]});
+  std::int64_t ramp_passes = 0;
+  r.get(ramp_passes);
+  if (ramp_passes < 1 || ramp_passes > 1'000'000) r.fail();
+  s.ramp_passes = static_cast<int>(ramp_passes);
 }
 
 }  // namespace
@@ -636,7 +641,7 @@ constexpr std::string_view kCoupledTransientMagic = "hydrodda coupled transient 
 // 2: the DDA state's bonds broken so far (as the coupled checkpoint's format 16); 3: the bonds
 // softening (as its format 17); 4: the coupling loop's float secant memory (as its format 18;
 // always empty in time, the secant being for steady runs).
-constexpr std::int64_t kCoupledTransientVersion = 4;
+constexpr std::int64_t kCoupledTransientVersion = 5;
 
 // The fields after the header and before the engines' states, in one order for both ways.
 template <class Io, class Checkpoint>

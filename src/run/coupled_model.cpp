@@ -105,6 +105,7 @@ CoupledModel::CoupledModel(const scenario::Scenario& scenario, const std::option
   settings.acceleration = s.coupling.acceleration;
   // In time the loads come with the steps: no ramp over a step's iterations.
   settings.ramp_passes = s.flow->transient ? 1 : s.coupling.ramp_passes;
+  settings.ramp_if_moved = s.flow->transient ? 0 : s.coupling.ramp_if_moved;
   settings.ramped_load = s.coupling.ramp;
   settings.steps_per_pass = s.mechanics->steps.value_or(
       static_cast<int>(std::ceil(*s.mechanics->end_time / s.mechanics->time_step)));

@@ -50,6 +50,15 @@ ProgressReport report_pass(const coupling::PassReport& r) {
   report.displacement_change = r.displacement_change;
   report.message = fmt::format("iteration {}: head change {:.2e}, displacement change {:.2e}", r.iteration,
                                r.head_change, r.displacement_change);
+  // The first pass run again ramped (coupling::LoopSettings::ramp_if_moved): say why.
+  if (r.moved_at_once > 0.0)
+    report.message += fmt::format(" (the whole load at once moved the blocks {:.3g} m from their in-situ stress: "
+                                  "the pass was run again with the load raised over its first passes, "
+                                  "coupling.ramp_passes)",
+                                  r.moved_at_once);
+  else if (r.moved_at_once < 0.0)
+    report.message += " (the whole load at once failed the pass: it was run again with the load raised over its "
+                      "first passes, coupling.ramp_passes)";
   return report;
 }
 

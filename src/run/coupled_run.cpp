@@ -79,7 +79,7 @@ void add_last_passes(const Round& round, output::RunSummary& summary, std::strin
   if (!summary.flow) return;
   if (const std::string moved =
           describe_last_passes(round.recorder.history_columns(), round.recorder.history_rows(),
-                               round.context.scenario.coupling.ramp_passes, summary.flow->regions);
+                               round.model.loop().ramp_passes(), summary.flow->regions);
       !moved.empty())
     message += "; " + moved;
 }
@@ -340,7 +340,7 @@ std::string describe_non_convergence(const Round& round) {
                                           .passes_not_at_rest = passes_not_at_rest,
                                           .crossings_switched = median_of_last("joint_crossings_switched"),
                                           .contacts_changed = median_of_last("contact_state_changes"),
-                                          .sudden_load = s.coupling.ramp_passes == 1 && round.model.load_step() == 1,
+                                          .sudden_load = round.model.loop().ramp_passes() == 1 && round.model.load_step() == 1,
                                           .largest_opening = std::move(largest_opening),
                                           .crossings_by_pass = std::move(crossings),
                                           .contacts_by_pass = std::move(contacts)});

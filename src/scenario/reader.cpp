@@ -626,6 +626,27 @@ void read_mesh(ReadContext& ctx, const TableView& root, Scenario& s) {
   s.mesh = std::move(mesh);
 }
 
+// A steady coupled model whose blocks start in an in-situ stress: its first pass puts the load
+// on at once, and where that moves the blocks (their in-situ stress stood with still water, not
+// with the whole load) the pass is run again with the overpressure raised over 3 passes (at
+// most the passes before the last), so that friction keeps the state a slow rise leaves, not
+// one a sudden load throws the blocks into. A model that starts unstressed takes its whole load
+// at once, gravity and water together (docs/coupling.md, "Relaxation, acceleration and the load
+// ramp"; the measurement: docs/studies/2026-11-30-in-situ-ramp.md). 0: no such ramp.
+int default_ramp_if_moved(const Scenario& s) {
+  constexpr int kInSituRampPasses = 3;
+  const bool steady_coupled = s.flow && !s.flow->transient && s.mechanics;
+  if (!steady_coupled || !s.mechanics->initial_stress) return 0;
+  const int passes = std::min(kInSituRampPasses, s.coupling.max_iterations - 1);
+  return passes > 1 ? passes : 0;
+}
+
+std::string ramp_default_text(int ramp_if_moved) {
+  return ramp_if_moved > 1 ? fmt::format("1, or {} if the load at once moves the blocks from their in-situ stress",
+                                         ramp_if_moved)
+                           : "1";
+}
+
 void read_coupling(ReadContext& ctx, const TableView& root, Scenario& s) {
   // Passes settle by default where they can: at rest means nothing in a dynamic analysis,
   // whose blocks keep their velocity.
@@ -633,9 +654,11 @@ void read_coupling(ReadContext& ctx, const TableView& root, Scenario& s) {
   s.coupling.settle = static_analysis;
   const toml::table* t = root.table("coupling");
   if (!t) {
+    s.coupling.ramp_if_moved = default_ramp_if_moved(s);
     if (s.flow && s.mechanics)
-      ctx.defaults.push_back({"coupling", fmt::format("{{ tolerance = 1e-4, max_iterations = 50, relaxation = 1, settle = {} }}",
-                                                      static_analysis)});
+      ctx.defaults.push_back({"coupling", fmt::format("{{ tolerance = 1e-4, max_iterations = 50, relaxation = 1, "
+                                                      "ramp_passes = {}, settle = {} }}",
+                                                      ramp_default_text(s.coupling.ramp_if_moved), static_analysis)});
     return;
   }
   const TableView c(ctx, *t, "coupling",
@@ -660,9 +683,12 @@ void read_coupling(ReadContext& ctx, const TableView& root, Scenario& s) {
               fmt::format("must be below coupling.max_iterations ({}): the first pass that can count towards "
                           "convergence is pass ramp_passes + 1",
                           s.coupling.max_iterations));
+  } else if (!c.has("ramp_passes")) {
+    s.coupling.ramp_if_moved = default_ramp_if_moved(s);
+    if (s.flow && s.mechanics) ctx.defaults.push_back({"coupling.ramp_passes", ramp_default_text(s.coupling.ramp_if_moved)});
   }
   // Read (and its default listed) only where a ramp is asked for or the key is given.
-  if (c.has("ramp") || s.coupling.ramp_passes > 1)
+  if (c.has("ramp") || s.coupling.ramp_passes > 1 || s.coupling.ramp_if_moved > 1)
     s.coupling.ramp = c.choice("ramp", coupling::RampedLoad::overpressure);
   if (c.has("pseudo_time_step")) {
     s.coupling.pseudo_time_step = c.number_or("pseudo_time_step", 0.0);

@@ -331,6 +331,10 @@ struct CouplingDefinition {
   double relaxation = 1.0;
   coupling::Acceleration acceleration = coupling::Acceleration::none;
   int ramp_passes = 1;   // the fluid load raised over the first passes
+  // > 1 (the reader's default for blocks in an in-situ stress): the first pass puts the load on
+  // at once and, if that moves the blocks, is run again ramped over this many passes
+  // (coupling::LoopSettings::ramp_if_moved).
+  int ramp_if_moved = 0;
   // From still water at the lowest fixed head (overpressure) or from no fluid load (whole).
   coupling::RampedLoad ramp = coupling::RampedLoad::overpressure;
   bool settle = false;   // each pass steps on until the blocks are at rest (the reader's default: a static analysis)

@@ -651,3 +651,59 @@ TEST(CoupledRun, FlexureAtThePapersPressuresSaysWhichBlocksEscape) {
 }
 
 }  // namespace
+
+namespace {
+
+struct RampRun {
+  std::string output;
+  nlohmann::json summary;
+  std::vector<std::string> load_factors;  // history.csv's, pass by pass
+};
+
+RampRun run_for_its_ramp(const fs::path& scenario, const std::string& name) {
+  const hydrodda::testing::TemporaryFolder out = hydrodda::testing::fresh_dir(name);
+  RampRun r;
+  const auto result = run_program("run --threads 1 " + scenario.string() + " -o " + out.path.string());
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  r.output = result.output;
+  r.summary = nlohmann::json::parse(std::ifstream(out.path / "summary.json"));
+  const auto history = hydrodda::testing::read_csv(out.path / "history.csv");
+  const int factor = column(history.front(), "load_factor");
+  for (std::size_t row = 1; row < history.size(); ++row) r.load_factors.push_back(history[row].at(factor));
+  return r;
+}
+
+}  // namespace
+
+// A model in an in-situ stress leaves its ramp to its first pass (docs/coupling.md, "The default
+// ramp"). The jointed seal's in-situ stress balances its whole upward seepage: the load at once
+// leaves its blocks where they stood, and the run goes on at once, converging in 2 passes, every
+// pass at the full load. The layered faulted seal's stood with still water: the load at once
+// moves its blocks (2.0 mm), the pass is run again ramped over 3 passes (its load factor 1/3, 2/3,
+// then 1), the log says why, and the run is that of `ramp_passes = 3` to the bit.
+TEST(CoupledRun, TheFirstPassRampsTheLoadOnlyWhereItMovesTheBlocksFromTheirInSituStress) {
+  const fs::path examples = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples";
+  const RampRun at_once = run_for_its_ramp(examples / "jointed_seal.toml", "hydrodda-ramp-jointed");
+  EXPECT_EQ(at_once.summary["converged"], true);
+  EXPECT_EQ(at_once.summary["iterations"], 2);
+  EXPECT_EQ(at_once.load_factors, (std::vector<std::string>{"1", "1"}));
+  EXPECT_EQ(at_once.output.find("the whole load at once moved"), std::string::npos) << at_once.output;
+
+  const fs::path layered = examples / "layered_faulted_seal.toml";
+  const RampRun ramped = run_for_its_ramp(layered, "hydrodda-ramp-layered");
+  ASSERT_GE(ramped.load_factors.size(), 4u);
+  EXPECT_NEAR(std::stod(ramped.load_factors[0]), 1.0 / 3.0, 1e-15);
+  EXPECT_NEAR(std::stod(ramped.load_factors[1]), 2.0 / 3.0, 1e-15);
+  EXPECT_EQ(ramped.load_factors[2], "1");
+  EXPECT_NE(ramped.output.find("the whole load at once moved the blocks 0.00202 m from their in-situ stress"),
+            std::string::npos)
+      << ramped.output;
+  const fs::path asked_file =
+      edited_scenario(layered, "hydrodda-ramp-asked", {{"max_iterations = 30", "max_iterations = 30\nramp_passes = 3"}});
+  const RampRun asked = run_for_its_ramp(asked_file, "hydrodda-ramp-asked-out");
+  fs::remove(asked_file);
+  EXPECT_EQ(ramped.summary["iterations"], asked.summary["iterations"]);
+  EXPECT_EQ(ramped.summary["blocks"], asked.summary["blocks"]);
+  EXPECT_EQ(ramped.summary["flow"]["regions"], asked.summary["flow"]["regions"]);
+  EXPECT_EQ(ramped.load_factors, asked.load_factors);
+}

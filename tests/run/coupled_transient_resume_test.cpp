@@ -204,7 +204,7 @@ TEST(CoupledTransientResume, ACheckpointOfAnotherFormatIsRefusedNamingBoth) {
     output::decode_coupled_transient_checkpoint(bytes);
     ADD_FAILURE() << "a checkpoint of another format was read";
   } catch (const output::CheckpointError& e) {
-    EXPECT_EQ(std::string(e.what()), "coupled transient checkpoint format 0; this hydrodda reads format 4");
+    EXPECT_EQ(std::string(e.what()), "coupled transient checkpoint format 0; this hydrodda reads format 5");
   }
 }
 

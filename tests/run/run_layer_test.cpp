@@ -621,6 +621,8 @@ TEST(CoupledModel, TheFlowFactorsPrecisionGoesWithItsState) {
       scenario::read_scenario(fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/seal_over_reservoir.toml");
   ASSERT_EQ(s.flow->boundaries[0].name, "bottom");
   s.flow->boundaries[0].value = 175.0;
+  s.coupling.ramp_passes = 1;  // the whole load at once: pass 3 is the second at the full load
+  s.coupling.ramp_if_moved = 0;
   run::CoupledModel running(s);
   running.run_pass();
   EXPECT_FALSE(running.export_state().coupling.kept_factor_single_precision);  // factored afresh

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include "parse_errors.hpp"
 #include "scenario/diagnostics.hpp"
@@ -338,6 +339,37 @@ TEST(ScenarioReader, SettlingPassesAreForStaticAnalysis) {
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_EQ(errors[0].key, "coupling.settle");
   EXPECT_EQ(errors[0].line, 12);
+}
+
+// coupling.ramp_passes: in a steady coupled model that starts in an in-situ stress it is left to
+// the first pass (ramp_if_moved 3: at once, or ramped over 3 passes if that moves the blocks;
+// over the passes before the last where max_iterations leaves fewer, none where it leaves one);
+// one that starts unstressed, or a transient run (which ramps nothing), takes the load at once;
+// a value given stands, and nothing is left to the first pass.
+TEST(ScenarioReader, AModelInAnInSituStressLeavesItsRampToItsFirstPass) {
+  std::ifstream in(kSource / "scenarios/examples/jointed_seal.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string seal = text.str();
+  const auto coupling = [&](const std::string& max_iterations, const std::string& more = "") {
+    std::string edited = seal;
+    edited.replace(edited.find("max_iterations = 10"), 19, "max_iterations = " + max_iterations + more);
+    const Scenario s = parse_scenario(edited, "seal.toml");
+    return std::pair{s.coupling.ramp_passes, s.coupling.ramp_if_moved};
+  };
+  EXPECT_EQ(coupling("10"), std::pair(1, 3));
+  EXPECT_EQ(coupling("3"), std::pair(1, 2));
+  EXPECT_EQ(coupling("2"), std::pair(1, 0));
+  EXPECT_EQ(coupling("10", "\nramp_passes = 1"), std::pair(1, 0));
+  EXPECT_EQ(coupling("10", "\nramp_passes = 5"), std::pair(5, 0));
+  std::string no_table = seal;
+  no_table.erase(no_table.find("[coupling]"), no_table.find("max_iterations = 10") + 19 - no_table.find("[coupling]"));
+  EXPECT_EQ(parse_scenario(no_table, "seal.toml").coupling.ramp_if_moved, 3);
+  for (const char* file : {"scenarios/paper/six_block_ud_rl.toml", "scenarios/examples/seal_leaking_in_time.toml"}) {
+    const Scenario s = read_scenario(kSource / file);
+    EXPECT_EQ(s.coupling.ramp_passes, 1) << file;
+    EXPECT_EQ(s.coupling.ramp_if_moved, 0) << file;
+  }
 }
 
 // coupling.pseudo_time_step (s): off (0) when left out, read when given, and a value ≤ 0 is
