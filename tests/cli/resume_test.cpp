@@ -148,6 +148,18 @@ TEST(Resume, AFlowFactorKeptInSinglePrecisionResumesBitForBit) {
   fs::remove(seal);
 }
 
+// The seal over its reservoir starts in its in-situ stress under still water: its first pass
+// puts the load on at once, moves the blocks, and is run again ramped over 3 passes (docs/
+// coupling.md, "The default ramp"). Stopped after that first pass and resumed, the run goes on
+// with the ramp its first pass chose (pass 2 at 2/3 of the load) and matches the whole run.
+TEST(Resume, ARunStoppedInTheRampItsFirstPassChoseResumesOnThatRamp) {
+  Folders f("ramp");
+  const auto whole = run_program("run " + kSeal.string() + " -o " + f.whole.string());
+  ASSERT_EQ(whole.exit_code, 0) << whole.output;
+  ASSERT_NE(whole.output.find("the whole load at once moved the blocks"), std::string::npos) << whole.output;
+  expect_stopped_and_resumed_alike(kSeal, f, 1);
+}
+
 // The seal with its reservoir's head a table, 125 m raised to 175 m: two load steps, each run to
 // convergence (docs/scenario.md, "Loads over time"). Stopped after pass 4, the first step's
 // last, the resumed run starts the second step; stopped after pass 6, inside the second, it
