@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -327,10 +328,10 @@ PassReport StaggeredLoop::run_pass() {
     } catch (const PassInterrupted&) {
       throw;
     } catch (const std::exception&) {
-      if (ramp_if_the_load_moved(true)) return run_pass_ramped(-1.0);
+      if (const std::optional<double> moved = ramp_if_the_load_moved(true)) return run_pass_ramped(*moved);
       throw;
     }
-    if (ramp_if_the_load_moved(false)) return run_pass_ramped(moved_at_once_);
+    if (const std::optional<double> moved = ramp_if_the_load_moved(false)) return run_pass_ramped(*moved);
   } else {
     step_mechanics(report);
   }
@@ -351,19 +352,19 @@ PassReport StaggeredLoop::run_pass() {
 // failed, the in-situ stress stood with still water, and the whole load at once throws the
 // blocks past the state a slow rise leaves them in, where friction then keeps them (docs/
 // coupling.md, "Relaxation, acceleration and the load ramp"): the pass is undone and the load
-// ramped over settings_.ramp_if_moved passes. True: the caller runs the pass again.
-bool StaggeredLoop::ramp_if_the_load_moved(bool pass_failed) {
+// ramped over settings_.ramp_if_moved passes, and how far the blocks moved (−1: the pass failed)
+// returned for the caller to run the pass again with; none: the run goes on at once.
+std::optional<double> StaggeredLoop::ramp_if_the_load_moved(bool pass_failed) {
   double largest = 0.0;
   for (int b = 0; b < mechanics_.block_count(); ++b) {
     const Point u = mechanics_.displacement(b);
     largest = std::max(largest, std::hypot(u.x, u.y));
   }
   const int ramp = std::exchange(settings_.ramp_if_moved, 0);  // chosen once
-  if (!pass_failed && largest <= settings_.tolerance * mechanics_.allowed_step_displacement()) return false;
-  moved_at_once_ = largest;
+  if (!pass_failed && largest <= settings_.tolerance * mechanics_.allowed_step_displacement()) return std::nullopt;
   abandon_pass();
   settings_.ramp_passes = ramp;
-  return true;
+  return pass_failed ? -1.0 : largest;
 }
 
 // The first pass again, ramped, its report saying why (PassReport::moved_at_once).

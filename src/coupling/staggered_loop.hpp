@@ -254,7 +254,7 @@ class StaggeredLoop final : public PassRunner {
   std::vector<std::vector<Point>> fluid_forces(const std::vector<geometry::Polygon>& blocks,
                                                std::span<const double> pressure) const;
   void step_mechanics(PassReport& report);
-  bool ramp_if_the_load_moved(bool pass_failed);
+  std::optional<double> ramp_if_the_load_moved(bool pass_failed);
   PassReport run_pass_ramped(double moved_at_once);
   void move_free_groups(PassReport& report, const std::vector<Point>& start_displacements);
   void measure_convergence(PassReport& report, double unrelaxed_head_change);
@@ -287,7 +287,6 @@ class StaggeredLoop final : public PassRunner {
   const mesh::TriangleMesh& mesh_;
   dda::System& mechanics_;
   LoopSettings settings_;
-  double moved_at_once_ = 0.0;  // how far the first pass at once moved the blocks (ramp_if_the_load_moved)
   hydro::DarcySolver darcy_;
   std::shared_ptr<const ElementIndex> elements_;  // shared by the next three
   PorosityMapper porosity_mapper_;
