@@ -28,7 +28,7 @@ namespace {
 
 const std::string kLoads = " --vary 'flow.boundary[0].head' --from 1045 --to 1545 --steps 1 --threads 1";
 
-// The seal with 20 passes a step (1,000 m converges in 17, and 20 are enough to range the swing
+// The seal with 20 passes a step (1,000 m converges in 12, its load ramped, and 20 are enough to range the swing
 // at 1,500 m over its last 10), drawing its figures.
 fs::path seal_of_20_passes(const std::string& name) {
   return edited_scenario(fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/faulted_seal.toml",
@@ -58,7 +58,7 @@ TEST(BreachUnsettled, ASealThatSwingsAtRestHoldsAndItsAnswerIsARange) {
   // An unsettled answer is a range, not one number.
   EXPECT_TRUE(at(2, k).empty());
   const double least = std::stod(at(2, k + "_least")), largest = std::stod(at(2, k + "_largest"));
-  EXPECT_LT(least, largest);  // it swings: measured 5.9 to 6.2
+  EXPECT_LT(least, largest);  // it swings: measured 6.03 to 6.26
   EXPECT_GT(least, 1.0);
 
   // The step's state, as summary.json: not converged, with the same range over its last 10.
