@@ -35,7 +35,7 @@ struct PassReport {
   double relaxation = 1.0;        // ω the heads were relaxed with in this pass
   double load_factor = 1.0;       // of the fluid forces, below 1 while ramped
   // > 0: this first pass was run again ramped, after the whole load at once had moved the
-  // blocks this far (m) from their in-situ state (LoopSettings::ramp_if_moved); −1: it failed.
+  // blocks this far (m) from their in-situ state (LoopSettings::ramp_if_moved).
   double moved_at_once = 0.0;
   int settling_steps = 0;         // DDA steps past steps_per_pass (LoopSettings::settle_steps)
   bool at_rest = true;            // false: settle_steps ran out with the blocks still moving

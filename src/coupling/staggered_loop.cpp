@@ -322,19 +322,9 @@ PassReport StaggeredLoop::run_pass() {
   report.forces_seconds = seconds_since(start);
 
   const std::vector<Point> start_displacements = block_displacements();
-  if (settings_.ramp_if_moved > 1 && settings_.ramp_passes == 1 && iteration_ == 1) {
-    try {
-      step_mechanics(report);
-    } catch (const PassInterrupted&) {
-      throw;
-    } catch (const std::exception&) {
-      if (const std::optional<double> moved = ramp_if_the_load_moved(true)) return run_pass_ramped(*moved);
-      throw;
-    }
-    if (const std::optional<double> moved = ramp_if_the_load_moved(false)) return run_pass_ramped(*moved);
-  } else {
-    step_mechanics(report);
-  }
+  step_mechanics(report);
+  if (settings_.ramp_if_moved > 1 && settings_.ramp_passes == 1 && iteration_ == 1)
+    if (const std::optional<double> moved = ramp_if_the_load_moved()) return run_pass_ramped(*moved);
   move_free_groups(report, start_displacements);
   report.contact_state_changes = count_contact_state_changes(contacts_before, mechanics_.contacts());
   if (joints_)
@@ -348,23 +338,23 @@ PassReport StaggeredLoop::run_pass() {
 // The first pass of a model that starts in an in-situ stress, its load put on at once: where
 // the blocks stood in equilibrium with the whole load (an in-situ stress balancing the steady
 // seepage) they stay put and the run goes on as it is. Where they moved by more than the
-// tolerance's share of the allowed step displacement (as a converged pass may not), or the pass
-// failed, the in-situ stress stood with still water, and the whole load at once throws the
+// tolerance's share of the allowed step displacement (as a converged pass may not), the in-situ
+// stress stood with still water, and the whole load at once throws the
 // blocks past the state a slow rise leaves them in, where friction then keeps them (docs/
 // coupling.md, "Relaxation, acceleration and the load ramp"): the pass is undone and the load
-// ramped over settings_.ramp_if_moved passes, and how far the blocks moved (−1: the pass failed)
-// returned for the caller to run the pass again with; none: the run goes on at once.
-std::optional<double> StaggeredLoop::ramp_if_the_load_moved(bool pass_failed) {
+// ramped over settings_.ramp_if_moved passes, and how far the blocks moved returned for the
+// caller to run the pass again with; none: the run goes on at once.
+std::optional<double> StaggeredLoop::ramp_if_the_load_moved() {
   double largest = 0.0;
   for (int b = 0; b < mechanics_.block_count(); ++b) {
     const Point u = mechanics_.displacement(b);
     largest = std::max(largest, std::hypot(u.x, u.y));
   }
   const int ramp = std::exchange(settings_.ramp_if_moved, 0);  // chosen once
-  if (!pass_failed && largest <= settings_.tolerance * mechanics_.allowed_step_displacement()) return std::nullopt;
+  if (largest <= settings_.tolerance * mechanics_.allowed_step_displacement()) return std::nullopt;
   abandon_pass();
   settings_.ramp_passes = ramp;
-  return pass_failed ? -1.0 : largest;
+  return largest;
 }
 
 // The first pass again, ramped, its report saying why (PassReport::moved_at_once).

@@ -254,7 +254,7 @@ class StaggeredLoop final : public PassRunner {
   std::vector<std::vector<Point>> fluid_forces(const std::vector<geometry::Polygon>& blocks,
                                                std::span<const double> pressure) const;
   void step_mechanics(PassReport& report);
-  std::optional<double> ramp_if_the_load_moved(bool pass_failed);
+  std::optional<double> ramp_if_the_load_moved();
   PassReport run_pass_ramped(double moved_at_once);
   void move_free_groups(PassReport& report, const std::vector<Point>& start_displacements);
   void measure_convergence(PassReport& report, double unrelaxed_head_change);

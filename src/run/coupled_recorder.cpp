@@ -56,9 +56,6 @@ ProgressReport report_pass(const coupling::PassReport& r) {
                                   "the pass was run again with the load raised over its first passes, "
                                   "coupling.ramp_passes)",
                                   r.moved_at_once);
-  else if (r.moved_at_once < 0.0)
-    report.message += " (the whole load at once failed the pass: it was run again with the load raised over its "
-                      "first passes, coupling.ramp_passes)";
   return report;
 }
 
