@@ -67,16 +67,20 @@ struct ColourScale {
   std::vector<double> values;
   double lo = 0.0, hi = 1.0;
   bool clipped_above = false;  // values above `hi` are painted the top colour
+  bool colours_nothing = false;  // lines only, none of them coloured: no colour bar to read
   std::array<double, 3> colour(double v) const { return viridis((v - lo) / (hi - lo)); }
 };
 
-// The range of lines only: on a log scale, of the highlighted ones only; else from zero.
+bool is_set(const std::vector<bool>& flags, std::size_t i) { return i < flags.size() && flags[i]; }
+
+// The range of lines only: on a log scale, or where it need not start at zero, of the highlighted
+// ones only; else from zero.
 void range_lines(const FieldFigure& f, ColourScale& s) {
-  if (f.logarithmic) {
-    // On a log scale the lines drawn grey (e.g. joints without an aperture) set no range.
+  if (f.logarithmic || !f.lines_scale_from_zero) {
+    // The lines drawn grey (e.g. joints without an aperture) or black (marked) set no range.
     double highlighted_lo = std::numeric_limits<double>::infinity(), highlighted_hi = -highlighted_lo;
     for (std::size_t i = 0; i < s.values.size(); ++i)
-      if (i < f.segment_highlighted.size() && f.segment_highlighted[i]) {
+      if (is_set(f.segment_highlighted, i) && !is_set(f.segment_marked, i)) {
         highlighted_lo = std::min(highlighted_lo, s.values[i]);
         highlighted_hi = std::max(highlighted_hi, s.values[i]);
       }
@@ -98,7 +102,12 @@ ColourScale make_colour_scale(const FieldFigure& f) {
     for (double& v : s.values) v = std::log10(std::max(v, 1e-300));
   s.lo = s.values.empty() ? 0.0 : *std::min_element(s.values.begin(), s.values.end());
   s.hi = s.values.empty() ? 1.0 : *std::max_element(s.values.begin(), s.values.end());
-  if (s.lines_only) range_lines(f, s);
+  if (s.lines_only) {
+    range_lines(f, s);
+    s.colours_nothing = true;
+    for (std::size_t i = 0; i < f.segments.size(); ++i)
+      if (is_set(f.segment_highlighted, i) && !is_set(f.segment_marked, i)) s.colours_nothing = false;
+  }
   // An element field's scale ends at the largest value inside the mesh: elements on its
   // boundary, where the blocks part from the fixed domain edge, hold gaps far wider than the
   // joints' and would leave the joints the colour of intact rock. Values above are painted
@@ -199,17 +208,20 @@ void draw_blocks(cairo_t* cr, const Frame& fr, const FieldFigure& f) {
   }
 }
 
-// Coloured lines: the highlighted ones thick, over the others.
+// Coloured lines: the highlighted ones thick over the others, and the marked ones thick in black
+// over both.
 void draw_segments(cairo_t* cr, const Frame& fr, const FieldFigure& f, const ColourScale& s) {
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-  for (int pass = 0; pass < 2; ++pass)
+  for (int pass = 0; pass < 3; ++pass)
     for (std::size_t i = 0; i < f.segments.size(); ++i) {
-      const bool highlighted = i < f.segment_highlighted.size() && f.segment_highlighted[i];
-      if (highlighted != (pass == 1)) continue;
+      const bool marked = is_set(f.segment_marked, i);
+      const bool highlighted = !marked && is_set(f.segment_highlighted, i);
+      if (pass != (marked ? 2 : highlighted ? 1 : 0)) continue;
       const auto c = s.colour(s.lines_only ? s.values[i] : f.segment_values[i]);
-      if (highlighted) cairo_set_source_rgb(cr, c[0], c[1], c[2]);
+      if (marked) cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+      else if (highlighted) cairo_set_source_rgb(cr, c[0], c[1], c[2]);
       else cairo_set_source_rgb(cr, 0.55, 0.55, 0.55);
-      cairo_set_line_width(cr, highlighted ? 3.0 : 1.0);
+      cairo_set_line_width(cr, marked || highlighted ? 3.0 : 1.0);
       cairo_move_to(cr, fr.px(f.segments[i][0].x), fr.py(f.segments[i][0].y));
       cairo_line_to(cr, fr.px(f.segments[i][1].x), fr.py(f.segments[i][1].y));
       cairo_stroke(cr);
@@ -380,8 +392,10 @@ void draw_figure(cairo_t* cr, double width, double height, const FieldFigure& f)
   draw_axes(cr, fr, box);
   draw_titles(cr, width, f);
   const ColourBar bar{fr.px(box.hi.x) + 25, fr.py(box.hi.y), std::max(box.height() * fr.scale, kMinColourBarHeight)};
-  paint_colour_bar(cr, bar, scale.clipped_above);
-  label_colour_bar(cr, bar, f, scale);
+  if (!scale.colours_nothing) {
+    paint_colour_bar(cr, bar, scale.clipped_above);
+    label_colour_bar(cr, bar, f, scale);
+  }
   draw_arrow_key(cr, bar, key, f.flux_unit);
 }
 

@@ -36,6 +36,12 @@ struct FieldFigure {
   std::vector<std::array<geometry::Point, 2>> segments;
   std::vector<double> segment_values;
   std::vector<bool> segment_highlighted;
+  // Lines drawn thick in black over the others and outside the colour scale, which their values
+  // do not set (e.g. cracks broken from the start, on a figure coloured by when bonds broke).
+  std::vector<bool> segment_marked;
+  // Lines only: the colour scale starts at zero, their values being sizes (apertures); false: it
+  // spans the values of the highlighted lines, as on a log scale (e.g. the loads bonds broke at).
+  bool lines_scale_from_zero = true;
   std::string flux_unit = "m/s";             // of the key arrow's value
 };
 

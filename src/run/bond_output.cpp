@@ -111,16 +111,25 @@ void BondOutput::draw_figure(const scenario::Scenario& s, const dda::System& sys
   for (int b = 0; b < system.bond_count(); ++b)
     if (system.is_bond_broken(b) && !broken_[static_cast<std::size_t>(b)]) ++unlisted;
   const char* unit = clock_ == BondClock::pass ? "pass" : clock_ == BondClock::time_step ? "time step" : "step";
-  figure.subtitle = fmt::format("Broken bonds ({} of {}; intact in grey), {}{}", listed_, system.bond_count(), when,
+  // The cracks broken from the start broke at no load, pass or time: drawn in black, outside the
+  // colour scale, which spans the breaks listed.
+  int from_start = 0;
+  for (std::size_t k = 0; k < broken_.size(); ++k)
+    if (broken_[k] && broken_at_[k] < 0.0) ++from_start;
+  figure.subtitle = fmt::format("Broken bonds ({} of {}; intact in grey{}), {}{}", listed_, system.bond_count(),
+                                from_start > 0 ? fmt::format(", {} broken from the start in black", from_start) : "",
+                                when,
                                 unlisted > 0 ? fmt::format("; {} more in the failed {}, not drawn", unlisted, unit)
                                              : std::string());
   figure.field_label = clock_ == BondClock::pass ? "broke in pass" : clock_ == BondClock::load ? "broke at the load" : "broke at (s)";
+  figure.lines_scale_from_zero = false;
   for (int b = 0; b < system.block_count(); ++b) figure.blocks.push_back(system.polygon(b));
   for (int b = 0; b < system.bond_count(); ++b) {
     const auto k = static_cast<std::size_t>(b);
     figure.segments.push_back(system.bond_face(b));
     figure.segment_values.push_back(broken_at_[k] < 0.0 ? 0.0 : broken_at_[k]);
-    figure.segment_highlighted.push_back(broken_[k] != 0);
+    figure.segment_highlighted.push_back(broken_[k] != 0 && broken_at_[k] >= 0.0);
+    figure.segment_marked.push_back(broken_[k] != 0 && broken_at_[k] < 0.0);
   }
   for (const std::string& format : s.output.figures)
     output::render_field_figure(folder_.figures() / ("cracks." + format), figure);

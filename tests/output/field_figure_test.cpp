@@ -235,5 +235,46 @@ TEST(FieldFigure, ASpreadOfRoundOffIsNotPaintedAsContrast) {
   fs::remove_all(dir);
 }
 
+// Lines marked (cracks broken from the start, on a figure coloured by the load each bond broke
+// at) are drawn black and set no part of the scale, which spans the highlighted lines' own values
+// when it need not start at zero: the first crack of 1,100 and 1,200 is painted the bar's bottom
+// colour (viridis' dark purple), where a scale from zero paints it a yellow-green (1100/1200 of
+// the way up). Each count is the difference from the same figure unmarked, scaled from zero:
+// the axes' text and the colour bar are the same in both.
+TEST(FieldFigure, MarkedLinesAreBlackAndTheScaleSpansTheHighlightedOnes) {
+  const fs::path dir = fs::temp_directory_path() / ("hydrodda-figure-marked-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  FieldFigure f;
+  f.title = "Cracks";
+  f.field_label = "broke at the load";
+  f.blocks = {{{0.0, 0.0}, {10.0, 0.0}, {10.0, 10.0}, {0.0, 10.0}}};
+  f.segments = {{Point{1.0, 1.0}, Point{1.0, 9.0}}, {Point{4.0, 1.0}, Point{4.0, 9.0}}, {Point{7.0, 1.0}, Point{7.0, 9.0}}};
+  f.segment_values = {0.0, 1100.0, 1200.0};
+  f.segment_highlighted = {false, true, true};
+  f.segment_marked = {true, false, false};
+  f.lines_scale_from_zero = false;
+  FieldFigure plain = f;
+  plain.segment_marked.clear();
+  plain.lines_scale_from_zero = true;
+  render_field_figure(dir / "marked.png", f);
+  render_field_figure(dir / "plain.png", plain);
+  const auto black = [](unsigned r, unsigned g, unsigned b) { return r < 40 && g < 40 && b < 40; };
+  const auto purple = [](unsigned r, unsigned g, unsigned b) { return r < 100 && g < 40 && b > 60; };
+  const auto count = [&](const char* name, const auto& is) {
+    return pixels_in(dir / name, 0, 0, std::numeric_limits<int>::max() / 4, std::numeric_limits<int>::max() / 4, is);
+  };
+  EXPECT_GT(count("marked.png", black) - count("plain.png", black), 1000);
+  EXPECT_GT(count("marked.png", purple) - count("plain.png", purple), 1000);
+  // With no line coloured (no bond broken after the start) there is no colour bar to read: none
+  // of its top colour (viridis' yellow) is on the page, where the figure above has some.
+  FieldFigure uncoloured = f;
+  uncoloured.segment_highlighted = {false, false, false};
+  render_field_figure(dir / "uncoloured.png", uncoloured);
+  const auto yellow = [](unsigned r, unsigned g, unsigned b) { return r > 180 && g > 180 && b < 120; };
+  EXPECT_GT(count("marked.png", yellow), 100);
+  EXPECT_EQ(count("uncoloured.png", yellow), 0);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace hydrodda::output
