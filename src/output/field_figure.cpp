@@ -73,6 +73,11 @@ struct ColourScale {
 
 bool is_set(const std::vector<bool>& flags, std::size_t i) { return i < flags.size() && flags[i]; }
 
+// Whether line i is painted its value's colour: highlighted and not marked (black).
+bool is_coloured(const FieldFigure& f, std::size_t i) {
+  return is_set(f.segment_highlighted, i) && !is_set(f.segment_marked, i);
+}
+
 // The range of lines only: on a log scale, or where it need not start at zero, of the highlighted
 // ones only; else from zero.
 void range_lines(const FieldFigure& f, ColourScale& s) {
@@ -80,7 +85,7 @@ void range_lines(const FieldFigure& f, ColourScale& s) {
     // The lines drawn grey (e.g. joints without an aperture) or black (marked) set no range.
     double highlighted_lo = std::numeric_limits<double>::infinity(), highlighted_hi = -highlighted_lo;
     for (std::size_t i = 0; i < s.values.size(); ++i)
-      if (is_set(f.segment_highlighted, i) && !is_set(f.segment_marked, i)) {
+      if (is_coloured(f, i)) {
         highlighted_lo = std::min(highlighted_lo, s.values[i]);
         highlighted_hi = std::max(highlighted_hi, s.values[i]);
       }
@@ -106,7 +111,7 @@ ColourScale make_colour_scale(const FieldFigure& f) {
     range_lines(f, s);
     s.colours_nothing = true;
     for (std::size_t i = 0; i < f.segments.size(); ++i)
-      if (is_set(f.segment_highlighted, i) && !is_set(f.segment_marked, i)) s.colours_nothing = false;
+      if (is_coloured(f, i)) s.colours_nothing = false;
   }
   // An element field's scale ends at the largest value inside the mesh: elements on its
   // boundary, where the blocks part from the fixed domain edge, hold gaps far wider than the
@@ -215,7 +220,7 @@ void draw_segments(cairo_t* cr, const Frame& fr, const FieldFigure& f, const Col
   for (int pass = 0; pass < 3; ++pass)
     for (std::size_t i = 0; i < f.segments.size(); ++i) {
       const bool marked = is_set(f.segment_marked, i);
-      const bool highlighted = !marked && is_set(f.segment_highlighted, i);
+      const bool highlighted = is_coloured(f, i);
       if (pass != (marked ? 2 : highlighted ? 1 : 0)) continue;
       const auto c = s.colour(s.lines_only ? s.values[i] : f.segment_values[i]);
       if (marked) cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
