@@ -113,9 +113,9 @@ void BondOutput::draw_figure(const scenario::Scenario& s, const dda::System& sys
   const char* unit = clock_ == BondClock::pass ? "pass" : clock_ == BondClock::time_step ? "time step" : "step";
   // The cracks broken from the start broke at no load, pass or time: drawn in black, outside the
   // colour scale, which spans the breaks listed.
+  const auto broken_from_start = [&](std::size_t k) { return broken_[k] != 0 && broken_at_[k] < 0.0; };
   int from_start = 0;
-  for (std::size_t k = 0; k < broken_.size(); ++k)
-    if (broken_[k] && broken_at_[k] < 0.0) ++from_start;
+  for (std::size_t k = 0; k < broken_.size(); ++k) from_start += broken_from_start(k) ? 1 : 0;
   figure.subtitle = fmt::format("Broken bonds ({} of {}; intact in grey{}), {}{}", listed_, system.bond_count(),
                                 from_start > 0 ? fmt::format(", {} broken from the start in black", from_start) : "",
                                 when,
@@ -128,8 +128,8 @@ void BondOutput::draw_figure(const scenario::Scenario& s, const dda::System& sys
     const auto k = static_cast<std::size_t>(b);
     figure.segments.push_back(system.bond_face(b));
     figure.segment_values.push_back(broken_at_[k] < 0.0 ? 0.0 : broken_at_[k]);
-    figure.segment_highlighted.push_back(broken_[k] != 0 && broken_at_[k] >= 0.0);
-    figure.segment_marked.push_back(broken_[k] != 0 && broken_at_[k] < 0.0);
+    figure.segment_highlighted.push_back(broken_[k] != 0 && !broken_from_start(k));
+    figure.segment_marked.push_back(broken_from_start(k));
   }
   for (const std::string& format : s.output.figures)
     output::render_field_figure(folder_.figures() / ("cracks." + format), figure);
