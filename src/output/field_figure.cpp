@@ -354,7 +354,7 @@ void label_colour_bar(cairo_t* cr, const ColourBar& bar, const FieldFigure& f, c
   double widest_tick = 0.0;
   // A log bar is ticked at values (decades, or 1, 2, 5 times them over a short range), placed
   // at their log10, and labelled with the value itself.
-  std::vector<double> ticks = nice_ticks(s.lo, s.hi, 6);
+  std::vector<double> ticks = f.whole_numbers ? whole_number_ticks(s.lo, s.hi, 6) : nice_ticks(s.lo, s.hi, 6);
   if (f.logarithmic) {
     ticks.clear();
     for (double v : log_ticks(std::pow(10.0, s.lo), std::pow(10.0, s.hi))) ticks.push_back(std::log10(v));

@@ -42,6 +42,8 @@ struct FieldFigure {
   // Lines only: the colour scale starts at zero, their values being sizes (apertures); false: it
   // spans the values of the highlighted lines, as on a log scale (e.g. the loads bonds broke at).
   bool lines_scale_from_zero = true;
+  // The values are counts (e.g. the pass a bond broke in): the bar is ticked at whole numbers.
+  bool whole_numbers = false;
   std::string flux_unit = "m/s";             // of the key arrow's value
 };
 

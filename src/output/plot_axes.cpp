@@ -45,6 +45,15 @@ std::vector<double> nice_ticks(double lo, double hi, int count) {
   return ticks;
 }
 
+std::vector<double> whole_number_ticks(double lo, double hi, int count) {
+  const double first = std::ceil(lo - 1e-9), last = std::floor(hi + 1e-9);
+  if (!(last >= first)) return {};
+  const double step = std::max(1.0, nice_step(lo, hi, count));
+  std::vector<double> ticks;
+  for (double k = std::ceil(first / step); k * step <= last; k += 1.0) ticks.push_back(k * step);
+  return ticks;
+}
+
 std::vector<double> log_ticks(double lo, double hi) {
   if (!(lo > 0.0) || !(hi > lo)) return {};
   const int first = static_cast<int>(std::ceil(std::log10(lo) - 1e-9));

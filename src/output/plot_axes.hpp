@@ -14,6 +14,9 @@ double nice_step(double lo, double hi, int count);
 // "Nice" tick values covering [lo, hi] with about `count` ticks (1, 2, 5 × 10^k steps).
 std::vector<double> nice_ticks(double lo, double hi, int count);
 
+// The same for a count (passes, steps): whole numbers only, the step at least 1.
+std::vector<double> whole_number_ticks(double lo, double hi, int count);
+
 // Ticks of a log10 axis over [lo, hi] (both > 0): the decades inside, every n-th when there
 // are many, so at most about 8 are labelled; 1, 2 and 5 times them when fewer than two
 // decades lie inside, or the linear nice_ticks where those give fewer than two.

@@ -123,6 +123,7 @@ void BondOutput::draw_figure(const scenario::Scenario& s, const dda::System& sys
                                              : std::string());
   figure.field_label = clock_ == BondClock::pass ? "broke in pass" : clock_ == BondClock::load ? "broke at the load" : "broke at (s)";
   figure.lines_scale_from_zero = false;
+  figure.whole_numbers = clock_ == BondClock::pass;
   for (int b = 0; b < system.block_count(); ++b) figure.blocks.push_back(system.polygon(b));
   for (int b = 0; b < system.bond_count(); ++b) {
     const auto k = static_cast<std::size_t>(b);

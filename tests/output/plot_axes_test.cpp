@@ -13,6 +13,17 @@ TEST(NiceTicks, StepsOfOneTwoFive) {
   EXPECT_NEAR(t[1] - t[0], 0.02, 1e-15);
 }
 
+// A count's bar (the pass a bond broke in, 1 to 3) is ticked at whole numbers where the nice
+// ticks would put 1.5 and 2.5; over a wide range the nice step stands.
+TEST(WholeNumberTicks, ACountIsTickedAtWholeNumbersOnly) {
+  EXPECT_EQ(nice_ticks(1.0, 3.0, 6), (std::vector<double>{1, 1.5, 2, 2.5, 3}));
+  EXPECT_EQ(whole_number_ticks(1.0, 3.0, 6), (std::vector<double>{1, 2, 3}));
+  EXPECT_EQ(whole_number_ticks(0.0, 40.0, 6), (std::vector<double>{0, 10, 20, 30, 40}));
+  EXPECT_EQ(whole_number_ticks(3.0, 47.0, 6), (std::vector<double>{10, 20, 30, 40}));
+  EXPECT_EQ(whole_number_ticks(1.5, 2.5, 6), (std::vector<double>{2}));
+  EXPECT_TRUE(whole_number_ticks(0.2, 0.8, 6).empty());
+}
+
 TEST(Viridis, EndsOfTheMap) {
   EXPECT_NEAR(viridis(0.0)[0], 0.267004, 1e-12);
   EXPECT_NEAR(viridis(1.0)[1], 0.906157, 1e-12);
