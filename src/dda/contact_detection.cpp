@@ -80,13 +80,36 @@ constexpr double kShareRoundOff = 1e-12;
 double compute_gap(Point p, Point a, Point b, double length) { return -geometry::orient(a, b, p) / length; }
 double compute_gap(Point p, Point a, Point b) { return compute_gap(p, a, b, geometry::distance(a, b)); }
 
+// Whether vertex p, `before` and `after` its neighbours on its own block, may touch the edge
+// from a to b: both incident edges point away from the edge's block, within the wedge
+// tolerance (a reflex vertex, or one whose own block lies across the edge's line, never
+// touches that face).
+bool may_touch(Point p, Point before, Point after, Point a, Point b) {
+  const double length = geometry::distance(a, b);
+  const Point n{(b.y - a.y) / length, -(b.x - a.x) / length};
+  return dot(before - p, n) >= -kWedgeTolerance * geometry::distance(before, p) &&
+         dot(after - p, n) >= -kWedgeTolerance * geometry::distance(after, p);
+}
+
 // Whether a vertex at `depth` behind the line of edge e of polygon `eb` entered by that edge:
-// it lies inside the polygon and no edge of it is nearer than e by more than `tie`.
-bool is_entrance_edge(Point p, std::span<const Point> eb, int e, double depth, double tie) {
+// it lies inside the polygon and no other edge is nearer than e by more than `tie`, leaving
+// out a nearer edge that the vertex cannot touch and lies deeper than the tie behind.
+// An edge the vertex's own block lies across is no way in: a thin wedge's tip that entered by
+// a face near its end lies nearer the corner's other edge, across which its block lies; taken
+// as the nearest, that edge left the tip no contact at all, and it ran on into the block by
+// millimetres a step. A vertex within the tie of such an edge stands on the block's boundary
+// there, beside it (the corners of a tessellated rock's sub-blocks at a node, a hair apart
+// along the face they share the line of): it entered by no edge, and e is no contact for it.
+bool is_entrance_edge(Point p, Point before, Point after, std::span<const Point> eb, int e, double depth,
+                      double tie) {
   if (!geometry::contains(eb, p)) return false;
   const int ne = static_cast<int>(eb.size());
-  for (int f = 0; f < ne; ++f)
-    if (f != e && geometry::distance_to_segment(p, eb[f], eb[(f + 1) % ne]) + tie < depth) return false;
+  for (int f = 0; f < ne; ++f) {
+    if (f == e) continue;
+    const Point a = eb[f], b = eb[(f + 1) % ne];
+    const double to_f = geometry::distance_to_segment(p, a, b);
+    if (to_f + tie < depth && (to_f <= tie || may_touch(p, before, after, a, b))) return false;
+  }
   return true;
 }
 
@@ -147,9 +170,7 @@ void test_vertex_edge(std::span<const Point> va, int a, int v, std::span<const P
   // point away from block b (a reflex vertex never touches a face).
   const Point before = va[(v + nv - 1) % nv];
   const Point after = va[(v + 1) % nv];
-  const Point n{(e1.y - e0.y) / length, -(e1.x - e0.x) / length};
-  if (dot(before - p, n) < -kWedgeTolerance * geometry::distance(before, p)) return;
-  if (dot(after - p, n) < -kWedgeTolerance * geometry::distance(after, p)) return;
+  if (!may_touch(p, before, after, e0, e1)) return;
   // Behind the edge's line is a penetration only inside block b, and only of the edge the
   // vertex came in by, the nearest (Shi's entrance edge). Where the contact distance nears a
   // block's size, a vertex just beside b, or just inside it near another edge, also lies
@@ -158,7 +179,7 @@ void test_vertex_edge(std::span<const Point> va, int a, int v, std::span<const P
   // settled step leaves penetrations far below the corner tie, so real contacts of a running
   // model are never tested here; after the wedge test, as it is the dearer.
   const double tie = kCornerTieTolerance * distance;
-  if (-gap > tie && !is_entrance_edge(p, eb, e, -gap, tie)) return;
+  if (-gap > tie && !is_entrance_edge(p, before, after, eb, e, -gap, tie)) return;
   // At or past an end of the edge (vertex–vertex): keep only the entrance edge, the one of
   // the two edges meeting there whose line the vertex is farther outside (Shi 1988, §4.3).
   // Corners that coincide (side-by-side blocks) leave both gaps equal up to the motion of a

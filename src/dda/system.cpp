@@ -215,9 +215,8 @@ void System::detect_contacts() {
   for (const Block& b : blocks_) buffers.polygons.emplace_back(b.polygon);
   ContactCandidates& candidates = buffers.candidates;
   contact_search_.find(buffers.polygons, buffers.fixed, candidates);
-  drop_corner_contacts_within_intact_rock(candidates);
-  drop_second_contacts_at_intact_face_ends(candidates);
-  drop_corner_candidates_not_kept(candidates);
+  if (breakable_bonds_ > 0) buffers.before_bond_rules = candidates;
+  apply_bond_rules(candidates);
   resize_for_overwrite(active_, candidates.size());
   // The linearisation in chunks of contacts, over the threads: each contact writes only its own.
   numerics::for_each_chunk(many_contacts_to_linearise(), candidates.size(), kContactChunk,
@@ -944,10 +943,20 @@ StepReport System::step() {
   const double first_time_step = dt_;
   std::string first_failure;
   tried_multipliers_.clear();
+  // The bonds broken by a settled try that ran a corner into a block where their breaking
+  // freed a contact (breaks_let_corners_in): the step is tried again at the same time step
+  // with them broken from its start.
+  std::vector<std::pair<int, BondFailure>> broken_from_start;
   for (;;) {
-    report.most_breaks_in_a_cut_try = std::max(report.most_breaks_in_a_cut_try, static_cast<int>(pending_breaks_.size()));
-    if (!pending_breaks_.empty()) last_cut_try_breaks_ = pending_breaks_;
+    if (broken_from_start.empty()) {
+      report.most_breaks_in_a_cut_try = std::max(report.most_breaks_in_a_cut_try, static_cast<int>(pending_breaks_.size()));
+      if (!pending_breaks_.empty()) last_cut_try_breaks_ = pending_breaks_;
+    }
     undo_pending_bond_breaks();  // a retried step breaks its bonds anew
+    for (const auto& [bond, mode] : broken_from_start) {
+      bond_broken_[static_cast<std::size_t>(bond)] = 1;
+      pending_breaks_.emplace_back(bond, mode);
+    }
     detect_contacts();
     start_from_tried_multipliers();  // those of a try stalled at the tolerance (lagrangian_limits.cpp)
     tried_multipliers_.clear();
@@ -969,6 +978,12 @@ StepReport System::step() {
         }
       }
     }
+    if (settled && largest <= allowed_displacement_ && softening_.empty() && breaks_let_corners_in(d)) {
+      broken_from_start = pending_breaks_;
+      ++report.tries_with_bonds_broken;
+      continue;
+    }
+    broken_from_start.clear();
     if (settled && largest <= allowed_displacement_) {
       report.max_displacement = largest;
       contact_search_.add_motion(largest);

@@ -41,6 +41,7 @@ struct StepReport {
   int lagrangian_iterations = 0;
   int retries = 0;            // step cuts before this step settled
   int most_breaks_in_a_cut_try = 0;  // the most bonds one try broke before it was cut (mended then)
+  int tries_with_bonds_broken = 0;   // tries again from the start with bonds broken (breaks_let_corners_in)
   int contacts = 0;           // closed contacts at the end of the step
   double max_displacement = 0.0;  // largest vertex displacement in the step
   double max_penetration = 0.0;   // deepest closed contact at the end of the step
@@ -342,6 +343,12 @@ class System {
   // bonds.cpp: of the candidates a hair past a corner (ContactCandidate::kept_if_closed), keeps
   // those at a node of intact rock whose contact was closed at the last step.
   void drop_corner_candidates_not_kept(ContactCandidates& candidates) const;
+  // The three rules above, in their order.
+  void apply_bond_rules(ContactCandidates& candidates) const;
+  // bonds.cpp: whether the bonds broken in the try under way give back a contact that the bond
+  // rules dropped at its detection, while they were intact, and whose vertex the try's motion
+  // took into the edge's block.
+  bool breaks_let_corners_in(const Eigen::VectorXd& d) const;
   // A contact that touches at the start takes the initial stress's force across its faces: its
   // multiplier the normal force, its shear reference moved so that its spring holds the shear.
   void preload_contact(ActiveContact& c) const;
@@ -535,6 +542,7 @@ class System {
     std::vector<std::span<const Point>> polygons;  // the blocks', in block order
     std::vector<char> fixed;
     ContactCandidates candidates;
+    ContactCandidates before_bond_rules;  // the search's, kept where bonds may break
   };
   ContactSearch contact_search_{0.0, 0.0};  // made with the contact distance
   DetectionBuffers detection_;

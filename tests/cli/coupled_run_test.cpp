@@ -2,10 +2,10 @@
 // history shows each pass recomputing the porosity, and a run cut short says it did not converge.
 
 #include <gtest/gtest.h>
-#include <fmt/format.h>
 
 #include <boost/property_tree/ptree.hpp>
 #include <boost/property_tree/xml_parser.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -606,48 +606,50 @@ TEST(CoupledRun, SealConductivityRisesWithTheReservoirHead) {
 }
 
 // The symmetric flexure at the paper's own pressures, 11 MPa under the layer and 6 MPa over it
-// (a 510 m head differential against a 2 m layer of unit weight 1 t/m³), lifts the fractured
-// span off its seat: the blocks are thrown metres. The run does not grind on to a failed DDA
-// step: it ends saying that no mechanical equilibrium exists under this load and naming the
-// blocks that escape and how far they moved, with the state it reached on disk.
-TEST(CoupledRun, FlexureAtThePapersPressuresSaysWhichBlocksEscape) {
+// (a 510 m head differential against a 2 m layer of unit weight 1 t/m³; Rouainia et al. 2006,
+// §4.2.1: "the layer bends upwards ... resulting in a symmetric flexural shape"). Pinned at its
+// top corners, the fractured span carries the uplift as an inverted voussoir arch
+// (symmetric_flexure_20m.toml's header): its compression hinge is the bottom corners of the two
+// blocks at mid-span, and the span rises as far as the arch's halves shorten under their
+// thrust. The run converges and the span stands lifted; the model and its load are mirror
+// symmetric about x = 8 m, so each block rises as its mirror image does (tolerance 1 mm against a
+// lift of 0.21 m at mid-span, measured 1e-4 m: what an unsymmetric mesh and the loop's tolerance
+// leave), and along each row of blocks the lift grows towards mid-span. (Before a vertex was
+// given the edge it came in by when its own block lies across the nearer edge, the hinge's
+// corners had no contact, lay 0.4 mm inside each other, and the span went up through its own
+// hinge: "no equilibrium", 16 blocks thrown metres; docs/studies/2026-12-01-wedge-tip-entrance-edge.md.)
+TEST(CoupledRun, FlexureAtThePapersPressuresStandsAsAnArchLiftedSymmetrically) {
   const fs::path flexure = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/paper/symmetric_flexure_20m.toml";
   const fs::path file = edited_scenario(flexure, "hydrodda-flexure-11mpa",
                                         {{"head = 20.0", "pressure = 11.0e6"},
                                          {"head = 0.0", "pressure = 6.0e6"},
                                          {"figures = [\"png\"]", "figures = []"}});
-  const fs::path out = fs::temp_directory_path() / "hydrodda-flexure-11mpa-out";
-  fs::remove_all(out);
-  const auto result = run_program("-q run " + file.string() + " -o " + out.string());
-  EXPECT_EQ(result.exit_code, 1) << result.output;
-  const auto summary = nlohmann::json::parse(std::ifstream(out / "summary.json"));
-  EXPECT_EQ(summary["converged"], false);
-  const std::string message = summary["message"];
-  // The breach named as such: its status, the load that drives it (the base's pressure, the
-  // highest, first), no DDA step cut to nothing and no linear algebra.
-  EXPECT_EQ(summary["status"], "no equilibrium");
-  EXPECT_NE(message.find("no mechanical equilibrium under flow.boundary \"bottom\" pressure = 1.1e+07 Pa, against "
-                         "\"top\" pressure = 6e+06 Pa: "),
-            std::string::npos) << message;
-  for (const char* absent : {"time step fell below", "CHOLMOD", "positive definite", "flow solve failed"})
-    EXPECT_EQ(message.find(absent), std::string::npos) << absent << ": " << message;
-  // The first block named is the one summary.json has moved farthest, by more than its size,
-  // at its centroid there, and the distance named is its displacement (printed to 3 digits).
-  double farthest = 0.0;
-  int farthest_block = -1;
-  for (const auto& block : summary["blocks"]) {
-    const double moved = std::hypot(block["displacement"][0].get<double>(), block["displacement"][1].get<double>());
-    if (moved > farthest) farthest = moved, farthest_block = block["id"];
+  const auto summary = run_to_summary(file);
+  EXPECT_EQ(summary["status"], "ok") << summary["message"];
+  EXPECT_EQ(summary["converged"], true) << summary["message"];
+  struct Lift {
+    double x, y, uy;
+  };
+  std::vector<Lift> lifts;
+  for (const auto& block : summary["blocks"])
+    lifts.push_back({block["centroid"][0].get<double>(), block["centroid"][1].get<double>(),
+                     block["displacement"][1].get<double>()});
+  constexpr double kMidSpan = 8.0;
+  double highest = 0.0;
+  for (const Lift& b : lifts) {
+    const auto mirror = std::min_element(lifts.begin(), lifts.end(), [&](const Lift& p, const Lift& q) {
+      return std::hypot(p.x - (2 * kMidSpan - b.x), p.y - b.y) < std::hypot(q.x - (2 * kMidSpan - b.x), q.y - b.y);
+    });
+    EXPECT_NEAR(b.uy, mirror->uy, 1e-3) << "the block at (" << b.x << ", " << b.y << ") and its mirror image";
+    EXPECT_GT(b.uy, 0.0) << "the block at (" << b.x << ", " << b.y << ")";
+    highest = std::max(highest, b.uy);
+    // Its neighbour in the row one block nearer mid-span rises more.
+    for (const Lift& inner : lifts)
+      if (std::abs(inner.y - b.y) < 0.1 && std::abs(inner.x - kMidSpan) < std::abs(b.x - kMidSpan) - 0.5 &&
+          std::abs(inner.x - kMidSpan) > std::abs(b.x - kMidSpan) - 1.5)
+        EXPECT_GT(inner.uy, b.uy) << "at x = " << inner.x << " against x = " << b.x;
   }
-  const auto& centroid = summary["blocks"][farthest_block]["centroid"];
-  const auto named = message.find(fmt::format("block {} at ({:.4g}, {:.4g}) (moved ", farthest_block,
-                                              centroid[0].get<double>(), centroid[1].get<double>()));
-  ASSERT_NE(named, std::string::npos) << message;
-  const double stated = std::stod(message.substr(message.find("(moved ", named) + 7));
-  EXPECT_NEAR(stated, farthest, 5e-3 * farthest) << message;
-  EXPECT_GT(farthest, std::sqrt(summary["blocks"][farthest_block]["area"].get<double>()));
-  fs::remove_all(out);
-  fs::remove(file);
+  EXPECT_GT(highest, 0.1) << "the span did not rise";
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <random>
@@ -310,6 +311,68 @@ TEST(ContactDetection, ReflexVertexIsNotAContact) {
       EXPECT_NE(c.key.vertex, 3) << "reflex vertex (1,1) taken";
     }
   EXPECT_FALSE(found.empty());
+}
+
+// A thin wedge's tip (a sub-block of 10° whose bonds had all broken, beside the strip seal's
+// crack) that entered a triangle by their shared face near its end, 1.16 mm behind that face
+// and 0.62 mm behind the triangle's other edge at the corner: the other edge is the nearer,
+// but the wedge's own block lies across its line, so the tip cannot have come in by it. The
+// face is the entrance edge, with the tip's depth behind it as the penetration (to 1e-6 m,
+// the coordinates' digits); before, the nearer edge was taken as the entrance and then refused
+// by the wedge test, leaving the tip no contact at all, and it ran on into the triangle by
+// millimetres a step until the step failed.
+TEST(ContactDetection, AWedgesTipPastAFacesEndEntersByTheFaceItsBlockCanTouch) {
+  const std::vector<Point> triangle{{0.005415, 0.396097}, {0.190718, 0.147996}, {0.173636, 0.343179}};
+  const std::vector<Point> wedge{{0.192567, 0.147960}, {0.230583, 0.134026}, {0.172498, 0.342866}};
+  ContactCandidates found;
+  find_pair_contacts(triangle, 0, wedge, 1, 0.002, found);
+  const auto tip = std::find_if(found.begin(), found.end(), [](const ContactCandidate& c) {
+    return c.key.block_i == 1 && c.key.vertex == 2;
+  });
+  ASSERT_NE(tip, found.end());
+  EXPECT_EQ(tip->key.block_j, 0);
+  EXPECT_EQ(tip->key.edge, 1);
+  EXPECT_NEAR(tip->penetration, 1.161e-3, 1e-6);
+}
+
+// Two corners tip to tip (sub-blocks of the Brazilian disc at D/40 in its cascade past the
+// peak): vertex 1 of the upper triangle lies 19 µm from the lower triangle's corner, 14 µm
+// behind the line of its edge 0 and 4 µm behind that of its edge 2. The upper triangle lies
+// wholly outside edge 0 near its tip but straddles the line of edge 2 beyond the corner, so
+// the tip can push only on edge 0: that is its contact, at its depth behind it (to 1e-9 m, the
+// coordinates' digits), though edge 2 is the nearer.
+TEST(ContactDetection, ATipPastACornerPushesOnTheFaceItsBlockLiesOutside) {
+  const std::vector<Point> lower{{0.049581712, 0.231489739}, {0.046126297, 0.227216401}, {0.056196001, 0.213463710}};
+  const std::vector<Point> upper{{0.030569152, 0.248335465}, {0.049584343, 0.231470795}, {0.045413071, 0.251505801}};
+  ContactCandidates found;
+  find_pair_contacts(lower, 0, upper, 1, 8.328e-5, found);
+  const auto tip = std::find_if(found.begin(), found.end(), [](const ContactCandidate& c) {
+    return c.key.block_i == 1 && c.key.vertex == 1;
+  });
+  ASSERT_NE(tip, found.end());
+  EXPECT_EQ(tip->key.block_j, 0);
+  EXPECT_EQ(tip->key.edge, 0);
+  EXPECT_NEAR(tip->penetration, 1.3957e-5, 1e-9);
+}
+
+// Two sub-blocks of a tessellated rock at a node (the strip seal's, by its crack), their
+// corners a hair apart along the line they both lie on one side of: vertex 2 of the left one
+// stands 7 nm behind the line of the right one's edge 1, 64 µm short of that edge's end at the
+// right one's 11° tip, and so 12 µm behind the line of its edge 2, across the sliver. Its own
+// block lies across edge 1's line (they lie on the same side of it), but the vertex is on
+// that edge, within the corner tie (1e-3 of the contact distance): it stands on the block's
+// boundary and entered by neither edge. Given a contact on edge 2, 12 µm deep, the strip
+// seal's step failed, its contact forces never settling.
+TEST(ContactDetection, ACornerOnTheLineOfANeighboursEdgeAtANodeIsNoContactWithTheEdgeBehind) {
+  const std::vector<Point> left{{5.936756653, 5.859959735}, {6.266361218, 5.953068981}, {6.070464229, 6.013364427}};
+  const std::vector<Point> right{{6.230099477, 6.133508480}, {6.192261738, 6.148011061}, {6.070421335, 6.013317018}};
+  ContactCandidates found;
+  find_pair_contacts(left, 0, right, 1, 1.889e-3, found);
+  for (const ContactCandidate& c : found) {
+    if (c.key.block_i == 0 && c.key.vertex == 2) {
+      EXPECT_NE(c.key.edge, 2) << "penetration " << c.penetration;
+    }
+  }
 }
 
 }  // namespace

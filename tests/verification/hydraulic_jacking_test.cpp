@@ -52,6 +52,28 @@ void expect_last_held_told(const RunResult& r, const std::string& message) {
   EXPECT_EQ(open_ids, rows_open) << "fractures.csv's rows of coupling iteration " << pass;
 }
 
+// The first block a run without equilibrium names is the one summary.json has moved farthest,
+// by more than its size, at its centroid there, and the distance named is its displacement
+// (printed to 3 significant digits: within 5e-3 of it).
+void expect_farthest_block_named(const nlohmann::json& summary, const std::string& message) {
+  double farthest = 0.0;
+  int farthest_block = -1;
+  for (const auto& block : summary["blocks"]) {
+    const double moved = std::hypot(block["displacement"][0].get<double>(), block["displacement"][1].get<double>());
+    if (moved > farthest) farthest = moved, farthest_block = block["id"];
+  }
+  ASSERT_GE(farthest_block, 0) << "no block in summary.json";
+  const auto& centroid = summary["blocks"][farthest_block]["centroid"];
+  char named[128];
+  std::snprintf(named, sizeof named, "block %d at (%.4g, %.4g) (moved ", farthest_block, centroid[0].get<double>(),
+                centroid[1].get<double>());
+  const auto at = message.find(named);
+  ASSERT_NE(at, std::string::npos) << named << " in " << message;
+  const double stated = std::stod(message.substr(at + std::string(named).size()));
+  EXPECT_NEAR(stated, farthest, 5e-3 * farthest) << message;
+  EXPECT_GT(farthest, std::sqrt(summary["blocks"][farthest_block]["area"].get<double>()));
+}
+
 TEST(CoupledVerification, HydraulicJackingStartsAtTheForceBalance) {
   // The fracture at p = rho_w g H (overpressure, h_ref = 0 on the top) lifts the upper block
   // with rho_w g H L per metre against its weight rho_r g h L: it lifts when
@@ -88,6 +110,7 @@ TEST(CoupledVerification, HydraulicJackingStartsAtTheForceBalance) {
       std::snprintf(load, sizeof load, "head = %.4g m", ratio * h_star);
       EXPECT_NE(message.find(load), std::string::npos) << message;
       EXPECT_NE(message.find("block 1 at ("), std::string::npos) << message;
+      expect_farthest_block_named(r.summary, message);
       expect_last_held_told(r, message);
     }
   }
