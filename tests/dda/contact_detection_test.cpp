@@ -313,6 +313,17 @@ TEST(ContactDetection, ReflexVertexIsNotAContact) {
   EXPECT_FALSE(found.empty());
 }
 
+// Expects vertex `vertex` of block 1 among `found` to touch edge `edge` of block 0, `depth`
+// behind its line (within `tolerance`).
+void expect_tip_on_edge(const ContactCandidates& found, int vertex, int edge, double depth, double tolerance) {
+  const auto tip = std::find_if(found.begin(), found.end(),
+                                [&](const ContactCandidate& c) { return c.key.block_i == 1 && c.key.vertex == vertex; });
+  ASSERT_NE(tip, found.end());
+  EXPECT_EQ(tip->key.block_j, 0);
+  EXPECT_EQ(tip->key.edge, edge);
+  EXPECT_NEAR(tip->penetration, depth, tolerance);
+}
+
 // A thin wedge's tip (a sub-block of 10° whose bonds had all broken, beside the strip seal's
 // crack) that entered a triangle by their shared face near its end, 1.16 mm behind that face
 // and 0.62 mm behind the triangle's other edge at the corner: the other edge is the nearer,
@@ -326,13 +337,7 @@ TEST(ContactDetection, AWedgesTipPastAFacesEndEntersByTheFaceItsBlockCanTouch) {
   const std::vector<Point> wedge{{0.192567, 0.147960}, {0.230583, 0.134026}, {0.172498, 0.342866}};
   ContactCandidates found;
   find_pair_contacts(triangle, 0, wedge, 1, 0.002, found);
-  const auto tip = std::find_if(found.begin(), found.end(), [](const ContactCandidate& c) {
-    return c.key.block_i == 1 && c.key.vertex == 2;
-  });
-  ASSERT_NE(tip, found.end());
-  EXPECT_EQ(tip->key.block_j, 0);
-  EXPECT_EQ(tip->key.edge, 1);
-  EXPECT_NEAR(tip->penetration, 1.161e-3, 1e-6);
+  expect_tip_on_edge(found, 2, 1, 1.161e-3, 1e-6);
 }
 
 // Two corners tip to tip (sub-blocks of the Brazilian disc at D/40 in its cascade past the
@@ -346,13 +351,7 @@ TEST(ContactDetection, ATipPastACornerPushesOnTheFaceItsBlockLiesOutside) {
   const std::vector<Point> upper{{0.030569152, 0.248335465}, {0.049584343, 0.231470795}, {0.045413071, 0.251505801}};
   ContactCandidates found;
   find_pair_contacts(lower, 0, upper, 1, 8.328e-5, found);
-  const auto tip = std::find_if(found.begin(), found.end(), [](const ContactCandidate& c) {
-    return c.key.block_i == 1 && c.key.vertex == 1;
-  });
-  ASSERT_NE(tip, found.end());
-  EXPECT_EQ(tip->key.block_j, 0);
-  EXPECT_EQ(tip->key.edge, 0);
-  EXPECT_NEAR(tip->penetration, 1.3957e-5, 1e-9);
+  expect_tip_on_edge(found, 1, 0, 1.3957e-5, 1e-9);
 }
 
 // Two sub-blocks of a tessellated rock at a node (the strip seal's, by its crack), their
