@@ -89,7 +89,7 @@ HeldState BreachFiles::measure(const SearchStep& step, const output::RunSummary&
   HeldState h;
   h.load = step.load;
   h.beyond_limit = step.result.status == StepStatus::beyond_limit;
-  h.unsettled = step.result.status == StepStatus::held_unsettled;
+  h.unsettled = !summary.converged;  // held unsettled, beyond the limit or not
   for (const std::string& region : regions_) {
     std::optional<double> value;
     if (summary.flow && !h.unsettled)  // an unsettled answer is a range, not one number
@@ -239,7 +239,7 @@ void BreachFiles::draw_curves(const std::string& format) const {
   k.y_label = "K_eff / K_matrix";
   k.y_log = true;
   k.open_label = "beyond the limit";
-  k.range_label = "held, unsettled (last passes)";
+  k.range_label = "unsettled (its last passes)";
   k.marks_x = broken;
   k.marks_label = "did not hold";
   for (std::size_t r = 0; r < regions_.size(); ++r) {

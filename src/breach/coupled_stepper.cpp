@@ -148,6 +148,7 @@ StepResult CoupledStepper::try_load(double load) {
   last_load_ = load;
   trail_.clear();
   last_ranges_.clear();
+  last_unsettled_ = false;
   StepResult result;
   const int before = model_->iterations();
   StepObserver observer(stop_requested_, model_->scenario().coupling.settle, trail_,
@@ -246,19 +247,39 @@ StepStatus CoupledStepper::judge_unconverged_state(int passes, std::string& mess
   const std::string ranges = describe_ranges(last_ranges_, model_->scenario().flow->regions);
   message = fmt::format("the coupling loop did not converge in {} passes; the blocks came to rest in each of the last "
                         "{}{}", passes, over, ranges.empty() ? "" : ", over which " + ranges);
-  return StepStatus::held_unsettled;
+  last_unsettled_ = true;
+  return judge_unsettled_limit(message);
+}
+
+// A state that held unsettled is beyond the limit where the limited value passed its bound in
+// any of its last passes: a region's K_eff/K_m by the largest of its range, any other value by
+// the last pass's (summary.json's).
+StepStatus CoupledStepper::judge_unsettled_limit(std::string& message) const {
+  if (!limit_) return StepStatus::held_unsettled;
+  double value = limited_value();
+  const std::vector<scenario::FlowRegion>& regions = scenario().flow->regions;
+  for (std::size_t r = 0; r < last_ranges_.size() && r < regions.size(); ++r)
+    if (last_ranges_[r] && limit_->path == "flow.regions." + regions[r].name + ".normalised_conductivity")
+      value = last_ranges_[r]->largest;
+  if (value <= limit_->most) return StepStatus::held_unsettled;
+  message = fmt::format("{} up to {:.4g} over its last passes is above the limit {:.4g}; {}", limit_->path, value,
+                        limit_->most, message);
+  return StepStatus::beyond_limit;
+}
+
+double CoupledStepper::limited_value() const {
+  const std::optional<std::string> value = output::summary_values(output::format_summary(summary()), {limit_->path})[0];
+  if (!value) throw std::invalid_argument(fmt::format("--limit {}: summary.json has no value there", limit_->path));
+  try {
+    return std::stod(*value);
+  } catch (const std::exception&) {
+    throw std::invalid_argument(fmt::format("--limit {}: summary.json holds '{}' there, not a number", limit_->path, *value));
+  }
 }
 
 StepStatus CoupledStepper::judge_converged_state(std::string& message) const {
   if (!limit_) return StepStatus::held;
-  const std::optional<std::string> value = output::summary_values(output::format_summary(summary()), {limit_->path})[0];
-  if (!value) throw std::invalid_argument(fmt::format("--limit {}: summary.json has no value there", limit_->path));
-  double number = 0.0;
-  try {
-    number = std::stod(*value);
-  } catch (const std::exception&) {
-    throw std::invalid_argument(fmt::format("--limit {}: summary.json holds '{}' there, not a number", limit_->path, *value));
-  }
+  const double number = limited_value();
   if (number <= limit_->most) return StepStatus::held;
   message = fmt::format("{} = {:.4g} is above the limit {:.4g}", limit_->path, number, limit_->most);
   return StepStatus::beyond_limit;
@@ -268,6 +289,7 @@ void CoupledStepper::keep_state() {
   kept_ = model_->export_state();
   kept_load_ = last_load_;
   kept_status_ = last_status_;
+  kept_unsettled_ = last_unsettled_;
   kept_ranges_ = last_ranges_;
   kept_range_passes_ = last_range_passes_;
 }
@@ -277,6 +299,7 @@ void CoupledStepper::back_to_kept_state() {
   set_load(kept_load_);
   last_load_ = kept_load_;
   last_status_ = kept_status_;
+  last_unsettled_ = kept_unsettled_;
   last_ranges_ = kept_ranges_;
   last_range_passes_ = kept_range_passes_;
 }
@@ -285,7 +308,7 @@ output::RunSummary CoupledStepper::summary() const {
   output::RunSummary summary = model_->summary();
   // An unsettled state is the last pass's of a loop that did not converge: each region's answer
   // is the range over its last passes, not one number.
-  summary.converged = last_status_ != StepStatus::held_unsettled;
+  summary.converged = !last_unsettled_;
   const std::vector<scenario::FlowRegion>& regions = scenario().flow->regions;
   if (summary.flow)
     for (output::RegionSummary& region : summary.flow->regions)

@@ -69,6 +69,8 @@ class CoupledStepper final : public LoadStepper {
   void set_load(double load);
   StepStatus judge_converged_state(std::string& message) const;
   StepStatus judge_unconverged_state(int passes, std::string& message);
+  StepStatus judge_unsettled_limit(std::string& message) const;
+  double limited_value() const;  // the --limit path's value in summary()
   std::string describe_not_at_rest(double largest_opening) const;
   void record_pass(const coupling::PassReport& report);
 
@@ -84,6 +86,7 @@ class CoupledStepper final : public LoadStepper {
   PassTrail trail_;  // the passes of the step under way (or the last)
   // How the last try and the kept state ended, and their K_eff/K_m ranges when unsettled.
   StepStatus last_status_ = StepStatus::held, kept_status_ = StepStatus::held;
+  bool last_unsettled_ = false, kept_unsettled_ = false;  // held unsettled, beyond the limit or not
   std::vector<std::optional<ValueRange>> last_ranges_, kept_ranges_;
   int last_range_passes_ = 0, kept_range_passes_ = 0;  // the passes those ranges are over
   // What summary() measures the fractures with (none for listed blocks), found once.

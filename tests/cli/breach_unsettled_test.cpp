@@ -100,3 +100,33 @@ TEST(BreachUnsettled, ConvergedOnlyMakesTheUnsettledStepTheBreach) {
   const std::string verdict = breach["verdict"];
   EXPECT_EQ(verdict.rfind("converged-only breach between", 0), 0u) << verdict;
 }
+
+// A --limit on the seal's K_eff/K_m at 6.1, inside the unsettled step's swing (measured 6.03 to
+// 6.26 over its last 10 passes) and above the converged step's: the unsettled state passed the
+// bound in some of its last passes, so it is beyond the limit (it held, unsettled, before the
+// limit looked at it), the breach is there, and breach.csv still gives its answer as a range.
+TEST(BreachUnsettled, AnUnsettledStepWhoseSwingPassesTheLimitIsBeyondIt) {
+  const fs::path seal = seal_of_20_passes("hydrodda-breach-unsettled-limit");
+  const auto out = hydrodda::testing::fresh_dir("hydrodda-breach-unsettled-limit-out");
+  const std::string k = "flow.regions.seal.normalised_conductivity";
+  const auto result = run_program("breach " + seal.string() + kLoads + " --tolerance 0.4 --limit " + k + "=6.1 -o " +
+                                  out.path.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const auto rows = read_csv(out.path / "breach.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  const auto& header = rows[0];
+  const auto at = [&](std::size_t row, const std::string& name) { return rows[row][column(header, name)]; };
+  EXPECT_EQ(at(1, "status"), "held");
+  EXPECT_LT(std::stod(at(1, k)), 6.1);
+  EXPECT_EQ(at(2, "status"), "beyond limit");
+  EXPECT_TRUE(at(2, k).empty());
+  const double least = std::stod(at(2, k + "_least")), largest = std::stod(at(2, k + "_largest"));
+  EXPECT_LT(least, largest);
+  EXPECT_GT(largest, 6.1);
+  EXPECT_NE(at(2, "message").find("over its last passes is above the limit"), std::string::npos) << at(2, "message");
+  EXPECT_EQ(read_json(out.path / "steps/step_001.json")["converged"], false);
+  const nlohmann::json breach = read_json(out.path / "breach.json");
+  EXPECT_DOUBLE_EQ(breach["held"].get<double>(), 1045.0);
+  EXPECT_DOUBLE_EQ(breach["broken"].get<double>(), 1545.0);
+  EXPECT_EQ(breach["broken_status"], "beyond limit");
+}
