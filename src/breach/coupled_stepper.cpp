@@ -256,11 +256,12 @@ StepStatus CoupledStepper::judge_unconverged_state(int passes, std::string& mess
 // the last pass's (summary.json's).
 StepStatus CoupledStepper::judge_unsettled_limit(std::string& message) const {
   if (!limit_) return StepStatus::held_unsettled;
-  double value = limited_value();
+  std::optional<double> largest;
   const std::vector<scenario::FlowRegion>& regions = scenario().flow->regions;
   for (std::size_t r = 0; r < last_ranges_.size() && r < regions.size(); ++r)
     if (last_ranges_[r] && limit_->path == "flow.regions." + regions[r].name + ".normalised_conductivity")
-      value = last_ranges_[r]->largest;
+      largest = last_ranges_[r]->largest;
+  const double value = largest ? *largest : limited_value();
   if (value <= limit_->most) return StepStatus::held_unsettled;
   message = fmt::format("{} up to {:.4g} over its last passes is above the limit {:.4g}; {}", limit_->path, value,
                         limit_->most, message);

@@ -978,13 +978,14 @@ StepReport System::step() {
         }
       }
     }
-    if (settled && largest <= allowed_displacement_ && softening_.empty() && breaks_let_corners_in(d)) {
+    const bool kept = settled && largest <= allowed_displacement_;
+    if (kept && softening_.empty() && breaks_let_corners_in(d)) {
       broken_from_start = pending_breaks_;
       ++report.tries_with_bonds_broken;
       continue;
     }
     broken_from_start.clear();
-    if (settled && largest <= allowed_displacement_) {
+    if (kept) {
       report.max_displacement = largest;
       contact_search_.add_motion(largest);
       measure_free_drift(d, report);
