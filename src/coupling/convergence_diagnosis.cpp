@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <string_view>
 
 namespace hydrodda::coupling {
 
@@ -216,11 +217,16 @@ Wander opening_wander(const std::vector<double>& opening) {
   return {path > 0.0 && net < path / 3.0, *low, *high, static_cast<int>(opening.size() - first)};
 }
 
-// To 3 figures: openings that wander by a few per cent differ there.
-std::string format_millimetres(double metres) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g mm", metres * 1e3);
-  return text;
+// "0.263 mm and 0.2634 mm": to 3 figures, or as many more (up to 9) as tell the two apart;
+// openings that wander by a few per cent differ at 3.
+std::string format_millimetre_range(double low, double high) {
+  char a[32], b[32];
+  for (int digits = 3; digits <= 9; ++digits) {
+    std::snprintf(a, sizeof a, "%.*g mm", digits, low * 1e3);
+    std::snprintf(b, sizeof b, "%.*g mm", digits, high * 1e3);
+    if (std::string_view(a) != std::string_view(b)) break;
+  }
+  return std::string(a) + " and " + b;
 }
 
 // What a drift's blocks do, by the passes' widest openings when known.
@@ -231,8 +237,7 @@ std::string drifting_blocks(const LoopAsRun& loop) {
            "equilibrium";
   if (const Wander w = opening_wander(loop.largest_opening); w.wanders)
     return "the blocks come to rest every pass, about one state rather than farther on (history.csv's "
-           "largest_opening went up and down between " + format_millimetres(w.low) + " and " +
-           format_millimetres(w.high) + " over the last " + std::to_string(w.passes) + " passes)";
+           "largest_opening went up and down between " + format_millimetre_range(w.low, w.high) + " over the last " + std::to_string(w.passes) + " passes)";
   return "the blocks keep moving from pass to pass, each pass coming to rest a little farther on; check that the "
          "fluid load leaves the blocks an equilibrium (history.csv's largest_opening shows a joint that keeps opening)";
 }

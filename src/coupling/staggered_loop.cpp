@@ -485,7 +485,7 @@ void StaggeredLoop::measure_convergence(PassReport& report, double unrelaxed_hea
   report.head_change_two_passes = heads_two_back_.empty() ? 1.0 : head_change(solution_.head, heads_two_back_);
   heads_two_back_ = std::move(previous_heads_);
   previous_heads_ = solution_.head;
-  previous_displacements_ = u;
+  pass_before_displacements_ = std::exchange(previous_displacements_, u);
   const double change = std::max(report.head_change, report.displacement_change);
   growth_.add(change, iteration_, settings_.ramp_passes);
   report.growing_passes = growth_.passes;

@@ -235,6 +235,15 @@ class StaggeredLoop final : public PassRunner {
 
   // Each block's displacement since the start (its centroid's).
   std::vector<Point> block_displacements() const;
+  // How the blocks moved in the last pass, as the displacement norm saw it (empty `before`
+  // until two passes have run since the loop began or took a state).
+  struct PassMotion {
+    std::vector<Point> before, after;  // each block's displacement at the end of the two passes
+    double reference_length = 0.0;     // the norm's ℓ (displacement_change)
+  };
+  PassMotion last_pass_motion() const {
+    return {pass_before_displacements_, previous_displacements_, mechanics_.allowed_step_displacement()};
+  }
 
  private:
   std::vector<geometry::Polygon> current_blocks() const;
@@ -310,6 +319,7 @@ class StaggeredLoop final : public PassRunner {
   std::vector<double> previous_heads_;
   std::vector<double> heads_two_back_;
   std::vector<Point> previous_displacements_;
+  std::vector<Point> pass_before_displacements_;  // the same a pass earlier, for last_pass_motion
   ChangeGrowth growth_;
   std::vector<double> previous_update_;
   double relaxation_ = 1.0;

@@ -59,6 +59,7 @@ void StaggeredLoop::import_state(LoopState state, const dda::SystemState& mechan
   previous_heads_ = std::move(state.previous_heads);
   heads_two_back_ = std::move(state.heads_two_back);
   previous_displacements_ = std::move(state.previous_displacements);
+  pass_before_displacements_.clear();  // not a state's: the last pass's motion is told of passes run since
   growth_ = state.growth;
   previous_update_ = std::move(state.previous_update);
   relaxation_ = state.relaxation;

@@ -26,6 +26,59 @@ std::string describe_farthest(const std::vector<geometry::Point>& displacements)
   return text;
 }
 
+namespace {
+
+// Whether the block had bonds and has none left: a piece loose in its crack.
+bool every_bond_broken(const dda::System& system, int block) {
+  bool bonded = false;
+  for (std::size_t e = 0; e < system.polygon(block).size(); ++e) {
+    const int bond = system.bond_of_edge(block, static_cast<int>(e));
+    if (bond < 0) continue;
+    if (!system.is_bond_broken(bond)) return false;
+    bonded = true;
+  }
+  return bonded;
+}
+
+}  // namespace
+
+std::string describe_last_pass_movers(const coupling::StaggeredLoop::PassMotion& motion, const dda::System& system) {
+  const std::size_t n = motion.after.size();
+  if (motion.before.size() != n || n == 0) return "";
+  std::vector<double> moved(n);
+  for (std::size_t b = 0; b < n; ++b)
+    moved[b] = std::hypot(motion.after[b].x - motion.before[b].x, motion.after[b].y - motion.before[b].y);
+  std::vector<int> order(n);
+  for (std::size_t b = 0; b < n; ++b) order[b] = static_cast<int>(b);
+  const std::size_t ranked = std::min<std::size_t>(n, 4);
+  std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(ranked), order.end(),
+                    [&](int a, int b) { return moved[a] > moved[b] || (moved[a] == moved[b] && a < b); });
+  // Named: the fewest leaders, up to three, the last of them more than twice as far as the next;
+  // else the first alone, the rest not far behind.
+  std::size_t named = 0;
+  for (std::size_t k = 1; named == 0 && k < ranked; ++k)
+    if (moved[order[k - 1]] > 2.0 * moved[order[k]]) named = k;
+  const bool apart = named > 0;
+  if (!apart) named = 1;
+  std::string text = "in the last pass ";
+  for (std::size_t i = 0; i < named; ++i) {
+    const int b = order[i];
+    const geometry::Point c = system.centroid(b);
+    text += fmt::format("{}block {} ({:.3g} m²{}) at ({:.4g}, {:.4g}) moved {:.3g} m", i == 0 ? "" : ", ", b,
+                        system.area(b), every_bond_broken(system, b) ? ", every bond broken" : "", c.x, c.y,
+                        moved[b]);
+  }
+  if (named == n) return text;
+  std::vector<geometry::Point> without = motion.after;
+  for (std::size_t i = 0; i < named; ++i) without[order[i]] = motion.before[order[i]];
+  text += fmt::format("; every other block at most {:.3g} m", moved[order[named]]);
+  if (apart)
+    text += fmt::format(", and without {} the displacement change would be {:.3g}",
+                        named == 1 ? "it" : fmt::format("these {}", named),
+                        coupling::displacement_change(without, motion.before, motion.reference_length));
+  return text;
+}
+
 std::string describe_results_kept(int finished) {
   return finished > 0 ? fmt::format("summary.json and the figures hold coupling iteration {}, the last that finished",
                                     finished)

@@ -350,6 +350,12 @@ std::string describe_non_convergence(const Round& round) {
   if (why.behaviour == coupling::NonConvergence::drifting || why.behaviour == coupling::NonConvergence::diverging ||
       never_at_rest)
     message += "; farthest from where they started: " + describe_farthest(round.model.loop().block_displacements());
+  // Whether the displacement norm is the whole model's or a few loose pieces'.
+  if (!convergence.displacement_change.empty() && convergence.displacement_change.back() >= s.coupling.tolerance)
+    if (const std::string movers =
+            describe_last_pass_movers(round.model.loop().last_pass_motion(), round.model.mechanics());
+        !movers.empty())
+      message += "; " + movers;
   if (recorder.last_pass_cut_short())
     message += "; in the last pass " + describe_cut_steps(recorder.shortest_time_step(), s.mechanics->time_step);
   if (recorder.last_pass_moving() && !never_at_rest)  // else the diagnosis said so

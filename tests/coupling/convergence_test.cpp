@@ -468,6 +468,18 @@ TEST(NonConvergence, ADriftWhoseWidestOpeningGoesUpAndDownIsToldAsRestingAboutOn
             std::string::npos)
       << d.text;
   EXPECT_EQ(d.text.find("a little farther on"), std::string::npos) << d.text;
+  // The tutorial's strip seal at 1,200 m (docs/tutorial_intact_seal.md, §6), measured: its last
+  // ten openings all read 0.263 mm to 3 figures; the text gives as many as tell them apart.
+  const std::vector<double> strip_mm{0.0,      0.0,      0.000441, 0.000648, 0.001033, 0.001306, 0.001469, 0.00168,
+                                     0.001536, 0.334676, 0.759244, 0.310301, 0.277216, 0.321647, 0.255961, 0.328706,
+                                     0.265185, 0.261975, 0.263424, 0.262628, 0.263079, 0.262924, 0.26299,  0.262925,
+                                     0.262985, 0.262906, 0.263084, 0.262927, 0.263075, 0.262994};
+  LoopAsRun strip{.settling = true};
+  for (double mm : strip_mm) strip.largest_opening.push_back(mm * 1e-3);
+  const ConvergenceDiagnosis narrow = diagnose_non_convergence(head, displacement, two_back, 1e-4, strip);
+  EXPECT_NE(narrow.text.find("largest_opening went up and down between 0.2629 mm and 0.2631 mm over the last 10 passes"),
+            std::string::npos)
+      << narrow.text;
   LoopAsRun opening{.settling = true};
   for (int k = 0; k < 30; ++k) opening.largest_opening.push_back(0.4e-3 + 1e-5 * k);
   const ConvergenceDiagnosis grows = diagnose_non_convergence(head, displacement, two_back, 1e-4, opening);
