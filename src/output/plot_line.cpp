@@ -8,8 +8,10 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
 #include "output/figure_canvas.hpp"
+#include "output/legend_placement.hpp"
 #include "output/plot_axes.hpp"
 
 namespace hydrodda::output {
@@ -234,61 +236,66 @@ void draw_cross(cairo_t* cr, double x, double y, double r = 3.4) {
   cairo_stroke(cr);
 }
 
-// The legend, in the corner of the frame that hides the fewest data points.
-void draw_legend(cairo_t* cr, const LinePlotSpec& spec, const Axis& x, const Axis& y) {
-  double text_w = 0.0;
+// The legend's rows (named series, then the open markers', the range bars' and the crosses'
+// entries where shown) and its box's size.
+struct LegendSize {
   int rows = 0;
+  double w = 0.0, h = 0.0;
+  bool open_row = false, range_row = false, marks_row = false;
+};
+constexpr double kLegendRow = 13.0, kLegendInset = 8.0, kLegendMargin = 4.0;
+
+LegendSize measure_legend(cairo_t* cr, const LinePlotSpec& spec) {
+  LegendSize legend;
+  double text_w = 0.0;
+  const auto add_row = [&](const std::string& text) {
+    text_w = std::max(text_w, text_width(cr, text));
+    ++legend.rows;
+  };
   for (const LineSeries& s : spec.series)
-    if (!s.name.empty()) {
-      text_w = std::max(text_w, text_width(cr, s.name));
-      ++rows;
-    }
-  const bool open_row = !spec.open_label.empty() && has_open_point(spec);
-  if (open_row) {
-    text_w = std::max(text_w, text_width(cr, spec.open_label));
-    ++rows;
-  }
-  const bool range_row = !spec.range_label.empty() && !spec.range_bars.empty();
-  if (range_row) {
-    text_w = std::max(text_w, text_width(cr, spec.range_label));
-    ++rows;
-  }
-  const bool marks_row = !spec.marks_label.empty() && !spec.marks_x.empty();
-  if (marks_row) {
-    text_w = std::max(text_w, text_width(cr, spec.marks_label));
-    ++rows;
-  }
-  if (rows == 0) return;
-  const double row = 13.0, w = text_w + 36.0, h = row * rows + 6.0, inset = 8.0;
-  const double left = x.page_lo, right = x.page_hi, top = y.page_hi, bottom = y.page_lo;
-  const std::array<std::array<double, 2>, 4> corners{{{right - w - inset, top + inset},
-                                                       {left + inset, top + inset},
-                                                       {right - w - inset, bottom - h - inset},
-                                                       {left + inset, bottom - h - inset}}};
-  std::size_t best = 0, best_hidden = std::numeric_limits<std::size_t>::max();
-  for (std::size_t c = 0; c < corners.size(); ++c) {
-    std::size_t hidden = 0;
-    const auto inside = [&](double px, double py) {
-      return px > corners[c][0] - 4 && px < corners[c][0] + w + 4 && py > corners[c][1] - 4 &&
-             py < corners[c][1] + h + 4;
-    };
-    for (const RangeBar& bar : spec.range_bars)  // hidden when its ends or its middle are
-      if (is_plottable(bar.x, x.log) && is_plottable(bar.low, y.log) && is_plottable(bar.high, y.log))
-        hidden += inside(x.to_page(bar.x), y.to_page(bar.low)) || inside(x.to_page(bar.x), y.to_page(bar.high)) ||
-                  inside(x.to_page(bar.x), y.to_page(0.5 * (bar.low + bar.high)));
-    for (const LineSeries& s : spec.series)
-      for (std::size_t i = 0; i < s.x.size(); ++i) {
-        if (!is_plottable(s.x[i], x.log) || !is_plottable(s.y[i], y.log)) continue;
-        const double px = x.to_page(s.x[i]), py = y.to_page(s.y[i]);
-        hidden += px > corners[c][0] - 4 && px < corners[c][0] + w + 4 && py > corners[c][1] - 4 &&
-                  py < corners[c][1] + h + 4;
-      }
-    if (hidden < best_hidden) {
-      best = c;
-      best_hidden = hidden;
-    }
-  }
-  const double bx = corners[best][0], by = corners[best][1];
+    if (!s.name.empty()) add_row(s.name);
+  legend.open_row = !spec.open_label.empty() && has_open_point(spec);
+  if (legend.open_row) add_row(spec.open_label);
+  legend.range_row = !spec.range_label.empty() && !spec.range_bars.empty();
+  if (legend.range_row) add_row(spec.range_label);
+  legend.marks_row = !spec.marks_label.empty() && !spec.marks_x.empty();
+  if (legend.marks_row) add_row(spec.marks_label);
+  legend.w = text_w + 36.0;
+  legend.h = kLegendRow * legend.rows + 6.0;
+  return legend;
+}
+
+// Where the data lie on the page: each point, and each range bar's ends and middle.
+std::vector<std::array<double, 2>> data_on_page(const LinePlotSpec& spec, const Axis& x, const Axis& y) {
+  std::vector<std::array<double, 2>> points;
+  for (const RangeBar& bar : spec.range_bars)
+    if (is_plottable(bar.x, x.log) && is_plottable(bar.low, y.log) && is_plottable(bar.high, y.log))
+      for (const double v : {bar.low, bar.high, y.log ? std::sqrt(bar.low * bar.high) : 0.5 * (bar.low + bar.high)})
+        points.push_back({x.to_page(bar.x), y.to_page(v)});
+  for (const LineSeries& s : spec.series)
+    for (std::size_t i = 0; i < s.x.size(); ++i)
+      if (is_plottable(s.x[i], x.log) && is_plottable(s.y[i], y.log))
+        points.push_back({x.to_page(s.x[i]), y.to_page(s.y[i])});
+  return points;
+}
+
+// The legend's box: the corner of the frame that hides the fewest data points.
+PageBox place_legend(const LinePlotSpec& spec, const LegendSize& legend, const Axis& x, const Axis& y) {
+  const PageBox frame{x.page_lo, y.page_hi, x.page_hi - x.page_lo, y.page_lo - y.page_hi};
+  const std::array<PageBox, 4> corners = legend_corners(frame, legend.w, legend.h, kLegendInset);
+  return corners[choose_legend_corner(corners, data_on_page(spec, x, y), kLegendMargin).corner];
+}
+
+bool hides_data(const LinePlotSpec& spec, const PageBox& box, const Axis& x, const Axis& y) {
+  for (const std::array<double, 2>& p : data_on_page(spec, x, y))
+    if (box.holds(p[0], p[1], kLegendMargin)) return true;
+  return false;
+}
+
+void draw_legend(cairo_t* cr, const LinePlotSpec& spec, const LegendSize& legend, const PageBox& box) {
+  const bool open_row = legend.open_row, range_row = legend.range_row, marks_row = legend.marks_row;
+  const double row = kLegendRow, w = legend.w, h = legend.h;
+  const double bx = box.x, by = box.y;
   cairo_rectangle(cr, bx, by, w, h);
   cairo_set_source_rgba(cr, 1, 1, 1, 0.92);
   cairo_fill_preserve(cr);
@@ -372,14 +379,29 @@ void render_line_plot(const std::filesystem::path& path, const LinePlotSpec& spe
   draw_to_file(path, spec.width, spec.height, [&](cairo_t* cr) {
     cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
     cairo_set_font_size(cr, 9.5);
-    // The left margin holds the widest y label and the y title beside it.
     const double top = (spec.title.empty() ? 14.0 : 32.0) + (spec.warning.empty() ? 0.0 : 14.0);
     const double bottom = spec.height - 42.0;
-    const Axis y = make_axis(ylo, yhi, spec.y_log, bottom, top);
+    // The left margin holds the widest y label and the y title beside it, so the x axis
+    // follows the y axis.
+    const double right = spec.width - 18.0;
+    const auto x_axis_beside = [&](const Axis& y_axis, double& widest_label) {
+      widest_label = measure_widest_label(cr, make_tick_labels(y_axis));
+      return make_axis(xlo, xhi, spec.x_log, std::max(48.0, widest_label + 32.0), right);
+    };
+    double widest = 0.0;
+    Axis y = make_axis(ylo, yhi, spec.y_log, bottom, top);
+    Axis x = x_axis_beside(y, widest);
+    // A legend that would hide data in every corner gets a band above the data instead.
+    const LegendSize legend = measure_legend(cr, spec);
+    PageBox legend_box = legend.rows > 0 ? place_legend(spec, legend, x, y) : PageBox{};
+    const double band = (legend.h + kLegendInset + 2.0 * kLegendMargin) / (bottom - top);
+    if (legend.rows > 0 && band < 0.5 && hides_data(spec, legend_box, x, y)) {
+      y.hi = raise_axis_top(y.lo, yhi, band, spec.y_log);
+      x = x_axis_beside(y, widest);
+      legend_box = place_legend(spec, legend, x, y);
+    }
+    const double left = x.page_lo;
     const TickLabels y_ticks = make_tick_labels(y);
-    const double widest = measure_widest_label(cr, y_ticks);
-    const double left = std::max(48.0, widest + 32.0), right = spec.width - 18.0;
-    const Axis x = make_axis(xlo, xhi, spec.x_log, left, right);
     const TickLabels x_ticks = make_tick_labels(x);
     draw_ticks(cr, x, x_ticks, true, bottom, top);
     draw_ticks(cr, y, y_ticks, false, left, right);
@@ -434,7 +456,7 @@ void render_line_plot(const std::filesystem::path& path, const LinePlotSpec& spe
     cairo_stroke(cr);
     for (double mark : spec.marks_x)
       if (is_plottable(mark, spec.x_log)) draw_cross(cr, x.to_page(mark), bottom);
-    draw_legend(cr, spec, x, y);
+    if (legend.rows > 0) draw_legend(cr, spec, legend, legend_box);
 
     cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
     cairo_set_font_size(cr, 10.5);
