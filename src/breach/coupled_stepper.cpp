@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "coupling/pass_loop.hpp"
+#include "numerics/distinct_digits.hpp"
 #include "output/summary_reading.hpp"
 #include "run/coupled_messages.hpp"
 #include "run/fracture_output.hpp"
@@ -68,9 +69,11 @@ std::string describe_ranges(const std::vector<std::optional<ValueRange>>& ranges
                             const std::vector<scenario::FlowRegion>& regions) {
   std::string text;
   for (std::size_t r = 0; r < ranges.size() && r < regions.size(); ++r)
-    if (ranges[r] && ranges[r]->spread() > 1e-9)  // a region whose answer did not move is no news
-      text += fmt::format("{}K_eff/K_m of region '{}' from {:.4g} to {:.4g} ({:.2g}%)", text.empty() ? "" : ", ",
-                          regions[r].name, ranges[r]->least, ranges[r]->largest, 100.0 * ranges[r]->spread());
+    if (ranges[r] && ranges[r]->spread() > 1e-9) {  // a region whose answer did not move is no news
+      const std::array<std::string, 2> ends = numerics::format_apart(ranges[r]->least, ranges[r]->largest, 4);
+      text += fmt::format("{}K_eff/K_m of region '{}' from {} to {} ({:.2g}%)", text.empty() ? "" : ", ",
+                          regions[r].name, ends[0], ends[1], 100.0 * ranges[r]->spread());
+    }
   return text;
 }
 

@@ -4,7 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
-#include <string_view>
+
+#include "numerics/distinct_digits.hpp"
 
 namespace hydrodda::coupling {
 
@@ -217,16 +218,11 @@ Wander opening_wander(const std::vector<double>& opening) {
   return {path > 0.0 && net < path / 3.0, *low, *high, static_cast<int>(opening.size() - first)};
 }
 
-// "0.263 mm and 0.2634 mm": to 3 figures, or as many more (up to 9) as tell the two apart;
-// openings that wander by a few per cent differ at 3.
+// "0.2629 mm and 0.2631 mm": to 3 figures, or as many more as tell the two apart; openings that
+// wander by a few per cent differ at 3.
 std::string format_millimetre_range(double low, double high) {
-  char a[32], b[32];
-  for (int digits = 3; digits <= 9; ++digits) {
-    std::snprintf(a, sizeof a, "%.*g mm", digits, low * 1e3);
-    std::snprintf(b, sizeof b, "%.*g mm", digits, high * 1e3);
-    if (std::string_view(a) != std::string_view(b)) break;
-  }
-  return std::string(a) + " and " + b;
+  const std::array<std::string, 2> ends = numerics::format_apart(low * 1e3, high * 1e3, 3);
+  return ends[0] + " mm and " + ends[1] + " mm";
 }
 
 // What a drift's blocks do, by the passes' widest openings when known.

@@ -13,6 +13,7 @@
 #include <deque>
 #include <functional>
 #include <memory>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -115,6 +116,9 @@ struct ChangeGrowth {
   double base = 0.0;
   double last = 0.0;
   void add(double change, int iteration, int ramp_passes = 1);
+  // A new load: the changes before it are another problem's, and growth counts again from the
+  // change of the pass after the next, which compares two passes under the new load.
+  void restart() { *this = ChangeGrowth{0, 0.0, std::numeric_limits<double>::infinity()}; }
   bool diverging(int passes_needed, double factor) const {
     return passes_needed > 0 && passes >= passes_needed && last >= factor * base;
   }
@@ -204,7 +208,13 @@ class StaggeredLoop final : public PassRunner {
   // the next pass on: a loading path scripted between passes.
   void set_flow_boundary_values(std::span<const hydro::BoundaryCondition> boundaries) {
     darcy_.set_boundary_values(boundaries);
-    float_secant_.forget();  // a new load: the last passes' secant is of another
+    begin_new_load();
+  }
+  // A load changed between passes (flow boundaries or tractions): the last passes' secant and
+  // the divergence rule's growing changes are of another load.
+  void begin_new_load() {
+    float_secant_.forget();
+    growth_.restart();
   }
 
   const hydro::FlowSolution& flow() const { return solution_; }

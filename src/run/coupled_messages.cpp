@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "numerics/distinct_digits.hpp"
 #include "run/figures.hpp"
 
 namespace hydrodda::run {
@@ -115,8 +116,9 @@ std::string describe_last_passes(const std::vector<std::string>& columns,
     // A region whose answer did not move (its permeability fixed) is no news in the message.
     const double spread = (range.largest - range.least) / std::abs(*r.normalised_conductivity);
     if (!(spread > 1e-9)) continue;
-    text += fmt::format("{}K_eff/K_m of region '{}' ranged from {:.4g} to {:.4g} ({}%)", text.empty() ? "" : ", ",
-                        r.name, range.least, range.largest,
+    const std::array<std::string, 2> ends = numerics::format_apart(range.least, range.largest, 4);
+    text += fmt::format("{}K_eff/K_m of region '{}' ranged from {} to {} ({}%)", text.empty() ? "" : ", ", r.name,
+                        ends[0], ends[1],
                         spread >= 0.1 ? fmt::format("{:.0f}", 100.0 * spread) : fmt::format("{:.2g}", 100.0 * spread));
   }
   return text.empty() ? text : fmt::format("over the last {} passes {}", passes, text);

@@ -180,6 +180,7 @@ void CoupledModel::set_tractions(std::vector<scenario::Traction> tractions) {
   scenario::Scenario changed = scenario_;
   changed.mechanics->tractions = std::move(tractions);
   system_->set_tractions(build_tractions(changed, initial_blocks_));
+  loop_->begin_new_load();
   scenario_ = std::move(changed);
 }
 

@@ -56,5 +56,27 @@ TEST(Divergence, ChangesThatGrowWithARampedLoadAreNoDivergence) {
   EXPECT_TRUE(after.diverging(5, 10.0));
 }
 
+// A loading path (the breach command) takes each load from the state the last one held, and a
+// state held unsettled may end on a long streak of growing changes: a user's faulted, bonded
+// seal held at 1,687.5 m after 23 passes of growth, and its next load, 1,706.25 m, was told
+// "the coupling loop diverges (24 passes of growing change)" after a single pass. A new load
+// restarts the count: its first pass's change is the step to the new load, not growth, and
+// growth under the new load counts from the pass after it.
+TEST(Divergence, ANewLoadCountsGrowthAfresh) {
+  ChangeGrowth growth = track({1.0, 1e-3, 2e-3, 4e-3, 8e-3, 1.6e-2, 3.2e-2});
+  ASSERT_TRUE(growth.diverging(5, 10.0));
+  growth.restart();
+  growth.add(0.5, 8);  // the step to the new load
+  EXPECT_EQ(growth.passes, 0);
+  EXPECT_FALSE(growth.diverging(5, 10.0));
+  for (int k = 9; k <= 12; ++k) growth.add(1e-3 * (k - 8), k);  // falls, then grows three passes
+  EXPECT_EQ(growth.passes, 3);
+  EXPECT_FALSE(growth.diverging(3, 10.0));  // 4e-3 is 4 times the 1e-3 the streak began from
+  for (int k = 13; k <= 14; ++k) growth.add(1e-2 * (k - 12), k);
+  EXPECT_EQ(growth.passes, 5);
+  EXPECT_EQ(growth.base, 1e-3);
+  EXPECT_TRUE(growth.diverging(5, 10.0));  // 2e-2, 20 times
+}
+
 }  // namespace
 }  // namespace hydrodda::coupling

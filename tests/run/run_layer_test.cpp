@@ -548,6 +548,33 @@ TEST(CoupledModel, PassesRunByHandEndWhereTheRunEnds) {
   expect_column_settled(by_hand);
 }
 
+TEST(CoupledModel, ANewFlowLoadCountsTheLoopsGrowthAfresh) {
+  // A loading path (the breach command) starts each load from the state the last held. A state
+  // that ended on a streak of growing changes (here 23 passes of it, set by hand) must not
+  // make the new load's first pass, its step to that load, read as a diverging loop.
+  const scenario::Scenario s = scenario::read_scenario(kVerification / "coupled_hydrostatic_column.toml");
+  run::CoupledModel model(s);
+  for (int pass = 0; pass < 3; ++pass) model.run_pass();
+  run::CoupledState held = model.export_state();
+  held.coupling.growth = {23, 1e-12, 1e-11};
+  std::vector<scenario::FlowBoundaryCondition> raised = s.flow->boundaries;
+  raised[0].value = hydrodda::numerics::TimeTable(3.5);
+  // A model built with the raised head, given the held state: the streak goes on.
+  scenario::Scenario built_raised = s;
+  built_raised.flow->boundaries = raised;
+  run::CoupledModel carried_on(built_raised);
+  carried_on.import_state(held);
+  const hydrodda::coupling::PassReport carried = carried_on.run_pass();
+  EXPECT_EQ(carried.growing_passes, 24);
+  EXPECT_TRUE(carried.diverging);
+  // The same load set on the model as a new load: the count starts afresh.
+  model.import_state(held);
+  model.set_flow_boundaries(raised);
+  const hydrodda::coupling::PassReport fresh = model.run_pass();
+  EXPECT_EQ(fresh.growing_passes, 0);
+  EXPECT_FALSE(fresh.diverging);
+}
+
 TEST(CoupledModel, TheLoopRunWithAnObserverEndsWherePassesByHandEnd) {
   // CoupledModel::run (the staggered loop's bounded loop) tells its observer after every pass
   // and reaches, bit for bit, the state of the same passes run by hand; an observer that asks
