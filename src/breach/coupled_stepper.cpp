@@ -188,7 +188,9 @@ StepResult CoupledStepper::try_load(double load) {
         result.message = fmt::format("the coupling loop diverges ({} passes of growing change)",
                                      loop.last_pass->growing_passes);
         break;
-      default: result.status = judge_unconverged_state(loop.passes_run, result.message);
+      default:
+        result.status = judge_unconverged_state(loop.passes_run, result.message);
+        if (loop.last_pass) result.message += describe_last_pass(*loop.last_pass);
     }
   } catch (const coupling::PassInterrupted&) {
     model_->abandon_pass();
@@ -223,6 +225,20 @@ std::string CoupledStepper::describe_not_at_rest(double largest_opening) const {
                               : fmt::format(" ({} of them ended on DDA steps cut short, where the blocks stall: they "
                                             "barely move and do not pass the at-rest test)", cut),
                      largest_opening);
+}
+
+// "; at its last pass the head change 6.2e-05 and the displacement change 0.0038 (tolerance
+// 0.0001)", and where the displacement change is above the tolerance the blocks that moved
+// most in that pass: which norm holds the loop open, and whether a few pieces hold it.
+std::string CoupledStepper::describe_last_pass(const coupling::PassReport& last) const {
+  const double tolerance = model_->scenario().coupling.tolerance;
+  std::string text = fmt::format("; at its last pass the head change {:.2g} and the displacement change {:.2g} "
+                                 "(tolerance {:g})", last.head_change, last.displacement_change, tolerance);
+  if (last.displacement_change >= tolerance)
+    if (const std::string movers = run::describe_last_pass_movers(model_->loop().last_pass_motion(), model_->mechanics());
+        !movers.empty())
+      text += "; " + movers;
+  return text;
 }
 
 // A loop that ran its passes out: held, unsettled when settling passes brought the blocks to

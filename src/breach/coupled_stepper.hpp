@@ -69,6 +69,7 @@ class CoupledStepper final : public LoadStepper {
   void set_load(double load);
   StepStatus judge_converged_state(std::string& message) const;
   StepStatus judge_unconverged_state(int passes, std::string& message);
+  std::string describe_last_pass(const coupling::PassReport& last) const;
   StepStatus judge_unsettled_limit(std::string& message) const;
   double limited_value() const;  // the --limit path's value in summary()
   std::string describe_not_at_rest(double largest_opening) const;

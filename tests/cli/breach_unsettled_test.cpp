@@ -60,6 +60,11 @@ TEST(BreachUnsettled, ASealThatSwingsAtRestHoldsAndItsAnswerIsARange) {
   const double least = std::stod(at(2, k + "_least")), largest = std::stod(at(2, k + "_largest"));
   EXPECT_LT(least, largest);  // it swings: measured 6.03 to 6.26
   EXPECT_GT(least, 1.0);
+  // Why it is unsettled: the last pass's norms, and (its blocks' change above the tolerance)
+  // the blocks that moved most in that pass.
+  const std::string why = at(2, "message");
+  EXPECT_NE(why.find("; at its last pass the head change "), std::string::npos) << why;
+  EXPECT_NE(why.find("(tolerance 0.0001); in the last pass block "), std::string::npos) << why;
 
   // The step's state, as summary.json: not converged, with the same range over its last 10.
   const nlohmann::json step = read_json(out.path / "steps/step_001.json");
