@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "output/plot_line.hpp"
+#include "output/quantity_label.hpp"
 #include "output/summary_reading.hpp"
 #include "output/summary.hpp"
 #include "run/figures.hpp"
@@ -235,7 +236,10 @@ void BreachFiles::draw_curves(const std::string& format) const {
     if (!is_state(step.result.status)) broken.push_back(step.load);
   output::LinePlotSpec k;
   k.title = scenario_.title;
-  k.x_label = key_;
+  std::vector<std::string> boundaries;  // what flow.boundary[i] names: "pressure at bottom (Pa)"
+  if (scenario_.flow)
+    for (const scenario::FlowBoundaryCondition& b : scenario_.flow->boundaries) boundaries.push_back(b.name);
+  k.x_label = output::quantity_label(key_, boundaries);
   k.y_label = "K_eff / K_matrix";
   k.y_log = true;
   k.open_label = "beyond the limit";

@@ -37,11 +37,6 @@ struct SweepPlot {
   std::string why_not;
 };
 
-// A swept key or a summary.json path as an axis title: the quantity, what it belongs to, and
-// its unit, e.g. "head at bottom (m)" for flow.boundary[0].head (`boundary_names` are the
-// scenario's [[flow.boundary]] names, in order) or "K_eff / K_matrix of fractured" for
-// flow.regions.fractured.normalised_conductivity; the path itself when it is none of those.
-std::string quantity_label(const std::string& path, const std::vector<std::string>& boundary_names = {});
 // A swept value in words, for titles and legends: "head at base = 5 m".
 std::string value_label(const scenario::Override& value, const std::vector<std::string>& boundary_names = {});
 
@@ -77,7 +72,7 @@ class SweepResults {
   // nothing can be drawn.
   void plot(const std::filesystem::path& file, const std::string& title) const;
   SweepPlot plot_spec(const std::string& title) const;
-  // The [[flow.boundary]] names, for the axis titles (quantity_label).
+  // The [[flow.boundary]] names, for the axis titles (output::quantity_label).
   void set_boundary_names(std::vector<std::string> names) { boundary_names_ = std::move(names); }
 
   // How many cases ended each way, indexed by CaseStatus.
