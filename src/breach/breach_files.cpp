@@ -265,6 +265,7 @@ void BreachFiles::draw_curves(const std::string& format) const {
   output::LinePlotSpec w = k;
   w.y_label = "largest fracture opening (mm)";
   w.y_log = false;
+  w.y_at_least_zero = true;
   w.range_bars.clear();
   w.open_label = "beyond the limit, or held unsettled (its last pass)";
   w.series = {output::LineSeries{"largest opening", {}, {}, {}}};

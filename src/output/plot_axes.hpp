@@ -35,6 +35,13 @@ std::vector<std::string> log_tick_labels(const std::vector<double>& ticks);
 inline constexpr double kFlatSpread = 1e-6;
 bool is_flat_range(double lo, double hi);
 
+// The range a line plot's axis spans for data over [lo, hi]: a margin of 4% of the span (of its
+// decades on a log axis) on each side, so that markers at the ends are not cut by the frame; one
+// value gets a unit about it (a decade on a log axis; ±10% of it, or ±1 at 0, on a linear one).
+// `at_least_zero` (a linear quantity that cannot be negative, data ≥ 0): below 0 the margin is
+// 4% of the top, not a unit, so that an opening of 0 mm is not drawn on an axis down to −1 mm.
+std::array<double, 2> padded_range(double lo, double hi, bool log_axis, bool at_least_zero = false);
+
 // Viridis colour map, t in [0, 1] → RGB in [0, 1].
 std::array<double, 3> viridis(double t);
 

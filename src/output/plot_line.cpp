@@ -57,25 +57,10 @@ struct Axis {
   }
 };
 
-// The data range with a margin of 4% of its span (linear) or of its decades (log) on each
-// side, so markers at the ends are not cut by the frame.
-Axis make_axis(double lo, double hi, bool log_axis, double page_lo, double page_hi) {
-  if (log_axis) {
-    double a = std::log10(lo), b = std::log10(hi);
-    if (is_flat_range(lo, hi)) {  // one value: a decade about it, not its round-off magnified
-      a -= 0.5;
-      b += 0.5;
-    }
-    const double pad = 0.04 * (b - a);
-    return {std::pow(10.0, a - pad), std::pow(10.0, b + pad), page_lo, page_hi, true};
-  }
-  if (hi - lo <= 1e-12 * std::max(std::abs(lo), std::abs(hi))) {
-    const double pad = lo == 0.0 ? 1.0 : 0.1 * std::abs(lo);
-    lo -= pad;
-    hi += pad;
-  }
-  const double pad = 0.04 * (hi - lo);
-  return {lo - pad, hi + pad, page_lo, page_hi, false};
+// The axis over the data range (padded_range, plot_axes.hpp) from page_lo to page_hi.
+Axis make_axis(double lo, double hi, bool log_axis, double page_lo, double page_hi, bool at_least_zero = false) {
+  const std::array<double, 2> range = padded_range(lo, hi, log_axis, at_least_zero);
+  return {range[0], range[1], page_lo, page_hi, log_axis};
 }
 
 // A filled marker, or (open) a larger hollow one: white inside, outlined in the current colour.
@@ -389,7 +374,7 @@ void render_line_plot(const std::filesystem::path& path, const LinePlotSpec& spe
       return make_axis(xlo, xhi, spec.x_log, std::max(48.0, widest_label + 32.0), right);
     };
     double widest = 0.0;
-    Axis y = make_axis(ylo, yhi, spec.y_log, bottom, top);
+    Axis y = make_axis(ylo, yhi, spec.y_log, bottom, top, spec.y_at_least_zero);
     Axis x = x_axis_beside(y, widest);
     // A legend that would hide data in every corner gets a band above the data instead.
     const LegendSize legend = measure_legend(cr, spec);

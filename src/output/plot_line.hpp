@@ -35,6 +35,9 @@ struct LinePlotSpec {
   std::string warning;  // in red under the title, e.g. "NOT CONVERGED"
   std::string x_label, y_label;
   bool x_log = false, y_log = false;
+  // A quantity that cannot be negative (an opening): the y axis reaches below 0 only by a
+  // margin for the markers, not by a unit about a single 0 (padded_range, plot_axes.hpp).
+  bool y_at_least_zero = false;
   std::vector<LineSeries> series;
   std::vector<ReferenceLine> references;
   std::string open_label;  // the legend entry of the hollow markers, shown when some point is open

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+
 namespace hydrodda::output {
 namespace {
 
@@ -68,6 +71,25 @@ TEST(FlatRange, ValuesAgreeingToAMillionthAreFlat) {
   EXPECT_TRUE(is_flat_range(2.0, 2.0));
   EXPECT_FALSE(is_flat_range(2.4450, 2.4460));  // the 0.04% step of an opening flaw is drawn
   EXPECT_FALSE(is_flat_range(1.0, 1.0 + 2.0 * kFlatSpread));
+}
+
+// An axis's range: 4% of the span beyond the data each side; one value a unit about it; a
+// quantity that cannot be negative only 4% of the top below 0. Exact arithmetic to 1e-12.
+TEST(PaddedRange, AMarginEachSideAndNoNegativeUnitForAQuantityThatCannotBeNegative) {
+  const auto expect_range = [](std::array<double, 2> got, double lo, double hi) {
+    EXPECT_NEAR(got[0], lo, 1e-12);
+    EXPECT_NEAR(got[1], hi, 1e-12);
+  };
+  expect_range(padded_range(0.0, 0.5, false), -0.02, 0.52);
+  expect_range(padded_range(0.0, 0.0, false), -1.08, 1.08);  // ±1 at 0, then 4% of 2
+  // Openings all 0 mm: 0 to 1.08, and below 0 only 4% of that.
+  expect_range(padded_range(0.0, 0.0, false, true), -0.0432, 1.08);
+  expect_range(padded_range(0.0, 0.5, false, true), -0.02, 0.52);  // the margin is under 4% of the top
+  expect_range(padded_range(0.2, 0.4, false, true), 0.192, 0.408);
+  expect_range(padded_range(-1.0, 1.0, false, true), -1.08, 1.08);  // data below 0: as without
+  const std::array<double, 2> decade = padded_range(10.0, 10.0, true);  // a decade about 10
+  EXPECT_NEAR(std::log10(decade[0]), 0.5 - 0.04, 1e-12);
+  EXPECT_NEAR(std::log10(decade[1]), 1.5 + 0.04, 1e-12);
 }
 
 }  // namespace
