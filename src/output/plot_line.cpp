@@ -8,7 +8,6 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
-#include <utility>
 
 #include "output/figure_canvas.hpp"
 #include "output/legend_placement.hpp"
