@@ -233,7 +233,8 @@ std::string drifting_blocks(const LoopAsRun& loop) {
            "equilibrium";
   if (const Wander w = opening_wander(loop.largest_opening); w.wanders)
     return "the blocks come to rest every pass, about one state rather than farther on (history.csv's "
-           "largest_opening went up and down between " + format_millimetre_range(w.low, w.high) + " over the last " + std::to_string(w.passes) + " passes)";
+           "largest_opening went up and down between " + format_millimetre_range(w.low, w.high) + " over the last " +
+           std::to_string(w.passes) + " passes)";
   return "the blocks keep moving from pass to pass, each pass coming to rest a little farther on; check that the "
          "fluid load leaves the blocks an equilibrium (history.csv's largest_opening shows a joint that keeps opening)";
 }
