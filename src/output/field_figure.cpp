@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <utility>
 #include <stdexcept>
 
@@ -68,6 +69,7 @@ struct ColourScale {
   double lo = 0.0, hi = 1.0;
   bool clipped_above = false;  // values above `hi` are painted the top colour
   bool colours_nothing = false;  // lines only, none of them coloured: no colour bar to read
+  std::optional<double> one_value;  // every value this one (to a millionth): the bar's one tick
   std::array<double, 3> colour(double v) const { return viridis((v - lo) / (hi - lo)); }
 };
 
@@ -129,13 +131,17 @@ ColourScale make_colour_scale(const FieldFigure& f) {
   }
   // A spread below a millionth of the values is no contrast to paint across the whole bar
   // (the cubic law's permeability over closed joints is uniform to 1e-8): such a field is
-  // shown as one of a single value is, in one colour, on a bar of one unit (of the value, or a
-  // decade on a log scale) with ticks a reader can read.
+  // shown as one of a single value is, in the bar's middle colour, with one tick naming it
+  // (a bar from the value to one unit above it painted the value its bottom colour, and its
+  // ticks, printed to six figures, all read "2.1281e+07" where bonds broke at that load in Pa).
   const double spread_of_one_value =
       f.logarithmic ? std::log10(1.0 + 1e-6) : 1e-6 * std::max(std::abs(s.lo), std::abs(s.hi));
   if (!(s.hi - s.lo > spread_of_one_value)) {
     const double largest = s.values.empty() ? s.hi : *std::max_element(s.values.begin(), s.values.end());
-    s.hi = s.lo + 1.0;
+    s.one_value = s.lo;
+    const std::array<double, 2> unit = one_value_range(s.lo, f.logarithmic);
+    s.lo = unit[0];
+    s.hi = unit[1];
     s.clipped_above = largest > s.hi;
   }
   return s;
@@ -359,6 +365,7 @@ void label_colour_bar(cairo_t* cr, const ColourBar& bar, const FieldFigure& f, c
     ticks.clear();
     for (double v : log_ticks(std::pow(10.0, s.lo), std::pow(10.0, s.hi))) ticks.push_back(std::log10(v));
   }
+  if (s.one_value) ticks = {*s.one_value};
   for (double v : ticks) {
     const double y = bar.top + bar.height * (1.0 - (v - s.lo) / (s.hi - s.lo));
     if (y < bar.top - 0.5 || y > bar.top + bar.height + 0.5) continue;

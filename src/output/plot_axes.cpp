@@ -101,21 +101,27 @@ bool is_flat_range(double lo, double hi) {
   return std::abs(hi - lo) <= kFlatSpread * std::max(std::abs(lo), std::abs(hi));
 }
 
+std::array<double, 2> one_value_range(double value, bool log_axis) {
+  const double half = log_axis ? 0.5 : value == 0.0 ? 1.0 : 0.1 * std::abs(value);
+  return {value - half, value + half};
+}
+
 std::array<double, 2> padded_range(double lo, double hi, bool log_axis, bool at_least_zero) {
   if (log_axis) {
     double a = std::log10(lo), b = std::log10(hi);
     if (is_flat_range(lo, hi)) {  // one value: a decade about it, not its round-off magnified
-      a -= 0.5;
-      b += 0.5;
+      const std::array<double, 2> unit = one_value_range(a, true);
+      a = unit[0];
+      b = unit[1];
     }
     const double pad = 0.04 * (b - a);
     return {std::pow(10.0, a - pad), std::pow(10.0, b + pad)};
   }
   const bool nonnegative = at_least_zero && lo >= 0.0;
   if (hi - lo <= 1e-12 * std::max(std::abs(lo), std::abs(hi))) {
-    const double pad = lo == 0.0 ? 1.0 : 0.1 * std::abs(lo);
-    lo -= pad;
-    hi += pad;
+    const std::array<double, 2> unit = one_value_range(lo, false);
+    lo = unit[0];
+    hi = unit[1];
   }
   const double pad = 0.04 * (hi - lo);
   std::array<double, 2> range{lo - pad, hi + pad};

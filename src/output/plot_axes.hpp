@@ -42,6 +42,10 @@ bool is_flat_range(double lo, double hi);
 // 4% of the top, not a unit, so that an opening of 0 mm is not drawn on an axis down to −1 mm.
 std::array<double, 2> padded_range(double lo, double hi, bool log_axis, bool at_least_zero = false);
 
+// The range an axis or a colour bar gives one value, with the value in its middle: half a decade
+// either side on a log axis (the value and the range as log10), ±10% of it (±1 at 0) on a linear one.
+std::array<double, 2> one_value_range(double value, bool log_axis);
+
 // Viridis colour map, t in [0, 1] → RGB in [0, 1].
 std::array<double, 3> viridis(double t);
 

@@ -1,5 +1,7 @@
 #include "output/field_figure.hpp"
 
+#include "output/plot_axes.hpp"
+
 #include <cairo.h>
 #include <gtest/gtest.h>
 
@@ -223,13 +225,18 @@ TEST(FieldFigure, ASpreadOfRoundOffIsNotPaintedAsContrast) {
     render_field_figure(png, f);
     // The plot is 570 points wide from 70 points in, 57 high from 50 down; its inside only.
     const auto yellow = [](unsigned r, unsigned g, unsigned b) { return r > 180 && g > 180 && b < 120; };
-    const auto purple = [](unsigned r, unsigned g, unsigned b) { return r < 100 && g < 40 && b > 60; };
-    return std::pair{pixels_in(png, 72, 52, 638, 105, yellow), pixels_in(png, 72, 52, 638, 105, purple)};
+    // A field of one value is painted the middle of its bar, viridis(0.5), to ±6 of 255 a channel.
+    const std::array<double, 3> middle = viridis(0.5);
+    const auto teal = [&](unsigned r, unsigned g, unsigned b) {
+      const auto near = [](unsigned got, double want) { return std::abs(static_cast<double>(got) - 255 * want) <= 6; };
+      return near(r, middle[0]) && near(g, middle[1]) && near(b, middle[2]);
+    };
+    return std::pair{pixels_in(png, 72, 52, 638, 105, yellow), pixels_in(png, 72, 52, 638, 105, teal)};
   };
   for (bool logarithmic : {true, false}) {
-    const auto [yellow, purple] = paint(1e-8, logarithmic);
+    const auto [yellow, teal] = paint(1e-8, logarithmic);
     EXPECT_EQ(yellow, 0) << (logarithmic ? "log" : "linear");
-    EXPECT_GT(purple, 100000) << (logarithmic ? "log" : "linear");
+    EXPECT_GT(teal, 100000) << (logarithmic ? "log" : "linear");
     EXPECT_GT(paint(1e-2, logarithmic).first, 50000) << (logarithmic ? "log" : "linear");
   }
   fs::remove_all(dir);

@@ -92,5 +92,18 @@ TEST(PaddedRange, AMarginEachSideAndNoNegativeUnitForAQuantityThatCannotBeNegati
   EXPECT_NEAR(std::log10(decade[1]), 1.5 + 0.04, 1e-12);
 }
 
+// One value in the middle of its range: ±10% of it (±1 at 0), or half a decade either side of
+// its log10. Exact arithmetic to 1e-12 of the value.
+TEST(OneValueRange, TheValueInTheMiddleOfAUnitAboutIt) {
+  for (auto [value, half] : {std::pair{0.0, 1.0}, {3.0, 0.3}, {-2.472e7, 2.472e6}, {2.1281e7, 2.1281e6}}) {
+    const std::array<double, 2> range = one_value_range(value, false);
+    EXPECT_NEAR(range[0], value - half, 1e-12 * std::max(1.0, std::abs(value)));
+    EXPECT_NEAR(range[1], value + half, 1e-12 * std::max(1.0, std::abs(value)));
+  }
+  const std::array<double, 2> decade = one_value_range(-17.0, true);  // permeability 1e-17 m²
+  EXPECT_EQ(decade[0], -17.5);
+  EXPECT_EQ(decade[1], -16.5);
+}
+
 }  // namespace
 }  // namespace hydrodda::output
