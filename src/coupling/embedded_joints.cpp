@@ -131,26 +131,30 @@ std::vector<double> EmbeddedJoints::apertures(std::span<const geometry::Polygon>
       throw std::invalid_argument("joint apertures: block " + std::to_string(b) + " has " +
                                   std::to_string(blocks[b].size()) + " vertices, it was cut with " +
                                   std::to_string(network_.blocks[b].size()));
+  // Each face's length and closed length over its crossings inside the mesh.
   std::vector<double> opening(crossings_.size());
-  std::map<FaceKey, double> closed_length;
+  std::map<FaceKey, double> face_length, closed_length;
   for (std::size_t c = 0; c < crossings_.size(); ++c) {
     if (intact(crossings_[c])) continue;
     opening[c] = geometry::read_gauge(crossings_[c].gauge, blocks, network_.blocks).opening;
+    face_length[crossings_[c].face] += crossings_[c].length;
     if (!(opening[c] > open_threshold)) closed_length[crossings_[c].face] += crossings_[c].length;
   }
   const std::map<FaceKey, double> forces = contact_forces_by_face(contacts, network_.edge_fractures);
   std::vector<double> aperture(crossings_.size());
   for (std::size_t c = 0; c < crossings_.size(); ++c) {
-    if (intact(crossings_[c])) continue;  // rock: no fracture the flow sees
-    const hydro::JointApertureLaw& law = laws_.of_fracture(crossings_[c].face.fracture);
-    if (opening[c] > open_threshold) {
-      aperture[c] = law.open(opening[c]);
-      continue;
-    }
-    // σn: the face's compressive contact forces over its closed length.
-    const auto force = forces.find(crossings_[c].face);
-    const double stress = force == forces.end() ? 0.0 : force->second / closed_length.at(crossings_[c].face);
-    aperture[c] = law.closed(stress);
+    const JointCrossing& crossing = crossings_[c];
+    if (intact(crossing)) continue;  // rock: no fracture the flow sees
+    const hydro::JointApertureLaw& law = laws_.of_fracture(crossing.face.fracture);
+    const auto found = forces.find(crossing.face);
+    const double force = found == forces.end() ? 0.0 : found->second;
+    // A broken bond's face is a sub-block's, as short as the sub-blocks that resolve a crack,
+    // and the tip of a crack opens part of one for real: each point of it by its own gap.
+    hydro::JointApertureLaw point_law = law;
+    if (bond_of(crossing) >= 0) point_law.opening = hydro::HydraulicOpening::local;
+    const auto closed = closed_length.find(crossing.face);
+    aperture[c] = point_law.on_face(force, face_length.at(crossing.face), closed == closed_length.end() ? 0.0 : closed->second,
+                                    opening[c], open_threshold);
   }
   return aperture;
 }

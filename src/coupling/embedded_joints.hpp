@@ -3,9 +3,10 @@
 // takes the joint's transmissivity a³/12 along the face over the length of it inside the
 // element (hydro::embedded_fracture_permeability), so a joint carries a³/12 × ∇h·t whatever
 // the elements' size, closed or open. The hydraulic aperture a at each crossing follows the
-// law of its fracture's joint type (JointApertureLaws, hydro::JointApertureLaw): where the gauge across the face there is open,
-// a(0) + opening; where it is closed, the Barton–Bandis closure under the face's effective
-// normal stress σn, the compressive contact forces on the face over its closed length.
+// law of its fracture's joint type (JointApertureLaws, hydro::JointApertureLaw::on_face): along a
+// face that carries a compressive contact force, the Barton–Bandis closure under the face's mean
+// effective normal stress σn (that force over the face's length); along one that carries none,
+// a(0) + the opening where the gauge across the face there is open, a(0) where it is not.
 //
 // One transmissivity per joint: the clipped open area of the elements a joint crosses, and of
 // their neighbours, no longer enters the porosity law there (those elements take the matrix

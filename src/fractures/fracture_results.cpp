@@ -125,22 +125,19 @@ FractureState FractureMeter::measure(std::span<const geometry::Polygon> blocks, 
     }
   }
   // The hydraulic aperture of each piece by its fracture's law (its joint type's
-  // hydro::JointApertureLaw): open, a(0) + its opening;
-  // closed, the closure under its face's effective normal stress, the compressive contact
-  // forces on the face over the face's closed length.
+  // hydro::JointApertureLaw::on_face), as the flow takes it.
   const std::map<coupling::FaceKey, double> forces = coupling::contact_forces_by_face(contacts, network.edge_fractures);
   std::vector<double> fracture_force(layout_.traces.size(), 0.0);
   for (const auto& [key, force] : forces)
     if (key.fracture < static_cast<int>(fracture_force.size())) fracture_force[key.fracture] += force;
+  std::map<coupling::FaceKey, double> face_length;
+  for (std::size_t p = 0; p < state.pieces.size(); ++p) face_length[piece_face[p]] += piece_length[p];
   for (std::size_t p = 0; p < state.pieces.size(); ++p) {
     FracturePiece& piece = state.pieces[p];
-    const hydro::JointApertureLaw& law = laws.of_fracture(piece.fracture);
-    if (piece.open) {
-      piece.hydraulic_aperture = law.open(piece.aperture);
-    } else {
-      const auto force = forces.find(piece_face[p]);
-      piece.hydraulic_aperture = law.closed(force == forces.end() ? 0.0 : force->second / closed_length.at(piece_face[p]));
-    }
+    const auto force = forces.find(piece_face[p]);
+    piece.hydraulic_aperture = laws.of_fracture(piece.fracture)
+                                   .on_face(force == forces.end() ? 0.0 : force->second, face_length.at(piece_face[p]),
+                                            closed_length[piece_face[p]], piece.aperture, open_threshold);
     FractureResult& r = state.fractures[index[piece.fracture]];
     r.hydraulic_aperture += piece.hydraulic_aperture * piece_length[p];
   }

@@ -34,6 +34,20 @@ double JointApertureLaw::closed(double normal_stress) const {
   return residual_aperture + max_closure - sigma * max_closure / (normal_stiffness * max_closure + sigma);
 }
 
+// A DDA block has one uniform strain. Where the effective stress changes across a block (the
+// seepage force of a steep head gradient), two blocks' faces cannot follow each other: a face in
+// compression stands open at one end by some (Δσ / M) × the block's size and presses harder at
+// the other. That wedge is the discretisation's, not the joint's; the force across the face, which
+// equilibrium sets, is what the joint carries, so the face is closed under its mean stress. The
+// law is continuous as the force vanishes: closed(0) = a(0), from which an open face's a(0) + w
+// starts.
+double JointApertureLaw::on_face(double face_force, double face_length, double closed_length, double gap,
+                                 double open_threshold) const {
+  if (opening == HydraulicOpening::face && face_force > 0.0 && face_length > 0.0) return closed(face_force / face_length);
+  if (gap > open_threshold) return open(gap);
+  return closed(face_force > 0.0 && closed_length > 0.0 ? face_force / closed_length : 0.0);
+}
+
 PermeabilityTensor embedded_fracture_permeability(double aperture, double length, double area,
                                                   geometry::Point direction) {
   if (!(area > 0.0)) throw std::invalid_argument("embedded fracture: the element area must be positive");

@@ -50,14 +50,29 @@ double cubic_law_tip_length(double opening_angle, double matrix_permeability);
 // from a_r + V_m at σn = 0 down to a_r as σn → ∞ (the closure σn V_m/(k_ni V_m + σn) tends to
 // V_m, its initial slope is 1/k_ni). Open by a mechanical opening w: a(0) + w. Without a
 // closure (V_m = 0) a closed joint keeps a_r at every stress.
+// Where along a face between two blocks a joint is open to the flow (`[joint] hydraulic_opening`):
+// `face`, a face that carries a compressive force is closed along its whole length under its mean
+// stress; `local`, each point of a face is open where its own gap exceeds the tolerance.
+enum class HydraulicOpening { face, local };
+
 struct JointApertureLaw {
   double residual_aperture = 0.0;  // a_r, m
   double normal_stiffness = 0.0;   // k_ni, Pa/m (> 0 when max_closure > 0)
   double max_closure = 0.0;        // V_m, m
+  HydraulicOpening opening = HydraulicOpening::face;
 
   double closed(double normal_stress) const;
   double at_zero_stress() const { return residual_aperture + max_closure; }
   double open(double opening) const { return at_zero_stress() + opening; }
+  // At a point of a joint face between two blocks whose gap there is `gap` (m), the face
+  // carrying a compressive effective normal force F (N/m) over its length L, of which
+  // `closed_length` has a gap within `open_threshold`. `face`: a face that carries a force is
+  // closed along its whole length, at closed(F / L), whatever gap its blocks' uniform strains
+  // leave at one end; one that carries none is open(gap) where that exceeds the threshold,
+  // closed(0) elsewhere. `local`: open(gap) where it exceeds the threshold, else
+  // closed(F / closed_length).
+  double on_face(double face_force, double face_length, double closed_length, double gap,
+                 double open_threshold) const;
 };
 
 // A fracture of hydraulic aperture a embedded in an element (Lee, Lough & Jensen 2001; the

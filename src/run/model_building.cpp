@@ -167,12 +167,19 @@ std::vector<dda::BlockDefinition> build_blocks(const Scenario& s, GeometryWarnin
 }
 
 hydro::JointApertureLaw make_joint_aperture_law(const scenario::JointDefinition& j) {
-  return {j.residual_aperture.value_or(0.0), j.normal_stiffness.value_or(0.0), j.max_closure.value_or(0.0)};
+  return {j.residual_aperture.value_or(0.0), j.normal_stiffness.value_or(0.0), j.max_closure.value_or(0.0),
+          j.hydraulic_opening};
 }
 
 coupling::JointApertureLaws make_joint_aperture_laws(const Scenario& s, std::span<const geometry::FractureTrace> traces) {
+  // Where no joint conducts by a law of its own (no hydraulic keys, no bonds), the flow sees each
+  // gap point by point through the porosity law, and so does fractures.csv's hydraulic aperture.
+  const bool by_porosity = !s.any_joint_hydraulic() && !(s.geometry && !s.geometry->tessellations.empty());
   std::vector<hydro::JointApertureLaw> by_type;
-  for (int t = 0; t < s.joint_type_count(); ++t) by_type.push_back(make_joint_aperture_law(s.joint_type(t)));
+  for (int t = 0; t < s.joint_type_count(); ++t) {
+    by_type.push_back(make_joint_aperture_law(s.joint_type(t)));
+    if (by_porosity) by_type.back().opening = hydro::HydraulicOpening::local;
+  }
   std::vector<int> fracture_types;
   for (const geometry::FractureTrace& trace : traces) fracture_types.push_back(trace.joint_type);
   return {std::move(by_type), std::move(fracture_types)};

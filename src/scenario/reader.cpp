@@ -256,7 +256,8 @@ void read_materials(ReadContext& ctx, const TableView& root, Scenario& s) {
 
 const std::vector<std::string> kJointKeys{"friction_angle",    "cohesion",         "tensile_strength",
                                           "residual_aperture", "normal_stiffness", "max_closure",
-                                          "barrier_permeability", "barrier_width", "fracture_energy"};
+                                          "barrier_permeability", "barrier_width", "fracture_energy",
+                                          "hydraulic_opening"};
 
 // The keys of one joint type over `joint` (the default type's values, or the built-in ones).
 void read_joint_keys(ReadContext& ctx, const TableView& j, JointDefinition& joint) {
@@ -276,6 +277,9 @@ void read_joint_keys(ReadContext& ctx, const TableView& j, JointDefinition& join
       joint.hydraulic_line = j.line_of_key(key);
       break;
     }
+  // A default worth listing only where the joints conduct by a law of their own.
+  if (j.has("hydraulic_opening") || joint.hydraulic())
+    joint.hydraulic_opening = j.choice("hydraulic_opening", joint.hydraulic_opening);
   if (j.has("residual_aperture") && joint.residual_aperture)
     j.require("residual_aperture", *joint.residual_aperture >= 0.0 && *joint.residual_aperture < 1.0,
               "must lie in [0, 1) m");

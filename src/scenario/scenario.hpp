@@ -147,6 +147,8 @@ struct JointDefinition {
   std::optional<double> normal_stiffness;   // k_ni, Pa/m: Barton–Bandis closure, with max_closure
   std::optional<double> max_closure;        // V_m, m
   int hydraulic_line = 0;                   // where the first of them is, for messages
+  // Where a face is open to the flow: by its force (`face`, the default) or by each point's gap.
+  hydro::HydraulicOpening hydraulic_opening = hydro::HydraulicOpening::face;
   // A barrier across the joint (docs/flow.md, "Joints that hinder flow"): a layer of this
   // permeability (m²) and width (m), both given or neither.
   std::optional<double> barrier_permeability;

@@ -14,6 +14,7 @@
 #include "dda/definitions.hpp"
 #include "geometry/tessellation.hpp"
 #include "hydro/boundary_condition.hpp"
+#include "hydro/permeability_law.hpp"
 
 namespace hydrodda::scenario {
 
@@ -82,6 +83,14 @@ struct Spellings<coupling::Acceleration> {  // coupling.acceleration
       {coupling::Acceleration::none, "none"},
       {coupling::Acceleration::aitken, "aitken"},
       {coupling::Acceleration::anderson, "anderson"},
+  }};
+};
+
+template <>
+struct Spellings<hydro::HydraulicOpening> {  // joint.hydraulic_opening
+  static constexpr std::array<Spelling<hydro::HydraulicOpening>, 2> table{{
+      {hydro::HydraulicOpening::face, "face"},
+      {hydro::HydraulicOpening::local, "local"},
   }};
 };
 

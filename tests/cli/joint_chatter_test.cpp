@@ -1,6 +1,8 @@
 // A coupled run whose joints open and shut from pass to pass, through the real program: the
-// faulted seal at 1,500 m of head (0.58 of its hand jacking head), whose loop swings with a
-// hundred and more joint crossings switching every pass (docs/studies/2026-11-29-loop-convergence.md).
+// faulted seal at 1,500 m of head (0.58 of its hand jacking head) with each point of its joints
+// open by its own gap (`[joint] hydraulic_opening = "local"`; by default a face that carries a
+// force is closed along its length, and the loop converges), whose loop swings with a hundred and
+// more joint crossings switching every pass (docs/studies/2026-11-29-loop-convergence.md).
 // Its message (after the drift it reads as, the seal rising a little each pass) says that the
 // joints chatter, with the median crossings and contacts of
 // history.csv's passes, and advises no relaxation or acceleration of the heads.
@@ -39,7 +41,9 @@ long long median_of_last_passes(const std::vector<std::vector<std::string>>& his
 TEST(JointChatter, AFaultedSealWhoseJointsOpenAndShutSaysSo) {
   const fs::path seal = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/faulted_seal.toml";
   const fs::path file = edited_scenario(seal, "hydrodda-joint-chatter",
-                                        {{"head = 1045.0", "head = 1545.0"}, {"max_iterations = 50", "max_iterations = 14"}});
+                                        {{"head = 1045.0", "head = 1545.0"},
+                                         {"max_iterations = 50", "max_iterations = 14"},
+                                         {"friction_angle = 30.0", "friction_angle = 30.0\nhydraulic_opening = \"local\""}});
   hydrodda::testing::TemporaryFolder out("hydrodda-joint-chatter-out");
   const auto result = run_program("-q run " + file.string() + " -o " + out.path.string() + " --threads 1");
   ASSERT_EQ(result.exit_code, 0) << result.output;

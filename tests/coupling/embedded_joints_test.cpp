@@ -116,6 +116,15 @@ TEST(EmbeddedJoints, JointCarriesTheCubicLawOnEveryMesh) {
     }
 }
 
+// The block above the horizontal joint at y = 0.5 and its edge along it; −1s if none.
+std::pair<int, int> upper_face(const Model& m) {
+  for (std::size_t b = 0; b < m.network.blocks.size(); ++b)
+    for (std::size_t e = 0; e < m.network.edge_fractures[b].size(); ++e)
+      if (m.network.edge_fractures[b][e] == 0 && geometry::centroid(m.network.blocks[b]).y > 0.5)
+        return {static_cast<int>(b), static_cast<int>(e)};
+  return {-1, -1};
+}
+
 TEST(EmbeddedJoints, ApertureFollowsTheGaugeAndTheContactForces) {
   const Model m = make_model(8, 0.5, 0.5);
   const hydro::JointApertureLaw law{1.0e-5, 2.0e11, 1.0e-4};
@@ -124,22 +133,73 @@ TEST(EmbeddedJoints, ApertureFollowsTheGaugeAndTheContactForces) {
   // Closed and unloaded: a(0).
   for (double a : joints.apertures(blocks, {}, 1e-9)) EXPECT_DOUBLE_EQ(a, law.at_zero_stress());
   // Closed under 3 kN on the 1 m face, shared by two contacts: σn = 3 MPa.
-  int upper = -1, edge = -1;
-  for (std::size_t b = 0; b < blocks.size(); ++b)
-    for (std::size_t e = 0; e < m.network.edge_fractures[b].size(); ++e)
-      if (m.network.edge_fractures[b][e] == 0 && geometry::centroid(blocks[b]).y > 0.5) {
-        upper = static_cast<int>(b);
-        edge = static_cast<int>(e);
-      }
+  const auto [upper, edge] = upper_face(m);
   ASSERT_GE(upper, 0);
   const int lower = 1 - upper;
   std::vector<dda::ContactInfo> contacts{{{lower, 0, upper, edge}, dda::ContactState::locked, 0.0, 1.0e6},
                                          {{lower, 1, upper, edge}, dda::ContactState::locked, 0.0, 2.0e6},
                                          {{lower, 2, upper, edge}, dda::ContactState::open, -1e-3, 5.0e6}};
   for (double a : joints.apertures(blocks, contacts, 1e-9)) EXPECT_DOUBLE_EQ(a, law.closed(3.0e6));
-  // The upper block lifted by 0.2 mm: open, a(0) + 0.2 mm, whatever the contacts say.
+  // The upper block lifted by 0.2 mm, its contacts open and carrying nothing: a(0) + 0.2 mm.
   for (Point& p : blocks[upper]) p.y += 2.0e-4;
-  for (double a : joints.apertures(blocks, contacts, 1e-9)) EXPECT_NEAR(a, law.open(2.0e-4), 1e-15);
+  std::vector<dda::ContactInfo> lifted = contacts;
+  for (dda::ContactInfo& c : lifted) {
+    c.state = dda::ContactState::open;
+    c.normal_force = 0.0;
+  }
+  for (double a : joints.apertures(blocks, lifted, 1e-9)) EXPECT_NEAR(a, law.open(2.0e-4), 1e-15);
+  // The same gap while the face still carries its 3 kN: closed along its length under 3 MPa by
+  // default (the face's force decides); open by its gap where each point decides.
+  for (double a : joints.apertures(blocks, contacts, 1e-9)) EXPECT_DOUBLE_EQ(a, law.closed(3.0e6));
+  hydro::JointApertureLaw local = law;
+  local.opening = hydro::HydraulicOpening::local;
+  const EmbeddedJoints by_point(m.mesh, m.network, local);
+  for (double a : by_point.apertures(blocks, contacts, 1e-9)) EXPECT_NEAR(a, law.open(2.0e-4), 1e-15);
+}
+
+// A face left open at one end as a wedge while its other end carries the force (two blocks whose
+// uniform strains differ: docs/coupling.md, "Joint hydraulic apertures"). The horizontal 1 m face
+// at y = 0.5, the upper block turned about the face's left end so that the gap grows as
+// w(x) = θ x, and 3 kN on the face. By default every crossing takes the closure under the mean
+// stress 3 kN / 1 m = 3 MPa, the face's length being the crossings' (the wedge's gap not seen);
+// with `local` each crossing whose gauge opens by more than the threshold takes a(0) + w there,
+// and the others the closure under 3 kN over the closed crossings' length. Exact: the values are
+// the law's own, compared bit for bit.
+TEST(EmbeddedJoints, AWedgeThatCarriesAForceIsClosedAlongTheFaceByDefault) {
+  const Model m = make_model(8, 0.5, 0.5);
+  const hydro::JointApertureLaw law{1.0e-5, 2.0e11, 1.0e-4};
+  hydro::JointApertureLaw local = law;
+  local.opening = hydro::HydraulicOpening::local;
+  const EmbeddedJoints by_face(m.mesh, m.network, law), by_point(m.mesh, m.network, local);
+  std::vector<Polygon> blocks = m.network.blocks;
+  const auto [upper, edge] = upper_face(m);
+  ASSERT_GE(upper, 0);
+  const double theta = 1.0e-4;  // rad: 0.1 mm at the right end
+  for (Point& p : blocks[upper]) p = Point{p.x - theta * (p.y - 0.5), p.y + theta * p.x};
+  const std::vector<dda::ContactInfo> contacts{{{1 - upper, 0, upper, edge}, dda::ContactState::locked, 0.0, 3.0e3}};
+  const double threshold = 2.0e-5;
+  const std::vector<double> face = by_face.apertures(blocks, contacts, threshold);
+  const std::vector<double> point = by_point.apertures(blocks, contacts, threshold);
+  double closed_length = 0.0;
+  std::vector<double> gap(face.size());
+  for (std::size_t c = 0; c < face.size(); ++c) {
+    gap[c] = geometry::read_gauge(by_face.crossings()[c].gauge, blocks, m.network.blocks).opening;
+    if (!(gap[c] > threshold)) closed_length += by_face.crossings()[c].length;
+  }
+  ASSERT_GT(closed_length, 0.1);
+  ASSERT_LT(closed_length, 0.9);
+  int open = 0;
+  for (std::size_t c = 0; c < face.size(); ++c) {
+    EXPECT_DOUBLE_EQ(face[c], law.closed(3.0e3 / crossed_length(by_face))) << c;
+    if (gap[c] > threshold) {
+      ++open;
+      EXPECT_EQ(point[c], law.open(gap[c])) << c;
+    } else {
+      EXPECT_EQ(point[c], law.closed(3.0e3 / closed_length)) << c;
+    }
+  }
+  EXPECT_GT(open, 0);
+  EXPECT_NEAR(crossed_length(by_face), 1.0, 1e-12);
 }
 
 // Two horizontal joints, y = 0.3 of the default type and y = 0.7 of type 1 (a fault), on a
@@ -190,11 +250,13 @@ TEST(EmbeddedJoints, CrossingsOfTwoJointTypesTakeTheirOwnLaws) {
     EXPECT_EQ(loaded[c], law_of(joints.crossings()[c]).closed(3.0e6)) << c;
   EXPECT_NE(joint.closed(3.0e6), fault.closed(3.0e6));
 
-  // The top block lifted by 0.2 mm: the fault opens, a(0) + w by its law; the lower joint stays
-  // shut under its 3 MPa.
+  // The top block lifted by 0.2 mm, the fault's contact carrying nothing: the fault opens,
+  // a(0) + w by its law; the lower joint stays shut under its 3 MPa.
   for (std::size_t b = 0; b < blocks.size(); ++b)
     if (geometry::centroid(blocks[b]).y > 0.7)
       for (Point& p : blocks[b]) p.y += 2.0e-4;
+  for (dda::ContactInfo& c : contacts)
+    if (geometry::centroid(blocks[static_cast<std::size_t>(c.key.block_j)]).y > 0.7) c.normal_force = 0.0;
   const std::vector<double> lifted = joints.apertures(blocks, contacts, 1e-9);
   for (std::size_t c = 0; c < lifted.size(); ++c) {
     if (joints.crossings()[c].face.fracture == 1)

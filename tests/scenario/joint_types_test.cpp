@@ -197,5 +197,24 @@ TEST(JointTypes, ATypesBadApertureLawIsNamedByFileLineAndKey) {
       << dump(errors_of(flow_only));
 }
 
+
+// Where a face is open to the flow, `hydraulic_opening`: "face" by default, a type's own over
+// [joint]'s, and a value of neither spelling named by file, line and key.
+TEST(JointTypes, ATypeSaysWhereItsFacesOpenToTheFlow) {
+  std::string text = with_mechanics(kTyped);
+  text.replace(text.find("tensile_strength = 1.0e4\n"), 0, "residual_aperture = 1.0e-5\nhydraulic_opening = \"local\"\n");
+  text.replace(text.find("cohesion = 0.0\n"), 0, "hydraulic_opening = \"face\"\n");
+  ASSERT_TRUE(errors_of(text).empty()) << dump(errors_of(text));
+  const Scenario s = parse_scenario(text, "case.toml");
+  EXPECT_EQ(s.joint.hydraulic_opening, hydro::HydraulicOpening::local);
+  EXPECT_EQ(s.joint_type(s.joint_type_index("fault")).hydraulic_opening, hydro::HydraulicOpening::face);
+  EXPECT_EQ(s.joint_type(s.joint_type_index("clay")).hydraulic_opening, hydro::HydraulicOpening::local);  // inherited
+  EXPECT_EQ(parse_scenario(with_mechanics(kTyped), "case.toml").joint.hydraulic_opening, hydro::HydraulicOpening::face);
+
+  std::string bad = with_mechanics(kTyped);
+  bad.replace(bad.find("cohesion = 0.0\n"), 0, "hydraulic_opening = \"gap\"\n");
+  EXPECT_TRUE(has_error(errors_of(bad), "case.toml:16: joint.fault.hydraulic_opening:")) << dump(errors_of(bad));
+}
+
 }  // namespace
 }  // namespace hydrodda::scenario
