@@ -119,7 +119,13 @@ std::string chattering_joints(const LoopAsRun& loop) {
          "(none did on the faulted seal of docs/studies/2026-11-29-loop-convergence.md; Aitken's did on the "
          "untuned seal of docs/studies/2026-11-30-untuned-seal-fixed-point.md from a fresh start at 0.86 and 0.93 "
          "of its lift-off, not at 0.97 nor along its loading path), and its answer holds only to how far it moved "
-         "over these passes";
+         "over these passes" +
+         std::string(loop.joints_by_point
+                         ? "; its joints are read point by point (joint.hydraulic_opening = \"local\"): where the rock's "
+                           "stress holds them shut, try \"face\", under which a face that carries a force is closed along "
+                           "its length and the wedges the blocks' uniform strains leave open no longer conduct (it settled "
+                           "the faulted seal and the untuned seal: docs/coupling.md, \"Joint hydraulic apertures\")"
+                         : "");
 }
 
 std::string unsettled_advice(const LoopAsRun& loop) {

@@ -69,6 +69,10 @@ struct LoopAsRun {
   // last passes (those the norms are fitted over; 0 without joint apertures).
   int crossings_switched = 0;
   int contacts_changed = 0;
+  // Some joint type reads each point of a face by its own gap (`[joint] hydraulic_opening =
+  // "local"`): joints that chatter are then told of "face", under which the wedges the blocks'
+  // uniform strains leave open under compression no longer conduct.
+  bool joints_by_point = false;
   // The whole fluid load went on at once in the first pass (coupling.ramp_passes = 1, the loop
   // unconverged in a steady run's first load step): a loop that swings, jumps or drifts is then
   // told to try the ramp too.

@@ -31,6 +31,13 @@ namespace hydrodda::run {
 
 namespace {
 
+// Whether a joint type that conducts by a law of its own reads each point by its own gap.
+bool any_joint_read_by_point(const scenario::Scenario& s) {
+  for (int t = 0; t < s.joint_type_count(); ++t)
+    if (s.joint_type(t).hydraulic() && s.joint_type(t).hydraulic_opening == hydro::HydraulicOpening::local) return true;
+  return false;
+}
+
 // The changes of every pass from history.csv's rows (columns iteration, time, head_change,
 // displacement_change, ...), those of a resumed run's earlier passes included.
 ConvergenceHistory read_convergence(const std::vector<std::vector<std::string>>& rows, double tolerance) {
@@ -340,6 +347,7 @@ std::string describe_non_convergence(const Round& round) {
                                           .passes_not_at_rest = passes_not_at_rest,
                                           .crossings_switched = median_of_last("joint_crossings_switched"),
                                           .contacts_changed = median_of_last("contact_state_changes"),
+                                          .joints_by_point = any_joint_read_by_point(s),
                                           .sudden_load = round.model.loop().ramp_passes() == 1 && round.model.load_step() == 1,
                                           .largest_opening = std::move(largest_opening),
                                           .crossings_by_pass = std::move(crossings),

@@ -61,6 +61,7 @@ TEST(JointChatter, AFaultedSealWhoseJointsOpenAndShutSaysSo) {
             std::string::npos)
       << message;
   EXPECT_EQ(message.find("anderson"), std::string::npos) << message;
+  EXPECT_NE(message.find("try \"face\""), std::string::npos) << message;
   EXPECT_EQ(message.find("coupling.relaxation = "), std::string::npos) << message;
   EXPECT_NE(message.find("K_eff/K_m of region 'seal' ranged from"), std::string::npos) << message;
 }

@@ -117,6 +117,14 @@ TEST(NonConvergence, ALoopWhoseJointsChatterSaysSoInsteadOfAdvisingAnAcceleratio
             std::string::npos) << d.text;
   EXPECT_EQ(d.text.find("anderson"), std::string::npos) << d.text;
   EXPECT_EQ(d.text.find("relaxation = "), std::string::npos) << d.text;
+  EXPECT_EQ(d.text.find("hydraulic_opening"), std::string::npos) << d.text;
+  // Joints read point by point are told of the rule that reads a face by its force.
+  const ConvergenceDiagnosis by_point = diagnose_non_convergence(
+      head, displacement, two_back, 1e-4, {.crossings_switched = 114, .contacts_changed = 21, .joints_by_point = true});
+  EXPECT_NE(by_point.text.find("its joints are read point by point (joint.hydraulic_opening = \"local\"): where the "
+                               "rock's stress holds them shut, try \"face\""),
+            std::string::npos)
+      << by_point.text;
   const ConvergenceDiagnosis few = diagnose_non_convergence(
       head, displacement, two_back, 1e-4, {.crossings_switched = kChatteringCrossings - 1, .contacts_changed = 21});
   EXPECT_EQ(few.text.find("the joints open and shut"), std::string::npos) << few.text;
