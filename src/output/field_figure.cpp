@@ -131,9 +131,9 @@ ColourScale make_colour_scale(const FieldFigure& f) {
   }
   // A spread below a millionth of the values is no contrast to paint across the whole bar
   // (the cubic law's permeability over closed joints is uniform to 1e-8): such a field is
-  // shown as one of a single value is, in the bar's middle colour, with one tick naming it
-  // (a bar from the value to one unit above it painted the value its bottom colour, and its
-  // ticks, printed to six figures, all read "2.1281e+07" where bonds broke at that load in Pa).
+  // shown as one of a single value is, in the bar's middle colour, with one tick naming it: a bar
+  // that started at the value would paint it the bottom colour, and ticks printed to six figures
+  // over a unit of a load of 2.1281e7 Pa would all read alike.
   const double spread_of_one_value =
       f.logarithmic ? std::log10(1.0 + 1e-6) : 1e-6 * std::max(std::abs(s.lo), std::abs(s.hi));
   if (!(s.hi - s.lo > spread_of_one_value)) {
