@@ -104,6 +104,10 @@ EmbeddedJoints::EmbeddedJoints(const mesh::TriangleMesh& mesh, geometry::BlockNe
   }
   for (const JointCrossing& c : crossings_)
     zero_stress_aperture_.push_back(laws_.of_fracture(c.face.fracture).at_zero_stress());
+  // Each face's length over its crossings inside the mesh, found once: the mesh is fixed.
+  std::map<FaceKey, double> length_of_face;
+  for (const JointCrossing& c : crossings_) length_of_face[c.face] += c.length;
+  for (const JointCrossing& c : crossings_) face_length_.push_back(length_of_face.at(c.face));
   // The zone: the crossed elements and every element sharing a node with one.
   std::vector<char> near_node(mesh.nodes.size(), 0);
   for (const JointCrossing& c : crossings_)
@@ -131,13 +135,12 @@ std::vector<double> EmbeddedJoints::apertures(std::span<const geometry::Polygon>
       throw std::invalid_argument("joint apertures: block " + std::to_string(b) + " has " +
                                   std::to_string(blocks[b].size()) + " vertices, it was cut with " +
                                   std::to_string(network_.blocks[b].size()));
-  // Each face's length and closed length over its crossings inside the mesh.
+  // Each face's closed length over its crossings inside the mesh.
   std::vector<double> opening(crossings_.size());
-  std::map<FaceKey, double> face_length, closed_length;
+  std::map<FaceKey, double> closed_length;
   for (std::size_t c = 0; c < crossings_.size(); ++c) {
     if (intact(crossings_[c])) continue;
     opening[c] = geometry::read_gauge(crossings_[c].gauge, blocks, network_.blocks).opening;
-    face_length[crossings_[c].face] += crossings_[c].length;
     if (!(opening[c] > open_threshold)) closed_length[crossings_[c].face] += crossings_[c].length;
   }
   const std::map<FaceKey, double> forces = contact_forces_by_face(contacts, network_.edge_fractures);
@@ -153,7 +156,7 @@ std::vector<double> EmbeddedJoints::apertures(std::span<const geometry::Polygon>
     hydro::JointApertureLaw point_law = law;
     if (bond_of(crossing) >= 0) point_law.opening = hydro::HydraulicOpening::local;
     const auto closed = closed_length.find(crossing.face);
-    aperture[c] = point_law.on_face(force, face_length.at(crossing.face), closed == closed_length.end() ? 0.0 : closed->second,
+    aperture[c] = point_law.on_face(force, face_length_[c], closed == closed_length.end() ? 0.0 : closed->second,
                                     opening[c], open_threshold);
   }
   return aperture;

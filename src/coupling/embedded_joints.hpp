@@ -96,6 +96,7 @@ class EmbeddedJoints {
   std::vector<double> element_area_;
   std::vector<JointCrossing> crossings_;
   std::vector<double> zero_stress_aperture_;  // per crossing
+  std::vector<double> face_length_;           // per crossing: its face's length inside the mesh
   std::vector<char> zone_;
   int first_bond_ = -1;
   int bond_count_ = 0;  // bonds with a face in the network
