@@ -25,6 +25,25 @@
 //    An overlap deeper than twice the tolerance is no contact at the tolerance, and a step
 //    that cannot push it out is cut and fails as before.
 //
+// A short step's normal springs (normal_spring). A step cut short for any reason (its contact
+// states chattering) makes its passes slow: a closed contact's overlap shrinks by K/(K + p) a
+// pass, K ≥ 2M/Δt² of its blocks, so at 2M/Δt² = p half of it is left each pass, the forces do
+// not settle, and the step is cut again, shorter and slower. Under the augmented Lagrangian the
+// answer of a pass that settles does not depend on the normal penalty (every overlap within
+// the tolerance, the multiplier carrying the force): only the rate does. So before a step whose
+// forces did not settle (after its try at twice the passes, and its mixed try) is cut for an
+// overlap past the tolerance whose blocks' inertia rivals p, it is tried again at its length
+// with the joints' normal springs at kInertiaOverPenalty × 2M/Δt² of the lighter movable block
+// where that is above p, so that a pass leaves at most a tenth of an overlap; at most
+// kMostPenaltyRaise × p (the matrix no worse conditioned than by ten fixed points' springs of
+// 10 p), where the step is cut as before. So are the tries of the cuts after it; a step that
+// settled without them is untouched. The shear springs keep p (a locked contact's shear force
+// is p × its spring's stretch, which a stiffer spring would change), the pure penalty method
+// keeps p (there p is the contact's stiffness). Not in a model with bonds: the Brazilian disc's
+// run took three times as long with it, to the same end. On the faulted seal just under its
+// lift-off the breach bracket is then the same on its mesh and on the mesh halved
+// (docs/studies/2026-12-01-short-steps-normal-springs.md).
+//
 // Passes that contract slowly: while the contact states stand, λ ← λ + p d is an affine map
 // of the multipliers, contracting by K/(K + p) a pass, K the stiffness holding a contact's
 // vertex. Where K ≫ p (a sub-block's corner held by the locked contacts of the bonded cells
@@ -35,9 +54,9 @@
 // length with them mixed from its pass kPlainLagrangianPasses on, and so are the tries of the
 // cuts after it; a step that settled without them is untouched (update_multipliers). Only where
 // the blocks about the overlaps hold them, not their inertia: where 2M/Δt² of a block at an
-// overlap past the tolerance outweighs p, the exact solution of the step pushes it out by a
-// force of its inertia, which a static step's shortness makes arbitrary (a block 3 µm into the
-// base at 1e-10 s: 1e18 N/m), and the step is cut and fails as above.
+// overlap past the tolerance outweighs its normal spring, the exact solution of the step
+// pushes it out by a force of its inertia, which a static step's shortness makes arbitrary (a
+// block 3 µm into the base at 1e-10 s: 1e18 N/m), and the step is cut and fails as above.
 //
 // Passes that stalled moved nothing but the multipliers: λ ← λ + p d on every closed contact,
 // while the one past the tolerance kept them going. A contact already within the tolerance,
@@ -48,6 +67,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "dda/system.hpp"
 
@@ -72,6 +92,31 @@ char System::open_contacts_standing_off() {
   return seen;
 }
 
+double System::normal_spring(const ActiveContact& c) const {
+  return stiff_normal_springs_ ? stiffened_normal_spring(c) : c.stiffness;
+}
+
+bool System::overlaps_slowed_by_inertia() const {
+  if (!bond_sides_.empty()) return false;  // not with bonds (above)
+  for (int i : closed_) {
+    const ActiveContact& c = active_[i];
+    if (c.record.penetration > penetration_tolerance_ && stiffened_normal_spring(c) > c.stiffness) return true;
+  }
+  return false;
+}
+
+double System::stiffened_normal_spring(const ActiveContact& c) const {
+  if (settings_.contact != ContactMethod::augmented_lagrangian) return c.stiffness;
+  double lighter = std::numeric_limits<double>::infinity();
+  for (int b : {c.key.block_i, c.key.block_j}) {
+    const Block& block = blocks_[static_cast<std::size_t>(b)];
+    if (block.dof >= 0) lighter = std::min(lighter, materials_[block.material].density * block.moments.area);
+  }
+  if (!std::isfinite(lighter)) return c.stiffness;
+  const double inertia = 2.0 * lighter / (dt_ * dt_);
+  return std::clamp(kInertiaOverPenalty * inertia, c.stiffness, kMostPenaltyRaise * c.stiffness);
+}
+
 bool System::overlaps_held_by_the_blocks_around() const {
   bool any = false;
   for (int i : closed_) {
@@ -81,7 +126,8 @@ bool System::overlaps_held_by_the_blocks_around() const {
     for (int b : {c.key.block_i, c.key.block_j}) {
       const Block& block = blocks_[static_cast<std::size_t>(b)];
       const double inertia = 2.0 * materials_[block.material].density * block.moments.area / (dt_ * dt_);
-      if (block.dof >= 0 && inertia > penalty_) return false;
+      // The penalty p (a bonded face's own spring aside), or the stiffened spring.
+      if (block.dof >= 0 && inertia > (stiff_normal_springs_ ? c.normal_stiffness : penalty_)) return false;
     }
   }
   return any;

@@ -449,23 +449,24 @@ void System::factor_with_contacts() {
                            [&](std::size_t chunk, std::size_t begin, std::size_t end) {
     RankOneTerm* next = terms.data() + starts[chunk].springs;
     int* next_closed = closed_.data() + starts[chunk].closed;
-    const auto add_term = [&](const ActiveContact& c, int kind, const Vector6& e_i, const Vector6& e_j) {
+    const auto add_term = [&](const ActiveContact& c, int kind, const Vector6& e_i, const Vector6& e_j, double penalty) {
       const ContactKey& k = c.key;
       RankOneTerm& t = *next++;
       t.id = {k.block_i, k.vertex, k.block_j, k.edge, kind};
       t.block_a = c.dof_i;
       t.block_b = c.dof_j;
-      const double root_stiffness = std::sqrt(c.stiffness);
+      const double root_stiffness = std::sqrt(penalty);
       t.w_a = root_stiffness * e_i;
       t.w_b = root_stiffness * e_j;
     };
     // active_ is in key order, and so the terms in id order.
     for (std::size_t i = begin; i < end; ++i) {
-      const ActiveContact& c = active_[i];
+      ActiveContact& c = active_[i];
       if (!is_closed(c.record.state)) continue;
       *next_closed++ = static_cast<int>(i);
-      add_term(c, 0, c.en_i, c.en_j);  // normal spring ½ p d²
-      if (c.record.state == ContactState::locked) add_term(c, 1, c.es_i, c.es_j);  // shear ½ p s²
+      c.normal_stiffness = normal_spring(c);
+      add_term(c, 0, c.en_i, c.en_j, c.normal_stiffness);  // normal spring ½ p d²
+      if (c.record.state == ContactState::locked) add_term(c, 1, c.es_i, c.es_j, c.stiffness);  // shear ½ p s²
     }
   });
   // Both stay as they are through this pass's solves; the next step's assembly writes over
@@ -495,7 +496,7 @@ void System::add_contact_loads(std::size_t begin, std::size_t end, Eigen::Vector
     const ActiveContact& c = active_[closed_[k]];
     const ContactRecord& r = c.record;
     // Normal: energy λ d + ½ p d² → load −(λ + p d0) en.
-    const double normal = r.multiplier + c.stiffness * c.penetration0;
+    const double normal = r.multiplier + c.normal_stiffness * c.penetration0;
     add_segment(f, c.dof_i, -normal * c.en_i);
     add_segment(f, c.dof_j, -normal * c.en_j);
     if (r.state == ContactState::locked) {
@@ -550,7 +551,7 @@ double System::compute_shear(const ActiveContact& c, const Eigen::VectorXd& d) c
 }
 
 double System::compute_normal_force(const ActiveContact& c, double penetration) const {
-  return c.record.multiplier + c.stiffness * penetration;
+  return c.record.multiplier + c.normal_stiffness * penetration;
 }
 
 double System::compute_shear_strength(const ActiveContact& c, double normal_force) const {
@@ -940,6 +941,7 @@ StepReport System::step() {
   dt_ = std::min(settings_.time_step, dt_);
   lagrangian_limit_ = settings_.max_lagrangian_iterations;
   mixing_multipliers_ = false;
+  stiff_normal_springs_ = false;
   const double first_time_step = dt_;
   std::string first_failure;
   tried_multipliers_.clear();
@@ -1031,6 +1033,12 @@ StepReport System::step() {
     // And then once more with the multipliers mixed (lagrangian_limits.cpp), still uncut.
     if (unsettled == Unsettled::contact_forces && !mixing_multipliers_ && overlaps_held_by_the_blocks_around()) {
       mixing_multipliers_ = true;
+      continue;
+    }
+    // And then with its normal springs stiffened against the blocks' inertia
+    // (lagrangian_limits.cpp), still uncut: a shorter step would only slow the passes further.
+    if (unsettled == Unsettled::contact_forces && !stiff_normal_springs_ && overlaps_slowed_by_inertia()) {
+      stiff_normal_springs_ = true;
       continue;
     }
     dt_ *= settled ? std::max(0.1, 0.9 * allowed_displacement_ / largest) : 0.3;

@@ -299,6 +299,9 @@ class System {
     double shear0 = 0.0;
     double length = 0.0;  // the face length it carries (tributary_length)
     double stiffness = 0.0;  // its springs' penalty (contact_stiffness)
+    // Its normal spring's penalty in the try under way (normal_spring), set as each pass
+    // factors: p, or stiffer in a step short enough that the blocks' inertia rivals p.
+    double normal_stiffness = 0.0;
     Vector6 es_i = Vector6::Zero(), es_j = Vector6::Zero();
     // Its last change of state, written only as it changes and read only when a step's states
     // do not settle (unsettled_states.cpp): the pass (−1: none in this try), the state and the
@@ -398,8 +401,19 @@ class System {
   // the pass kPlainLagrangianPasses on, mixed with the passes before by Anderson's rule.
   void update_multipliers(int pass, numerics::AndersonAccelerator& mixing);
   static constexpr int kPlainLagrangianPasses = 10;
+  // The penalty of a closed contact's normal spring in the try under way: its springs' p, or
+  // once stiff_normal_springs_, under the augmented Lagrangian, raised to
+  // kInertiaOverPenalty × 2M/Δt² of the lighter of its movable blocks, at most
+  // kMostPenaltyRaise × p (lagrangian_limits.cpp).
+  double normal_spring(const ActiveContact& c) const;
+  double stiffened_normal_spring(const ActiveContact& c) const;
+  // In a model without bonds, some closed contact overlaps past the tolerance where a
+  // stiffened normal spring would be stiffer than its p.
+  bool overlaps_slowed_by_inertia() const;
+  static constexpr double kInertiaOverPenalty = 10.0;
+  static constexpr double kMostPenaltyRaise = 100.0;
   // Some closed contact overlaps past the tolerance, and none of them is held by its blocks'
-  // inertia: 2M/Δt² ≤ p for each movable block of each.
+  // inertia: 2M/Δt² ≤ its normal spring's penalty for each movable block of each.
   bool overlaps_held_by_the_blocks_around() const;
   // Whether no closed contact overlaps its edge by more than a step whose passes no longer move
   // the blocks may hold: the tolerance × `growth` and 1e-6 of the tolerance more, or the
@@ -570,6 +584,7 @@ class System {
   // twice that once its forces failed to settle (System::step).
   int lagrangian_limit_ = 0;
   bool mixing_multipliers_ = false;  // this step's tries mix their multipliers (lagrangian_limits.cpp)
+  bool stiff_normal_springs_ = false;  // this step's tries stiffen their normal springs (normal_spring)
   std::function<bool()> interrupt_check_;  // set_interrupt_check
   // Undoes what the step under way changed (its bonds broken, its cuts of the time step, which
   // began at `first_time_step`) and throws StepInterrupted.
