@@ -105,16 +105,19 @@ bool System::overlaps_slowed_by_inertia() const {
   return false;
 }
 
+double System::step_inertia(const Block& block) const {
+  return 2.0 * materials_[block.material].density * block.moments.area / (dt_ * dt_);
+}
+
 double System::stiffened_normal_spring(const ActiveContact& c) const {
   if (settings_.contact != ContactMethod::augmented_lagrangian) return c.stiffness;
-  double lighter = std::numeric_limits<double>::infinity();
+  double lighter = std::numeric_limits<double>::infinity();  // the lighter movable block's
   for (int b : {c.key.block_i, c.key.block_j}) {
     const Block& block = blocks_[static_cast<std::size_t>(b)];
-    if (block.dof >= 0) lighter = std::min(lighter, materials_[block.material].density * block.moments.area);
+    if (block.dof >= 0) lighter = std::min(lighter, step_inertia(block));
   }
   if (!std::isfinite(lighter)) return c.stiffness;
-  const double inertia = 2.0 * lighter / (dt_ * dt_);
-  return std::clamp(kInertiaOverPenalty * inertia, c.stiffness, kMostPenaltyRaise * c.stiffness);
+  return std::clamp(kInertiaOverPenalty * lighter, c.stiffness, kMostPenaltyRaise * c.stiffness);
 }
 
 bool System::overlaps_held_by_the_blocks_around() const {
@@ -125,9 +128,8 @@ bool System::overlaps_held_by_the_blocks_around() const {
     any = true;
     for (int b : {c.key.block_i, c.key.block_j}) {
       const Block& block = blocks_[static_cast<std::size_t>(b)];
-      const double inertia = 2.0 * materials_[block.material].density * block.moments.area / (dt_ * dt_);
-      // The penalty p (a bonded face's own spring aside), or the stiffened spring.
-      if (block.dof >= 0 && inertia > (stiff_normal_springs_ ? c.normal_stiffness : penalty_)) return false;
+      // Against the penalty p (a bonded face's own spring aside), or the stiffened spring.
+      if (block.dof >= 0 && step_inertia(block) > (stiff_normal_springs_ ? c.normal_stiffness : penalty_)) return false;
     }
   }
   return any;

@@ -407,6 +407,8 @@ class System {
   // kMostPenaltyRaise × p (lagrangian_limits.cpp).
   double normal_spring(const ActiveContact& c) const;
   double stiffened_normal_spring(const ActiveContact& c) const;
+  // A block's inertia in the step under way, 2M/Δt² (M its mass a unit thickness).
+  double step_inertia(const Block& block) const;
   // In a model without bonds, some closed contact overlaps past the tolerance where a
   // stiffened normal spring would be stiffer than its p.
   bool overlaps_slowed_by_inertia() const;
