@@ -29,8 +29,9 @@ const std::regex& flow_key() {
 
 // Asks the program's stop request before every pass, and ends a step whose blocks came to rest
 // in none of kPassesNotAtRest passes in a row (with settling passes: without them no pass
-// tests for rest); tells `record` after every pass. Records nothing else (the search records
-// steps).
+// tests for rest), unless the last of them is getting through the chatter that cut its DDA
+// steps short, still moving the blocks past the loop's tolerance (pass_trail.hpp); tells
+// `record` after every pass. Records nothing else (the search records steps).
 class StepObserver final : public coupling::PassObserver {
  public:
   StepObserver(const std::function<bool()>& stop_requested, bool settling, const PassTrail& trail,
@@ -38,7 +39,9 @@ class StepObserver final : public coupling::PassObserver {
       : stop_requested_(stop_requested), settling_(settling), trail_(trail), record_(std::move(record)) {}
   bool stop_requested() override { return user_stop() || not_at_rest(); }
   bool user_stop() const { return stop_requested_ && stop_requested_(); }
-  bool not_at_rest() const { return settling_ && trail_.passes_not_at_rest() >= kPassesNotAtRest; }
+  bool not_at_rest() const {
+    return settling_ && trail_.passes_not_at_rest() >= kPassesNotAtRest && !trail_.getting_through();
+  }
   void after_pass(const coupling::PassReport& r) override {
     spdlog::debug("coupling iteration {}: head change {:.3e}, displacement change {:.3e}, largest opening {:.3e} m, "
                   "{}, last step {}, {} step cuts, {} crossings switched{}",
@@ -210,21 +213,28 @@ void CoupledStepper::record_pass(const coupling::PassReport& r) {
   std::vector<std::optional<double>> conductivity;
   for (const std::optional<output::RegionSummary>& region : model_->region_flows())
     conductivity.push_back(region ? region->normalised_conductivity : std::nullopt);
-  trail_.add(r.at_rest, r.full_time_step, std::move(conductivity));
+  trail_.add(r.at_rest, r.full_time_step, r.displacement_change > model_->scenario().coupling.tolerance,
+             std::move(conductivity));
 }
 
-// Why a step whose blocks came to rest in none of kPassesNotAtRest passes in a row ended: moving
-// at the full time step, or stalled on steps cut short (neither moving nor passing the at-rest
-// test: whether they would rest is unknown).
+// Why a step whose blocks came to rest in none of kPassesNotAtRest passes in a row ended: its
+// last pass moving at the full time step, or stalled on steps cut short that no longer moved
+// the blocks past the loop's tolerance (neither moving nor passing the at-rest test: whether
+// they would rest is unknown).
 std::string CoupledStepper::describe_not_at_rest(double largest_opening) const {
   const int passes = trail_.passes_not_at_rest();
   const int cut = trail_.passes_cut_short(passes);
+  std::string how;
+  if (cut == 0)
+    how = ", still moving at the full time step";
+  else if (trail_.passes_cut_short(1) == 0)
+    how = fmt::format(" ({} of them ended on DDA steps cut short; the last still moved the blocks at the full time "
+                      "step)", cut);
+  else
+    how = fmt::format(" ({} of them ended on DDA steps cut short, the last without moving the blocks by the loop's "
+                      "tolerance: they stall, barely moving, and do not pass the at-rest test)", cut);
   return fmt::format("the blocks came to rest in none of {} passes in a row, each with its settling steps{}; the largest "
-                     "opening {:.3g} m", passes,
-                     cut == 0 ? ", still moving at the full time step"
-                              : fmt::format(" ({} of them ended on DDA steps cut short, where the blocks stall: they "
-                                            "barely move and do not pass the at-rest test)", cut),
-                     largest_opening);
+                     "opening {:.3g} m", passes, how, largest_opening);
 }
 
 // "; at its last pass the head change 6.2e-05 and the displacement change 0.0038 (tolerance

@@ -5,14 +5,20 @@
 
 namespace hydrodda::breach {
 
-void PassTrail::add(bool at_rest, bool full_time_step, std::vector<std::optional<double>> conductivity) {
-  passes_.push_back({at_rest, full_time_step, std::move(conductivity)});
+void PassTrail::add(bool at_rest, bool full_time_step, bool moved, std::vector<std::optional<double>> conductivity) {
+  passes_.push_back({at_rest, full_time_step, moved, std::move(conductivity)});
 }
 
 int PassTrail::passes_not_at_rest() const {
   int moving = 0;
   for (auto p = passes_.rbegin(); p != passes_.rend() && !p->at_rest; ++p) ++moving;
   return moving;
+}
+
+bool PassTrail::getting_through() const {
+  if (passes_.empty()) return false;
+  const Pass& last = passes_.back();
+  return !last.at_rest && !last.full_time_step && last.moved;
 }
 
 bool PassTrail::rested_in_last(int n) const {

@@ -4,8 +4,11 @@
 // converge is told apart (docs/breach.md, "What holds"):
 //   - its blocks came to rest in each of its last passes: the model holds mechanically, its
 //     loop swings; the answer is the range of K_eff/K_m over those passes (held, unsettled);
-//   - its blocks came to rest in none of kPassesNotAtRest passes in a row: moving, or stalled on
-//     DDA steps cut short, they reached no state of rest (not at rest), and the step ends there.
+//   - its blocks came to rest in none of kPassesNotAtRest passes in a row, the last of them
+//     moving at the full time step or stalled on DDA steps cut short that no longer move them:
+//     they reached no state of rest (not at rest), and the step ends there. A pass whose steps
+//     were cut short but still moved the blocks past the loop's tolerance is on its way through
+//     the chatter that cut them: the step goes on (docs/breach.md, "What holds").
 
 #include <optional>
 #include <string>
@@ -37,14 +40,18 @@ class PassTrail {
  public:
   // One pass: whether its blocks passed the at-rest test after its settling steps, whether its
   // last DDA step ran at the full time step (a step cut short moves the blocks little however
-  // far they are from rest, so its at-rest test proves nothing), and each region's K_eff/K_m
+  // far they are from rest, so its at-rest test proves nothing), whether it moved the blocks
+  // by more than the loop's tolerance (its displacement change), and each region's K_eff/K_m
   // after it (none where a region has no value).
-  void add(bool at_rest, bool full_time_step, std::vector<std::optional<double>> conductivity);
+  void add(bool at_rest, bool full_time_step, bool moved, std::vector<std::optional<double>> conductivity);
   void clear() { passes_.clear(); }
   int passes() const { return static_cast<int>(passes_.size()); }
 
   // The last passes in a row whose blocks failed the at-rest test.
   int passes_not_at_rest() const;
+  // Whether the last pass ended on a DDA step cut short and still moved the blocks by more than
+  // the loop's tolerance: getting through what cut its steps, neither resting nor stalled.
+  bool getting_through() const;
   // Whether the blocks came to rest, at the full time step, in each of the last min(n, passes())
   // passes (false with none).
   bool rested_in_last(int n) const;
@@ -56,7 +63,7 @@ class PassTrail {
 
  private:
   struct Pass {
-    bool at_rest = false, full_time_step = false;
+    bool at_rest = false, full_time_step = false, moved = false;
     std::vector<std::optional<double>> conductivity;
   };
   std::vector<Pass> passes_;

@@ -57,8 +57,12 @@ TEST(Breach, BracketsTheJackingHeadOfABlockOnAPressurisedJoint) {
   EXPECT_EQ(rows[0][0], "step");
   for (std::size_t i = 1; i < rows.size(); ++i) {
     const double load = std::stod(rows[i][1]);
-    if (load < kJackingHead * 0.998) EXPECT_EQ(rows[i][3], "held") << load;
-    if (load > kJackingHead * 1.002) EXPECT_NE(rows[i][3], "held") << load;
+    if (load < kJackingHead * 0.998) {
+      EXPECT_EQ(rows[i][3], "held") << load;
+    }
+    if (load > kJackingHead * 1.002) {
+      EXPECT_NE(rows[i][3], "held") << load;
+    }
     char name[32];
     std::snprintf(name, sizeof name, "step_%03zu.json", i - 1);
     EXPECT_EQ(fs::exists(out / "steps" / name), rows[i][3] == "held") << i;
@@ -98,19 +102,18 @@ void expect_lift_off_bracketed(const fs::path& scenario, const std::string& name
 }
 
 // `hydrodda breach` on `seal` over its reservoir's head (`loads`: --from, --to, --steps, at a
-// tolerance of 1%, one thread): the bracket lies within 3% of the hand lift-off, held ≥ 0.97 H*
-// and broken ≤ 1.03 H* (`hydrostatic` + H* the head; the last held step no unsettled one and
-// every step at or below it converged). Returns breach.json.
-nlohmann::json expect_converged_to_a_bracket_within_three_percent(const fs::path& seal, const std::string& name,
-                                                                   const std::string& loads, double hydrostatic,
-                                                                   double lift_off) {
+// tolerance of 1%, one thread): the bracket lies within `band` of the hand lift-off, held ≥
+// (1 − band) H* and broken ≤ (1 + band) H* (`hydrostatic` + H* the head; the last held step no
+// unsettled one and every step at or below it converged). Returns breach.json.
+nlohmann::json expect_converged_to_a_bracket_within(double band, const fs::path& seal, const std::string& name,
+                                                    const std::string& loads, double hydrostatic, double lift_off) {
   const fs::path out = fresh_dir(name);
   const auto result = run_program("breach " + seal.string() + " --vary 'flow.boundary[0].head' " + loads +
                                   " --tolerance 0.01 --threads 1 -o " + out.string());
   EXPECT_EQ(result.exit_code, 0) << result.output;
   const nlohmann::json breach = nlohmann::json::parse(std::ifstream(out / "breach.json"));
-  EXPECT_GE(breach["held"].get<double>() - hydrostatic, 0.97 * lift_off);
-  EXPECT_LE(breach["broken"].get<double>() - hydrostatic, 1.03 * lift_off);
+  EXPECT_GE(breach["held"].get<double>() - hydrostatic, (1.0 - band) * lift_off);
+  EXPECT_LE(breach["broken"].get<double>() - hydrostatic, (1.0 + band) * lift_off);
   EXPECT_EQ(breach["unsettled_held"], 0);
   const auto rows = read_csv(out / "breach.csv");
   for (std::size_t i = 1; i < rows.size(); ++i)
@@ -170,8 +173,8 @@ TEST(Breach, ASealPastItsLiftOffDoesNotFloatOnItsOwnGap) {
 // lies within 3% of H*, each step below it converged (measured: [2,562.5, 2,600] m, −0.06% and
 // +1.4%, the blocks thrown at 2,600 m; 12 s).
 TEST(Breach, BracketsTheLiftOffOfTheLayeredFaultedSealWithinThreePercent) {
-  const nlohmann::json breach = expect_converged_to_a_bracket_within_three_percent(
-      fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/layered_faulted_seal.toml", "hydrodda-breach-layered",
+  const nlohmann::json breach = expect_converged_to_a_bracket_within(
+      0.03, fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/layered_faulted_seal.toml", "hydrodda-breach-layered",
       "--from 4140 --to 4590 --steps 3", 1840.0, 2564.0);
   EXPECT_TRUE(breach["narrowed"].get<bool>());
 }
@@ -183,35 +186,37 @@ TEST(Breach, BracketsTheLiftOffOfTheLayeredFaultedSealWithinThreePercent) {
 // 25.27 MPa, H* = σ'v / (ρ_w g) = 2,576 m of overpressure head, the bottom head 45 m + H*. Each
 // face that carries a force closed along its length for the flow (the default
 // `hydraulic_opening = "face"`), every step below the bracket converges and the bracket lies
-// within 3% of H* (measured: held at 1,500, 2,127.5, 2,441.25 and 2,519.7 m, each in 6–14
-// passes, the last 0.978 H*; the blocks at rest in none of 5 passes at 2,539.3 m, 0.986 H*, the
-// steps cut to 1e-9 s as the base's contact states chatter; thrown at 2,755 m, 1.07 H*). With
-// each point open by its own gap the loop swung from 1,300 m and the blocks came to no rest from
-// 2,230 m, 0.87 H* (docs/studies/2026-12-01-a-loaded-face-closed-along-its-length.md).
-//
-// On the mesh halved (mesh.size 1 m, fracture_size 0.5 m, refine_distance 1 m), along the same
-// path, the bracket moves by under 2% of the load (measured: the same bisection, [2,519.7,
-// 2,539.3] m on both). Before a short step's tries stiffened their normal springs (docs/dda.md),
-// the steps that stall near the lift-off came at 0.9705 H* on the one mesh and 0.940 H* on the
-// other, a path of cuts, not the seal (docs/studies/2026-12-01-short-steps-normal-springs.md).
-// 80 s and 100 s.
-TEST(Breach, BracketsTheLiftOffOfTheFaultedSealWithinThreePercentOnItsMeshAndOnItHalved) {
-  const fs::path shipped = fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/faulted_seal.toml";
-  const std::string path = "--from 1545 --to 2800 --steps 2";
+// within 1% of H* on the mesh it ships with and on it halved (mesh.size 1 m, fracture_size 0.5 m,
+// refine_distance 1 m), so that halving the mesh moves it by under 2% of the load (measured on
+// both: held at 1,545, 2,172.5, 2,486.25, 2,564.7 and 2,603.9 m, the last 0.9934 H*, in 6–33
+// passes, some of them first on DDA steps cut short as the base's contact states chatter; the
+// blocks at rest in none of 5 passes at 2,623.5 m, 1.0010 H*, still moving at the full time
+// step: the seal lifting). A step ended after 5 passes whose steps were cut short, whether or not
+// they still moved the blocks, put the bracket at 0.978–0.986 H*
+// (docs/studies/2026-12-01-steps-that-get-through.md). 290 s and 510 s.
+namespace {
+
+void expect_faulted_seal_bracketed_within_one_percent(const fs::path& seal, const std::string& name) {
   const double lift_off = (24.72e6 + 13734.0 * 40.0) / 9810.0;
-  const nlohmann::json coarse =
-      expect_converged_to_a_bracket_within_three_percent(shipped, "hydrodda-breach-faulted", path, 45.0, lift_off);
+  const nlohmann::json breach =
+      expect_converged_to_a_bracket_within(0.01, seal, name, "--from 1545 --to 2800 --steps 2", 45.0, lift_off);
+  EXPECT_EQ(breach["broken_status"].get<std::string>(), "not at rest");
+}
+
+}  // namespace
+
+TEST(Breach, BracketsTheLiftOffOfTheFaultedSealWithinOnePercent) {
+  expect_faulted_seal_bracketed_within_one_percent(fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/faulted_seal.toml",
+                                                   "hydrodda-breach-faulted");
+}
+
+TEST(Breach, BracketsTheLiftOffOfTheFaultedSealOnItsMeshHalvedWithinOnePercent) {
   const fs::path halved = hydrodda::testing::edited_scenario(
-      shipped, "hydrodda-breach-faulted-halved",
+      fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/faulted_seal.toml", "hydrodda-breach-faulted-halved",
       {{"\nsize = 2.0\n", "\nsize = 1.0\n"}, {"fracture_size = 1.0", "fracture_size = 0.5"},
        {"refine_distance = 2.0", "refine_distance = 1.0"}});
-  const nlohmann::json fine =
-      expect_converged_to_a_bracket_within_three_percent(halved, "hydrodda-breach-faulted-halved", path, 45.0, lift_off);
+  expect_faulted_seal_bracketed_within_one_percent(halved, "hydrodda-breach-faulted-halved-out");
   fs::remove(halved);
-  for (const char* end : {"held", "broken"}) {  // the overpressure heads, over the top's 45 m
-    const double on_the_mesh = coarse[end].get<double>() - 45.0;
-    EXPECT_NEAR(fine[end].get<double>() - 45.0, on_the_mesh, 0.02 * on_the_mesh) << end;
-  }
 }
 
 // The seal through intact rock as shipped (scenarios/examples/seal_through_intact_rock.toml,
@@ -224,8 +229,8 @@ TEST(Breach, BracketsTheLiftOffOfTheFaultedSealWithinThreePercentOnItsMeshAndOnI
 // +0.09%, "no equilibrium" at 1,412.5 m). The program before the hysteresis of a corner at a
 // node of the rock's face (docs/dda.md, "Contacts") came to no rest from 1,375 m.
 TEST(Breach, BracketsTheLiftOffOfTheSealThroughIntactRockWithinThreePercent) {
-  const nlohmann::json breach = expect_converged_to_a_bracket_within_three_percent(
-      fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/seal_through_intact_rock.toml", "hydrodda-breach-intact",
+  const nlohmann::json breach = expect_converged_to_a_bracket_within(
+      0.03, fs::path(HYDRODDA_SOURCE_DIR) / "scenarios/examples/seal_through_intact_rock.toml", "hydrodda-breach-intact",
       "--from 1300 --to 1500 --steps 2", 0.0, 13.734e6 / 9810.0 + 1400.0 * 8.0 / 1000.0);
   EXPECT_EQ(breach["broken_status"].get<std::string>(), "no equilibrium");
 }
