@@ -183,13 +183,13 @@ TEST(FaultedSealTutorial, TheLoopConvergesAtDefaultsAt090OfTheJackingHeadOnAMesh
 // Step 5, near the breach at default settings: from the in-situ state, its first pass at once
 // moving the blocks and run again with the overpressure ramped over 3 passes (the default ramp),
 // the seal converges at 0.92, 0.95 and 0.97 of the hand jacking head (7, 8 and 7 passes),
-// K_eff/K_m 905.9, 917.3 and 927.6 (0.5%, as the table's) rising with the load, the seal's base
+// K_eff/K_m 905.9, 917.3 and 926.9 (0.5%, as the table's) rising with the load, the seal's base
 // alone opening, over more of its length at each (0.24, 0.58, 0.69). With the whole load at once
 // the same runs swing or drift for their 30 passes (AtOnceThe095CaseSaysToRampItsLoadAndRampedItConverges).
 TEST(FaultedSealTutorial, TheLoopConvergesAtDefaultsUpTo097OfTheJackingHead) {
   Folder folder;
   const fs::path out = folder.path / "near-breach";
-  const auto sweep = expect_converged_sweep(out, "flow.boundary[0].head=4199,4276,4327", {905.9, 917.3, 927.6});
+  const auto sweep = expect_converged_sweep(out, "flow.boundary[0].head=4199,4276,4327", {905.9, 917.3, 926.9});
   ASSERT_EQ(sweep.size(), 4u);
   for (int c = 0; c < 3; ++c) {
     if (c > 0) {
