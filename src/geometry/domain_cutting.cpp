@@ -288,7 +288,7 @@ CutResult cut_domain(const Polygon& domain, const std::vector<Segment2>& fractur
   for (int f : dropped)
     if (f >= 0) {
       result.dropped_from.push_back(f);
-      result.warnings.push_back("fracture " + std::to_string(f + 1) + ": a piece of it separates no blocks and is dropped");
+      result.warnings.push_back("fracture " + std::to_string(f) + ": a piece of it separates no blocks and is dropped");
     }
   for (const auto& [e, f] : edges)
     if (f >= 0) result.used_traces.push_back({points[e.first], points[e.second]});

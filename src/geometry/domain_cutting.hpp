@@ -17,7 +17,7 @@ struct CutResult {
   std::vector<std::vector<int>> edge_fractures;
   std::vector<Segment2> used_traces;   // the fracture pieces that bound blocks
   std::vector<int> dropped_from;       // fractures with a piece that cut nothing, ascending
-  std::vector<std::string> warnings;   // the same, as messages naming the fracture
+  std::vector<std::string> warnings;   // the same, as messages naming the fracture by its index
 };
 
 // Cuts `domain` (simple, counter-clockwise) by the fracture segments. A fracture may end inside

@@ -75,15 +75,16 @@ ModelGeometry build_model_geometry(const scenario::Scenario& s) {
   }
   const geometry::BlockNetwork& net = model.network;
 
-  // Pieces that cut nothing: one warning naming the listed fractures (a few of them: a line
-  // is read, a hundred numbers are not), a count per joint set and for the file, whose loose
-  // ends are expected (a trace ending inside a block).
+  // Pieces that cut nothing: one warning naming the listed fractures by their ids, those of
+  // the preview, fractures.csv and the other warnings (a few of them: a line is read, a
+  // hundred numbers are not), a count per joint set and for the file, whose loose ends are
+  // expected (a trace ending inside a block).
   std::vector<int> dropped_per_set(g.joint_sets.size(), 0);
   int dropped_file = 0;
   std::vector<std::string> dropped_listed;
   for (int f : net.dropped_from) {
     const geometry::TraceOrigin& o = model.traces[f].origin;
-    if (o.source == TraceSource::listed) dropped_listed.push_back(std::to_string(o.number + 1));
+    if (o.source == TraceSource::listed) dropped_listed.push_back(std::to_string(f));
     else if (o.source == TraceSource::joint_set) ++dropped_per_set[o.set];
     else ++dropped_file;
   }

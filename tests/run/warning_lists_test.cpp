@@ -23,8 +23,9 @@ namespace scenario = hydrodda::scenario;
 
 namespace {
 
-// A 10 m × 2 m domain cut in two by fracture 1 at x = 5, and `loose` short fractures inside its
-// left block, touching nothing (fractures 2, 3, ...): each separates no blocks.
+// A 10 m × 2 m domain cut in two by fracture 0 at x = 5, and `loose` short fractures inside its
+// left block, touching nothing (fractures 1, 2, ...: the ids of fractures.csv and the
+// preview): each separates no blocks.
 std::string domain_with_loose_fractures(int loose) {
   std::string fractures = "[[5.0, 0.0], [5.0, 2.0]]";
   for (int k = 0; k < loose; ++k) {
@@ -65,7 +66,7 @@ TEST(WarningLists, OneLooseFractureIsNamedAsBefore) {
   const run::ModelGeometry model = run::build_model_geometry(s);
   std::string warning;
   ASSERT_EQ(count_dropped_warnings(model, warning), 1);
-  EXPECT_NE(warning.find("geometry.fractures: fracture 2: a piece of it separates no blocks"), std::string::npos)
+  EXPECT_NE(warning.find("geometry.fractures: fracture 1: a piece of it separates no blocks"), std::string::npos)
       << warning;
 }
 
@@ -74,7 +75,7 @@ TEST(WarningLists, ManyLooseFracturesAreNamedInOneWarningOfFive) {
   const run::ModelGeometry model = run::build_model_geometry(s);
   std::string warning;
   ASSERT_EQ(count_dropped_warnings(model, warning), 1);
-  EXPECT_NE(warning.find("geometry.fractures: fractures 2, 3, 4, 5, 6 and 3 more: a piece of each separates no blocks"),
+  EXPECT_NE(warning.find("geometry.fractures: fractures 1, 2, 3, 4, 5 and 3 more: a piece of each separates no blocks"),
             std::string::npos)
       << warning;
 }
