@@ -61,7 +61,7 @@ int count_dropped_warnings(const run::ModelGeometry& model, std::string& last) {
   return count;
 }
 
-TEST(WarningLists, OneLooseFractureIsNamedAsBefore) {
+TEST(WarningLists, OneLooseFractureIsNamedByItsId) {
   const scenario::Scenario s = scenario::parse_scenario(domain_with_loose_fractures(1), "loose.toml");
   const run::ModelGeometry model = run::build_model_geometry(s);
   std::string warning;
